@@ -1,0 +1,3 @@
+from yaseer.cli import main
+
+raise SystemExit(main())

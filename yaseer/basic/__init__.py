@@ -1,0 +1,1 @@
+"""The BASIC machine. It knows nothing of mechanisms."""

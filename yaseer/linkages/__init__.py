@@ -1,0 +1,1 @@
+"""Pure planar-linkage numerics. They know nothing of BASIC."""
