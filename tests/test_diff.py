@@ -1,0 +1,114 @@
+"""``yaseer diff``: table parsing and comparison on small synthetic tables."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+import pytest
+
+from yaseer.commands import diff
+
+
+def _run_cli(tmp_path: Path, program_csv: str, table_text: str, *extra: str) -> tuple[int, str]:
+    program = tmp_path / "out.csv"
+    table = tmp_path / "table.txt"
+    program.write_text(program_csv)
+    table.write_text(table_text)
+    parser = argparse.ArgumentParser()
+    diff.add_arguments(parser)
+    return diff.main(parser.parse_args([str(program), str(table), *extra])), ""
+
+
+def test_printed_columns_with_header_place_blank_cells_by_alignment():
+    text = ("   THET     PHI    BETA\n"
+            "   0.00 -114.62  -65.38\n"
+            "         114.62        \n"
+            "  30.00          -82.70\n")
+    table = diff.parse_table(text)
+    assert table.names == ["THET", "PHI", "BETA"]
+    assert [c.value for c in table.rows[0]] == [0.0, -114.62, -65.38]
+    # continuation row: key carried down, the missing BETA stays blank
+    assert table.rows[1][0].value == 0.0 and table.rows[1][1].value == 114.62 and table.rows[1][2].blank
+    assert table.rows[2][1].blank and table.rows[2][2].value == -82.70
+
+
+def test_overflow_touching_a_number_is_its_own_cell():
+    table = diff.parse_table("       A       B       C\n    1.00  -23.63********\n")
+    row = table.rows[0]
+    assert row[1].value == -23.63
+    assert row[2].overflow and row[2].value is None
+
+
+def test_headerless_short_rows_lack_leading_cells():
+    table = diff.parse_table("0 1.5 2.5\n3.5 4.5\n30 5 6\n")
+    assert [c.value for c in table.rows[1]] == [0.0, 3.5, 4.5]
+    assert [c.value for c in table.rows[2]] == [30.0, 5.0, 6.0]
+
+
+def test_csv_blank_fields_are_not_compared():
+    table = diff.parse_table("x,y,z\n1,,3.0\n")
+    verdict = diff.compare([[1.0, 999.0, 3.0]], table)
+    assert verdict.agrees
+    assert verdict.compared_cells == 2  # key and z; the blank y is not compared
+
+
+def test_default_tolerance_is_half_the_last_printed_digit():
+    table = diff.parse_table("t,v\n0,9.79\n1,-41.46\n")
+    assert diff.compare([[0, 9.794], [1, -41.455]], table).agrees
+    verdict = diff.compare([[0, 9.796], [1, -41.46]], table)
+    assert not verdict.agrees and verdict.differing_cells == 1
+    assert any("9.80|9.79!" in line for line in verdict.lines)
+
+
+def test_explicit_tolerance_overrides():
+    table = diff.parse_table("t,v\n0,9.79\n")
+    assert diff.compare([[0, 9.85]], table, tol=0.1).agrees
+    assert not diff.compare([[0, 9.95]], table, tol=0.1).agrees
+
+
+def test_rows_match_on_first_column_by_occurrence_not_position():
+    table = diff.parse_table("t,v\n30,2\n0,1\n0,-1\n")
+    program = [[0, 1.0], [0, -1.0], [30, 2.0]]
+    verdict = diff.compare(program, table)
+    assert verdict.agrees and verdict.matched_rows == 3
+
+
+def test_missing_and_extra_rows_are_reported():
+    table = diff.parse_table("t,v\n0,1\n60,3\n")
+    verdict = diff.compare([[0, 1.0], [30, 2.0]], table)
+    assert not verdict.agrees
+    assert verdict.missing_rows == 1 and verdict.extra_rows == 1
+    assert "1 table rows missing" in verdict.summary("tol")
+
+
+def test_overflow_cell_agrees_only_with_a_value_too_wide_for_the_field():
+    table = diff.parse_table("       A       B\n    1.00********\n    2.00   -5.25\n")
+    wide = diff.compare([[1.0, -12345.678], [2.0, -5.25]], table)
+    assert wide.agrees
+    narrow = diff.compare([[1.0, -1234.5], [2.0, -5.25]], table)  # "-1234.50" fits 8 characters
+    assert not narrow.agrees and narrow.differing_cells == 1
+
+
+def test_cli_exit_status_and_verdict_line(tmp_path, capsys):
+    status, _ = _run_cli(tmp_path, "0,1.0\n30,2.0\n", "t,v\n0,1.00\n30,2.00\n")
+    assert status == 0
+    assert capsys.readouterr().out.strip().splitlines()[-1].startswith("AGREE: 2 rows matched")
+    status, _ = _run_cli(tmp_path, "0,1.0\n30,2.5\n", "t,v\n0,1.00\n30,2.00\n")
+    last = capsys.readouterr().out.strip().splitlines()[-1]
+    assert status == 1 and last.startswith("DIFFER: 2 rows matched, 1 of 4 cells differ")
+
+
+def test_cli_unreadable_table_is_a_clear_error(tmp_path, capsys):
+    program = tmp_path / "out.csv"
+    program.write_text("0,1\n")
+    parser = argparse.ArgumentParser()
+    diff.add_arguments(parser)
+    status = diff.main(parser.parse_args([str(program), str(tmp_path / "nope.txt")]))
+    assert status == 2
+    assert "Cannot read table" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("text", ["1.5", "-.25", "+3", "1e3", "1.0D2"])
+def test_numbers_in_period_notations(text):
+    assert diff.parse_cell(text).value == pytest.approx(float(text.replace("D", "e")))

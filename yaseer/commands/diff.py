@@ -1,0 +1,344 @@
+"""``yaseer diff FILE TABLE [--tol X]``: a listing's rows beside a table typed from a paper.
+
+FILE is a BASIC listing, run through ``yaseer run FILE --format csv`` (one CSV row
+per PRINT); a FILE ending in ``.csv`` is taken as such output already (so two
+tables can be compared).  TABLE is typed from a paper, either
+
+* CSV (a line with a comma makes the file CSV): an empty field is a blank cell, or
+* whitespace-separated columns as printed: a header line of names, then rows.
+  Cells are placed under the header name whose right edge is nearest to theirs
+  (printed numbers are right-aligned), so a blank cell is just missing text.
+  ``********`` (a Fortran/BASIC field overflow) is a cell of its own, even when
+  it touches the number before it.  Without a header, a short row lacks its
+  leading cells (like the Fortran seed's ``8X`` continuation rows).
+
+``#`` starts a comment line.  A row whose first cell is blank continues the
+previous row's key.  Rows are matched on the first column: the n-th table row
+with key k goes with the n-th program row with key k.  Every compared cell that
+differs by more than the tolerance is marked; blank cells are not compared; an
+overflow cell agrees when the program's value, printed with that column's
+decimals, would not fit in as many characters as there are asterisks.  The
+default tolerance of a cell is half a unit of its last printed digit; ``--tol``
+gives one absolute tolerance instead.  The last line is the verdict; the exit
+status is 0 when everything agrees, 1 when cells differ or rows are missing, 2
+when the listing or the table cannot be read.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import re
+import subprocess
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+OVERFLOW_CHAR = "*"
+_TOKEN = re.compile(r"\*+|[^\s*]+")
+_NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)([eEdD][-+]?\d+)?$")
+
+
+class TableError(ValueError):
+    """A table that cannot be read (the message names the file and line)."""
+
+
+@dataclass
+class Cell:
+    """One table cell: ``value`` (None if blank or overflow), the ``text`` as
+    typed, its ``decimals`` (digits after the point) and whether it is an
+    overflow (``********``)."""
+
+    text: str
+    value: float | None = None
+    decimals: int = 0
+    overflow: bool = False
+
+    @property
+    def blank(self) -> bool:
+        return not self.text
+
+
+BLANK = Cell("")
+
+
+def parse_cell(text: str) -> Cell:
+    """Read one cell's text (``-10.00``, ``.00``, ``********`` or empty)."""
+    text = text.strip()
+    if not text:
+        return BLANK
+    if set(text) == {OVERFLOW_CHAR}:
+        return Cell(text, overflow=True)
+    if not _NUMBER.match(text):
+        return Cell(text)
+    mantissa = re.split(r"[eEdD]", text)[0]
+    decimals = len(mantissa.split(".")[1]) if "." in mantissa else 0
+    return Cell(text, float(re.sub(r"[dD]", "e", text)), decimals)
+
+
+@dataclass
+class Table:
+    """A parsed table: optional column ``names`` and ``rows`` of cells (keys filled in)."""
+
+    names: list[str] = field(default_factory=list)
+    rows: list[list[Cell]] = field(default_factory=list)
+    line_numbers: list[int] = field(default_factory=list)
+
+
+def _is_header(cells: list[Cell]) -> bool:
+    return any(c.text for c in cells) and all(c.value is None and not c.overflow for c in cells if c.text)
+
+
+def _tokens(line: str) -> list[tuple[int, str]]:
+    """(right edge, text) of each token of a printed line."""
+    return [(m.end(), m.group()) for m in _TOKEN.finditer(line)]
+
+
+def _place_by_edges(tokens: list[tuple[int, str]], edges: list[int]) -> list[Cell]:
+    cells = [BLANK] * len(edges)
+    for end, text in tokens:
+        column = min(range(len(edges)), key=lambda j: abs(edges[j] - end))
+        if cells[column].text:
+            raise TableError(f"two cells under column {column + 1}")
+        cells[column] = parse_cell(text)
+    return cells
+
+
+def _rows_of_printed(lines: list[tuple[int, str]]) -> Table:
+    table = Table()
+    edges: list[int] = []
+    for number, line in lines:
+        tokens = _tokens(line)
+        cells = [parse_cell(text) for _, text in tokens]
+        if not table.rows and not table.names and _is_header(cells):
+            table.names = [c.text for c in cells]
+            edges = [end for end, _ in tokens]
+            continue
+        if edges:
+            try:
+                cells = _place_by_edges(tokens, edges)
+            except TableError as exc:
+                raise TableError(f"line {number}: {exc}") from None
+        table.rows.append(cells)
+        table.line_numbers.append(number)
+    _left_pad(table)
+    return table
+
+
+def _rows_of_csv(lines: list[tuple[int, str]]) -> Table:
+    table = Table()
+    for number, line in lines:
+        cells = [parse_cell(text) for text in next(csv.reader([line]))]
+        if not table.rows and not table.names and _is_header(cells):
+            table.names = [c.text for c in cells]
+            continue
+        if _is_header(cells):  # a later PRINT of titles: not a data row
+            continue
+        table.rows.append(cells)
+        table.line_numbers.append(number)
+    _left_pad(table)
+    return table
+
+
+def _left_pad(table: Table) -> None:
+    """Give short rows their missing leading cells, then carry keys down."""
+    width = max([len(table.names)] + [len(r) for r in table.rows])
+    for index, row in enumerate(table.rows):
+        table.rows[index] = [BLANK] * (width - len(row)) + row
+    previous_key = BLANK
+    for row in table.rows:
+        if row[0].blank:
+            row[0] = previous_key
+        previous_key = row[0]
+
+
+def parse_table(text: str) -> Table:
+    """Parse a typed table (CSV or printed columns); see the module docstring."""
+    lines = [(n, line.rstrip("\n")) for n, line in enumerate(text.splitlines(), 1)
+             if line.strip() and not line.lstrip().startswith("#")]
+    if any("," in line for _, line in lines):
+        return _rows_of_csv(lines)
+    return _rows_of_printed(lines)
+
+
+# ---------------------------------------------------------------- comparison
+
+
+@dataclass
+class Verdict:
+    """The outcome of a comparison, with the rendered report ``lines``."""
+
+    matched_rows: int = 0
+    compared_cells: int = 0
+    differing_cells: int = 0
+    missing_rows: int = 0
+    extra_rows: int = 0
+    lines: list[str] = field(default_factory=list)
+
+    @property
+    def agrees(self) -> bool:
+        return self.differing_cells == 0 and self.missing_rows == 0 and self.compared_cells > 0
+
+    def summary(self, tol_text: str) -> str:
+        word = "AGREE" if self.agrees else "DIFFER"
+        return (f"{word}: {self.matched_rows} rows matched, {self.differing_cells} of "
+                f"{self.compared_cells} cells differ beyond {tol_text}; "
+                f"{self.missing_rows} table rows missing from the program, "
+                f"{self.extra_rows} program rows not in the table")
+
+
+def cell_tolerance(cell: Cell, tol: float | None) -> float:
+    """``tol`` if given, else half a unit of the cell's last printed digit."""
+    if tol is not None:
+        return tol
+    return 0.5 * 10.0 ** (-cell.decimals) * (1 + 1e-9)
+
+
+def column_decimals(table: Table, column: int) -> int:
+    """The most decimals any numeric cell of ``column`` shows (2 if none)."""
+    found = [row[column].decimals for row in table.rows if len(row) > column and row[column].value is not None]
+    return max(found) if found else 2
+
+
+def cell_agrees(printed: Cell, value: float, tol: float | None, decimals: int) -> bool:
+    """Does the program's ``value`` agree with the ``printed`` cell?"""
+    if printed.overflow:
+        return len(f"{value:.{decimals}f}") > len(printed.text)
+    return abs(value - printed.value) <= cell_tolerance(printed, tol)
+
+
+def _keys_match(a: float, b: float, tol: float | None, key_cell: Cell) -> bool:
+    return abs(a - b) <= max(cell_tolerance(key_cell, tol), 1e-9)
+
+
+def _pair_rows(program: list[list[float]], table: Table, tol: float | None):
+    """Yield (table row, program row or None); leftover program rows come last with None table row."""
+    used = [False] * len(program)
+    for row in table.rows:
+        key = row[0]
+        partner = None
+        if key.value is not None:
+            for index, candidate in enumerate(program):
+                if not used[index] and candidate and _keys_match(candidate[0], key.value, tol, key):
+                    used[index] = True
+                    partner = candidate
+                    break
+        yield row, partner
+    for index, candidate in enumerate(program):
+        if not used[index]:
+            yield None, candidate
+
+
+def _fmt(value: float | None, decimals: int) -> str:
+    return "" if value is None else f"{value:.{decimals}f}"
+
+
+def compare(program: list[list[float]], table: Table, tol: float | None = None) -> Verdict:
+    """Set the program's rows beside the table's; mark each cell beyond tolerance.
+
+    A differing cell is shown as ``program|printed!``.
+    """
+    verdict = Verdict()
+    width = max([len(table.names)] + [len(r) for r in table.rows] + [len(r) for r in program] + [1])
+    decimals = [column_decimals(table, j) for j in range(width)]
+    rendered: list[list[str]] = [table.names + [""] * (width - len(table.names))] if table.names else []
+    for printed, values in _pair_rows(program, table, tol):
+        if printed is None:
+            verdict.extra_rows += 1
+            rendered.append([_fmt(v, decimals[j]) for j, v in enumerate(values)] + ["(extra)"])
+            continue
+        if values is None:
+            verdict.missing_rows += 1
+            rendered.append([c.text for c in printed] + ["(missing)"])
+            continue
+        verdict.matched_rows += 1
+        rendered.append(_render_row(printed, values, tol, decimals, verdict))
+    verdict.lines = _align(rendered)
+    return verdict
+
+
+def _render_row(printed: list[Cell], values: list[float], tol, decimals, verdict: Verdict) -> list[str]:
+    texts = []
+    for j in range(max(len(printed), len(values))):
+        cell = printed[j] if j < len(printed) else BLANK
+        value = values[j] if j < len(values) else None
+        shown = _fmt(value, decimals[j])
+        if cell.blank or (cell.value is None and not cell.overflow):
+            texts.append(shown)
+            continue
+        verdict.compared_cells += 1
+        if value is not None and cell_agrees(cell, value, tol, decimals[j]):
+            texts.append(shown)
+        else:
+            verdict.differing_cells += 1
+            texts.append(f"{shown or '(none)'}|{cell.text}!")
+    return texts
+
+
+def _align(rows: list[list[str]]) -> list[str]:
+    width = max((len(r) for r in rows), default=0)
+    sizes = [max((len(r[j]) for r in rows if j < len(r)), default=0) for j in range(width)]
+    return ["  ".join(text.rjust(sizes[j]) for j, text in enumerate(row)).rstrip() for row in rows]
+
+
+# ---------------------------------------------------------------- running
+
+
+def program_rows(path: Path) -> list[list[float]]:
+    """The numeric rows a listing prints (its ``--format csv`` output).
+
+    Raises :class:`TableError` with the run's own error message if it fails.
+    """
+    if path.suffix.lower() == ".csv":
+        text = path.read_text()
+    else:
+        done = subprocess.run([sys.executable, "-m", "yaseer", "run", str(path), "--format", "csv"],
+                              capture_output=True, text=True)
+        if done.returncode != 0:
+            message = (done.stderr.strip() or done.stdout.strip()).splitlines()
+            raise TableError(f"{path}: " + (message[-1] if message else f"exit status {done.returncode}"))
+        text = done.stdout
+    return csv_number_rows(text)
+
+
+def csv_number_rows(text: str) -> list[list[float]]:
+    """Rows of numbers from CSV text; rows holding any text (titles) are skipped."""
+    rows = []
+    for fields in csv.reader(io.StringIO(text)):
+        cells = [parse_cell(f) for f in fields]
+        if not cells or any(c.value is None for c in cells if not c.blank):
+            continue
+        rows.append([c.value for c in cells if not c.blank])
+    return rows
+
+
+def add_arguments(parser) -> None:
+    parser.add_argument("file", type=Path, help="BASIC listing to run (or a .csv of its rows)")
+    parser.add_argument("table", type=Path, help="table typed from a paper (CSV or printed columns)")
+    parser.add_argument("--tol", type=float, default=None,
+                        help="absolute tolerance (default: half a unit of each printed cell's last digit)")
+
+
+def main(args) -> int:
+    try:
+        table = parse_table(args.table.read_text())
+    except OSError as exc:
+        print(f"Cannot read table {args.table}: {exc.strerror}", file=sys.stderr)
+        return 2
+    except TableError as exc:
+        print(f"Bad table {args.table}: {exc}", file=sys.stderr)
+        return 2
+    try:
+        rows = program_rows(args.file)
+    except OSError as exc:
+        print(f"Cannot read {args.file}: {exc.strerror}", file=sys.stderr)
+        return 2
+    except TableError as exc:
+        print(str(exc), file=sys.stderr)
+        return 2
+    verdict = compare(rows, table, args.tol)
+    for line in verdict.lines:
+        print(line)
+    tol_text = f"tol {args.tol:g}" if args.tol is not None else "half a printed digit"
+    print(verdict.summary(tol_text))
+    return 0 if verdict.agrees else 1
