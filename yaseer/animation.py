@@ -1,0 +1,526 @@
+"""Animating a listing's mechanism from the positions its programs computed.
+
+Recording: :class:`Recorder` wraps the Python program areas that
+``yaseer.binding.install`` registers.  After each ``GOSUB PROG n`` it reads
+back, from the machine's arrays, the joints that program's inputs and outputs
+imply — lengths and angles it was given or computed, never a second solve —
+as a :class:`Snapshot`.  A :class:`Frame` is everything recorded between two
+printed lines, with the line printed, so each frame shows the mechanism at the
+position the listing reported.
+
+Drawing: :func:`render` draws links as bars, joints as circles, fixed pivots as
+ground triangles, sliders as blocks on their axes, the path of each traced
+point (a point of interest whose path is not a single point), and on each frame
+the crank angle and the printed values.  Virtual links (Program 5) are dashed;
+a crank that *is* a virtual link (a flexible crank fed by Program 5 in the same
+frame) is dashed too.
+
+Geometry conventions are those of the programs' contract
+(``shared/spec/programs.md``): crank pivot Ao at the origin, x right, y up,
+angles in degrees counter-clockwise from +x, any consistent length unit.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Callable, Sequence
+
+Point = tuple[float, float]
+
+ORIGIN: Point = (0.0, 0.0)
+
+
+def polar(length: float, angle_deg: float) -> Point:
+    """The vector of ``length`` at ``angle_deg`` (degrees, counter-clockwise from +x)."""
+    angle = math.radians(angle_deg)
+    return (length * math.cos(angle), length * math.sin(angle))
+
+
+def plus(p: Point, q: Point) -> Point:
+    """p + q."""
+    return (p[0] + q[0], p[1] + q[1])
+
+
+def distance(p: Point, q: Point) -> float:
+    """|p - q|."""
+    return math.hypot(p[0] - q[0], p[1] - q[1])
+
+
+@dataclass(frozen=True)
+class Bar:
+    """A link drawn as a bar from ``start`` to ``end``; ``virtual`` bars are dashed."""
+
+    start: Point
+    end: Point
+    virtual: bool = False
+
+
+@dataclass(frozen=True)
+class Slider:
+    """A block at ``centre`` turned to ``angle_deg``; ``axis`` is a point on its fixed axis (None: no fixed axis)."""
+
+    centre: Point
+    angle_deg: float
+    axis: Point | None = None
+
+
+@dataclass(frozen=True)
+class TracedPoint:
+    """A point of interest ``label`` at ``position``, carried by the link through ``joint``."""
+
+    label: str
+    position: Point
+    joint: Point
+
+
+@dataclass(frozen=True)
+class Snapshot:
+    """What one call of program ``area`` computed, as geometry.
+
+    ``crank`` is the index in ``bars`` of the driving crank (None for
+    Program 5), ``crank_angle`` its angle in degrees.
+    """
+
+    area: int
+    crank_angle: float
+    bars: tuple[Bar, ...]
+    joints: tuple[Point, ...]
+    ground: tuple[Point, ...]
+    sliders: tuple[Slider, ...] = ()
+    points: tuple[TracedPoint, ...] = ()
+    crank: int | None = 0
+
+    def key(self) -> tuple:
+        """Identity of the drawn geometry (two calls with equal keys draw the same)."""
+        rounded = tuple(tuple(round(c, 9) for c in (*bar.start, *bar.end)) for bar in self.bars)
+        return (self.area, rounded)
+
+
+@dataclass
+class Frame:
+    """The calls recorded between two printed lines, and the text printed."""
+
+    snapshots: tuple[Snapshot, ...]
+    printed: str = ""
+
+    @property
+    def crank_angle(self) -> float:
+        """The input crank angle of the first basic linkage called (degrees)."""
+        for snapshot in self.snapshots:
+            if snapshot.crank is not None:
+                return snapshot.crank_angle
+        return self.snapshots[0].crank_angle
+
+
+# --- reading a call's geometry back from the machine ------------------------------
+
+
+def _arrays(machine, *names: str) -> list[list[float]]:
+    return [machine.array(name) for name in names]
+
+
+def snapshot_slider_crank(machine) -> Snapshot:
+    """Program 1: crank Ao->A = L(2) at T(2), rod A->B = L(3) at T(3), piston B on the axis at T(4)."""
+    L, T, X, Y = _arrays(machine, "L", "T", "X", "Y")
+    a_pin = polar(L[2], T[2])
+    b_pin = plus(a_pin, polar(L[3], T[3]))
+    axis_point = polar(L[1], T[4] - 90.0)
+    return Snapshot(
+        area=1,
+        crank_angle=T[2],
+        bars=(Bar(ORIGIN, a_pin), Bar(a_pin, b_pin)),
+        joints=(a_pin, b_pin),
+        ground=(ORIGIN,),
+        sliders=(Slider(b_pin, T[4], axis_point),),
+        points=(
+            TracedPoint("PROG 1 X(1),Y(1)", (X[1], Y[1]), ORIGIN),
+            TracedPoint("PROG 1 X(2),Y(2)", (X[2], Y[2]), b_pin),
+        ),
+    )
+
+
+def snapshot_four_bar(machine) -> Snapshot:
+    """Program 2: crank L(12) at T(12), coupler L(13) at T(13), Bo = L(11) at T(11)."""
+    L, T, X, Y = _arrays(machine, "L", "T", "X", "Y")
+    a_pin = polar(L[12], T[12])
+    b_pin = plus(a_pin, polar(L[13], T[13]))
+    b_pivot = polar(L[11], T[11])
+    return Snapshot(
+        area=2,
+        crank_angle=T[12],
+        bars=(Bar(ORIGIN, a_pin), Bar(a_pin, b_pin), Bar(b_pin, b_pivot)),
+        joints=(a_pin, b_pin),
+        ground=(ORIGIN, b_pivot),
+        points=(
+            TracedPoint("PROG 2 X(3),Y(3)", (X[3], Y[3]), ORIGIN),
+            TracedPoint("PROG 2 X(4),Y(4)", (X[4], Y[4]), a_pin),
+            TracedPoint("PROG 2 X(5),Y(5)", (X[5], Y[5]), b_pivot),
+        ),
+    )
+
+
+FOLLOWER_OVERHANG = 0.15  # the slotted follower of Program 3 is drawn this much longer than Bo->A
+
+
+def snapshot_inverted_slider_crank(machine) -> Snapshot:
+    """Program 3: crank L(7) at T(7), Bo = -L(6) u(T(6)), follower Bo->A = L(5) at T(9), block at A."""
+    L, T, X, Y = _arrays(machine, "L", "T", "X", "Y")
+    a_pin = polar(L[7], T[7])
+    b_pivot = polar(-L[6], T[6])
+    follower_end = plus(b_pivot, polar(L[5] * (1.0 + FOLLOWER_OVERHANG), T[9]))
+    return Snapshot(
+        area=3,
+        crank_angle=T[7],
+        bars=(Bar(ORIGIN, a_pin), Bar(b_pivot, follower_end)),
+        joints=(a_pin,),
+        ground=(ORIGIN, b_pivot),
+        sliders=(Slider(a_pin, T[9]),),
+        points=(
+            TracedPoint("PROG 3 X(6),Y(6)", (X[6], Y[6]), ORIGIN),
+            TracedPoint("PROG 3 X(7),Y(7)", (X[7], Y[7]), b_pivot),
+        ),
+    )
+
+
+def snapshot_virtual_link(machine) -> Snapshot:
+    """Program 5: the virtual link from the origin to (X(10), Y(10)), dashed."""
+    X, Y = _arrays(machine, "X", "Y")
+    tip = (X[10], Y[10])
+    return Snapshot(
+        area=5,
+        crank_angle=machine.scalar("T"),
+        bars=(Bar(ORIGIN, tip, virtual=True),),
+        joints=(),
+        ground=(ORIGIN,),
+        crank=None,
+    )
+
+
+SNAPSHOTS: dict[int, Callable[[object], Snapshot]] = {
+    1: snapshot_slider_crank,
+    2: snapshot_four_bar,
+    3: snapshot_inverted_slider_crank,
+    5: snapshot_virtual_link,
+}
+
+
+# --- recording ------------------------------------------------------------------
+
+
+class Recorder:
+    """Collects frames during a run: wrap the areas, then feed it the printed lines."""
+
+    def __init__(self) -> None:
+        self.frames: list[Frame] = []
+        self._pending: list[Snapshot] = []
+
+    def wrap(self, area_number: int, area):
+        """The area, recording a snapshot after each call (unknown areas unchanged)."""
+        reader = SNAPSHOTS.get(area_number)
+        if reader is None or not callable(area):
+            return area
+
+        def recorded(machine) -> None:
+            area(machine)
+            self._pending.append(reader(machine))
+
+        recorded.__doc__ = getattr(area, "__doc__", None)
+        return recorded
+
+    def line_printed(self, text: str) -> None:
+        """A line was printed: it closes the frame of the calls since the last one.
+
+        A line printed with no call since the previous line joins that frame's
+        text; one printed before any call (a heading) is not a frame.
+        """
+        if self._pending:
+            self.frames.append(Frame(tuple(self._pending), text))
+            self._pending = []
+        elif self.frames:
+            self.frames[-1].printed += "\n" + text
+
+    def finish(self) -> list[Frame]:
+        """Close the run: calls after the last printed line make a last frame."""
+        if self._pending:
+            self.frames.append(Frame(tuple(self._pending), ""))
+            self._pending = []
+        return [prepare_frame(frame) for frame in self.frames]
+
+
+class AreaInterceptor:
+    """Stands in for the machine during ``binding.install``: areas set through it are wrapped."""
+
+    def __init__(self, machine, recorder: Recorder) -> None:
+        self._machine = machine
+        self._recorder = recorder
+
+    def set_area(self, number: int, area) -> None:
+        """Register ``area`` in the real machine, wrapped by the recorder."""
+        self._machine.set_area(number, self._recorder.wrap(number, area))
+
+    def __getattr__(self, name: str):
+        return getattr(self._machine, name)
+
+
+class LineTap:
+    """A text stream that hands each completed line to ``on_line`` (and keeps it)."""
+
+    def __init__(self, on_line: Callable[[str], None]) -> None:
+        self._on_line = on_line
+        self._partial = ""
+        self.lines: list[str] = []
+
+    def write(self, text: str) -> int:
+        """Take text; every newline completes a line."""
+        self._partial += text
+        while "\n" in self._partial:
+            line, self._partial = self._partial.split("\n", 1)
+            self.lines.append(line)
+            self._on_line(line)
+        return len(text)
+
+    def flush(self) -> None:
+        """Nothing to flush: lines are handed on as they complete."""
+
+    def close_line(self) -> None:
+        """Hand on a last line that has no newline."""
+        if self._partial:
+            self.write("\n")
+
+    def isatty(self) -> bool:
+        """Not a terminal."""
+        return False
+
+
+# --- assembling frames ------------------------------------------------------------
+
+VIRTUAL_MATCH = 1e-9  # relative distance within which a crank tip is a virtual link's end
+
+
+def prepare_frame(frame: Frame) -> Frame:
+    """Drop repeated calls with the same geometry and dash cranks that are virtual links."""
+    seen: set = set()
+    unique: list[Snapshot] = []
+    for snapshot in frame.snapshots:
+        if snapshot.key() not in seen:
+            seen.add(snapshot.key())
+            unique.append(snapshot)
+    virtual_ends = [s.bars[0].end for s in unique if s.area == 5]
+    marked = tuple(_mark_virtual_crank(s, virtual_ends) for s in unique)
+    return Frame(marked, frame.printed)
+
+
+def _mark_virtual_crank(snapshot: Snapshot, virtual_ends: Sequence[Point]) -> Snapshot:
+    if snapshot.crank is None:
+        return snapshot
+    crank = snapshot.bars[snapshot.crank]
+    scale = max(1.0, math.hypot(*crank.end))
+    if not any(distance(crank.end, end) <= VIRTUAL_MATCH * scale for end in virtual_ends):
+        return snapshot
+    bars = list(snapshot.bars)
+    bars[snapshot.crank] = replace(crank, virtual=True)
+    return replace(snapshot, bars=tuple(bars))
+
+
+@dataclass
+class Path2D:
+    """The positions of one traced point over the frames (None where a frame lacks it)."""
+
+    label: str
+    positions: list[Point | None] = field(default_factory=list)
+
+    def extent(self) -> float:
+        """The largest distance between two recorded positions (0 for a fixed point)."""
+        known = [p for p in self.positions if p is not None]
+        if not known:
+            return 0.0
+        xs, ys = [p[0] for p in known], [p[1] for p in known]
+        return math.hypot(max(xs) - min(xs), max(ys) - min(ys))
+
+
+def traced_paths(frames: Sequence[Frame], scale: float) -> list[Path2D]:
+    """The path of every traced point that moves (extent above 1e-9 of the scene ``scale``).
+
+    A point is identified by its snapshot's position in the frame and its label.
+    """
+    paths: dict[tuple[int, str], Path2D] = {}
+    for number, frame in enumerate(frames):
+        for index, snapshot in enumerate(frame.snapshots):
+            for point in snapshot.points:
+                path = paths.setdefault((index, point.label), Path2D(point.label, [None] * len(frames)))
+                path.positions[number] = point.position
+    return [path for path in paths.values() if path.extent() > 1e-9 * scale]
+
+
+def scene_bounds(frames: Sequence[Frame]) -> tuple[float, float, float, float]:
+    """(xmin, xmax, ymin, ymax) over every joint, bar end and traced point of every frame."""
+    xs: list[float] = []
+    ys: list[float] = []
+    for frame in frames:
+        for snapshot in frame.snapshots:
+            for point in _all_points(snapshot):
+                if math.isfinite(point[0]) and math.isfinite(point[1]):
+                    xs.append(point[0])
+                    ys.append(point[1])
+    if not xs:
+        return (-1.0, 1.0, -1.0, 1.0)
+    return (min(xs), max(xs), min(ys), max(ys))
+
+
+def _all_points(snapshot: Snapshot) -> list[Point]:
+    points = [p for bar in snapshot.bars for p in (bar.start, bar.end)]
+    points += list(snapshot.joints) + list(snapshot.ground)
+    points += [traced.position for traced in snapshot.points]
+    return points
+
+
+# --- drawing --------------------------------------------------------------------
+
+SUFFIXES = (".gif", ".mp4", ".html", ".png")
+TRACE_COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple", "tab:brown", "tab:pink")
+
+
+class AnimationError(Exception):
+    """An animation that cannot be made (no frames, unknown format, no ffmpeg)."""
+
+
+@dataclass
+class Scene:
+    """What stays fixed in every frame: the bounds, the paths and the symbol size."""
+
+    frames: list[Frame]
+    bounds: tuple[float, float, float, float]
+    paths: list[Path2D]
+    size: float  # a length in the mechanism's units used for blocks and ground symbols
+
+
+def build_scene(frames: Sequence[Frame]) -> Scene:
+    """Bounds with a margin, the moving traced points' paths, the symbol size."""
+    if not frames:
+        raise AnimationError("Nothing to animate: the listing called no library program before printing")
+    xmin, xmax, ymin, ymax = scene_bounds(frames)
+    span = max(xmax - xmin, ymax - ymin, 1e-12)
+    margin = 0.12 * span
+    bounds = (xmin - margin, xmax + margin, ymin - margin, ymax + margin)
+    return Scene(list(frames), bounds, traced_paths(frames, span), 0.035 * span)
+
+
+def draw_frame(ax, scene: Scene, number: int, title: str = "") -> None:
+    """Draw frame ``number`` of ``scene`` on an empty ``ax``."""
+    from matplotlib.patches import Circle, Polygon
+
+    frame = scene.frames[number]
+    ax.set_xlim(scene.bounds[0], scene.bounds[1])
+    ax.set_ylim(scene.bounds[2], scene.bounds[3])
+    ax.set_aspect("equal", adjustable="box")
+    ax.grid(True, color="0.92", linewidth=0.6)
+    for colour, path in zip(_colours(), scene.paths):
+        xs = [p[0] if p else math.nan for p in path.positions]
+        ys = [p[1] if p else math.nan for p in path.positions]
+        ax.plot(xs, ys, color=colour, linewidth=1.0, alpha=0.6)
+    for snapshot in frame.snapshots:
+        for pivot in snapshot.ground:
+            ax.add_patch(Polygon(_ground_triangle(pivot, scene.size), closed=True, color="0.6", zorder=2))
+        for slider in snapshot.sliders:
+            if slider.axis is not None:
+                ax.axline(slider.axis, plus(slider.axis, polar(1.0, slider.angle_deg)),
+                          color="0.5", linewidth=0.8, linestyle="-.", zorder=1)
+            ax.add_patch(Polygon(_block(slider, scene.size), closed=True, facecolor="#c9d6e8",
+                                 edgecolor="black", linewidth=1.0, zorder=4))
+        for traced in snapshot.points:
+            ax.plot(*zip(traced.joint, traced.position), color="0.35", linewidth=1.2, zorder=3)
+        for bar in snapshot.bars:
+            style = dict(color="0.45", linewidth=1.4, linestyle="--") if bar.virtual else \
+                dict(color="black", linewidth=3.2, solid_capstyle="round")
+            ax.plot(*zip(bar.start, bar.end), zorder=3, **style)
+        for joint in (*snapshot.joints, *snapshot.ground):
+            ax.add_patch(Circle(joint, 0.35 * scene.size, facecolor="white", edgecolor="black",
+                                linewidth=1.2, zorder=5))
+    for colour, path in zip(_colours(), scene.paths):
+        position = path.positions[number]
+        if position is not None:
+            ax.plot(*position, marker="o", markersize=5, color=colour, zorder=6)
+    ax.set_title(f"{title}   crank angle {frame.crank_angle:.1f}\N{DEGREE SIGN}".strip(), fontsize=10)
+    ax.text(0.01, -0.02, frame.printed, transform=ax.transAxes, va="top", ha="left",
+            family="monospace", fontsize=8)
+
+
+def _colours():
+    while True:
+        yield from TRACE_COLOURS
+
+
+def _ground_triangle(pivot: Point, size: float) -> list[Point]:
+    x, y = pivot
+    return [(x, y), (x - 0.6 * size, y - 1.0 * size), (x + 0.6 * size, y - 1.0 * size)]
+
+
+def _block(slider: Slider, size: float) -> list[Point]:
+    """The four corners of the slider block, 2.4 x 1.4 ``size``, turned to its axis."""
+    along = polar(1.2 * size, slider.angle_deg)
+    across = polar(0.7 * size, slider.angle_deg + 90.0)
+    cx, cy = slider.centre
+    return [(cx + sa * along[0] + sc * across[0], cy + sa * along[1] + sc * across[1])
+            for sa, sc in ((1, 1), (-1, 1), (-1, -1), (1, -1))]
+
+
+def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0,
+           frame_number: int = 0, progress_file=None) -> int:
+    """Write the animation to ``out`` (.gif, .mp4, .html; .png: only frame ``frame_number``).
+
+    Returns the number of frames written.  Raises :class:`AnimationError` for
+    an unknown suffix, no frames, or .mp4 without ffmpeg.
+    """
+    suffix = out.suffix.lower()
+    if suffix not in SUFFIXES:
+        raise AnimationError(f"Unknown animation format {out.suffix!r}: use {', '.join(SUFFIXES)}")
+    scene = build_scene(frames)
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    figure, ax = plt.subplots(figsize=(6.4, 5.6), dpi=90)
+    figure.subplots_adjust(left=0.08, right=0.97, top=0.93, bottom=0.2)
+    try:
+        if suffix == ".png":
+            if not 0 <= frame_number < len(scene.frames):
+                raise AnimationError(f"Frame {frame_number} does not exist: the run has {len(scene.frames)}")
+            draw_frame(ax, scene, frame_number, title)
+            figure.savefig(out)
+            return 1
+        _write_movie(figure, ax, scene, out, title, fps, progress_file)
+        return len(scene.frames)
+    finally:
+        plt.close(figure)
+
+
+def _write_movie(figure, ax, scene: Scene, out: Path, title: str, fps: float, progress_file) -> None:
+    from matplotlib import animation
+
+    from yaseer.progress import bar
+
+    suffix = out.suffix.lower()
+    if suffix == ".mp4" and not animation.writers.is_available("ffmpeg"):
+        raise AnimationError("Writing .mp4 needs ffmpeg, which is not installed here; use .gif or .html")
+    with bar(len(scene.frames), "rendering", "frame", file=progress_file) as progress:
+        drawn: set[int] = set()
+
+        def update(number: int) -> list:
+            ax.clear()
+            draw_frame(ax, scene, number, title)
+            if number not in drawn:
+                drawn.add(number)
+                progress.update(1)
+            return []
+
+        movie = animation.FuncAnimation(figure, update, frames=len(scene.frames),
+                                        init_func=lambda: [], interval=1000.0 / fps, blit=False)
+        if suffix == ".html":
+            out.write_text(movie.to_jshtml(fps=fps), encoding="utf-8")
+        elif suffix == ".gif":
+            movie.save(str(out), writer=animation.PillowWriter(fps=fps))
+        else:
+            movie.save(str(out), writer=animation.FFMpegWriter(fps=fps))

@@ -1,0 +1,73 @@
+"""Progress bars for long runs and renders, on stderr only.
+
+A bar appears only once its task has taken longer than :data:`DELAY_SECONDS`
+(tqdm's ``delay``), so a short run prints nothing extra; it goes to stderr,
+never into the program's output, and by default only when stderr is a
+terminal (a redirected stderr gets no bar characters).  tqdm is imported
+lazily: importing this module costs nothing at start-up.
+"""
+
+from __future__ import annotations
+
+import sys
+from typing import IO, Iterable, Iterator, TypeVar
+
+DELAY_SECONDS = 1.0  # a task quicker than this shows no bar at all
+
+T = TypeVar("T")
+
+
+def bar(
+    total: int | None = None,
+    description: str = "",
+    unit: str = "it",
+    file: IO[str] | None = None,
+    delay: float = DELAY_SECONDS,
+    force: bool = False,
+):
+    """A tqdm bar on ``file`` (default stderr), shown after ``delay`` seconds.
+
+    ``total`` may be None for a task of unknown length (a counter is shown).
+    With ``force`` the bar is drawn even when ``file`` is not a terminal
+    (tests and logs); otherwise a non-terminal ``file`` disables it.
+    Use it as a context manager; call ``.update(n)`` as work is done.
+    """
+    from tqdm import tqdm
+
+    stream = sys.stderr if file is None else file
+    return tqdm(
+        total=total,
+        desc=description or None,
+        unit=unit,
+        file=stream,
+        delay=delay,
+        leave=False,
+        dynamic_ncols=True,
+        disable=False if force else not _is_terminal(stream),
+    )
+
+
+def track(
+    items: Iterable[T],
+    total: int | None = None,
+    description: str = "",
+    unit: str = "it",
+    file: IO[str] | None = None,
+    delay: float = DELAY_SECONDS,
+    force: bool = False,
+) -> Iterator[T]:
+    """Iterate over ``items`` with a :func:`bar` that ticks once per item."""
+    if total is None and hasattr(items, "__len__"):
+        total = len(items)  # type: ignore[arg-type]
+    with bar(total, description, unit, file, delay, force) as progress:
+        for item in items:
+            yield item
+            progress.update(1)
+
+
+def _is_terminal(stream: IO[str]) -> bool:
+    isatty = getattr(stream, "isatty", None)
+    try:
+        return bool(isatty and isatty())
+    except ValueError:  # a closed stream
+        return False

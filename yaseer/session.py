@@ -1,0 +1,386 @@
+"""The editing session of the pocket computer, without any terminal I/O.
+
+A :class:`Session` takes one typed line at a time (:meth:`Session.handle`) and
+writes what the pocket computer would show through a ``write(text)`` callable.
+The terminal front end (``yaseer.commands.interactive``) only reads lines and
+passes them in; everything else — the program store, the commands, errors —
+lives here, so it can be tested by calling functions.
+
+What the user can type:
+
+- ``10 PRINT X`` stores line 10 in the program area being edited; ``10`` alone
+  deletes it.
+- ``LIST [range]``, ``DELETE range``, ``RENUM [new[,old[,step]]]``, ``EDIT n``,
+  ``NEW``, ``RUN [line]``, ``CONT``, ``LOAD "file"``, ``SAVE "file"``,
+  ``PROG n`` (switch the area being edited, 0-9; 0 is the main listing),
+  ``SYSTEM`` / ``BYE`` (leave).  A range is ``n``, ``n-m``, ``n-`` or ``-m``.
+- Anything else is a direct-mode statement run at once against the same
+  variables: ``PRINT 2*3``, ``GOSUB PROG 5``, ``X(10)=3``.
+
+Areas 1, 2, 3 and 5 hold the library programs (Python) until lines are typed
+or loaded into them; then the typed BASIC program replaces the library program
+in that area for this session (``NEW`` in the area brings the library back).
+Every error is shown as one BASIC error line and the session goes on.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+from yaseer.basic.errors import (
+    BREAK,
+    CANT_CONTINUE,
+    ILLEGAL_FUNCTION_CALL,
+    SYNTAX_ERROR,
+    UNDEFINED_LINE,
+    BasicError,
+)
+
+FILE_NOT_FOUND = 53  # MS-BASIC's ERR for a missing file
+MAX_LINE_NUMBER = 65529  # the largest line number MS-BASIC accepts
+AREAS = range(10)  # PROG 0 (the listing) to PROG 9, as on the pocket computers
+LIBRARY_AREAS = (1, 2, 3, 5)  # the areas yaseer.binding fills with Python programs
+PROMPT_READY = "Ready"
+
+Program = dict[int, str]  # line number -> statement text (without the number)
+
+# --- the program text: storing, listing, ranges, renumbering -----------------
+
+_NUMBERED = re.compile(r"\s*(\d+)\s?(.*)$", re.S)
+
+
+def split_numbered(text: str) -> tuple[int, str] | None:
+    """``"10 PRINT X"`` -> ``(10, "PRINT X")``; None if the text has no line number.
+
+    Raises ``Syntax error`` for a number beyond :data:`MAX_LINE_NUMBER`.
+    """
+    match = _NUMBERED.match(text)
+    if not match:
+        return None
+    number = int(match.group(1))
+    if number > MAX_LINE_NUMBER:
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+    return number, match.group(2).rstrip()
+
+
+def parse_listing(text: str) -> Program:
+    """A listing file as line -> text.
+
+    Blank lines are skipped; a line that does not start with a number continues
+    the line before it (the paper's listings wrap long lines), joined by a space.
+    Text before the first numbered line is a ``Syntax error``.
+    """
+    program: Program = {}
+    last: int | None = None
+    for raw in text.splitlines():
+        if not raw.strip():
+            continue
+        numbered = split_numbered(raw)
+        if numbered is not None:
+            last, body = numbered
+            program[last] = body
+        elif last is None:
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        else:
+            program[last] = program[last] + " " + raw.strip()
+    return program
+
+
+def program_text(program: Program) -> str:
+    """The program as a listing: one ``"<number> <text>"`` line each, in order."""
+    return "".join(f"{number} {program[number]}\n" for number in sorted(program))
+
+
+def parse_range(text: str) -> tuple[int, int]:
+    """``"10-40"``, ``"10"``, ``"10-"``, ``"-40"`` or ``""`` -> inclusive (first, last)."""
+    text = text.strip()
+    if not text:
+        return 0, MAX_LINE_NUMBER
+    match = re.fullmatch(r"(\d*)\s*(-?)\s*(\d*)", text)
+    if not match or not (match.group(1) or match.group(3)):
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+    first_text, dash, last_text = match.groups()
+    first = int(first_text) if first_text else 0
+    if not dash:
+        return first, first
+    last = int(last_text) if last_text else MAX_LINE_NUMBER
+    return first, last
+
+
+def lines_in_range(program: Program, first: int, last: int) -> list[int]:
+    """The line numbers of ``program`` between ``first`` and ``last`` inclusive, in order."""
+    return [number for number in sorted(program) if first <= number <= last]
+
+
+# Keywords followed by line numbers.  GOSUB PROG n names an area, not a line.
+_REFERENCE = re.compile(
+    r"(GOTO|GOSUB(?!\s*PROG)|THEN|ELSE|RESTORE|RESUME|RUN)(\s*)(\d+(?:\s*,\s*\d+)*)",
+    re.I,
+)
+_STRING_OR_REMARK = re.compile(r'"[^"]*"?|\bREM\b.*|\'.*', re.I | re.S)
+
+
+def renumber_references(text: str, mapping: dict[int, int]) -> tuple[str, list[int]]:
+    """Rewrite the line numbers that ``text`` jumps to through ``mapping``.
+
+    Returns the new text and the referenced numbers absent from ``mapping``
+    (left unchanged, as MS-BASIC does).  Strings and remarks are untouched.
+    """
+    missing: list[int] = []
+
+    def replace_numbers(match: re.Match) -> str:
+        def one(number_match: re.Match) -> str:
+            old = int(number_match.group())
+            if old not in mapping:
+                missing.append(old)
+                return number_match.group()
+            return str(mapping[old])
+
+        numbers = re.sub(r"\d+", one, match.group(3))
+        return match.group(1) + match.group(2) + numbers
+
+    pieces = []
+    position = 0
+    for protected in _STRING_OR_REMARK.finditer(text):
+        pieces.append(_REFERENCE.sub(replace_numbers, text[position:protected.start()]))
+        pieces.append(protected.group())
+        position = protected.end()
+    pieces.append(_REFERENCE.sub(replace_numbers, text[position:]))
+    return "".join(pieces), missing
+
+
+def renumber(program: Program, new: int = 10, old: int = 0, step: int = 10) -> tuple[Program, list[str]]:
+    """RENUM: lines from ``old`` on become ``new``, ``new+step``, ...; jumps follow.
+
+    Returns the renumbered program and warnings (``"Undefined line 90 in 30"``)
+    for jumps to lines that do not exist.  ``Illegal function call`` if the new
+    numbers would run into the lines kept below ``old`` or past 65529.
+    """
+    if step <= 0 or new < 0:
+        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+    moved = [number for number in sorted(program) if number >= old]
+    kept = [number for number in sorted(program) if number < old]
+    mapping = {number: number for number in kept}
+    for index, number in enumerate(moved):
+        mapping[number] = new + index * step
+    if moved and (mapping[moved[-1]] > MAX_LINE_NUMBER or (kept and mapping[moved[0]] <= kept[-1])):
+        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+    result: Program = {}
+    warnings: list[str] = []
+    for number in sorted(program):
+        text, missing = renumber_references(program[number], mapping)
+        result[mapping[number]] = text
+        warnings += [f"Undefined line {target} in {number}" for target in missing]
+    return result, warnings
+
+
+def file_name_argument(text: str) -> str:
+    """``"\"EX1.BAS\""`` -> ``EX1.BAS`` (closing quote optional, as on the period machines)."""
+    match = re.fullmatch(r'\s*"([^"]*)"?\s*', text)
+    if not match or not match.group(1).strip():
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+    return match.group(1).strip()
+
+
+def read_listing_file(name: str, directory: Path) -> Program:
+    """LOAD: the program in file ``name`` (``.bas`` is tried if ``name`` has no suffix)."""
+    path = directory / name
+    if not path.exists() and not path.suffix:
+        path = path.with_suffix(".bas")
+    try:
+        text = path.read_text(encoding="utf-8", errors="replace")
+    except (FileNotFoundError, IsADirectoryError, NotADirectoryError):
+        raise BasicError("File not found", FILE_NOT_FOUND) from None
+    except OSError:
+        raise BasicError("Path/File access error", 75) from None
+    return parse_listing(text)
+
+
+# --- the session ----------------------------------------------------------------
+
+_COMMAND = re.compile(
+    r"\s*(LIST|DELETE|RENUM|EDIT|NEW|RUN|CONT|LOAD|SAVE|PROG|SYSTEM|BYE)(?![A-Z$(=])(.*)$",
+    re.I | re.S,
+)
+
+
+@dataclass
+class Session:
+    """One user's pocket computer: programs per area, the machine, the commands.
+
+    ``write`` receives everything shown (program output and messages, with
+    newlines).  ``engine`` runs BASIC (see :class:`yaseer.session_engine.Engine`
+    for the interface); ``directory`` is where LOAD and SAVE look.
+    """
+
+    write: Callable[[str], object]
+    engine: object
+    directory: Path = field(default_factory=Path.cwd)
+    programs: dict[int, Program] = field(default_factory=lambda: {area: {} for area in AREAS})
+    area: int = 0
+    edit_text: str | None = None  # a line EDIT put up for the next input
+    finished: bool = False
+    _can_continue: bool = False
+
+    # -- entry point --
+
+    def handle(self, text: str) -> None:
+        """Act on one typed line; errors are shown, never raised."""
+        self.edit_text = None
+        try:
+            self._dispatch(text)
+        except BasicError as error:
+            self._show_error(error)
+
+    def _dispatch(self, text: str) -> None:
+        if not text.strip():
+            return
+        numbered = split_numbered(text)
+        if numbered is not None:
+            self.store_line(*numbered)
+            return
+        command = _COMMAND.match(text)
+        if command is None:
+            self.direct(text.strip())
+            return
+        name, argument = command.group(1).upper(), command.group(2).strip()
+        getattr(self, f"command_{name.lower()}")(argument)
+
+    def _show_error(self, error: BasicError) -> None:
+        self.write(f"{error}\n")
+
+    # -- the program store --
+
+    @property
+    def program(self) -> Program:
+        """The program of the area being edited."""
+        return self.programs[self.area]
+
+    def store_line(self, number: int, text: str) -> None:
+        """Type ``number text``: store (or, with no text, delete) a line."""
+        if text.strip():
+            self.program[number] = text
+        else:
+            self.program.pop(number, None)
+        self._can_continue = False
+
+    # -- commands --
+
+    def command_list(self, argument: str) -> None:
+        """LIST [range]: show the stored lines of the current area."""
+        first, last = parse_range(argument)
+        if not self.program and self.area in LIBRARY_AREAS:
+            self.write(f"PROG {self.area}: library program (Python)\n")
+            return
+        for number in lines_in_range(self.program, first, last):
+            self.write(f"{number} {self.program[number]}\n")
+
+    def command_delete(self, argument: str) -> None:
+        """DELETE range: remove lines; a single missing line is an error."""
+        if not argument:
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        first, last = parse_range(argument)
+        doomed = lines_in_range(self.program, first, last)
+        if not doomed and first == last:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        for number in doomed:
+            del self.program[number]
+        self._can_continue = False
+
+    def command_renum(self, argument: str) -> None:
+        """RENUM [new[,old[,step]]] (defaults 10, first line, 10)."""
+        values = [part.strip() for part in argument.split(",")] if argument else []
+        if len(values) > 3 or not all(value.isdigit() or value == "" for value in values):
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        numbers = [int(value) if value else default for value, default in zip(values + ["", "", ""], (10, 0, 10))]
+        renumbered, warnings = renumber(self.program, *numbers)
+        self.programs[self.area] = renumbered
+        for warning in warnings:
+            self.write(warning + "\n")
+        self._can_continue = False
+
+    def command_edit(self, argument: str) -> None:
+        """EDIT n: put line n up for editing as the next input."""
+        if not argument.isdigit():
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        number = int(argument)
+        if number not in self.program:
+            raise BasicError("Undefined line number", UNDEFINED_LINE)
+        self.edit_text = f"{number} {self.program[number]}"
+
+    def command_new(self, argument: str) -> None:
+        """NEW: erase the current area's program (and the variables if it is PROG 0)."""
+        if argument:
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        self.programs[self.area] = {}
+        self._can_continue = False
+        if self.area == 0:
+            self.engine.reset()
+
+    def command_prog(self, argument: str) -> None:
+        """PROG n: edit program area n from now on."""
+        if not argument.isdigit() or int(argument) not in AREAS:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self.area = int(argument)
+        if not self.program and self.area in LIBRARY_AREAS:
+            self.write(f"PROG {self.area}: library program (Python); typed lines replace it\n")
+
+    def command_load(self, argument: str) -> None:
+        """LOAD "file": replace the current area's program with the file's."""
+        self.programs[self.area] = read_listing_file(file_name_argument(argument), self.directory)
+        self._can_continue = False
+
+    def command_save(self, argument: str) -> None:
+        """SAVE "file": write the current area's program as a listing."""
+        path = self.directory / file_name_argument(argument)
+        try:
+            path.write_text(program_text(self.program), encoding="utf-8")
+        except OSError:
+            raise BasicError("Path/File access error", 75) from None
+
+    def command_run(self, argument: str) -> None:
+        """RUN [line]: fresh variables, then run PROG 0 from its start (or ``line``)."""
+        if argument and not argument.isdigit():
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        start = int(argument) if argument else None
+        if start is not None and start not in self.programs[0]:
+            raise BasicError("Undefined line number", UNDEFINED_LINE)
+        typed_areas = {area: program_text(lines) for area, lines in self.programs.items() if lines}
+        self._can_continue = False
+        self._execute(lambda: self.engine.run(typed_areas, start), in_program=True)
+
+    def command_cont(self, argument: str) -> None:
+        """CONT: go on after STOP, END-less break or Ctrl-C."""
+        if argument or not self._can_continue:
+            raise BasicError("Can't continue", CANT_CONTINUE)
+        self._execute(self.engine.cont, in_program=True)
+
+    def command_system(self, argument: str) -> None:
+        """SYSTEM: leave the session."""
+        self.finished = True
+
+    command_bye = command_system
+
+    def direct(self, statement: str) -> None:
+        """Run one direct-mode statement against the current variables."""
+        self._execute(lambda: self.engine.direct(statement), in_program=False)
+
+    def _execute(self, action: Callable[[], object], in_program: bool) -> None:
+        """Run ``action`` and show its error, if any.
+
+        A program (RUN, CONT) that ends by STOP or Ctrl-C (a ``Break`` error
+        placed at a line) may be continued; one that ends otherwise may not.
+        A direct statement leaves that as it was.
+        """
+        try:
+            action()
+        except BasicError as error:
+            if in_program:
+                self._can_continue = error.code == BREAK and error.line is not None
+            self.write(f"{error}\n")
+            return
+        if in_program:
+            self._can_continue = False
