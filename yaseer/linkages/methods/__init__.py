@@ -1,0 +1,1 @@
+"""Alternative solution methods for the basic linkages (see registry.py)."""
