@@ -1,0 +1,207 @@
+"""Program 2: the four-bar linkage AoABBo with a flexible crank, both assembly modes.
+
+Geometry (contract, Program 2): Ao at the origin, Bo = L11 u(T11), crank pin
+A = a u(theta), coupler A->B of length b, follower Bo->B of length c.  B is the
+intersection of the two circles, found in the frame of the line A->Bo (law of
+cosines, no half-angle tangent), so every crank angle including 90/180/270 deg
+is exact.  ``branch = +1`` (uncrossed) puts B to the left of the directed line
+A->Bo (cross(Bo - A, B - A) > 0), ``branch = -1`` (crossed) to the right.  The
+follower is reported as the vector B->Bo (the contract's T(14)).
+
+Continuous branch tracking (the contract's L(10) = -1) is built on top of this
+function elsewhere; here the branch is given per position.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from yaseer.linkages.errors import AssemblyError
+from yaseer.linkages.kinetostatics import (
+    Body,
+    ForceResult,
+    Joint,
+    Load,
+    MassProps,
+    analysis_shape,
+    solve_kinetostatics,
+)
+from yaseer.linkages.registry import lookup, register
+from yaseer.linkages.planar import (
+    Motion,
+    Rotation,
+    Stretch,
+    any_nonzero,
+    crank_pin,
+    fixed_point,
+    perpendicular_direction,
+    rigid_point,
+    solve_two_directions,
+    still,
+    unit,
+)
+
+UNCROSSED = 1
+CROSSED = -1
+
+# Loads of Program 2, by name (contract element in brackets):
+# crank_fx, crank_fy [F(29), F(30)], crank_perpendicular [F(31)], crank_torque [U(2)];
+# coupler_fx, coupler_fy [F(32), F(33)], coupler_perpendicular [F(34)];
+# follower_fx, follower_fy [F(35), F(36)], follower_perpendicular [F(37)].
+LOAD_NAMES = (
+    "crank_fx", "crank_fy", "crank_perpendicular", "crank_torque",
+    "coupler_fx", "coupler_fy", "coupler_perpendicular",
+    "follower_fx", "follower_fy", "follower_perpendicular",
+)
+
+
+@dataclass(frozen=True)
+class FourBar:
+    """Kinematics of a four-bar at one or many positions (arrays broadcast).
+
+    ``coupler``: inclination of A->B and rates; ``follower``: inclination of the
+    vector B->Bo and rates; ``pin_a``, ``pin_b``: motions of A and B; ``pivot``:
+    Bo; ``moving``: whether rates were computed (otherwise exactly 0).
+    """
+
+    crank: Rotation
+    crank_length: Stretch
+    coupler: Rotation
+    follower: Rotation
+    pin_a: Motion
+    pin_b: Motion
+    pivot: Motion
+    moving: bool
+
+    def crank_point(self, distance, offset_deg) -> Motion:
+        """A point of the crank: ``distance`` from Ao, ``offset_deg`` from Ao->A."""
+        return rigid_point(fixed_point(0j), self.crank, distance, offset_deg)
+
+    def coupler_point(self, distance, offset_deg) -> Motion:
+        """A point of the coupler: ``distance`` from A, ``offset_deg`` from A->B."""
+        return rigid_point(self.pin_a, self.coupler, distance, offset_deg)
+
+    def follower_point(self, distance, offset_deg) -> Motion:
+        """A point of the follower: ``distance`` from Bo, ``offset_deg`` from Bo->B."""
+        return rigid_point(self.pivot, self._follower_from_pivot(), distance, offset_deg)
+
+    def _follower_from_pivot(self) -> Rotation:
+        return Rotation(self.follower.angle + np.pi, self.follower.omega, self.follower.alpha)
+
+    def forces(
+        self,
+        *,
+        crank: MassProps = MassProps(),
+        coupler: MassProps = MassProps(),
+        follower: MassProps = MassProps(),
+        crank_point=(0.0, 0.0),
+        coupler_point=(0.0, 0.0),
+        follower_point=(0.0, 0.0),
+        loads: dict | None = None,
+        unknown: str = "crank_torque",
+        gravity=0.0,
+    ) -> ForceResult:
+        """Joint reactions and the ``unknown`` load (one of :data:`LOAD_NAMES`).
+
+        Reactions (complex): ``ground_on_crank`` at Ao, ``crank_on_coupler`` at A,
+        ``coupler_on_follower`` at B, ``ground_on_follower`` at Bo.
+        """
+        loads = loads or {}
+        bodies = [
+            Body("crank", crank.mass, crank.inertia, self.crank_point(crank.distance, crank.offset_deg), self.crank.alpha),
+            Body("coupler", coupler.mass, coupler.inertia,
+                 self.coupler_point(coupler.distance, coupler.offset_deg), self.coupler.alpha),
+            Body("follower", follower.mass, follower.inertia,
+                 self.follower_point(follower.distance, follower.offset_deg), self.follower.alpha),
+        ]
+        joints = [
+            Joint("ground_on_crank", None, "crank", "pin", point=0j),
+            Joint("crank_on_coupler", "crank", "coupler", "pin", point=self.pin_a.pos),
+            Joint("coupler_on_follower", "coupler", "follower", "pin", point=self.pin_b.pos),
+            Joint("ground_on_follower", None, "follower", "pin", point=self.pivot.pos),
+        ]
+        catalogue = {"crank_torque": Load("crank")}
+        points = {
+            "crank": (crank_point, self.crank_point(*crank_point).pos, self.crank.angle),
+            "coupler": (coupler_point, self.coupler_point(*coupler_point).pos, self.coupler.angle),
+            "follower": (follower_point, self.follower_point(*follower_point).pos, self._follower_from_pivot().angle),
+        }
+        for body, ((distance, offset), position, reference) in points.items():
+            catalogue[f"{body}_fx"] = Load(body, 1.0, position)
+            catalogue[f"{body}_fy"] = Load(body, 1j, position)
+            catalogue[f"{body}_perpendicular"] = Load(body, perpendicular_direction(reference, offset, distance), position)
+        shape = analysis_shape(
+            self.pin_a.pos, crank.mass, crank.inertia, coupler.mass, coupler.inertia,
+            follower.mass, follower.inertia, gravity, *loads.values(),
+        )
+        reactions, value = solve_kinetostatics(bodies, joints, catalogue, loads, unknown, gravity, shape)
+        return ForceResult(unknown, value, reactions)
+
+
+def fourbar(*args, method: str | None = None, **kwargs) -> FourBar:
+    """Four-bar kinematics by ``method`` (default ``"closed"``); see
+    :func:`fourbar_closed` for the arguments.
+
+    A whole cycle in one call: ``fourbar(100, 0, 40, 120, 80, np.linspace(0, 360, 3601), 10)``.
+    """
+    return lookup("fourbar", method)(*args, **kwargs)
+
+
+@register("fourbar", "closed", default=True)
+def fourbar_closed(
+    ground_length,
+    ground_angle_deg,
+    crank_length,
+    coupler_length,
+    follower_length,
+    crank_angle_deg,
+    omega=0.0,
+    alpha=0.0,
+    *,
+    crank_length_rate=0.0,
+    crank_length_accel=0.0,
+    branch=UNCROSSED,
+) -> FourBar:
+    """Positions always; velocities and accelerations when any crank rate is non-zero.
+
+    Lengths in any unit, angles in degrees, rates in rad/s, rad/s**2, length/s.
+    Raises AssemblyError where the loop does not close (or a coupler/follower
+    length is <= 0, or A falls on Bo), LockedError at a toggle (coupler and
+    follower in line) when rates are asked.
+    """
+    b = np.asarray(coupler_length, dtype=float)
+    c = np.asarray(follower_length, dtype=float)
+    length = Stretch(*(np.asarray(v, dtype=float) for v in (crank_length, crank_length_rate, crank_length_accel)))
+    crank = Rotation(np.radians(np.asarray(crank_angle_deg, dtype=float)), np.asarray(omega, float), np.asarray(alpha, float))
+    moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
+    pin_a = crank_pin(length, crank) if moving else still(crank_pin(length, crank))
+    pivot = fixed_point(np.asarray(ground_length, dtype=float) * unit(np.radians(ground_angle_deg)))
+    if np.any(b <= 0) or np.any(c <= 0):
+        raise AssemblyError("coupler or follower of zero length")
+    diagonal = pivot.pos - pin_a.pos
+    span = np.abs(diagonal)
+    if np.any(span == 0):
+        raise AssemblyError("the crank pin falls on the follower pivot")
+    along = (b**2 - c**2 + span**2) / (2 * span)
+    height_squared = b**2 - along**2
+    if np.any(height_squared < 0):
+        raise AssemblyError("the coupler and follower cannot meet")
+    side = np.where(np.asarray(branch) == CROSSED, -1.0, 1.0)
+    b_pos = pin_a.pos + (along + 1j * side * np.sqrt(height_squared)) * diagonal / span
+    coupler_vec = b_pos - pin_a.pos
+    follower_vec = pivot.pos - b_pos  # B -> Bo
+    coupler_angle, follower_angle = np.angle(coupler_vec), np.angle(follower_vec)
+    if not moving:
+        zero = np.zeros_like(span)
+        return FourBar(crank, length, Rotation(coupler_angle, zero, zero), Rotation(follower_angle, zero, zero),
+                       pin_a, still(Motion(b_pos, b_pos, b_pos)), pivot, False)
+    # B = A + coupler = Bo - follower_vec:  w3 i coupler + w4 i follower_vec = -A'
+    w3, w4 = solve_two_directions(-pin_a.vel, 1j * coupler_vec, 1j * follower_vec)
+    rhs = -pin_a.acc + w3**2 * coupler_vec + w4**2 * follower_vec
+    a3, a4 = solve_two_directions(rhs, 1j * coupler_vec, 1j * follower_vec)
+    b_vel = pin_a.vel + 1j * w3 * coupler_vec
+    b_acc = pin_a.acc + (1j * a3 - w3**2) * coupler_vec
+    return FourBar(crank, length, Rotation(coupler_angle, w3, a3), Rotation(follower_angle, w4, a4),
+                   pin_a, Motion(b_pos, b_vel, b_acc), pivot, True)

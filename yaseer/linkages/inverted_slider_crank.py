@@ -1,0 +1,157 @@
+"""Program 3: the first inversion of the slider-crank (FISC) with a flexible crank.
+
+Geometry (contract, Program 3): Ao at the origin, Bo = -L6 u(T6) (L6, T6 give
+the vector Bo->Ao), crank pin A = a u(theta) carries a slider block that slides
+along the follower, a link pivoted at Bo whose line passes through A.  The
+follower Bo->A has length L5 and inclination T9:  L5 u(T9) = A - Bo, found with
+atan2 and |.| (the paper's equations (7), (8) divide by cos T9).  Rates from
+A' = L5' u + L5 T9' i u (one 2x2 solve), singular only where A reaches Bo.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from yaseer.linkages.errors import AssemblyError
+from yaseer.linkages.kinetostatics import (
+    Body,
+    ForceResult,
+    Joint,
+    Load,
+    MassProps,
+    analysis_shape,
+    solve_kinetostatics,
+)
+from yaseer.linkages.registry import lookup, register
+from yaseer.linkages.planar import (
+    Motion,
+    Rotation,
+    Stretch,
+    any_nonzero,
+    crank_pin,
+    fixed_point,
+    perpendicular_direction,
+    rigid_point,
+    solve_two_directions,
+    still,
+    unit,
+)
+
+# Loads of Program 3: crank_torque [U(3)], follower_perpendicular [F(18)].
+LOAD_NAMES = ("crank_torque", "follower_perpendicular")
+
+
+@dataclass(frozen=True)
+class InvertedSliderCrank:
+    """Kinematics of the FISC at one or many positions (arrays broadcast).
+
+    ``follower``: inclination T9 of Bo->A and rates; ``follower_length``: L5 = |Bo->A|
+    and rates; ``pin_a``: the crank pin (and slider block) motion; ``pivot``: Bo.
+    """
+
+    crank: Rotation
+    crank_length: Stretch
+    follower: Rotation
+    follower_length: Stretch
+    pin_a: Motion
+    pivot: Motion
+    moving: bool
+
+    def crank_point(self, distance, offset_deg) -> Motion:
+        """A point of the crank: ``distance`` from Ao, ``offset_deg`` from Ao->A."""
+        return rigid_point(fixed_point(0j), self.crank, distance, offset_deg)
+
+    def follower_point(self, distance, offset_deg) -> Motion:
+        """A point of the follower: ``distance`` from Bo, ``offset_deg`` from Bo->A."""
+        return rigid_point(self.pivot, self.follower, distance, offset_deg)
+
+    def forces(
+        self,
+        *,
+        crank: MassProps = MassProps(),
+        block_mass=0.0,
+        block_inertia=0.0,
+        follower: MassProps = MassProps(),
+        follower_point=(0.0, 0.0),
+        loads: dict | None = None,
+        unknown: str = "crank_torque",
+        gravity=0.0,
+    ) -> ForceResult:
+        """Joint reactions and the ``unknown`` load (``crank_torque`` or
+        ``follower_perpendicular``).
+
+        The block sits at A and turns with the follower.  Reactions:
+        ``ground_on_crank`` at Ao and ``crank_on_block`` at A (complex);
+        ``follower_on_block`` (normal force at A along u(T9 + 90 deg)) and
+        ``follower_on_block_couple`` (couple about A); ``ground_on_follower`` at Bo.
+        """
+        loads = loads or {}
+        bodies = [
+            Body("crank", crank.mass, crank.inertia, self.crank_point(crank.distance, crank.offset_deg), self.crank.alpha),
+            Body("block", block_mass, block_inertia, self.pin_a, self.follower.alpha),
+            Body("follower", follower.mass, follower.inertia,
+                 self.follower_point(follower.distance, follower.offset_deg), self.follower.alpha),
+        ]
+        joints = [
+            Joint("ground_on_crank", None, "crank", "pin", point=0j),
+            Joint("crank_on_block", "crank", "block", "pin", point=self.pin_a.pos),
+            Joint("follower_on_block", "follower", "block", "slide", point=self.pin_a.pos,
+                  direction=1j * unit(self.follower.angle)),
+            Joint("follower_on_block_couple", "follower", "block", "couple"),
+            Joint("ground_on_follower", None, "follower", "pin", point=self.pivot.pos),
+        ]
+        distance, offset = follower_point
+        catalogue = {
+            "crank_torque": Load("crank"),
+            "follower_perpendicular": Load("follower", perpendicular_direction(self.follower.angle, offset, distance),
+                                           self.follower_point(distance, offset).pos),
+        }
+        shape = analysis_shape(self.pin_a.pos, crank.mass, crank.inertia, block_mass, block_inertia,
+                               follower.mass, follower.inertia, gravity, *loads.values())
+        reactions, value = solve_kinetostatics(bodies, joints, catalogue, loads, unknown, gravity, shape)
+        return ForceResult(unknown, value, reactions)
+
+
+def inverted_slider_crank(*args, method: str | None = None, **kwargs) -> InvertedSliderCrank:
+    """FISC kinematics by ``method`` (default ``"closed"``); see
+    :func:`inverted_slider_crank_closed` for the arguments."""
+    return lookup("inverted_slider_crank", method)(*args, **kwargs)
+
+
+@register("inverted_slider_crank", "closed", default=True)
+def inverted_slider_crank_closed(
+    ground_length,
+    ground_angle_deg,
+    crank_length,
+    crank_angle_deg,
+    omega=0.0,
+    alpha=0.0,
+    *,
+    crank_length_rate=0.0,
+    crank_length_accel=0.0,
+) -> InvertedSliderCrank:
+    """Positions always; velocities and accelerations when any crank rate is non-zero.
+
+    ``ground_length``, ``ground_angle_deg``: the vector Bo->Ao.  Raises
+    AssemblyError where the crank pin A falls on Bo (L5 = 0).
+    """
+    length = Stretch(*(np.asarray(v, dtype=float) for v in (crank_length, crank_length_rate, crank_length_accel)))
+    crank = Rotation(np.radians(np.asarray(crank_angle_deg, dtype=float)), np.asarray(omega, float), np.asarray(alpha, float))
+    moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
+    pin_a = crank_pin(length, crank) if moving else still(crank_pin(length, crank))
+    pivot = fixed_point(-np.asarray(ground_length, dtype=float) * unit(np.radians(ground_angle_deg)))
+    radius = pin_a.pos - pivot.pos
+    l5 = np.abs(radius)
+    if np.any(l5 == 0):
+        raise AssemblyError("the crank pin falls on the follower pivot (zero-length follower)")
+    t9 = np.angle(radius)
+    if not moving:
+        zero = np.zeros_like(l5)
+        return InvertedSliderCrank(crank, length, Rotation(t9, zero, zero), Stretch(l5, zero, zero), pin_a, pivot, False)
+    u = radius / l5
+    l5_dot, w4 = solve_two_directions(pin_a.vel, u, 1j * radius)
+    rhs = pin_a.acc - 2j * l5_dot * w4 * u + w4**2 * radius
+    l5_ddot, a4 = solve_two_directions(rhs, u, 1j * radius)
+    return InvertedSliderCrank(crank, length, Rotation(t9, w4, a4), Stretch(l5, l5_dot, l5_ddot), pin_a, pivot, True)

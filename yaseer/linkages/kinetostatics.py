@@ -1,0 +1,216 @@
+"""A small generic planar kinetostatic (d'Alembert) solver, shared by every linkage.
+
+For each rigid body:  sum F = m a_G  and  sum M_G = I_G alpha  (a particle has
+no moment equation).  Gravity G acts in -y on every mass.  The unknowns are the
+joint reactions (a pin: two components; a slide: a force along a given
+direction; a couple) and one selected load; everything else is known.  One
+linear system per position, all positions solved by one batched
+``numpy.linalg.solve``.
+
+Sign conventions: a joint's unknown is the action of its ``upstream`` body on
+its ``downstream`` body (``upstream=None`` is the ground); the downstream body
+receives +value, the upstream body -value.  Forces are complex numbers
+``Fx + 1j*Fy``; couples are counter-clockwise positive.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from yaseer.linkages.errors import SingularForceError, UnknownLoadError
+from yaseer.linkages.planar import Motion, cross
+
+# Determinant, after scaling rows and columns to unit size, below which the
+# system counts as singular (the unknowns cannot balance the loads).
+SINGULAR_DETERMINANT = 1e-10
+
+
+@dataclass(frozen=True)
+class Body:
+    """A rigid body: mass (kg), inertia about its mass centre (kg m**2), the
+    motion of the mass centre and the angular acceleration (rad/s**2)."""
+
+    name: str
+    mass: np.ndarray | float
+    inertia: np.ndarray | float
+    centre: Motion
+    alpha: np.ndarray | float
+    particle: bool = False
+
+
+@dataclass(frozen=True)
+class Load:
+    """A load of scalar value on ``body``: a force along unit ``direction`` acting
+    at ``point``, or (``direction is None``) a couple."""
+
+    body: str
+    direction: np.ndarray | complex | None = None
+    point: np.ndarray | complex | None = None
+
+
+@dataclass(frozen=True)
+class Joint:
+    """An unknown reaction, the action of ``upstream`` (None: ground) on ``downstream``.
+
+    ``kind`` is ``"pin"`` (two components, result complex), ``"slide"`` (a force
+    along unit ``direction``) or ``"couple"``.
+    """
+
+    name: str
+    upstream: str | None
+    downstream: str
+    kind: str
+    point: np.ndarray | complex | None = None
+    direction: np.ndarray | complex | None = None
+
+
+def _columns(joints: list[Joint], unknown_load: Load) -> list[list[tuple[str, float, object, object]]]:
+    """The unknowns as columns: each a list of (body, sign, direction|None, point)."""
+    columns = []
+    for joint in joints:
+        directions = [1.0, 1j] if joint.kind == "pin" else [joint.direction if joint.kind == "slide" else None]
+        for direction in directions:
+            actions = [(joint.downstream, 1.0, direction, joint.point)]
+            if joint.upstream is not None:
+                actions.append((joint.upstream, -1.0, direction, joint.point))
+            columns.append(actions)
+    columns.append([(unknown_load.body, 1.0, unknown_load.direction, unknown_load.point)])
+    return columns
+
+
+def _effect(direction, point, centre) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(Fx, Fy, moment about the mass centre) of a unit load."""
+    if direction is None:
+        return 0.0, 0.0, 1.0
+    direction = np.asarray(direction, dtype=complex)
+    return direction.real, direction.imag, cross(np.asarray(point, dtype=complex) - centre, direction)
+
+
+def _rows(bodies: list[Body]) -> dict[str, int]:
+    """The first equation row of each body (3 rows a body, 2 for a particle)."""
+    rows, row = {}, 0
+    for body in bodies:
+        rows[body.name] = row
+        row += 2 if body.particle else 3
+    return rows
+
+
+def _add(matrix_or_rhs, index, value, shape) -> None:
+    matrix_or_rhs[(Ellipsis, *index)] += np.broadcast_to(value, shape)
+
+
+def solve_kinetostatics(
+    bodies: list[Body],
+    joints: list[Joint],
+    loads: dict[str, Load],
+    values: dict[str, np.ndarray | float],
+    unknown: str,
+    gravity: float,
+    shape: tuple[int, ...],
+) -> tuple[dict[str, np.ndarray], np.ndarray]:
+    """Solve the kinetostatics of ``bodies`` at every position of ``shape``.
+
+    ``loads`` names every load the linkage knows; ``values`` gives the known ones
+    (missing names are 0); ``unknown`` names the one solved for.  Returns the
+    joint reactions by name (complex for pins) and the unknown load's value.
+    Raises :class:`SingularForceError` where the system has no unique solution.
+    """
+    if unknown not in loads:
+        raise UnknownLoadError(f"unknown load {unknown!r} (known: {', '.join(loads)})")
+    rows = _rows(bodies)
+    by_name = {body.name: body for body in bodies}
+    size = sum(2 if body.particle else 3 for body in bodies)
+    columns = _columns(joints, loads[unknown])
+    if len(columns) != size:
+        raise ValueError(f"{len(columns)} unknowns for {size} equations")
+    matrix = np.zeros(shape + (size, size))
+    rhs = np.zeros(shape + (size,))
+    for column, actions in enumerate(columns):
+        for body_name, sign, direction, point in actions:
+            body = by_name[body_name]
+            fx, fy, moment = _effect(direction, point, body.centre.pos)
+            row = rows[body_name]
+            _add(matrix, (row, column), sign * fx, shape)
+            _add(matrix, (row + 1, column), sign * fy, shape)
+            if not body.particle:
+                _add(matrix, (row + 2, column), sign * moment, shape)
+    for body in bodies:
+        row = rows[body.name]
+        inertial = body.mass * body.centre.acc
+        _add(rhs, (row,), inertial.real, shape)
+        _add(rhs, (row + 1,), inertial.imag + body.mass * gravity, shape)
+        if not body.particle:
+            _add(rhs, (row + 2,), body.inertia * body.alpha, shape)
+    for name, load in loads.items():
+        value = values.get(name, 0.0)
+        if name == unknown or not np.any(value):
+            continue
+        body = by_name[load.body]
+        fx, fy, moment = _effect(load.direction, load.point, body.centre.pos)
+        row = rows[load.body]
+        _add(rhs, (row,), -value * fx, shape)
+        _add(rhs, (row + 1,), -value * fy, shape)
+        if not body.particle:
+            _add(rhs, (row + 2,), -value * moment, shape)
+    solution = _solve(matrix, rhs)
+    return _unpack(joints, solution), solution[..., -1]
+
+
+def _solve(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """Batched solve after scaling rows and columns; singular systems raise."""
+    row_scale = np.max(np.abs(matrix), axis=-1, keepdims=True)
+    row_scale[row_scale == 0] = 1.0
+    scaled = matrix / row_scale
+    column_scale = np.max(np.abs(scaled), axis=-2, keepdims=True)
+    column_scale[column_scale == 0] = 1.0
+    scaled = scaled / column_scale
+    determinant = np.linalg.det(scaled)
+    if np.any(~(np.abs(determinant) > SINGULAR_DETERMINANT)):
+        raise SingularForceError("the selected unknown cannot balance the loads")
+    scaled_solution = np.linalg.solve(scaled, (rhs / row_scale[..., 0])[..., None])[..., 0]
+    solution = scaled_solution / column_scale[..., 0, :]
+    if not np.all(np.isfinite(solution)):
+        raise SingularForceError("the force system has no finite solution")
+    return solution
+
+
+def _unpack(joints: list[Joint], solution: np.ndarray) -> dict[str, np.ndarray]:
+    """Joint reactions by name from the solution vector (pins as complex)."""
+    reactions, column = {}, 0
+    for joint in joints:
+        if joint.kind == "pin":
+            reactions[joint.name] = solution[..., column] + 1j * solution[..., column + 1]
+            column += 2
+        else:
+            reactions[joint.name] = solution[..., column]
+            column += 1
+    return reactions
+
+
+@dataclass(frozen=True)
+class MassProps:
+    """Mass (kg), inertia about the mass centre (kg m**2) and where the mass centre
+    lies: ``distance`` from the link's reference joint at ``offset_deg`` degrees
+    counter-clockwise from the link's reference line."""
+
+    mass: np.ndarray | float = 0.0
+    inertia: np.ndarray | float = 0.0
+    distance: np.ndarray | float = 0.0
+    offset_deg: np.ndarray | float = 0.0
+
+
+@dataclass(frozen=True)
+class ForceResult:
+    """A solved force analysis: the name and value of the unknown load, and the
+    joint reactions by name (pins complex ``Fx + 1j*Fy``, slides and couples real)."""
+
+    unknown: str
+    value: np.ndarray
+    reactions: dict[str, np.ndarray]
+
+
+def analysis_shape(*arrays) -> tuple[int, ...]:
+    """The broadcast shape of every array taking part in a force analysis."""
+    return np.broadcast_shapes(*(np.shape(array) for array in arrays))

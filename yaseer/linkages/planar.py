@@ -1,0 +1,143 @@
+"""Planar vector helpers shared by every linkage.
+
+Points and vectors of the plane are complex numbers ``x + 1j*y`` (numpy complex
+arrays for a whole cycle at once): a rotation by 90 degrees counter-clockwise is a
+multiplication by ``1j`` and ``u(t) = exp(1j*t)`` is the unit vector at angle ``t``.
+Angles inside this package are radians unless a name says ``_deg``; angular rates
+are rad/s and rad/s**2, counter-clockwise positive.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from yaseer.linkages.errors import LockedError
+
+
+def unit(angle: np.ndarray | float) -> np.ndarray:
+    """The unit vector u(angle), angle in radians, as a complex number."""
+    return np.exp(1j * np.asarray(angle, dtype=float))
+
+
+def cross(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """The z component of p x q (positive when q is counter-clockwise of p)."""
+    return p.real * q.imag - p.imag * q.real
+
+
+def dot(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+    """The scalar product p . q."""
+    return p.real * q.real + p.imag * q.imag
+
+
+def normalize_degrees(angle_deg: np.ndarray | float) -> np.ndarray:
+    """An angle in degrees brought into the half-open range (-180, 180]."""
+    return 180.0 - np.mod(180.0 - np.asarray(angle_deg, dtype=float), 360.0)
+
+
+def direction_degrees(vector: np.ndarray) -> np.ndarray:
+    """The inclination of ``vector`` in degrees, in (-180, 180]."""
+    return normalize_degrees(np.degrees(np.angle(vector)))
+
+
+def any_nonzero(*values) -> bool:
+    """True when any element of any of ``values`` is non-zero (a motion is asked for)."""
+    return any(np.any(np.asarray(value) != 0) for value in values)
+
+
+def solve_two_directions(rhs: np.ndarray, first: np.ndarray, second: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Real x1, x2 with ``x1*first + x2*second == rhs`` (all complex vectors).
+
+    Raises :class:`LockedError` where ``first`` and ``second`` are parallel: the
+    loop has no unique rate there (a toggle or branch point).
+    """
+    determinant = cross(first, second)
+    if np.any(determinant == 0):
+        raise LockedError("the velocity directions are parallel (toggle or branch point)")
+    return cross(rhs, second) / determinant, cross(first, rhs) / determinant
+
+
+class Motion(NamedTuple):
+    """Position (length units), velocity (per s) and acceleration (per s**2) of a point,
+    each a complex array ``x + 1j*y`` in the frame of the crank pivot Ao."""
+
+    pos: np.ndarray
+    vel: np.ndarray
+    acc: np.ndarray
+
+
+class Rotation(NamedTuple):
+    """Inclination (radians, not normalised), angular velocity (rad/s) and angular
+    acceleration (rad/s**2) of a link, counter-clockwise positive."""
+
+    angle: np.ndarray
+    omega: np.ndarray
+    alpha: np.ndarray
+
+    @property
+    def degrees(self) -> np.ndarray:
+        """The inclination in degrees, in (-180, 180]."""
+        return normalize_degrees(np.degrees(self.angle))
+
+
+class Stretch(NamedTuple):
+    """A length (length units) and its first and second time derivatives."""
+
+    value: np.ndarray
+    rate: np.ndarray
+    accel: np.ndarray
+
+
+def fixed_point(position: np.ndarray | complex) -> Motion:
+    """A point of the ground: it neither moves nor accelerates."""
+    pos = np.asarray(position, dtype=complex)
+    zero = np.zeros_like(pos)
+    return Motion(pos, zero, zero)
+
+
+def rigid_point(origin: Motion, link: Rotation, distance, offset_deg) -> Motion:
+    """A point of a rigid link, ``distance`` from ``origin`` (a point of the link) at
+    ``offset_deg`` degrees counter-clockwise from the link's reference line, whose
+    inclination and rates are ``link``.
+
+    v = v_origin + omega k x r and a = a_origin + alpha k x r - omega**2 r, r = origin->point.
+    """
+    r = np.asarray(distance, dtype=float) * unit(link.angle + np.radians(offset_deg))
+    pos = origin.pos + r
+    vel = origin.vel + 1j * link.omega * r
+    acc = origin.acc + (1j * link.alpha - link.omega**2) * r
+    return Motion(pos, vel, acc)
+
+
+def crank_pin(length: Stretch, crank: Rotation) -> Motion:
+    """The pin at the end of a flexible crank pivoted at the origin.
+
+    pos = a u, vel = (a' + i a w) u, acc = (a'' - a w**2 + i (a alpha + 2 a' w)) u,
+    u = u(crank angle): the pin slides along the turning crank.
+    """
+    a, a_dot, a_ddot = length
+    u = unit(crank.angle)
+    pos = a * u
+    vel = (a_dot + 1j * a * crank.omega) * u
+    acc = (a_ddot - a * crank.omega**2 + 1j * (a * crank.alpha + 2 * a_dot * crank.omega)) * u
+    return Motion(pos, vel, acc)
+
+
+def still(motion: Motion) -> Motion:
+    """``motion`` with its velocity and acceleration set exactly to zero."""
+    zero = np.zeros_like(motion.pos)
+    return Motion(motion.pos, zero, zero)
+
+
+def perpendicular_direction(reference_angle, offset_deg, distance) -> np.ndarray:
+    """The direction of a perpendicular point load (Shared rules of the contract).
+
+    The load acts at the point ``distance`` from the link's reference joint at
+    ``offset_deg`` from the reference line (inclination ``reference_angle``, rad),
+    perpendicular to joint->point and counter-clockwise about the joint:
+    u(reference + H + 90 deg), reversed when ``distance`` is negative (the point
+    then lies the other way); at distance 0 it is u(reference + H + 90 deg).
+    """
+    sign = np.where(np.asarray(distance) < 0, -1.0, 1.0)
+    return sign * unit(reference_angle + np.radians(offset_deg) + np.pi / 2)

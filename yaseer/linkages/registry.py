@@ -1,0 +1,55 @@
+"""Registry of solution methods per linkage.
+
+Each linkage (``"slider_crank"``, ``"fourbar"``, ``"inverted_slider_crank"``,
+``"virtual_link"``) has one or more methods, each a function with the same
+signature and result type as the linkage's default. A new method (Newton,
+half-angle, pseudographic, ...) is added with::
+
+    @register("fourbar", "newton")
+    def fourbar_newton(...): ...
+
+and chosen with the public function's ``method=`` argument (or, from the command
+line, ``--method 2=newton``).
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+from yaseer.linkages.errors import UnknownMethodError
+
+_REGISTRY: dict[str, dict[str, Callable]] = {}
+_DEFAULTS: dict[str, str] = {}
+
+
+def register(linkage: str, name: str, *, default: bool = False) -> Callable[[Callable], Callable]:
+    """Decorator registering ``function`` as method ``name`` of ``linkage``."""
+
+    def decorate(function: Callable) -> Callable:
+        _REGISTRY.setdefault(linkage, {})[name] = function
+        if default or linkage not in _DEFAULTS:
+            _DEFAULTS[linkage] = name
+        return function
+
+    return decorate
+
+
+def method_names(linkage: str) -> list[str]:
+    """The registered method names of ``linkage``, sorted."""
+    return sorted(_REGISTRY.get(linkage, {}))
+
+
+def default_method(linkage: str) -> str:
+    """The name of the method used when none is asked for."""
+    return _DEFAULTS[linkage]
+
+
+def lookup(linkage: str, name: str | None = None) -> Callable:
+    """The function of method ``name`` (the default when ``None``) of ``linkage``."""
+    methods = _REGISTRY.get(linkage, {})
+    chosen = default_method(linkage) if name is None else name
+    if chosen not in methods:
+        raise UnknownMethodError(
+            f"Unknown method {chosen!r} for {linkage} (known: {', '.join(method_names(linkage))})"
+        )
+    return methods[chosen]

@@ -1,0 +1,189 @@
+"""Program 1: the general (offset, inclined, flexible-crank) slider-crank AoAB.
+
+Geometry (contract, Program 1): crank pivot Ao at the origin, crank pin
+A = a u(theta); the piston pin B runs on the line {e u(phi - 90 deg) + s u(phi)}
+(``e`` to the right of the axis direction u(phi)) and is the solution ahead of A:
+s = A.u(phi) + sqrt(b**2 - (e + A.u(phi + 90 deg))**2).  Every formula is a vector
+form, exact at dead centres and with a vertical axis; rates are singular only
+where the rod is perpendicular to the axis (the assembly limit).
+
+Units: lengths in any unit, angles in degrees at the interface, rates in rad/s.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from yaseer.linkages.errors import AssemblyError
+from yaseer.linkages.kinetostatics import (
+    Body,
+    ForceResult,
+    Joint,
+    Load,
+    MassProps,
+    analysis_shape,
+    solve_kinetostatics,
+)
+from yaseer.linkages.registry import lookup, register
+from yaseer.linkages.planar import (
+    Motion,
+    Rotation,
+    Stretch,
+    any_nonzero,
+    crank_pin,
+    dot,
+    fixed_point,
+    perpendicular_direction,
+    rigid_point,
+    solve_two_directions,
+    still,
+    unit,
+)
+
+# Loads of Program 1, by name (contract element in brackets):
+# crank_fx, crank_fy [F(0), F(1)] force components on the crank at its point;
+# crank_perpendicular [F(2)] on the crank at its point; crank_torque [U(1)];
+# rod_fx, rod_fy [F(7), F(8)] on the rod at its point; rod_perpendicular [F(9)];
+# piston [P(1)] along -u(phi), pushing the piston toward the crank.
+LOAD_NAMES = (
+    "crank_fx", "crank_fy", "crank_perpendicular", "crank_torque",
+    "rod_fx", "rod_fy", "rod_perpendicular", "piston",
+)
+
+
+@dataclass(frozen=True)
+class SliderCrank:
+    """Kinematics of a slider-crank at one or many positions (arrays broadcast).
+
+    ``crank``: crank angle/rates; ``rod``: inclination of A->B and rates;
+    ``pin_a``, ``pin_b``: crank pin and piston pin motions; ``travel``: s along
+    the axis; ``axis``: the axis inclination phi (radians); ``moving``: whether
+    rates were computed (otherwise every velocity and acceleration is exactly 0).
+    """
+
+    crank: Rotation
+    crank_length: Stretch
+    rod: Rotation
+    pin_a: Motion
+    pin_b: Motion
+    travel: Stretch
+    axis: np.ndarray
+    moving: bool
+
+    def crank_point(self, distance, offset_deg) -> Motion:
+        """A point of the crank: ``distance`` from Ao, ``offset_deg`` from Ao->A."""
+        return rigid_point(fixed_point(0j), self.crank, distance, offset_deg)
+
+    def rod_point(self, distance, offset_deg) -> Motion:
+        """A point of the rod: ``distance`` from the piston pin B, ``offset_deg`` from B->A."""
+        return rigid_point(self.pin_b, self._rod_from_b(), distance, offset_deg)
+
+    def _rod_from_b(self) -> Rotation:
+        return Rotation(self.rod.angle + np.pi, self.rod.omega, self.rod.alpha)
+
+    def forces(
+        self,
+        *,
+        crank: MassProps = MassProps(),
+        rod: MassProps = MassProps(),
+        piston_mass=0.0,
+        crank_point=(0.0, 0.0),
+        rod_point=(0.0, 0.0),
+        loads: dict | None = None,
+        unknown: str = "crank_torque",
+        gravity=0.0,
+    ) -> ForceResult:
+        """Joint reactions and the ``unknown`` load (one of :data:`LOAD_NAMES`).
+
+        ``crank_point``/``rod_point`` are (distance, offset_deg) of the points of
+        interest where the point loads act; ``loads`` gives the known loads.
+        Reactions: ``ground_on_crank`` at Ao, ``crank_on_rod`` at A,
+        ``rod_on_piston`` at B (complex), ``wall_on_piston`` along u(phi + 90 deg).
+        """
+        loads = loads or {}
+        crank_g = self.crank_point(crank.distance, crank.offset_deg)
+        rod_g = self.rod_point(rod.distance, rod.offset_deg)
+        bodies = [
+            Body("crank", crank.mass, crank.inertia, crank_g, self.crank.alpha),
+            Body("rod", rod.mass, rod.inertia, rod_g, self.rod.alpha),
+            Body("piston", piston_mass, 0.0, self.pin_b, 0.0, particle=True),
+        ]
+        axis = unit(self.axis)
+        joints = [
+            Joint("ground_on_crank", None, "crank", "pin", point=0j),
+            Joint("crank_on_rod", "crank", "rod", "pin", point=self.pin_a.pos),
+            Joint("rod_on_piston", "rod", "piston", "pin", point=self.pin_b.pos),
+            Joint("wall_on_piston", None, "piston", "slide", point=self.pin_b.pos, direction=1j * axis),
+        ]
+        crank_p = self.crank_point(*crank_point).pos
+        rod_p = self.rod_point(*rod_point).pos
+        catalogue = {
+            "crank_fx": Load("crank", 1.0, crank_p),
+            "crank_fy": Load("crank", 1j, crank_p),
+            "crank_perpendicular": Load("crank", perpendicular_direction(self.crank.angle, crank_point[1], crank_point[0]), crank_p),
+            "crank_torque": Load("crank"),
+            "rod_fx": Load("rod", 1.0, rod_p),
+            "rod_fy": Load("rod", 1j, rod_p),
+            "rod_perpendicular": Load("rod", perpendicular_direction(self._rod_from_b().angle, rod_point[1], rod_point[0]), rod_p),
+            "piston": Load("piston", -axis, self.pin_b.pos),
+        }
+        shape = analysis_shape(self.pin_a.pos, crank.mass, crank.inertia, rod.mass, rod.inertia, piston_mass, gravity, *loads.values())
+        reactions, value = solve_kinetostatics(bodies, joints, catalogue, loads, unknown, gravity, shape)
+        return ForceResult(unknown, value, reactions)
+
+
+def slider_crank(*args, method: str | None = None, **kwargs) -> SliderCrank:
+    """Slider-crank kinematics by ``method`` (default ``"closed"``); see
+    :func:`slider_crank_closed` for the arguments."""
+    return lookup("slider_crank", method)(*args, **kwargs)
+
+
+@register("slider_crank", "closed", default=True)
+def slider_crank_closed(
+    eccentricity,
+    crank_length,
+    rod_length,
+    crank_angle_deg,
+    omega=0.0,
+    alpha=0.0,
+    *,
+    crank_length_rate=0.0,
+    crank_length_accel=0.0,
+    axis_deg=0.0,
+) -> SliderCrank:
+    """Positions always; velocities and accelerations when any crank rate
+    (omega, alpha, crank_length_rate, crank_length_accel) is non-zero.
+
+    Raises AssemblyError for a rod of length <= 0 or where b < |e + A.u(phi+90)|,
+    LockedError where the rod is perpendicular to the axis and rates are asked.
+    """
+    e = np.asarray(eccentricity, dtype=float)
+    b = np.asarray(rod_length, dtype=float)
+    length = Stretch(*(np.asarray(v, dtype=float) for v in (crank_length, crank_length_rate, crank_length_accel)))
+    crank = Rotation(np.radians(np.asarray(crank_angle_deg, dtype=float)), np.asarray(omega, float), np.asarray(alpha, float))
+    moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
+    pin_a = crank_pin(length, crank) if moving else still(crank_pin(length, crank))
+    phi = np.radians(np.asarray(axis_deg, dtype=float))
+    n = unit(phi)
+    if np.any(b <= 0):
+        raise AssemblyError("connecting rod of zero length")
+    across = -(e + dot(pin_a.pos, 1j * n))  # component of A->B along u(phi + 90)
+    discriminant = b**2 - across**2
+    if np.any(discriminant < 0):
+        raise AssemblyError("the rod cannot reach the cylinder axis")
+    along = np.sqrt(discriminant)
+    s = dot(pin_a.pos, n) + along
+    b_pos = -e * 1j * n + s * n
+    rod_angle = np.angle(n * (along + 1j * across))
+    if not moving:
+        zero = np.zeros_like(s)
+        return SliderCrank(crank, length, Rotation(rod_angle, zero, zero), pin_a, still(Motion(b_pos, b_pos, b_pos)),
+                           Stretch(s, zero, zero), phi, False)
+    rod_dir = b * unit(rod_angle)
+    s_dot, rod_omega = solve_two_directions(pin_a.vel, n, -1j * rod_dir)
+    s_ddot, rod_alpha = solve_two_directions(pin_a.acc - rod_omega**2 * rod_dir, n, -1j * rod_dir)
+    pin_b = Motion(b_pos, s_dot * n, s_ddot * n)
+    return SliderCrank(crank, length, Rotation(rod_angle, rod_omega, rod_alpha), pin_a, pin_b,
+                       Stretch(s, s_dot, s_ddot), phi, True)
