@@ -1,0 +1,719 @@
+"""A constraint-based planar multibody solver: the independent reference of yaseer.
+
+Formulation (absolute coordinates, as in Haug's or Nikravesh's textbooks):
+every rigid body ``i`` has coordinates ``q_i = (x_i, y_i, phi_i)``, the global
+position of the origin of its drawing frame and the angle (radians,
+counter-clockwise positive) of that frame.  Body-fixed points are given in the
+drawing frame.  Constraints ``Phi(q, t) = 0``:
+
+* :class:`Revolute` -- a pin: a point of body i coincides with a point of body j
+  (or a fixed point of the ground): 2 equations.
+* :class:`PointOnLine` -- a slider with free relative rotation (pin in a slot,
+  slider block with a pin): a point of body i stays on a line fixed in body j
+  (or the ground): 1 equation.  Add :class:`AngleLock` for a slider *without*
+  relative rotation (a prismatic pair): 1 more equation.
+* :class:`AngleDriver` -- the crank: ``phi_i - theta(t) = 0`` with theta, its
+  rate and acceleration given per position: 1 equation.
+
+Positions: Newton's method on ``Phi = 0`` (float continuation along the crank
+angle, predictor from the tangent ``dq/dtheta``; an mpmath analysis polishes
+each float position by Newton at its own precision).
+Velocities: ``Phi_q qd = nu`` (``nu = -Phi_t``).  Accelerations:
+``Phi_q qdd = gamma`` with gamma written out analytically per constraint.
+Forces (d'Alembert): ``Phi_q^T lambda = Q_applied - Q_inertia``; the force a
+constraint exerts on body i is ``-Phi_{q_i}^T lambda``.
+
+Units are whatever the model uses (consistent set); angles given to the API are
+degrees, rates rad/s and rad/s^2.  The number type is chosen per analysis
+(:mod:`yaseer.reference.arithmetic`): the algebra below is written once.
+
+This module knows nothing of BASIC or of yaseer.linkages.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Callable, Sequence
+
+from yaseer.reference.arithmetic import FLOAT, SingularSystemError, arithmetic_for
+
+
+class MechanismError(ValueError):
+    """A reference analysis that cannot proceed (not assembled, singular, branch lost)."""
+
+
+# --------------------------------------------------------------------------- geometry helpers
+
+def rotate(ar, phi, vector):
+    """``vector`` (drawing-frame components) rotated by ``phi`` radians into global components."""
+    c, s = ar.cos(phi), ar.sin(phi)
+    return (c * vector[0] - s * vector[1], s * vector[0] + c * vector[1])
+
+
+def perp(vector):
+    """``vector`` turned +90 degrees (counter-clockwise)."""
+    return (-vector[1], vector[0])
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1]
+
+
+def cross(a, b):
+    """z component of ``a x b``."""
+    return a[0] * b[1] - a[1] * b[0]
+
+
+def normalise_degrees(angle_deg, ar=FLOAT):
+    """``angle_deg`` mapped into (-180, 180]."""
+    turned = angle_deg - 360 * ar.num(int(ar.to_float(angle_deg) // 360))
+    while turned > 180:
+        turned -= 360
+    while turned <= -180:
+        turned += 360
+    return turned
+
+
+@dataclass(frozen=True)
+class LocalPoint:
+    """A body-fixed point, in Cartesian (x, y) or polar (r, angle in degrees) drawing-frame form.
+
+    Numbers may be ints, floats or decimal strings (strings are exact in mpmath).
+    """
+
+    a: object
+    b: object
+    polar: bool = False
+
+    def xy(self, ar):
+        """The point's drawing-frame (x, y) in arithmetic ``ar``."""
+        if not self.polar:
+            return (ar.num(self.a), ar.num(self.b))
+        r, angle = ar.num(self.a), ar.radians(ar.num(self.b))
+        return (r * ar.cos(angle), r * ar.sin(angle))
+
+
+def xy(x, y) -> LocalPoint:
+    """A body-fixed point at drawing-frame coordinates (x, y)."""
+    return LocalPoint(x, y)
+
+
+def polar(r, angle_deg) -> LocalPoint:
+    """A body-fixed point at distance ``r`` and angle ``angle_deg`` (from the frame's x axis)."""
+    return LocalPoint(r, angle_deg, polar=True)
+
+
+# --------------------------------------------------------------------------- bodies
+
+@dataclass
+class Body:
+    """A rigid body: name, mass, centroidal moment of inertia, mass centre and named points.
+
+    ``centre`` and ``points`` are in the body's drawing frame (a :class:`LocalPoint`
+    or an (x, y) pair).  The ground is not a Body: pass ``None`` where a body is expected.
+    """
+
+    name: str
+    mass: object = 0
+    inertia: object = 0
+    centre: LocalPoint = field(default_factory=lambda: xy(0, 0))
+    points: dict = field(default_factory=dict)
+    index: int = -1  # set by Mechanism
+
+    def __post_init__(self):
+        self.centre = _as_point(self.centre)
+        self.points = {name: _as_point(p) for name, p in self.points.items()}
+
+    def point(self, name: str) -> LocalPoint:
+        try:
+            return self.points[name]
+        except KeyError:
+            raise KeyError(f"body {self.name!r} has no point {name!r}") from None
+
+
+def _as_point(p) -> LocalPoint:
+    return p if isinstance(p, LocalPoint) else xy(*p)
+
+
+def _resolve(body: Body | None, point) -> LocalPoint:
+    """A body's point given by name, or a LocalPoint/pair (global for the ground)."""
+    if isinstance(point, str):
+        if body is None:
+            raise ValueError("ground points are given as coordinates, not names")
+        return body.point(point)
+    return _as_point(point)
+
+
+class _Kinematics:
+    """Global position, velocity and acceleration of body-fixed points from (q, qd, qdd)."""
+
+    def __init__(self, ar, q, qd=None, qdd=None):
+        self.ar, self.q, self.qd, self.qdd = ar, q, qd, qdd
+
+    def angle(self, body):
+        return self.ar.num(0) if body is None else self.q[3 * body.index + 2]
+
+    def rate(self, body, vector):
+        return self.ar.num(0) if body is None else vector[3 * body.index + 2]
+
+    def arm(self, body, local: LocalPoint):
+        """Global vector from the body's frame origin to the point (the point itself for ground)."""
+        return local.xy(self.ar) if body is None else rotate(self.ar, self.angle(body), local.xy(self.ar))
+
+    def position(self, body, local: LocalPoint):
+        arm = self.arm(body, local)
+        if body is None:
+            return arm
+        k = 3 * body.index
+        return (self.q[k] + arm[0], self.q[k + 1] + arm[1])
+
+    def velocity(self, body, local: LocalPoint):
+        zero = self.ar.num(0)
+        if body is None:
+            return (zero, zero)
+        k, arm = 3 * body.index, self.arm(body, local)
+        w = self.qd[k + 2]
+        return (self.qd[k] - w * arm[1], self.qd[k + 1] + w * arm[0])
+
+    def acceleration(self, body, local: LocalPoint):
+        zero = self.ar.num(0)
+        if body is None:
+            return (zero, zero)
+        k, arm = 3 * body.index, self.arm(body, local)
+        w, alpha = self.qd[k + 2], self.qdd[k + 2]
+        return (self.qdd[k] - alpha * arm[1] - w * w * arm[0],
+                self.qdd[k + 1] + alpha * arm[0] - w * w * arm[1])
+
+
+# --------------------------------------------------------------------------- constraints
+# Each constraint gives, for arithmetic ar and kinematics kin:
+#   residuals(kin, drive)      Phi
+#   jacobian(kin)              rows as {column: value}
+#   nu(kin, drive)             -Phi_t
+#   gamma(kin, drive)          Phi_q qdd = gamma (the terms free of qdd, moved right)
+
+def _add(row: dict, body, entries):
+    """Add the three entries (d/dx, d/dy, d/dphi) for ``body`` to a sparse Jacobian row."""
+    if body is None:
+        return
+    k = 3 * body.index
+    for offset, value in enumerate(entries):
+        row[k + offset] = row.get(k + offset, 0) + value
+
+
+@dataclass
+class Revolute:
+    """A pin joint: point ``point_i`` of ``body_i`` coincides with ``point_j`` of ``body_j``.
+
+    ``body_j = None`` is the ground (then ``point_j`` is global coordinates).
+    Reaction convention: :meth:`Snapshot.reaction` gives the force on the body asked for.
+    """
+
+    name: str
+    body_i: Body
+    point_i: object
+    body_j: Body | None
+    point_j: object = (0, 0)
+    size = 2
+
+    def __post_init__(self):
+        self.local_i = _resolve(self.body_i, self.point_i)
+        self.local_j = _resolve(self.body_j, self.point_j)
+
+    def residuals(self, kin, drive):
+        pi, pj = kin.position(self.body_i, self.local_i), kin.position(self.body_j, self.local_j)
+        return [pi[0] - pj[0], pi[1] - pj[1]]
+
+    def jacobian(self, kin):
+        ai, aj = kin.arm(self.body_i, self.local_i), kin.arm(self.body_j, self.local_j)
+        one, zero = kin.ar.num(1), kin.ar.num(0)
+        row_x, row_y = {}, {}
+        _add(row_x, self.body_i, (one, zero, -ai[1]))
+        _add(row_y, self.body_i, (zero, one, ai[0]))
+        _add(row_x, self.body_j, (-one, zero, aj[1]))
+        _add(row_y, self.body_j, (zero, -one, -aj[0]))
+        return [row_x, row_y]
+
+    def nu(self, kin, drive):
+        zero = kin.ar.num(0)
+        return [zero, zero]
+
+    def gamma(self, kin, drive):
+        ai, aj = kin.arm(self.body_i, self.local_i), kin.arm(self.body_j, self.local_j)
+        wi, wj = kin.rate(self.body_i, kin.qd), kin.rate(self.body_j, kin.qd)
+        return [ai[0] * wi * wi - aj[0] * wj * wj, ai[1] * wi * wi - aj[1] * wj * wj]
+
+
+@dataclass
+class PointOnLine:
+    """A slider: point ``point_i`` of ``body_i`` stays on a line fixed in ``body_j`` (or the ground).
+
+    The line passes through ``line_point`` with direction angle ``line_angle_deg``
+    (both in body j's drawing frame; global for the ground).  Its normal is the
+    direction turned +90 degrees; :meth:`Snapshot.normal_force` reports the force
+    of body j on body i along that normal.  Relative rotation is free; add an
+    :class:`AngleLock` for a prismatic pair.
+    """
+
+    name: str
+    body_i: Body
+    point_i: object
+    body_j: Body | None
+    line_point: object
+    line_angle_deg: object
+    size = 1
+
+    def __post_init__(self):
+        self.local_i = _resolve(self.body_i, self.point_i)
+        self.local_j = _resolve(self.body_j, self.line_point)
+
+    def normal(self, kin):
+        """Global unit normal of the line (its direction turned +90 degrees)."""
+        ar = kin.ar
+        angle = ar.radians(ar.num(self.line_angle_deg)) + kin.angle(self.body_j)
+        return (-ar.sin(angle), ar.cos(angle))
+
+    def _separation(self, kin):
+        pi, pj = kin.position(self.body_i, self.local_i), kin.position(self.body_j, self.local_j)
+        return (pi[0] - pj[0], pi[1] - pj[1])
+
+    def residuals(self, kin, drive):
+        return [dot(self.normal(kin), self._separation(kin))]
+
+    def jacobian(self, kin):
+        n, d = self.normal(kin), self._separation(kin)
+        ai, aj = kin.arm(self.body_i, self.local_i), kin.arm(self.body_j, self.local_j)
+        row = {}
+        _add(row, self.body_i, (n[0], n[1], dot(n, perp(ai))))
+        _add(row, self.body_j, (-n[0], -n[1], dot(perp(n), d) - dot(n, perp(aj))))
+        return [row]
+
+    def nu(self, kin, drive):
+        return [kin.ar.num(0)]
+
+    def gamma(self, kin, drive):
+        n, d = self.normal(kin), self._separation(kin)
+        ai, aj = kin.arm(self.body_i, self.local_i), kin.arm(self.body_j, self.local_j)
+        wi, wj = kin.rate(self.body_i, kin.qd), kin.rate(self.body_j, kin.qd)
+        vi, vj = kin.velocity(self.body_i, self.local_i), kin.velocity(self.body_j, self.local_j)
+        d_rate = (vi[0] - vj[0], vi[1] - vj[1])
+        # Phi'' = n''.d + 2 n'.d' + n.d''; n' = wj perp(n), n'' = alpha_j perp(n) - wj^2 n,
+        # d'' = (accelerations of the two points); keep the terms free of qdd.
+        rest = (-wj * wj * dot(n, d) + 2 * wj * dot(perp(n), d_rate)
+                - wi * wi * dot(n, ai) + wj * wj * dot(n, aj))
+        return [-rest]
+
+
+@dataclass
+class AngleLock:
+    """No relative rotation: ``phi_i - phi_j = offset_deg`` (with PointOnLine, a prismatic pair)."""
+
+    name: str
+    body_i: Body
+    body_j: Body | None
+    offset_deg: object = 0
+    size = 1
+
+    def residuals(self, kin, drive):
+        ar = kin.ar
+        return [kin.angle(self.body_i) - kin.angle(self.body_j) - ar.radians(ar.num(self.offset_deg))]
+
+    def jacobian(self, kin):
+        one, zero = kin.ar.num(1), kin.ar.num(0)
+        row = {}
+        _add(row, self.body_i, (zero, zero, one))
+        _add(row, self.body_j, (zero, zero, -one))
+        return [row]
+
+    def nu(self, kin, drive):
+        return [kin.ar.num(0)]
+
+    def gamma(self, kin, drive):
+        return [kin.ar.num(0)]
+
+
+@dataclass
+class AngleDriver:
+    """The crank drive: ``phi_i = theta(t)``; per position theta (degrees), its rate and acceleration.
+
+    :meth:`Snapshot.driver_torque` is the torque the drive applies to the body
+    (counter-clockwise positive): the input torque the motion needs.
+    """
+
+    name: str
+    body_i: Body
+    size = 1
+
+    def residuals(self, kin, drive):
+        return [kin.angle(self.body_i) - drive.angle]
+
+    def jacobian(self, kin):
+        one, zero = kin.ar.num(1), kin.ar.num(0)
+        row = {}
+        _add(row, self.body_i, (zero, zero, one))
+        return [row]
+
+    def nu(self, kin, drive):
+        return [drive.rate]
+
+    def gamma(self, kin, drive):
+        return [drive.acceleration]
+
+
+@dataclass
+class Drive:
+    """The driver's value at one position: angle (radians), rate (rad/s), acceleration (rad/s^2)."""
+
+    angle: object
+    rate: object
+    acceleration: object
+
+
+# --------------------------------------------------------------------------- loads
+
+@dataclass
+class PointLoad:
+    """A force on ``body`` at ``point``; ``force(snapshot) -> (Fx, Fy)`` global components.
+
+    The callable sees the solved kinematics (positions, velocities,
+    accelerations), so loads may depend on the motion (e.g. P = 650 v|v|).
+    """
+
+    body: Body
+    point: object
+    force: Callable
+
+    def __post_init__(self):
+        self.local = _resolve(self.body, self.point)
+
+
+@dataclass
+class Couple:
+    """A couple on ``body``; ``torque(snapshot)`` counter-clockwise positive."""
+
+    body: Body
+    torque: Callable
+
+
+# --------------------------------------------------------------------------- the mechanism
+
+class Mechanism:
+    """Bodies, constraints (exactly one AngleDriver for a 1-DOF mechanism), loads and gravity.
+
+    ``gravity`` is the acceleration of gravity, acting along -y on every mass.
+    """
+
+    def __init__(self, bodies: Sequence[Body], constraints: Sequence, loads: Sequence = (), gravity=0):
+        self.bodies = {}
+        for index, body in enumerate(bodies):
+            body.index = index
+            self.bodies[body.name] = body
+        self.constraints = {}
+        for constraint in constraints:
+            if constraint.name in self.constraints:
+                raise ValueError(f"two constraints named {constraint.name!r}")
+            self.constraints[constraint.name] = constraint
+        self.loads = list(loads)
+        self.gravity = gravity
+        self.size = 3 * len(self.bodies)
+        equations = sum(c.size for c in self.constraints.values())
+        if equations != self.size:
+            raise ValueError(f"{equations} constraint equations for {self.size} coordinates: "
+                             "the reference solver needs a fully driven mechanism")
+        self.rows = {}
+        row = 0
+        for constraint in self.constraints.values():
+            self.rows[constraint.name] = range(row, row + constraint.size)
+            row += constraint.size
+
+    def body(self, name: str) -> Body:
+        return self.bodies[name]
+
+    # -- the constraint system in one arithmetic
+
+    def _residuals(self, kin, drive):
+        return [r for c in self.constraints.values() for r in c.residuals(kin, drive)]
+
+    def _jacobian(self, kin):
+        zero = kin.ar.num(0)
+        dense = []
+        for constraint in self.constraints.values():
+            for sparse in constraint.jacobian(kin):
+                row = [zero] * self.size
+                for column, value in sparse.items():
+                    row[column] = value
+                dense.append(row)
+        return dense
+
+    def _stack(self, kin, drive, term):
+        return [value for c in self.constraints.values() for value in getattr(c, term)(kin, drive)]
+
+    def newton(self, q_guess, drive, ar=FLOAT, max_iterations=50):
+        """Positions: solve Phi(q) = 0 by Newton from ``q_guess``; returns q (list in ``ar``)."""
+        q = [ar.num(v) for v in q_guess]
+        for _ in range(max_iterations):
+            kin = _Kinematics(ar, q)
+            residual = self._residuals(kin, drive)
+            try:
+                step = ar.solve(self._jacobian(kin), [-r for r in residual])
+            except SingularSystemError as exc:
+                raise MechanismError(f"position Jacobian is singular near crank angle "
+                                     f"{ar.to_float(ar.degrees(drive.angle)):.6g} deg") from exc
+            q = [a + b for a, b in zip(q, step)]
+            scale = 1 + max(abs(v) for v in q)
+            if max(abs(s) for s in step) <= ar.tolerance * scale:
+                return q
+        raise MechanismError(f"Newton did not converge at crank angle "
+                             f"{ar.to_float(ar.degrees(drive.angle)):.6g} deg (cannot be assembled?)")
+
+    def velocities(self, q, drive, ar=FLOAT):
+        """Solve Phi_q qd = nu."""
+        kin = _Kinematics(ar, q)
+        return self._solve(ar, self._jacobian(kin), self._stack(kin, drive, "nu"), "velocity")
+
+    def accelerations(self, q, qd, drive, ar=FLOAT):
+        """Solve Phi_q qdd = gamma."""
+        kin = _Kinematics(ar, q, qd)
+        return self._solve(ar, self._jacobian(kin), self._stack(kin, drive, "gamma"), "acceleration")
+
+    def _solve(self, ar, rows, rhs, what):
+        try:
+            return ar.solve(rows, rhs)
+        except SingularSystemError as exc:
+            raise MechanismError(f"{what} equations are singular (a dead centre, toggle or "
+                                 "change point: the constraints alone do not fix the motion)") from exc
+
+    def multipliers(self, snapshot):
+        """Forces: solve Phi_q^T lambda = Q_applied - Q_inertia (d'Alembert)."""
+        ar = snapshot.ar
+        kin = snapshot.kin
+        jac = self._jacobian(kin)
+        transposed = [list(col) for col in zip(*jac)]
+        rhs = self._applied(snapshot)
+        for body in self.bodies.values():
+            inertial = self._inertia_force(kin, body)
+            for offset in range(3):
+                rhs[3 * body.index + offset] -= inertial[offset]
+        return self._solve(ar, transposed, rhs, "force")
+
+    def _inertia_force(self, kin, body):
+        """Generalised inertia force (m a_G, m a_G; I alpha + arm x m a_G) of a body."""
+        ar = kin.ar
+        mass, inertia = ar.num(body.mass), ar.num(body.inertia)
+        acc = kin.acceleration(body, body.centre)
+        arm = kin.arm(body, body.centre)
+        alpha = kin.qdd[3 * body.index + 2]
+        force = (mass * acc[0], mass * acc[1])
+        return (force[0], force[1], inertia * alpha + cross(arm, force))
+
+    def _applied(self, snapshot):
+        """Generalised applied forces: gravity, point loads, couples."""
+        ar, kin = snapshot.ar, snapshot.kin
+        generalised = [ar.num(0)] * self.size
+        gravity = ar.num(self.gravity)
+
+        def add_force(body, local, force):
+            arm = kin.arm(body, local)
+            k = 3 * body.index
+            generalised[k] += force[0]
+            generalised[k + 1] += force[1]
+            generalised[k + 2] += cross(arm, force)
+
+        for body in self.bodies.values():
+            if gravity:
+                add_force(body, body.centre, (ar.num(0), -ar.num(body.mass) * gravity))
+        for load in self.loads:
+            if isinstance(load, PointLoad):
+                force = load.force(snapshot)
+                add_force(load.body, load.local, (ar.num(force[0]), ar.num(force[1])))
+            else:
+                generalised[3 * load.body.index + 2] += ar.num(load.torque(snapshot))
+        return generalised
+
+    # -- whole analyses
+
+    def snapshot(self, q, drive, ar=FLOAT, *, rates=True, forces=False) -> "Snapshot":
+        """Velocities, accelerations (if ``rates``) and forces (if ``forces``) at position ``q``."""
+        if forces and not rates:
+            raise ValueError("forces need the accelerations")
+        qd = qdd = None
+        if rates:
+            qd = self.velocities(q, drive, ar)
+            qdd = self.accelerations(q, qd, drive, ar)
+        snap = Snapshot(self, ar, q, qd, qdd, drive)
+        if forces:
+            snap.lam = self.multipliers(snap)
+        return snap
+
+    def tangent(self, q, ar=FLOAT):
+        """dq/dtheta (per radian of the driver) at position ``q``."""
+        one, zero = ar.num(1), ar.num(0)
+        return self.velocities(q, Drive(zero, one, zero), ar)
+
+    def coordinates(self, placements: dict) -> list:
+        """A coordinate vector from ``{body name: (x, y, angle_deg)}`` (e.g. a rough sketch)."""
+        q = [0.0] * self.size
+        for name, (x, y, angle_deg) in placements.items():
+            k = 3 * self.body(name).index
+            q[k:k + 3] = [float(x), float(y), FLOAT.radians(float(angle_deg))]
+        return q
+
+    def analyse(self, angles_deg, rate, acceleration, q_guess, *, number="float", dps=50,
+                forces=False, rates=True, max_step_deg=2.0, branch_check=None, home_deg=None):
+        """Analyse the mechanism at each driver angle of ``angles_deg`` (degrees, in order).
+
+        ``rate``, ``acceleration``: the driver's rad/s and rad/s^2 (the same at
+        every position).  ``q_guess``: coordinates near the first position; the
+        first position is found by Newton from it, each next one by continuation
+        from the previous (float steps of at most ``max_step_deg``, predictor
+        from the tangent).  With ``home_deg``, ``q_guess`` is near the position
+        at driver angle ``home_deg`` and the continuation starts there.  ``number="mpmath"`` polishes every position by
+        Newton at ``dps`` digits and computes rates and forces there.
+        ``branch_check(snapshot)`` may raise MechanismError when the assembly
+        branch is lost.  Returns a list of :class:`Snapshot`.
+        """
+        ar = arithmetic_for(number, dps)
+        angles = list(angles_deg)
+        results = []
+        q_float, previous = None, None
+        if home_deg is not None:
+            q_float = self._continue(q_guess, None, float(home_deg), first=True, max_step_deg=max_step_deg)
+            previous = float(home_deg)
+        for angle in angles:
+            q_float = self._continue(q_float if q_float is not None else q_guess,
+                                     previous, float(angle), first=q_float is None,
+                                     max_step_deg=max_step_deg)
+            previous = float(angle)
+            q = q_float if ar is FLOAT else self.newton(q_float, self._drive(ar, angle, 0, 0), ar)
+            snap = self.snapshot(q, self._drive(ar, angle, rate, acceleration), ar,
+                                 rates=rates, forces=forces)
+            if branch_check is not None:
+                branch_check(snap)
+            results.append(snap)
+        return results
+
+    @staticmethod
+    def _drive(ar, angle_deg, rate, acceleration):
+        return Drive(ar.radians(ar.num(angle_deg)), ar.num(rate), ar.num(acceleration))
+
+    def _continue(self, q, from_deg, to_deg, *, first, max_step_deg):
+        """Float positions: Newton at ``to_deg`` from ``q`` (at ``from_deg``), stepping along the tangent."""
+        if first:
+            return self.newton(q, self._drive(FLOAT, to_deg, 0, 0))
+        span = to_deg - from_deg
+        steps = max(1, int(abs(span) // max_step_deg) + (abs(span) % max_step_deg > 0))
+        for k in range(1, steps + 1):
+            here = from_deg + span * (k - 1) / steps
+            there = from_deg + span * k / steps
+            slope = self.tangent(q)
+            step = FLOAT.radians(there - here)
+            predicted = [v + s * step for v, s in zip(q, slope)]
+            q = self.newton(predicted, self._drive(FLOAT, there, 0, 0))
+        return q
+
+
+class Snapshot:
+    """The solved state at one position, with readers in the analysis's arithmetic.
+
+    Angles come out in degrees (body angles normalised into (-180, 180]), rates
+    in rad/s and rad/s^2, points in the model's length unit.  Forces follow the
+    contract's rule "force of X on Y": :meth:`reaction` names the body the force
+    acts on.
+    """
+
+    def __init__(self, mechanism, ar, q, qd, qdd, drive):
+        self.mechanism, self.ar, self.q, self.qd, self.qdd, self.drive = mechanism, ar, q, qd, qdd, drive
+        self.lam = None
+        self.kin = _Kinematics(ar, q, qd, qdd)
+
+    def _body(self, name):
+        return None if name is None else self.mechanism.body(name)
+
+    def _local(self, body_name, point):
+        body = self._body(body_name)
+        return body, _resolve(body, point)
+
+    def angle(self, body: str):
+        """Body angle in degrees, in (-180, 180]."""
+        return normalise_degrees(self.ar.degrees(self.q[3 * self.mechanism.body(body).index + 2]), self.ar)
+
+    def omega(self, body: str):
+        return self.qd[3 * self.mechanism.body(body).index + 2]
+
+    def alpha(self, body: str):
+        return self.qdd[3 * self.mechanism.body(body).index + 2]
+
+    def position(self, body: str, point):
+        return self.kin.position(*self._local(body, point))
+
+    def velocity(self, body: str, point):
+        return self.kin.velocity(*self._local(body, point))
+
+    def acceleration(self, body: str, point):
+        return self.kin.acceleration(*self._local(body, point))
+
+    def direction(self, body: str, point_from, point_to):
+        """Inclination (degrees, (-180, 180]) of the vector between two points of a body."""
+        a, b = self.position(body, point_from), self.position(body, point_to)
+        return normalise_degrees(self.ar.degrees(self.ar.atan2(b[1] - a[1], b[0] - a[0])), self.ar)
+
+    def _multipliers(self, name):
+        if self.lam is None:
+            raise ValueError("forces were not computed (analyse with forces=True)")
+        return [self.lam[r] for r in self.mechanism.rows[name]]
+
+    def reaction(self, joint: str, on: str | None):
+        """Force (Fx, Fy) that joint ``joint`` transmits to body ``on`` (a Revolute).
+
+        Pass the downstream body for "upstream on downstream", the link for
+        "ground on link" at a fixed pivot.
+        """
+        constraint = self.mechanism.constraints[joint]
+        lam = self._multipliers(joint)
+        if on == constraint.body_i.name:
+            return (-lam[0], -lam[1])
+        if constraint.body_j is not None and on == constraint.body_j.name:
+            return (lam[0], lam[1])
+        raise ValueError(f"body {on!r} is not in joint {joint!r}")
+
+    def normal_force(self, joint: str):
+        """Force of the line's body on the sliding point's body, along the line normal (PointOnLine)."""
+        return -self._multipliers(joint)[0]
+
+    def driver_torque(self, driver: str):
+        """Torque (counter-clockwise positive) the drive applies to its body."""
+        return -self._multipliers(driver)[0]
+
+    def kinetic_energy(self):
+        """Total kinetic energy (sum of m v_G^2 / 2 + I w^2 / 2)."""
+        total = self.ar.num(0)
+        for body in self.mechanism.bodies.values():
+            v = self.kin.velocity(body, body.centre)
+            w = self.qd[3 * body.index + 2]
+            total += (self.ar.num(body.mass) * dot(v, v) + self.ar.num(body.inertia) * w * w) / 2
+        return total
+
+    def power_of_loads(self):
+        """Power of the known loads and gravity (the drive's power excluded)."""
+        ar, kin = self.ar, self.kin
+        total = ar.num(0)
+        gravity = ar.num(self.mechanism.gravity)
+        for body in self.mechanism.bodies.values():
+            total -= ar.num(body.mass) * gravity * kin.velocity(body, body.centre)[1]
+        for load in self.mechanism.loads:
+            if isinstance(load, PointLoad):
+                force = load.force(self)
+                total += dot((ar.num(force[0]), ar.num(force[1])), kin.velocity(load.body, load.local))
+            else:
+                total += ar.num(load.torque(self)) * self.qd[3 * load.body.index + 2]
+        return total
+
+    def kinetic_energy_rate(self):
+        """dT/dt = sum of m v_G . a_G + I w alpha."""
+        total = self.ar.num(0)
+        for body in self.mechanism.bodies.values():
+            v = self.kin.velocity(body, body.centre)
+            a = self.kin.acceleration(body, body.centre)
+            k = 3 * body.index + 2
+            total += self.ar.num(body.mass) * dot(v, a) + self.ar.num(body.inertia) * self.qd[k] * self.qdd[k]
+        return total
