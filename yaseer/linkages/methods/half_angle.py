@@ -32,79 +32,70 @@ from __future__ import annotations
 
 import numpy as np
 
-from .loops import LinkageError, as_float_or_array, check_finite, crank_pin, fourbar_rates, normalise_degrees
-from .types import FourBarMotion
+from yaseer.linkages.errors import AssemblyError
+from yaseer.linkages.fourbar import UNCROSSED, FourBar
+from yaseer.linkages.registry import register
+
+from .assemble import CrankInput, first_index, fourbar_result, ground_pivot, side_of
 
 
-def fourbar_printed(ground_length, ground_angle, crank_length, coupler_length, follower_length, crank_angle,
-                    crank_speed=0.0, crank_accel=0.0, crank_length_rate=0.0, crank_length_accel=0.0,
-                    *, crossed: bool = False) -> FourBarMotion:
-    """Seed 003's position formulas as printed; degrees in and out, rates rad/s."""
+@register("fourbar", "half-angle-printed")
+def fourbar_half_angle_printed(ground_length, ground_angle_deg, crank_length, coupler_length, follower_length,
+                               crank_angle_deg, omega=0.0, alpha=0.0, *, crank_length_rate=0.0,
+                               crank_length_accel=0.0, branch=UNCROSSED) -> FourBar:
+    """Seed 003's position formulas as printed; same arguments and result as ``fourbar_closed``."""
+    crank = CrankInput(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel)
+    frame = _Frame(ground_length, ground_angle_deg, crank_length, coupler_length, follower_length, crank_angle_deg)
     with np.errstate(all="ignore"):
-        frame = _Frame(ground_length, ground_angle, crank_length, coupler_length, follower_length, crank_angle)
         aa, bb, cc = frame.coefficients()
-        root = np.sqrt(bb**2 - 4 * aa * cc)  # a negative discriminant gives NaN, as Fortran's SQRT would fail
+        root = np.sqrt(bb**2 - 4 * aa * cc)  # a negative discriminant gives NaN: Fortran's SQRT would fail
         phi_plus = 2 * np.arctan((-bb + root) / (2 * aa))
         phi_minus = 2 * np.arctan((-bb - root) / (2 * aa))
-        phi = frame.pick(phi_plus, phi_minus, crossed)
+        phi = frame.pick(phi_plus, phi_minus, branch)
         beta = np.arcsin((frame.c * np.sin(phi) - frame.a * np.sin(frame.theta)) / frame.b)
-        return frame.motion(beta, phi, crank_speed, crank_accel, crank_length_rate, crank_length_accel)
+        return fourbar_result(crank, ground_pivot(ground_length, ground_angle_deg),
+                              beta + frame.turn, phi + frame.turn, coupler_length)
 
 
-def fourbar_stable(ground_length, ground_angle, crank_length, coupler_length, follower_length, crank_angle,
-                   crank_speed=0.0, crank_accel=0.0, crank_length_rate=0.0, crank_length_accel=0.0,
-                   *, crossed: bool = False) -> FourBarMotion:
-    """The same quadratic solved without cancellation; degrees in and out, rates rad/s."""
-    with np.errstate(all="ignore"):
-        frame = _Frame(ground_length, ground_angle, crank_length, coupler_length, follower_length, crank_angle)
-        aa, bb, cc = frame.coefficients()
-        discriminant = bb**2 - 4 * aa * cc
-        if np.any(discriminant < 0):
-            bad = discriminant < 0
-            raise LinkageError("half-angle: the mechanism cannot be assembled",
-                               int(np.flatnonzero(bad)[0]) if np.ndim(bad) else None)
-        bb_sign = np.where(bb < 0, -1.0, 1.0)
-        q = -(bb + bb_sign * np.sqrt(discriminant)) / 2
-        phi = frame.pick(2 * np.arctan2(q, aa), 2 * np.arctan2(cc, q), crossed)
-        b_x = frame.d + frame.c * np.cos(phi) - frame.a * np.cos(frame.theta)
-        b_y = frame.c * np.sin(phi) - frame.a * np.sin(frame.theta)
-        beta = np.arctan2(b_y, b_x)
-        motion = frame.motion(beta, phi, crank_speed, crank_accel, crank_length_rate, crank_length_accel)
-        check_finite("half-angle", *motion)
-        return motion
+@register("fourbar", "half-angle")
+def fourbar_half_angle(ground_length, ground_angle_deg, crank_length, coupler_length, follower_length,
+                       crank_angle_deg, omega=0.0, alpha=0.0, *, crank_length_rate=0.0,
+                       crank_length_accel=0.0, branch=UNCROSSED) -> FourBar:
+    """The same quadratic solved without cancellation; same arguments and result as ``fourbar_closed``."""
+    crank = CrankInput(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel)
+    frame = _Frame(ground_length, ground_angle_deg, crank_length, coupler_length, follower_length, crank_angle_deg)
+    aa, bb, cc = frame.coefficients()
+    discriminant = bb**2 - 4 * aa * cc
+    if np.any(discriminant < 0) or np.any(frame.b <= 0) or np.any(frame.c <= 0):
+        raise AssemblyError("half-angle: the coupler and follower cannot meet")
+    q = -(bb + np.where(bb < 0, -1.0, 1.0) * np.sqrt(discriminant)) / 2
+    phi = frame.pick(2 * np.arctan2(q, aa), 2 * np.arctan2(cc, q), branch)
+    b_point = frame.d + frame.c * np.exp(1j * phi) - frame.a * np.exp(1j * frame.theta)
+    return fourbar_result(crank, ground_pivot(ground_length, ground_angle_deg),
+                          np.angle(b_point) + frame.turn, phi + frame.turn, coupler_length)
 
 
 class _Frame:
     """The linkage turned so that the fixed link lies along +x (angles in radians)."""
 
-    def __init__(self, ground_length, ground_angle, crank_length, coupler_length, follower_length, crank_angle):
+    def __init__(self, ground_length, ground_angle_deg, crank_length, coupler_length, follower_length, crank_angle_deg):
         self.d = np.asarray(ground_length, float)
-        self.turn = np.radians(np.asarray(ground_angle, float))
+        self.turn = np.radians(np.asarray(ground_angle_deg, float))
         self.a = np.asarray(crank_length, float)
         self.b = np.asarray(coupler_length, float)
         self.c = np.asarray(follower_length, float)
-        self.theta = np.radians(np.asarray(crank_angle, float)) - self.turn
+        self.theta = np.radians(np.asarray(crank_angle_deg, float)) - self.turn
 
-    def pick(self, phi_one, phi_other, crossed):
+    def pick(self, phi_one, phi_other, branch):
         """The root on the side of A->Bo the assembly mode asks for (left: uncrossed).
 
         The side is the sign of cross(Bo - A, B - A) = c*((d - a*cos(theta))*sin(phi) + a*sin(theta)*cos(phi)).
         """
-        mode = -1.0 if crossed else 1.0
         side = (self.d - self.a * np.cos(self.theta)) * np.sin(phi_one) + self.a * np.sin(self.theta) * np.cos(phi_one)
-        return np.where(mode * side >= 0, phi_one, phi_other)
+        return np.where(side_of(branch) * side >= 0, phi_one, phi_other)
 
     def coefficients(self):
+        """AA, BB, CC of seed 003's quadratic in tan(phi/2)."""
         a, b, c, d, theta = self.a, self.b, self.c, self.d, self.theta
         ak = (a**2 - b**2 + c**2 + d**2) / 2
         return ak - a * (d - c) * np.cos(theta) - c * d, -2 * a * c * np.sin(theta), ak - a * (d + c) * np.cos(theta) + c * d
-
-    def motion(self, beta, phi, crank_speed, crank_accel, crank_length_rate, crank_length_accel) -> FourBarMotion:
-        """Turn back to the global frame and add the rates of the loop equations."""
-        beta_g, phi_g = beta + self.turn, phi + self.turn
-        _, pin_v, pin_a = crank_pin(self.a, self.theta + self.turn, np.asarray(crank_length_rate, float),
-                                    np.asarray(crank_speed, float), np.asarray(crank_length_accel, float),
-                                    np.asarray(crank_accel, float))
-        w_c, a_c, w_f, a_f = fourbar_rates(pin_v, pin_a, self.b, beta_g, self.c, phi_g)
-        return FourBarMotion(*(as_float_or_array(v) for v in (
-            normalise_degrees(np.degrees(beta_g)), w_c, a_c, normalise_degrees(np.degrees(phi_g) + 180.0), w_f, a_f)))

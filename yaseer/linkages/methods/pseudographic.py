@@ -13,84 +13,69 @@ instead of omega*AO and the normal/tangential pair).  In the axis frame the
 slider line is y' = offset = -e (the contract's line lies e to the right of the
 axis direction); the ``open`` branch (B ahead of A) is the contract's.
 
-Works on floats or numpy arrays.  Like the TK model it does not check its
-arithmetic: at the assembly limit the rod is square to the axis, m1 is infinite
-and the result is whatever IEEE arithmetic makes of it.
+Like the TK model it does not check its arithmetic: at the assembly limit the
+rod is square to the axis, m1 is infinite, and the result is whatever IEEE
+arithmetic makes of it (``yaseer stability`` shows what).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from .loops import LinkageError, as_float_or_array, crank_pin, normalise_degrees
-from .types import SliderCrankMotion
+from yaseer.linkages.errors import AssemblyError
+from yaseer.linkages.registry import register
+from yaseer.linkages.slider_crank import SliderCrank
+
+from .assemble import CrankInput, slider_crank_result
 
 
-def slider_crank(
-    eccentricity,
-    crank_length,
-    rod_length,
-    crank_angle,
-    axis_angle=0.0,
-    crank_speed=0.0,
-    crank_accel=0.0,
-    crank_length_rate=0.0,
-    crank_length_accel=0.0,
-    *,
-    branch: str = "open",
-) -> SliderCrankMotion:
-    """Slider-crank AoAB by polygons.  Angles in degrees, rates in rad/s, rad/s^2.
+@register("slider_crank", "pseudographic")
+def slider_crank_pseudographic(eccentricity, crank_length, rod_length, crank_angle_deg, omega=0.0, alpha=0.0, *,
+                               crank_length_rate=0.0, crank_length_accel=0.0, axis_deg=0.0,
+                               branch: str = "open") -> SliderCrank:
+    """Same arguments and result as ``slider_crank_closed`` (degrees, rad/s); ``branch``
+    "open" (the contract's B ahead of A) or "crossed" (seed 001's other branch).
 
-    Raises LinkageError only where the TK model has no square root
-    (b^2 < (yB - yA)^2): the mechanism cannot be assembled.
+    Raises AssemblyError where TK has no square root (b^2 < (yB - yA)^2).
     """
+    crank = CrankInput(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel)
+    phi = np.radians(np.asarray(axis_deg, dtype=float))
+    to_axis = np.exp(-1j * phi)  # global -> axis frame
+    b = np.asarray(rod_length, float)
+    pin = crank.pin.pos * to_axis
+    x_a, y_a, y_b = pin.real, pin.imag, -np.asarray(eccentricity, float)
     with np.errstate(all="ignore"):
-        return _solve(
-            np.asarray(eccentricity, float), np.asarray(crank_length, float), np.asarray(rod_length, float),
-            np.radians(np.asarray(crank_angle, float) - np.asarray(axis_angle, float)),
-            np.asarray(axis_angle, float), np.asarray(crank_speed, float), np.asarray(crank_accel, float),
-            np.asarray(crank_length_rate, float), np.asarray(crank_length_accel, float), branch,
-        )
+        span = b**2 - (y_b - y_a) ** 2
+        if np.any(span < 0):
+            raise AssemblyError("pseudographic: the rod cannot reach the slider line")
+        x_b = x_a + (1.0 if branch == "open" else -1.0) * np.sqrt(span)
+        theta_ab = np.degrees(np.arctan2(y_a - y_b, x_a - x_b))  # direction B->A, TK's atan2d
+        m2 = -1.0 / np.tan(np.radians(theta_ab))
+        horizontal = (theta_ab == 180.0) | (theta_ab == 360.0)
+
+        def polygons(pin_motion):
+            return _velocity_and_acceleration(pin_motion.vel * to_axis, pin_motion.acc * to_axis,
+                                              b, x_a, x_b, theta_ab, m2, horizontal)
+
+        return slider_crank_result(crank, eccentricity, b, phi, np.radians(theta_ab + 180.0) + phi, x_b, polygons)
 
 
-def _solve(e, ao, ab, theta, phi_deg, omega_ao, alpha_ao, ao_rate, ao_accel, branch):
-    (x_a, y_a), (xa, ya), (xa1, ya1) = crank_pin(ao, theta, ao_rate, omega_ao, ao_accel, alpha_ao)
-    y_b = -e
-    span = ab**2 - (y_b - y_a) ** 2
-    if np.any(span < 0):
-        raise LinkageError("pseudographic: the mechanism cannot be assembled", _first(span < 0))
-    side = 1.0 if branch == "open" else -1.0
-    x_b = x_a + side * np.sqrt(span)
-    theta_ab = np.degrees(np.arctan2(y_a - y_b, x_a - x_b))  # direction B->A, as TK's atan2d
-    m1 = np.tan(np.radians(theta_ab))
-    m2 = -1.0 / m1
-    horizontal = (theta_ab == 180.0) | (theta_ab == 360.0)
-    # velocity polygon: b on yb = 0, on the line through a of slope m2
-    xb = np.where(horizontal, xa, xa - ya / m2)
-    v_ab = np.hypot(xa - xb, ya)
-    omega_ab = _signed(v_ab / ab, x_b, x_a, 0.0, ya)
-    # acceleration polygon: b11 = a1 + omega_AB^2*AB along B->A, b1 on yb1 = 0
+def _velocity_and_acceleration(pin_vel, pin_acc, ab, x_a, x_b, theta_ab, m2, horizontal):
+    """TK's velocity and acceleration function sheets; returns (omega_AB, alpha_AB, vB, aB)."""
+    xa, ya = pin_vel.real, pin_vel.imag  # vertex a; vertex o at the origin
+    xb = np.where(horizontal, xa, xa - ya / m2)  # b on yb = 0 and on the line through a of slope m2
+    omega_ab = _signed(np.hypot(xa - xb, ya) / ab, x_b, x_a, ya)
+    xa1, ya1 = pin_acc.real, pin_acc.imag  # vertex a1 (a11 then the tangential step, in one)
     a_ban = omega_ab**2 * ab
     xb11 = xa1 + a_ban * np.cos(np.radians(theta_ab))
     yb11 = ya1 + a_ban * np.sin(np.radians(theta_ab))
-    xb1 = np.where(horizontal, xb11, xb11 - yb11 / m2)
-    a_bat = np.hypot(xb1 - xb11, yb11)
-    alpha_ab = _signed(a_bat / ab, x_b, x_a, 0.0, yb11)
-    rod_angle = normalise_degrees(theta_ab + 180.0 + phi_deg)
-    return SliderCrankMotion(*(as_float_or_array(v) for v in (rod_angle, omega_ab, alpha_ab, x_b, xb, xb1)))
+    xb1 = np.where(horizontal, xb11, xb11 - yb11 / m2)  # b1 on yb1 = 0, line through b11 of slope m2
+    alpha_ab = _signed(np.hypot(xb1 - xb11, yb11) / ab, x_b, x_a, yb11)
+    return omega_ab, alpha_ab, xb, xb1
 
 
-def _signed(magnitude, x_b, x_a, y_low, y_high):
-    """TK's four ``if and`` rules (seed 001, Fig. 3) in one line: the rate is
-    positive when xB >= xA and y_low >= y_high are both true or both false.
-
-    Velocity: y_low = yb = 0, y_high = ya.  Acceleration: y_low = yb1 = 0,
-    y_high = yb11.  (At equality both rules of a pair apply; the magnitude is 0.)
-    """
-    ahead = x_b >= x_a
-    above = y_low >= y_high
-    return np.where(ahead == above, magnitude, -magnitude)
-
-
-def _first(mask) -> int | None:
-    return int(np.flatnonzero(mask)[0]) if np.ndim(mask) else None
+def _signed(magnitude, x_b, x_a, y_vertex):
+    """TK's four ``if and`` rules (seed 001, Fig. 3) in one line: the rate is positive
+    when ``xB >= xA`` and ``0 >= y_vertex`` are both true or both false (y_vertex is
+    ya for omega_AB, yb11 for alpha_AB; yb = yb1 = 0).  At equality the magnitude is 0."""
+    return np.where((x_b >= x_a) == (0.0 >= y_vertex), magnitude, -magnitude)
