@@ -1,0 +1,76 @@
+"""The plotting helpers behind ``yaseer plot``: table parsing, labels, the figure."""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+
+import pytest
+
+from yaseer import plotting
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_numeric_rows_keeps_the_table_and_drops_text_and_stray_rows():
+    text = "ANGLE,TORQUE\n0.1,1.5,-2e-3\n20.1,2.5,4.0\n7\n40.1,-0.5,1e300\n"
+    assert plotting.numeric_rows(text) == [[0.1, 1.5, -0.002], [20.1, 2.5, 4.0], [40.1, -0.5, 1e300]]
+
+
+def test_numeric_rows_of_no_table_is_empty():
+    assert plotting.numeric_rows("HELLO\n\n") == []
+
+
+@pytest.mark.parametrize(
+    "source, expected",
+    [
+        ('60 PRINT USING "###.###.##"; QQ; Y(2); V(4); A(36): NEXT QQ', ["QQ", "Y(2)", "V(4)", "A(36)"]),
+        ('80 LPRINT USING "#.#"; QQ; SQR(F(3) ^ 2 + F(4) ^ 2): NEXT QQ: END', ["QQ", "SQR(F(3) ^ 2 + F(4) ^ 2)"]),
+        ('10 PRINT "A;B:C", X, Y: PRINT Z', ["Z"]),
+        ('10 PRINT A, B(1, 2); C\n20 END', ["A", "B(1, 2)", "C"]),
+        ("10 X = 1", []),
+    ],
+)
+def test_printed_expressions_are_those_of_the_last_print(source, expected):
+    assert plotting.printed_expressions(source) == expected
+
+
+def test_every_paper_example_has_a_meaning_for_each_printed_column():
+    """The table matches the PRINT statement of each corrected listing, column for column."""
+    for stem, spec in plotting.PAPER_EXAMPLES.items():
+        expressions = plotting.printed_expressions((ROOT / "listings" / f"{stem}.bas").read_text())
+        assert len(expressions) == len(spec.columns) + 1, stem
+        for expression, quantity in zip(expressions[1:], spec.columns):
+            elements = re.findall(r"[A-Z]+\(\d+\)", expression.replace(" ", ""))
+            assert elements, expression
+            for element in elements:
+                assert element in quantity.meaning, (stem, expression, quantity.meaning)
+
+
+def test_figure_spec_falls_back_to_the_printed_expressions(tmp_path):
+    listing = tmp_path / "mine.bas"
+    listing.write_text("10 FOR I = 0 TO 3: PRINT I; I * I; SIN(I): NEXT I\n")
+    spec = plotting.figure_spec(listing, 3)
+    assert spec.x.meaning == "I"
+    assert [q.meaning for q in spec.columns] == ["I * I", "SIN(I)"]
+    assert [q.meaning for q in plotting.figure_spec(listing, 4).columns] == ["column 2", "column 3", "column 4"]
+
+
+def test_figure_has_one_panel_per_quantity_with_the_printed_values(tmp_path):
+    rows = [[angle, math.sin(math.radians(angle)), angle ** 2] for angle in range(0, 361, 20)]
+    spec = plotting.PAPER_EXAMPLES["example5"]
+    spec = plotting.FigureSpec(spec.title, spec.x, spec.columns[:2])
+    figure = plotting.build_figure(rows, spec)
+    axes = figure.get_axes()
+    assert len(axes) == 2
+    for index, ax in enumerate(axes, start=1):
+        (line,) = ax.get_lines()
+        assert list(line.get_xdata()) == [row[0] for row in rows]
+        assert list(line.get_ydata()) == [row[index] for row in rows]
+    assert "crank torque" in axes[0].get_ylabel() and "N·m" in axes[0].get_ylabel()
+    assert axes[1].get_xlabel() == "crank angle QQ (deg)"
+    paths = plotting.save_figure(figure, tmp_path / "out", "example5")
+    assert [p.name for p in paths] == ["example5.png", "example5.svg"]
+    assert paths[0].read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert "Bo" in paths[1].read_text()
