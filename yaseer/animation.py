@@ -294,6 +294,37 @@ class LineTap:
         return False
 
 
+def record_listing(text: str, methods: dict[int, str] | None = None, progress_file=None) -> list[Frame]:
+    """Run the listing ``text`` once and return its frames (see :class:`Recorder`).
+
+    PRINT and LPRINT output both close frames.  A progress counter of frames
+    appears on stderr if the run takes more than a second.  BASIC errors
+    propagate as :class:`~yaseer.basic.errors.BasicError`.
+    """
+    from yaseer.progress import bar
+    from yaseer.session import create_machine
+
+    recorder = Recorder()
+    with bar(None, "running", "line", file=progress_file) as progress:
+
+        def on_line(line: str) -> None:
+            recorder.line_printed(line)
+            progress.update(1)
+
+        tap = LineTap(on_line)
+
+        def install(machine, chosen):
+            from yaseer import binding
+
+            binding.install(AreaInterceptor(machine, recorder), chosen)
+
+        machine = create_machine(tap, tap, methods, install)
+        machine.load(text)
+        machine.run()
+        tap.close_line()
+    return recorder.finish()
+
+
 # --- assembling frames ------------------------------------------------------------
 
 VIRTUAL_MATCH = 1e-9  # relative distance within which a crank tip is a virtual link's end
@@ -443,8 +474,8 @@ def draw_frame(ax, scene: Scene, number: int, title: str = "") -> None:
         if position is not None:
             ax.plot(*position, marker="o", markersize=5, color=colour, zorder=6)
     ax.set_title(f"{title}   crank angle {frame.crank_angle:.1f}\N{DEGREE SIGN}".strip(), fontsize=10)
-    ax.text(0.01, -0.02, frame.printed, transform=ax.transAxes, va="top", ha="left",
-            family="monospace", fontsize=8)
+    ax.annotate(frame.printed, xy=(0.0, 0.0), xycoords="axes fraction", xytext=(0, -24),
+                textcoords="offset points", va="top", ha="left", family="monospace", fontsize=9)
 
 
 def _colours():
@@ -482,8 +513,8 @@ def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    figure, ax = plt.subplots(figsize=(6.4, 5.6), dpi=90)
-    figure.subplots_adjust(left=0.08, right=0.97, top=0.93, bottom=0.2)
+    figure, ax = plt.subplots(figsize=_figure_size(scene), dpi=90)
+    figure.subplots_adjust(left=0.09, right=0.97, top=0.92, bottom=0.22)
     try:
         if suffix == ".png":
             if not 0 <= frame_number < len(scene.frames):
@@ -495,6 +526,13 @@ def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0
         return len(scene.frames)
     finally:
         plt.close(figure)
+
+
+def _figure_size(scene: Scene) -> tuple[float, float]:
+    """Inches: 6.4 wide, as tall as the scene's shape needs (3.6 to 7.2), caption room below."""
+    xmin, xmax, ymin, ymax = scene.bounds
+    height = 6.4 * 0.88 * (ymax - ymin) / (xmax - xmin) / 0.7
+    return (6.4, min(7.2, max(3.6, height)))
 
 
 def _write_movie(figure, ax, scene: Scene, out: Path, title: str, fps: float, progress_file) -> None:

@@ -384,3 +384,76 @@ class Session:
             return
         if in_program:
             self._can_continue = False
+
+
+# --- the BASIC machine, as the session and the animation use it ---------------------
+
+
+def create_machine(screen, printer, methods: dict[int, str] | None = None, install=None):
+    """A BASIC machine writing PRINT to ``screen`` and LPRINT to ``printer``, library bound.
+
+    ``install(machine, methods)`` binds the library programs (default
+    ``yaseer.binding.install``; the animation passes a recording one).
+    """
+    from yaseer import binding
+    from yaseer.basic.machine import Machine
+
+    machine = Machine(screen=screen, printer=printer)
+    (install or binding.install)(machine, methods)
+    return machine
+
+
+class _Screen:
+    """A text stream that forwards to a ``write`` callable."""
+
+    def __init__(self, write: Callable[[str], object]) -> None:
+        self._write = write
+
+    def write(self, text: str) -> int:
+        self._write(text)
+        return len(text)
+
+    def flush(self) -> None:
+        """Output is forwarded at once."""
+
+    def isatty(self) -> bool:
+        """Not a terminal as far as the machine is concerned."""
+        return False
+
+
+class MachineEngine:
+    """The session's view of the BASIC machine: run typed areas, continue, direct mode.
+
+    PRINT and LPRINT both show on the session's screen.  STOP and Ctrl-C come
+    back as a ``Break`` BasicError placed at the line (CONT resumes there).
+    """
+
+    def __init__(self, write: Callable[[str], object]) -> None:
+        self._screen = _Screen(write)
+        self.machine = create_machine(self._screen, self._screen)
+
+    def reset(self) -> None:
+        """Fresh variables and areas (NEW, RUN)."""
+        self.machine = create_machine(self._screen, self._screen)
+
+    def run(self, areas: dict[int, str], start: int | None) -> None:
+        """Load each typed area's program text into a fresh machine and run PROG 0."""
+        self.reset()
+        for area, text in sorted(areas.items()):
+            self.machine.load(text, area=area)
+        self._guard(lambda: self.machine.run(start))
+
+    def cont(self) -> None:
+        """Go on from the last STOP or break."""
+        self._guard(self.machine.cont)
+
+    def direct(self, statement: str) -> None:
+        """Execute one direct-mode statement."""
+        self._guard(lambda: self.machine.execute_direct(statement))
+
+    @staticmethod
+    def _guard(action: Callable[[], object]) -> None:
+        try:
+            action()
+        except KeyboardInterrupt:
+            raise BasicError("Break", BREAK) from None

@@ -1,0 +1,237 @@
+"""Recording and drawing frames, with a stand-in machine (no interpreter needed).
+
+The stand-in's "Program 1" is an offset slider-crank written here from the
+triangle A-B-axis (not the library's formulation); the recorder must read the
+joints back from the arrays in the contract's conventions.
+"""
+
+from __future__ import annotations
+
+import io
+import math
+
+import pytest
+
+from yaseer.animation import (
+    AnimationError,
+    AreaInterceptor,
+    Frame,
+    LineTap,
+    Recorder,
+    build_scene,
+    distance,
+    draw_frame,
+    render,
+)
+
+
+class StandInMachine:
+    """Arrays, scalars and areas, the part of the machine API the recorder uses."""
+
+    def __init__(self):
+        self.arrays = {name: [0.0] * 60 for name in "LTXYRHWA"}
+        self.scalars = {}
+        self.areas = {}
+
+    def array(self, name):
+        return self.arrays[name]
+
+    def scalar(self, name):
+        return self.scalars.get(name, 0.0)
+
+    def set_scalar(self, name, value):
+        self.scalars[name] = value
+
+    def set_area(self, number, area):
+        self.areas[number] = area
+
+    def gosub_prog(self, number):
+        self.areas[number](self)
+
+
+def slider_crank_area(machine):
+    """Offset slider-crank, cylinder along +x with its axis at y = -e (the contract's side)."""
+    L, T, X, Y = (machine.array(n) for n in "LTXY")
+    e, a, b, theta = L[1], L[2], L[3], math.radians(T[2])
+    ax, ay = a * math.cos(theta), a * math.sin(theta)
+    bx = ax + math.sqrt(b * b - (ay + e) ** 2)
+    T[3] = math.degrees(math.atan2(-e - ay, bx - ax))
+    X[2], Y[2] = bx, -e  # R(4) = 0: the piston itself
+
+
+def virtual_link_area(machine):
+    X, Y = machine.array("X"), machine.array("Y")
+    machine.set_scalar("T", math.degrees(math.atan2(Y[10], X[10])) % 360)
+    machine.set_scalar("L", math.hypot(X[10], Y[10]))
+
+
+def install_stand_ins(machine, methods=None):
+    machine.set_area(1, slider_crank_area)
+    machine.set_area(5, virtual_link_area)
+
+
+def run_cycle(angles, e=2.0, a=3.0, b=8.0, print_heading=True, calls_per_line=1):
+    """A 'listing': heading, then per angle PROG 1 (and PROG 5 on the piston) and one printed line."""
+    recorder = Recorder()
+    machine = StandInMachine()
+    install_stand_ins(AreaInterceptor(machine, recorder))
+    tap = LineTap(recorder.line_printed)
+    if print_heading:
+        tap.write("  QQ      X(2)\n")
+    L, T, X, Y = (machine.array(n) for n in "LTXY")
+    for angle in angles:
+        L[1], L[2], L[3], T[2], T[4] = e, a, b, angle, 0.0
+        for _ in range(calls_per_line):
+            machine.gosub_prog(1)
+        X[10], Y[10] = X[2], Y[2]
+        machine.gosub_prog(5)
+        tap.write(f"{angle:6.1f} {X[2]:8.3f}")
+        tap.write("\n")
+    return recorder.finish(), tap
+
+
+def test_each_printed_line_closes_a_frame_and_headings_are_not_frames():
+    frames, tap = run_cycle([10.0, 40.0, 70.0])
+    assert [f.crank_angle for f in frames] == [10.0, 40.0, 70.0]
+    assert frames[1].printed == "  40.0 " + f"{3 * math.cos(math.radians(40)) + math.sqrt(64 - (3 * math.sin(math.radians(40)) + 2) ** 2):8.3f}"
+    assert tap.lines[0] == "  QQ      X(2)"
+
+
+def test_recorded_joints_satisfy_the_linkage_constraints():
+    frames, _ = run_cycle([float(a) for a in range(0, 360, 30)])
+    for frame in frames:
+        crank, rod = frame.snapshots[0].bars
+        a_pin, b_pin = rod.start, rod.end
+        assert distance(crank.start, (0.0, 0.0)) == 0.0
+        assert distance(a_pin, (0.0, 0.0)) == pytest.approx(3.0)
+        assert distance(a_pin, b_pin) == pytest.approx(8.0)
+        assert b_pin[1] == pytest.approx(-2.0)  # on the cylinder axis y = -e
+        (slider,) = frame.snapshots[0].sliders
+        assert slider.centre == b_pin and slider.axis == pytest.approx((0.0, -2.0))
+
+
+def test_repeated_calls_with_the_same_geometry_are_drawn_once():
+    frames, _ = run_cycle([10.0, 20.0], calls_per_line=3)
+    assert [s.area for s in frames[0].snapshots] == [1, 5]
+
+
+def test_virtual_link_is_dashed_and_a_crank_on_it_is_too():
+    recorder = Recorder()
+    machine = StandInMachine()
+    install_stand_ins(AreaInterceptor(machine, recorder))
+    L, T, X, Y = (machine.array(n) for n in "LTXY")
+    X[10], Y[10] = 3.0, 4.0
+    machine.gosub_prog(5)
+    L[1], L[2], L[3], T[2], T[4] = 0.0, 5.0, 9.0, machine.scalar("T"), 0.0  # crank = the virtual link
+    machine.gosub_prog(1)
+    L[2], T[2] = 4.0, 30.0  # a crank elsewhere
+    machine.gosub_prog(1)
+    recorder.line_printed("row")
+    (frame,) = recorder.finish()
+    virtual, on_link, elsewhere = frame.snapshots
+    assert virtual.bars[0].virtual
+    assert on_link.bars[0].virtual and not on_link.bars[1].virtual
+    assert not elsewhere.bars[0].virtual
+
+
+def test_lines_without_new_calls_join_the_frame_and_trailing_calls_make_a_last_frame():
+    recorder = Recorder()
+    machine = StandInMachine()
+    install_stand_ins(AreaInterceptor(machine, recorder))
+    machine.array("L")[2:4] = [3.0, 8.0]
+    machine.gosub_prog(1)
+    recorder.line_printed("first")
+    recorder.line_printed("second")
+    machine.gosub_prog(1)
+    frames = recorder.finish()
+    assert [f.printed for f in frames] == ["first\nsecond", ""]
+
+
+def test_only_moving_points_have_paths():
+    frames, _ = run_cycle([float(a) for a in range(0, 360, 45)])
+    scene = build_scene(frames)
+    # X(1),Y(1) stays at the origin (R(1) = 0); the piston X(2),Y(2) moves.
+    assert [p.label for p in scene.paths] == ["PROG 1 X(2),Y(2)"]
+    xs = [p[0] for p in scene.paths[0].positions]
+    assert max(xs) == pytest.approx(3 + math.sqrt(64 - 4), rel=1e-3)
+
+
+def test_no_frames_is_an_error():
+    with pytest.raises(AnimationError, match="Nothing to animate"):
+        build_scene([])
+
+
+def test_a_drawn_frame_has_bars_joints_blocks_and_caption():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.patches import Circle, Polygon
+
+    frames, _ = run_cycle([30.0, 60.0])
+    figure, ax = plt.subplots()
+    draw_frame(ax, build_scene(frames), 1, "demo")
+    circles = [p for p in ax.patches if isinstance(p, Circle)]
+    polygons = [p for p in ax.patches if isinstance(p, Polygon)]
+    dashed = [line for line in ax.lines if line.get_linestyle() == "--"]
+    texts = [t.get_text() for t in ax.texts]
+    plt.close(figure)
+    # joints A, B and the pivot Ao (twice: PROG 1's and PROG 5's ground)
+    assert len(circles) == 4
+    assert len(polygons) == 3  # a block and two ground triangles
+    assert len(dashed) == 1  # the virtual link of PROG 5
+    assert "60.0" in texts[0]
+    assert "crank angle 60.0" in ax.get_title()
+
+
+def test_render_gif_html_and_png(tmp_path):
+    from PIL import Image
+
+    frames, _ = run_cycle([float(a) for a in range(0, 360, 60)])
+    gif = tmp_path / "cycle.gif"
+    assert render(frames, gif, fps=4) == 6
+    with Image.open(gif) as image:
+        assert image.n_frames == 6
+    html = tmp_path / "cycle.html"
+    render(frames, html)
+    assert "<img" in html.read_text() or "animation" in html.read_text().lower()
+    png = tmp_path / "frame.png"
+    render(frames, png, frame_number=2)
+    with Image.open(png) as image:
+        assert image.size[0] > 100
+    with pytest.raises(AnimationError, match="Frame 9 does not exist"):
+        render(frames, tmp_path / "x.png", frame_number=9)
+    with pytest.raises(AnimationError, match="Unknown animation format"):
+        render(frames, tmp_path / "x.avi")
+
+
+def test_mp4_without_ffmpeg_says_so(tmp_path, monkeypatch):
+    from matplotlib import animation
+
+    monkeypatch.setattr(animation.writers, "is_available", lambda name: False)
+    frames, _ = run_cycle([0.0, 90.0])
+    with pytest.raises(AnimationError, match="needs ffmpeg"):
+        render(frames, tmp_path / "cycle.mp4")
+
+
+def test_a_long_render_shows_progress_on_the_given_stream(tmp_path, monkeypatch):
+    import yaseer.progress as progress
+
+    monkeypatch.setattr(progress, "DELAY_SECONDS", 0.0)
+    original = progress.bar
+    monkeypatch.setattr(progress, "bar", lambda *a, **k: original(*a, **{**k, "delay": 0.0, "force": True}))
+    frames, _ = run_cycle([0.0, 120.0, 240.0])
+    stream = io.StringIO()
+    render(frames, tmp_path / "c.gif", progress_file=stream)
+    assert "3/3" in stream.getvalue()
+
+
+def test_linetap_hands_on_lines_and_a_last_partial_line():
+    seen = []
+    tap = LineTap(seen.append)
+    tap.write("a\nb")
+    tap.write("c\n\n")
+    tap.write("end")
+    tap.close_line()
+    assert seen == ["a", "bc", "", "end"]
+    assert isinstance(Frame((), "x"), Frame)

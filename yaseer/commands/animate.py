@@ -1,0 +1,60 @@
+"""``yaseer animate FILE [--out FILE.gif|.mp4|.html|.png]``: the mechanism moving through its cycle.
+
+The listing runs once on the BASIC machine with the library programs bound as
+for ``yaseer run``; every ``GOSUB PROG n`` is recorded (see
+``yaseer.animation``) and each printed line closes a frame.  The listing's own
+output is not shown (it is the caption of each frame); errors are BASIC error
+lines on stderr with exit status 1.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+
+def add_arguments(parser) -> None:
+    """FILE, --out, --fps, --frame, --method N=NAME, --title."""
+    parser.add_argument("file", help="the calling listing (.bas)")
+    parser.add_argument("--out", help="FILE.gif (default), .html, .mp4 (needs ffmpeg) or .png (one frame)")
+    parser.add_argument("--fps", type=float, default=6.0, help="frames per second (default 6)")
+    parser.add_argument("--frame", type=int, default=0, help="with --out FILE.png: which frame (from 0)")
+    parser.add_argument("--title", default=None, help="a title over every frame (default: the file name)")
+    parser.add_argument("--method", action="append", default=[], metavar="N=NAME",
+                        help="the method for program area N, as for yaseer run")
+
+
+def main(args) -> int:
+    """Record the run, render it; 0 on success, 1 with a one-line error otherwise."""
+    from yaseer.animation import AnimationError, record_listing, render
+    from yaseer.basic.errors import BasicError
+
+    listing = Path(args.file)
+    out = Path(args.out) if args.out else Path(listing.stem + ".gif")
+    try:
+        methods = parse_methods(args.method)
+        text = listing.read_text(encoding="utf-8", errors="replace")
+        frames = record_listing(text, methods)
+        count = render(frames, out, title=args.title if args.title is not None else listing.name,
+                       fps=args.fps, frame_number=args.frame)
+    except OSError as error:
+        print(f"File not found: {error.filename or listing}", file=sys.stderr)
+        return 1
+    except (BasicError, AnimationError) as error:
+        print(error, file=sys.stderr)
+        return 1
+    print(f"{out}: {count} frame{'s' if count != 1 else ''}")
+    return 0
+
+
+def parse_methods(pairs: list[str]) -> dict[int, str] | None:
+    """``["2=paper"]`` -> ``{2: "paper"}``; a malformed pair is an error naming it."""
+    from yaseer.animation import AnimationError
+
+    methods: dict[int, str] = {}
+    for pair in pairs:
+        area, _, name = pair.partition("=")
+        if not area.strip().isdigit() or not name.strip():
+            raise AnimationError(f"--method wants N=NAME, not {pair!r}")
+        methods[int(area)] = name.strip()
+    return methods or None
