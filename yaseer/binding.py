@@ -1,11 +1,328 @@
 """The one module that maps ``GOSUB PROG n`` to the Python library programs.
 
-(Stub until the programs land: it binds nothing, so ``GOSUB PROG n`` is the
-error ``Undefined program area n``.)
+:func:`install` registers program areas 1 (slider-crank), 2 (four-bar),
+3 (first inversion of the slider-crank) and 5 (virtual link).  Each area reads
+its inputs from the machine's arrays and scalars (elements never set, or beyond
+an array's dimension, read as 0 like unset BASIC variables), calls
+:mod:`yaseer.linkages`, and writes exactly the outputs of
+``shared/spec/programs.md``: positions always, velocities and accelerations
+(0 for a static call), forces only when ``Z(n) = 2``.  All outputs are computed
+and checked (finite, inside the arrays' dimensions) before the first is
+written, so a failing call leaves the machine untouched.
+
+Errors become BASIC run-time errors naming the program; the machine adds the
+calling line (``Mechanism cannot be assembled (PROG 2) in 4040``).
 """
 
 from __future__ import annotations
 
+import math
+from typing import Callable
+
+import numpy as np
+
+from yaseer.basic.errors import (
+    DIVISION_BY_ZERO,
+    ILLEGAL_FUNCTION_CALL,
+    OVERFLOW,
+    SUBSCRIPT_OUT_OF_RANGE,
+    BasicError,
+)
+from yaseer.linkages import (
+    AssemblyError,
+    LockedError,
+    MassProps,
+    MethodDivisionByZero,
+    SingularForceError,
+    fourbar,
+    inverted_slider_crank,
+    slider_crank,
+    virtual_link,
+)
+from yaseer.linkages.fourbar import CROSSED, UNCROSSED
+from yaseer.linkages.registry import method_names
+
+LINKAGES = {1: "slider_crank", 2: "fourbar", 3: "inverted_slider_crank", 5: "virtual_link"}
+
+Element = tuple[str, int]  # an array element, e.g. ("F", 27)
+
+# Per program: the load catalogue (linkage load name -> element holding its value),
+# the Q(n) choices (-> load name) and the reactions (-> element(s) written).
+LOADS = {
+    1: {"crank_fx": ("F", 0), "crank_fy": ("F", 1), "crank_perpendicular": ("F", 2), "crank_torque": ("U", 1),
+        "rod_fx": ("F", 7), "rod_fy": ("F", 8), "rod_perpendicular": ("F", 9), "piston": ("P", 1)},
+    2: {"crank_fx": ("F", 29), "crank_fy": ("F", 30), "crank_perpendicular": ("F", 31), "crank_torque": ("U", 2),
+        "coupler_fx": ("F", 32), "coupler_fy": ("F", 33), "coupler_perpendicular": ("F", 34),
+        "follower_fx": ("F", 35), "follower_fy": ("F", 36), "follower_perpendicular": ("F", 37)},
+    3: {"crank_torque": ("U", 3), "follower_perpendicular": ("F", 18)},
+}
+UNKNOWNS = {
+    1: {1: "crank_torque", 2: "crank_perpendicular", 3: "rod_perpendicular", 4: "piston"},
+    2: {1: "crank_torque", 2: "crank_perpendicular", 3: "coupler_perpendicular", 4: "follower_perpendicular"},
+    3: {1: "crank_torque", 3: "follower_perpendicular"},
+}
+REACTIONS = {
+    1: {"ground_on_crank": (("F", 3), ("F", 4)), "crank_on_rod": (("F", 5), ("F", 6)),
+        "rod_on_piston": (("F", 10), ("F", 11)), "wall_on_piston": (("N", 1),)},
+    2: {"ground_on_crank": (("F", 21), ("F", 22)), "crank_on_coupler": (("F", 23), ("F", 24)),
+        "coupler_on_follower": (("F", 25), ("F", 26)), "ground_on_follower": (("F", 27), ("F", 28))},
+    3: {"ground_on_crank": (("F", 12), ("F", 13)), "crank_on_block": (("F", 14), ("F", 15)),
+        "follower_on_block": (("N", 3),), "follower_on_block_couple": (("U", 4),),
+        "ground_on_follower": (("F", 16), ("F", 17))},
+}
+
+
+class _Frame:
+    """One call of a program area: reads inputs, collects outputs, writes them at the end."""
+
+    def __init__(self, machine, area: int):
+        self.machine = machine
+        self.area = area
+        self._elements: dict[Element, float] = {}
+        self._scalars: dict[str, float] = {}
+
+    def get(self, name: str, index: int) -> float:
+        """Array element ``name(index)`` (0 when beyond the array's dimension)."""
+        values = self.machine.array(name)
+        return float(values[index]) if index < len(values) else 0.0
+
+    def scalar(self, name: str) -> float:
+        return float(self.machine.scalar(name))
+
+    def put(self, element: Element, value) -> None:
+        self._elements[element] = float(value)
+
+    def put_scalar(self, name: str, value) -> None:
+        self._scalars[name] = float(value)
+
+    def put_point(self, motion, position: tuple[Element, Element], velocity: tuple[Element, Element],
+                  acceleration: tuple[Element, Element]) -> None:
+        """Write a point's x, y components of position, velocity and acceleration."""
+        for (x_element, y_element), vector in zip((position, velocity, acceleration), motion):
+            self.put(x_element, complex(vector).real)
+            self.put(y_element, complex(vector).imag)
+
+    def commit(self) -> None:
+        """Check every output, then write them all."""
+        values = list(self._elements.values()) + list(self._scalars.values())
+        if not all(math.isfinite(value) for value in values):
+            raise self.error("Overflow", OVERFLOW)
+        arrays = {name: self.machine.array(name) for name, _ in self._elements}
+        if any(index >= len(arrays[name]) or index < 0 for name, index in self._elements):
+            raise self.error("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
+        for (name, index), value in self._elements.items():
+            arrays[name][index] = value
+        for name, value in self._scalars.items():
+            self.machine.set_scalar(name, value)
+
+    def error(self, message: str, code: int = ILLEGAL_FUNCTION_CALL) -> BasicError:
+        return BasicError(f"{message} (PROG {self.area})", code)
+
+
+def _translate(error: Exception, frame: _Frame) -> BasicError:
+    """The BASIC run-time error for a linkage exception."""
+    if isinstance(error, AssemblyError):
+        return frame.error("Mechanism cannot be assembled")
+    if isinstance(error, LockedError):
+        return frame.error("Mechanism locks: rates undefined at a toggle position")
+    if isinstance(error, SingularForceError):
+        return frame.error("Force system is singular")
+    if isinstance(error, MethodDivisionByZero):
+        return frame.error("Division by zero", DIVISION_BY_ZERO)
+    return frame.error(str(error))
+
+
+def _selected_unknown(frame: _Frame) -> str:
+    """The load named by Q(n), or the BASIC error for a Q(n) outside the allowed set."""
+    choices = UNKNOWNS[frame.area]
+    q = frame.get("Q", frame.area)
+    if q not in choices:
+        allowed = " or ".join(str(choice) for choice in choices)
+        raise frame.error(f"Q({frame.area}) = {q:g} is not {allowed}")
+    return choices[int(q)]
+
+
+def _known_loads(frame: _Frame) -> dict[str, float]:
+    return {name: frame.get(*element) for name, element in LOADS[frame.area].items()}
+
+
+def _put_forces(frame: _Frame, result) -> None:
+    """Write the solved unknown and every reaction of the program."""
+    frame.put(LOADS[frame.area][result.unknown], result.value)
+    for name, elements in REACTIONS[frame.area].items():
+        value = complex(result.reactions[name])
+        if len(elements) == 2:
+            frame.put(elements[0], value.real)
+            frame.put(elements[1], value.imag)
+        else:
+            frame.put(elements[0], value.real)
+
+
+def _forces_wanted(frame: _Frame) -> bool:
+    return frame.get("Z", frame.area) == 2
+
+
+def _mass(frame: _Frame, mass: int, inertia: Element, distance: Element, offset: Element) -> MassProps:
+    return MassProps(frame.get("M", mass), frame.get(*inertia), frame.get(*distance), frame.get(*offset))
+
+
+def program_1(frame: _Frame, method: str | None) -> None:
+    """Slider-crank AoAB (contract, Program 1)."""
+    g = frame.get
+    kin = slider_crank(g("L", 1), g("L", 2), g("L", 3), g("T", 2), g("W", 2), g("A", 2),
+                       crank_length_rate=g("D", 0), crank_length_accel=g("E", 0), axis_deg=g("T", 4), method=method)
+    frame.put(("T", 3), kin.rod.degrees)
+    frame.put(("W", 3), kin.rod.omega)
+    frame.put(("A", 3), kin.rod.alpha)
+    frame.put_point(kin.crank_point(g("R", 1), g("H", 1)), (("X", 1), ("Y", 1)), (("V", 1), ("V", 2)),
+                    (("A", 33), ("A", 34)))
+    centre = kin.crank_point(g("R", 2), g("H", 2))
+    frame.put(("A", 10), complex(centre.acc).real)
+    frame.put(("A", 11), complex(centre.acc).imag)
+    frame.put_point(kin.rod_point(g("R", 4), g("H", 4)), (("X", 2), ("Y", 2)), (("V", 3), ("V", 4)),
+                    (("A", 35), ("A", 36)))
+    if _forces_wanted(frame):
+        result = kin.forces(
+            crank=_mass(frame, 2, ("I", 2), ("R", 2), ("H", 2)),
+            rod=_mass(frame, 3, ("I", 3), ("R", 3), ("H", 3)),
+            piston_mass=g("M", 4),
+            crank_point=(g("R", 1), g("H", 1)),
+            rod_point=(g("R", 4), g("H", 4)),
+            loads=_known_loads(frame),
+            unknown=_selected_unknown(frame),
+            gravity=frame.scalar("G"),
+        )
+        _put_forces(frame, result)
+
+
+def _branch(l10: float) -> int:
+    """L(10) = 1: crossed; anything else uncrossed (L(10) = -1, branch tracking, is
+    reserved and behaves as uncrossed until tracking exists)."""
+    return CROSSED if l10 == 1 else UNCROSSED
+
+
+def program_2(frame: _Frame, method: str | None) -> None:
+    """Four-bar AoABBo (contract, Program 2)."""
+    g = frame.get
+    kin = fourbar(g("L", 11), g("T", 11), g("L", 12), g("L", 13), g("L", 14), g("T", 12), g("W", 5), g("A", 5),
+                  crank_length_rate=g("D", 2), crank_length_accel=g("E", 2), branch=_branch(g("L", 10)),
+                  method=method)
+    for (angle, rate, accel), link in (((("T", 13), ("W", 6), ("A", 6)), kin.coupler),
+                                       ((("T", 14), ("W", 7), ("A", 7)), kin.follower)):
+        frame.put(angle, link.degrees)
+        frame.put(rate, link.omega)
+        frame.put(accel, link.alpha)
+    frame.put_point(kin.crank_point(g("R", 9), g("H", 9)), (("X", 3), ("Y", 3)), (("V", 5), ("V", 6)),
+                    (("A", 37), ("A", 38)))
+    frame.put_point(kin.coupler_point(g("R", 11), g("H", 11)), (("X", 4), ("Y", 4)), (("V", 7), ("V", 8)),
+                    (("A", 39), ("A", 40)))
+    frame.put_point(kin.follower_point(g("R", 13), g("H", 13)), (("X", 5), ("Y", 5)), (("V", 9), ("V", 10)),
+                    (("A", 41), ("A", 42)))
+    if _forces_wanted(frame):
+        result = kin.forces(
+            crank=_mass(frame, 6, ("I", 6), ("R", 8), ("H", 10)),
+            coupler=_mass(frame, 7, ("I", 7), ("R", 10), ("H", 12)),
+            follower=_mass(frame, 8, ("I", 8), ("R", 12), ("H", 14)),
+            crank_point=(g("R", 9), g("H", 9)),
+            coupler_point=(g("R", 11), g("H", 11)),
+            follower_point=(g("R", 13), g("H", 13)),
+            loads=_known_loads(frame),
+            unknown=_selected_unknown(frame),
+            gravity=frame.scalar("G"),
+        )
+        _put_forces(frame, result)
+
+
+def program_3(frame: _Frame, method: str | None) -> None:
+    """First inversion of the slider-crank, FISC (contract, Program 3)."""
+    g = frame.get
+    kin = inverted_slider_crank(g("L", 6), g("T", 6), g("L", 7), g("T", 7), g("W", 0), g("A", 0),
+                                crank_length_rate=g("D", 3), crank_length_accel=g("E", 3), method=method)
+    for element, value in ((("L", 5), kin.follower_length.value), (("D", 4), kin.follower_length.rate),
+                           (("E", 4), kin.follower_length.accel), (("T", 9), kin.follower.degrees),
+                           (("W", 4), kin.follower.omega), (("A", 4), kin.follower.alpha)):
+        frame.put(element, value)
+    frame.put_point(kin.crank_point(g("R", 0), g("H", 23)), (("X", 6), ("Y", 6)), (("V", 11), ("V", 12)),
+                    (("A", 43), ("A", 44)))
+    frame.put_point(kin.follower_point(g("R", 7), g("H", 6)), (("X", 7), ("Y", 7)), (("V", 13), ("V", 14)),
+                    (("A", 45), ("A", 46)))
+    if _forces_wanted(frame):
+        result = kin.forces(
+            crank=_mass(frame, 0, ("I", 0), ("R", 5), ("T", 5)),
+            block_mass=g("M", 1),
+            block_inertia=g("I", 1),
+            follower=_mass(frame, 5, ("I", 5), ("R", 6), ("H", 7)),
+            follower_point=(g("R", 7), g("H", 6)),
+            loads=_known_loads(frame),
+            unknown=_selected_unknown(frame),
+            gravity=frame.scalar("G"),
+        )
+        _put_forces(frame, result)
+
+
+def program_5(frame: _Frame, method: str | None) -> None:
+    """Motion of a virtual link (contract, Program 5)."""
+    g = frame.get
+    x, y = g("X", 10), g("Y", 10)
+    link = virtual_link(x, y, g("V", 17), g("V", 18), g("A", 49), g("A", 50), method=method)
+    frame.put_scalar("T", link.angle_deg)
+    frame.put_scalar("L", link.length)
+    frame.put_scalar("X", x)
+    frame.put_scalar("Y", y)
+    frame.put(("D", 5), link.angle_rate)
+    frame.put(("E", 5), link.angle_accel)
+    frame.put(("D", 6), link.length_rate)
+    frame.put(("E", 6), link.length_accel)
+
+
+PROGRAMS: dict[int, Callable[[_Frame, str | None], None]] = {1: program_1, 2: program_2, 3: program_3, 5: program_5}
+
+
+def make_area(number: int, method: str | None = None) -> Callable[[object], None]:
+    """The program area ``number`` as a callable ``area(machine) -> None``."""
+    program = PROGRAMS[number]
+
+    def area(machine) -> None:
+        frame = _Frame(machine, number)
+        try:
+            with np.errstate(all="ignore"):
+                program(frame, method)
+        except BasicError:
+            raise
+        except (ArithmeticError, ValueError) as error:
+            raise _translate(error, frame) from error
+        frame.commit()
+
+    area.__name__ = f"prog_{number}"
+    area.__doc__ = program.__doc__
+    return area
+
+
+def check_methods(methods: dict[int, str] | None) -> dict[int, str]:
+    """``methods`` with integer keys, or a BasicError naming what is unknown."""
+    checked = {}
+    for number, name in (methods or {}).items():
+        try:
+            number = int(number)
+        except (TypeError, ValueError):
+            number = None
+        if number not in LINKAGES:
+            raise BasicError(f"No library program {number} to choose a method for (programs: 1, 2, 3, 5)",
+                             ILLEGAL_FUNCTION_CALL)
+        known = method_names(LINKAGES[number])
+        if name not in known:
+            raise BasicError(f"Unknown method {name!r} for PROG {number} (known: {', '.join(known)})",
+                             ILLEGAL_FUNCTION_CALL)
+        checked[number] = name
+    return checked
+
 
 def install(machine, methods: dict[int, str] | None = None) -> None:
-    """Bind the library programs into ``machine``'s program areas 1, 2, 3, 5."""
+    """Bind the library programs into ``machine``'s program areas 1, 2, 3, 5.
+
+    ``methods`` maps a program number to a method name (e.g. ``{5: "paper"}``);
+    unknown programs or names raise a BasicError before anything is bound.
+    """
+    chosen = check_methods(methods)
+    for number in PROGRAMS:
+        machine.set_area(number, make_area(number, chosen.get(number)))

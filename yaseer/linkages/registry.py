@@ -14,9 +14,15 @@ line, ``--method 2=newton``).
 
 from __future__ import annotations
 
+import importlib
 from typing import Callable
 
 from yaseer.linkages.errors import UnknownMethodError
+
+# Packages whose import registers further methods (the alternative methods of
+# ``yaseer.linkages.methods``); imported on the first look-up, if present.
+EXTENSION_PACKAGES = ("yaseer.linkages.methods",)
+_extensions_loaded = False
 
 _REGISTRY: dict[str, dict[str, Callable]] = {}
 _DEFAULTS: dict[str, str] = {}
@@ -34,8 +40,23 @@ def register(linkage: str, name: str, *, default: bool = False) -> Callable[[Cal
     return decorate
 
 
+def _load_extensions() -> None:
+    """Import the extension packages once, so their methods are registered."""
+    global _extensions_loaded
+    if _extensions_loaded:
+        return
+    _extensions_loaded = True
+    for package in EXTENSION_PACKAGES:
+        try:
+            importlib.import_module(package)
+        except ModuleNotFoundError as error:
+            if error.name is None or not package.startswith(error.name):
+                raise
+
+
 def method_names(linkage: str) -> list[str]:
     """The registered method names of ``linkage``, sorted."""
+    _load_extensions()
     return sorted(_REGISTRY.get(linkage, {}))
 
 
@@ -46,6 +67,8 @@ def default_method(linkage: str) -> str:
 
 def lookup(linkage: str, name: str | None = None) -> Callable:
     """The function of method ``name`` (the default when ``None``) of ``linkage``."""
+    if name is not None:
+        _load_extensions()
     methods = _REGISTRY.get(linkage, {})
     chosen = default_method(linkage) if name is None else name
     if chosen not in methods:
