@@ -49,7 +49,7 @@ Program = dict[int, str]  # line number -> statement text (without the number)
 
 # --- the program text: storing, listing, ranges, renumbering -----------------
 
-_NUMBERED = re.compile(r"\s*(\d+)\s?(.*)$", re.S)
+_NUMBERED = re.compile(r"\s*(\d+)(?=[\sA-Za-z'?]|$)\s?(.*)$", re.S)
 
 
 def split_numbered(text: str) -> tuple[int, str] | None:
@@ -67,25 +67,20 @@ def split_numbered(text: str) -> tuple[int, str] | None:
 
 
 def parse_listing(text: str) -> Program:
-    """A listing file as line -> text.
+    """A listing file as line -> text, read as the machine reads a file.
 
-    Blank lines are skipped; a line that does not start with a number continues
-    the line before it (the paper's listings wrap long lines), joined by a space.
-    Text before the first numbered line is a ``Syntax error``.
+    Blank lines are skipped; a line that does not start with a line number
+    continues the line before it (the paper's listings wrap long lines; see
+    ``yaseer.basic.scanner.split_lines``).  Text before the first numbered
+    line is a ``Syntax error``; a repeated number keeps the later line.
     """
+    from yaseer.basic.scanner import split_lines
+
     program: Program = {}
-    last: int | None = None
-    for raw in text.splitlines():
-        if not raw.strip():
-            continue
-        numbered = split_numbered(raw)
-        if numbered is not None:
-            last, body = numbered
-            program[last] = body
-        elif last is None:
+    for number, body, _ in split_lines(text):
+        if number > MAX_LINE_NUMBER:
             raise BasicError("Syntax error", SYNTAX_ERROR)
-        else:
-            program[last] = program[last] + " " + raw.strip()
+        program[number] = body
     return program
 
 
@@ -430,11 +425,18 @@ class MachineEngine:
 
     def __init__(self, write: Callable[[str], object]) -> None:
         self._screen = _Screen(write)
-        self.machine = create_machine(self._screen, self._screen)
+        self._machine = None  # made on first use: the prompt comes up without waiting for it
+
+    @property
+    def machine(self):
+        """The machine holding the variables (created when first needed)."""
+        if self._machine is None:
+            self._machine = create_machine(self._screen, self._screen)
+        return self._machine
 
     def reset(self) -> None:
         """Fresh variables and areas (NEW, RUN)."""
-        self.machine = create_machine(self._screen, self._screen)
+        self._machine = None
 
     def run(self, areas: dict[int, str], start: int | None) -> None:
         """Load each typed area's program text into a fresh machine and run PROG 0."""

@@ -1,0 +1,146 @@
+"""The interactive session driven through a real pseudo-terminal (pexpect), and through a pipe.
+
+On a terminal the line editor is prompt_toolkit: these tests type keys (Ctrl-E,
+cursor up, Ctrl-C) as a user would and read the screen with the terminal's
+escape sequences removed.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pexpect
+import pytest
+
+# A fresh prompt starts with bracketed paste switched on (the accepted line is re-drawn without it).
+PROMPT = re.compile(r"\x1b\[\?2004h(?:\x1b\[[0-9;?]*[A-Za-z])*P(\d)>")
+ESCAPES = re.compile(r"\x1b\[[0-9;?]*[A-Za-z]|\x1b[=>]|\r")
+REPO = Path(__file__).resolve().parents[1]
+
+
+def plain(text: str) -> str:
+    """Terminal output without escape sequences and carriage returns."""
+    return ESCAPES.sub("", text)
+
+
+class Terminal:
+    """``python -m yaseer`` on a pseudo-terminal."""
+
+    def __init__(self, cwd: Path):
+        env = dict(os.environ, PROMPT_TOOLKIT_NO_CPR="1", TERM="xterm", PYTHONPATH=str(REPO))
+        self.child = pexpect.spawn(sys.executable, ["-m", "yaseer"], cwd=str(cwd), env=env,
+                                   encoding="utf-8", timeout=20, dimensions=(40, 120))
+        self.banner = self.wait()
+
+    def wait(self) -> str:
+        """Everything shown up to the next prompt."""
+        self.child.expect(PROMPT)
+        return plain(self.child.before)
+
+    def type(self, line: str) -> str:
+        """Type a line and Enter; what the session showed before the next prompt."""
+        self.child.send(line + "\r")
+        self.child.expect(PROMPT)
+        shown = self.child.before.split("\x1b[?2004l", 1)[-1]  # after the typed line
+        return plain(shown)
+
+    def expect_prompt(self, area: int) -> None:
+        """Wait for the prompt of program area ``area``."""
+        self.child.expect(PROMPT)
+        assert self.child.match.group(1) == str(area)
+
+    def keys(self, keys: str) -> str:
+        """Send raw keys (ending with Enter); the screen up to the next prompt."""
+        self.child.send(keys)
+        return self.wait()
+
+    def close(self) -> None:
+        self.child.send("SYSTEM\r")
+        self.child.expect(pexpect.EOF)
+        self.child.close()
+        assert self.child.exitstatus == 0
+
+
+@pytest.fixture
+def terminal(tmp_path):
+    term = Terminal(tmp_path)
+    yield term
+    if term.child.isalive():
+        term.child.terminate(force=True)
+
+
+def test_lines_are_stored_and_listed(terminal):
+    assert "pocket computer" in terminal.banner
+    terminal.type("20 PRINT 2")
+    terminal.type("10 PRINT 1")
+    assert terminal.type("LIST") == "10 PRINT 1\n20 PRINT 2\n"
+    terminal.close()
+
+
+def test_edit_puts_the_line_under_the_cursor_and_history_recalls(terminal):
+    terminal.type("10 PRINT 1")
+    terminal.type("EDIT 10")
+    terminal.keys("\x05" + "0\r")  # Ctrl-E (end of line), type 0, Enter: "10 PRINT 10"
+    assert terminal.type("LIST") == "10 PRINT 10\n"
+    screen = terminal.keys("\x1b[A\r")  # cursor up: the last line typed (LIST) again
+    assert screen.endswith("10 PRINT 10\n")
+    terminal.close()
+
+
+def test_ctrl_c_at_the_prompt_drops_the_line(terminal):
+    terminal.child.send("10 PRINT 1")
+    terminal.keys("\x03")
+    assert terminal.type("LIST") == ""
+    terminal.close()
+
+
+def test_errors_leave_the_session_alive(terminal):
+    assert terminal.type("DELETE 99") == "Illegal function call\n"
+    assert terminal.type('LOAD "missing.bas"') == "File not found\n"
+    assert terminal.type("PROG 42") == "Illegal function call\n"
+    terminal.type("10 END")
+    assert terminal.type("LIST") == "10 END\n"
+    terminal.close()
+
+
+def test_save_and_load_files_in_the_working_directory(terminal, tmp_path):
+    terminal.type("10 PRINT 1")
+    terminal.type('SAVE "one.bas"')
+    assert (tmp_path / "one.bas").read_text() == "10 PRINT 1\n"
+    (tmp_path / "two.bas").write_text("5 REM two\n")
+    terminal.type('LOAD "two"')
+    assert terminal.type("LIST") == "5 REM two\n"
+    terminal.close()
+
+
+def test_prog_n_changes_the_prompt_and_the_edited_area(terminal):
+    terminal.child.send("PROG 7\r")
+    terminal.expect_prompt(7)
+    terminal.type("10 RETURN")
+    assert terminal.type("LIST") == "10 RETURN\n"
+    terminal.child.send("PROG 0\r")
+    terminal.expect_prompt(0)
+    assert terminal.type("LIST") == ""
+    terminal.close()
+
+
+def test_ctrl_d_leaves(terminal):
+    terminal.child.send("\x04")
+    terminal.child.expect(pexpect.EOF)
+    terminal.child.close()
+    assert terminal.child.exitstatus == 0
+
+
+def test_plain_input_when_stdin_is_not_a_terminal(tmp_path):
+    typed = "20 PRINT 2\n10 PRINT 1\nLIST\nEDIT 10\nDELETE 5\n"
+    result = subprocess.run([sys.executable, "-m", "yaseer"], input=typed, capture_output=True, text=True,
+                            cwd=tmp_path, env=dict(os.environ, PYTHONPATH=str(REPO)), timeout=60)
+    assert result.returncode == 0
+    assert "\x1b" not in result.stdout  # no line editor on a pipe
+    assert "10 PRINT 1\n20 PRINT 2\n" in result.stdout
+    assert "P0> 10 PRINT 1\nP0> Illegal function call\n" in result.stdout  # EDIT shows the line to retype
+    assert result.stderr == ""
