@@ -29,12 +29,12 @@ class StandInMachine:
     """Arrays, scalars and areas, the part of the machine API the recorder uses."""
 
     def __init__(self):
-        self.arrays = {name: [0.0] * 60 for name in "LTXYRHWA"}
+        self.arrays = {}
         self.scalars = {}
         self.areas = {}
 
     def array(self, name):
-        return self.arrays[name]
+        return self.arrays.setdefault(name, [0.0] * 60)
 
     def scalar(self, name):
         return self.scalars.get(name, 0.0)
