@@ -280,8 +280,10 @@ def example5():
     jaw DoD = 2.45 (180 kg, I = 435, G 1.5 from Do at 9 deg from Do->D, crushing
     point P 2.5 from Do at 18 deg); AoCDDo uncrossed.  The crushing force
     F = 500/(T(14)+100.5)^3 N (T(14) the inclination of D->Do in (-180, 180] deg)
-    acts at P along u(T(14)+90 deg) whenever the jaw's angular velocity W(7) < 0.
-    Gravity 0 (the listing never sets G).
+    acts at P normal to DoD whenever the jaw's angular velocity W(7) < 0, on
+    the jaw along u(T(14) - 90 deg): the material's reaction, resisting the
+    closing jaw (the printed line 5050's u(T(14) + 90 deg) would drive it; see
+    listings/ERRATA.md).  Gravity 0 (the listing never sets G).
     """
     crank = Body("crank", mass=200, inertia=156, points={"A": (".075", 0)})
     pitman = Body("pitman ABC", mass=30, inertia=18, centre=(".5", 0),
@@ -297,7 +299,7 @@ def example5():
         ar = s.ar
         t14 = s.direction("jaw DoD", "D", "Do")
         force = crushing_force(t14, s.omega("jaw DoD"))
-        direction = _unit(ar, t14 + 90)
+        direction = _unit(ar, t14 - 90)
         return (force * direction[0], force * direction[1])
 
     mechanism = Mechanism(

@@ -32,6 +32,7 @@ This module knows nothing of BASIC or of yaseer.linkages.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
@@ -369,6 +370,16 @@ class Drive:
     acceleration: object
 
 
+def _arms(constraint):
+    """The (body, local point) pairs whose arms enter a constraint's Jacobian."""
+    pairs = []
+    for body_attr, point_attr in (("body_i", "local_i"), ("body_j", "local_j")):
+        body, local = getattr(constraint, body_attr, None), getattr(constraint, point_attr, None)
+        if body is not None and local is not None:
+            pairs.append((body, local))
+    return pairs
+
+
 # --------------------------------------------------------------------------- loads
 
 @dataclass
@@ -464,7 +475,8 @@ class Mechanism:
             if max(abs(s) for s in step) <= ar.tolerance * scale:
                 return q
         raise MechanismError(f"Newton did not converge at crank angle "
-                             f"{ar.to_float(ar.degrees(drive.angle)):.6g} deg (cannot be assembled?)")
+                             f"{ar.to_float(ar.degrees(drive.angle)):.12g} deg: the position cannot "
+                             "be assembled, or it is singular (toggle, change point)")
 
     def velocities(self, q, drive, ar=FLOAT):
         """Solve Phi_q qd = nu."""
@@ -532,6 +544,68 @@ class Mechanism:
 
     # -- whole analyses
 
+    def condition(self, q, ar=FLOAT) -> float:
+        """Condition number of the position Jacobian made dimensionless.
+
+        Angle columns are multiplied by a characteristic length (the largest
+        body-point arm at ``q``) and angle rows divided by it, so the number
+        does not depend on the unit of length.  Infinite when singular.
+        """
+        import numpy as np
+
+        kin = _Kinematics(ar, q)
+        length = max([1e-300] + [abs(ar.to_float(v)) for c in self.constraints.values()
+                                 for body, local in _arms(c) for v in kin.arm(body, local)])
+        rows = []
+        for constraint in self.constraints.values():
+            angular = isinstance(constraint, (AngleLock, AngleDriver))
+            for sparse in constraint.jacobian(kin):
+                row = [0.0] * self.size
+                for column, value in sparse.items():
+                    value = ar.to_float(value) * (length if angular else 1.0)
+                    row[column] = value / length if column % 3 == 2 else value
+                rows.append(row)
+        singular = np.linalg.svd(np.array(rows), compute_uv=False)
+        if singular[-1] == 0:
+            return math.inf
+        kappa = float(singular[0] / singular[-1])
+        if kappa > 1e13 and ar is not FLOAT:
+            exact = ar.ctx.svd_r(ar.ctx.matrix(self._scaled_rows(kin, length)), compute_uv=False)
+            smallest = min(exact[i] for i in range(len(rows)))
+            kappa = math.inf if smallest == 0 else float(max(exact[i] for i in range(len(rows))) / smallest)
+        return kappa
+
+    def _scaled_rows(self, kin, length):
+        rows = []
+        length = kin.ar.num(length)
+        for constraint in self.constraints.values():
+            angular = isinstance(constraint, (AngleLock, AngleDriver))
+            for sparse in constraint.jacobian(kin):
+                row = [kin.ar.num(0)] * self.size
+                for column, value in sparse.items():
+                    value = value * length if angular else value
+                    row[column] = value / length if column % 3 == 2 else value
+                rows.append(row)
+        return rows
+
+    def check_conditioning(self, q, drive, ar, accuracy):
+        """(kappa, kappa^2 * unit roundoff); MechanismError if the latter exceeds ``accuracy``.
+
+        Near a singular configuration (toggle, change point, dead point of a
+        driven link) Newton's positions carry a relative error of about kappa*u
+        and the rates, solved with that Jacobian, about kappa^2*u.
+        """
+        roundoff = 2.0 ** -53 if ar is FLOAT else 10.0 ** -ar.dps
+        kappa = self.condition(q, ar)
+        bound = kappa * kappa * roundoff if kappa < math.inf else math.inf
+        if not bound <= accuracy:
+            angle = ar.to_float(ar.degrees(drive.angle))
+            raise MechanismError(
+                f"singular configuration near crank angle {angle:.12g} deg (condition number "
+                f"{kappa:.3g}: a toggle, change point or dead point where the constraints do not "
+                f"fix the motion; {ar.name} arithmetic cannot give the rates to {accuracy:g})")
+        return kappa, bound
+
     def snapshot(self, q, drive, ar=FLOAT, *, rates=True, forces=False) -> "Snapshot":
         """Velocities, accelerations (if ``rates``) and forces (if ``forces``) at position ``q``."""
         if forces and not rates:
@@ -559,7 +633,8 @@ class Mechanism:
         return q
 
     def analyse(self, angles_deg, rate, acceleration, q_guess, *, number="float", dps=50,
-                forces=False, rates=True, max_step_deg=2.0, branch_check=None, home_deg=None):
+                forces=False, rates=True, max_step_deg=2.0, branch_check=None, home_deg=None,
+                accuracy=1e-6):
         """Analyse the mechanism at each driver angle of ``angles_deg`` (degrees, in order).
 
         ``rate``, ``acceleration``: the driver's rad/s and rad/s^2 (the same at
@@ -570,7 +645,10 @@ class Mechanism:
         at driver angle ``home_deg`` and the continuation starts there.  ``number="mpmath"`` polishes every position by
         Newton at ``dps`` digits and computes rates and forces there.
         ``branch_check(snapshot)`` may raise MechanismError when the assembly
-        branch is lost.  Returns a list of :class:`Snapshot`.
+        branch is lost.  Each position is checked for conditioning
+        (:meth:`check_conditioning`): where the estimated relative error of the
+        rates exceeds ``accuracy`` the analysis stops with MechanismError
+        instead of returning a wrong number.  Returns a list of :class:`Snapshot`.
         """
         ar = arithmetic_for(number, dps)
         angles = list(angles_deg)
@@ -585,8 +663,10 @@ class Mechanism:
                                      max_step_deg=max_step_deg)
             previous = float(angle)
             q = q_float if ar is FLOAT else self.newton(q_float, self._drive(ar, angle, 0, 0), ar)
-            snap = self.snapshot(q, self._drive(ar, angle, rate, acceleration), ar,
-                                 rates=rates, forces=forces)
+            drive = self._drive(ar, angle, rate, acceleration)
+            condition, bound = self.check_conditioning(q, drive, ar, accuracy)
+            snap = self.snapshot(q, drive, ar, rates=rates, forces=forces)
+            snap.condition, snap.error_bound = condition, bound
             if branch_check is not None:
                 branch_check(snap)
             results.append(snap)
@@ -625,6 +705,10 @@ class Snapshot:
         self.mechanism, self.ar, self.q, self.qd, self.qdd, self.drive = mechanism, ar, q, qd, qdd, drive
         self.lam = None
         self.kin = _Kinematics(ar, q, qd, qdd)
+        #: dimensionless condition number of the position Jacobian, and kappa^2 * unit roundoff
+        #: (the estimated relative error of the rates); set by Mechanism.analyse.
+        self.condition = None
+        self.error_bound = None
 
     def _body(self, name):
         return None if name is None else self.mechanism.body(name)
