@@ -219,7 +219,7 @@ def test_a_long_render_shows_progress_on_the_given_stream(tmp_path, monkeypatch)
 
     monkeypatch.setattr(progress, "DELAY_SECONDS", 0.0)
     original = progress.bar
-    monkeypatch.setattr(progress, "bar", lambda *a, **k: original(*a, **{**k, "delay": 0.0, "force": True}))
+    monkeypatch.setattr(progress, "bar", lambda *a, **k: original(*a, **{**k, "delay": 0.0, "force": True, "refresh_seconds": 0.0}))
     frames, _ = run_cycle([0.0, 120.0, 240.0])
     stream = io.StringIO()
     render(frames, tmp_path / "c.gif", progress_file=stream)

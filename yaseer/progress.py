@@ -24,12 +24,14 @@ def bar(
     file: IO[str] | None = None,
     delay: float = DELAY_SECONDS,
     force: bool = False,
+    refresh_seconds: float = 0.1,
 ):
     """A tqdm bar on ``file`` (default stderr), shown after ``delay`` seconds.
 
     ``total`` may be None for a task of unknown length (a counter is shown).
     With ``force`` the bar is drawn even when ``file`` is not a terminal
-    (tests and logs); otherwise a non-terminal ``file`` disables it.
+    (tests and logs); otherwise a non-terminal ``file`` disables it.  The bar
+    is redrawn at most every ``refresh_seconds`` and erased when done.
     Use it as a context manager; call ``.update(n)`` as work is done.
     """
     from tqdm import tqdm
@@ -43,6 +45,7 @@ def bar(
         delay=delay,
         leave=False,
         dynamic_ncols=True,
+        mininterval=refresh_seconds,
         disable=False if force else not _is_terminal(stream),
     )
 
@@ -55,11 +58,12 @@ def track(
     file: IO[str] | None = None,
     delay: float = DELAY_SECONDS,
     force: bool = False,
+    refresh_seconds: float = 0.1,
 ) -> Iterator[T]:
     """Iterate over ``items`` with a :func:`bar` that ticks once per item."""
     if total is None and hasattr(items, "__len__"):
         total = len(items)  # type: ignore[arg-type]
-    with bar(total, description, unit, file, delay, force) as progress:
+    with bar(total, description, unit, file, delay, force, refresh_seconds) as progress:
         for item in items:
             yield item
             progress.update(1)
