@@ -468,15 +468,16 @@ class Mechanism:
             try:
                 step = ar.solve(self._jacobian(kin), [-r for r in residual])
             except SingularSystemError as exc:
-                raise MechanismError(f"position Jacobian is singular near crank angle "
-                                     f"{ar.to_float(ar.degrees(drive.angle)):.6g} deg") from exc
+                raise MechanismError(f"the mechanism cannot be assembled at crank angle "
+                                     f"{ar.to_float(ar.degrees(drive.angle)):.12g} deg (Newton met a "
+                                     "singular Jacobian)") from exc
             q = [a + b for a, b in zip(q, step)]
             scale = 1 + max(abs(v) for v in q)
             if max(abs(s) for s in step) <= ar.tolerance * scale:
                 return q
-        raise MechanismError(f"Newton did not converge at crank angle "
-                             f"{ar.to_float(ar.degrees(drive.angle)):.12g} deg: the position cannot "
-                             "be assembled, or it is singular (toggle, change point)")
+        raise MechanismError(f"the mechanism cannot be assembled at crank angle "
+                             f"{ar.to_float(ar.degrees(drive.angle)):.12g} deg (Newton did not "
+                             "converge), or the position is singular (toggle, change point)")
 
     def velocities(self, q, drive, ar=FLOAT):
         """Solve Phi_q qd = nu."""

@@ -1,0 +1,360 @@
+"""The reference solver (yaseer/reference/solver.py) against independent computations.
+
+* closed forms derived by hand here (a plain offset slider-crank, a four-bar by
+  circle intersection and Cramer's rule on the differentiated loop equation);
+* finite differences of the solver's own positions along the crank angle;
+* Newton's laws for the whole machine (sum of external forces and moments equals
+  the rate of change of momentum and angular momentum) and the power balance
+  (drive power = dT/dt - power of the loads, dT/dt by finite differences);
+* the mpmath path against the float path, and against itself at two precisions.
+"""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from yaseer.reference.arithmetic import MpArithmetic
+from yaseer.reference.solver import (AngleDriver, AngleLock, Body, Couple, Drive, Mechanism,
+                                     MechanismError, PointLoad, PointOnLine, Revolute, polar)
+from yaseer.reference.paper_mechanisms import example_mechanism, example_snapshots
+from yaseer.reference.seeds import four_bar
+
+
+def rel(a, b, floor=1.0):
+    return abs(float(a) - float(b)) / max(floor, abs(float(b)))
+
+
+# --------------------------------------------------------------------------- closed forms
+
+def slider_crank_closed_form(r, l, e, theta_deg, w, alpha):
+    """Offset slider-crank, pin B on y = e, B to the right of A: derived by hand.
+
+    r sin(t) + l sin(b) = e fixes the rod angle b; x_B = r cos(t) + l cos(b);
+    differentiate twice.
+    """
+    t = math.radians(theta_deg)
+    b = math.asin((e - r * math.sin(t)) / l)
+    bd = -r * w * math.cos(t) / (l * math.cos(b))
+    bdd = (r * w * w * math.sin(t) - r * alpha * math.cos(t) + l * bd * bd * math.sin(b)) / (l * math.cos(b))
+    x = r * math.cos(t) + l * math.cos(b)
+    xd = -r * w * math.sin(t) - l * bd * math.sin(b)
+    xdd = -r * alpha * math.sin(t) - r * w * w * math.cos(t) - l * bdd * math.sin(b) - l * bd * bd * math.cos(b)
+    return dict(x=x, v=xd, a=xdd, rod=math.degrees(b), w_rod=bd, a_rod=bdd)
+
+
+def slider_crank_model(r, l, e, with_slider_body=False, masses=False):
+    crank = Body("crank", mass=2 if masses else 0, inertia=0.3 if masses else 0, centre=(r / 3, 0.1),
+                 points={"A": (r, 0)})
+    rod = Body("rod", mass=3 if masses else 0, inertia=0.7 if masses else 0, centre=(l / 2, -0.2),
+               points={"A": (0, 0), "B": (l, 0)})
+    bodies, constraints = [crank, rod], [
+        Revolute("O", crank, (0, 0), None, (0, 0)),
+        Revolute("A", crank, "A", rod, "A"),
+        AngleDriver("drive", crank)]
+    if with_slider_body:
+        piston = Body("piston", mass=1.5 if masses else 0, inertia=0.05 if masses else 0, points={"B": (0, 0)})
+        bodies.append(piston)
+        constraints += [Revolute("B", rod, "B", piston, "B"),
+                        PointOnLine("guide", piston, "B", None, (0, e), 0),
+                        AngleLock("lock", piston, None, 0)]
+    else:
+        constraints.append(PointOnLine("guide", rod, "B", None, (0, e), 0))
+    return Mechanism(bodies, constraints)
+
+
+@pytest.mark.parametrize("theta", [-170.0, -30.0, 12.5, 77.0, 133.0])
+@pytest.mark.parametrize("with_slider_body", [False, True])
+def test_slider_crank_against_closed_form(theta, with_slider_body):
+    r, l, e, w, alpha = 3.0, 8.0, 2.0, -15.0, -10.0
+    model = slider_crank_model(r, l, e, with_slider_body)
+    placement = {"crank": (0, 0, theta), "rod": (r * math.cos(math.radians(theta)),
+                                                  r * math.sin(math.radians(theta)), 5)}
+    if with_slider_body:
+        placement["piston"] = (9, e, 0)
+    (s,) = model.analyse([theta], w, alpha, model.coordinates(placement))
+    exact = slider_crank_closed_form(r, l, e, theta, w, alpha)
+    assert rel(s.position("rod", "B")[0], exact["x"]) < 1e-12
+    assert rel(s.velocity("rod", "B")[0], exact["v"]) < 1e-11
+    assert rel(s.acceleration("rod", "B")[0], exact["a"]) < 1e-10
+    assert rel(s.angle("rod"), exact["rod"]) < 1e-11
+    assert rel(s.omega("rod"), exact["w_rod"]) < 1e-11
+    assert rel(s.alpha("rod"), exact["a_rod"]) < 1e-10
+    assert abs(s.velocity("rod", "B")[1]) < 1e-11 and abs(s.acceleration("rod", "B")[1]) < 1e-9
+
+
+def four_bar_closed_form(a, b, c, d, theta_deg, w, alpha, side):
+    """Crank A(0,0)-B, coupler B-C, follower D(d,0)-C; C on ``side`` (+1 left) of B->D.
+
+    Position: intersection of the circles (B, b) and (D, c).  Rates: the loop
+    a u(t) + b u(beta) - c u(phi) - d x = 0 differentiated; the 2x2 system in
+    (beta', phi') [and (beta'', phi'')] solved by Cramer's rule.
+    """
+    t = math.radians(theta_deg)
+    bx, by = a * math.cos(t), a * math.sin(t)
+    ex, ey = d - bx, -by
+    dist = math.hypot(ex, ey)
+    along = (b * b - c * c + dist * dist) / (2 * dist)
+    h = math.sqrt(b * b - along * along)
+    cx = bx + along * ex / dist - side * h * ey / dist
+    cy = by + along * ey / dist + side * h * ex / dist
+    beta, phi = math.atan2(cy - by, cx - bx), math.atan2(cy, cx - d)
+    # columns: beta' multiplies b J u(beta), phi' multiplies -c J u(phi)
+    m11, m21 = -b * math.sin(beta), b * math.cos(beta)
+    m12, m22 = c * math.sin(phi), -c * math.cos(phi)
+    det = m11 * m22 - m12 * m21
+
+    def cramer(r1, r2):
+        return (r1 * m22 - m12 * r2) / det, (m11 * r2 - r1 * m21) / det
+
+    r1, r2 = a * w * math.sin(t), -a * w * math.cos(t)
+    bd, pd = cramer(r1, r2)
+    r1 = a * alpha * math.sin(t) + a * w * w * math.cos(t) + b * bd * bd * math.cos(beta) - c * pd * pd * math.cos(phi)
+    r2 = -a * alpha * math.cos(t) + a * w * w * math.sin(t) + b * bd * bd * math.sin(beta) - c * pd * pd * math.sin(phi)
+    bdd, pdd = cramer(r1, r2)
+    return dict(beta=math.degrees(beta), phi=math.degrees(phi), bd=bd, pd=pd, bdd=bdd, pdd=pdd, C=(cx, cy))
+
+
+@pytest.mark.parametrize("theta", [0.0, 37.0, 95.0, 181.0, 260.0, 333.0])
+@pytest.mark.parametrize("side", [1, -1])
+def test_four_bar_against_closed_form(theta, side):
+    a, b, c, d, w, alpha = 40.0, 120.0, 80.0, 100.0, 7.0, -3.0
+    model = four_bar(a, b, c, (d, 0))
+    exact = four_bar_closed_form(a, b, c, d, theta, w, alpha, side)
+    bx, by = a * math.cos(math.radians(theta)), a * math.sin(math.radians(theta))
+    sketch = model.coordinates({"crank": (0, 0, theta), "coupler": (bx, by, exact["beta"] + 8),
+                                "follower": (d, 0, exact["phi"] - 8)})
+    (s,) = model.analyse([theta], w, alpha, sketch)
+    assert rel(s.angle("coupler"), exact["beta"]) < 1e-11
+    assert rel(s.angle("follower"), exact["phi"]) < 1e-11
+    assert rel(s.omega("coupler"), exact["bd"]) < 1e-11
+    assert rel(s.omega("follower"), exact["pd"]) < 1e-11
+    assert rel(s.alpha("coupler"), exact["bdd"]) < 1e-10
+    assert rel(s.alpha("follower"), exact["pdd"]) < 1e-10
+    assert rel(s.position("coupler", "C")[0], exact["C"][0]) < 1e-12
+
+
+def test_textbook_open_four_bar_angles():
+    """The contract's example: a=40, b=120, c=80, d=100, theta=40: coupler 20.30, follower Bo->B 57.32."""
+    model = four_bar(40, 120, 80, (100, 0))
+    (s,) = model.analyse([40], 1, 0, model.coordinates(
+        {"crank": (0, 0, 40), "coupler": (30.6, 25.7, 25), "follower": (100, 0, 60)}))
+    assert round(float(s.angle("coupler")), 2) == 20.30
+    assert round(float(s.angle("follower")), 2) == 57.32
+
+
+# --------------------------------------------------------------------------- finite differences
+
+def positions(n, angles, body, point):
+    return [s.position(body, point) for s in example_snapshots(n, angles)]
+
+
+@pytest.mark.parametrize("n, body, point", [(1, "link BD", "D"), (3, "member CCoD", "D"),
+                                            (4, "link EDH", "E"), (5, "jaw DoD", "P"),
+                                            (2, "rod ABC", "C")])
+@pytest.mark.parametrize("theta", [17.3, 141.0, 263.9])
+def test_rates_against_finite_differences_of_positions(n, body, point, theta):
+    """Constant crank speed w: v = w dp/dtheta, a = w^2 d2p/dtheta2 (central differences, h = 1e-4 rad)."""
+    from yaseer.reference.paper_mechanisms import CRANK_RATE
+
+    w = CRANK_RATE[n]
+    h = 1e-4
+    hd = math.degrees(h)
+    before, here, after = positions(n, [theta - hd, theta, theta + hd], body, point)
+    (s,) = example_snapshots(n, [theta])
+    v, acc = s.velocity(body, point), s.acceleration(body, point)
+    scale_v = max(abs(v[0]), abs(v[1]))
+    scale_a = max(abs(acc[0]), abs(acc[1]))
+    for k in range(2):
+        fd_v = w * (after[k] - before[k]) / (2 * h)
+        fd_a = w * w * (after[k] - 2 * here[k] + before[k]) / (h * h)
+        assert abs(v[k] - fd_v) < 1e-7 * scale_v
+        assert abs(acc[k] - fd_a) < 1e-5 * scale_a
+
+
+def test_angular_rates_against_finite_differences():
+    """Example 3's output member: W(4), A(4) against differences of its angle T(9)."""
+    h = 1e-4
+    hd = math.degrees(h)
+    angles = [200.0 - hd, 200.0, 200.0 + hd]
+    before, here, after = [float(s.angle("member CCoD")) for s in example_snapshots(3, angles)]
+    (s,) = example_snapshots(3, [200.0])
+    w = 30
+    assert abs(s.omega("member CCoD") - w * math.radians(after - before) / (2 * h)) < 1e-7 * abs(s.omega("member CCoD"))
+    assert abs(s.alpha("member CCoD") - w * w * math.radians(after - 2 * here + before) / h ** 2) \
+        < 1e-4 * abs(s.alpha("member CCoD"))
+
+
+# --------------------------------------------------------------------------- forces
+
+def momentum_balance(s, fixed_joints):
+    """Residual of Newton's laws for the whole machine (force x, force y, moment about the origin).
+
+    External actions: ground reactions at ``fixed_joints``, the drive torque,
+    the point loads and gravity; the inertia side m a_G and I alpha + r_G x m a_G.
+    """
+    mech = s.mechanism
+    fx = fy = moment = 0.0
+    for joint, body in fixed_joints:
+        force = s.reaction(joint, body)
+        at = s.position(body, mech.constraints[joint].local_i)
+        fx, fy = fx + force[0], fy + force[1]
+        moment += at[0] * force[1] - at[1] * force[0]
+    moment += s.driver_torque("crank")
+    for load in mech.loads:
+        if isinstance(load, PointLoad):
+            force = load.force(s)
+            at = s.position(load.body.name, load.local)
+            fx, fy = fx + force[0], fy + force[1]
+            moment += at[0] * force[1] - at[1] * force[0]
+        else:
+            moment += load.torque(s)
+    for body in mech.bodies.values():
+        m = float(body.mass)
+        g = s.position(body.name, body.centre)
+        acc = s.acceleration(body.name, body.centre)
+        weight = -m * float(mech.gravity)
+        fy += weight
+        moment += g[0] * weight
+        fx -= m * acc[0]
+        fy -= m * acc[1]
+        moment -= float(body.inertia) * s.alpha(body.name) + m * (g[0] * acc[1] - g[1] * acc[0])
+    return fx, fy, moment
+
+
+@pytest.mark.parametrize("theta", [0.1, 100.1, 151.0, 300.1])
+def test_example5_whole_machine_momentum(theta):
+    (s,) = example_snapshots(5, [theta])
+    residual = momentum_balance(s, [("Ao", "crank"), ("Bo", "toggle BoB"), ("Do", "jaw DoD")])
+    scale = max(abs(c) for c in s.reaction("Bo", "toggle BoB")) + 1
+    assert all(abs(r) < 1e-8 * scale for r in residual)
+
+
+def kinetic_energy_rate_by_differences(n, theta, h=1e-4):
+    from yaseer.reference.paper_mechanisms import CRANK_RATE
+
+    hd = math.degrees(h)
+    before, after = example_snapshots(n, [theta - hd, theta + hd])
+    return CRANK_RATE[n] * (after.kinetic_energy() - before.kinetic_energy()) / (2 * h)
+
+
+@pytest.mark.parametrize("n", [2, 5])
+@pytest.mark.parametrize("theta", [20.1, 120.1, 250.0])
+def test_drive_power_balances_energy(n, theta):
+    """U w = dT/dt - power of the loads; dT/dt by central differences of the kinetic energy."""
+    from yaseer.reference.paper_mechanisms import CRANK_RATE
+
+    (s,) = example_snapshots(n, [theta])
+    drive_power = s.driver_torque("crank") * CRANK_RATE[n]
+    expected = kinetic_energy_rate_by_differences(n, theta) - s.power_of_loads()
+    assert abs(drive_power - expected) < 1e-6 * (abs(expected) + abs(s.power_of_loads()) + 1e-3)
+
+
+@pytest.mark.parametrize("theta", [10.0, 200.0])
+def test_slider_crank_with_gravity_power_and_piston_forces(theta):
+    """Masses, gravity, a piston body with a prismatic pair and a couple on the rod."""
+    model = slider_crank_model(3.0, 8.0, 2.0, with_slider_body=True, masses=True)
+    model.gravity = 9.81
+    rod = model.body("rod")
+    model.loads = [Couple(rod, lambda s: 4.0),
+                   PointLoad(model.body("piston"), "B", lambda s: (-50.0, 0.0))]
+    w = 12.0
+    h = 1e-4
+
+    def solve(angle):
+        placement = {"crank": (0, 0, angle), "rod": (3 * math.cos(math.radians(angle)),
+                                                      3 * math.sin(math.radians(angle)), 5),
+                     "piston": (9, 2, 0)}
+        (s,) = model.analyse([angle], w, 0, model.coordinates(placement), forces=True)
+        return s
+
+    s, before, after = solve(theta), solve(theta - math.degrees(h)), solve(theta + math.degrees(h))
+    energy_rate = w * (after.kinetic_energy() - before.kinetic_energy()) / (2 * h)
+    assert abs(s.driver_torque("drive") * w - (energy_rate - s.power_of_loads())) < 1e-6 * abs(energy_rate) + 1e-6
+    # the piston: guide normal force balances weight, rod force and the wall couple keeps it from turning
+    piston_force = s.reaction("B", "piston")
+    normal = s.normal_force("guide")
+    assert abs(piston_force[1] + normal - 1.5 * 9.81 - 1.5 * s.acceleration("piston", (0, 0))[1]) < 1e-9
+    assert abs(piston_force[0] - 50.0 - 1.5 * s.acceleration("piston", (0, 0))[0]) < 1e-9
+
+
+# --------------------------------------------------------------------------- arithmetic
+
+@pytest.mark.parametrize("n", [1, 2, 3, 4, 5])
+def test_mpmath_path_agrees_with_float_path(n):
+    from yaseer.reference.paper_mechanisms import example_columns
+
+    angles = [40.1, 220.1]
+    exact = example_columns(n, angles, number="mpmath", dps=40)
+    rough = example_columns(n, angles)
+    for row_exact, row_float in zip(exact, rough):
+        for e, f in zip(row_exact, row_float):
+            assert rel(f, e) < 1e-11
+
+
+def test_mpmath_positions_are_polished_to_the_precision():
+    """At 50 digits the constraints hold to ~1e-48 and 50 vs 70 digits agree to ~1e-45."""
+    mechanism, *_ = example_mechanism(4)
+    (s50,) = example_snapshots(4, [123.4], number="mpmath", dps=50)
+    (s70,) = example_snapshots(4, [123.4], number="mpmath", dps=70)
+    from yaseer.reference.solver import _Kinematics
+
+    residuals = mechanism._residuals(_Kinematics(s50.ar, s50.q), s50.drive)
+    assert max(abs(r) for r in residuals) < 1e-46
+    for a, b in zip(s50.qdd, s70.qdd):
+        assert abs(a - b) < 1e-42 * (1 + abs(b))
+    assert s50.error_bound < 1e-44
+
+
+def test_mp_arithmetic_takes_decimal_strings_exactly():
+    ar = MpArithmetic(40)
+    assert ar.num("0.1") * 10 == 1
+    assert ar.num(0.1) * 10 != 1  # a float is its binary value
+
+
+# --------------------------------------------------------------------------- failures are errors
+
+def test_not_assembled_is_an_error():
+    model = four_bar(30, 36, 36, (60, 0))
+    with pytest.raises(MechanismError, match="cannot be assembled"):
+        model.analyse([180.0], 10, 0, model.coordinates({"crank": (0, 0, 180), "coupler": (-30, 0, 0),
+                                                          "follower": (60, 0, 180)}))
+
+
+def test_toggle_position_is_an_error_not_a_number():
+    """A four-bar driven through its toggle (coupler and follower in line) stops with a clear error."""
+    a, b, c, d = 30.0, 36.0, 36.0, 60.0
+    toggle = math.degrees(math.acos((a * a + d * d - (b + c) ** 2) / (2 * a * d)))
+    model = four_bar(a, b, c, (d, 0))
+    sketch = model.coordinates({"crank": (0, 0, 0), "coupler": (30, 0, 65), "follower": (60, 0, 115)})
+    with pytest.raises(MechanismError, match="singular|converge"):
+        model.analyse([toggle], 10, 0, sketch, home_deg=0)
+
+
+def test_conditioning_is_reported():
+    (s,) = example_snapshots(1, [30.0])
+    assert 1 <= s.condition < 1e4 and s.error_bound < 1e-8
+
+
+def test_mechanism_needs_as_many_equations_as_coordinates():
+    crank = Body("crank", points={"A": (1, 0)})
+    with pytest.raises(ValueError, match="constraint equations"):
+        Mechanism([crank], [Revolute("O", crank, (0, 0), None, (0, 0))])
+
+
+def test_forces_require_a_force_analysis():
+    (s,) = example_snapshots(1, [30.0])
+    with pytest.raises(ValueError, match="forces were not computed"):
+        s.reaction("Ao", "crank")
+
+
+def test_drive_values_enter_velocity_and_acceleration():
+    model = slider_crank_model(3.0, 8.0, 2.0)
+    q = model.newton(model.coordinates({"crank": (0, 0, 50), "rod": (1.9, 2.3, 0)}),
+                     Drive(math.radians(50), 0, 0))
+    still = model.snapshot(q, Drive(math.radians(50), 0.0, 0.0))
+    assert all(v == 0 for v in still.qd) and all(a == 0 for a in still.qdd)
+    moving = model.snapshot(q, Drive(math.radians(50), 2.0, 0.0))
+    assert moving.omega("crank") == pytest.approx(2.0)
+    assert polar(2, 90).xy(still.ar)[1] == pytest.approx(2.0)
