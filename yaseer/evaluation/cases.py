@@ -70,7 +70,7 @@ def _data_lines(angles, first_line: int = 1000) -> list[str]:
 
 def _loop_listing(angles, body: str, printed: str) -> str:
     """A calling listing: READ each crank angle Q from DATA, run ``body``, PRINT ``printed``."""
-    lines = [DIM_LINE, f"10 FOR K = 1 TO {len(angles)}: READ Q", f"20 {body}", f"30 PRINT {printed}: NEXT K: END"]
+    lines = [DIM_LINE, f"10 FOR K = 1 TO {len(angles)}: READ Q", f"20 {body}", f"30 PRINT Q; {printed}: NEXT K: END"]
     return "\n".join(lines + _data_lines(angles)) + "\n"
 
 
@@ -227,11 +227,11 @@ def _paper_reference(number):
 
 
 def _paper_listing(number):
-    """The example's listing with its FOR loop stepping through ``angles`` (an even grid)."""
+    """The example's corrected listing with its FOR loop stepping as ``angles`` do."""
     def listing(angles):
         from .listings import paper_listing_over
 
-        return paper_listing_over(number, angles)
+        return paper_listing_over(number, round(abs(float(angles[1] - angles[0])), 6))
     return listing
 
 
@@ -250,24 +250,25 @@ def _paper_case(number, linkage, compute, angle_columns, dense, quick):
                 None if compute is None else _options_for(linkage, compute), _paper_listing(number))
 
 
-def _grid(start, stop, step):
-    count = int(round((stop - start) / step)) + 1
-    return start + step * np.arange(count)
+def _grids(number, dense_step=5.0):
+    """(dense, quick) crank angles of Example ``number``: its FOR loop at STEP 5 and as printed."""
+    from .listings import example_loop, for_loop_angles
+
+    start, stop, step = example_loop(number)
+    return for_loop_angles(start, stop, math.copysign(dense_step, step)), for_loop_angles(start, stop, step)
 
 
 def paper_cases() -> list[Case]:
     """The paper's five mechanisms; Examples 2 and 5 (forces) only through their listings."""
-    up = _grid(0.1, 360.1, 5.0)
-    down = _grid(360.1, 0.1, -5.0)
     return [
-        _paper_case(1, "slider_crank", _example1, (), up, _grid(0.1, 360.1, 15.0)),
-        _paper_case(1, "virtual_link", _example1, (), up, _grid(0.1, 360.1, 15.0)),
-        _paper_case(2, "slider_crank", None, (), down, _grid(360.1, 0.1, -20.0)),
-        _paper_case(3, "slider_crank", _example3, ("T(9)",), up, _grid(0.1, 360.1, 20.0)),
-        _paper_case(3, "virtual_link", _example3, ("T(9)",), up, _grid(0.1, 360.1, 20.0)),
-        _paper_case(4, "fourbar", _example4, (), up, _grid(0.1, 360.1, 20.0)),
-        _paper_case(4, "virtual_link", _example4, (), up, _grid(0.1, 360.1, 20.0)),
-        _paper_case(5, "fourbar", None, (), down, _grid(360.1, 0.1, -20.0)),
+        _paper_case(1, "slider_crank", _example1, (), *_grids(1)),
+        _paper_case(1, "virtual_link", _example1, (), *_grids(1)),
+        _paper_case(2, "slider_crank", None, (), *_grids(2)),
+        _paper_case(3, "slider_crank", _example3, ("T(9)",), *_grids(3)),
+        _paper_case(3, "virtual_link", _example3, ("T(9)",), *_grids(3)),
+        _paper_case(4, "fourbar", _example4, (), *_grids(4)),
+        _paper_case(4, "virtual_link", _example4, (), *_grids(4)),
+        _paper_case(5, "fourbar", None, (), *_grids(5)),
     ]
 
 
