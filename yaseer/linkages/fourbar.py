@@ -41,6 +41,7 @@ from yaseer.linkages.planar import (
     solve_two_directions,
     still,
     unit,
+    unit_degrees,
 )
 
 UNCROSSED = 1
@@ -176,8 +177,9 @@ def fourbar_closed(
     length = Stretch(*(np.asarray(v, dtype=float) for v in (crank_length, crank_length_rate, crank_length_accel)))
     crank = Rotation(np.radians(np.asarray(crank_angle_deg, dtype=float)), np.asarray(omega, float), np.asarray(alpha, float))
     moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
-    pin_a = crank_pin(length, crank) if moving else still(crank_pin(length, crank))
-    pivot = fixed_point(np.asarray(ground_length, dtype=float) * unit(np.radians(ground_angle_deg)))
+    pin_a = crank_pin(length, crank, unit_degrees(crank_angle_deg))
+    pin_a = pin_a if moving else still(pin_a)
+    pivot = fixed_point(np.asarray(ground_length, dtype=float) * unit_degrees(ground_angle_deg))
     if np.any(b <= 0) or np.any(c <= 0):
         raise AssemblyError("coupler or follower of zero length")
     diagonal = pivot.pos - pin_a.pos
@@ -197,11 +199,22 @@ def fourbar_closed(
         zero = np.zeros_like(span)
         return FourBar(crank, length, Rotation(coupler_angle, zero, zero), Rotation(follower_angle, zero, zero),
                        pin_a, still(Motion(b_pos, b_pos, b_pos)), pivot, False)
-    # B = A + coupler = Bo - follower_vec:  w3 i coupler + w4 i follower_vec = -A'
+    (w3, a3), (w4, a4), b_motion = loop_rates(pin_a, coupler_vec, follower_vec)
+    return FourBar(crank, length, Rotation(coupler_angle, w3, a3), Rotation(follower_angle, w4, a4),
+                   pin_a, b_motion, pivot, True)
+
+
+def loop_rates(pin_a: Motion, coupler_vec, follower_vec) -> tuple[tuple, tuple, Motion]:
+    """((coupler omega, alpha), (follower omega, alpha), motion of B) of the loop
+    B = A + coupler_vec = Bo - follower_vec (follower_vec is B->Bo), positions known.
+
+    Differentiating: w3 i coupler + w4 i follower = -A' and
+    a3 i coupler + a4 i follower = -A'' + w3**2 coupler + w4**2 follower
+    (LockedError where coupler and follower are in line).  Shared by every four-bar method.
+    """
     w3, w4 = solve_two_directions(-pin_a.vel, 1j * coupler_vec, 1j * follower_vec)
     rhs = -pin_a.acc + w3**2 * coupler_vec + w4**2 * follower_vec
     a3, a4 = solve_two_directions(rhs, 1j * coupler_vec, 1j * follower_vec)
-    b_vel = pin_a.vel + 1j * w3 * coupler_vec
-    b_acc = pin_a.acc + (1j * a3 - w3**2) * coupler_vec
-    return FourBar(crank, length, Rotation(coupler_angle, w3, a3), Rotation(follower_angle, w4, a4),
-                   pin_a, Motion(b_pos, b_vel, b_acc), pivot, True)
+    b_motion = Motion(pin_a.pos + coupler_vec, pin_a.vel + 1j * w3 * coupler_vec,
+                      pin_a.acc + (1j * a3 - w3**2) * coupler_vec)
+    return (w3, a3), (w4, a4), b_motion

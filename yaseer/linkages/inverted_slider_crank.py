@@ -37,6 +37,7 @@ from yaseer.linkages.planar import (
     solve_two_directions,
     still,
     unit,
+    unit_degrees,
 )
 
 # Loads of Program 3: crank_torque [U(3)], follower_perpendicular [F(18)].
@@ -140,8 +141,9 @@ def inverted_slider_crank_closed(
     length = Stretch(*(np.asarray(v, dtype=float) for v in (crank_length, crank_length_rate, crank_length_accel)))
     crank = Rotation(np.radians(np.asarray(crank_angle_deg, dtype=float)), np.asarray(omega, float), np.asarray(alpha, float))
     moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
-    pin_a = crank_pin(length, crank) if moving else still(crank_pin(length, crank))
-    pivot = fixed_point(-np.asarray(ground_length, dtype=float) * unit(np.radians(ground_angle_deg)))
+    pin_a = crank_pin(length, crank, unit_degrees(crank_angle_deg))
+    pin_a = pin_a if moving else still(pin_a)
+    pivot = fixed_point(-np.asarray(ground_length, dtype=float) * unit_degrees(ground_angle_deg))
     radius = pin_a.pos - pivot.pos
     l5 = np.abs(radius)
     if np.any(l5 == 0):

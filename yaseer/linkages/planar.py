@@ -21,6 +21,18 @@ def unit(angle: np.ndarray | float) -> np.ndarray:
     return np.exp(1j * np.asarray(angle, dtype=float))
 
 
+def unit_degrees(angle_deg: np.ndarray | float) -> np.ndarray:
+    """The unit vector u(angle) for an angle in degrees, exact at multiples of 90
+    (cos 90 = 0, as a pocket computer in degree mode gives it), so dead centres and
+    vertical axes given as 90, 180, 270 are exact."""
+    angle = np.asarray(angle_deg, dtype=float)
+    turn = np.mod(angle, 360.0)
+    vector = np.exp(1j * np.radians(angle))
+    cos = np.select([turn == 90.0, turn == 270.0, turn == 0.0, turn == 180.0], [0.0, 0.0, 1.0, -1.0], vector.real)
+    sin = np.select([turn == 0.0, turn == 180.0, turn == 90.0, turn == 270.0], [0.0, 0.0, 1.0, -1.0], vector.imag)
+    return cos + 1j * sin
+
+
 def cross(p: np.ndarray, q: np.ndarray) -> np.ndarray:
     """The z component of p x q (positive when q is counter-clockwise of p)."""
     return p.real * q.imag - p.imag * q.real
@@ -46,6 +58,10 @@ def any_nonzero(*values) -> bool:
     return any(np.any(np.asarray(value) != 0) for value in values)
 
 
+# |sin| of the angle between two directions below which they count as parallel.
+PARALLEL_TOLERANCE = 1e-12
+
+
 def solve_two_directions(rhs: np.ndarray, first: np.ndarray, second: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Real x1, x2 with ``x1*first + x2*second == rhs`` (all complex vectors).
 
@@ -53,7 +69,7 @@ def solve_two_directions(rhs: np.ndarray, first: np.ndarray, second: np.ndarray)
     loop has no unique rate there (a toggle or branch point).
     """
     determinant = cross(first, second)
-    if np.any(determinant == 0):
+    if np.any(np.abs(determinant) <= PARALLEL_TOLERANCE * np.abs(first) * np.abs(second)):
         raise LockedError("the velocity directions are parallel (toggle or branch point)")
     return cross(rhs, second) / determinant, cross(first, rhs) / determinant
 
@@ -110,14 +126,15 @@ def rigid_point(origin: Motion, link: Rotation, distance, offset_deg) -> Motion:
     return Motion(pos, vel, acc)
 
 
-def crank_pin(length: Stretch, crank: Rotation) -> Motion:
+def crank_pin(length: Stretch, crank: Rotation, direction: np.ndarray | None = None) -> Motion:
     """The pin at the end of a flexible crank pivoted at the origin.
 
     pos = a u, vel = (a' + i a w) u, acc = (a'' - a w**2 + i (a alpha + 2 a' w)) u,
-    u = u(crank angle): the pin slides along the turning crank.
+    u = u(crank angle) (or ``direction``, the same vector computed exactly in
+    degrees): the pin slides along the turning crank.
     """
     a, a_dot, a_ddot = length
-    u = unit(crank.angle)
+    u = unit(crank.angle) if direction is None else direction
     pos = a * u
     vel = (a_dot + 1j * a * crank.omega) * u
     acc = (a_ddot - a * crank.omega**2 + 1j * (a * crank.alpha + 2 * a_dot * crank.omega)) * u

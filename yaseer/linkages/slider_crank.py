@@ -40,6 +40,7 @@ from yaseer.linkages.planar import (
     solve_two_directions,
     still,
     unit,
+    unit_degrees,
 )
 
 # Loads of Program 1, by name (contract element in brackets):
@@ -164,9 +165,10 @@ def slider_crank_closed(
     length = Stretch(*(np.asarray(v, dtype=float) for v in (crank_length, crank_length_rate, crank_length_accel)))
     crank = Rotation(np.radians(np.asarray(crank_angle_deg, dtype=float)), np.asarray(omega, float), np.asarray(alpha, float))
     moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
-    pin_a = crank_pin(length, crank) if moving else still(crank_pin(length, crank))
+    pin_a = crank_pin(length, crank, unit_degrees(crank_angle_deg))
+    pin_a = pin_a if moving else still(pin_a)
     phi = np.radians(np.asarray(axis_deg, dtype=float))
-    n = unit(phi)
+    n = unit_degrees(axis_deg)
     if np.any(b <= 0):
         raise AssemblyError("connecting rod of zero length")
     across = -(e + dot(pin_a.pos, 1j * n))  # component of A->B along u(phi + 90)
@@ -181,9 +183,21 @@ def slider_crank_closed(
         zero = np.zeros_like(s)
         return SliderCrank(crank, length, Rotation(rod_angle, zero, zero), pin_a, still(Motion(b_pos, b_pos, b_pos)),
                            Stretch(s, zero, zero), phi, False)
-    rod_dir = b * unit(rod_angle)
-    s_dot, rod_omega = solve_two_directions(pin_a.vel, n, -1j * rod_dir)
-    s_ddot, rod_alpha = solve_two_directions(pin_a.acc - rod_omega**2 * rod_dir, n, -1j * rod_dir)
+    rod_vec = b_pos - pin_a.pos
+    rod, travel_rates = slider_rates(pin_a, rod_vec, n)
+    s_dot, s_ddot = travel_rates
     pin_b = Motion(b_pos, s_dot * n, s_ddot * n)
-    return SliderCrank(crank, length, Rotation(rod_angle, rod_omega, rod_alpha), pin_a, pin_b,
-                       Stretch(s, s_dot, s_ddot), phi, True)
+    return SliderCrank(crank, length, Rotation(rod_angle, *rod), pin_a, pin_b, Stretch(s, s_dot, s_ddot), phi, True)
+
+
+def slider_rates(pin_a: Motion, rod_vec, axis_direction) -> tuple[tuple, tuple]:
+    """((rod omega, rod alpha), (s', s'')) of A + rod_vec = B = -e i n + s n, positions known.
+
+    Differentiating: s' n - beta' (i rod) = A' and
+    s'' n - beta'' (i rod) = A'' - beta'**2 rod, each solved as one 2x2 system
+    (LockedError where the rod is perpendicular to the axis).  Shared by every
+    slider-crank method.
+    """
+    s_dot, omega = solve_two_directions(pin_a.vel, axis_direction, -1j * rod_vec)
+    s_ddot, alpha = solve_two_directions(pin_a.acc - omega**2 * rod_vec, axis_direction, -1j * rod_vec)
+    return (omega, alpha), (s_dot, s_ddot)
