@@ -22,7 +22,7 @@ acceleration loop gives b w3^2 + s c w4^2 = A''.n, which with the one velocity
 equation left is a quadratic with two roots, one per assembly passing through
 (:func:`collinear_rates`); the tracked motion takes the root that continues the
 incoming motion.  The accelerations there are the two-sided limit along the
-tracked motion (regular formula at theta -/+ 1e-6 rad, averaged).  Where the crank
+tracked motion (regular formula at theta -/+ 1e-4 rad, averaged; error of order 1e-8).  Where the crank
 pin's velocity has a component along the line (a toggle driven by the crank) no
 velocity satisfies the loop and the position is locked (``LockedError``).
 
@@ -42,7 +42,7 @@ from yaseer.linkages.fourbar import CROSSED, UNCROSSED, FourBar, fourbar_closed
 from yaseer.linkages.planar import Motion, Rotation, Stretch, crank_pin, fixed_point, unit
 
 COINCIDENT = 1e-7     # assemblies closer than this (times b + c) are one point
-LIMIT_STEP = 1e-6     # radians either side of a singular point for the limits
+LIMIT_STEP = 1e-4     # radians either side of a singular point for the limits (error ~ step**2)
 
 
 @dataclass(frozen=True)
@@ -92,6 +92,7 @@ class _History:
     """The last tracked positions: (crank angle deg, B, side, singular)."""
 
     points: list = field(default_factory=list)
+    last_direction: float = 0.0
 
     def add(self, theta: float, pos: complex, side: int, singular: bool) -> None:
         self.points = (self.points + [(theta, pos, side, singular)])[-2:]
@@ -207,6 +208,24 @@ def _singular_point(geometry: Geometry, theta: float, omega: float, alpha: float
                    pin_a, Motion(pos_b, vel_b, acc_b), fixed_point(base.pivot.pos), True)
 
 
+def _advance(history: _History, geometry: Geometry, theta: float, up: complex, down: complex,
+             start_branch: int) -> tuple[int, bool, BranchSwitch | None]:
+    """Choose the side at the next position, record it, and return (side, singular, switch)."""
+    side, singular = _choose(history, theta, up, down, start_branch, geometry.scale)
+    switch = None
+    if history.points and side != history.points[-1][2]:
+        kind = "toggle" if history.turned_back(theta) else "change point"
+        switch = BranchSwitch(theta, history.points[-1][2], side, kind)
+    direction = history.direction(theta)
+    history.add(theta, up if side == UNCROSSED else down, side, singular)
+    history.last_direction = direction
+    return side, singular, switch
+
+
+def _is_moving(*values) -> bool:
+    return any(np.any(np.asarray(v) != 0) for v in values)
+
+
 class BranchTracker:
     """Tracks one four-bar call by call (what Program 2 needs for ``L(10) = -1``).
 
@@ -230,20 +249,13 @@ class BranchTracker:
             self.geometry, self.history = geometry, _History()
         theta = float(theta_deg)
         up, down = (complex(geometry.positions(theta, side)) for side in (UNCROSSED, CROSSED))
-        side, singular = _choose(self.history, theta, up, down, self.start_branch, geometry.scale)
-        switch = None
-        if self.history.points and side != self.history.points[-1][2]:
-            kind = "toggle" if self.history.turned_back(theta) else "change point"
-            switch = BranchSwitch(theta, self.history.points[-1][2], side, kind)
+        side, singular, switch = _advance(self.history, geometry, theta, up, down, self.start_branch)
+        if switch:
             self.switches.append(switch)
-        moving = any(np.any(np.asarray(v) != 0) for v in (omega, alpha, *rates.values()))
-        if singular and moving:
-            direction = self.history.direction(theta) or math.copysign(1.0, omega or 1.0)
-            result = _singular_point(geometry, theta, omega, alpha, side, direction, rates)
-        else:
-            result = _point(geometry, theta, omega, alpha, side, rates)
-        self.history.add(theta, up if side == UNCROSSED else down, side, singular)
-        return result, switch
+        if singular and _is_moving(omega, alpha, *rates.values()):
+            direction = self.history.last_direction or math.copysign(1.0, omega or 1.0)
+            return _singular_point(geometry, theta, omega, alpha, side, direction, rates), switch
+        return _point(geometry, theta, omega, alpha, side, rates), switch
 
 
 def track(geometry: Geometry, crank_angles_deg, omega=0.0, alpha=0.0, *, start_branch: int = UNCROSSED,
@@ -255,34 +267,54 @@ def track(geometry: Geometry, crank_angles_deg, omega=0.0, alpha=0.0, *, start_b
     does not close, LockedError at a toggle the crank drives into.
     """
     thetas = np.atleast_1d(np.asarray(crank_angles_deg, dtype=float))
-    omegas = np.broadcast_to(np.asarray(omega, float), thetas.shape)
-    alphas = np.broadcast_to(np.asarray(alpha, float), thetas.shape)
-    extra = {k: np.broadcast_to(np.asarray(v, float), thetas.shape) for k, v in rates.items()}
-    tracker = BranchTracker(start_branch)
-    results = []
-    singular = np.zeros(thetas.shape, bool)
+    every = {"omega": omega, "alpha": alpha, **rates}
+    every = {k: np.broadcast_to(np.asarray(v, float), thetas.shape) for k, v in every.items()}
+    ups, downs = geometry.positions(thetas, UNCROSSED), geometry.positions(thetas, CROSSED)
+    history, switches = _History(), []
     branch = np.zeros(thetas.shape, int)
+    singular = np.zeros(thetas.shape, bool)
+    directions = np.zeros(thetas.shape)
     for k, theta in enumerate(thetas):
-        result, _ = tracker.step(geometry, theta, omegas[k], alphas[k], **{n: v[k] for n, v in extra.items()})
-        _, _, branch[k], singular[k] = tracker.history.points[-1]
-        results.append(result)
-    return Tracked(_stack(results), branch, singular, tracker.switches)
+        branch[k], singular[k], switch = _advance(history, geometry, float(theta), complex(ups[k]),
+                                                  complex(downs[k]), start_branch)
+        directions[k] = history.last_direction
+        if switch:
+            switches.append(switch)
+    regular = np.flatnonzero(~singular)
+    pieces = [(regular, fourbar_closed(*geometry.astuple(), thetas[regular], every["omega"][regular],
+                                       every["alpha"][regular], branch=branch[regular],
+                                       **{k: v[regular] for k, v in every.items() if k not in ("omega", "alpha")}))]
+    moving = _is_moving(*every.values())
+    for k in np.flatnonzero(singular):
+        values = {name: float(v[k]) for name, v in every.items()}
+        omega_k, alpha_k = values.pop("omega"), values.pop("alpha")
+        if moving:
+            direction = directions[k] or math.copysign(1.0, omega_k or 1.0)
+            point = _singular_point(geometry, thetas[k], omega_k, alpha_k, int(branch[k]), direction, values)
+        else:
+            point = _point(geometry, thetas[k], omega_k, alpha_k, int(branch[k]), values)
+        pieces.append((np.array([k]), point))
+    return Tracked(_merge(len(thetas), pieces, moving), branch, singular, switches)
 
 
-def _stack(results: list[FourBar]) -> FourBar:
-    """Many scalar FourBar results as one of arrays."""
-    def stack_tuple(kind, getter):
-        return kind(*(np.array([np.asarray(part) for part in parts]) for parts in zip(*(getter(r) for r in results))))
+def _merge(n: int, pieces: list[tuple[np.ndarray, FourBar]], moving: bool) -> FourBar:
+    """One FourBar of length-n arrays from results at the given indices."""
+    def merged(kind, getter):
+        parts = []
+        for component in range(len(kind._fields)):
+            values = [(index, getter(result)[component]) for index, result in pieces if len(index)]
+            dtype = np.result_type(*(np.asarray(v) for _, v in values))
+            out = np.zeros(n, dtype=dtype)
+            for index, value in values:
+                out[index] = np.broadcast_to(value, index.shape)
+            parts.append(out)
+        return kind(*parts)
 
     return FourBar(
-        stack_tuple(Rotation, lambda r: r.crank),
-        stack_tuple(Stretch, lambda r: r.crank_length),
-        stack_tuple(Rotation, lambda r: r.coupler),
-        stack_tuple(Rotation, lambda r: r.follower),
-        stack_tuple(Motion, lambda r: r.pin_a),
-        stack_tuple(Motion, lambda r: r.pin_b),
-        stack_tuple(Motion, lambda r: r.pivot),
-        any(r.moving for r in results),
+        merged(Rotation, lambda r: r.crank), merged(Stretch, lambda r: r.crank_length),
+        merged(Rotation, lambda r: r.coupler), merged(Rotation, lambda r: r.follower),
+        merged(Motion, lambda r: r.pin_a), merged(Motion, lambda r: r.pin_b),
+        merged(Motion, lambda r: r.pivot), moving,
     )
 
 
