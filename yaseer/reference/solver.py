@@ -459,9 +459,15 @@ class Mechanism:
     def _stack(self, kin, drive, term):
         return [value for c in self.constraints.values() for value in getattr(c, term)(kin, drive)]
 
-    def newton(self, q_guess, drive, ar=FLOAT, max_iterations=50):
-        """Positions: solve Phi(q) = 0 by Newton from ``q_guess``; returns q (list in ``ar``)."""
+    def newton(self, q_guess, drive, ar=FLOAT, max_iterations=50, tolerance=None):
+        """Positions: solve Phi(q) = 0 by Newton from ``q_guess``; returns q (list in ``ar``).
+
+        Stops when the correction is below ``tolerance`` (default: the
+        arithmetic's) relative to 1 + the largest coordinate.
+        """
+        tolerance = ar.tolerance if tolerance is None else tolerance
         q = [ar.num(v) for v in q_guess]
+        previous_size = None
         for _ in range(max_iterations):
             kin = _Kinematics(ar, q)
             residual = self._residuals(kin, drive)
@@ -473,8 +479,14 @@ class Mechanism:
                                      "singular Jacobian)") from exc
             q = [a + b for a, b in zip(q, step)]
             scale = 1 + max(abs(v) for v in q)
-            if max(abs(s) for s in step) <= ar.tolerance * scale:
+            size = max(abs(s) for s in step)
+            if size <= tolerance * scale:
                 return q
+            # At an ill-conditioned root the corrections stall at the roundoff floor
+            # (about condition number x unit roundoff): accept, check_conditioning judges.
+            if previous_size is not None and size >= previous_size / 2 and size <= tolerance ** 0.5 * scale:
+                return q
+            previous_size = size
         raise MechanismError(f"the mechanism cannot be assembled at crank angle "
                              f"{ar.to_float(ar.degrees(drive.angle)):.12g} deg (Newton did not "
                              "converge), or the position is singular (toggle, change point)")
@@ -656,14 +668,19 @@ class Mechanism:
         results = []
         q_float, previous = None, None
         if home_deg is not None:
-            q_float = self._continue(q_guess, None, float(home_deg), first=True, max_step_deg=max_step_deg)
+            q_float = self._continue(q_guess, None, float(home_deg), first=True,
+                                     max_step_deg=max_step_deg)
             previous = float(home_deg)
+        # A float stage that only guesses for mpmath stops early: near a singular
+        # position float Newton cannot reach 1e-13, the mpmath polish can.
+        loose = None if ar is FLOAT else 1e-9
         for angle in angles:
             q_float = self._continue(q_float if q_float is not None else q_guess,
                                      previous, float(angle), first=q_float is None,
-                                     max_step_deg=max_step_deg)
+                                     max_step_deg=max_step_deg, tolerance=loose)
             previous = float(angle)
-            q = q_float if ar is FLOAT else self.newton(q_float, self._drive(ar, angle, 0, 0), ar)
+            q = q_float if ar is FLOAT else self.newton(q_float, self._drive(ar, angle, 0, 0), ar,
+                                                        max_iterations=200)
             drive = self._drive(ar, angle, rate, acceleration)
             condition, bound = self.check_conditioning(q, drive, ar, accuracy)
             snap = self.snapshot(q, drive, ar, rates=rates, forces=forces)
@@ -677,10 +694,11 @@ class Mechanism:
     def _drive(ar, angle_deg, rate, acceleration):
         return Drive(ar.radians(ar.num(angle_deg)), ar.num(rate), ar.num(acceleration))
 
-    def _continue(self, q, from_deg, to_deg, *, first, max_step_deg):
+    def _continue(self, q, from_deg, to_deg, *, first, max_step_deg, tolerance=None):
         """Float positions: Newton at ``to_deg`` from ``q`` (at ``from_deg``), stepping along the tangent."""
         if first:
-            return self.newton(q, self._drive(FLOAT, to_deg, 0, 0))
+            return self.newton(q, self._drive(FLOAT, to_deg, 0, 0), tolerance=tolerance,
+                               max_iterations=100)
         span = to_deg - from_deg
         steps = max(1, int(abs(span) // max_step_deg) + (abs(span) % max_step_deg > 0))
         for k in range(1, steps + 1):
@@ -689,7 +707,7 @@ class Mechanism:
             slope = self.tangent(q)
             step = FLOAT.radians(there - here)
             predicted = [v + s * step for v, s in zip(q, slope)]
-            q = self.newton(predicted, self._drive(FLOAT, there, 0, 0))
+            q = self.newton(predicted, self._drive(FLOAT, there, 0, 0), tolerance=tolerance)
         return q
 
 
