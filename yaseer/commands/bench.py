@@ -1,0 +1,55 @@
+"""``yaseer bench``: time per position against worst error for every method and way of running.
+
+Writes to ``--out`` (default ``bench-out``): ``bench.csv`` (every case x method x
+way), ``bench_summary.csv`` (per method and way), ``bench_newton.csv`` (Newton
+over its tolerances), ``bench_laziness.csv`` and the chart ``bench.png`` /
+``bench.svg``; prints the summary and the laziness table.  See docs/bench.md.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+
+def add_arguments(parser) -> None:
+    parser.add_argument("--out", default="bench-out", help="folder for the CSV files and the chart (created)")
+    parser.add_argument("--quick", action="store_true", help="the listings' own coarse grids, one repeat")
+    parser.add_argument("--no-listing", action="store_true", help="skip the interpreter way")
+    parser.add_argument("--no-chart", action="store_true", help="write the CSV files only")
+
+
+def main(args) -> int:
+    from yaseer.evaluation import benchmark as bench
+
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    ways = tuple(w for w in bench.WAYS if not (args.no_listing and w == "listing"))
+    repeat = 1 if args.quick else 3
+    if "listing" in ways and not bench.interpreter_available():
+        print("note: the interpreter (yaseer run) is not available; the listing way is skipped", file=sys.stderr)
+    rows = bench.bench_rows(quick=args.quick, ways=ways, repeat=repeat)
+    newton = bench.newton_rows(quick=args.quick, repeat=repeat)
+    summary = bench.aggregate(rows)
+    newton_curve = bench.newton_summary(newton)
+    laziness = bench.laziness_rows(positions=361 if args.quick else 3601, repeat=repeat)
+    bench.write_csv(out / "bench.csv", rows + newton, bench.FIELDS)
+    bench.write_csv(out / "bench_summary.csv", summary, list(summary[0]))
+    bench.write_csv(out / "bench_newton.csv", newton_curve, list(newton_curve[0]))
+    bench.write_csv(out / "bench_laziness.csv", laziness, list(laziness[0]))
+    print(bench.format_table(summary))
+    print()
+    print("Newton over its tolerance (array way; median time, worst error over the cases):")
+    for n in sorted(newton_curve, key=lambda n: (n["linkage"], -n["tol"])):
+        print(f"  {n['linkage']:<13} tol={n['tol']:<7g} {n['seconds_per_position'] * 1e6:9.3f} us  "
+              f"worst error {n['worst_error']:.3g}  failures {n['failures']}")
+    print()
+    print("Laziness (default programs; ratio to positions only, array way):")
+    for r in laziness:
+        print(f"  {r['linkage']:<13} {r['level']:<32} {r['way']:<13} {r['seconds_per_position'] * 1e6:10.3f} us"
+              f"  x{r['ratio_to_positions_array']:.1f}")
+    if not args.no_chart:
+        for path in bench.draw_chart(summary, newton_curve, out / "bench"):
+            print(f"wrote {path}")
+    print(f"wrote {out / 'bench.csv'}")
+    return 0
