@@ -1,0 +1,947 @@
+"""AST -> Python: one program area becomes a set of Python functions, one per block.
+
+A *block* is a run of statements that is entered only at its top: it starts at
+a line some jump names (GOTO, GOSUB, THEN n, ON ... GOTO, RESUME n), at the
+statement after a GOSUB or STOP (the return point), at the body of a FOR loop
+that must be run through the FOR stack, or - in a program that uses RESUME or
+RESUME NEXT - at every statement.  Each block is generated as Python source:
+
+* scalars live in Python locals for the block's duration (loaded from the
+  machine's scalar dict on entry, stored back in a ``finally``, and around every
+  call out of the block: ``GOSUB PROG n``, ``FN``, ``CLEAR``);
+* a FOR ... NEXT with no jump into or out of its body becomes a native
+  ``while`` loop; a block that jumps back to its own start becomes
+  ``while True`` with ``continue``;
+* a block returns the number of the next block to run; the machine's run loop
+  is ``while True: b = blocks[b]()``.
+
+The variable ``_ln`` tracks the BASIC line for error messages.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from yaseer.basic import syntax_tree as ast
+from yaseer.basic.errors import (
+    BasicError, FOR_WITHOUT_NEXT, SYNTAX_ERROR, TYPE_MISMATCH, UNDEFINED_LINE,
+)
+
+_PY_RELATIONS = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
+
+# name -> (argument types, result type, Python callable name in the namespace)
+_FUNCTIONS = {
+    "SIN": ("n", "n", "_sin"), "COS": ("n", "n", "_cos"), "TAN": ("n", "n", "_tan"),
+    "ATN": ("n", "n", "_atn"), "SQR": ("n", "n", "_sqrt"), "ABS": ("n", "n", "abs"),
+    "INT": ("n", "n", "_floor"), "FIX": ("n", "n", "_fix"), "SGN": ("n", "n", "_sgn"),
+    "EXP": ("n", "n", "_exp"), "LOG": ("n", "n", "_log"), "RND": ("n", "n", "_rnd"),
+    "LEN": ("s", "n", "_len"), "STR$": ("n", "s", "_strs"), "VAL": ("s", "n", "_val"),
+    "CHR$": ("n", "s", "_chr"), "ASC": ("s", "n", "_asc"),
+    "LEFT$": ("sn", "s", "_left"), "RIGHT$": ("sn", "s", "_right"), "MID$": ("sn", "s", "_mid"),
+}
+_OPTIONAL_LAST_ARGUMENT = {"RND": "n", "MID$": "n"}
+
+
+class CompileError(BasicError):
+    """A statement that cannot be compiled; it becomes a run-time error of its line."""
+
+
+def _syntax_error() -> CompileError:
+    return CompileError("Syntax error", SYNTAX_ERROR)
+
+
+def _type_mismatch() -> CompileError:
+    return CompileError("Type mismatch", TYPE_MISMATCH)
+
+
+def local_name(name: str) -> str:
+    """The Python local for scalar ``name``: ``n_QQ`` for QQ, ``s_A`` for A$."""
+    return "s_" + name[:-1] if name.endswith("$") else "n_" + name
+
+
+def array_local(name: str) -> str:
+    return "b_" + name[:-1] if name.endswith("$") else "a_" + name
+
+
+# ------------------------------------------------------------------ the result
+
+
+@dataclass
+class CompiledArea:
+    """The compiled form of one program area."""
+    source: str  # the generated Python module text
+    pieces: list  # [(first BASIC line or None, Python source of one function)]
+    block_count: int
+    line_blocks: dict  # BASIC line number -> block number of its first statement
+    block_next: dict  # block -> block of the statement after it (RESUME NEXT)
+    data: list  # [(item text, line number)]
+    data_lines: dict  # line number -> index of its first DATA item
+    scalars: set  # every scalar name the area uses
+    first_line: int | None = None
+    blocks: list = field(default_factory=list)  # filled by the machine after exec
+
+
+# ------------------------------------------------------------------ planning
+
+
+def _flatten(lines: list) -> list:
+    """[(line number, statement)] in program order; a line with no statement gets a Rem."""
+    flat = []
+    for line in lines:
+        if line.error is not None:
+            flat.append((line.number, line.error))
+            continue
+        statements = line.statements or [ast.Rem()]
+        for stmt in statements:
+            flat.append((line.number, stmt))
+    return flat
+
+
+def _jump_targets(stmt) -> list:
+    if isinstance(stmt, (ast.Goto, ast.Gosub)):
+        return [stmt.target]
+    if isinstance(stmt, ast.OnJump):
+        return list(stmt.targets)
+    if isinstance(stmt, ast.OnError):
+        return [stmt.target] if stmt.target else []
+    if isinstance(stmt, ast.Resume) and stmt.mode == "line":
+        return [stmt.target]
+    if isinstance(stmt, ast.If):
+        out = []
+        for branch in (stmt.then, stmt.otherwise):
+            if isinstance(branch, int):
+                out.append(branch)
+            elif branch:
+                for s in branch:
+                    out.extend(_jump_targets(s))
+        return out
+    return []
+
+
+def _walk(stmt):
+    """The statement and every statement nested in its IF branches."""
+    yield stmt
+    if isinstance(stmt, ast.If):
+        for branch in (stmt.then, stmt.otherwise):
+            if isinstance(branch, list):
+                for s in branch:
+                    yield from _walk(s)
+
+
+def _splits(stmt) -> bool:
+    """True when code after ``stmt`` must be enterable from outside (a return point)."""
+    for s in _walk(stmt):
+        if isinstance(s, (ast.Gosub, ast.Stop, ast.For)):
+            return True
+        if isinstance(s, ast.OnJump) and s.gosub:
+            return True
+    return False
+
+
+_NATIVE_BODY = (
+    ast.Let, ast.Print, ast.GosubProg, ast.Rem, ast.Data, ast.Read, ast.Dim, ast.Angle,
+    ast.Randomize, ast.DefFn, ast.Input, ast.Clear, ast.Restore, ast.End, ast.OnError,
+)
+
+
+def _native_statement(stmt) -> bool:
+    """May ``stmt`` sit inside a native loop (no jump, no return point, no NEXT)?"""
+    for s in _walk(stmt):
+        if isinstance(s, ast.If):
+            if isinstance(s.then, int) or isinstance(s.otherwise, int):
+                return False
+        elif not isinstance(s, _NATIVE_BODY):
+            return False
+    return True
+
+
+def _same_var(a, b) -> bool:
+    return a == b
+
+
+@dataclass
+class _Plan:
+    entries: list  # sorted statement indices that start blocks (last: len(flat))
+    native: dict  # FOR index -> matching NEXT index
+    for_next: dict  # dynamic FOR index -> matching NEXT index
+    next_for: dict  # NEXT index -> FOR index (static match, for NEXT without a name)
+    fine: bool
+
+
+def _match_loops(flat: list) -> tuple[dict, dict]:
+    """Match each top-level FOR to its NEXT by program order (as MS-BASIC scans)."""
+    for_next, next_for = {}, {}
+    open_loops: list[int] = []
+    for i, (_, stmt) in enumerate(flat):
+        if isinstance(stmt, ast.For):
+            open_loops.append(i)
+        elif isinstance(stmt, ast.Next):
+            if stmt.var is None:
+                if open_loops:
+                    f = open_loops.pop()
+                    for_next[f], next_for[i] = i, f
+                continue
+            # NEXT I closes inner loops left open, down to the FOR I.
+            for k in range(len(open_loops) - 1, -1, -1):
+                if _same_var(flat[open_loops[k]][1].var, stmt.var):
+                    f = open_loops[k]
+                    del open_loops[k:]
+                    for_next[f], next_for[i] = i, f
+                    break
+    return for_next, next_for
+
+
+def _plan(flat: list, entry_lines=()) -> _Plan:
+    n = len(flat)
+    statements = [s for _, s in flat]
+    fine = any(isinstance(s, ast.Resume) and s.mode != "line"
+               for stmt in statements if not isinstance(stmt, BasicError) for s in _walk(stmt))
+    first_index: dict[int, int] = {}
+    for i, (number, _) in enumerate(flat):
+        first_index.setdefault(number, i)
+    targets = {first_index[line] for line in entry_lines if line in first_index}
+    for _, stmt in flat:
+        if isinstance(stmt, BasicError):
+            continue
+        for line in _jump_targets(stmt):
+            if line in first_index:
+                targets.add(first_index[line])
+    for_next, next_for = _match_loops(flat)
+    native: dict[int, int] = {}
+    if not fine:
+        # innermost loops first, so a loop knows whether the loops inside it are native
+        for f in sorted(for_next, key=lambda k: for_next[k] - k):
+            j = for_next[f]
+            body_ok = True
+            k = f + 1
+            while k < j:
+                stmt = statements[k]
+                if isinstance(stmt, ast.For):
+                    if k not in native:
+                        body_ok = False
+                        break
+                    k = native[k] + 1
+                    continue
+                if isinstance(stmt, BasicError) or not _native_statement(stmt):
+                    body_ok = False
+                    break
+                k += 1
+            if body_ok and not any(f < t <= j for t in targets):
+                native[f] = j
+    entries = {0, n} | targets
+    for i, stmt in enumerate(statements):
+        if isinstance(stmt, BasicError):
+            continue
+        if fine:
+            entries.add(i)
+        if isinstance(stmt, ast.For) and i not in native:
+            entries.add(i + 1)
+            if i in for_next:
+                entries.add(for_next[i] + 1)
+        elif not isinstance(stmt, ast.For) and _splits(stmt):
+            entries.add(i + 1)
+    # dynamic loops' NEXTs are not consumed; natives' are
+    dynamic_for_next = {f: j for f, j in for_next.items() if f not in native}
+    return _Plan(sorted(entries), native, dynamic_for_next, next_for, fine)
+
+
+# ------------------------------------------------------------------ code generation
+
+
+class _Block:
+    def __init__(self, number: int):
+        self.number = number
+        self.code: list[tuple[int, str]] = []
+        self.scalars: dict[str, bool] = {}  # name -> assigned in this block
+        self.arrays: dict[str, int] = {}  # name -> number of dimensions
+        self.first_line = None
+
+
+class _BlockScope:
+    """Variable references inside a block: Python locals."""
+
+    def __init__(self, compiler: "AreaCompiler"):
+        self.compiler = compiler
+        self.uses_fn = False
+
+    def scalar(self, name: str, write: bool = False) -> str:
+        block = self.compiler.cur
+        self.compiler.scalars.add(name)
+        block.scalars[name] = block.scalars.get(name, False) or write
+        return local_name(name)
+
+    def array(self, name: str, ndim: int) -> str:
+        block = self.compiler.cur
+        block.arrays.setdefault(name, ndim)
+        return array_local(name)
+
+
+class _FnScope:
+    """Variable references inside a DEF FN body: parameters are locals, the rest global."""
+
+    def __init__(self, compiler: "AreaCompiler", params: list):
+        self.compiler = compiler
+        self.params = set(params)
+        self.uses_fn = False
+
+    def scalar(self, name: str, write: bool = False) -> str:
+        if name in self.params:
+            return "p_" + name.replace("$", "_s")
+        self.compiler.scalars.add(name)
+        return f"_S[{name!r}]"
+
+    def array(self, name: str, ndim: int) -> str:
+        return f"_arr({name!r}, {ndim})"
+
+
+def _is_relation(node) -> bool:
+    if isinstance(node, ast.Binary):
+        if node.op in _PY_RELATIONS:
+            return True
+        if node.op in ("AND", "OR"):
+            return _is_relation(node.left) and _is_relation(node.right)
+    if isinstance(node, ast.Unary) and node.op == "NOT":
+        return _is_relation(node.operand)
+    return False
+
+
+def _is_constant(node) -> bool:
+    return isinstance(node, ast.Num) or (isinstance(node, ast.Unary) and _is_constant(node.operand))
+
+
+def _may_overflow(node) -> bool:
+    """Could this numeric expression produce inf from finite values?"""
+    if isinstance(node, ast.Binary):
+        if node.op in ("*", "/"):
+            return True
+        if node.op in ("+", "-") and not (_is_constant(node.left) or _is_constant(node.right)):
+            return True
+        return _may_overflow(node.left) or _may_overflow(node.right)
+    if isinstance(node, ast.Unary):
+        return _may_overflow(node.operand)
+    if isinstance(node, ast.Call):
+        return any(_may_overflow(a) for a in node.args)
+    return isinstance(node, ast.FnCall)
+
+
+def _simple_operand(code: str) -> bool:
+    return code.replace("_", "a").replace("[", "").replace("]", "").isalnum()
+
+
+class AreaCompiler:
+    """Compiles the lines of one program area (see the module docstring)."""
+
+    def __init__(self, lines: list, area: int = 0, direct: bool = False, entry_lines=()):
+        self.area = area
+        self.direct = direct
+        self.flat = _flatten(lines)
+        self.plan = _plan(self.flat, entry_lines)
+        self.line_first = {}
+        for i, (number, _) in enumerate(self.flat):
+            self.line_first.setdefault(number, i)
+        self.entry_block = {idx: b for b, idx in enumerate(self.plan.entries)}
+        self.blocks: list[_Block] = [_Block(b) for b in range(len(self.plan.entries))]
+        self.block_next: dict[int, int] = {}
+        self.prelude: list[str] = []
+        self.scalars: set[str] = set()
+        self.cur: _Block | None = None
+        self.indent = 0
+        self.depth = 0  # IF nesting
+        self.index = 0  # current top-level statement
+        self.line = None
+        self.temp = 0
+        self.fn_count = 0
+        self.data: list = []
+        self.data_lines: dict = {}
+        self.scope = _BlockScope(self)
+
+    # -- emission primitives
+    def emit(self, text: str) -> None:
+        self.cur.code.append((self.indent, text))
+
+    def new_temp(self) -> str:
+        self.temp += 1
+        return f"_t{self.temp}"
+
+    def new_block(self) -> _Block:
+        block = _Block(len(self.blocks))
+        self.blocks.append(block)
+        return block
+
+    def block_of_line(self, line: int) -> int | None:
+        index = self.line_first.get(line)
+        return None if index is None else self.entry_block[index]
+
+    def jump(self, line: int) -> str:
+        block = self.block_of_line(line)
+        if block is None:
+            if self.direct:
+                return f"raise _DirectJump({line})"
+            return f"raise _err('Undefined line number {line}', {UNDEFINED_LINE})"
+        return f"return {block}"
+
+    # -- expressions
+    def expr(self, node, scope) -> tuple[str, str]:
+        """(Python source, "n" or "s") for an expression node."""
+        method = getattr(self, "expr_" + type(node).__name__)
+        return method(node, scope)
+
+    def numeric(self, node, scope) -> str:
+        code, kind = self.expr(node, scope)
+        if kind != "n":
+            raise _type_mismatch()
+        return code
+
+    def string(self, node, scope) -> str:
+        code, kind = self.expr(node, scope)
+        if kind != "s":
+            raise _type_mismatch()
+        return code
+
+    def expr_Num(self, node, scope):
+        return repr(node.value), "n"
+
+    def expr_Str(self, node, scope):
+        return repr(node.value), "s"
+
+    def expr_Var(self, node, scope):
+        return scope.scalar(node.name), ast.expr_type(node)
+
+    def expr_Elem(self, node, scope):
+        return self.element(node, scope), ast.expr_type(node)
+
+    def element(self, node, scope) -> str:
+        code = scope.array(node.name, len(node.indices))
+        for index in node.indices:
+            if isinstance(index, ast.Num) and index.value >= 0 and index.value == int(index.value):
+                code += f"[{int(index.value)}]"
+            else:
+                code += f"[_ix({self.numeric(index, scope)})]"
+        return code
+
+    def expr_Unary(self, node, scope):
+        operand = self.numeric(node.operand, scope)
+        if node.op == "NOT":
+            return f"_not({operand})", "n"
+        return (f"(-{operand})" if node.op == "-" else operand), "n"
+
+    def expr_Binary(self, node, scope):
+        op = node.op
+        left, lkind = self.expr(node.left, scope)
+        right, rkind = self.expr(node.right, scope)
+        if op in _PY_RELATIONS:
+            if lkind != rkind:
+                raise _type_mismatch()
+            return f"(-1.0 if {left} {_PY_RELATIONS[op]} {right} else 0.0)", "n"
+        if op == "+" and lkind == "s" and rkind == "s":
+            return f"_cat({left}, {right})", "s"
+        if lkind != "n" or rkind != "n":
+            raise _type_mismatch()
+        if op in ("+", "-", "*", "/"):
+            return f"({left} {op} {right})", "n"
+        if op == "^":
+            if isinstance(node.right, ast.Num) and node.right.value == 2.0 and _simple_operand(left):
+                return f"({left} * {left})", "n"
+            return f"_pow({left}, {right})", "n"
+        helper = {"\\": "_idiv", "MOD": "_mod", "AND": "_and", "OR": "_or"}[op]
+        return f"{helper}({left}, {right})", "n"
+
+    def expr_Call(self, node, scope):
+        argtypes, result, helper = _FUNCTIONS[node.name]
+        args = list(node.args)
+        optional = _OPTIONAL_LAST_ARGUMENT.get(node.name)
+        expected = argtypes + (optional or "")
+        if not (len(argtypes) <= len(args) <= len(expected)):
+            if node.name == "RND" and not args:
+                return "_rnd(1.0)", "n"
+            raise _syntax_error()
+        codes = []
+        for arg, kind in zip(args, expected):
+            codes.append(self.string(arg, scope) if kind == "s" else self.numeric(arg, scope))
+        return f"{helper}({', '.join(codes)})", result
+
+    def expr_FnCall(self, node, scope):
+        scope.uses_fn = True
+        args = ", ".join(self.expr(a, scope)[0] for a in node.args)
+        return f"_fn({node.name!r}, {len(node.args)})({args})", ast.expr_type(node)
+
+    def expr_SysVar(self, node, scope):
+        return ("_M.err" if node.name == "ERR" else "_M.erl"), "n"
+
+    def condition(self, node, scope) -> str:
+        """A Python boolean expression for an IF condition."""
+        if isinstance(node, ast.Binary) and node.op in _PY_RELATIONS:
+            left, lkind = self.expr(node.left, scope)
+            right, rkind = self.expr(node.right, scope)
+            if lkind != rkind:
+                raise _type_mismatch()
+            return f"{left} {_PY_RELATIONS[node.op]} {right}"
+        if isinstance(node, ast.Binary) and node.op in ("AND", "OR") and _is_relation(node):
+            word = node.op.lower()
+            return f"({self.condition(node.left, scope)}) {word} ({self.condition(node.right, scope)})"
+        if isinstance(node, ast.Unary) and node.op == "NOT" and _is_relation(node.operand):
+            return f"not ({self.condition(node.operand, scope)})"
+        return f"{self.numeric(node, scope)} != 0.0"
+
+    # -- statements
+    def statement(self, stmt) -> None:
+        """Emit one statement; a compile error becomes a run-time raise of its line."""
+        if isinstance(stmt, BasicError):
+            self.emit(f"raise _err({stmt.message!r}, {stmt.code})")
+            return
+        mark = len(self.cur.code)
+        block = self.cur
+        scope = _BlockScope(self)
+        try:
+            getattr(self, "stmt_" + type(stmt).__name__)(stmt, scope)
+        except CompileError as err:
+            if self.cur is block:
+                del block.code[mark:]
+            self.emit(f"raise _err({err.message!r}, {err.code})")
+            return
+        if scope.uses_fn:
+            block.code.insert(mark, (self.indent, "#FLUSH#"))
+
+    def assign(self, target, value_code: str, value_kind: str, scope, check: bool) -> None:
+        if ast.expr_type(target) != value_kind:
+            raise _type_mismatch()
+        if isinstance(target, ast.Var):
+            name = scope.scalar(target.name, write=True)
+            self.emit(f"{name} = {value_code}")
+            if check:
+                self.emit(f"if {name} - {name}: _ovf()")
+            return
+        element = self.element(target, scope)
+        if check:
+            self.emit(f"_t = {value_code}")
+            self.emit("if _t - _t: _ovf()")
+            value_code = "_t"
+        self.emit(f"{element} = {value_code}")
+
+    def stmt_Let(self, stmt, scope):
+        code, kind = self.expr(stmt.value, scope)
+        self.assign(stmt.target, code, kind, scope, kind == "n" and _may_overflow(stmt.value))
+
+    def stmt_Rem(self, stmt, scope):
+        pass
+
+    def stmt_Data(self, stmt, scope):
+        pass
+
+    def print_items(self, items, scope) -> tuple[list, bool]:
+        parts = []
+        for item in items:
+            if item == ",":
+                parts.append("_COMMA")
+            elif item == ";":
+                continue
+            elif isinstance(item, ast.Tab):
+                parts.append(f"_Tab({self.numeric(item.column, scope)})")
+            elif isinstance(item, ast.Spc):
+                parts.append(f"_Spc({self.numeric(item.count, scope)})")
+            else:
+                parts.append(self.expr(item, scope)[0])
+        newline = not items or items[-1] not in (",", ";")
+        return parts, newline
+
+    def stmt_Print(self, stmt, scope):
+        device = 1 if stmt.printer else 0
+        parts, newline = self.print_items(stmt.items, scope)
+        values = "(" + "".join(p + ", " for p in parts) + ")"
+        if stmt.using is None:
+            self.emit(f"_pr({device}, {values}, {newline})")
+            return
+        fmt = self.string(stmt.using, scope)
+        if any(p in ("_COMMA",) or p.startswith(("_Tab(", "_Spc(")) for p in parts):
+            parts = [p for p in parts if p != "_COMMA"]
+            values = "(" + "".join(p + ", " for p in parts) + ")"
+        self.emit(f"_pru({device}, {fmt}, {values}, {newline})")
+
+    def stmt_Goto(self, stmt, scope):
+        self.emit(self.jump(stmt.target))
+
+    def continuation(self) -> int:
+        """The block where code after the current statement goes (a return point)."""
+        if self.depth == 0:
+            block = self.entry_block[self.index + 1]
+            self.cur = None
+            return block
+        block = self.new_block()
+        self.cur = block
+        self.indent = 1
+        self.emit(f"_ln = {self.line}")
+        return block.number
+
+    def stmt_Gosub(self, stmt, scope):
+        target = self.jump(stmt.target)
+        block, indent = self.cur, self.indent
+        ret = self.continuation()
+        block.code.append((indent, f"_gosub({ret})"))
+        block.code.append((indent, target))
+
+    def stmt_GosubProg(self, stmt, scope):
+        self.emit("#FLUSH#")
+        self.emit(f"_call({stmt.area})")
+        self.emit("#RELOAD#")
+
+    def stmt_Return(self, stmt, scope):
+        self.emit("return _return()")
+
+    def stmt_OnJump(self, stmt, scope):
+        selector = self.numeric(stmt.selector, scope)
+        k = self.new_temp()
+        self.emit(f"{k} = _on({selector}, {len(stmt.targets)})")
+        jumps = [self.jump(t) for t in stmt.targets]
+        if not stmt.gosub:
+            for n, jump in enumerate(jumps, 1):
+                self.emit(f"if {k} == {n}: {jump}")
+            return
+        block, indent = self.cur, self.indent
+        self.emit(f"if {k}:")
+        ret = self.continuation()
+        block.code.append((indent + 1, f"_gosub({ret})"))
+        for n, jump in enumerate(jumps, 1):
+            block.code.append((indent + 1, f"if {k} == {n}: {jump}"))
+        block.code.append((indent, f"return {ret}"))
+
+    def stmt_OnError(self, stmt, scope):
+        if stmt.target == 0:
+            self.emit("_M.on_error = None")
+            return
+        block = self.block_of_line(stmt.target)
+        if block is None:
+            self.emit(self.jump(stmt.target))
+            return
+        self.emit(f"_M.on_error = ({self.area}, {block})")
+
+    def stmt_End(self, stmt, scope):
+        self.emit("raise _END")
+
+    def stmt_Stop(self, stmt, scope):
+        block, indent = self.cur, self.indent
+        ret = self.continuation()
+        block.code.append((indent, f"_stop({ret})"))
+
+    def stmt_Dim(self, stmt, scope):
+        for name, sizes in stmt.arrays:
+            codes = ", ".join(self.numeric(s, scope) for s in sizes)
+            self.emit(f"_dim({name!r}, ({codes},))")
+            self.emit(f"#ARRAY#{name}")
+
+    def stmt_Clear(self, stmt, scope):
+        self.emit("_clear()")
+        self.emit("#RELOAD#")
+
+    def stmt_Read(self, stmt, scope):
+        for target in stmt.targets:
+            kind = ast.expr_type(target)
+            self.assign(target, "_read_s()" if kind == "s" else "_read_n()", kind, scope, False)
+
+    def stmt_Restore(self, stmt, scope):
+        if stmt.target is not None and stmt.target not in self.line_first:
+            self.emit(f"raise _err('Undefined line number {stmt.target}', {UNDEFINED_LINE})")
+            return
+        self.emit(f"_restore({stmt.target!r})")
+
+    def stmt_Input(self, stmt, scope):
+        kinds = "".join(ast.expr_type(t) for t in stmt.targets)
+        values = self.new_temp()
+        self.emit(f"{values} = _input({stmt.prompt!r}, {stmt.question_mark}, {kinds!r})")
+        for n, target in enumerate(stmt.targets):
+            self.assign(target, f"{values}[{n}]", kinds[n], scope, False)
+
+    def stmt_DefFn(self, stmt, scope):
+        fn_scope = _FnScope(self, stmt.params)
+        body, kind = self.expr(stmt.body, fn_scope)
+        if kind != ast.expr_type(ast.Var(stmt.name)):
+            raise _type_mismatch()
+        self.fn_count += 1
+        fname = f"_fn_{self.fn_count}"
+        params = ", ".join("p_" + p.replace("$", "_s") for p in stmt.params)
+        self.prelude.append(f"def {fname}({params}):\n    return {body}\n")
+        self.emit(f"_M.fns[{stmt.name!r}] = ({fname}, {len(stmt.params)})")
+
+    def stmt_Resume(self, stmt, scope):
+        if stmt.mode == "line":
+            block = self.block_of_line(stmt.target)
+            if block is None:
+                self.emit(self.jump(stmt.target))
+                return
+            self.emit(f"return _resume_at({block})")
+        else:
+            self.emit(f"return _resume({stmt.mode == 'next'})")
+
+    def stmt_Randomize(self, stmt, scope):
+        seed = "None" if stmt.seed is None else self.numeric(stmt.seed, scope)
+        self.emit(f"_randomize({seed})")
+
+    def stmt_Angle(self, stmt, scope):
+        self.emit(f"_M.set_angle({stmt.mode!r})")
+
+    def stmt_If(self, stmt, scope):
+        cond = self.condition(stmt.condition, scope)
+        branches = [b for b in (stmt.then, stmt.otherwise) if isinstance(b, list)]
+        split = any(_splits(s) for b in branches for s in b)
+        if not split:
+            self.emit(f"if {cond}:")
+            self.branch(stmt.then)
+            if stmt.otherwise is not None:
+                self.emit("else:")
+                self.branch(stmt.otherwise)
+            return
+        if self.depth == 0:
+            after = self.entry_block[self.index + 1]
+            after_block = None
+        else:
+            after_block = self.new_block()
+            after = after_block.number
+        start, indent = self.cur, self.indent
+        self.emit(f"if {cond}:")
+        self.branch(stmt.then, after)
+        self.cur, self.indent = start, indent
+        self.emit("else:")
+        if stmt.otherwise is not None:
+            self.branch(stmt.otherwise, after)
+        else:
+            self.indent += 1
+            self.emit(f"return {after}")
+            self.indent -= 1
+        self.cur, self.indent = after_block, 1
+        if after_block is not None:
+            self.emit(f"_ln = {self.line}")
+
+    def branch(self, branch, after: int | None = None) -> None:
+        """The statements of a THEN or ELSE, one indent deeper."""
+        self.indent += 1
+        self.depth += 1
+        if isinstance(branch, int):
+            self.emit(self.jump(branch))
+        else:
+            self.emit("pass")
+            for stmt in branch:
+                self.statement(stmt)
+        if after is not None:
+            self.block_next.setdefault(self.cur.number, after)
+            self.emit(f"return {after}")
+        self.depth -= 1
+        self.indent -= 1
+
+    # -- FOR / NEXT
+    def loop_var(self, var, scope) -> tuple[str, str]:
+        """(Python target for the control variable, FOR-stack key)."""
+        if ast.expr_type(var) != "n":
+            raise _type_mismatch()
+        if isinstance(var, ast.Var):
+            return scope.scalar(var.name, write=True), var.name
+        return self.element(var, scope), var.name + "()"
+
+    def stmt_For(self, stmt, scope, native_next: int | None = None):
+        start = self.numeric(stmt.start, scope)
+        limit = self.numeric(stmt.stop, scope)
+        step = "1.0" if stmt.step is None else self.numeric(stmt.step, scope)
+        var, key = self.loop_var(stmt.var, scope)
+        n = self.new_temp()
+        self.emit(f"_v{n} = {start}; _l{n} = {limit}; _s{n} = {step}")
+        if isinstance(stmt.var, ast.Elem) and stmt.var.indices and not all(
+                isinstance(i, ast.Num) for i in stmt.var.indices):
+            raise _syntax_error()  # a computed subscript would be re-evaluated each pass
+        self.emit(f"{var} = _v{n}")
+        if native_next is not None:
+            step_value = stmt.step.value if isinstance(stmt.step, ast.Num) else (
+                1.0 if stmt.step is None else None)
+            if step_value is not None and step_value > 0:
+                test = f"{var} <= _l{n}"
+            elif step_value is not None and step_value < 0:
+                test = f"{var} >= _l{n}"
+            else:
+                test = f"({var} <= _l{n} if _s{n} >= 0.0 else {var} >= _l{n})"
+            self.emit(f"while {test}:")
+            return n, var, step_value
+        body = self.entry_block.get(self.index + 1) if self.depth == 0 else None
+        skip_index = self.plan.for_next.get(self.index) if self.depth == 0 else None
+        block, indent = self.cur, self.indent
+        self.emit(f"if _v{n} <= _l{n} if _s{n} >= 0.0 else _v{n} >= _l{n}:")
+        if body is None:
+            body_block = self.continuation()
+        else:
+            body_block = body
+            self.cur = None
+        block.code.append((indent + 1, f"_for({key!r}, _l{n}, _s{n}, {body_block})"))
+        block.code.append((indent + 1, f"return {body_block}"))
+        if skip_index is None:
+            block.code.append((indent, f"raise _err('FOR without NEXT', {FOR_WITHOUT_NEXT})"))
+        else:
+            block.code.append((indent, f"return {self.entry_block[skip_index + 1]}"))
+        return None
+
+    def stmt_Next(self, stmt, scope):
+        var = stmt.var
+        if var is None and self.depth == 0 and self.index in self.plan.next_for:
+            var = self.flat[self.plan.next_for[self.index]][1].var
+        if var is None:
+            self.emit("#FLUSH#")
+            self.emit("if _next_any(): return _M.frame_body")
+            self.emit("#RELOAD#")
+            return
+        target, key = self.loop_var(var, scope)
+        self.emit(f"_f = _next({key!r})")
+        self.emit(f"{target} = {target} + _f.step")
+        self.emit(f"if {target} <= _f.limit if _f.step >= 0.0 else {target} >= _f.limit: return _f.body")
+        self.emit("_pop()")
+
+    # -- the program walk
+    def set_line(self, number) -> None:
+        if self.cur.first_line is None:
+            self.cur.first_line = number
+        self.emit(f"_ln = {number}")
+        self.line = number
+
+    def walk(self, start: int, stop: int) -> None:
+        """Emit top-level statements ``start``..``stop-1``."""
+        i = start
+        while i < stop:
+            number, stmt = self.flat[i]
+            self.index = i
+            if i in self.entry_block:
+                if self.cur is not None:
+                    self.emit(f"return {self.entry_block[i]}")
+                self.cur = self.blocks[self.entry_block[i]]
+                self.indent = 1
+                self.line = None
+                if self.plan.fine:
+                    self.block_next[self.cur.number] = self.entry_block.get(
+                        min(e for e in self.plan.entries if e > i))
+            if number != self.line:
+                self.set_line(number)
+            if i in self.plan.native:
+                i = self.native_loop(i)
+                continue
+            self.statement(stmt)
+            i += 1
+
+    def native_loop(self, i: int) -> int:
+        """Emit FOR at ``i`` ... its NEXT as a Python while loop; the index after NEXT."""
+        j = self.plan.native[i]
+        stmt = self.flat[i][1]
+        scope = _BlockScope(self)
+        block, mark = self.cur, len(self.cur.code)
+        try:
+            n, var, step_value = self.stmt_For(stmt, scope, native_next=j)
+        except CompileError as err:
+            del block.code[mark:]
+            self.emit(f"raise _err({err.message!r}, {err.code})")
+            return i + 1
+        self.indent += 1
+        self.line = None
+        self.set_line(self.flat[i][0])
+        self.walk(i + 1, j)
+        self.index = j
+        if self.flat[j][0] != self.line:
+            self.set_line(self.flat[j][0])
+        if step_value is not None:
+            self.emit(f"{var} = {var} + {step_value!r}")
+        else:
+            self.emit(f"{var} = {var} + _s{n}")
+        self.indent -= 1
+        self.line = None
+        self.set_line(self.flat[j][0])
+        return j + 1
+
+    # -- the whole area
+    def compile(self) -> CompiledArea:
+        for i, (number, stmt) in enumerate(self.flat):
+            for s in ([] if isinstance(stmt, BasicError) else _walk(stmt)):
+                if isinstance(s, ast.Data):
+                    self.data_lines.setdefault(number, len(self.data))
+                    self.data.extend((item, number) for item in split_data(s.text))
+        self.walk(0, len(self.flat))
+        end = self.entry_block[len(self.flat)]
+        if self.cur is not None:
+            self.emit(f"return {end}")
+        self.cur = self.blocks[end]
+        self.indent = 1
+        self.set_line(self.flat[-1][0] if self.flat else 0)
+        self.emit("raise _END")
+        pieces = [(None, text) for text in self.prelude]
+        pieces += [(b.first_line, self.block_source(b)) for b in self.blocks]
+        source = "\n".join(text for _, text in pieces)
+        line_blocks = {number: self.entry_block[i] for number, i in self.line_first.items()
+                       if i in self.entry_block}
+        return CompiledArea(
+            source=source, pieces=pieces, block_count=len(self.blocks), line_blocks=line_blocks,
+            block_next=self.block_next, data=self.data, data_lines=self.data_lines,
+            scalars=set(self.scalars), first_line=self.flat[0][0] if self.flat else None,
+        )
+
+    def block_source(self, block: _Block) -> str:
+        """The Python text of one block function."""
+        names = sorted(block.scalars)
+        written = [n for n in names if block.scalars[n]]
+        load = "; ".join(f"{local_name(n)} = _S[{n!r}]" for n in names)
+        load_arrays = "; ".join(f"{array_local(a)} = _arr({a!r}, {d})" for a, d in sorted(block.arrays.items()))
+        store = "; ".join(f"_S[{n!r}] = {local_name(n)}" for n in written)
+        loop_back = f"return {block.number}"
+        self_loop = any(text == loop_back or text.endswith(": " + loop_back) for _, text in block.code)
+        base = 2 if self_loop else 1
+        out = [f"def _b{block.number}():"]
+        for text in (load, load_arrays):
+            if text:
+                out.append("    " + text)
+        out.append("    _ln = None")
+        out.append("    try:")
+        if self_loop:
+            out.append("        while True:")
+        for indent, text in block.code:
+            pad = "    " * (indent + base)
+            if text == "#FLUSH#":
+                if store:
+                    out.append(pad + store)
+                continue
+            if text == "#RELOAD#":
+                for part in (load, load_arrays):
+                    if part:
+                        out.append(pad + part)
+                continue
+            if text.startswith("#ARRAY#"):
+                name = text[7:]
+                if name in block.arrays:
+                    out.append(pad + f"{array_local(name)} = _arr({name!r}, {block.arrays[name]})")
+                continue
+            if self_loop:
+                if text == loop_back:
+                    text = "continue"
+                elif text.endswith(": " + loop_back):
+                    text = text[: -len(loop_back)] + "continue"
+            out.append(pad + text)
+        if not block.code:
+            out.append("    " * (1 + base) + "pass")
+        out.append("    finally:")
+        if store:
+            out.append("        " + store)
+        out.append("        _M.line = _ln")
+        return "\n".join(out) + "\n"
+
+
+def split_data(text: str) -> list[str]:
+    """The items of a DATA statement's text: commas outside quotes separate them."""
+    items, current, quoted = [], [], False
+    for ch in text:
+        if ch == '"':
+            quoted = not quoted
+            current.append(ch)
+        elif ch == "," and not quoted:
+            items.append("".join(current).strip())
+            current = []
+        else:
+            current.append(ch)
+    items.append("".join(current).strip())
+    return items
+
+
+def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=()) -> CompiledArea:
+    """Compile an area's parsed lines (``syntax_tree.Line`` in line order).
+
+    ``entry_lines`` are lines that must start a block although no jump names
+    them (RUN n, or a GOTO typed in direct mode).
+    """
+    return AreaCompiler(lines, area, direct, entry_lines).compile()

@@ -1,0 +1,735 @@
+"""The BASIC machine: variables, arrays, program areas, the run loop, and I/O.
+
+A :class:`Machine` holds the state a pocket computer holds: scalars (a dict
+name -> float or str), arrays (name -> list, nested for more than one
+dimension), the GOSUB/FOR stack, the program areas (area 0 is the listing;
+``GOSUB PROG n`` runs area n, a Python callable or another BASIC program that
+shares the variables), the screen and printer streams.
+
+Typical use::
+
+    m = Machine()
+    m.load(text)          # area 0; lines are kept as line -> text
+    m.run()               # compiles on RUN, raises BasicError on an error
+    m.execute_direct("PRINT A")
+
+Python program areas use ``array(name)``, ``scalar(name)``, ``set_scalar``.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import random
+import sys
+from functools import lru_cache
+from typing import Callable, TextIO
+
+from yaseer.basic import formatting, runtime
+from yaseer.basic.compiler import CompiledArea, compile_area
+from yaseer.basic.errors import (
+    BasicError, BREAK, CANT_CONTINUE, DIVISION_BY_ZERO, DUPLICATE_DEFINITION,
+    ILLEGAL_FUNCTION_CALL, NEXT_WITHOUT_FOR, OUT_OF_DATA, OUT_OF_MEMORY, OVERFLOW,
+    RESUME_WITHOUT_ERROR, RETURN_WITHOUT_GOSUB, SUBSCRIPT_OUT_OF_RANGE, SYNTAX_ERROR,
+    UNDEFINED_PROGRAM_AREA, UNDEFINED_USER_FUNCTION,
+)
+from yaseer.basic.parser import parse_line
+from yaseer.basic.scanner import split_lines
+
+# The paper's universal line 2: these arrays exist with these sizes from the start.
+AL_YASEER_DIMENSIONS = {
+    "F": 46, "M": 11, "R": 19, "H": 24, "A": 53, "L": 20, "T": 25, "W": 10, "Z": 5, "C": 14,
+    "U": 4, "D": 6, "E": 6, "X": 11, "Y": 11, "V": 21, "Q": 4, "N": 3, "I": 11, "P": 4,
+}
+DEFAULT_DIMENSION = 10  # an array used without DIM: subscripts 0..10
+
+# Resource limits (each exceeded limit is "Out of memory in N").
+MAX_STACK = 10_000  # GOSUB returns + open FOR loops together
+MAX_AREA_DEPTH = 100  # GOSUB PROG nesting
+MAX_ARRAY_ELEMENTS = 2_000_000  # per array
+INPUT_PAST_END = 62
+INTERNAL_ERROR = 51
+
+PRINT_ZONE = 14  # columns per comma zone (MS-BASIC)
+
+
+class ProgramEnd(BaseException):
+    """END, or the program ran off its last line."""
+
+
+class ProgramStop(BaseException):
+    """STOP: ``area`` and ``block`` are where CONT resumes."""
+
+    def __init__(self, area: int, block: int, line):
+        super().__init__("Break")
+        self.area, self.block, self.line = area, block, line
+
+
+class DirectJump(BaseException):
+    """GOTO/THEN n typed in direct mode: continue the program at line n."""
+
+    def __init__(self, line: int):
+        super().__init__(line)
+        self.line = line
+
+
+class _AreaReturn:
+    """Marks the GOSUB stack where a BASIC program area was entered."""
+
+
+AREA_MARK = _AreaReturn()
+
+
+class ForFrame:
+    __slots__ = ("key", "limit", "step", "body")
+
+    def __init__(self, key, limit, step, body):
+        self.key, self.limit, self.step, self.body = key, limit, step, body
+
+
+class Tab:
+    __slots__ = ("column",)
+
+    def __init__(self, column):
+        self.column = column
+
+
+class Spc:
+    __slots__ = ("count",)
+
+    def __init__(self, count):
+        self.count = count
+
+
+COMMA = object()
+
+END = ProgramEnd()
+
+
+class OutputStream:
+    """A text stream that knows its column (for TAB and the comma zones)."""
+
+    def __init__(self, stream: TextIO):
+        self.stream = stream
+        self.column = 0
+
+    def write(self, text: str) -> None:
+        if not text:
+            return
+        self.stream.write(text)
+        newline = text.rfind("\n")
+        self.column = len(text) - newline - 1 if newline >= 0 else self.column + len(text)
+
+    def flush(self) -> None:
+        self.stream.flush()
+
+
+def to_basic_error(exc: BaseException) -> BasicError:
+    """The BASIC error for an exception raised inside compiled code or a Python area."""
+    if isinstance(exc, BasicError):
+        return exc
+    if isinstance(exc, KeyboardInterrupt):
+        return BasicError("Break", BREAK)
+    if isinstance(exc, ZeroDivisionError):
+        return BasicError("Division by zero", DIVISION_BY_ZERO)
+    if isinstance(exc, OverflowError):
+        return BasicError("Overflow", OVERFLOW)
+    if isinstance(exc, (RecursionError, MemoryError)):
+        return BasicError("Out of memory", OUT_OF_MEMORY)
+    if isinstance(exc, ValueError):
+        return BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+    if isinstance(exc, IndexError):
+        return BasicError("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
+    if isinstance(exc, TypeError) and "subscript" in str(exc):
+        return BasicError("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
+    return BasicError(f"Internal error ({type(exc).__name__}: {exc})", INTERNAL_ERROR)
+
+
+@lru_cache(maxsize=4096)
+def _parse_cached(number: int, text: str):
+    return parse_line(number, text)
+
+
+def _new_array(dims: tuple, fill):
+    if len(dims) == 1:
+        return [fill] * (dims[0] + 1)
+    return [_new_array(dims[1:], fill) for _ in range(dims[0] + 1)]
+
+
+class _AreaRuntime:
+    """Per-area state the compiled code reaches: DATA pointer."""
+
+    def __init__(self, machine: "Machine", number: int, compiled: CompiledArea):
+        self.machine = machine
+        self.number = number
+        self.compiled = compiled
+        self.data_index = 0
+
+    def read_item(self) -> tuple[str, int]:
+        data = self.compiled.data
+        if self.data_index >= len(data):
+            raise BasicError("Out of DATA", OUT_OF_DATA)
+        item = data[self.data_index]
+        self.data_index += 1
+        return item
+
+    def read_number(self) -> float:
+        text, line = self.read_item()
+        try:
+            value = float(text) if text else 0.0
+        except ValueError:
+            raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number) from None
+        if value - value:
+            raise BasicError("Overflow", OVERFLOW).at(line, self.number)
+        return value
+
+    def read_string(self) -> str:
+        text, _ = self.read_item()
+        if len(text) >= 2 and text[0] == '"':
+            return text[1:-1] if text.endswith('"') else text[1:]
+        return text
+
+    def restore(self, line) -> None:
+        if line is None:
+            self.data_index = 0
+            return
+        later = [i for number, i in self.compiled.data_lines.items() if number >= line]
+        self.data_index = min(later) if later else len(self.compiled.data)
+
+
+class Machine:
+    """A pocket-computer BASIC machine (see the module docstring)."""
+
+    def __init__(self, screen: TextIO | None = None, printer: TextIO | None = None,
+                 output_format: str = "text", angle: str = "deg", input_stream: TextIO | None = None):
+        self.screen = OutputStream(screen if screen is not None else sys.stdout)
+        self.printer = OutputStream(printer if printer is not None else self.screen.stream)
+        if printer is None:
+            self.printer = self.screen
+        self.streams = (self.screen, self.printer)
+        self.csv = output_format == "csv"
+        self.default_angle = angle.upper()[:3]
+        self.input_stream = input_stream
+        self.programs: dict[int, dict[int, str]] = {}
+        self.python_areas: dict[int, Callable] = {}
+        self.compiled: dict[int, CompiledArea] = {}
+        self.runtimes: dict[int, _AreaRuntime] = {}
+        self.namespaces: dict[int, dict] = {}
+        self.scalars: dict[str, object] = {}
+        self.arrays: dict[str, list] = {}
+        self.array_dims: dict[str, tuple] = {}
+        self.explicit_arrays: set[str] = set()
+        self.stack: list = []
+        self.fns: dict[str, tuple] = {}
+        self.line = None
+        self.on_error = None
+        self.in_handler = False
+        self.err = 0.0
+        self.erl = 0.0
+        self.error_point = None
+        self.cont_point = None
+        self.area_depth = 0
+        self.frame_body = 0
+        self.angle = self.default_angle
+        self.random = random.Random(0)
+        self.last_random = 0.0
+        self.run_hooks: list[Callable] = []
+        self._extra_entries: set[int] = set()
+
+    # ------------------------------------------------------------ programs
+    def load(self, text: str, area: int = 0) -> None:
+        """Replace area ``area``'s program by the listing ``text`` (line -> text)."""
+        program: dict[int, str] = {}
+        for number, statement_text, _ in split_lines(text):
+            if statement_text:
+                program[number] = statement_text
+            else:
+                program.pop(number, None)
+        self.programs[area] = program
+        self.python_areas.pop(area, None)
+        self._invalidate(area)
+
+    def set_line(self, number: int, text: str, area: int = 0) -> None:
+        """Enter (or, with empty text, delete) one program line, as typed."""
+        program = self.programs.setdefault(area, {})
+        if text.strip():
+            program[number] = text.strip()
+        else:
+            program.pop(number, None)
+        self._invalidate(area)
+
+    def set_area(self, n: int, area) -> None:
+        """Bind program area ``n`` to a Python callable ``area(machine)`` or BASIC text."""
+        if callable(area):
+            self.python_areas[n] = area
+            self.programs.pop(n, None)
+            self._invalidate(n)
+        else:
+            self.load(area, n)
+
+    def _invalidate(self, area: int) -> None:
+        self.compiled.pop(area, None)
+        self.namespaces.pop(area, None)
+        self.runtimes.pop(area, None)
+        if area == 0:
+            self.cont_point = None
+
+    def _compiled(self, area: int) -> CompiledArea:
+        compiled = self.compiled.get(area)
+        if compiled is None:
+            extra = tuple(self._extra_entries) if area == 0 else ()
+            compiled = self._compile(area, self.programs.get(area, {}), entry_lines=extra)
+        return compiled
+
+    def _compile(self, area, program: dict, direct: bool = False, entry_lines=()) -> CompiledArea:
+        lines = [_parse_cached(number, text) for number, text in sorted(program.items())]
+        compiled = compile_area(lines, area if isinstance(area, int) else 0, direct=direct,
+                                entry_lines=entry_lines)
+        runtime_state = _AreaRuntime(self, area, compiled)
+        namespace = self._namespace(area, runtime_state)
+        for first_line, text in compiled.pieces:
+            self._exec_piece(text, first_line, area, namespace)
+        compiled.blocks = [namespace[f"_b{b}"] for b in range(compiled.block_count)]
+        for name in compiled.scalars:
+            self.scalars.setdefault(name, "" if name.endswith("$") else 0.0)
+        if not direct:
+            self.compiled[area] = compiled
+            self.runtimes[area] = runtime_state
+            self.namespaces[area] = namespace
+        return compiled
+
+    def _exec_piece(self, text: str, first_line, area, namespace: dict) -> None:
+        """Compile one generated function; one too complex for Python becomes an error."""
+        try:
+            exec(compile(text, f"<BASIC area {area}>", "exec"), namespace)
+        except (SyntaxError, RecursionError, MemoryError):
+            name = text.split("(", 1)[0].split()[-1]
+            stub = (f"def {name}(*_):\n    _M.line = {first_line!r}\n"
+                    f"    raise _err('Out of memory', {OUT_OF_MEMORY})\n")
+            exec(stub, namespace)
+
+    def _namespace(self, area, rt: _AreaRuntime) -> dict:
+        ns = {
+            "__builtins__": {"abs": abs, "len": len, "float": float},
+            "_M": self, "_S": self.scalars, "_arr": self.array_nd, "_ix": runtime.subscript,
+            "_ovf": runtime.overflow, "_err": BasicError, "_END": END, "_DirectJump": DirectJump,
+            "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_Tab": Tab, "_Spc": Spc,
+            "_gosub": self.gosub, "_return": self.gosub_return, "_call": self.call_area,
+            "_on": self.on_index, "_for": self.for_push, "_next": self.next_frame,
+            "_pop": self.stack.pop, "_next_any": self.next_any, "_stop": self._stopper(area),
+            "_dim": self.dim, "_clear": self.clear, "_read_n": rt.read_number,
+            "_read_s": rt.read_string, "_restore": rt.restore, "_input": self.input_values,
+            "_fn": self.user_function, "_resume": self.resume, "_resume_at": self.resume_at,
+            "_randomize": self.randomize, "_rnd": self.rnd,
+            "_sqrt": math.sqrt, "_floor": runtime.floor, "_fix": runtime.fix, "_sgn": runtime.sign,
+            "_exp": math.exp, "_log": math.log, "_len": lambda s: float(len(s)),
+            "_strs": formatting.str_dollar, "_val": runtime.val, "_chr": runtime.chr_dollar,
+            "_asc": runtime.asc, "_left": runtime.left, "_right": runtime.right, "_mid": runtime.mid,
+            "_cat": runtime.concat, "_pow": runtime.power, "_idiv": runtime.int_divide,
+            "_mod": runtime.modulo, "_and": runtime.logical_and, "_or": runtime.logical_or,
+            "_not": runtime.logical_not,
+        }
+        ns.update(self._trig_functions())
+        self.namespaces[area] = ns
+        return ns
+
+    def _trig_functions(self) -> dict:
+        if self.angle == "RAD":
+            return {"_sin": math.sin, "_cos": math.cos, "_tan": math.tan, "_atn": math.atan}
+        return {"_sin": runtime.sin_degrees, "_cos": runtime.cos_degrees,
+                "_tan": runtime.tan_degrees, "_atn": runtime.atn_degrees}
+
+    def set_angle(self, mode: str) -> None:
+        """DEG or RAD: the unit SIN, COS, TAN take and ATN returns."""
+        self.angle = mode.upper()[:3]
+        functions = self._trig_functions()
+        for ns in list(self.namespaces.values()):
+            ns.update(functions)
+
+    # ------------------------------------------------------------ variables (the Python-area API)
+    def scalar(self, name: str):
+        """The value of scalar ``name`` (0.0, or "" for a string, if unset)."""
+        name = name.upper()
+        return self.scalars.get(name, "" if name.endswith("$") else 0.0)
+
+    def set_scalar(self, name: str, value) -> None:
+        name = name.upper()
+        self.scalars[name] = str(value) if name.endswith("$") else float(value)
+
+    def array(self, name: str) -> list:
+        """The 1-D array ``name`` as a mutable list indexed by subscript."""
+        return self.array_nd(name.upper(), 1)
+
+    def array_nd(self, name: str, ndim: int) -> list:
+        """Array ``name``; created with its implicit dimension(s) if the program has none."""
+        found = self.arrays.get(name)
+        if found is not None:
+            return found
+        size = AL_YASEER_DIMENSIONS.get(name, DEFAULT_DIMENSION) if ndim == 1 else DEFAULT_DIMENSION
+        dims = (size,) * ndim
+        created = _new_array(dims, "" if name.endswith("$") else 0.0)
+        self.arrays[name] = created
+        self.array_dims[name] = dims
+        return created
+
+    def dim(self, name: str, sizes: tuple) -> None:
+        """DIM name(sizes): replaces an implicit array; a second DIM is an error."""
+        if name in self.explicit_arrays:
+            raise BasicError("Duplicate definition", DUPLICATE_DEFINITION)
+        dims = tuple(runtime.cint(s) for s in sizes)
+        if any(d < 0 for d in dims):
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        if math.prod(d + 1 for d in dims) > MAX_ARRAY_ELEMENTS:
+            raise BasicError("Out of memory", OUT_OF_MEMORY)
+        self.arrays[name] = _new_array(dims, "" if name.endswith("$") else 0.0)
+        self.array_dims[name] = dims
+        self.explicit_arrays.add(name)
+
+    def clear(self) -> None:
+        """CLEAR: every variable to 0 or "", arrays back to their implicit state, no FN."""
+        for name in self.scalars:
+            self.scalars[name] = "" if name.endswith("$") else 0.0
+        self.arrays.clear()
+        self.array_dims.clear()
+        self.explicit_arrays.clear()
+        self.fns.clear()
+        for rt in self.runtimes.values():
+            rt.data_index = 0
+
+    # ------------------------------------------------------------ control flow
+    def gosub(self, return_block: int) -> None:
+        if len(self.stack) >= MAX_STACK:
+            raise BasicError("Out of memory", OUT_OF_MEMORY)
+        self.stack.append(return_block)
+
+    def gosub_return(self) -> int:
+        stack = self.stack
+        while stack:
+            top = stack[-1]
+            if top is AREA_MARK:
+                return -2
+            stack.pop()
+            if type(top) is int:
+                return top
+        raise BasicError("RETURN without GOSUB", RETURN_WITHOUT_GOSUB)
+
+    def for_push(self, key: str, limit: float, step: float, body: int) -> None:
+        stack = self.stack
+        for k in range(len(stack) - 1, -1, -1):
+            frame = stack[k]
+            if type(frame) is not ForFrame:
+                break
+            if frame.key == key:  # re-entering a loop: drop it and the loops inside it
+                del stack[k:]
+                break
+        if len(stack) >= MAX_STACK:
+            raise BasicError("Out of memory", OUT_OF_MEMORY)
+        stack.append(ForFrame(key, limit, step, body))
+
+    def next_frame(self, key: str) -> ForFrame:
+        stack = self.stack
+        while stack:
+            top = stack[-1]
+            if type(top) is not ForFrame:
+                break
+            if top.key == key:
+                return top
+            stack.pop()
+        raise BasicError("NEXT without FOR", NEXT_WITHOUT_FOR)
+
+    def next_any(self) -> bool:
+        """NEXT with no name whose FOR the compiler could not see: step the innermost loop."""
+        if not self.stack or type(self.stack[-1]) is not ForFrame or self.stack[-1].key.endswith("()"):
+            raise BasicError("NEXT without FOR", NEXT_WITHOUT_FOR)
+        frame = self.stack[-1]
+        value = self.scalars[frame.key] + frame.step
+        self.scalars[frame.key] = value
+        if (value <= frame.limit) if frame.step >= 0 else (value >= frame.limit):
+            self.frame_body = frame.body
+            return True
+        self.stack.pop()
+        return False
+
+    def on_index(self, selector: float, count: int) -> int:
+        """ON x GOTO: the 1-based branch, or 0 to fall through; below 0 is an error."""
+        k = runtime.cint(selector)
+        if k < 0 or k > 255:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        return k if k <= count else 0
+
+    def user_function(self, name: str, nargs: int):
+        entry = self.fns.get(name)
+        if entry is None:
+            raise BasicError("Undefined user function", UNDEFINED_USER_FUNCTION)
+        function, expected = entry
+        if expected != nargs:
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return function
+
+    def _stopper(self, area):
+        def stop(block: int) -> None:
+            raise ProgramStop(area, block, self.line)
+        return stop
+
+    def call_area(self, n: int) -> None:
+        """GOSUB PROG n: run program area n and come back."""
+        python_area = self.python_areas.get(n)
+        if python_area is not None:
+            python_area(self)
+            return
+        if n not in self.programs:
+            raise BasicError(f"Undefined program area {n}", UNDEFINED_PROGRAM_AREA)
+        if self.area_depth >= MAX_AREA_DEPTH:
+            raise BasicError("Out of memory", OUT_OF_MEMORY)
+        compiled = self._compiled(n)
+        mark = len(self.stack)
+        self.stack.append(AREA_MARK)
+        self.area_depth += 1
+        try:
+            self._run_area(n, compiled, 0)
+        finally:
+            self.area_depth -= 1
+            del self.stack[mark:]
+
+    # ------------------------------------------------------------ errors
+    def resume(self, next_statement: bool) -> int:
+        if not self.in_handler:
+            raise BasicError("RESUME without error", RESUME_WITHOUT_ERROR)
+        area, block = self.error_point
+        self.in_handler = False
+        if next_statement:
+            return self._compiled(area).block_next.get(block, block + 1)
+        return block
+
+    def resume_at(self, block: int) -> int:
+        if not self.in_handler:
+            raise BasicError("RESUME without error", RESUME_WITHOUT_ERROR)
+        self.in_handler = False
+        return block
+
+    def _trap(self, err: BasicError, area: int, block: int) -> int | None:
+        """The handler block for ``err`` if ON ERROR GOTO of this area catches it."""
+        if self.on_error is None or self.in_handler or err.code == BREAK:
+            return None
+        handler_area, handler_block = self.on_error
+        if handler_area != area:
+            return None
+        self.err = float(err.code)
+        self.erl = float(err.line or 0)
+        self.in_handler = True
+        self.error_point = (area, block)
+        return handler_block
+
+    # ------------------------------------------------------------ the run loop
+    def _run_area(self, area: int, compiled: CompiledArea, block: int) -> None:
+        """Run ``area`` from ``block`` until its RETURN (areas) or END (raises ProgramEnd)."""
+        blocks = compiled.blocks
+        b = block
+        while True:
+            try:
+                while b >= 0:
+                    b = blocks[b]()
+                return
+            except (ProgramEnd, ProgramStop, DirectJump):
+                raise
+            except BaseException as exc:  # noqa: BLE001 - every error becomes a BASIC error
+                err = to_basic_error(exc)
+                err.at(self.line, area)
+                target = self._trap(err, area, b)
+                if target is None:
+                    raise err from None
+                b = target
+
+    def reset(self) -> None:
+        """The state RUN starts from: no variables, empty stack, the default angle unit."""
+        self.clear()
+        self.stack.clear()
+        self.on_error = None
+        self.in_handler = False
+        self.err = self.erl = 0.0
+        self.cont_point = None
+        self.area_depth = 0
+        self.set_angle(self.default_angle)
+        self.random = random.Random(0)
+
+    def run(self, line: int | None = None) -> str:
+        """RUN (from ``line``): returns "end" or "stop"; raises BasicError on an error."""
+        compiled = self._compiled(0)
+        for area in self.programs:
+            self._compiled(area)
+        self.reset()
+        block = 0
+        if line is not None:
+            block = self._line_block(line)
+        return self._execute(0, block)
+
+    def _line_block(self, line: int) -> int:
+        """The block that starts at ``line`` of area 0 (recompiling so that one does)."""
+        if line not in self.programs.get(0, {}):
+            raise BasicError(f"Undefined line number {line}", 8)
+        block = self._compiled(0).line_blocks.get(line)
+        if block is None:
+            self._extra_entries.add(line)
+            self._compile(0, self.programs[0], entry_lines=tuple(self._extra_entries))
+            block = self._compiled(0).line_blocks[line]
+        return block
+
+    def _execute(self, area: int, block: int) -> str:
+        self.cont_point = None
+        try:
+            self._run_area(area, self._compiled(area), block)
+        except ProgramEnd:
+            return "end"
+        except ProgramStop as stop:
+            if stop.area == 0 and self.area_depth == 0:
+                self.cont_point = (stop.area, stop.block)
+            self.area_depth = 0
+            return "stop"
+        except KeyboardInterrupt:
+            raise BasicError("Break", BREAK).at(self.line) from None
+        finally:
+            self.flush()
+        return "end"
+
+    def cont(self) -> str:
+        """CONT after STOP."""
+        if self.cont_point is None:
+            raise BasicError("Can't continue", CANT_CONTINUE)
+        area, block = self.cont_point
+        return self._execute(area, block)
+
+    def execute_direct(self, text: str) -> str:
+        """Run statements typed without a line number against the same variables."""
+        compiled = self._compile("direct", {0: text}, direct=True)
+        self.namespaces.pop("direct", None)
+        try:
+            self.line = None
+            try:
+                self._run_area(0, compiled, 0)
+            except BasicError as err:
+                if err.line == 0:
+                    err.line = None
+                raise
+            return "end"
+        except ProgramEnd:
+            return "end"
+        except ProgramStop:
+            return "stop"
+        except DirectJump as jump:
+            return self._execute(0, self._line_block(jump.line))
+        finally:
+            self.flush()
+
+    # ------------------------------------------------------------ I/O
+    def print_items(self, device: int, items: tuple, newline: bool) -> None:
+        """PRINT / LPRINT: values, comma zones, TAB and SPC; ``newline`` ends the line."""
+        stream = self.streams[device]
+        if self.csv:
+            values = [repr(v) if type(v) is float else v for v in items if type(v) in (float, str)]
+            self._csv_row(stream, values)
+            return
+        for item in items:
+            kind = type(item)
+            if kind is float:
+                if item - item:
+                    runtime.overflow()
+                stream.write(formatting.number_to_text(item))
+            elif kind is str:
+                stream.write(item)
+            elif item is COMMA:
+                stream.write(" " * (PRINT_ZONE - stream.column % PRINT_ZONE))
+            elif kind is Tab:
+                target = runtime.cint(item.column) - 1
+                if target < 0 or target > 255:
+                    raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+                if stream.column > target:
+                    stream.write("\n")
+                stream.write(" " * (target - stream.column))
+            elif kind is Spc:
+                count = runtime.cint(item.count)
+                if count < 0 or count > 255:
+                    raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+                stream.write(" " * count)
+        if newline:
+            stream.write("\n")
+
+    def print_using(self, device: int, fmt: str, values: tuple, newline: bool) -> None:
+        """PRINT USING fmt; values (the format rules live in ``formatting.using``)."""
+        stream = self.streams[device]
+        for v in values:
+            if type(v) is float and v - v:
+                runtime.overflow()
+        if self.csv:
+            self._csv_row(stream, [repr(v) if type(v) is float else v for v in values])
+            return
+        stream.write(formatting.using(fmt, values))
+        if newline:
+            stream.write("\n")
+
+    def _csv_row(self, stream: OutputStream, values: list) -> None:
+        writer = csv.writer(stream.stream, lineterminator="\n")
+        writer.writerow(values)
+        stream.column = 0
+
+    def input_values(self, prompt, question_mark: bool, kinds: str) -> list:
+        """INPUT: prompt, read one line, split at commas; wrong values ask again."""
+        while True:
+            text = (prompt or "") + ("? " if question_mark or prompt is None else "")
+            self.screen.write(text)
+            self.screen.flush()
+            stream = self.input_stream if self.input_stream is not None else sys.stdin
+            line = stream.readline()
+            if not line:
+                raise BasicError("Input past end", INPUT_PAST_END)
+            if self.input_stream is not None:
+                self.screen.write(line if line.endswith("\n") else line + "\n")
+            else:
+                self.screen.column = 0
+            values = _parse_input(line.rstrip("\r\n"), kinds)
+            if values is not None:
+                return values
+            self.screen.write("?Redo from start\n")
+
+    def rnd(self, x: float = 1.0) -> float:
+        """RND(x): x > 0 the next number, 0 the last again, x < 0 reseeds with x first."""
+        if x < 0:
+            self.random.seed(x)
+        if x != 0:
+            self.last_random = self.random.random()
+        return self.last_random
+
+    def randomize(self, seed) -> None:
+        self.random.seed(seed)
+
+    def end_line(self) -> None:
+        """Finish a partly printed screen line (before an error message, as MS-BASIC does)."""
+        if not self.csv and self.screen.column:
+            self.screen.write("\n")
+
+    def flush(self) -> None:
+        for stream in self.streams:
+            try:
+                stream.flush()
+            except (OSError, ValueError):
+                pass
+
+
+def _parse_input(text: str, kinds: str):
+    """The values of one INPUT line for targets of ``kinds`` ("n"/"s"), or None to redo."""
+    reader = csv.reader([text], skipinitialspace=True)
+    fields = next(reader, [])
+    if len(fields) != len(kinds):
+        return None
+    values = []
+    for field_text, kind in zip(fields, kinds):
+        if kind == "s":
+            values.append(field_text)
+            continue
+        try:
+            value = float(field_text.strip() or "0")
+        except ValueError:
+            return None
+        if value - value:
+            return None
+        values.append(value)
+    return values

@@ -1,0 +1,286 @@
+"""Tokens -> AST: the lark LALR parser over ``grammar.lark``, built once and cached.
+
+The scanner's token list is fed to lark through a pass-through custom lexer;
+a :class:`lark.Transformer` applied during the parse builds ``syntax_tree``
+nodes directly.  :func:`parse_line` is the one entry point: it returns a
+:class:`~yaseer.basic.syntax_tree.Line` whose ``error`` holds the
+``BasicError`` when the text is not a valid line (the machine raises it when
+the line is reached, as the period interpreters did).
+"""
+
+from __future__ import annotations
+
+import functools
+from pathlib import Path
+
+from lark import Lark, Token, Transformer
+from lark.exceptions import LarkError, UnexpectedInput
+from lark.lexer import Lexer
+
+from yaseer.basic import syntax_tree as ast
+from yaseer.basic.errors import BasicError, SYNTAX_ERROR
+from yaseer.basic.scanner import tokenize
+
+GRAMMAR_PATH = Path(__file__).with_name("grammar.lark")
+
+
+class _TokenListLexer(Lexer):
+    """Hands lark the scanner's ready-made tokens."""
+
+    def __init__(self, lexer_conf):  # noqa: D401 - lark's interface
+        pass
+
+    def lex(self, data, *_):
+        tokens = getattr(data, "text", data)
+        if hasattr(tokens, "text"):  # lark >= 1.2 wraps input in a TextSlice
+            tokens = tokens.text
+        return iter(tokens)
+
+
+def _line_number(token: Token) -> int:
+    value = token.value
+    if value != int(value) or value < 0:
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+    return int(value)
+
+
+_OPERATOR_NAMES = {
+    "PLUS": "+", "MINUS": "-", "STAR": "*", "SLASH": "/", "BSLASH": "\\", "CARET": "^",
+    "MOD": "MOD", "AND": "AND", "OR": "OR",
+    "EQ": "=", "LT": "<", "GT": ">", "LE": "<=", "GE": ">=", "NE": "<>",
+}
+
+
+def _values(children) -> list:
+    """The children that are not punctuation tokens."""
+    return [c for c in children if not (isinstance(c, Token) and c.type in ("COMMA", "SEMI", "EQ"))]
+
+
+class _ToAst(Transformer):
+    """lark tree -> syntax_tree nodes (called bottom-up during the parse)."""
+
+    # -- structure
+    def start(self, c):
+        return c[0]
+
+    def seq(self, c):
+        out = []
+        for s in c:
+            if s is None:
+                continue
+            if isinstance(s, list):
+                out.extend(s)
+            else:
+                out.append(s)
+        return out
+
+    def item(self, c):
+        return c[0] if c else None
+
+    def branch_line(self, c):
+        return _line_number(c[0])
+
+    def branch_seq(self, c):
+        return c[0]
+
+    def if_stmt(self, c):
+        cond, then = c[1], c[3]
+        otherwise = c[5] if len(c) > 5 else None
+        return ast.If(cond, then, otherwise)
+
+    def if_goto(self, c):
+        cond, target = c[1], _line_number(c[3])
+        otherwise = c[5] if len(c) > 5 else None
+        return ast.If(cond, target, otherwise)
+
+    # -- statements
+    def let_stmt(self, c):
+        target, value = _values(c)[-2:]
+        return ast.Let(target, value)
+
+    def var(self, c):
+        return ast.Var(c[0].value)
+
+    def elem(self, c):
+        return ast.Elem(c[0].value, tuple(c[1]))
+
+    def args(self, c):
+        return _values(c)
+
+    def print_stmt(self, c):
+        return ast.Print(c[0].type == "LPRINT", [i for i in c[1:]])
+
+    def print_using(self, c):
+        return ast.Print(c[0].type == "LPRINT", list(c[4:]), using=c[2])
+
+    def print_item(self, c):
+        item = c[0]
+        if isinstance(item, Token) and item.type in ("COMMA", "SEMI"):
+            return "," if item.type == "COMMA" else ";"
+        return item
+
+    def tab_item(self, c):
+        return ast.Tab(c[1])
+
+    def spc_item(self, c):
+        return ast.Spc(c[1])
+
+    def for_stmt(self, c):
+        v = _values(c)
+        step = v[6] if len(v) > 6 else None
+        return ast.For(v[1], v[2], v[4], step)
+
+    def next_stmt(self, c):
+        names = _values(c)[1:]
+        if not names:
+            return ast.Next(None)
+        return [ast.Next(n) for n in names]  # NEXT J, I is NEXT J: NEXT I
+
+    def goto_stmt(self, c):
+        return ast.Goto(_line_number(c[1]))
+
+    def gosub_stmt(self, c):
+        return ast.Gosub(_line_number(c[1]))
+
+    def gosub_prog(self, c):
+        return ast.GosubProg(_line_number(c[2]))
+
+    def return_stmt(self, c):
+        return ast.Return()
+
+    def on_jump(self, c):
+        v = _values(c)
+        targets = [_line_number(t) for t in v[3:]]
+        return ast.OnJump(v[1], targets, v[2].type == "GOSUB")
+
+    def on_error(self, c):
+        return ast.OnError(_line_number(c[3]))
+
+    def end_stmt(self, c):
+        return ast.End()
+
+    def stop_stmt(self, c):
+        return ast.Stop()
+
+    def rem_stmt(self, c):
+        return ast.Rem(c[0].value)
+
+    def dim_stmt(self, c):
+        return ast.Dim(_values(c)[1:])
+
+    def dim_item(self, c):
+        return (c[0].value, tuple(c[1]))
+
+    def clear_stmt(self, c):
+        return ast.Clear()
+
+    def data_stmt(self, c):
+        return ast.Data(c[0].value)
+
+    def read_stmt(self, c):
+        return ast.Read(_values(c)[1:])
+
+    def restore_stmt(self, c):
+        return ast.Restore(_line_number(c[1]) if len(c) > 1 else None)
+
+    def input_stmt(self, c):
+        prompt = None
+        question = True
+        rest = c[1:]
+        if rest and isinstance(rest[0], Token) and rest[0].type == "STRING":
+            prompt = rest[0].value
+            question = rest[1].type == "SEMI"
+            rest = rest[2:]
+        return ast.Input(prompt, question, _values(rest))
+
+    def def_stmt(self, c):
+        name = c[2].value
+        params = c[3] if isinstance(c[3], list) else []
+        return ast.DefFn(name, params, c[-1])
+
+    def params(self, c):
+        return [t.value for t in _values(c)]
+
+    def resume_stmt(self, c):
+        if len(c) == 1:
+            return ast.Resume("retry")
+        if c[1].type == "NEXT":
+            return ast.Resume("next")
+        target = _line_number(c[1])
+        return ast.Resume("retry") if target == 0 else ast.Resume("line", target)
+
+    def randomize_stmt(self, c):
+        return ast.Randomize(c[1] if len(c) > 1 else None)
+
+    def angle_stmt(self, c):
+        return ast.Angle(c[0].type)
+
+    # -- expressions
+    def binop(self, c):
+        left, op, right = c
+        return ast.Binary(_OPERATOR_NAMES[op.type], left, right)
+
+    def unop(self, c):
+        return ast.Unary(_OPERATOR_NAMES.get(c[0].type, c[0].type), c[1])
+
+    def call(self, c):
+        name = c[0].value
+        if len(c) == 1:
+            return ast.Call(name, ())
+        arg = c[1]
+        return ast.Call(name, tuple(arg) if isinstance(arg, list) else (arg,))
+
+    def fn_call(self, c):
+        args = tuple(c[2]) if len(c) > 2 else ()
+        return ast.FnCall(c[1].value, args)
+
+    def number(self, c):
+        return ast.Num(c[0].value)
+
+    def string(self, c):
+        return ast.Str(c[0].value)
+
+    def sysvar(self, c):
+        return ast.SysVar(c[0].value)
+
+
+
+
+@functools.lru_cache(maxsize=1)
+def _parser() -> Lark:
+    """The LALR parser (built once per process)."""
+    options = dict(parser="lalr", lexer=_TokenListLexer, transformer=_ToAst(), maybe_placeholders=False)
+    grammar = GRAMMAR_PATH.read_text()
+    try:  # lark keeps the LALR tables in a temp-dir cache keyed by the grammar's hash
+        return Lark(grammar, cache=True, **options)
+    except (OSError, ValueError, TypeError):
+        return Lark(grammar, **options)
+
+
+def parse_statements(text: str) -> list:
+    """The statements of one line's text; raises ``BasicError`` (Syntax error)."""
+    tokens = tokenize(text)
+    if not tokens:
+        return []
+    try:
+        statements = _parser().parse(tokens)
+    except BasicError:
+        raise
+    except (UnexpectedInput, LarkError) as exc:
+        inner = getattr(exc, "orig_exc", None)
+        if isinstance(inner, BasicError):
+            raise inner from None
+        raise BasicError("Syntax error", SYNTAX_ERROR) from None
+    return statements
+
+
+def parse_line(number: int, text: str) -> ast.Line:
+    """Parse one numbered line; a syntax error is stored in ``Line.error``."""
+    try:
+        statements = parse_statements(text)
+    except BasicError as err:
+        return ast.Line(number, [], text, error=err)
+    except RecursionError:
+        from yaseer.basic.errors import OUT_OF_MEMORY
+        return ast.Line(number, [], text, error=BasicError("Out of memory", OUT_OF_MEMORY))
+    return ast.Line(number, statements, text)

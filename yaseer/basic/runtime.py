@@ -1,0 +1,199 @@
+"""Functions the compiled BASIC code calls: arithmetic with BASIC's errors, trig in
+degrees or radians, the string functions.
+
+Everything here works on Python floats (double precision) and str.  Errors are
+raised as ``BasicError`` (or as the Python exception the machine maps: a
+``ValueError`` from ``math`` is ``Illegal function call``).
+"""
+
+from __future__ import annotations
+
+import math
+
+from yaseer.basic.errors import (
+    BasicError, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_CALL, OVERFLOW, STRING_TOO_LONG,
+    SUBSCRIPT_OUT_OF_RANGE, TYPE_MISMATCH,
+)
+
+MAX_STRING = 255  # characters (MS-BASIC's limit)
+_RADIANS_PER_DEGREE = math.pi / 180.0
+
+
+def illegal_function_call() -> BasicError:
+    return BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+
+
+def overflow() -> None:
+    """Raise Overflow: a result beyond double range (the code checks ``x - x``)."""
+    raise BasicError("Overflow", OVERFLOW)
+
+
+def type_mismatch() -> BasicError:
+    return BasicError("Type mismatch", TYPE_MISMATCH)
+
+
+def subscript(x: float) -> int:
+    """An array subscript: rounded to the nearest integer; below 0 is out of range."""
+    if x < -0.5:
+        raise BasicError("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
+    return int(x + 0.5)
+
+
+def cint(x: float) -> int:
+    """Round to an integer for the logical operators, ON and CHR$ (half away from zero)."""
+    return int(x + 0.5) if x >= 0 else -int(-x + 0.5)
+
+
+def power(a: float, b: float) -> float:
+    """a ^ b; 0 ^ negative is Division by zero, negative ^ fraction Illegal function call."""
+    try:
+        return math.pow(a, b)
+    except ValueError:
+        if a == 0.0:
+            raise BasicError("Division by zero", DIVISION_BY_ZERO) from None
+        raise illegal_function_call() from None
+
+
+def int_divide(a: float, b: float) -> float:
+    """a \\ b: both rounded to integers, quotient truncated toward zero."""
+    x, y = cint(a), cint(b)
+    if y == 0:
+        raise BasicError("Division by zero", DIVISION_BY_ZERO)
+    q = abs(x) // abs(y)
+    return float(q if (x >= 0) == (y >= 0) else -q)
+
+
+def modulo(a: float, b: float) -> float:
+    """a MOD b: both rounded to integers; the remainder has the sign of a."""
+    x, y = cint(a), cint(b)
+    if y == 0:
+        raise BasicError("Division by zero", DIVISION_BY_ZERO)
+    return float(math.fmod(x, y))
+
+
+def logical_and(a: float, b: float) -> float:
+    return float(cint(a) & cint(b))
+
+
+def logical_or(a: float, b: float) -> float:
+    return float(cint(a) | cint(b))
+
+
+def logical_not(a: float) -> float:
+    return float(~cint(a))
+
+
+def sign(x: float) -> float:
+    return 1.0 if x > 0 else (-1.0 if x < 0 else 0.0)
+
+
+def floor(x: float) -> float:
+    """INT: the largest integer not above x."""
+    return float(math.floor(x))
+
+
+def fix(x: float) -> float:
+    """FIX: x with its fraction dropped (toward zero)."""
+    return float(math.trunc(x))
+
+
+# ------------------------------------------------------------------ trigonometry
+# In degree mode angles are reduced to [0, 360) first, and the multiples of 90
+# degrees give exact values (a 10-digit pocket computer shows COS 90 = 0), so
+# the paper's formulas divide by an exact zero there, as on the real machine.
+
+_EXACT_SIN = {0.0: 0.0, 90.0: 1.0, 180.0: 0.0, 270.0: -1.0}
+_EXACT_COS = {0.0: 1.0, 90.0: 0.0, 180.0: -1.0, 270.0: 0.0}
+
+
+def sin_degrees(x: float) -> float:
+    r = x % 360.0
+    exact = _EXACT_SIN.get(r)
+    return math.sin(r * _RADIANS_PER_DEGREE) if exact is None else exact
+
+
+def cos_degrees(x: float) -> float:
+    r = x % 360.0
+    exact = _EXACT_COS.get(r)
+    return math.cos(r * _RADIANS_PER_DEGREE) if exact is None else exact
+
+
+def tan_degrees(x: float) -> float:
+    r = x % 180.0
+    if r == 0.0:
+        return 0.0
+    if r == 90.0:
+        raise illegal_function_call()
+    return math.tan(r * _RADIANS_PER_DEGREE)
+
+
+def atn_degrees(x: float) -> float:
+    """ATN in degrees, in (-90, 90)."""
+    return math.degrees(math.atan(x))
+
+
+# ------------------------------------------------------------------ strings
+
+
+def concat(a: str, b: str) -> str:
+    text = a + b
+    if len(text) > MAX_STRING:
+        raise BasicError("String too long", STRING_TOO_LONG)
+    return text
+
+
+def left(s: str, n: float) -> str:
+    k = cint(n)
+    if k < 0:
+        raise illegal_function_call()
+    return s[:k]
+
+
+def right(s: str, n: float) -> str:
+    k = cint(n)
+    if k < 0:
+        raise illegal_function_call()
+    return s[len(s) - k:] if k else ""
+
+
+def mid(s: str, start: float, n: float | None = None) -> str:
+    i = cint(start)
+    if i < 1:
+        raise illegal_function_call()
+    if n is None:
+        return s[i - 1:]
+    k = cint(n)
+    if k < 0:
+        raise illegal_function_call()
+    return s[i - 1:i - 1 + k]
+
+
+def chr_dollar(n: float) -> str:
+    k = cint(n)
+    if not 0 <= k <= 255:
+        raise illegal_function_call()
+    return chr(k)
+
+
+def asc(s: str) -> float:
+    if not s:
+        raise illegal_function_call()
+    return float(ord(s[0]))
+
+
+def val(s: str) -> float:
+    """VAL: the number at the start of s (blanks ignored), 0 if there is none."""
+    text = s.replace(" ", "").upper()
+    best = 0.0
+    for end in range(len(text), 0, -1):
+        try:
+            best = float(text[:end])
+        except ValueError:
+            continue
+        if "N" in text[:end] or "I" in text[:end]:  # no NAN/INF spellings
+            best = 0.0
+            continue
+        break
+    if best - best:
+        overflow()
+    return best
