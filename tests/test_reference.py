@@ -358,3 +358,33 @@ def test_drive_values_enter_velocity_and_acceleration():
     moving = model.snapshot(q, Drive(math.radians(50), 2.0, 0.0))
     assert moving.omega("crank") == pytest.approx(2.0)
     assert polar(2, 90).xy(still.ar)[1] == pytest.approx(2.0)
+
+
+# --------------------------------------------------------------------------- the examples' loads
+
+def test_example5_crushing_force_resists_the_closing_jaw():
+    """F acts only while W(7) < 0, never does positive work, and T(14) stays in the contract's range."""
+    angles = [0.1 + 10 * k for k in range(36)]
+    loaded = 0
+    for s in example_snapshots(5, angles):
+        t14 = float(s.direction("jaw DoD", "D", "Do"))
+        assert -100.4 < t14 < -99.5
+        (load,) = s.mechanism.loads
+        force = load.force(s)
+        power = force[0] * s.velocity("jaw DoD", "P")[0] + force[1] * s.velocity("jaw DoD", "P")[1]
+        if s.omega("jaw DoD") < 0:
+            loaded += 1
+            assert math.hypot(*force) == pytest.approx(500 / (t14 + 100.5) ** 3, rel=1e-12)
+            assert power < 0
+        else:
+            assert force == (0.0, 0.0)
+    assert 5 < loaded < 31
+
+
+def test_example2_plunger_load_resists_the_plunger():
+    for s in example_snapshots(2, [5.0 + 20 * k for k in range(18)]):
+        (load,) = s.mechanism.loads
+        force, v = load.force(s), s.velocity("link CD", "D")
+        speed = math.hypot(*v)
+        assert math.hypot(*force) == pytest.approx(650 * speed ** 2, rel=1e-12)
+        assert force[0] * v[0] + force[1] * v[1] <= 0
