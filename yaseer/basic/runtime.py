@@ -153,7 +153,7 @@ def right(s: str, n: float) -> str:
     k = cint(n)
     if k < 0:
         raise illegal_function_call()
-    return s[len(s) - k:] if k else ""
+    return s[max(len(s) - k, 0):]  # RIGHT$("abc", 5) is "abc"
 
 
 def mid(s: str, start: float, n: float | None = None) -> str:
