@@ -1,10 +1,11 @@
 """Program 5's reference at 50 digits: the polar angle and length of a moving point.
 
 A different formulation from both Python methods: the point's path over a short
-time is the Taylor polynomial p(t) = p + v t + a t^2/2, and T(t) = atan2(y, x),
-L(t) = |p(t)| are differentiated numerically by mpmath (``mpmath.taylor``, which
-raises its working precision to keep ``dps`` correct digits).  Inputs are taken
-as the exact binary floats the methods receive.
+time is the Taylor polynomial p(t) = p + v t + a t^2/2, and the angle
+T(t) = T(0) + atan2(p(0) x p(t), p(0) . p(t)) (continuous through t = 0, even on
+atan2's cut at 180 deg) and L(t) = |p(t)| are differentiated numerically by
+mpmath (``mpmath.taylor``, which raises its working precision to keep ``dps``
+correct digits).  Inputs are taken as the exact binary floats the methods receive.
 """
 
 from __future__ import annotations
@@ -23,7 +24,12 @@ def virtual_link_reference(x, y, vx, vy, ax, ay, dps: int = 50) -> dict:
         def path_y(t):
             return py + qy * t + ry * t * t / 2
 
-        angle = mpmath.taylor(lambda t: mpmath.atan2(path_y(t), path_x(t)), 0, 2)
+        def turn(t):
+            x, y = path_x(t), path_y(t)
+            return mpmath.atan2(px * y - py * x, px * x + py * y)
+
+        angle = mpmath.taylor(turn, 0, 2)
+        angle[0] = mpmath.atan2(py, px)
         length = mpmath.taylor(lambda t: mpmath.hypot(path_x(t), path_y(t)), 0, 2)
         degrees = mpmath.degrees(angle[0])
         if degrees < 0:

@@ -1,0 +1,32 @@
+"""``yaseer stability``: every method swept towards the configurations where methods fail.
+
+Prints the table (sweep x method: worst error, NaN, exceptions, wrong branches,
+silent wrong numbers, what happened at the singular configuration) and writes
+``stability.csv``, ``stability_points.csv`` and the chart ``stability.png`` /
+``stability.svg`` to ``--out`` (default ``stability-out``).  See docs/stability.md.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+
+def add_arguments(parser) -> None:
+    parser.add_argument("--out", default="stability-out", help="folder for the CSV files and the chart (created)")
+    parser.add_argument("--no-chart", action="store_true", help="write the CSV files only")
+
+
+def main(args) -> int:
+    from yaseer.evaluation import stability
+
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    points = stability.sweep_points()
+    summary = stability.summarise(points)
+    print(stability.format_table(summary))
+    written = stability.write_all(out, points, summary)
+    if not args.no_chart:
+        written += stability.draw_chart(points, out / "stability")
+    for path in written:
+        print(f"wrote {path}")
+    return 0
