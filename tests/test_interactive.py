@@ -7,6 +7,7 @@ escape sequences removed.
 
 from __future__ import annotations
 
+import math
 import os
 import re
 import subprocess
@@ -144,3 +145,62 @@ def test_plain_input_when_stdin_is_not_a_terminal(tmp_path):
     assert "10 PRINT 1\n20 PRINT 2\n" in result.stdout
     assert "P0> 10 PRINT 1\nP0> Illegal function call\n" in result.stdout  # EDIT shows the line to retype
     assert result.stderr == ""
+
+
+def test_run_direct_mode_and_the_library_programs(terminal):
+    assert terminal.type("PRINT 2*3") == " 6 \n"
+    terminal.type("10 FOR I = 1 TO 3: PRINT I * I;: NEXT I: PRINT")
+    assert terminal.type("RUN") == " 1  4  9 \n"
+    assert terminal.type("PRINT I") == " 4 \n"  # variables survive the run
+    # the virtual link of the 3-4-5 triangle: T = atan(4/3) in degrees, L = 5
+    shown = terminal.type("X(10) = 3: Y(10) = 4: GOSUB PROG 5: PRINT T; L")
+    angle, length = (float(v) for v in shown.split())
+    assert angle == pytest.approx(math.degrees(math.atan2(4, 3)), abs=1e-8)
+    assert length == pytest.approx(5.0)
+    terminal.close()
+
+
+def test_stop_then_cont(terminal):
+    terminal.type("10 A = 1: PRINT \"ONE\"")
+    terminal.type("20 STOP")
+    terminal.type("30 PRINT \"TWO\"; A")
+    assert terminal.type("RUN") == "ONE\nBreak in 20\n"
+    terminal.type("A = 5")
+    assert terminal.type("CONT") == "TWO 5 \n"
+    assert terminal.type("CONT") == "Can't continue\n"
+    terminal.close()
+
+
+def test_ctrl_c_breaks_a_running_program_and_the_session_goes_on(terminal):
+    terminal.type("10 PRINT \"LOOPING\"")
+    terminal.type("20 N = N + 1")
+    terminal.type("30 X = SQR(N)")
+    terminal.type("40 GOTO 20")
+    terminal.child.send("RUN\r")
+    terminal.child.expect("LOOPING")
+    terminal.child.sendintr()
+    shown = plain(terminal.wait())
+    assert re.search(r"Break in (20|30|40)\n", shown)  # a line of the loop
+    count = float(terminal.type("PRINT N"))
+    assert count > 0
+    assert terminal.type("PRINT 1/0") == "Division by zero\n"
+    terminal.close()
+
+
+def test_a_run_time_error_names_its_line_and_the_program_stays(terminal):
+    terminal.type("10 X = 0")
+    terminal.type("50 PRINT 1 / X")
+    assert terminal.type("RUN") == "Division by zero in 50\n"
+    assert terminal.type("LIST") == "10 X = 0\n50 PRINT 1 / X\n"
+    terminal.close()
+
+
+def test_a_paper_listing_loads_and_runs(terminal):
+    listing = REPO / "listings" / "example3.bas"
+    shown = terminal.type(f'LOAD "{listing}"')
+    assert shown == ""
+    rows = terminal.type("RUN").splitlines()
+    assert len(rows) == 19  # T(2) = .1 TO 360.1 STEP 20
+    # the first "####.#" field is the crank angle
+    assert [float(row[:6]) for row in rows] == pytest.approx([0.1 + 20 * k for k in range(19)], abs=0.06)
+    terminal.close()

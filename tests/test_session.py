@@ -38,12 +38,12 @@ class RecordingEngine:
             raise error
 
     def run(self, areas, start):
-        self._act("run", dict(areas), start)
+        self._act("run", {area: dict(lines) for area, lines in areas.items() if lines}, start)
 
     def cont(self):
         self._act("cont")
 
-    def direct(self, statement):
+    def direct(self, statement, areas):
         self._act("direct", statement)
 
     def reset(self):
@@ -219,7 +219,7 @@ def test_prog_switches_the_edited_area(session):
 def test_run_hands_every_typed_area_to_the_machine(session):
     type_lines(session, "10 GOSUB PROG 7", "20 END", "PROG 7", "10 PRINT 7: RETURN", "PROG 0", "RUN")
     assert session.engine.calls[-1] == (
-        "run", {0: "10 GOSUB PROG 7\n20 END\n", 7: "10 PRINT 7: RETURN\n"}, None)
+        "run", {0: {10: "GOSUB PROG 7", 20: "END"}, 7: {10: "PRINT 7: RETURN"}}, None)
     session.handle("RUN 20")
     assert session.engine.calls[-1][2] == 20
     session.handle("RUN 30")

@@ -343,9 +343,8 @@ class Session:
         start = int(argument) if argument else None
         if start is not None and start not in self.programs[0]:
             raise BasicError("Undefined line number", UNDEFINED_LINE)
-        typed_areas = {area: program_text(lines) for area, lines in self.programs.items() if lines}
         self._can_continue = False
-        self._execute(lambda: self.engine.run(typed_areas, start), in_program=True)
+        self._execute(lambda: self.engine.run(self.programs, start), in_program=True)
 
     def command_cont(self, argument: str) -> None:
         """CONT: go on after STOP, END-less break or Ctrl-C."""
@@ -361,7 +360,7 @@ class Session:
 
     def direct(self, statement: str) -> None:
         """Run one direct-mode statement against the current variables."""
-        self._execute(lambda: self.engine.direct(statement), in_program=False)
+        self._execute(lambda: self.engine.direct(statement, self.programs), in_program=False)
 
     def _execute(self, action: Callable[[], object], in_program: bool) -> None:
         """Run ``action`` and show its error, if any.
@@ -419,8 +418,9 @@ class _Screen:
 class MachineEngine:
     """The session's view of the BASIC machine: run typed areas, continue, direct mode.
 
-    PRINT and LPRINT both show on the session's screen.  STOP and Ctrl-C come
-    back as a ``Break`` BasicError placed at the line (CONT resumes there).
+    PRINT and LPRINT both show on the session's screen.  STOP comes back as a
+    ``Break`` BasicError placed at the STOP's line (as MS-BASIC shows it), so
+    does Ctrl-C (the machine places it); CONT resumes after a STOP.
     """
 
     def __init__(self, write: Callable[[str], object]) -> None:
@@ -435,27 +435,47 @@ class MachineEngine:
         return self._machine
 
     def reset(self) -> None:
-        """Fresh variables and areas (NEW, RUN)."""
+        """Fresh variables and areas (NEW)."""
         self._machine = None
 
-    def run(self, areas: dict[int, str], start: int | None) -> None:
-        """Load each typed area's program text into a fresh machine and run PROG 0."""
+    def run(self, areas: dict[int, Program], start: int | None) -> None:
+        """RUN: a fresh machine with the typed areas' programs, from ``start`` or the top."""
         self.reset()
-        for area, text in sorted(areas.items()):
-            self.machine.load(text, area=area)
-        self._guard(lambda: self.machine.run(start))
+        self.sync(areas)
+        self._finish(self._guard(lambda: self.machine.run(start)))
 
     def cont(self) -> None:
-        """Go on from the last STOP or break."""
-        self._guard(self.machine.cont)
+        """CONT: go on from the last STOP."""
+        self._finish(self._guard(self.machine.cont))
 
-    def direct(self, statement: str) -> None:
-        """Execute one direct-mode statement."""
-        self._guard(lambda: self.machine.execute_direct(statement))
+    def direct(self, statement: str, areas: dict[int, Program]) -> None:
+        """Execute one direct-mode statement (a GOTO in it runs the typed program)."""
+        self.sync(areas)
+        self._finish(self._guard(lambda: self.machine.execute_direct(statement)))
+
+    def sync(self, areas: dict[int, Program]) -> None:
+        """Give the machine every typed area whose program it does not have yet.
+
+        Unchanged areas are left alone, so a STOPped program stays resumable.
+        An area emptied by NEW gets its library program back (if it has one).
+        """
+        machine = self.machine
+        for area, program in areas.items():
+            held = machine.programs.get(area)
+            if program and held != {n: text.strip() for n, text in program.items()}:
+                machine.load(program_text(program), area=area)
+            elif not program and held is not None and area in LIBRARY_AREAS:
+                from yaseer import binding
+
+                binding.install(machine)
+
+    def _finish(self, outcome: str) -> None:
+        if outcome == "stop":
+            raise BasicError("Break", BREAK, line=self.machine.line)
 
     @staticmethod
-    def _guard(action: Callable[[], object]) -> None:
+    def _guard(action: Callable[[], str]) -> str:
         try:
-            action()
-        except KeyboardInterrupt:
+            return action()
+        except KeyboardInterrupt:  # between the machine's own checks
             raise BasicError("Break", BREAK) from None
