@@ -20,8 +20,6 @@ The variable ``_ln`` tracks the BASIC line for error messages.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 from yaseer.basic import syntax_tree as ast
 from yaseer.basic.errors import (
     BasicError, FOR_WITHOUT_NEXT, SYNTAX_ERROR, TYPE_MISMATCH, UNDEFINED_LINE,
@@ -66,19 +64,24 @@ def array_local(name: str) -> str:
 # ------------------------------------------------------------------ the result
 
 
-@dataclass
 class CompiledArea:
-    """The compiled form of one program area."""
-    source: str  # the generated Python module text
-    pieces: list  # [(first BASIC line or None, Python source of one function)]
-    block_count: int
-    line_blocks: dict  # BASIC line number -> block number of its first statement
-    block_next: dict  # block -> block of the statement after it (RESUME NEXT)
-    data: list  # [(item text, line number)]
-    data_lines: dict  # line number -> index of its first DATA item
-    scalars: set  # every scalar name the area uses
-    first_line: int | None = None
-    blocks: list = field(default_factory=list)  # filled by the machine after exec
+    """The compiled form of one program area.
+
+    ``source`` the generated Python text; ``pieces`` [(first BASIC line or None,
+    source of one function)]; ``line_blocks`` BASIC line -> block starting there;
+    ``block_next`` block -> block of the statement after it (RESUME NEXT);
+    ``data`` [(DATA item text, line)]; ``data_lines`` line -> index of its first
+    item; ``scalars`` every scalar name used; ``blocks`` the block functions
+    (filled in by the machine after it executes the source).
+    """
+
+    def __init__(self, source, pieces, block_count, line_blocks, block_next, data, data_lines,
+                 scalars, first_line=None):
+        self.source, self.pieces, self.block_count = source, pieces, block_count
+        self.line_blocks, self.block_next = line_blocks, block_next
+        self.data, self.data_lines, self.scalars = data, data_lines, scalars
+        self.first_line = first_line
+        self.blocks: list = []
 
 
 # ------------------------------------------------------------------ planning
@@ -159,13 +162,18 @@ def _same_var(a, b) -> bool:
     return a == b
 
 
-@dataclass
 class _Plan:
-    entries: list  # sorted statement indices that start blocks (last: len(flat))
-    native: dict  # FOR index -> matching NEXT index
-    for_next: dict  # dynamic FOR index -> matching NEXT index
-    next_for: dict  # NEXT index -> FOR index (static match, for NEXT without a name)
-    fine: bool
+    """Where blocks start and which loops are native.
+
+    ``entries`` sorted statement indices that start blocks (the last is len(flat));
+    ``native`` FOR index -> its NEXT index, for loops compiled to ``while``;
+    ``for_next`` the same for loops run through the FOR stack; ``next_for`` NEXT
+    index -> FOR index; ``fine`` every statement starts a block (RESUME is used).
+    """
+
+    def __init__(self, entries, native, for_next, next_for, fine):
+        self.entries, self.native, self.for_next = entries, native, for_next
+        self.next_for, self.fine = next_for, fine
 
 
 def _match_loops(flat: list) -> tuple[dict, dict]:

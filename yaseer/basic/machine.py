@@ -530,7 +530,7 @@ class Machine:
                 while b >= 0:
                     b = blocks[b]()
                 return
-            except (ProgramEnd, ProgramStop, DirectJump):
+            except (ProgramEnd, ProgramStop, DirectJump, BrokenPipeError):
                 raise
             except BaseException as exc:  # noqa: BLE001 - every error becomes a BASIC error
                 err = to_basic_error(exc)

@@ -7,63 +7,119 @@ everything else is a number (``"n"``).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from typing import Union
+
+
+class Node:
+    """A syntax-tree node: fields named in ``_fields`` (class-level defaults allowed).
+
+    Plain classes rather than dataclasses: creating dataclasses costs start-up time.
+    """
+
+    __slots__ = ()
+    _fields: tuple = ()
+
+    def __init__(self, *args, **kwargs):
+        for name, value in zip(self._fields, args):
+            object.__setattr__(self, name, value)
+        for name in self._fields[len(args):]:
+            if name in kwargs:
+                value = kwargs.pop(name)
+            elif name in _DEFAULTS.get(type(self).__name__, {}):
+                value = _DEFAULTS[type(self).__name__][name]
+                value = list(value) if isinstance(value, list) else value
+            else:
+                raise TypeError(f"{type(self).__name__} needs {name}")
+            object.__setattr__(self, name, value)
+        if kwargs:
+            raise TypeError(f"{type(self).__name__} has no field {next(iter(kwargs))}")
+
+    def _values(self) -> tuple:
+        return tuple(getattr(self, name) for name in self._fields)
+
+    def __eq__(self, other):
+        return type(other) is type(self) and other._values() == self._values()
+
+    def __hash__(self):
+        return hash((type(self).__name__,) + tuple(
+            tuple(v) if isinstance(v, list) else v for v in self._values()))
+
+    def __repr__(self):
+        inner = ", ".join(f"{name}={getattr(self, name)!r}" for name in self._fields)
+        return f"{type(self).__name__}({inner})"
+
+
+_DEFAULTS: dict[str, dict] = {}
+
+
+def _node(cls):
+    """Class decorator: the annotated names become the node's fields, in order."""
+    annotations = cls.__dict__.get("__annotations__", {})
+    fields = tuple(annotations)
+    defaults = {name: cls.__dict__[name] for name in fields if name in cls.__dict__}
+    _DEFAULTS[cls.__name__] = {k: ([] if v is _LIST else v) for k, v in defaults.items()}
+    namespace = {k: v for k, v in cls.__dict__.items() if k not in fields and k not in ("__dict__", "__weakref__")}
+    namespace["__slots__"] = fields
+    namespace["_fields"] = fields
+    return type(cls.__name__, (Node,), namespace)
+
+
+_LIST = object()  # default: a fresh empty list
 
 # ---------------------------------------------------------------- expressions
 
 
-@dataclass(frozen=True)
+@_node
 class Num:
     value: float
 
 
-@dataclass(frozen=True)
+@_node
 class Str:
     value: str
 
 
-@dataclass(frozen=True)
+@_node
 class Var:
     """A scalar variable; ``name`` is upper case and keeps its ``$``."""
     name: str
 
 
-@dataclass(frozen=True)
+@_node
 class Elem:
     """An array element ``name(indices...)``."""
     name: str
     indices: tuple
 
 
-@dataclass(frozen=True)
+@_node
 class Unary:
     op: str  # "-", "+", "NOT"
     operand: object
 
 
-@dataclass(frozen=True)
+@_node
 class Binary:
     op: str  # "+", "-", "*", "/", "\\", "^", "MOD", "=", "<>", "<", ">", "<=", ">=", "AND", "OR"
     left: object
     right: object
 
 
-@dataclass(frozen=True)
+@_node
 class Call:
     """A built-in function; ``args`` may be empty (``RND``)."""
     name: str
     args: tuple
 
 
-@dataclass(frozen=True)
+@_node
 class FnCall:
     """A user function ``FN name(args)``."""
     name: str
     args: tuple
 
 
-@dataclass(frozen=True)
+@_node
 class SysVar:
     name: str  # "ERR", "ERL"
 
@@ -90,30 +146,30 @@ def expr_type(node) -> str:
 # ---------------------------------------------------------------- statements
 
 
-@dataclass
+@_node
 class Let:
     target: object
     value: object
 
 
-@dataclass
+@_node
 class Print:
     printer: bool  # LPRINT
     items: list  # expressions, "," ";" separators, Tab, Spc
     using: object = None  # format expression for PRINT USING
 
 
-@dataclass(frozen=True)
+@_node
 class Tab:
     column: object
 
 
-@dataclass(frozen=True)
+@_node
 class Spc:
     count: object
 
 
-@dataclass
+@_node
 class For:
     var: object
     start: object
@@ -121,124 +177,124 @@ class For:
     step: object = None
 
 
-@dataclass
+@_node
 class Next:
     var: object = None  # None: the innermost loop
 
 
-@dataclass
+@_node
 class Goto:
     target: int
 
 
-@dataclass
+@_node
 class Gosub:
     target: int
 
 
-@dataclass
+@_node
 class GosubProg:
     area: int
 
 
-@dataclass
+@_node
 class Return:
     pass
 
 
-@dataclass
+@_node
 class OnJump:
     selector: object
     targets: list
     gosub: bool
 
 
-@dataclass
+@_node
 class OnError:
     target: int  # 0 switches trapping off
 
 
-@dataclass
+@_node
 class End:
     pass
 
 
-@dataclass
+@_node
 class Stop:
     pass
 
 
-@dataclass
+@_node
 class Rem:
     text: str = ""
 
 
-@dataclass
+@_node
 class Dim:
     arrays: list  # [(name, (size exprs...))]
 
 
-@dataclass
+@_node
 class Clear:
     pass
 
 
-@dataclass
+@_node
 class Data:
     text: str
 
 
-@dataclass
+@_node
 class Read:
     targets: list
 
 
-@dataclass
+@_node
 class Restore:
     target: int | None = None
 
 
-@dataclass
+@_node
 class Input:
     prompt: str | None
     question_mark: bool
     targets: list
 
 
-@dataclass
+@_node
 class DefFn:
     name: str
     params: list
     body: object
 
 
-@dataclass
+@_node
 class Resume:
     mode: str  # "retry", "next", "line"
     target: int | None = None
 
 
-@dataclass
+@_node
 class Randomize:
     seed: object = None
 
 
-@dataclass
+@_node
 class Angle:
     mode: str  # "DEG" or "RAD"
 
 
-@dataclass
+@_node
 class If:
     condition: object
     then: object  # int line number or list of statements
     otherwise: object = None  # int, list or None
 
 
-@dataclass
+@_node
 class Line:
     """One program line: its number, its statements, and its source text."""
     number: int
-    statements: list = field(default_factory=list)
+    statements: list = _LIST
     text: str = ""
     error: object = None  # a BasicError when the line does not parse

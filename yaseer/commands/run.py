@@ -71,6 +71,10 @@ def main(args: argparse.Namespace) -> int:
         machine.flush()
         print(str(err), file=sys.stderr)
         return 1
+    except BrokenPipeError:  # the reader went away (e.g. `| head`): stop quietly
+        import os
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
     except KeyboardInterrupt:
         machine.flush()
         print(f"Break in {machine.line}" if machine.line is not None else "Break", file=sys.stderr)
