@@ -136,3 +136,49 @@ def test_dead_centre_cannot_be_driven_from_the_slider():
     far = math.sqrt((AO + AB) ** 2 - OFFSET ** 2)
     with pytest.raises(LockedError, match="dead centre"):
         crank_from_slider(-OFFSET, AO, AB, far, 1.0)
+
+
+# ------------------------------------------------------------ the listing
+
+import csv
+import subprocess
+import sys
+
+LISTING = Path(__file__).resolve().parent.parent / "listings" / "tk_slider_crank.bas"
+
+
+@pytest.fixture(scope="module")
+def listing_csv() -> list[list[str]]:
+    done = subprocess.run([sys.executable, "-m", "yaseer", "run", str(LISTING), "--format", "csv"],
+                          capture_output=True, text=True, check=True)
+    return list(csv.reader(done.stdout.splitlines()))
+
+
+def test_listing_prints_row_c_as_the_paper_then_the_crossed_row(listing_csv):
+    from yaseer.commands.diff import compare, csv_number_rows
+    rows = csv_number_rows("\n".join(",".join(r) for r in listing_csv))
+    table = parse_table((DATA / "seed001_norton_c.csv").read_text())
+    verdict = compare(rows[:1], table)
+    assert verdict.agrees and verdict.compared_cells == 6
+    theta, x, v, w, a, al = rows[1]
+    assert (theta, round(x, 2), round(v, 2), round(w, 2), round(a, 1), round(al, 2)) == \
+        (-30, -4.6, -3.54, -5.42, -490.0, 29.03)
+
+
+def test_listing_full_cycles_follow_the_independent_model(listing_csv):
+    rows = [list(map(float, r)) for r in listing_csv[2:50]]
+    for k, (theta, x, v, w, a, al) in enumerate(rows):
+        branch = OPEN if k < 24 else CROSSED
+        assert theta == 15 * (k % 24)
+        ref_x, ref_v, ref_a = time_derivatives(lambda t: slider_x(t, branch), theta, OMEGA, ALPHA)
+        _, ref_w, ref_al = time_derivatives(_unwrapped(lambda t: rod_angle(t, branch)), theta, OMEGA, ALPHA)
+        assert (x, v, w) == pytest.approx((ref_x, ref_v, ref_w), abs=1e-4)
+        assert (a, al) == pytest.approx((ref_a, ref_al), abs=5e-3)
+
+
+def test_listing_backsolve_recovers_the_crank(listing_csv):
+    label, theta, omega, alpha = listing_csv[-1]
+    assert label.startswith("BACKSOLVE")
+    expected = crank_from_slider(-OFFSET, AO, AB, 9.79, -41.46, -709.1, crank_side=RIGHT)
+    assert (float(theta), float(omega), float(alpha)) == pytest.approx(tuple(expected), rel=1e-9)
+    assert float(theta) == pytest.approx(THETA, abs=0.2) and float(omega) == pytest.approx(OMEGA, abs=0.1)

@@ -254,3 +254,45 @@ def test_precedence_alone_spoils_accb():
         b4 = B * math.sin(beta - phi)
         assert (b1 - b2 - b3) / b4 == pytest.approx(ref["accb"], rel=1e-5, abs=1e-4)
         assert abs((b1 - b2 - b3 / b4) - ref["accb"]) > 10.0
+
+
+# ------------------------------------------------------------ the listing
+
+import subprocess
+import sys
+
+LISTING = Path(__file__).resolve().parent.parent / "listings" / "fortran_fourbar.bas"
+
+
+@pytest.fixture(scope="module")
+def listing_rows() -> list[list[float]]:
+    from yaseer.commands.diff import csv_number_rows
+    done = subprocess.run([sys.executable, "-m", "yaseer", "run", str(LISTING), "--format", "csv"],
+                          capture_output=True, text=True, check=True)
+    return csv_number_rows(done.stdout)
+
+
+def test_listing_prints_the_correct_values_for_both_branches(listing_rows):
+    """THET, PHI, BETA, VELC, VELB, ACCC, ACCB against the independent model."""
+    assert [row[0] for row in listing_rows] == [t for t in THETAS_DEG for _ in (1, 2)]
+    for row, (_, ref, _) in zip(listing_rows, _rows_with_reference()):
+        theta, phi, beta, velc, velb, accc, accb = row
+        assert (phi, beta) == pytest.approx((ref["phi"], ref["beta"]), abs=1e-9)
+        assert (velc, velb) == pytest.approx((ref["velc"], ref["velb"]), abs=1e-5)
+        assert (accc, accb) == pytest.approx((ref["accc"], ref["accb"]), abs=1e-3)
+
+
+def test_diff_against_the_printed_table_flags_exactly_the_accc_cells(listing_rows):
+    from yaseer.commands.diff import compare
+    verdict = compare(listing_rows, parse_table((DATA / "seed003_printed.txt").read_text()), tol=0.1)
+    assert verdict.matched_rows == 14 and verdict.missing_rows == 0 and verdict.extra_rows == 0
+    flagged = [line for line in verdict.lines if "!" in line]
+    assert len(flagged) == verdict.differing_cells == 13
+    assert all(line.count("!") == 1 for line in flagged)  # one cell per row: ACCC
+
+
+def test_cli_diff_exit_status_is_one(tmp_path):
+    done = subprocess.run([sys.executable, "-m", "yaseer", "diff", str(LISTING), str(DATA / "seed003_printed.txt"),
+                           "--tol", "0.1"], capture_output=True, text=True)
+    assert done.returncode == 1
+    assert done.stdout.strip().splitlines()[-1].startswith("DIFFER: 14 rows matched, 13 of 53 cells differ")

@@ -233,10 +233,11 @@ def _fmt(value: float | None, decimals: int) -> str:
     return "" if value is None else f"{value:.{decimals}f}"
 
 
-def compare(program: list[list[float]], table: Table, tol: float | None = None) -> Verdict:
+def compare(program: list[list[float]], table: Table, tol: float | None = None, show_extra: bool = False) -> Verdict:
     """Set the program's rows beside the table's; mark each cell beyond tolerance.
 
-    A differing cell is shown as ``program|printed!``.
+    A differing cell is shown as ``program|printed!``; program rows the table does
+    not have are counted, and listed only with ``show_extra``.
     """
     verdict = Verdict()
     width = max([len(table.names)] + [len(r) for r in table.rows] + [len(r) for r in program] + [1])
@@ -245,7 +246,8 @@ def compare(program: list[list[float]], table: Table, tol: float | None = None) 
     for printed, values in _pair_rows(program, table, tol):
         if printed is None:
             verdict.extra_rows += 1
-            rendered.append([_fmt(v, decimals[j]) for j, v in enumerate(values)] + ["(extra)"])
+            if show_extra:
+                rendered.append([_fmt(v, decimals[j]) for j, v in enumerate(values)] + ["(extra)"])
             continue
         if values is None:
             verdict.missing_rows += 1
@@ -302,14 +304,16 @@ def program_rows(path: Path) -> list[list[float]]:
 
 
 def csv_number_rows(text: str) -> list[list[float]]:
-    """Rows of numbers from CSV text; rows holding any text (titles) are skipped."""
-    rows = []
+    """Rows of numbers from CSV text, read like a table: rows holding any text
+    (titles) are skipped, a short row lacks its leading cells and takes the key of
+    the row before (a listing printing a lower branch without repeating the angle)."""
+    table = Table()
     for fields in csv.reader(io.StringIO(text)):
         cells = [parse_cell(f) for f in fields]
-        if not cells or any(c.value is None for c in cells if not c.blank):
-            continue
-        rows.append([c.value for c in cells if not c.blank])
-    return rows
+        if cells and all(c.value is not None for c in cells):
+            table.rows.append(cells)
+    _left_pad(table)
+    return [[c.value for c in row] for row in table.rows]
 
 
 def add_arguments(parser) -> None:
@@ -317,6 +321,7 @@ def add_arguments(parser) -> None:
     parser.add_argument("table", type=Path, help="table typed from a paper (CSV or printed columns)")
     parser.add_argument("--tol", type=float, default=None,
                         help="absolute tolerance (default: half a unit of each printed cell's last digit)")
+    parser.add_argument("--extra", action="store_true", help="also list the program rows the table does not have")
 
 
 def main(args) -> int:
@@ -336,7 +341,10 @@ def main(args) -> int:
     except TableError as exc:
         print(str(exc), file=sys.stderr)
         return 2
-    verdict = compare(rows, table, args.tol)
+    if args.tol is not None and not args.tol >= 0:
+        print("--tol must be a non-negative number", file=sys.stderr)
+        return 2
+    verdict = compare(rows, table, args.tol, args.extra)
     for line in verdict.lines:
         print(line)
     tol_text = f"tol {args.tol:g}" if args.tol is not None else "half a printed digit"
