@@ -128,3 +128,14 @@ def test_static_tracking_gives_zero_rates():
     assert not tracked.fourbar.moving
     assert np.all(tracked.fourbar.coupler.omega == 0) and np.all(tracked.fourbar.follower.alpha == 0)
     assert len(tracked.switches) == 1
+
+
+def test_a_failed_step_leaves_the_track_as_it_was():
+    tracker = BranchTracker(UNCROSSED)
+    for angle in (80.0, 90.0):
+        tracker.step(SEED003, angle, 10.0)
+    with pytest.raises(LockedError):
+        tracker.step(SEED003, SEED003_LIMIT, 10.0)
+    result, switch = tracker.step(SEED003, 95.0, 10.0)
+    expected = fourbar_closed(*SEED003.astuple(), 95.0, 10.0, branch=UNCROSSED)
+    assert switch is None and complex(result.pin_b.pos) == pytest.approx(complex(expected.pin_b.pos))

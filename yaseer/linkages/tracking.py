@@ -245,17 +245,20 @@ class BranchTracker:
     def step(self, geometry: Geometry, theta_deg: float, omega: float = 0.0, alpha: float = 0.0,
              **rates) -> tuple[FourBar, BranchSwitch | None]:
         """Kinematics at the next position of the motion, and the switch made to reach it."""
-        if geometry != self.geometry:
-            self.geometry, self.history = geometry, _History()
+        history = _History(list(self.history.points)) if geometry == self.geometry else _History()
         theta = float(theta_deg)
         up, down = (complex(geometry.positions(theta, side)) for side in (UNCROSSED, CROSSED))
-        side, singular, switch = _advance(self.history, geometry, theta, up, down, self.start_branch)
+        side, singular, switch = _advance(history, geometry, theta, up, down, self.start_branch)
+        if singular and _is_moving(omega, alpha, *rates.values()):
+            direction = history.last_direction or math.copysign(1.0, omega or 1.0)
+            result = _singular_point(geometry, theta, omega, alpha, side, direction, rates)
+        else:
+            result = _point(geometry, theta, omega, alpha, side, rates)
+        # only a successful call moves the track on (a failed one leaves it as it was)
+        self.geometry, self.history = geometry, history
         if switch:
             self.switches.append(switch)
-        if singular and _is_moving(omega, alpha, *rates.values()):
-            direction = self.history.last_direction or math.copysign(1.0, omega or 1.0)
-            return _singular_point(geometry, theta, omega, alpha, side, direction, rates), switch
-        return _point(geometry, theta, omega, alpha, side, rates), switch
+        return result, switch
 
 
 def track(geometry: Geometry, crank_angles_deg, omega=0.0, alpha=0.0, *, start_branch: int = UNCROSSED,
