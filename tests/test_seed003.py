@@ -296,3 +296,9 @@ def test_cli_diff_exit_status_is_one(tmp_path):
                            "--tol", "0.1"], capture_output=True, text=True)
     assert done.returncode == 1
     assert done.stdout.strip().splitlines()[-1].startswith("DIFFER: 14 rows matched, 13 of 53 cells differ")
+
+
+def test_printed_velb_sign_is_wrong_in_every_upper_row_and_right_in_every_lower_row():
+    for k, (printed, ref, _) in enumerate(_rows_with_reference()):
+        same_sign = printed["velb"] * ref["velb"] > 0
+        assert same_sign == (k % 2 == 1)
