@@ -22,9 +22,12 @@ import numpy as np
 from yaseer.linkages.errors import SingularForceError, UnknownLoadError
 from yaseer.linkages.planar import Motion, cross
 
-# Determinant, after scaling rows and columns to unit size, below which the
-# system counts as singular (the unknowns cannot balance the loads).
-SINGULAR_DETERMINANT = 1e-10
+# Singularity test: with the rows scaled to unit size, a solution component more
+# than this many times the largest right-hand side means the matrix is singular
+# or nearly so (the unknowns cannot balance the loads).  An exactly singular
+# matrix makes LAPACK stop; a nearly singular one with an all-zero right-hand
+# side (nothing to balance) gives the zero solution.
+SINGULAR_GAIN = 1e9
 
 
 @dataclass(frozen=True)
@@ -98,7 +101,11 @@ def _rows(bodies: list[Body]) -> dict[str, int]:
 
 
 def _add(matrix_or_rhs, index, value, shape) -> None:
-    matrix_or_rhs[(Ellipsis, *index)] += np.broadcast_to(value, shape)
+    """Add ``value`` (broadcast over the positions) to one equation entry.
+
+    The arrays are laid out equations-first, (rows, [columns,] *positions), so
+    each entry is a contiguous vector over the positions."""
+    matrix_or_rhs[index] += np.broadcast_to(value, shape)
 
 
 def solve_kinetostatics(
@@ -125,8 +132,8 @@ def solve_kinetostatics(
     columns = _columns(joints, loads[unknown])
     if len(columns) != size:
         raise ValueError(f"{len(columns)} unknowns for {size} equations")
-    matrix = np.zeros(shape + (size, size))
-    rhs = np.zeros(shape + (size,))
+    matrix = np.zeros((size, size) + shape)
+    rhs = np.zeros((size,) + shape)
     for column, actions in enumerate(columns):
         for body_name, sign, direction, point in actions:
             body = by_name[body_name]
@@ -159,20 +166,19 @@ def solve_kinetostatics(
 
 
 def _solve(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
-    """Batched solve after scaling rows and columns; singular systems raise."""
-    row_scale = np.max(np.abs(matrix), axis=-1, keepdims=True)
+    """Solve the equations-first system at every position with one batched
+    ``numpy.linalg.solve``, rows scaled to unit size; singular systems raise."""
+    row_scale = np.max(np.abs(matrix), axis=1)
     row_scale[row_scale == 0] = 1.0
-    scaled = matrix / row_scale
-    column_scale = np.max(np.abs(scaled), axis=-2, keepdims=True)
-    column_scale[column_scale == 0] = 1.0
-    scaled = scaled / column_scale
-    determinant = np.linalg.det(scaled)
-    if np.any(~(np.abs(determinant) > SINGULAR_DETERMINANT)):
+    scaled = np.moveaxis(matrix / row_scale[:, None], (0, 1), (-2, -1))
+    right = np.moveaxis(rhs / row_scale, 0, -1)
+    try:
+        solution = np.linalg.solve(scaled, right[..., None])[..., 0]
+    except np.linalg.LinAlgError:
+        raise SingularForceError("the selected unknown cannot balance the loads") from None
+    gain_bound = SINGULAR_GAIN * np.max(np.abs(right), axis=-1, keepdims=True)
+    if not np.all(np.abs(solution) <= gain_bound):
         raise SingularForceError("the selected unknown cannot balance the loads")
-    scaled_solution = np.linalg.solve(scaled, (rhs / row_scale[..., 0])[..., None])[..., 0]
-    solution = scaled_solution / column_scale[..., 0, :]
-    if not np.all(np.isfinite(solution)):
-        raise SingularForceError("the force system has no finite solution")
     return solution
 
 
