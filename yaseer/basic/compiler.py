@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from yaseer.basic import syntax_tree as ast
 from yaseer.basic.errors import (
-    BasicError, FOR_WITHOUT_NEXT, SYNTAX_ERROR, TYPE_MISMATCH, UNDEFINED_LINE,
+    BasicError, FOR_WITHOUT_NEXT, OUT_OF_MEMORY, SYNTAX_ERROR, TYPE_MISMATCH, UNDEFINED_LINE,
 )
 
 _PY_RELATIONS = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
@@ -446,6 +446,10 @@ class AreaCompiler:
         if lkind != "n" or rkind != "n":
             raise _type_mismatch()
         if op in ("+", "-", "*", "/"):
+            # a left-leaning chain (A+B+C...) stays flat: Python groups + - and * / the same way
+            group = ("+", "-") if op in ("+", "-") else ("*", "/")
+            if isinstance(node.left, ast.Binary) and node.left.op in group and left.startswith("("):
+                left = left[1:-1]
             return f"({left} {op} {right})", "n"
         if op == "^":
             if isinstance(node.right, ast.Num) and node.right.value == 2.0 and _simple_operand(left):
@@ -502,7 +506,8 @@ class AreaCompiler:
         scope = _BlockScope(self)
         try:
             getattr(self, "stmt_" + type(stmt).__name__)(stmt, scope)
-        except CompileError as err:
+        except (CompileError, RecursionError) as exc:
+            err = exc if isinstance(exc, CompileError) else CompileError("Out of memory", OUT_OF_MEMORY)
             if self.cur is block:
                 del block.code[mark:]
             self.emit(f"raise _err({err.message!r}, {err.code})")

@@ -1,0 +1,345 @@
+"""Semantics of the BASIC machine, checked against values computed independently in Python."""
+
+import io
+import math
+
+import pytest
+
+from test_basic_helpers import error_of, run_rows, run_text, run_values
+from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL
+from yaseer.basic.machine import Machine
+
+
+def values(program, **options):
+    return [row for row in run_values(program, **options)]
+
+
+# ---------------------------------------------------------------- arithmetic
+
+
+def test_arithmetic_and_precedence():
+    rows = values("10 PRINT -2^2, 2^3^2, 2+3*4, 7/2, (1+2)*3, 2^-1, 7 MOD 3, -7 MOD 3, 7\\2, -7\\2")
+    assert rows == [[-4.0, 64.0, 14.0, 3.5, 9.0, 0.5, 1.0, -1.0, 3.0, -3.0]]
+
+
+def test_relations_give_minus_one_and_zero():
+    assert values('10 PRINT 1<2, 1>2, 2=2, 2<>2, 1<=1, 3>=4, "A"<"B"') == [[-1.0, 0.0, -1.0, 0.0, -1.0, 0.0, -1.0]]
+
+
+def test_logical_operators_are_bitwise_on_integers():
+    assert values("10 PRINT 5 AND 3, 5 OR 3, NOT 0, NOT -1, (1<2) AND (2<3)") == [[1.0, 7.0, -1.0, 0.0, -1.0]]
+
+
+def test_degree_trig_by_default():
+    rows = values("10 PRINT SIN 30, COS 60, TAN 45, ATN 1, COS 90, SIN 180, COS(-90.1)")
+    expected = [math.sin(math.radians(30)), math.cos(math.radians(60)), math.tan(math.radians(45)),
+                45.0, 0.0, 0.0, math.cos(math.radians(269.9))]
+    assert rows[0] == pytest.approx(expected, rel=1e-15, abs=1e-15)
+    assert rows[0][4] == 0.0  # exactly, as the pocket computer shows it
+
+
+def test_rad_statement_and_angle_option():
+    assert values("10 RAD: PRINT SIN 1, ATN 1: DEG: PRINT ATN 1") == [[math.sin(1), math.atan(1)], [45.0]]
+    assert values("10 PRINT COS 1", angle="rad") == [[math.cos(1)]]
+
+
+def test_functions():
+    rows = values("10 PRINT SQR 16, ABS(-3), INT(-2.5), FIX(-2.5), SGN(-4), SGN 0, EXP 1, LOG 10, LEN \"ABC\"")
+    assert rows == [[4.0, 3.0, -3.0, -2.0, -1.0, 0.0, math.e, math.log(10), 3.0]]
+
+
+def test_function_of_a_function_without_parentheses():
+    assert values("10 T=60: PRINT SQR ABS(-16), COST*2") == [[4.0, 2 * math.cos(math.radians(60))]]
+
+
+def test_string_functions():
+    rows = run_rows('10 A$="HELLO": PRINT LEFT$(A$,2); RIGHT$(A$,3); MID$(A$,2,3); MID$(A$,4); '
+                    'CHR$(65); ASC("a"); VAL(" 12.5xyz"); STR$(-3); A$+"!"; LEN(A$)')
+    assert rows == [["HE", "LLO", "ELL", "LO", "A", "97.0", "12.5", "-3", "HELLO!", "5.0"]]
+
+
+def test_scalars_and_arrays_are_separate():
+    assert values("10 L=5: L(2)=7: PRINT L, L(2)") == [[5.0, 7.0]]
+
+
+# ---------------------------------------------------------------- FOR / NEXT
+
+
+def test_for_array_element_control_variable_ends_one_step_past():
+    rows = values("10 FOR T(2) = .1 TO 360.1 STEP 20: PRINT T(2): NEXT T(2): PRINT T(2)")
+    expected, x = [], 0.1
+    while x <= 360.1:
+        expected.append(x)
+        x += 20
+    assert [r[0] for r in rows[:-1]] == expected
+    assert rows[-1] == [x]
+
+
+def test_negative_step_and_no_name_next():
+    rows = values("10 FOR QQ = 360.1 TO .1 STEP -20: PRINT QQ: NEXT: PRINT QQ")
+    expected, x = [], 360.1
+    while x >= 0.1:
+        expected.append(x)
+        x -= 20
+    assert [r[0] for r in rows] == expected + [x]
+
+
+def test_loop_test_comes_before_the_first_pass():
+    assert values("10 FOR I=5 TO 1: PRINT I: NEXT I: PRINT I") == [[5.0]]
+    # the same through the FOR stack (a GOSUB in the body)
+    assert values("10 FOR I=5 TO 1: GOSUB 50: NEXT I\n20 PRINT I: END\n50 PRINT 99: RETURN") == [[5.0]]
+
+
+def test_next_j_i_closes_two_loops():
+    rows = values("10 FOR I=1 TO 2: FOR J=1 TO 3: S=S+I*J: NEXT J, I: PRINT S, I, J")
+    assert rows == [[sum(i * j for i in (1, 2) for j in (1, 2, 3)), 3.0, 4.0]]
+
+
+def test_dynamic_loop_over_several_lines_with_gosub():
+    program = "10 FOR K=1 TO 3\n20 GOSUB 100\n30 NEXT K\n40 PRINT S: END\n100 S=S+K*K: RETURN\n"
+    assert values(program) == [[14.0]]
+
+
+def test_jump_back_loop():
+    assert values("10 K=0\n20 K=K+1: IF K<1000 THEN 20\n30 PRINT K") == [[1000.0]]
+
+
+def test_gosub_inside_if_branch_returns_into_the_branch():
+    program = '10 IF 1 THEN GOSUB 100: PRINT "then" ELSE PRINT "else"\n20 PRINT "next": END\n100 PRINT "sub": RETURN'
+    assert run_rows(program) == [["sub"], ["then"], ["next"]]
+
+
+# ---------------------------------------------------------------- jumps
+
+
+def test_on_goto_and_on_gosub():
+    program = ("10 FOR I=0 TO 3: ON I GOSUB 100, 200: NEXT: ON 2 GOTO 30, 40\n"
+               "30 PRINT 30: END\n40 PRINT 40: END\n100 PRINT 100: RETURN\n200 PRINT 200: RETURN\n")
+    assert values(program) == [[100.0], [200.0], [40.0]]
+
+
+def test_if_then_else_and_nested_if_in_else():
+    program = ('10 FOR X=1 TO 3: IF X=1 THEN PRINT "one" ELSE IF X=2 THEN PRINT "two" ELSE PRINT "many"\n'
+               '20 NEXT X')
+    assert run_rows(program) == [["one"], ["two"], ["many"]]
+
+
+def test_then_line_and_else_line():
+    program = "10 A=2: IF A>1 THEN 30 ELSE 40\n30 PRINT 30: END\n40 PRINT 40"
+    assert values(program) == [[30.0]]
+    assert values(program.replace("A=2", "A=0")) == [[40.0]]
+
+
+def test_nested_gosub():
+    program = "10 GOSUB 100: PRINT 3: END\n100 GOSUB 200: PRINT 2: RETURN\n200 PRINT 1: RETURN"
+    assert values(program) == [[1.0], [2.0], [3.0]]
+
+
+# ---------------------------------------------------------------- arrays
+
+
+def test_al_yaseer_implicit_dimensions():
+    assert values("10 F(46)=1: A(53)=2: P(4)=3: QZ(10)=4: PRINT F(46)+A(53)+P(4)+QZ(10)") == [[10.0]]
+    assert error_of("10 Z(6)=1") == "Subscript out of range in 10"
+    assert error_of("10 B(11)=1") == "Subscript out of range in 10"
+
+
+def test_own_dim_replaces_an_implicit_dimension():
+    assert values("10 DIM M(5): M(5)=1: PRINT M(5)") == [[1.0]]
+    assert error_of("10 DIM M(5): M(6)=1") == "Subscript out of range in 10"
+    assert values("10 DIM F(100): F(100)=3: PRINT F(100)") == [[3.0]]
+
+
+def test_paper_universal_line_runs():
+    program = ("2 CLEAR: DIM F(46), M(11), R(19), H(24), A(53), L(20), T(25), W(10),\n"
+               "Z(5), C(14), U(4), D(6), E(6), X(11), Y(11), V(21), Q(4), N(3), I(11), P(4)\n"
+               "10 L(20)=1: PRINT L(20)")
+    assert values(program) == [[1.0]]
+
+
+def test_multidimensional_arrays():
+    assert values("10 DIM B(2,3): B(2,3)=5: B(1,0)=2: PRINT B(2,3)*B(1,0)") == [[10.0]]
+    assert error_of("10 DIM B(2,3): B(3,1)=1") == "Subscript out of range in 10"
+
+
+def test_second_dim_is_a_duplicate_definition():
+    assert error_of("10 DIM M(5): DIM M(6)") == "Duplicate definition in 10"
+
+
+def test_subscripts_round():
+    assert values("10 L(2)=7: PRINT L(1.6), L(2.4)") == [[7.0, 7.0]]
+
+
+# ---------------------------------------------------------------- data, input, functions
+
+
+def test_data_read_restore():
+    program = '10 READ A, B$, C: PRINT A; B$; C: RESTORE 40: READ D: PRINT D\n30 DATA 1, "x, y"\n40 DATA 3'
+    assert run_rows(program) == [["1.0", "x, y", "3.0"], ["3.0"]]
+
+
+def test_input_from_a_stream():
+    machine = Machine(screen=io.StringIO(), output_format="csv", input_stream=io.StringIO("3, abc\n"))
+    machine.load('10 INPUT "N"; N, A$: PRINT N*2, A$')
+    machine.run()
+    assert machine.screen.stream.getvalue().splitlines()[-1] == "6.0,abc"
+
+
+def test_input_redo_on_bad_number():
+    machine = Machine(screen=io.StringIO(), input_stream=io.StringIO("x\n4\n"))
+    machine.load("10 INPUT N: PRINT N")
+    machine.run()
+    assert "?Redo from start" in machine.screen.stream.getvalue()
+    assert machine.scalar("N") == 4.0
+
+
+def test_def_fn():
+    assert values("10 DEF FNA(X)=X*X+B: B=1: PRINT FNA(3), FNA(FNA(1))") == [[10.0, 5.0]]
+
+
+def test_undefined_user_function():
+    assert error_of("10 PRINT FNZ(1)") == "Undefined user function in 10"
+
+
+def test_rnd_is_in_unit_interval_and_rnd0_repeats():
+    rows = values("10 FOR I=1 TO 50: X=RND(1): IF X<0 OR X>=1 THEN PRINT 999\n20 NEXT: Y=RND(1): PRINT Y=RND(0)")
+    assert rows == [[-1.0]]
+
+
+def test_randomize_reseeds_the_same_sequence():
+    rows = values("10 RANDOMIZE 7: A=RND(1): RANDOMIZE 7: PRINT A=RND(1)")
+    assert rows == [[-1.0]]
+
+
+# ---------------------------------------------------------------- printing
+
+
+def test_print_zones_semicolons_tab_spc():
+    out = run_text('10 PRINT "A","B";"C": PRINT TAB(5);"X";SPC(2);"Y": PRINT "P";\n20 PRINT "Q"')
+    assert out == "A" + " " * 13 + "BC\n" + "    X  Y\nPQ\n"
+
+
+def test_lprint_goes_to_the_printer_stream():
+    screen, printer = io.StringIO(), io.StringIO()
+    machine = Machine(screen=screen, printer=printer)
+    machine.load('10 PRINT "S": LPRINT "P"')
+    machine.run()
+    assert (screen.getvalue(), printer.getvalue()) == ("S\n", "P\n")
+
+
+def test_csv_rows_have_full_precision():
+    assert run_rows("10 PRINT 1/3; 2: PRINT USING \"##.#\"; 2/3") == [[repr(1 / 3), "2.0"], [repr(2 / 3)]]
+
+
+# ---------------------------------------------------------------- error trapping
+
+
+def test_on_error_resume_next_err_erl():
+    program = "10 ON ERROR GOTO 100\n20 A=1/0: PRINT 2\n30 PRINT ERR, ERL: END\n100 PRINT 1: RESUME NEXT"
+    assert values(program) == [[1.0], [2.0], [11.0, 20.0]]
+
+
+def test_resume_line_and_resume_retry():
+    program = ("10 ON ERROR GOTO 100\n20 B=0\n30 A=1/B: PRINT A: END\n"
+               "100 IF B=0 THEN B=4: RESUME\n110 RESUME 30")
+    assert values(program) == [[0.25]]
+
+
+def test_error_inside_handler_is_not_trapped():
+    assert error_of("10 ON ERROR GOTO 100\n20 A=1/0\n100 B=SQR(-1)") == "Illegal function call in 100"
+
+
+def test_on_error_goto_zero_switches_trapping_off():
+    assert error_of("10 ON ERROR GOTO 100: ON ERROR GOTO 0\n20 A=1/0\n100 END") == "Division by zero in 20"
+
+
+# ---------------------------------------------------------------- program areas
+
+
+def test_python_area_reads_and_writes_shared_state():
+    def area(machine):
+        machine.array("X")[2] = machine.array("L")[1] * 2
+        machine.set_scalar("T", machine.scalar("QQ") + 1)
+
+    machine = Machine(screen=io.StringIO(), output_format="csv")
+    machine.load("10 FOR QQ=1 TO 2: L(1)=QQ*10: GOSUB PROG 1: PRINT X(2), T: NEXT")
+    machine.set_area(1, area)
+    machine.run()
+    assert machine.screen.stream.getvalue().split() == ["20.0,2.0", "40.0,3.0"]
+
+
+def test_python_area_error_gets_the_calling_line():
+    def area(machine):
+        raise BasicError("Mechanism cannot be assembled (PROG 2)", ILLEGAL_FUNCTION_CALL)
+
+    message = error_of("4030 A=1\n4040 GOSUB PROG 2", setup=lambda m: m.set_area(2, area))
+    assert message == "Mechanism cannot be assembled (PROG 2) in 4040"
+
+
+def test_python_area_error_can_be_trapped():
+    def area(machine):
+        raise BasicError("Mechanism cannot be assembled (PROG 2)", ILLEGAL_FUNCTION_CALL)
+
+    machine = Machine(screen=io.StringIO(), output_format="csv")
+    machine.load("10 ON ERROR GOTO 100\n20 GOSUB PROG 2: PRINT 1\n30 PRINT 2: END\n100 PRINT ERR, ERL: RESUME NEXT")
+    machine.set_area(2, area)
+    machine.run()
+    assert machine.screen.stream.getvalue().split() == ["5.0,20.0", "1.0", "2.0"]
+
+
+def test_basic_area_shares_variables_and_returns():
+    machine = Machine(screen=io.StringIO(), output_format="csv")
+    machine.load("10 X(10)=3: GOSUB PROG 5: PRINT T, L\n20 END")
+    machine.set_area(5, "1 REM area\n10 T=X(10)*2\n20 L=T+1: RETURN\n")
+    machine.run()
+    assert machine.screen.stream.getvalue().split() == ["6.0,7.0"]
+
+
+def test_error_in_basic_area_names_the_area():
+    message = error_of("10 GOSUB PROG 5", setup=lambda m: m.set_area(5, "10 X=0\n20 Y=1/X: RETURN"))
+    assert message == "Division by zero in 20 (PROG 5)"
+
+
+def test_unbound_area():
+    assert error_of("10 A=1\n20 GOSUB PROG 5") == "Undefined program area 5 in 20"
+
+
+def test_keyboard_interrupt_is_break_in_line():
+    def area(machine):
+        raise KeyboardInterrupt
+
+    assert error_of("10 A=1\n20 GOSUB PROG 1", setup=lambda m: m.set_area(1, area)) == "Break in 20"
+
+
+# ---------------------------------------------------------------- interactive API
+
+
+def test_stop_and_cont():
+    machine = Machine(screen=io.StringIO(), output_format="csv")
+    machine.load("10 A=1: STOP: A=A+1: PRINT A\n20 PRINT 9")
+    assert machine.run() == "stop"
+    assert machine.scalar("A") == 1.0 and machine.line == 10
+    machine.execute_direct("A=10")
+    assert machine.cont() == "end"
+    assert machine.screen.stream.getvalue().split() == ["11.0", "9.0"]
+
+
+def test_cont_without_stop():
+    machine = Machine(screen=io.StringIO())
+    with pytest.raises(BasicError, match="Can't continue"):
+        machine.cont()
+
+
+def test_direct_mode_shares_variables_and_goto_runs_the_program():
+    machine = Machine(screen=io.StringIO(), output_format="csv")
+    machine.load("10 PRINT 1\n20 PRINT B*2")
+    machine.execute_direct("B=21: PRINT B")
+    machine.execute_direct("GOTO 20")
+    assert machine.screen.stream.getvalue().split() == ["21.0", "42.0"]
+
+
+def test_direct_mode_error_has_no_line():
+    machine = Machine(screen=io.StringIO())
+    with pytest.raises(BasicError) as info:
+        machine.execute_direct("A=1/0")
+    assert str(info.value) == "Division by zero"

@@ -1,0 +1,75 @@
+"""The LALR grammar: statement and expression shapes."""
+
+from yaseer.basic import syntax_tree as ast
+from yaseer.basic.parser import parse_line, parse_statements
+
+
+def one(text):
+    statements = parse_statements(text)
+    assert len(statements) == 1
+    return statements[0]
+
+
+def test_power_binds_tighter_than_unary_minus():
+    let = one("A=-2^2")
+    assert let.value == ast.Unary("-", ast.Binary("^", ast.Num(2.0), ast.Num(2.0)))
+
+
+def test_function_without_parentheses_takes_the_next_primary():
+    let = one("X=COS T*2")
+    assert let.value == ast.Binary("*", ast.Call("COS", (ast.Var("T"),)), ast.Num(2.0))
+
+
+def test_let_is_optional_and_array_element_target():
+    assert one("LET T(2) = QQ") == one("T(2)=QQ") == ast.Let(ast.Elem("T", (ast.Num(2.0),)), ast.Var("QQ"))
+
+
+def test_statements_after_then_belong_to_then():
+    stmt = one("IF A THEN B=1: C=2 ELSE D=3: E=4")
+    assert [s.target.name for s in stmt.then] == ["B", "C"]
+    assert [s.target.name for s in stmt.otherwise] == ["D", "E"]
+
+
+def test_else_binds_to_the_nearest_if():
+    stmt = one("IF A THEN IF B THEN 10 ELSE 20")
+    assert stmt.otherwise is None
+    assert stmt.then[0] == ast.If(ast.Var("B"), 10, 20)
+
+
+def test_then_and_goto_take_line_numbers():
+    assert one("IF X THEN 500") == ast.If(ast.Var("X"), 500, None)
+    assert one("IF X GOTO 500 ELSE 600") == ast.If(ast.Var("X"), 500, 600)
+
+
+def test_next_with_two_names_is_two_nexts():
+    assert parse_statements("NEXT J, I") == [ast.Next(ast.Var("J")), ast.Next(ast.Var("I"))]
+
+
+def test_gosub_prog():
+    assert one("GOSUB PROG 5") == ast.GosubProg(5)
+
+
+def test_print_using_items():
+    stmt = one('PRINT USING "###.#"; QQ; U(1)')
+    assert stmt.using == ast.Str("###.#")
+    assert stmt.items == [ast.Var("QQ"), ";", ast.Elem("U", (ast.Num(1.0),))]
+
+
+def test_for_with_negative_step():
+    stmt = one("FOR QQ = 360.1 TO .1 STEP - 20")
+    assert stmt.step == ast.Unary("-", ast.Num(20.0))
+
+
+def test_syntax_error_is_kept_on_the_line():
+    line = parse_line(5070, "PRINT 1: U(2): X=1")
+    assert line.statements == [] and str(line.error.at(5070)) == "Syntax error in 5070"
+
+
+def test_line_number_must_be_whole():
+    assert parse_line(10, "GOTO 1.5").error is not None
+
+
+def test_precedence_of_relations_and_logic():
+    stmt = one("A = 1 < 2 AND NOT 3 = 4 OR 0")
+    assert stmt.value.op == "OR"
+    assert stmt.value.left.op == "AND"

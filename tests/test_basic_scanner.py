@@ -1,0 +1,104 @@
+"""The keyword-first scanner and the listing splitter."""
+
+import pytest
+
+from yaseer.basic.errors import BasicError
+from yaseer.basic.scanner import split_lines, tokenize
+
+
+def kinds(text):
+    return [(t.type, t.value) for t in tokenize(text)]
+
+
+def test_function_name_inside_a_run_of_letters_is_a_keyword():
+    assert kinds("COST") == [("FUNC", "COS"), ("NAME", "T")]
+    assert kinds("SINT") == [("FUNC", "SIN"), ("NAME", "T")]
+
+
+def test_gosubprog_is_gosub_prog_number():
+    assert kinds("GOSUBPROG1") == [("GOSUB", "GOSUB"), ("PROG", "PROG"), ("NUMBER", 1.0)]
+
+
+def test_if_without_spaces():
+    assert [t for t, _ in kinds("IFX<0THENT=T+180")] == [
+        "IF", "NAME", "LT", "NUMBER", "THEN", "NAME", "EQ", "NAME", "PLUS", "NUMBER"]
+
+
+def test_keywords_in_any_case_and_names_upper_cased():
+    assert kinds("print qq") == [("PRINT", "PRINT"), ("NAME", "QQ")]
+
+
+def test_names_with_digits_and_string_names():
+    assert kinds("A1=B$") == [("NAME", "A1"), ("EQ", "="), ("STRNAME", "B$")]
+
+
+def test_keyword_wins_inside_a_longer_name():
+    # the pocket computers' tokenisers read TOTAL as TO TAL
+    assert kinds("TOTAL") == [("TO", "TO"), ("NAME", "TAL")]
+    assert kinds("INPUTX") == [("INPUT", "INPUT"), ("NAME", "X")]
+    assert kinds("INTX") == [("FUNC", "INT"), ("NAME", "X")]
+
+
+@pytest.mark.parametrize("text, value", [
+    (".1", 0.1), ("360.1", 360.1), ("1E-3", 0.001), ("2.5E+2", 250.0), ("15", 15.0), ("7.", 7.0),
+])
+def test_numbers(text, value):
+    assert kinds(text) == [("NUMBER", value)]
+
+
+def test_division_by_negative_literal():
+    assert kinds("1.25/-.85") == [("NUMBER", 1.25), ("SLASH", "/"), ("MINUS", "-"), ("NUMBER", 0.85)]
+
+
+def test_exponent_needs_digits_else_keyword_follows():
+    assert kinds("1ELSE") == [("NUMBER", 1.0), ("ELSE", "ELSE")]
+
+
+def test_relational_pairs():
+    assert [t for t, _ in kinds("<= =< >= => <> >< < > =")] == [
+        "LE", "LE", "GE", "GE", "NE", "NE", "LT", "GT", "EQ"]
+
+
+def test_string_literal_keeps_case_and_colons():
+    assert kinds('PRINT "a: b"') == [("PRINT", "PRINT"), ("STRING", "a: b")]
+
+
+def test_rem_and_apostrophe_swallow_the_rest():
+    assert kinds("REM X: Y") == [("REMARK", " X: Y")]
+    assert kinds("A=1 ' note: x") == [("NAME", "A"), ("EQ", "="), ("NUMBER", 1.0), ("REMARK", " note: x")]
+
+
+def test_data_text_is_raw_up_to_colon():
+    assert kinds('DATA 1, "a:b", x : PRINT') == [("DATA_TEXT", ' 1, "a:b", x '), ("_COLON", ":"),
+                                                 ("PRINT", "PRINT")]
+
+
+def test_question_mark_is_print():
+    assert kinds("?1") == [("PRINT", "PRINT"), ("NUMBER", 1.0)]
+
+
+def test_unknown_character_is_a_syntax_error():
+    with pytest.raises(BasicError, match="Syntax error"):
+        tokenize("A = 1 @ 2")
+
+
+def test_huge_literal_is_overflow():
+    with pytest.raises(BasicError, match="Overflow"):
+        tokenize("A = 1E999")
+
+
+def test_unnumbered_physical_lines_continue_the_previous_line():
+    text = ("20 FOR QQ = .1 TO 360.1 STEP 15: T(2) = QQ:\n"
+            "L(2) = 75: GOSUB\n"
+            "   PROG 1\n"
+            "30 L(11) = SQR(1.5^2 +\n"
+            " 5.5^2)\n")
+    assert split_lines(text) == [
+        (20, "FOR QQ = .1 TO 360.1 STEP 15: T(2) = QQ: L(2) = 75: GOSUB PROG 1", 0),
+        (30, "L(11) = SQR(1.5^2 + 5.5^2)", 3),
+    ]
+
+
+def test_text_before_the_first_line_number_is_an_error():
+    with pytest.raises(BasicError, match="Syntax error"):
+        split_lines("PRINT 1\n10 END\n")
