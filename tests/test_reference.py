@@ -146,10 +146,6 @@ def test_textbook_open_four_bar_angles():
 
 # --------------------------------------------------------------------------- finite differences
 
-def positions(n, angles, body, point):
-    return [s.position(body, point) for s in example_snapshots(n, angles)]
-
-
 @pytest.mark.parametrize("n, body, point", [(1, "link BD", "D"), (3, "member CCoD", "D"),
                                             (4, "link EDH", "E"), (5, "jaw DoD", "P"),
                                             (2, "rod ABC", "C")])
@@ -161,8 +157,9 @@ def test_rates_against_finite_differences_of_positions(n, body, point, theta):
     w = CRANK_RATE[n]
     h = 1e-4
     hd = math.degrees(h)
-    before, here, after = positions(n, [theta - hd, theta, theta + hd], body, point)
-    (s,) = example_snapshots(n, [theta])
+    snapshots = example_snapshots(n, [theta - hd, theta, theta + hd], level="accelerations")
+    before, here, after = (snap.position(body, point) for snap in snapshots)
+    s = snapshots[1]
     v, acc = s.velocity(body, point), s.acceleration(body, point)
     scale_v = max(abs(v[0]), abs(v[1]))
     scale_a = max(abs(acc[0]), abs(acc[1]))
@@ -177,9 +174,9 @@ def test_angular_rates_against_finite_differences():
     """Example 3's output member: W(4), A(4) against differences of its angle T(9)."""
     h = 1e-4
     hd = math.degrees(h)
-    angles = [200.0 - hd, 200.0, 200.0 + hd]
-    before, here, after = [float(s.angle("member CCoD")) for s in example_snapshots(3, angles)]
-    (s,) = example_snapshots(3, [200.0])
+    snapshots = example_snapshots(3, [200.0 - hd, 200.0, 200.0 + hd])
+    before, here, after = [float(snap.angle("member CCoD")) for snap in snapshots]
+    s = snapshots[1]
     w = 30
     assert abs(s.omega("member CCoD") - w * math.radians(after - before) / (2 * h)) < 1e-7 * abs(s.omega("member CCoD"))
     assert abs(s.alpha("member CCoD") - w * w * math.radians(after - 2 * here + before) / h ** 2) \
@@ -224,28 +221,83 @@ def momentum_balance(s, fixed_joints):
 
 
 @pytest.mark.parametrize("theta", [0.1, 100.1, 151.0, 300.1])
-def test_example5_whole_machine_momentum(theta):
-    (s,) = example_snapshots(5, [theta])
+@pytest.mark.parametrize("gravity", [0, 9.81])
+def test_example5_whole_machine_momentum(theta, gravity):
+    (s,) = example_snapshots(5, [theta], gravity=gravity)
     residual = momentum_balance(s, [("Ao", "crank"), ("Bo", "toggle BoB"), ("Do", "jaw DoD")])
     scale = max(abs(c) for c in s.reaction("Bo", "toggle BoB")) + 1
     assert all(abs(r) < 1e-8 * scale for r in residual)
+
+
+@pytest.mark.parametrize("theta", [40.1, 130.0])
+def test_example5_every_body_obeys_newton_euler(theta):
+    """Each body: sum of the joint forces on it + loads + weight = m a_G, and moments about G
+    = I alpha.  Checks every reaction's sign convention (the force on the body named)."""
+    (s,) = example_snapshots(5, [theta], gravity=9.81)
+    mech = s.mechanism
+    for body in mech.bodies.values():
+        g = s.position(body.name, body.centre)
+        fx = fy = moment = 0.0
+
+        def add(force, at):
+            nonlocal fx, fy, moment
+            fx, fy = fx + force[0], fy + force[1]
+            moment += (at[0] - g[0]) * force[1] - (at[1] - g[1]) * force[0]
+
+        for joint in mech.constraints.values():
+            if isinstance(joint, Revolute) and body in (joint.body_i, joint.body_j):
+                local = joint.local_i if body is joint.body_i else joint.local_j
+                add(s.reaction(joint.name, body.name), s.position(body.name, local))
+        for load in mech.loads:
+            if load.body is body:
+                add(load.force(s), s.position(body.name, load.local))
+        add((0.0, -float(body.mass) * 9.81), g)
+        if body.name == "crank":
+            moment += s.driver_torque("crank")
+        acc = s.acceleration(body.name, body.centre)
+        scale = 1 + max(abs(fx), abs(fy), float(body.mass) * math.hypot(*acc))
+        assert abs(fx - float(body.mass) * acc[0]) < 1e-9 * scale, body.name
+        assert abs(fy - float(body.mass) * acc[1]) < 1e-9 * scale, body.name
+        assert abs(moment - float(body.inertia) * s.alpha(body.name)) < 1e-9 * (scale + abs(moment)), body.name
+
+
+def test_action_equals_reaction_at_pins():
+    (s,) = example_snapshots(5, [77.0])
+    on_pitman, on_toggle = s.reaction("B", "pitman ABC"), s.reaction("B", "toggle BoB")
+    assert on_pitman == (-on_toggle[0], -on_toggle[1])
+    with pytest.raises(ValueError, match="not in joint"):
+        s.reaction("B", "jaw DoD")
+
+
+def test_levels_compute_no_more_than_asked():
+    (p,) = example_snapshots(4, [50.0], level="positions")
+    with pytest.raises(ValueError, match="velocities were not computed"):
+        p.velocity("link EDH", "E")
+    (v,) = example_snapshots(4, [50.0], level="velocities")
+    (a,) = example_snapshots(4, [50.0])
+    assert v.velocity("link EDH", "E") == a.velocity("link EDH", "E")
+    with pytest.raises(ValueError, match="accelerations were not computed"):
+        v.alpha("link EDH")
+    assert p.position("link EDH", "E") == a.position("link EDH", "E")
+    with pytest.raises(ValueError, match="level is one of"):
+        example_snapshots(4, [50.0], level="jerks")
 
 
 def kinetic_energy_rate_by_differences(n, theta, h=1e-4):
     from yaseer.reference.paper_mechanisms import CRANK_RATE
 
     hd = math.degrees(h)
-    before, after = example_snapshots(n, [theta - hd, theta + hd])
+    before, after = example_snapshots(n, [theta - hd, theta + hd], level="velocities")
     return CRANK_RATE[n] * (after.kinetic_energy() - before.kinetic_energy()) / (2 * h)
 
 
-@pytest.mark.parametrize("n", [2, 5])
+@pytest.mark.parametrize("n, gravity", [(2, 0), (5, 0), (5, 9.81)])
 @pytest.mark.parametrize("theta", [20.1, 120.1, 250.0])
-def test_drive_power_balances_energy(n, theta):
-    """U w = dT/dt - power of the loads; dT/dt by central differences of the kinetic energy."""
+def test_drive_power_balances_energy(n, gravity, theta):
+    """U w = dT/dt - power of the loads and gravity; dT/dt by central differences of the kinetic energy."""
     from yaseer.reference.paper_mechanisms import CRANK_RATE
 
-    (s,) = example_snapshots(n, [theta])
+    (s,) = example_snapshots(n, [theta], gravity=gravity)
     drive_power = s.driver_torque("crank") * CRANK_RATE[n]
     expected = kinetic_energy_rate_by_differences(n, theta) - s.power_of_loads()
     assert abs(drive_power - expected) < 1e-6 * (abs(expected) + abs(s.power_of_loads()) + 1e-3)
@@ -266,7 +318,7 @@ def test_slider_crank_with_gravity_power_and_piston_forces(theta):
         placement = {"crank": (0, 0, angle), "rod": (3 * math.cos(math.radians(angle)),
                                                       3 * math.sin(math.radians(angle)), 5),
                      "piston": (9, 2, 0)}
-        (s,) = model.analyse([angle], w, 0, model.coordinates(placement), forces=True)
+        (s,) = model.analyse([angle], w, 0, model.coordinates(placement), level="forces")
         return s
 
     s, before, after = solve(theta), solve(theta - math.degrees(h)), solve(theta + math.degrees(h))

@@ -342,15 +342,23 @@ def example_mechanism(n: int):
         raise ValueError(f"the paper has examples 1 to 5, not {n!r}") from None
 
 
-def example_snapshots(n: int, crank_angles=None, number="float", dps=50):
-    """Solved states of example ``n`` at ``crank_angles`` (degrees; default the listing's loop)."""
+def example_snapshots(n: int, crank_angles=None, number="float", dps=50, gravity=0, level=None):
+    """Solved states of example ``n`` at ``crank_angles`` (degrees; default the listing's loop).
+
+    ``gravity``: acceleration of gravity along -y (the listings leave G = 0).
+    ``level``: as Mechanism.analyse; default "forces" for Examples 2 and 5,
+    "accelerations" for the others.
+    """
     mechanism, sketch, home, check, _, forces = example_mechanism(n)
+    mechanism.gravity = gravity
     angles = EXAMPLE_ANGLES[n] if crank_angles is None else list(crank_angles)
+    if level is None:
+        level = "forces" if forces else "accelerations"
     return mechanism.analyse(angles, CRANK_RATE[n], 0, sketch, number=number, dps=dps,
-                             forces=forces, branch_check=check, home_deg=home)
+                             level=level, branch_check=check, home_deg=home)
 
 
-def example_columns(n: int, crank_angles=None, number="float", dps=50):
+def example_columns(n: int, crank_angles=None, number="float", dps=50, gravity=0):
     """The columns example ``n`` prints (see COLUMNS[n]), one row per crank angle, as a numpy array.
 
     Float by default; ``number="mpmath"`` gives an object array of mpf at ``dps`` digits.
@@ -359,7 +367,7 @@ def example_columns(n: int, crank_angles=None, number="float", dps=50):
 
     _, _, _, _, columns, _ = example_mechanism(n)
     angles = EXAMPLE_ANGLES[n] if crank_angles is None else list(crank_angles)
-    snapshots = example_snapshots(n, angles, number, dps)
+    snapshots = example_snapshots(n, angles, number, dps, gravity)
     rows = [columns(s, angle) for s, angle in zip(snapshots, angles)]
     if number == "float":
         return np.array(rows, dtype=float)

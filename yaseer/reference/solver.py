@@ -408,6 +408,10 @@ class Couple:
 
 # --------------------------------------------------------------------------- the mechanism
 
+#: how far an analysis goes; each level includes the ones before it
+LEVELS = ("positions", "velocities", "accelerations", "forces")
+
+
 class Mechanism:
     """Bodies, constraints (exactly one AngleDriver for a 1-DOF mechanism), loads and gravity.
 
@@ -601,34 +605,40 @@ class Mechanism:
                 rows.append(row)
         return rows
 
-    def check_conditioning(self, q, drive, ar, accuracy):
-        """(kappa, kappa^2 * unit roundoff); MechanismError if the latter exceeds ``accuracy``.
+    def check_conditioning(self, q, drive, ar, accuracy, level="accelerations"):
+        """(kappa, error bound); MechanismError if the bound exceeds ``accuracy``.
 
         Near a singular configuration (toggle, change point, dead point of a
         driven link) Newton's positions carry a relative error of about kappa*u
-        and the rates, solved with that Jacobian, about kappa^2*u.
+        (u the unit roundoff) and the rates, solved with that Jacobian, about
+        kappa^2*u: the bound is kappa*u for ``level="positions"``, else kappa^2*u.
         """
         roundoff = 2.0 ** -53 if ar is FLOAT else 10.0 ** -ar.dps
         kappa = self.condition(q, ar)
-        bound = kappa * kappa * roundoff if kappa < math.inf else math.inf
+        power = 1 if level == "positions" else 2
+        bound = kappa ** power * roundoff if kappa < math.inf else math.inf
         if not bound <= accuracy:
             angle = ar.to_float(ar.degrees(drive.angle))
             raise MechanismError(
                 f"singular configuration near crank angle {angle:.12g} deg (condition number "
                 f"{kappa:.3g}: a toggle, change point or dead point where the constraints do not "
-                f"fix the motion; {ar.name} arithmetic cannot give the rates to {accuracy:g})")
+                f"fix the motion; {ar.name} arithmetic cannot give the "
+                f"{'positions' if power == 1 else 'rates'} to {accuracy:g})")
         return kappa, bound
 
-    def snapshot(self, q, drive, ar=FLOAT, *, rates=True, forces=False) -> "Snapshot":
-        """Velocities, accelerations (if ``rates``) and forces (if ``forces``) at position ``q``."""
-        if forces and not rates:
-            raise ValueError("forces need the accelerations")
-        qd = qdd = None
-        if rates:
-            qd = self.velocities(q, drive, ar)
-            qdd = self.accelerations(q, qd, drive, ar)
+    def snapshot(self, q, drive, ar=FLOAT, *, level="accelerations") -> "Snapshot":
+        """The state at position ``q`` computed up to ``level``.
+
+        ``level``: "positions", "velocities", "accelerations" or "forces" (each
+        includes the ones before it).
+        """
+        if level not in LEVELS:
+            raise ValueError(f"level is one of {', '.join(LEVELS)}, not {level!r}")
+        depth = LEVELS.index(level)
+        qd = self.velocities(q, drive, ar) if depth >= 1 else None
+        qdd = self.accelerations(q, qd, drive, ar) if depth >= 2 else None
         snap = Snapshot(self, ar, q, qd, qdd, drive)
-        if forces:
+        if depth >= 3:
             snap.lam = self.multipliers(snap)
         return snap
 
@@ -646,57 +656,64 @@ class Mechanism:
         return q
 
     def analyse(self, angles_deg, rate, acceleration, q_guess, *, number="float", dps=50,
-                forces=False, rates=True, max_step_deg=2.0, branch_check=None, home_deg=None,
+                level="accelerations", max_step_deg=2.0, branch_check=None, home_deg=None,
                 accuracy=1e-6):
         """Analyse the mechanism at each driver angle of ``angles_deg`` (degrees, in order).
 
         ``rate``, ``acceleration``: the driver's rad/s and rad/s^2 (the same at
-        every position).  ``q_guess``: coordinates near the first position; the
-        first position is found by Newton from it, each next one by continuation
-        from the previous (float steps of at most ``max_step_deg``, predictor
-        from the tangent).  With ``home_deg``, ``q_guess`` is near the position
-        at driver angle ``home_deg`` and the continuation starts there.  ``number="mpmath"`` polishes every position by
-        Newton at ``dps`` digits and computes rates and forces there.
+        every position).  ``level``: how far to go ("positions", "velocities",
+        "accelerations", "forces").  ``q_guess``: coordinates near the first
+        position; the first position is found by Newton from it, each next one
+        by continuation from the previous (float steps of at most
+        ``max_step_deg``, predictor from the tangent).  With ``home_deg``,
+        ``q_guess`` is near the position at driver angle ``home_deg`` and the
+        continuation starts there.  ``number="mpmath"`` polishes every position
+        by Newton at ``dps`` digits and computes rates and forces there.
         ``branch_check(snapshot)`` may raise MechanismError when the assembly
         branch is lost.  Each position is checked for conditioning
-        (:meth:`check_conditioning`): where the estimated relative error of the
-        rates exceeds ``accuracy`` the analysis stops with MechanismError
-        instead of returning a wrong number.  Returns a list of :class:`Snapshot`.
+        (:meth:`check_conditioning`): where the estimated relative error
+        exceeds ``accuracy`` the analysis stops with MechanismError instead of
+        returning a wrong number.  Returns a list of :class:`Snapshot`.
         """
         ar = arithmetic_for(number, dps)
-        angles = list(angles_deg)
         results = []
-        q_float, previous = None, None
+        q_float, previous = q_guess, None
         if home_deg is not None:
-            q_float = self._continue(q_guess, None, float(home_deg), first=True,
-                                     max_step_deg=max_step_deg)
+            q_float = self._continue(q_guess, None, float(home_deg), max_step_deg=max_step_deg)
             previous = float(home_deg)
-        # A float stage that only guesses for mpmath stops early: near a singular
-        # position float Newton cannot reach 1e-13, the mpmath polish can.
-        loose = None if ar is FLOAT else 1e-9
-        for angle in angles:
-            q_float = self._continue(q_float if q_float is not None else q_guess,
-                                     previous, float(angle), first=q_float is None,
-                                     max_step_deg=max_step_deg, tolerance=loose)
+        for angle in angles_deg:
+            q_float, q = self._position(q_float, previous, float(angle), ar, max_step_deg)
             previous = float(angle)
-            q = q_float if ar is FLOAT else self.newton(q_float, self._drive(ar, angle, 0, 0), ar,
-                                                        max_iterations=200)
             drive = self._drive(ar, angle, rate, acceleration)
-            condition, bound = self.check_conditioning(q, drive, ar, accuracy)
-            snap = self.snapshot(q, drive, ar, rates=rates, forces=forces)
+            condition, bound = self.check_conditioning(q, drive, ar, accuracy, level)
+            snap = self.snapshot(q, drive, ar, level=level)
             snap.condition, snap.error_bound = condition, bound
             if branch_check is not None:
                 branch_check(snap)
             results.append(snap)
         return results
 
+    def _position(self, q_float, previous_deg, angle_deg, ar, max_step_deg):
+        """(float position, position in ``ar``) at ``angle_deg``, continuing from ``previous_deg``.
+
+        A float stage that only guesses for mpmath stops at 1e-9: near a
+        singular position float Newton cannot reach 1e-13, the mpmath polish can.
+        """
+        loose = None if ar is FLOAT else 1e-9
+        q_float = self._continue(q_float, previous_deg, angle_deg, max_step_deg=max_step_deg,
+                                 tolerance=loose)
+        if ar is FLOAT:
+            return q_float, q_float
+        return q_float, self.newton(q_float, self._drive(ar, angle_deg, 0, 0), ar, max_iterations=200)
+
     @staticmethod
     def _drive(ar, angle_deg, rate, acceleration):
         return Drive(ar.radians(ar.num(angle_deg)), ar.num(rate), ar.num(acceleration))
 
-    def _continue(self, q, from_deg, to_deg, *, first, max_step_deg, tolerance=None):
-        """Float positions: Newton at ``to_deg`` from ``q`` (at ``from_deg``), stepping along the tangent."""
-        if first:
+    def _continue(self, q, from_deg, to_deg, *, max_step_deg, tolerance=None):
+        """Float positions: Newton at ``to_deg`` from ``q`` (at ``from_deg``; None: ``q`` is a
+        guess for ``to_deg`` itself), stepping along the tangent."""
+        if from_deg is None:
             return self.newton(q, self._drive(FLOAT, to_deg, 0, 0), tolerance=tolerance,
                                max_iterations=100)
         span = to_deg - from_deg
@@ -740,19 +757,29 @@ class Snapshot:
         """Body angle in degrees, in (-180, 180]."""
         return normalise_degrees(self.ar.degrees(self.q[3 * self.mechanism.body(body).index + 2]), self.ar)
 
+    def _need(self, values, what):
+        if values is None:
+            raise ValueError(f"{what} were not computed (analyse with a higher level)")
+        return values
+
     def omega(self, body: str):
-        return self.qd[3 * self.mechanism.body(body).index + 2]
+        """Angular velocity of a body (rad/s, ccw +)."""
+        return self._need(self.qd, "velocities")[3 * self.mechanism.body(body).index + 2]
 
     def alpha(self, body: str):
-        return self.qdd[3 * self.mechanism.body(body).index + 2]
+        """Angular acceleration of a body (rad/s^2, ccw +)."""
+        return self._need(self.qdd, "accelerations")[3 * self.mechanism.body(body).index + 2]
 
     def position(self, body: str, point):
+        """Global (x, y) of a body point (a name, or drawing-frame coordinates)."""
         return self.kin.position(*self._local(body, point))
 
     def velocity(self, body: str, point):
+        self._need(self.qd, "velocities")
         return self.kin.velocity(*self._local(body, point))
 
     def acceleration(self, body: str, point):
+        self._need(self.qdd, "accelerations")
         return self.kin.acceleration(*self._local(body, point))
 
     def direction(self, body: str, point_from, point_to):
@@ -762,7 +789,7 @@ class Snapshot:
 
     def _multipliers(self, name):
         if self.lam is None:
-            raise ValueError("forces were not computed (analyse with forces=True)")
+            raise ValueError("forces were not computed (analyse with level='forces')")
         return [self.lam[r] for r in self.mechanism.rows[name]]
 
     def reaction(self, joint: str, on: str | None):
