@@ -139,3 +139,13 @@ def test_a_failed_step_leaves_the_track_as_it_was():
     result, switch = tracker.step(SEED003, 95.0, 10.0)
     expected = fourbar_closed(*SEED003.astuple(), 95.0, 10.0, branch=UNCROSSED)
     assert switch is None and complex(result.pin_b.pos) == pytest.approx(complex(expected.pin_b.pos))
+
+
+def test_a_deferred_step_moves_the_track_only_when_accepted():
+    tracker = BranchTracker(CROSSED)
+    for angle in (170.0, 175.0, 180.0):
+        tracker.step(SEED004, angle, 1.0)
+    _, switch = tracker.step(SEED004, 185.0, 1.0, defer=True)
+    assert switch is not None and tracker.switches == [] and tracker.branch == CROSSED
+    tracker.accept()
+    assert tracker.switches == [switch] and tracker.branch == UNCROSSED

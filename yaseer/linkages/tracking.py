@@ -237,14 +237,18 @@ class BranchTracker:
         self.geometry: Geometry | None = None
         self.history = _History()
         self.switches: list[BranchSwitch] = []
+        self._pending = None
 
     @property
     def branch(self) -> int:
         return self.history.points[-1][2] if self.history.points else self.start_branch
 
-    def step(self, geometry: Geometry, theta_deg: float, omega: float = 0.0, alpha: float = 0.0,
-             **rates) -> tuple[FourBar, BranchSwitch | None]:
-        """Kinematics at the next position of the motion, and the switch made to reach it."""
+    def step(self, geometry: Geometry, theta_deg: float, omega: float = 0.0, alpha: float = 0.0, *,
+             defer: bool = False, **rates) -> tuple[FourBar, BranchSwitch | None]:
+        """Kinematics at the next position of the motion, and the switch made to reach it.
+
+        With ``defer`` the track moves on only when :meth:`accept` is called (a
+        caller that may still fail after the kinematics, e.g. in its forces)."""
         history = _History(list(self.history.points)) if geometry == self.geometry else _History()
         theta = float(theta_deg)
         up, down = (complex(geometry.positions(theta, side)) for side in (UNCROSSED, CROSSED))
@@ -255,10 +259,19 @@ class BranchTracker:
         else:
             result = _point(geometry, theta, omega, alpha, side, rates)
         # only a successful call moves the track on (a failed one leaves it as it was)
-        self.geometry, self.history = geometry, history
+        self._pending = (geometry, history, switch)
+        if not defer:
+            self.accept()
+        return result, switch
+
+    def accept(self) -> None:
+        """Move the track on to the last step's position."""
+        if self._pending is None:
+            return
+        self.geometry, self.history, switch = self._pending
+        self._pending = None
         if switch:
             self.switches.append(switch)
-        return result, switch
 
 
 def track(geometry: Geometry, crank_angles_deg, omega=0.0, alpha=0.0, *, start_branch: int = UNCROSSED,
