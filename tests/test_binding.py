@@ -323,3 +323,14 @@ def test_unknown_method_or_program_is_rejected_at_install():
     m.set(X={10: 1.0}, Y={10: 0.0})
     with pytest.raises(BasicError, match="Division by zero"):
         m.call(5)
+
+
+def test_program_3_paper_method_is_selectable_and_breaks_at_a_vertical_follower():
+    inputs = dict(L={6: 1.0, 7: 2.0}, T={6: 90.0, 7: 90.0}, W={0: 1.0})
+    m = machine({3: "paper"})
+    m.set(**inputs)
+    assert_fails_cleanly(m, 3, "Division by zero (PROG 3)", DIVISION_BY_ZERO)
+    m = machine()
+    m.set(**inputs)
+    m.call(3)
+    assert (m.array("T")[9], m.array("L")[5]) == (90.0, 3.0)

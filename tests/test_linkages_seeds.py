@@ -181,3 +181,30 @@ def test_positions_satisfy_the_loop_constraints_over_a_cycle():
     bo = -5.0 * np.exp(1j * np.radians(30.0))
     np.testing.assert_allclose(fisc.follower_length.value * np.exp(1j * fisc.follower.angle),
                                fisc.pin_a.pos - bo, atol=1e-12)
+
+
+def test_inverted_slider_crank_paper_equations_agree_away_from_a_vertical_follower():
+    theta = np.arange(0.5, 360.0, 7.0)
+    kwargs = dict(crank_length_rate=0.2, crank_length_accel=-0.3)
+    closed = inverted_slider_crank(5.0, 30.0, 2.5, theta, 3.0, 1.0, **kwargs)
+    paper = inverted_slider_crank(5.0, 30.0, 2.5, theta, 3.0, 1.0, method="paper", **kwargs)
+    for ours, printed in ((closed.follower, paper.follower), (closed.follower_length, paper.follower_length)):
+        for a, b in zip(ours, printed):
+            np.testing.assert_allclose(np.exp(1j * a) if a is ours[0] else a,
+                                       np.exp(1j * b) if a is ours[0] else b, atol=1e-10)
+
+
+def test_inverted_slider_crank_paper_equations_break_at_a_vertical_follower():
+    from yaseer.linkages import MethodDivisionByZero
+
+    # Bo = -1 u(90) = (0, -1), crank 2 at 90 deg: A - Bo = (0, 3), the follower is vertical
+    with pytest.raises(MethodDivisionByZero):
+        inverted_slider_crank(1.0, 90.0, 2.0, 90.0, 1.0, method="paper")
+    closed = inverted_slider_crank(1.0, 90.0, 2.0, 90.0, 1.0)
+    assert closed.follower.degrees == 90.0 and closed.follower_length.value == 3.0
+    assert closed.follower.omega == pytest.approx(2.0 / 3.0, rel=1e-15)  # A moves at 2 x 1 across a link of 3
+    # next to it the printed (8) L5 = den / cos T9 loses digits; the vector form does not
+    near = inverted_slider_crank(1.0, 90.0, 2.0, 90.0 + 1e-9, 1.0, method="paper")
+    exact = inverted_slider_crank(1.0, 90.0, 2.0, 90.0 + 1e-9, 1.0)
+    assert abs(exact.follower_length.value - 3.0) < 1e-15
+    assert abs(near.follower_length.value - exact.follower_length.value) > 1e-9

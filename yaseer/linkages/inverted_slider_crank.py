@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from yaseer.linkages.errors import AssemblyError
+from yaseer.linkages.errors import AssemblyError, MethodDivisionByZero
 from yaseer.linkages.kinetostatics import (
     Body,
     ForceResult,
@@ -25,6 +25,7 @@ from yaseer.linkages.kinetostatics import (
     solve_kinetostatics,
 )
 from yaseer.linkages.registry import lookup, register
+from yaseer.linkages.virtual_link import cos_sin_degrees
 from yaseer.linkages.planar import (
     Motion,
     Rotation,
@@ -157,3 +158,59 @@ def inverted_slider_crank_closed(
     rhs = pin_a.acc - 2j * l5_dot * w4 * u + w4**2 * radius
     l5_ddot, a4 = solve_two_directions(rhs, u, 1j * radius)
     return InvertedSliderCrank(crank, length, Rotation(t9, w4, a4), Stretch(l5, l5_dot, l5_ddot), pin_a, pivot, True)
+
+
+@register("inverted_slider_crank", "paper")
+def inverted_slider_crank_paper(
+    ground_length,
+    ground_angle_deg,
+    crank_length,
+    crank_angle_deg,
+    omega=0.0,
+    alpha=0.0,
+    *,
+    crank_length_rate=0.0,
+    crank_length_accel=0.0,
+) -> InvertedSliderCrank:
+    """The paper's equations (7)-(11) as printed (section 3.1), same arguments and result.
+
+    T9 = ATN(num/den) (+180 deg when den < 0, as the listings do), L5 = den / cos T9
+    (8), W4 (9), D4 = (...)/cos T9 (10), A4 (11); E4, which the paper does not
+    print, from the x component of the second derivative, divided by cos T9 in the
+    same style.  They divide by den and cos T9, so they break where the follower is
+    vertical (T9 = 90, 270 deg): MethodDivisionByZero there, lost digits near it.
+    """
+    def divide(numerator, denominator, what):
+        if np.any(np.asarray(denominator) == 0):
+            raise MethodDivisionByZero(f"division by zero ({what} = 0)")
+        return numerator / denominator
+
+    l6, l7 = np.asarray(ground_length, float), np.asarray(crank_length, float)
+    d3, e3 = np.asarray(crank_length_rate, float), np.asarray(crank_length_accel, float)
+    w0, a0 = np.asarray(omega, float), np.asarray(alpha, float)
+    c6, s6 = cos_sin_degrees(ground_angle_deg)
+    c7, s7 = cos_sin_degrees(crank_angle_deg)
+    numerator, denominator = l6 * s6 + l7 * s7, l6 * c6 + l7 * c7
+    t9 = np.degrees(np.arctan(divide(numerator, denominator, "L(6) cos T(6) + L(7) cos T(7)")))  # (7)
+    t9 = np.where(denominator < 0, t9 + 180.0, t9)
+    c9, s9 = cos_sin_degrees(t9)
+    l5 = divide(denominator, c9, "COS T(9)")  # (8)
+    length = Stretch(l7, d3, e3)
+    crank = Rotation(np.radians(np.asarray(crank_angle_deg, float)), w0, a0)
+    moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
+    pin_a = crank_pin(length, crank, c7 + 1j * s7)
+    pin_a = pin_a if moving else still(pin_a)
+    pivot = fixed_point(-l6 * (c6 + 1j * s6))
+    follower_angle = np.radians(t9)
+    if not moving:
+        zero = np.zeros_like(l5)
+        return InvertedSliderCrank(crank, length, Rotation(follower_angle, zero, zero), Stretch(l5, zero, zero),
+                                   pin_a, pivot, False)
+    c79, s79 = cos_sin_degrees(np.asarray(crank_angle_deg, float) - t9)  # cos, sin (T7 - T9)
+    w4 = (l7 * w0 * c79 + d3 * s79) / l5  # (9)
+    d4 = divide(d3 * c7 - l7 * w0 * s7 + l5 * w4 * s9, c9, "COS T(9)")  # (10)
+    a4 = (l7 * w0**2 * -s79 + l7 * a0 * c79 + 2 * d3 * w0 * c79 - e3 * -s79 - 2 * d4 * w4) / l5  # (11)
+    x_accel = (e3 - l7 * w0**2) * c7 - (l7 * a0 + 2 * d3 * w0) * s7
+    e4 = divide(x_accel + 2 * d4 * w4 * s9 + l5 * a4 * s9 + l5 * w4**2 * c9, c9, "COS T(9)")
+    return InvertedSliderCrank(crank, length, Rotation(follower_angle, w4, a4), Stretch(l5, d4, e4), pin_a, pivot,
+                               True)
