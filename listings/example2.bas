@@ -6,5 +6,5 @@
 50 IF V(4) > 0 THEN P(1) = 650 * V(4) ^ 2 ELSE P(1) = -650 * V(4) ^ 2
 60 Z(1) = 2: Q(1) = 1: F(7) = 0: F(8) = 0: GOSUB PROG 1
 70 P(1) = 0: F(7) = -F(5): F(8) = -F(6): GOSUB 100: GOSUB PROG 1
-80 LPRINT USING "#####.#"; QQ; U(1); N(1); SQR(F(3) ^ 2 + F(4) ^ 2): NEXT QQ: END
+80 LPRINT USING "#####.###"; QQ; U(1); N(1); SQR(F(3) ^ 2 + F(4) ^ 2): NEXT QQ: END
 100 T(2) = QQ: L(1) = 0: T(4) = .1: L(2) = .021: D(0) = 0: E(0) = 0: W(2) = -8: A(2) = 0: L(3) = .032: R(4) = .029: H(4) = 180: RETURN

@@ -4,4 +4,4 @@
 3030 FOR QQ = .1 TO 360.1 STEP 20: T(2) = QQ: GOSUB PROG 1
 3040 X(10) = X(2): Y(10) = Y(2): V(17) = V(3): V(18) = V(4): A(49) = A(35): A(50) = A(36): GOSUB PROG 5
 3050 L(7) = L: D(3) = D(6): E(3) = E(6): T(7) = T: W(0) = D(5): A(0) = E(5): GOSUB PROG 3
-3060 LPRINT USING "####.#"; T(2); T(9); W(4); A(4); X(7): NEXT QQ: END
+3060 LPRINT USING "######.##"; T(2); T(9); W(4); A(4); X(7): NEXT QQ: END
