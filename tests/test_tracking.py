@@ -149,3 +149,12 @@ def test_a_deferred_step_moves_the_track_only_when_accepted():
     assert switch is not None and tracker.switches == [] and tracker.branch == CROSSED
     tracker.accept()
     assert tracker.switches == [switch] and tracker.branch == UNCROSSED
+
+
+def test_a_large_crank_step_starts_a_new_track():
+    tracker = BranchTracker(UNCROSSED)
+    for angle in np.arange(0.0, 366.0, 15.0):  # through the change point at 180: now crossed
+        tracker.step(SEED004, angle, 1.0)
+    assert tracker.branch == CROSSED
+    _, switch = tracker.step(SEED004, 0.0, 1.0)  # the listing runs again from 0
+    assert switch is None and tracker.branch == UNCROSSED

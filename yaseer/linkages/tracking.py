@@ -42,6 +42,7 @@ from yaseer.linkages.fourbar import CROSSED, UNCROSSED, FourBar, fourbar_closed
 from yaseer.linkages.planar import Motion, Rotation, Stretch, crank_pin, fixed_point, unit
 
 COINCIDENT = 1e-7     # assemblies closer than this (times b + c) are one point
+RESTART_STEP_DEG = 90.0  # a larger crank step is a new motion, not a continuation
 LIMIT_STEP = 1e-4     # radians either side of a singular point for the limits (error ~ step**2)
 
 
@@ -229,7 +230,9 @@ def _is_moving(*values) -> bool:
 class BranchTracker:
     """Tracks one four-bar call by call (what Program 2 needs for ``L(10) = -1``).
 
-    A change of geometry starts a new track on ``start_branch``.
+    A change of geometry, or a crank-angle step of more than ``RESTART_STEP_DEG``
+    (not a continuous motion: e.g. a listing run again from its first angle),
+    starts a new track on ``start_branch``.
     """
 
     def __init__(self, start_branch: int = UNCROSSED):
@@ -249,8 +252,10 @@ class BranchTracker:
 
         With ``defer`` the track moves on only when :meth:`accept` is called (a
         caller that may still fail after the kinematics, e.g. in its forces)."""
-        history = _History(list(self.history.points)) if geometry == self.geometry else _History()
         theta = float(theta_deg)
+        continuing = geometry == self.geometry and self.history.points \
+            and abs(theta - self.history.points[-1][0]) <= RESTART_STEP_DEG
+        history = _History(list(self.history.points)) if continuing else _History()
         up, down = (complex(geometry.positions(theta, side)) for side in (UNCROSSED, CROSSED))
         side, singular, switch = _advance(history, geometry, theta, up, down, self.start_branch)
         if singular and _is_moving(omega, alpha, *rates.values()):
