@@ -17,7 +17,9 @@ calling line (``Mechanism cannot be assembled (PROG 2) in 4040``).
 from __future__ import annotations
 
 import math
+import sys
 from typing import Callable
+from weakref import WeakKeyDictionary
 
 import numpy as np
 
@@ -41,6 +43,7 @@ from yaseer.linkages import (
 )
 from yaseer.linkages.fourbar import CROSSED, UNCROSSED
 from yaseer.linkages.registry import method_names
+from yaseer.linkages.tracking import BranchTracker, Geometry
 
 LINKAGES = {1: "slider_crank", 2: "fourbar", 3: "inverted_slider_crank", 5: "virtual_link"}
 
@@ -196,17 +199,37 @@ def program_1(frame: _Frame, method: str | None) -> None:
 
 
 def _branch(l10: float) -> int:
-    """L(10) = 1: crossed; anything else uncrossed (L(10) = -1, branch tracking, is
-    reserved and behaves as uncrossed until tracking exists)."""
+    """L(10) = 1: crossed; anything else but TRACKING uncrossed."""
     return CROSSED if l10 == 1 else UNCROSSED
+
+
+TRACKING = -1  # L(10) = -1: continuous branch tracking (yaseer.linkages.tracking)
+_trackers: "WeakKeyDictionary[object, BranchTracker]" = WeakKeyDictionary()
+
+
+def _tracked_fourbar(frame: _Frame):
+    """Program 2 kinematics following the motion across change points and toggles
+    (one tracker per machine, starting uncrossed); each branch switch is reported
+    on standard error as ``PROG 2: branch switch at crank angle ...``."""
+    g = frame.get
+    tracker = _trackers.setdefault(frame.machine, BranchTracker(UNCROSSED))
+    geometry = Geometry(g("L", 11), g("T", 11), g("L", 12), g("L", 13), g("L", 14))
+    kin, switch = tracker.step(geometry, g("T", 12), g("W", 5), g("A", 5),
+                               crank_length_rate=g("D", 2), crank_length_accel=g("E", 2))
+    if switch is not None:
+        print(f"PROG 2: {switch.describe()}", file=sys.stderr)
+    return kin
 
 
 def program_2(frame: _Frame, method: str | None) -> None:
     """Four-bar AoABBo (contract, Program 2)."""
     g = frame.get
-    kin = fourbar(g("L", 11), g("T", 11), g("L", 12), g("L", 13), g("L", 14), g("T", 12), g("W", 5), g("A", 5),
-                  crank_length_rate=g("D", 2), crank_length_accel=g("E", 2), branch=_branch(g("L", 10)),
-                  method=method)
+    if g("L", 10) == TRACKING:
+        kin = _tracked_fourbar(frame)
+    else:
+        kin = fourbar(g("L", 11), g("T", 11), g("L", 12), g("L", 13), g("L", 14), g("T", 12), g("W", 5),
+                      g("A", 5), crank_length_rate=g("D", 2), crank_length_accel=g("E", 2),
+                      branch=_branch(g("L", 10)), method=method)
     for (angle, rate, accel), link in (((("T", 13), ("W", 6), ("A", 6)), kin.coupler),
                                        ((("T", 14), ("W", 7), ("A", 7)), kin.follower)):
         frame.put(angle, link.degrees)
