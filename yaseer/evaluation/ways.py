@@ -106,5 +106,5 @@ def run_listing(case, method: str, angles, startup: float, repeat: int = 1) -> R
     if any(len(row) < width for row in values):
         return Run(math.nan, Outcome(math.nan, "exception", "the listing printed fewer columns"), len(rows))
     results = {name: np.array([row[k] for row in values]) for k, name in enumerate(case.columns)}
-    per_position = max(best - startup, 0.0) / len(rows)
+    per_position = (best - startup) / len(rows) if best > startup else math.nan  # too short to time
     return Run(per_position, _judge(case, printed_angles, results), len(rows))
