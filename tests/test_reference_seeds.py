@@ -131,3 +131,10 @@ def test_seed004_float_refuses_what_it_cannot_resolve_and_mpmath_resolves_it():
         seed004_fourbar([1e-6])
     r = seed004_fourbar([1e-6], number="mpmath", dps=50)
     assert float(r["theta2_rate"][0]) == pytest.approx((1 + 2 * math.sqrt(2)) / 5, rel=1e-6)
+
+
+def test_seed004_mpmath_takes_angles_near_the_change_point_exactly():
+    """th1 = 1e-12 deg is passed to mpmath without rounding 180 - th1 in binary: th2 ~ 0.7657 th1."""
+    r = seed004_fourbar([1e-12], number="mpmath", dps=50)
+    assert float(r["theta2"][0]) == pytest.approx((1 + 2 * math.sqrt(2)) / 5 * 1e-12, rel=1e-9)
+    assert float(r["theta3"][0]) == pytest.approx((-1 + math.sqrt(2)) / 5 * 1e-12, rel=1e-9)

@@ -26,7 +26,7 @@ class FloatArithmetic:
     #: Newton stops when its correction is below this (relative to the size of the coordinates).
     tolerance = 1e-13
     #: A system whose condition number exceeds this is reported as singular.
-    max_condition = 1e12
+    max_condition = 1e15
 
     def num(self, value) -> float:
         """``value`` (int, float or decimal string) as a float."""

@@ -110,6 +110,7 @@ def _four_bar_sketch(mechanism, theta_deg, crank, coupler, follower, pivot, side
     """A rough placement: C half a link off the midpoint of B and D, on ``side`` (+1 left, -1 right)."""
     crank, coupler, follower = float(crank), float(coupler), float(follower)
     pivot = (float(pivot[0]), float(pivot[1]))
+    theta_deg = float(theta_deg)
     b = (crank * math.cos(math.radians(theta_deg)), crank * math.sin(math.radians(theta_deg)))
     mid = ((b[0] + pivot[0]) / 2, (b[1] + pivot[1]) / 2)
     run = (pivot[0] - b[0], pivot[1] - b[1])
@@ -178,7 +179,7 @@ def seed004_fourbar(theta1s_deg, theta1_rate=1, theta1_acceleration=0, branch="r
     moves the position at th1 = 0 by about 1e-8 rad).
     """
     ar = arithmetic_for(number, dps)
-    thetas = [180 - t for t in theta1s_deg]
+    thetas = [ar.num(180) - ar.num(t) for t in theta1s_deg]  # exact in mpmath near th1 = 0
     snapshots = _four_bar_rows(thetas, -theta1_rate, -theta1_acceleration, (AB, BD, DE), (AE, 0),
                                SIDES[branch], number, dps, "seed 004")
     rows = []

@@ -682,7 +682,7 @@ class Mechanism:
             q_float = self._continue(q_guess, None, float(home_deg), max_step_deg=max_step_deg)
             previous = float(home_deg)
         for angle in angles_deg:
-            q_float, q = self._position(q_float, previous, float(angle), ar, max_step_deg)
+            q_float, q = self._position(q_float, previous, angle, ar, max_step_deg)
             previous = float(angle)
             drive = self._drive(ar, angle, rate, acceleration)
             condition, bound = self.check_conditioning(q, drive, ar, accuracy, level)
@@ -696,11 +696,13 @@ class Mechanism:
     def _position(self, q_float, previous_deg, angle_deg, ar, max_step_deg):
         """(float position, position in ``ar``) at ``angle_deg``, continuing from ``previous_deg``.
 
+        ``angle_deg`` may be an mpf: the mpmath polish takes it exactly.
+
         A float stage that only guesses for mpmath stops at 1e-9: near a
         singular position float Newton cannot reach 1e-13, the mpmath polish can.
         """
         loose = None if ar is FLOAT else 1e-9
-        q_float = self._continue(q_float, previous_deg, angle_deg, max_step_deg=max_step_deg,
+        q_float = self._continue(q_float, previous_deg, float(angle_deg), max_step_deg=max_step_deg,
                                  tolerance=loose)
         if ar is FLOAT:
             return q_float, q_float
