@@ -1,0 +1,98 @@
+"""Whole programs against PC-BASIC 2.0.8: generated ones, and the corpus of failures found.
+
+yaseer runs in radians (``angle="rad"``, as ``yaseer run --angle rad``) since
+GW-BASIC has no degrees.  *Exact* programs must print the same bytes;
+*numeric* ones the same text with numbers within 1e-6 relative (see
+test_differential_programgen.py).  ``YASEER_DIFF_PROGRAMS`` sets how many
+programs a run generates (40 by default); ``YASEER_DIFF_SEED`` the seed.
+
+The corpus (tests/corpus/*.bas) holds the programs on which yaseer once
+differed from PC-BASIC, each with PC-BASIC's output in ``NAME.expected``
+(recorded by ``python tests/test_differential_programs.py --record``).
+"""
+
+from __future__ import annotations
+
+import os
+import random
+import sys
+from pathlib import Path
+
+import pytest
+
+from test_differential_programgen import LONG_LINE, random_program
+from test_differential_support import PcBasic, base_seed, outputs_agree, run_yaseer
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+
+CORPUS = Path(__file__).parent / "corpus"
+CORPUS_CASES = sorted(CORPUS.glob("*.bas"))
+
+
+def program_count() -> int:
+    return int(os.environ.get("YASEER_DIFF_PROGRAMS", 40))
+
+
+@pytest.fixture(scope="module")
+def pc():
+    session = PcBasic()
+    yield session
+    session.close()
+
+
+def too_wide(output: str) -> bool:
+    """Whether PC-BASIC's 80-column screen may have wrapped a line (yaseer never wraps)."""
+    return max(len(line) for line in output.split("\n")) >= LONG_LINE
+
+
+def test_generated_programs_match_pcbasic(pc):
+    rng = random.Random(base_seed())
+    compared, differing = 0, []
+    while compared < program_count():
+        numeric = compared % 3 == 0
+        source = random_program(rng, numeric=numeric).source()
+        theirs = pc.program(source)
+        if too_wide(theirs):
+            continue
+        compared += 1
+        ours = run_yaseer(source)
+        if not outputs_agree(ours, theirs, tolerant=numeric):
+            differing.append((source, theirs, ours))
+    assert not differing, f"{len(differing)} of {compared} differ; first:\n" + "\n".join(differing[0])
+
+
+def test_comparison_sees_a_difference():
+    """The comparator is not vacuous: a changed digit or word is a difference."""
+    assert not outputs_agree(" 1  2 \n", " 1  3 \n", tolerant=False)
+    assert not outputs_agree(" .3333333 \n", " .3333334 \n", tolerant=False)
+    assert outputs_agree(" .3333333 \n", " .3333333333 \n", tolerant=True)
+    assert not outputs_agree(" .3333 \n", " .3333333333 \n", tolerant=True)
+    assert not outputs_agree("in1 \n", "in2 \n", tolerant=True)
+
+
+@pytest.mark.parametrize("case", CORPUS_CASES, ids=[case.stem for case in CORPUS_CASES])
+def test_corpus_program_matches_recorded_pcbasic_output(case):
+    expected = case.with_suffix(".expected").read_text()
+    assert run_yaseer(case.read_text()) == expected
+
+
+def test_corpus_expectations_are_pcbasic_output(pc):
+    """The recorded outputs are really PC-BASIC's (not edited by hand)."""
+    assert CORPUS_CASES, "the corpus is empty"
+    for case in CORPUS_CASES:
+        assert pc.program(case.read_text()) == case.with_suffix(".expected").read_text(), case.name
+
+
+def record() -> None:
+    """Write NAME.expected for every corpus program that lacks one, from PC-BASIC."""
+    session = PcBasic()
+    for case in CORPUS_CASES:
+        target = case.with_suffix(".expected")
+        if not target.exists():
+            target.write_text(session.program(case.read_text()))
+            print("recorded", target)
+
+
+if __name__ == "__main__" and "--record" in sys.argv:
+    sys.path.insert(0, str(Path(__file__).parent))
+    record()
