@@ -112,3 +112,25 @@ def test_cli_unreadable_table_is_a_clear_error(tmp_path, capsys):
 @pytest.mark.parametrize("text", ["1.5", "-.25", "+3", "1e3", "1.0D2"])
 def test_numbers_in_period_notations(text):
     assert diff.parse_cell(text).value == pytest.approx(float(text.replace("D", "e")))
+
+
+def test_cli_listing_error_is_reported_as_the_basic_error(tmp_path, capsys):
+    listing = tmp_path / "bad.bas"
+    listing.write_text("10 PRINT 1\n20 PRINT 1/0\n")
+    table = tmp_path / "t.csv"
+    table.write_text("x\n1\n")
+    parser = argparse.ArgumentParser()
+    diff.add_arguments(parser)
+    assert diff.main(parser.parse_args([str(listing), str(table)])) == 2
+    assert capsys.readouterr().err.strip() == f"{listing}: Division by zero in 20"
+
+
+def test_cli_ambiguous_printed_row_names_the_line(tmp_path, capsys):
+    table = tmp_path / "t.txt"
+    table.write_text("# comment\n       A       B\n    1.00    2.00\n    1.00 2.00 3.00\n")
+    program = tmp_path / "out.csv"
+    program.write_text("1,2\n")
+    parser = argparse.ArgumentParser()
+    diff.add_arguments(parser)
+    assert diff.main(parser.parse_args([str(program), str(table)])) == 2
+    assert "line 4: two cells under column" in capsys.readouterr().err
