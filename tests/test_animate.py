@@ -56,7 +56,9 @@ def slider_crank_area(machine):
     ax, ay = a * math.cos(theta), a * math.sin(theta)
     bx = ax + math.sqrt(b * b - (ay + e) ** 2)
     T[3] = math.degrees(math.atan2(-e - ay, bx - ax))
-    X[2], Y[2] = bx, -e  # R(4) = 0: the piston itself
+    R, H = machine.array("R"), machine.array("H")
+    toward_a = math.atan2(ay + e, ax - bx) + math.radians(H[4])  # H(4) from the line B->A
+    X[2], Y[2] = bx + R[4] * math.cos(toward_a), -e + R[4] * math.sin(toward_a)
 
 
 def virtual_link_area(machine):
@@ -70,11 +72,12 @@ def install_stand_ins(machine, methods=None):
     machine.set_area(5, virtual_link_area)
 
 
-def run_cycle(angles, e=2.0, a=3.0, b=8.0, print_heading=True, calls_per_line=1):
-    """A 'listing': heading, then per angle PROG 1 (and PROG 5 on the piston) and one printed line."""
+def run_cycle(angles, e=2.0, a=3.0, b=8.0, print_heading=True, calls_per_line=1, rod_point=(0.0, 0.0)):
+    """A 'listing': heading, then per angle PROG 1 (and PROG 5 on the rod point) and one printed line."""
     recorder = Recorder()
     machine = StandInMachine()
     install_stand_ins(AreaInterceptor(machine, recorder))
+    machine.array("R")[4], machine.array("H")[4] = rod_point
     tap = LineTap(recorder.line_printed)
     if print_heading:
         tap.write("  QQ      X(2)\n")
@@ -147,13 +150,22 @@ def test_lines_without_new_calls_join_the_frame_and_trailing_calls_make_a_last_f
     assert [f.printed for f in frames] == ["first\nsecond", ""]
 
 
-def test_only_moving_points_have_paths():
+def test_only_points_off_their_joint_that_move_have_paths():
     frames, _ = run_cycle([float(a) for a in range(0, 360, 45)])
-    scene = build_scene(frames)
-    # X(1),Y(1) stays at the origin (R(1) = 0); the piston X(2),Y(2) moves.
-    assert [p.label for p in scene.paths] == ["PROG 1 X(2),Y(2)"]
-    xs = [p[0] for p in scene.paths[0].positions]
-    assert max(xs) == pytest.approx(3 + math.sqrt(64 - 4), rel=1e-3)
+    # X(1),Y(1) stays at the origin (R(1) = 0); X(2),Y(2) is the piston itself (R(4) = 0)
+    assert build_scene(frames).paths == []
+    frames, _ = run_cycle([float(a) for a in range(0, 360, 45)], rod_point=(1.5, 180.0))
+    (path,) = build_scene(frames).paths
+    assert path.label == "PROG 1 X(2),Y(2)"
+    # at 0 degrees C is 1.5 beyond the piston along A->B = (sqrt(8^2 - 2^2), -2) / 8
+    assert path.positions[0] == pytest.approx((3 + math.sqrt(60) * (1 + 1.5 / 8), -2 - 2 * 1.5 / 8))
+
+
+def test_paths_break_where_the_point_jumps_or_is_missing():
+    from yaseer.animation import Path2D, path_segments
+
+    path = Path2D("p", [(0.0, 0.0), (0.1, 0.0), None, (0.2, 0.0), (5.0, 0.0), (5.1, 0.0)])
+    assert path_segments(path, scale=10.0) == [[(0.0, 0.0), (0.1, 0.0)], [(0.2, 0.0)], [(5.0, 0.0), (5.1, 0.0)]]
 
 
 def test_no_frames_is_an_error():

@@ -372,17 +372,43 @@ class Path2D:
 
 
 def traced_paths(frames: Sequence[Frame], scale: float) -> list[Path2D]:
-    """The path of every traced point that moves (extent above 1e-9 of the scene ``scale``).
+    """The path of every traced point that is off its link's joint and moves.
 
-    A point is identified by its snapshot's position in the frame and its label.
+    A point is identified by its snapshot's position in the frame and its
+    label.  Points that sit on their reference joint in every frame (R = 0: the
+    piston itself, the crank pin) add nothing to the joints and get no path;
+    nor do points that never move (both within 1e-9 of the scene ``scale``).
     """
     paths: dict[tuple[int, str], Path2D] = {}
+    offset: dict[tuple[int, str], float] = {}
     for number, frame in enumerate(frames):
         for index, snapshot in enumerate(frame.snapshots):
             for point in snapshot.points:
-                path = paths.setdefault((index, point.label), Path2D(point.label, [None] * len(frames)))
+                key = (index, point.label)
+                path = paths.setdefault(key, Path2D(point.label, [None] * len(frames)))
                 path.positions[number] = point.position
-    return [path for path in paths.values() if path.extent() > 1e-9 * scale]
+                offset[key] = max(offset.get(key, 0.0), distance(point.position, point.joint))
+    tiny = 1e-9 * scale
+    return [path for key, path in paths.items() if offset[key] > tiny and path.extent() > tiny]
+
+
+PATH_BREAK = 0.25  # a step longer than this share of the scene is a jump (another branch), not motion
+
+
+def path_segments(path: Path2D, scale: float) -> list[list[Point]]:
+    """The path as polylines: split where a frame lacks the point or it jumps (PATH_BREAK)."""
+    segments: list[list[Point]] = []
+    current: list[Point] = []
+    for position in path.positions:
+        if position is None or (current and distance(current[-1], position) > PATH_BREAK * scale):
+            if current:
+                segments.append(current)
+            current = []
+        if position is not None:
+            current.append(position)
+    if current:
+        segments.append(current)
+    return segments
 
 
 def scene_bounds(frames: Sequence[Frame]) -> tuple[float, float, float, float]:
@@ -447,10 +473,10 @@ def draw_frame(ax, scene: Scene, number: int, title: str = "") -> None:
     ax.set_ylim(scene.bounds[2], scene.bounds[3])
     ax.set_aspect("equal", adjustable="box")
     ax.grid(True, color="0.92", linewidth=0.6)
+    span = max(scene.bounds[1] - scene.bounds[0], scene.bounds[3] - scene.bounds[2])
     for colour, path in zip(_colours(), scene.paths):
-        xs = [p[0] if p else math.nan for p in path.positions]
-        ys = [p[1] if p else math.nan for p in path.positions]
-        ax.plot(xs, ys, color=colour, linewidth=1.0, alpha=0.6)
+        for segment in path_segments(path, span):
+            ax.plot(*zip(*segment), color=colour, linewidth=1.0, alpha=0.6, marker=".", markersize=2.5)
     for snapshot in frame.snapshots:
         for pivot in snapshot.ground:
             ax.add_patch(Polygon(_ground_triangle(pivot, scene.size), closed=True, color="0.6", zorder=2))
@@ -460,8 +486,9 @@ def draw_frame(ax, scene: Scene, number: int, title: str = "") -> None:
                           color="0.5", linewidth=0.8, linestyle="-.", zorder=1)
             ax.add_patch(Polygon(_block(slider, scene.size), closed=True, facecolor="#c9d6e8",
                                  edgecolor="black", linewidth=1.0, zorder=4))
-        for traced in snapshot.points:
-            ax.plot(*zip(traced.joint, traced.position), color="0.35", linewidth=1.2, zorder=3)
+        for traced in snapshot.points:  # the rigid link carried on to its point of interest
+            ax.plot(*zip(traced.joint, traced.position), color="0.3", linewidth=2.0,
+                    solid_capstyle="round", zorder=3)
         for bar in snapshot.bars:
             style = dict(color="0.45", linewidth=1.4, linestyle="--") if bar.virtual else \
                 dict(color="black", linewidth=3.2, solid_capstyle="round")
@@ -513,8 +540,9 @@ def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    figure, ax = plt.subplots(figsize=_figure_size(scene), dpi=90)
-    figure.subplots_adjust(left=0.09, right=0.97, top=0.92, bottom=0.22)
+    width, height, bottom, top = _figure_layout(scene)
+    figure, ax = plt.subplots(figsize=(width, height), dpi=90)
+    figure.subplots_adjust(left=0.1, right=0.97, top=1.0 - top / height, bottom=bottom / height)
     try:
         if suffix == ".png":
             if not 0 <= frame_number < len(scene.frames):
@@ -528,11 +556,22 @@ def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0
         plt.close(figure)
 
 
-def _figure_size(scene: Scene) -> tuple[float, float]:
-    """Inches: 6.4 wide, as tall as the scene's shape needs (3.6 to 7.2), caption room below."""
+FIGURE_WIDTH = 6.4  # inches
+
+
+def _figure_layout(scene: Scene) -> tuple[float, float, float, float]:
+    """(width, height, bottom margin, top margin) in inches: the axes keep the scene's shape.
+
+    The axes are at most 6 inches tall; the bottom margin holds the tick
+    labels and the longest caption.
+    """
     xmin, xmax, ymin, ymax = scene.bounds
-    height = 6.4 * 0.88 * (ymax - ymin) / (xmax - xmin) / 0.7
-    return (6.4, min(7.2, max(3.6, height)))
+    axes_width = FIGURE_WIDTH * 0.87
+    axes_height = min(6.0, max(2.5, axes_width * (ymax - ymin) / (xmax - xmin)))
+    caption_lines = max(frame.printed.count("\n") + 1 for frame in scene.frames)
+    bottom = 0.55 + 0.18 * caption_lines
+    top = 0.4
+    return FIGURE_WIDTH, axes_height + bottom + top, bottom, top
 
 
 def _write_movie(figure, ax, scene: Scene, out: Path, title: str, fps: float, progress_file) -> None:
