@@ -74,3 +74,36 @@ def test_figure_has_one_panel_per_quantity_with_the_printed_values(tmp_path):
     assert [p.name for p in paths] == ["example5.png", "example5.svg"]
     assert paths[0].read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert "Bo" in paths[1].read_text()
+
+
+def _yaseer_plot(*args):
+    import subprocess
+    import sys
+
+    return subprocess.run([sys.executable, "-m", "yaseer", "plot", *args], cwd=ROOT,
+                          capture_output=True, text=True, timeout=120, check=False)
+
+
+def test_plot_command_draws_a_listing_run_through_the_machine(tmp_path):
+    result = _yaseer_plot("listings/example1.bas", "--out", str(tmp_path))
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.split() == [str(tmp_path / "example1.png"), str(tmp_path / "example1.svg")]
+    assert (tmp_path / "example1.png").read_bytes()[:4] == b"\x89PNG"
+    svg = (tmp_path / "example1.svg").read_text()
+    assert "piston D" in svg and "crank angle QQ" in svg
+
+
+def test_plot_command_reports_the_listings_error_line(tmp_path):
+    result = _yaseer_plot("listings/paper/example4.bas", "--out", str(tmp_path))
+    assert result.returncode == 1
+    assert result.stderr.strip() == "Syntax error in 4080"
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_plot_command_refuses_a_listing_without_a_table(tmp_path):
+    listing = tmp_path / "one.bas"
+    listing.write_text('10 PRINT "HELLO"\n')
+    result = _yaseer_plot(str(listing), "--out", str(tmp_path / "out"))
+    assert result.returncode == 1
+    assert "no table" in result.stderr
+    assert not (tmp_path / "out").exists()
