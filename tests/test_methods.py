@@ -30,7 +30,11 @@ def test_registered_by_name():
 def mp_slider(e, a, b, theta_deg, omega, alpha, axis_deg):
     """Rod angle (deg), omega, alpha, travel s and its rates, by differentiating the
     closed-form position along theta(t) = theta + omega t + alpha t^2/2 (mpmath.diff)."""
-    mpmath.mp.dps = 50
+    with mpmath.workdps(50):
+        return _mp_slider(e, a, b, theta_deg, omega, alpha, axis_deg)
+
+
+def _mp_slider(e, a, b, theta_deg, omega, alpha, axis_deg):
     e, a, b = (mpmath.mpf(v) for v in (e, a, b))
     phi = mpmath.radians(mpmath.mpf(axis_deg))
     th0 = mpmath.radians(mpmath.mpf(theta_deg))
@@ -49,7 +53,11 @@ def mp_slider(e, a, b, theta_deg, omega, alpha, axis_deg):
 
 def mp_fourbar(d, a, b, c, theta_deg, omega, alpha, crossed):
     """Coupler A->B (deg) and rates, follower B->Bo (deg) and rates, fixed link on +x."""
-    mpmath.mp.dps = 50
+    with mpmath.workdps(50):
+        return _mp_fourbar(d, a, b, c, theta_deg, omega, alpha, crossed)
+
+
+def _mp_fourbar(d, a, b, c, theta_deg, omega, alpha, crossed):
     a, b, c, d = (mpmath.mpf(v) for v in (a, b, c, d))
     th0 = mpmath.radians(mpmath.mpf(theta_deg))
     side = -1 if crossed else 1

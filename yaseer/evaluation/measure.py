@@ -37,11 +37,12 @@ class ReferenceColumn:
         import mpmath
 
         his, los = [], []
-        for value in values:
-            value = mpmath.mpf(value)
-            hi = float(value)
-            his.append(hi)
-            los.append(float(value - hi) if math.isfinite(hi) else 0.0)
+        with mpmath.workdps(60):
+            for value in values:
+                value = mpmath.mpf(value)
+                hi = float(value)
+                his.append(hi)
+                los.append(float(value - hi) if math.isfinite(hi) else 0.0)
         return cls(name, np.array(his), np.array(los), angle)
 
     @property
