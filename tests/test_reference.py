@@ -19,7 +19,8 @@ from yaseer.reference.arithmetic import MpArithmetic
 from yaseer.reference.solver import (AngleDriver, AngleLock, Body, Couple, Drive, Mechanism,
                                      MechanismError, PointLoad, PointOnLine, Revolute, polar)
 from yaseer.reference.paper_mechanisms import example_mechanism, example_snapshots
-from yaseer.reference.seeds import four_bar
+from yaseer.reference import basic_linkages
+from yaseer.reference.basic_linkages import fourbar_model as four_bar
 
 
 def rel(a, b, floor=1.0):
@@ -440,3 +441,86 @@ def test_example2_plunger_load_resists_the_plunger():
         speed = math.hypot(*v)
         assert math.hypot(*force) == pytest.approx(650 * speed ** 2, rel=1e-12)
         assert force[0] * v[0] + force[1] * v[1] <= 0
+
+
+# --------------------------------------------------------------------------- basic linkages in the contract's terms
+
+@pytest.mark.parametrize("axis", [0.0, 90.0, 90.1, -37.0])
+@pytest.mark.parametrize("theta", [0.0, 66.0, 180.0, 250.0])
+def test_program1_reference_against_the_rotated_closed_form(axis, theta):
+    """Program 1's line e u(axis - 90) + s u(axis): in a frame turned by ``axis`` it is the
+    plain slider-crank with the pin on y' = -e and crank angle theta - axis."""
+    e, a, b, w, alpha = 20.0, 40.0, 120.0, 6.0, -2.0
+    r = basic_linkages.slider_crank(e, a, b, [theta], w, alpha, axis_deg=axis)
+    exact = slider_crank_closed_form(a, b, -e, theta - axis, w, alpha)
+    c, s = math.cos(math.radians(axis)), math.sin(math.radians(axis))
+    turn = lambda x, y: (c * x - s * y, s * x + c * y)  # noqa: E731
+    expected = {"xB": turn(exact["x"], -e)[0], "yB": turn(exact["x"], -e)[1],
+                "vxB": turn(exact["v"], 0)[0], "vyB": turn(exact["v"], 0)[1],
+                "axB": turn(exact["a"], 0)[0], "ayB": turn(exact["a"], 0)[1]}
+    for name, value in expected.items():
+        assert abs(r[name][0] - value) < 1e-10 * (1 + abs(value)), name
+    assert abs(r["W(3)"][0] - exact["w_rod"]) < 1e-12 and abs(r["A(3)"][0] - exact["a_rod"]) < 1e-10
+    rod = exact["rod"] + axis
+    assert abs(math.remainder(r["T(3)"][0] - rod, 360)) < 1e-10
+
+
+def test_program1_reference_at_the_dead_centre():
+    """In line (e = 0) at theta = 0: the piston stops, a = -a w^2 (1 + a/b) (textbook)."""
+    a, b, w = 40.0, 120.0, 6.0
+    r = basic_linkages.slider_crank(0, a, b, [0.0], w, 0)
+    assert r["xB"][0] == pytest.approx(a + b, rel=1e-15)
+    assert abs(r["vxB"][0]) < 1e-12
+    assert r["axB"][0] == pytest.approx(-a * w * w * (1 + a / b), rel=1e-12)
+
+
+@pytest.mark.parametrize("ground", [0.0, 30.0, -123.0])
+def test_program2_reference_contract_example_any_ground_direction(ground):
+    """a=40, b=120, c=80, d=100, theta=40 (relative to the ground): uncrossed coupler 20.30,
+    follower Bo->B 57.32, so T(14) (B->Bo) = -122.68; all turn with the fixed link."""
+    r = basic_linkages.fourbar(100, ground, 40, 120, 80, [40 + ground], 7.0, 0)
+    assert math.remainder(r["T(13)"][0] - ground - 20.30, 360) == pytest.approx(0, abs=0.005)
+    assert math.remainder(r["T(14)"][0] - ground + 122.68, 360) == pytest.approx(0, abs=0.005)
+    exact = four_bar_closed_form(40, 120, 80, 100, 40, 7.0, 0, 1)
+    assert r["W(6)"][0] == pytest.approx(exact["bd"], rel=1e-11)
+    assert r["A(7)"][0] == pytest.approx(exact["pdd"], rel=1e-10)
+
+
+def test_program2_reference_crossed_is_the_mirror_branch():
+    r = basic_linkages.fourbar(100, 0, 40, 120, 80, [40], 7.0, 0, crossed=True)
+    exact = four_bar_closed_form(40, 120, 80, 100, 40, 7.0, 0, -1)
+    assert r["T(13)"][0] == pytest.approx(exact["beta"], abs=1e-10)
+    assert r["W(7)"][0] == pytest.approx(exact["pd"], rel=1e-11)
+
+
+@pytest.mark.parametrize("theta", [10.0, 135.0, 290.0])
+def test_program3_reference_against_geometry_and_differences(theta):
+    """FISC: L(5), T(9) from the vector Bo->A directly; rates against central differences."""
+    L6, T6, L7, w = 5.7, -74.74, 2.5, 30.0
+    h = 1e-4
+    hd = math.degrees(h)
+    r = basic_linkages.inverted_slider_crank(L6, T6, L7, [theta - hd, theta, theta + hd], w, 0)
+    bo = (-L6 * math.cos(math.radians(T6)), -L6 * math.sin(math.radians(T6)))
+    pin = (L7 * math.cos(math.radians(theta)), L7 * math.sin(math.radians(theta)))
+    assert r["L(5)"][1] == pytest.approx(math.hypot(pin[0] - bo[0], pin[1] - bo[1]), rel=1e-13)
+    assert r["T(9)"][1] == pytest.approx(math.degrees(math.atan2(pin[1] - bo[1], pin[0] - bo[0])), abs=1e-11)
+    for value, rate, accel, unit in (("L(5)", "D(4)", "E(4)", 1.0), ("T(9)", "W(4)", "A(4)", math.pi / 180)):
+        before, here, after = (float(v) * unit for v in r[value])
+        assert r[rate][1] == pytest.approx(w * (after - before) / (2 * h), rel=1e-7)
+        assert r[accel][1] == pytest.approx(w * w * (after - 2 * here + before) / h ** 2, rel=1e-5, abs=1e-6)
+
+
+def test_basic_linkage_references_refuse_what_does_not_assemble():
+    with pytest.raises(MechanismError, match="cannot be assembled"):
+        basic_linkages.slider_crank(0, 40, 30, [90.0], 1, 0)
+    with pytest.raises(MechanismError, match="cannot be assembled"):
+        basic_linkages.fourbar(60, 0, 30, 36, 36, [180.0], 1, 0)
+
+
+def test_basic_linkage_references_in_mpmath():
+    r = basic_linkages.fourbar("100", "30", "40", "120", "80", [70.0], 7, 0, number="mpmath", dps=40)
+    f = basic_linkages.fourbar(100, 30, 40, 120, 80, [70.0], 7, 0)
+    assert abs(float(r["A(6)"][0]) - f["A(6)"][0]) < 1e-11 * abs(f["A(6)"][0])
+    s = basic_linkages.slider_crank("25", "75", "300", [33.0], 25, 0, axis_deg="0.1", number="mpmath", dps=40)
+    g = basic_linkages.slider_crank(25, 75, 300, [33.0], 25, 0, axis_deg=0.1)
+    assert abs(float(s["ayB"][0]) - g["ayB"][0]) < 1e-10 * abs(g["axB"][0])

@@ -33,8 +33,6 @@ objects (dtype object).
 
 from __future__ import annotations
 
-import math
-
 from yaseer.reference.solver import (AngleDriver, Body, Mechanism, MechanismError, PointLoad,
                                      PointOnLine, Revolute, cross, dot, polar)
 
@@ -79,10 +77,6 @@ def _side(snapshot, body_a, a, body_b, b, body_p, p, sign, what):
     side = cross((pb[0] - pa[0], pb[1] - pa[1]), (pp[0] - pa[0], pp[1] - pa[1]))
     if side * sign <= 0:
         raise MechanismError(f"{what}: the four-bar left its assembly branch")
-
-
-def _hypot(x, y):
-    return math.sqrt(x * x + y * y)
 
 
 def _magnitude(ar, vector):

@@ -1,0 +1,206 @@
+"""Al-Yaseer's basic linkages with rigid cranks, in the contract's conventions, as real bodies.
+
+Independent references for Programs 1, 2 and 3 (shared/spec/programs.md): each
+linkage is built from bodies, pins and sliders and solved by
+:mod:`yaseer.reference.solver`; nothing here uses yaseer.linkages.  Each
+function takes crank angles (degrees; solved one by one by Newton from a rough
+sketch on the requested branch, so positions that do not assemble raise
+MechanismError), the crank's rate and acceleration (rad/s, rad/s^2, ccw +),
+and returns a dict of numpy arrays, or of lists of mpf with
+``number="mpmath"`` (``dps`` digits).  Angles out are degrees in (-180, 180].
+
+* :func:`slider_crank` -- Program 1: e, a, b, axis phi; B on the line
+  e u(phi - 90) + s u(phi), ahead of A along u(phi) (``ahead=False``: behind).
+* :func:`fourbar` -- Program 2: fixed link Ao->Bo = L11 u(T11), crank L12,
+  coupler L13, follower L14; uncrossed: B left of the directed line A->Bo.
+* :func:`inverted_slider_crank` -- Program 3 (FISC): Bo = -L6 u(T6), crank L7,
+  the follower pivoted at Bo with its line through A.
+"""
+
+from __future__ import annotations
+
+import math
+
+from yaseer.reference.arithmetic import arithmetic_for
+from yaseer.reference.solver import (AngleDriver, Body, Mechanism, MechanismError, PointOnLine,
+                                     Revolute, cross, dot, normalise_degrees, polar)
+
+
+def collect(rows: list[dict], number):
+    """Rows of named values -> dict of numpy arrays (float) or of lists (mpmath)."""
+    import numpy as np
+
+    names = rows[0].keys() if rows else ()
+    if number == "float":
+        return {name: np.array([float(r[name]) for r in rows]) for name in names}
+    return {name: [r[name] for r in rows] for name in names}
+
+
+def solve_each(mechanism, thetas_deg, rate, acceleration, sketch_at, check, number, dps):
+    """One snapshot per crank angle, each by Newton from ``sketch_at(theta)`` (float, then ``number``)."""
+    snapshots = []
+    for theta in thetas_deg:
+        (snapshot,) = mechanism.analyse([theta], rate, acceleration, sketch_at(float(theta)),
+                                        number=number, dps=dps, branch_check=check)
+        snapshots.append(snapshot)
+    return snapshots
+
+
+def _polar_xy(ar, length, angle_deg):
+    """length u(angle_deg) in arithmetic ``ar`` (decimal strings exact in mpmath)."""
+    angle = ar.radians(ar.num(angle_deg))
+    return (ar.num(length) * ar.cos(angle), ar.num(length) * ar.sin(angle))
+
+
+def _unit(theta_deg):
+    return (math.cos(math.radians(theta_deg)), math.sin(math.radians(theta_deg)))
+
+
+# --------------------------------------------------------------------------- slider-crank
+
+def slider_crank_model(e, a, b, axis_deg=0):
+    """Crank Ao->A (pivot at the origin), rod A->B, B on the line e u(axis - 90) + s u(axis)."""
+    crank = Body("crank", points={"A": (a, 0)})
+    rod = Body("rod", points={"A": (0, 0), "B": (b, 0)})
+    return Mechanism([crank, rod],
+                     [Revolute("Ao", crank, (0, 0), None, (0, 0)),
+                      Revolute("A", crank, "A", rod, "A"),
+                      PointOnLine("B", rod, "B", None, polar(e, _minus_90(axis_deg)), axis_deg),
+                      AngleDriver("crank", crank)])
+
+
+def _minus_90(angle):
+    """angle - 90 (kept exact for decimal strings: they become exact in mpmath)."""
+    if isinstance(angle, str):
+        from decimal import Decimal
+
+        return str(Decimal(angle) - 90)
+    return angle - 90
+
+
+def slider_crank(e, a, b, thetas_deg, omega=0, alpha=0, axis_deg=0, ahead=True, number="float", dps=50):
+    """Program 1 with a rigid crank: rod angle T(3) (deg), W(3), A(3); pin B's x, y, v, a."""
+    mechanism = slider_crank_model(e, a, b, axis_deg)
+    sign = 1 if ahead else -1
+    axis = float(axis_deg)
+
+    def sketch_at(theta):
+        pin = _unit(theta)
+        return mechanism.coordinates({"crank": (0, 0, theta),
+                                      "rod": (float(a) * pin[0], float(a) * pin[1],
+                                              axis if ahead else axis + 180)})
+
+    def check(s):
+        run = [p - q for p, q in zip(s.position("rod", "B"), s.position("rod", "A"))]
+        if sign * dot(run, _unit(axis)) <= 0:
+            raise MechanismError("slider-crank: the piston left its assembly branch")
+
+    rows = []
+    for s in solve_each(mechanism, thetas_deg, omega, alpha, sketch_at, check, number, dps):
+        position, velocity, acceleration = (s.position("rod", "B"), s.velocity("rod", "B"),
+                                            s.acceleration("rod", "B"))
+        rows.append({"T(3)": s.angle("rod"), "W(3)": s.omega("rod"), "A(3)": s.alpha("rod"),
+                     "xB": position[0], "yB": position[1], "vxB": velocity[0], "vyB": velocity[1],
+                     "axB": acceleration[0], "ayB": acceleration[1]})
+    return collect(rows, number)
+
+
+# --------------------------------------------------------------------------- four-bar
+
+def fourbar_model(crank, coupler, follower, follower_pivot):
+    """Crank pivot at the origin, crank pin B = crank u(theta); coupler B->C; follower D->C, D fixed.
+
+    (Named as seed 003 names them; in the contract's words the pin is A, the
+    coupler's far end B, the follower pivot Bo.)
+    """
+    crank_body = Body("crank", points={"B": (crank, 0)})
+    coupler_body = Body("coupler", points={"B": (0, 0), "C": (coupler, 0)})
+    follower_body = Body("follower", points={"D": (0, 0), "C": (follower, 0)})
+    return Mechanism([crank_body, coupler_body, follower_body],
+                     [Revolute("A", crank_body, (0, 0), None, (0, 0)),
+                      Revolute("B", crank_body, "B", coupler_body, "B"),
+                      Revolute("C", coupler_body, "C", follower_body, "C"),
+                      Revolute("D", follower_body, "D", None, follower_pivot),
+                      AngleDriver("crank", crank_body)])
+
+
+def fourbar_sketch(mechanism, theta_deg, crank, coupler, follower, pivot, side):
+    """A rough placement: C half a link off the midpoint of B and D, on ``side`` (+1 left, -1 right of B->D)."""
+    crank, coupler, follower = float(crank), float(coupler), float(follower)
+    pivot = (float(pivot[0]), float(pivot[1]))
+    pin = (crank * _unit(theta_deg)[0], crank * _unit(theta_deg)[1])
+    mid = ((pin[0] + pivot[0]) / 2, (pin[1] + pivot[1]) / 2)
+    run = (pivot[0] - pin[0], pivot[1] - pin[1])
+    length = math.hypot(*run) or 1.0
+    h = 0.5 * min(coupler, follower)
+    tip = (mid[0] - side * h * run[1] / length, mid[1] + side * h * run[0] / length)
+    return mechanism.coordinates({
+        "crank": (0, 0, theta_deg),
+        "coupler": (pin[0], pin[1], math.degrees(math.atan2(tip[1] - pin[1], tip[0] - pin[0]))),
+        "follower": (pivot[0], pivot[1], math.degrees(math.atan2(tip[1] - pivot[1], tip[0] - pivot[0])))})
+
+
+def fourbar_side_check(side, what):
+    """Branch guard: C on ``side`` of the directed line from the crank pin to the follower pivot."""
+    def check(s):
+        b, c, d = s.position("coupler", "B"), s.position("coupler", "C"), s.position("follower", "D")
+        if side * cross((d[0] - b[0], d[1] - b[1]), (c[0] - b[0], c[1] - b[1])) <= 0:
+            raise MechanismError(f"{what}: the four-bar left its assembly branch")
+    return check
+
+
+def fourbar_snapshots(thetas_deg, omega, alpha, lengths, pivot, side, number, dps, what):
+    """Solved four-bar states at each crank angle (see :func:`fourbar_model`)."""
+    crank, coupler, follower = lengths
+    mechanism = fourbar_model(crank, coupler, follower, pivot)
+    return solve_each(mechanism, thetas_deg, omega, alpha,
+                      lambda theta: fourbar_sketch(mechanism, theta, crank, coupler, follower, pivot, side),
+                      fourbar_side_check(side, what), number, dps)
+
+
+def fourbar(L11, T11, L12, L13, L14, thetas_deg, omega=0, alpha=0, crossed=False, number="float", dps=50):
+    """Program 2 with a rigid crank: T(13), W(6), A(6) of A->B; T(14) of B->Bo, W(7), A(7)."""
+    pivot = _polar_xy(arithmetic_for(number, dps), L11, T11)
+    snapshots = fourbar_snapshots(thetas_deg, omega, alpha, (L12, L13, L14), pivot,
+                                  -1 if crossed else 1, number, dps, "PROG 2 reference")
+    rows = [{"T(13)": s.angle("coupler"), "W(6)": s.omega("coupler"), "A(6)": s.alpha("coupler"),
+             "T(14)": normalise_degrees(s.angle("follower") + 180, s.ar),
+             "W(7)": s.omega("follower"), "A(7)": s.alpha("follower")} for s in snapshots]
+    return collect(rows, number)
+
+
+# --------------------------------------------------------------------------- inverted slider-crank
+
+def inverted_slider_crank(L6, T6, L7, thetas_deg, omega=0, alpha=0, number="float", dps=50):
+    """Program 3 (FISC) with a rigid crank: L(5) = |Bo->A|, D(4), E(4); T(9) of Bo->A, W(4), A(4)."""
+    ar = arithmetic_for(number, dps)
+    crank = Body("crank", points={"A": (L7, 0)})
+    follower = Body("follower", points={"Bo": (0, 0)})
+    ao_from_bo = _polar_xy(ar, L6, T6)
+    bo_xy = (-ao_from_bo[0], -ao_from_bo[1])
+    mechanism = Mechanism([crank, follower],
+                          [Revolute("Ao", crank, (0, 0), None, (0, 0)),
+                           Revolute("Bo", follower, "Bo", None, bo_xy),
+                           PointOnLine("A", crank, "A", follower, (0, 0), 0),
+                           AngleDriver("crank", crank)])
+    bo_float = (float(bo_xy[0]), float(bo_xy[1]))
+
+    def sketch_at(theta):
+        pin = (float(L7) * _unit(theta)[0], float(L7) * _unit(theta)[1])
+        direction = math.degrees(math.atan2(pin[1] - bo_float[1], pin[0] - bo_float[0]))
+        return mechanism.coordinates({"crank": (0, 0, theta), "follower": (bo_float[0], bo_float[1], direction)})
+
+    def check(s):
+        pin, pivot = s.position("crank", "A"), s.position("follower", "Bo")
+        if dot((pin[0] - pivot[0], pin[1] - pivot[1]), _unit(float(s.angle("follower")))) <= 0:
+            raise MechanismError("FISC: the block passed through the follower's pivot")
+
+    rows = []
+    for s in solve_each(mechanism, thetas_deg, omega, alpha, sketch_at, check, number, dps):
+        r = [p - q for p, q in zip(s.position("crank", "A"), s.position("follower", "Bo"))]
+        v, a = s.velocity("crank", "A"), s.acceleration("crank", "A")
+        length = s.ar.sqrt(dot(r, r))
+        rate = dot(r, v) / length
+        rows.append({"L(5)": length, "D(4)": rate, "E(4)": (dot(v, v) + dot(r, a) - rate * rate) / length,
+                     "T(9)": s.angle("follower"), "W(4)": s.omega("follower"), "A(4)": s.alpha("follower")})
+    return collect(rows, number)
