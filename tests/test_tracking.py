@@ -158,3 +158,11 @@ def test_a_large_crank_step_starts_a_new_track():
     assert tracker.branch == CROSSED
     _, switch = tracker.step(SEED004, 0.0, 1.0)  # the listing runs again from 0
     assert switch is None and tracker.branch == UNCROSSED
+
+
+@pytest.mark.parametrize("start", [UNCROSSED, CROSSED])
+def test_a_motion_starting_at_the_change_point_leaves_on_the_start_branch(start):
+    tracked = track(SEED004, [180.0, 180.5, 181.0], 1.0, start_branch=start)
+    assert list(tracked.branch[1:]) == [start, start] and tracked.switches == []
+    w3 = tracked.fourbar.coupler.omega
+    assert abs(w3[1] - w3[0]) < 0.01 and abs(w3[2] - w3[1]) < 0.01  # the root continuing the motion

@@ -130,6 +130,8 @@ def _choose(history: _History, theta: float, up: complex, down: complex, start_b
     predicted = history.predict(theta)
     if predicted is None:
         return start_branch, False
+    if history.points[-1][3] and len(history.points) == 1:
+        return start_branch, False  # the motion starts at a singular point: leave on start_branch
     if history.points[-1][3] and history.turned_back(theta):
         return -previous_side, False  # back out of a toggle: the other assembly
     return (UNCROSSED if abs(up - predicted) <= abs(down - predicted) else CROSSED), False
@@ -185,8 +187,10 @@ def _point(geometry: Geometry, theta_deg: float, omega: float, alpha: float, sid
 
 
 def _singular_point(geometry: Geometry, theta: float, omega: float, alpha: float, incoming: int,
-                    direction: float, rates: dict) -> FourBar:
-    """Kinematics at a point where both assemblies coincide (see the module docstring)."""
+                    direction: float, rates: dict, starting: bool = False) -> FourBar:
+    """Kinematics at a point where both assemblies coincide (see the module docstring).
+
+    ``incoming``: the side the motion arrives on, or (``starting``) leaves on."""
     base = fourbar_closed(*geometry.astuple(), theta, branch=incoming)
     length = Stretch(float(geometry.crank_length), float(rates.get("crank_length_rate", 0.0)),
                      float(rates.get("crank_length_accel", 0.0)))
@@ -197,10 +201,16 @@ def _singular_point(geometry: Geometry, theta: float, omega: float, alpha: float
     follower_vec = complex(base.pivot.pos) - pos_b
     roots = collinear_rates(pin_a, coupler_vec, follower_vec)
     step = math.degrees(LIMIT_STEP) * (direction or 1.0)
-    before = _point(geometry, theta - step, omega, alpha, incoming, rates)
-    w3, w4 = min(roots, key=lambda r: abs(r[0] - float(before.coupler.omega)))
-    after = [_point(geometry, theta + step, omega, alpha, side, rates) for side in (UNCROSSED, CROSSED)]
-    after = min(after, key=lambda fb: abs(float(fb.coupler.omega) - w3))
+    sides = (UNCROSSED, CROSSED)
+    befores = {side: _point(geometry, theta - step, omega, alpha, side, rates) for side in sides}
+    afters = {side: _point(geometry, theta + step, omega, alpha, side, rates) for side in sides}
+    known = afters[incoming] if starting else befores[incoming]
+    w3, w4 = min(roots, key=lambda r: abs(r[0] - float(known.coupler.omega)))
+
+    def nearest(candidates: dict) -> FourBar:
+        return min(candidates.values(), key=lambda fb: abs(float(fb.coupler.omega) - w3))
+
+    before, after = nearest(befores), nearest(afters)
     a3 = 0.5 * float(before.coupler.alpha + after.coupler.alpha)
     a4 = 0.5 * float(before.follower.alpha + after.follower.alpha)
     vel_b = complex(pin_a.vel) + 1j * w3 * coupler_vec
@@ -260,7 +270,8 @@ class BranchTracker:
         side, singular, switch = _advance(history, geometry, theta, up, down, self.start_branch)
         if singular and _is_moving(omega, alpha, *rates.values()):
             direction = history.last_direction or math.copysign(1.0, omega or 1.0)
-            result = _singular_point(geometry, theta, omega, alpha, side, direction, rates)
+            result = _singular_point(geometry, theta, omega, alpha, side, direction, rates,
+                                     starting=len(history.points) == 1)
         else:
             result = _point(geometry, theta, omega, alpha, side, rates)
         # only a successful call moves the track on (a failed one leaves it as it was)
@@ -311,7 +322,8 @@ def track(geometry: Geometry, crank_angles_deg, omega=0.0, alpha=0.0, *, start_b
         omega_k, alpha_k = values.pop("omega"), values.pop("alpha")
         if moving:
             direction = directions[k] or math.copysign(1.0, omega_k or 1.0)
-            point = _singular_point(geometry, thetas[k], omega_k, alpha_k, int(branch[k]), direction, values)
+            point = _singular_point(geometry, thetas[k], omega_k, alpha_k, int(branch[k]), direction, values,
+                                    starting=k == 0)
         else:
             point = _point(geometry, thetas[k], omega_k, alpha_k, int(branch[k]), values)
         pieces.append((np.array([k]), point))
