@@ -7,7 +7,10 @@ on the slider line y_B = 2, differentiated by finite differences in time.
 
 from __future__ import annotations
 
+import csv
 import math
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -140,9 +143,6 @@ def test_dead_centre_cannot_be_driven_from_the_slider():
 
 # ------------------------------------------------------------ the listing
 
-import csv
-import subprocess
-import sys
 
 LISTING = Path(__file__).resolve().parent.parent / "listings" / "tk_slider_crank.bas"
 

@@ -11,7 +11,8 @@ D->C, BETA of B->C, THET of A->B, all from +x, counter-clockwise; rates in rad/s
 from __future__ import annotations
 
 import math
-import re
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -258,8 +259,6 @@ def test_precedence_alone_spoils_accb():
 
 # ------------------------------------------------------------ the listing
 
-import subprocess
-import sys
 
 LISTING = Path(__file__).resolve().parent.parent / "listings" / "fortran_fourbar.bas"
 

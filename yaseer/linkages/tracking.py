@@ -39,7 +39,7 @@ import numpy as np
 
 from yaseer.linkages.errors import LockedError
 from yaseer.linkages.fourbar import CROSSED, UNCROSSED, FourBar, fourbar_closed
-from yaseer.linkages.planar import Motion, Rotation, Stretch, crank_pin, fixed_point, unit
+from yaseer.linkages.planar import Motion, Rotation, Stretch, crank_pin, fixed_point
 
 COINCIDENT = 1e-7     # assemblies closer than this (times b + c) are one point
 RESTART_STEP_DEG = 90.0  # a larger crank step is a new motion, not a continuation
