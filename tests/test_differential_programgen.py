@@ -335,8 +335,35 @@ def functions_block(rng: random.Random, prog: Program) -> None:
     prog.line(f"ON {rng.choice(['1.4', '1.5', '1.6', '2.4', '0.4'])} GOSUB {target}, {second}: PRINT")
 
 
+def control_block(rng: random.Random, prog: Program) -> None:
+    """GOTO out of a FOR loop and back in, GOSUB from inside a loop, NEXT without a name, IF...THEN n ELSE m."""
+    sub = prog.sub(['PRINT "g";', "IF J = 2 THEN RETURN", 'PRINT "h";', "RETURN"])
+    prog.line(f"FOR J = 1 TO {rng.randint(1, 4)}: GOSUB {sub}: NEXT: PRINT J")
+    first = prog.reserve()
+    prog.line(f"FOR J = 1 TO 5: IF J = {rng.randint(1, 6)} THEN {first + 20}")
+    prog.line(f"PRINT J;: NEXT J: PRINT \"all\": GOTO {first + 30}")
+    prog.line('PRINT "left at"; J')
+    w = rng.randint(-2, 3)
+    prog.line(f"W = {w}: IF W THEN {first + 50} ELSE {first + 60}")
+    prog.line('PRINT "zero": GOTO 1')  # never reached
+    prog.line(f"IF W > 0 THEN PRINT \"pos\" ELSE IF W < 0 THEN PRINT \"neg\" ELSE PRINT \"nil\"")
+    prog.main[-2] = prog.main[-2].replace("GOTO 1", f"GOTO {first + 70}")
+    prog.line(f"PRINT \"x\" \"y\"; -0; 2 ^ 3 ^ 2; -2 ^ 2; 2 ^ -1; {rng.randint(1, 9)},")
+    prog.line("PRINT , \"z\"")
+
+
+def data_layout_block(rng: random.Random, prog: Program) -> None:
+    """READ across DATA lines, empty items, unquoted strings with inner blanks, RESTORE without a line."""
+    prog.line("RESTORE")
+    prog.line(f"DATA {rng.randint(-9, 9)}, abc def ,, \"q,r\"")
+    prog.line(f"DATA {basic_number(float(small_number(rng)))}")
+    prog.line("RESTORE " + str(prog.next_main - 20))
+    prog.line("READ P, P1$, P2$, P3$, P4: PRINT P; \"[\"; P1$; \"][\"; P2$; \"][\"; P3$; \"]\"; P4")
+
+
 EXACT_BLOCKS = [for_block, gosub_block, if_block, on_goto_block, data_block, string_block,
-                expression_block, using_block, def_fn_block, on_error_block, functions_block]
+                expression_block, using_block, def_fn_block, on_error_block, functions_block, control_block,
+                data_layout_block]
 
 
 # ---------------------------------------------------------------------------
