@@ -134,3 +134,8 @@ def test_cli_ambiguous_printed_row_names_the_line(tmp_path, capsys):
     diff.add_arguments(parser)
     assert diff.main(parser.parse_args([str(program), str(table)])) == 2
     assert "line 4: two cells under column" in capsys.readouterr().err
+
+
+def test_full_rows_are_read_in_order_even_under_a_loosely_aligned_header():
+    table = diff.parse_table("THET PHI BETA\n0.00 -114.62 -65.38\n30.00 -144.88 -82.70\n")
+    assert [[c.value for c in row] for row in table.rows] == [[0.0, -114.62, -65.38], [30.0, -144.88, -82.70]]

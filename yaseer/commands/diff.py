@@ -6,8 +6,9 @@ tables can be compared).  TABLE is typed from a paper, either
 
 * CSV (a line with a comma makes the file CSV): an empty field is a blank cell, or
 * whitespace-separated columns as printed: a header line of names, then rows.
-  Cells are placed under the header name whose right edge is nearest to theirs
-  (printed numbers are right-aligned), so a blank cell is just missing text.
+  A row with a cell for every name is read in order; in a shorter row each cell
+  goes under the header name whose right edge is nearest to its own (printed
+  numbers are right-aligned), so a blank cell is just missing text.
   ``********`` (a Fortran/BASIC field overflow) is a cell of its own, even when
   it touches the number before it.  Without a header, a short row lacks its
   leading cells (like the Fortran seed's ``8X`` continuation rows).
@@ -114,7 +115,7 @@ def _rows_of_printed(lines: list[tuple[int, str]]) -> Table:
             table.names = [c.text for c in cells]
             edges = [end for end, _ in tokens]
             continue
-        if edges:
+        if edges and len(tokens) < len(edges):  # a full row is read in order, a short one by position
             try:
                 cells = _place_by_edges(tokens, edges)
             except TableError as exc:
