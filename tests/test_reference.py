@@ -348,7 +348,7 @@ def test_mpmath_path_agrees_with_float_path(n):
 
 def test_mpmath_positions_are_polished_to_the_precision():
     """At 50 digits the constraints hold to ~1e-48 and 50 vs 70 digits agree to ~1e-45."""
-    mechanism, *_ = example_mechanism(4)
+    mechanism = example_mechanism(4).mechanism
     (s50,) = example_snapshots(4, [123.4], number="mpmath", dps=50)
     (s70,) = example_snapshots(4, [123.4], number="mpmath", dps=70)
     from yaseer.reference.solver import _Kinematics

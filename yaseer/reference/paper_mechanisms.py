@@ -11,6 +11,7 @@ API::
 
     example_columns(n, crank_angles, number="float", dps=50) -> numpy array (rows x columns)
     example_snapshots(n, crank_angles, number="float", dps=50) -> list of solver Snapshots
+    example_forces(n, crank_angles, ...) -> {contract name: array}  (Examples 2 and 5, signed)
     EXAMPLE_ANGLES[n]   the crank angles the (corrected) listing loops over
     COLUMNS[n]          the printed column names
 
@@ -32,6 +33,9 @@ objects (dtype object).
 """
 
 from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Optional
 
 from yaseer.reference.solver import (AngleDriver, Body, Mechanism, MechanismError, PointLoad,
                                      PointOnLine, Revolute, cross, dot, polar)
@@ -83,6 +87,33 @@ def _magnitude(ar, vector):
     return ar.sqrt(vector[0] ** 2 + vector[1] ** 2)
 
 
+def _named(*entries) -> dict:
+    """{name: value} from (name, value) and (name_x, name_y, (x, y)) entries."""
+    named = {}
+    for entry in entries:
+        if len(entry) == 2:
+            named[entry[0]] = entry[1]
+        else:
+            named[entry[0]], named[entry[1]] = entry[2]
+    return named
+
+
+@dataclass
+class ExampleModel:
+    """One example as a mechanism: its solver model, a rough sketch of its coordinates at
+    crank angle ``home``, its branch check, the reader of its printed row
+    ``columns(snapshot, angle)``, how far it needs analysing (``level``) and, for the
+    force examples, ``forces(snapshot) -> {contract name: value}``."""
+
+    mechanism: Mechanism
+    sketch: list
+    home: float
+    check: Callable
+    columns: Callable
+    level: str
+    forces: Optional[Callable] = None
+
+
 # --------------------------------------------------------------------------- Example 1
 
 def example1():
@@ -116,7 +147,7 @@ def example1():
         return [ar.num(angle), s.position("link BD", "D")[1], s.velocity("link BD", "D")[1],
                 s.acceleration("link BD", "D")[1]]
 
-    return mechanism, sketch, 0, check, columns, False
+    return ExampleModel(mechanism, sketch, 0, check, columns, "accelerations")
 
 
 # --------------------------------------------------------------------------- Example 2
@@ -166,7 +197,15 @@ def example2():
         return [ar.num(angle), s.driver_torque("crank"), s.normal_force("B"),
                 _magnitude(ar, s.reaction("Ao", "crank"))]
 
-    return mechanism, sketch, 0, check, columns, True
+    def forces(s):
+        """Program 1's force outputs for AoABC (the listing's last call), in the contract's signs."""
+        normal, wall = s.normal_force("B"), _unit(s.ar, 90.1)
+        return _named(("U(1)", s.driver_torque("crank")), ("N(1)", normal),
+                      ("F(3)", "F(4)", s.reaction("Ao", "crank")), ("F(5)", "F(6)", s.reaction("A", "rod ABC")),
+                      ("F(10)", "F(11)", (-normal * wall[0], -normal * wall[1])),
+                      ("F(7)", "F(8)", s.reaction("C", "rod ABC")))
+
+    return ExampleModel(mechanism, sketch, 0, check, columns, "forces", forces)
 
 
 # --------------------------------------------------------------------------- Example 3
@@ -205,7 +244,7 @@ def example3():
         return [ar.num(angle), s.angle("member CCoD"), s.omega("member CCoD"),
                 s.alpha("member CCoD"), s.position("member CCoD", "D")[0]]
 
-    return mechanism, sketch, 0, check, columns, False
+    return ExampleModel(mechanism, sketch, 0, check, columns, "accelerations")
 
 
 # --------------------------------------------------------------------------- Example 4
@@ -250,7 +289,7 @@ def example4():
         return [ar.num(angle), s.omega("link EDH"), s.alpha("link EDH"),
                 s.velocity("link EDH", "E")[0], s.acceleration("link EDH", "E")[0]]
 
-    return mechanism, sketch, 0, check, columns, False
+    return ExampleModel(mechanism, sketch, 0, check, columns, "accelerations")
 
 
 # --------------------------------------------------------------------------- Example 5
@@ -322,14 +361,23 @@ def example5():
         return [ar.num(angle), s.driver_torque("crank"), _magnitude(ar, s.reaction("Bo", "toggle BoB")),
                 _magnitude(ar, s.reaction("Ao", "crank"))]
 
-    return mechanism, sketch, 0, check, columns, True
+    def forces(s):
+        """Program 2's force outputs for AoABBo (the listing's last call), in the contract's signs."""
+        return _named(("U(2)", s.driver_torque("crank")),
+                      ("F(21)", "F(22)", s.reaction("Ao", "crank")),
+                      ("F(23)", "F(24)", s.reaction("A", "pitman ABC")),
+                      ("F(25)", "F(26)", s.reaction("B", "toggle BoB")),
+                      ("F(27)", "F(28)", s.reaction("Bo", "toggle BoB")),
+                      ("F(32)", "F(33)", s.reaction("C", "pitman ABC")))
+
+    return ExampleModel(mechanism, sketch, 0, check, columns, "forces", forces)
 
 
 BUILDERS = {1: example1, 2: example2, 3: example3, 4: example4, 5: example5}
 
 
-def example_mechanism(n: int):
-    """(mechanism, sketch coordinates, sketch crank angle, branch check, column reader, has forces)."""
+def example_mechanism(n: int) -> ExampleModel:
+    """Example ``n``'s model (a fresh one each call)."""
     try:
         return BUILDERS[n]()
     except KeyError:
@@ -343,13 +391,18 @@ def example_snapshots(n: int, crank_angles=None, number="float", dps=50, gravity
     ``level``: as Mechanism.analyse; default "forces" for Examples 2 and 5,
     "accelerations" for the others.
     """
-    mechanism, sketch, home, check, _, forces = example_mechanism(n)
-    mechanism.gravity = gravity
+    model = example_mechanism(n)
+    model.mechanism.gravity = gravity
     angles = EXAMPLE_ANGLES[n] if crank_angles is None else list(crank_angles)
-    if level is None:
-        level = "forces" if forces else "accelerations"
-    return mechanism.analyse(angles, CRANK_RATE[n], 0, sketch, number=number, dps=dps,
-                             level=level, branch_check=check, home_deg=home)
+    return model.mechanism.analyse(angles, CRANK_RATE[n], 0, model.sketch, number=number, dps=dps,
+                                   level=level or model.level, branch_check=model.check,
+                                   home_deg=model.home)
+
+
+def _table(rows, number):
+    import numpy as np
+
+    return np.array(rows, dtype=float if number == "float" else object)
 
 
 def example_columns(n: int, crank_angles=None, number="float", dps=50, gravity=0):
@@ -357,12 +410,24 @@ def example_columns(n: int, crank_angles=None, number="float", dps=50, gravity=0
 
     Float by default; ``number="mpmath"`` gives an object array of mpf at ``dps`` digits.
     """
-    import numpy as np
-
-    _, _, _, _, columns, _ = example_mechanism(n)
+    columns = example_mechanism(n).columns
     angles = EXAMPLE_ANGLES[n] if crank_angles is None else list(crank_angles)
     snapshots = example_snapshots(n, angles, number, dps, gravity)
-    rows = [columns(s, angle) for s, angle in zip(snapshots, angles)]
-    if number == "float":
-        return np.array(rows, dtype=float)
-    return np.array(rows, dtype=object)
+    return _table([columns(s, angle) for s, angle in zip(snapshots, angles)], number)
+
+
+def example_forces(n: int, crank_angles=None, number="float", dps=50, gravity=0) -> dict:
+    """Signed force outputs of Examples 2 and 5 under the contract's names and conventions.
+
+    Example 2: U(1), N(1), F(3)..F(6), F(10), F(11) of Program 1 on AoABC and F(7), F(8)
+    (the force of CD on ABC at C).  Example 5: U(2), F(21)..F(28) of Program 2 on
+    AoABBo and F(32), F(33) (the force of CD on the pitman at C).  Reactions are the
+    force of the upstream body on the downstream one, of the ground on the link at
+    fixed pivots; torques counter-clockwise positive.  Returns {name: array}.
+    """
+    reader = example_mechanism(n).forces
+    if reader is None:
+        raise ValueError(f"Example {n} has no force analysis (Examples 2 and 5 have)")
+    snapshots = example_snapshots(n, crank_angles, number, dps, gravity)
+    named = [reader(s) for s in snapshots]
+    return {name: _table([row[name] for row in named], number) for name in named[0]}
