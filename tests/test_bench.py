@@ -172,14 +172,16 @@ def test_listing_way_through_the_interpreter():
 def test_bench_command_quick(tmp_path, capsys):
     from yaseer.cli import main
 
-    assert main(["bench", "--quick", "--no-listing", "--out", str(tmp_path)]) == 0
+    assert main(["bench", "--quick", "--no-listing", "--case", "seed", "--out", str(tmp_path)]) == 0
     out = capsys.readouterr().out
     assert "pseudographic" in out and "half-angle-printed" in out and "Laziness" in out
     with open(tmp_path / "bench.csv") as handle:
         rows = list(csv.DictReader(handle))
     methods = {(r["linkage"], r["method"]) for r in rows}
-    assert {("slider_crank", "pseudographic"), ("fourbar", "half-angle"), ("virtual_link", "paper"),
-            ("fourbar", "newton tol=0.001")} <= methods
+    assert {("slider_crank", "pseudographic"), ("fourbar", "half-angle"), ("fourbar", "half-angle-printed"),
+            ("slider_crank", "newton"), ("fourbar", "newton tol=0.001")} <= methods
+    assert {r["case"] for r in rows} == {"seed 001 slider-crank", "seed 003 four-bar, uncrossed",
+                                         "seed 003 four-bar, crossed", "seed 004 change-point four-bar"}
     assert all(r["status"] == "ok" for r in rows if not r["method"].startswith("newton tol=0.1"))
     with open(tmp_path / "bench_laziness.csv") as handle:
         levels = {r["level"] for r in csv.DictReader(handle)}

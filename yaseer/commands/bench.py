@@ -17,6 +17,7 @@ def add_arguments(parser) -> None:
     parser.add_argument("--quick", action="store_true", help="the listings' own coarse grids, one repeat")
     parser.add_argument("--no-listing", action="store_true", help="skip the interpreter way")
     parser.add_argument("--no-chart", action="store_true", help="write the CSV files only")
+    parser.add_argument("--case", metavar="TEXT", help="only the cases whose name contains TEXT (e.g. 'seed 001')")
 
 
 def main(args) -> int:
@@ -28,8 +29,11 @@ def main(args) -> int:
     repeat = 1 if args.quick else 3
     if "listing" in ways and not bench.interpreter_available():
         print("note: the interpreter (yaseer run) is not available; the listing way is skipped", file=sys.stderr)
-    rows = bench.bench_rows(quick=args.quick, ways=ways, repeat=repeat)
-    newton = bench.newton_rows(quick=args.quick, repeat=repeat)
+    rows = bench.bench_rows(quick=args.quick, ways=ways, repeat=repeat, pattern=args.case)
+    newton = bench.newton_rows(quick=args.quick, repeat=repeat, pattern=args.case)
+    if not rows:
+        print(f"no case matches {args.case!r}", file=sys.stderr)
+        return 2
     summary = bench.aggregate(rows)
     newton_curve = bench.newton_summary(newton)
     laziness = bench.laziness_rows(positions=361 if args.quick else 3601, repeat=repeat)

@@ -47,12 +47,17 @@ def _row(case, method, way, run) -> dict:
             "status": outcome.status, "where": outcome.where, "detail": outcome.detail}
 
 
-def bench_rows(quick: bool = False, ways=WAYS, repeat: int = 3, progress=None) -> list[dict]:
+def selected_cases(pattern: str | None = None):
+    """The cases whose name contains ``pattern`` (case-insensitive), or all."""
+    return [c for c in all_cases() if pattern is None or pattern.lower() in c.name.lower()]
+
+
+def bench_rows(quick: bool = False, ways=WAYS, repeat: int = 3, progress=None, pattern=None) -> list[dict]:
     """Every case x method x way.  ``progress(text)`` is told what runs."""
     rows = []
     listing = "listing" in ways and interpreter_available()
     startup = startup_seconds() if listing else math.nan
-    for case in all_cases():
+    for case in selected_cases(pattern):
         angles = case.quick if quick else case.dense
         for method in methods_of(case.linkage):
             for way in ways:
@@ -70,10 +75,10 @@ def bench_rows(quick: bool = False, ways=WAYS, repeat: int = 3, progress=None) -
     return rows
 
 
-def newton_rows(quick: bool = False, repeat: int = 3) -> list[dict]:
+def newton_rows(quick: bool = False, repeat: int = 3, pattern=None) -> list[dict]:
     """Newton over its tolerances, array way, on every case of a linkage it solves."""
     rows = []
-    for case in all_cases():
+    for case in selected_cases(pattern):
         if case.compute is None or "newton" not in methods_of(case.linkage):
             continue
         angles = case.quick if quick else case.dense

@@ -9,7 +9,8 @@ gives a BASIC calling listing printing the same quantities in the same order
 (the interpreter way).  ``reference(angles)`` gives the 50-digit values from
 :mod:`yaseer.reference` (independent multibody models, Newton-polished).
 
-Cases (angles in degrees; ``dense`` is the bench default, ``quick`` for tests):
+Cases (angles in degrees; ``dense`` is the bench default, ``quick`` for tests;
+the paper's mechanisms use their listing's own grid for both):
 
 * seed 001's offset slider-crank (AO = 3, AB = 8, offset 2, omega = -15, alpha = -10);
 * seed 003's four-bar (30, 36, 36, 60; omega = 10), both assembly modes, over the
@@ -24,7 +25,7 @@ Cases (angles in degrees; ``dense`` is the bench default, ``quick`` for tests):
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
@@ -50,16 +51,19 @@ class Case:
     compute: Callable | None
     listing: Callable[[np.ndarray], str] | None
     other_branch: Callable[[np.ndarray, dict], bool] | None = None
-    _cache: dict = field(default_factory=dict, repr=False)
+    reference_key: str = ""
 
     def reference(self, angles) -> list[ReferenceColumn]:
-        """The 50-digit reference at ``angles`` (computed once per set of angles)."""
-        key = tuple(np.asarray(angles, float).tolist())
-        if key not in self._cache:
+        """The 50-digit reference at ``angles`` (computed once per mechanism and set of angles)."""
+        key = (self.reference_key or self.name, tuple(np.asarray(angles, float).tolist()))
+        if key not in _REFERENCES:
             values = self.reference_values(np.asarray(angles, float))
-            self._cache[key] = [ReferenceColumn.from_mpf(name, values[name], name in self.angle_columns)
+            _REFERENCES[key] = [ReferenceColumn.from_mpf(name, values[name], name in self.angle_columns)
                                 for name in self.columns]
-        return self._cache[key]
+        return _REFERENCES[key]
+
+
+_REFERENCES: dict = {}
 
 
 def _data_lines(angles, first_line: int = 1000) -> list[str]:
@@ -247,15 +251,22 @@ def _paper_case(number, linkage, compute, angle_columns, dense, quick):
 
     return Case(f"paper Example {number} ({linkage.replace('_', ' ')})", linkage, COLUMNS[number],
                 frozenset(angle_columns), dense, quick, _paper_reference(number),
-                None if compute is None else _options_for(linkage, compute), _paper_listing(number))
+                None if compute is None else _options_for(linkage, compute), _paper_listing(number),
+                reference_key=f"paper Example {number}")
 
 
-def _grids(number, dense_step=5.0):
-    """(dense, quick) crank angles of Example ``number``: its FOR loop at STEP 5 and as printed."""
+def _grids(number):
+    """(default, quick) crank angles of Example ``number``: both its FOR loop as printed.
+
+    The reference of a paper mechanism costs about 0.1 s a position (a multibody
+    model polished at 50 digits), so the bench keeps the listing's own grid (19
+    or 25 positions: the rows of the paper's table).
+    """
     from .listings import example_loop, for_loop_angles
 
     start, stop, step = example_loop(number)
-    return for_loop_angles(start, stop, math.copysign(dense_step, step)), for_loop_angles(start, stop, step)
+    angles = for_loop_angles(start, stop, step)
+    return angles, angles
 
 
 def paper_cases() -> list[Case]:
