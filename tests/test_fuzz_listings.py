@@ -130,7 +130,9 @@ def deep_nesting(text: str, data) -> str:
         "minus": f"3 X = {'-' * depth}1",
         "for": "3 " + ": ".join(f"FOR J{k % 10} = 1 TO 1" for k in range(min(depth, 300))),
         "gosub": "3 GOSUB 3",
-        "if": "3 " + "IF 1 THEN " * min(depth, 500) + "X = 1",
+        # Finding F6: nesting IFs costs time growing faster than the square of the depth
+        # (500 deep: 1.7 s before "Out of memory"), so this stays below the run budget.
+        "if": "3 " + "IF 1 THEN " * min(depth, 150) + "X = 1",
         "fn": "3 DEF FNA(X) = FNA(X) + 1: X = FNA(1)",
     }
     return lines[kind] + "\n" + text
