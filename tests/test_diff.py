@@ -127,13 +127,16 @@ def test_cli_listing_error_is_reported_as_the_basic_error(tmp_path, capsys):
 
 def test_cli_ambiguous_printed_row_names_the_line(tmp_path, capsys):
     table = tmp_path / "t.txt"
-    table.write_text("# comment\n       A       B\n    1.00    2.00\n    1.00 2.00 3.00\n")
+    table.write_text("# comment\n       A       B       C\n    1.00    2.00    3.00\n 1.00 2.00\n 4.0 5.0 6.0 7.0\n")
     program = tmp_path / "out.csv"
     program.write_text("1,2\n")
     parser = argparse.ArgumentParser()
     diff.add_arguments(parser)
     assert diff.main(parser.parse_args([str(program), str(table)])) == 2
-    assert "line 4: two cells under column" in capsys.readouterr().err
+    assert "line 4: two cells under column 1" in capsys.readouterr().err
+    table.write_text("       A       B\n    1.00    2.00\n    1.00 2.00 3.00\n")
+    assert diff.main(parser.parse_args([str(program), str(table)])) == 2
+    assert "line 3: 3 cells for 2 columns" in capsys.readouterr().err
 
 
 def test_full_rows_are_read_in_order_even_under_a_loosely_aligned_header():

@@ -115,6 +115,8 @@ def _rows_of_printed(lines: list[tuple[int, str]]) -> Table:
             table.names = [c.text for c in cells]
             edges = [end for end, _ in tokens]
             continue
+        if edges and len(tokens) > len(edges):
+            raise TableError(f"line {number}: {len(tokens)} cells for {len(edges)} columns")
         if edges and len(tokens) < len(edges):  # a full row is read in order, a short one by position
             try:
                 cells = _place_by_edges(tokens, edges)
