@@ -77,18 +77,75 @@ def test_every_signed_force_output_matches_the_real_mechanism(n, tmp_path):
     from yaseer.reference.paper_mechanisms import example_forces
 
     prefix, line, names = SIGNED_PRINT[n]
-    text = (LISTINGS / f"example{n}.bas").read_text().splitlines()
-    widened = [line if row.startswith(prefix) else row for row in text]
-    assert widened != text
-    listing = tmp_path / f"example{n}_forces.bas"
-    listing.write_text("\n".join(widened) + "\n")
-    result = subprocess.run([sys.executable, "-m", "yaseer", "run", str(listing), "--format", "csv"],
-                            capture_output=True, text=True, timeout=120)
-    assert result.returncode == 0, result.stderr
-    printed = np.array([[float(v) for v in row.split(",")] for row in result.stdout.strip().splitlines()])
+    printed = _run_widened(n, prefix, line, tmp_path)
     model = example_forces(n, list(printed[:, 0]))
     factor = math.sin(math.radians(90.1)) ** 2 if n == 2 else 1.0
     for k, name in enumerate(names, start=1):
         expected = model[name] * factor
         scale = np.abs(expected).max()
         assert np.abs(printed[:, k] - expected).max() < 1e-10 * scale, name
+
+
+def _length_and_rates(s, body_from, point_from, body_to, point_to):
+    """|p_to - p_from| and its first two time derivatives (p_from fixed or moving)."""
+    r = [a - b for a, b in zip(s.position(body_to, point_to), s.position(body_from, point_from))]
+    v = [a - b for a, b in zip(s.velocity(body_to, point_to), s.velocity(body_from, point_from))]
+    acc = [a - b for a, b in zip(s.acceleration(body_to, point_to), s.acceleration(body_from, point_from))]
+    length = math.hypot(*r)
+    rate = (r[0] * v[0] + r[1] * v[1]) / length
+    return length, rate, (v[0] ** 2 + v[1] ** 2 + r[0] * acc[0] + r[1] * acc[1] - rate ** 2) / length
+
+
+def _example1_more(s):
+    d = "link BD", "D"
+    return [s.angle("link BD"), s.omega("link BD"), s.alpha("link BD"), s.position(*d)[0],
+            s.velocity(*d)[0], s.acceleration(*d)[0]]
+
+
+def _example3_more(s):
+    d = "member CCoD", "D"
+    return [*_length_and_rates(s, "member CCoD", "Co", "rod BAC", "C"), s.position(*d)[1],
+            s.velocity(*d)[0], s.velocity(*d)[1], s.acceleration(*d)[0], s.acceleration(*d)[1]]
+
+
+def _example4_more(s):
+    e = "link EDH", "E"
+    return [s.angle("link EDH"), s.direction("rocker HoH", "H", "Ho"), s.omega("rocker HoH"),
+            s.alpha("rocker HoH"), s.position(*e)[0], s.position(*e)[1], s.velocity(*e)[1],
+            s.acceleration(*e)[1]]
+
+
+# Kinematic outputs beyond the printed columns: the last library call's other outputs
+# (rod / coupler angle and rates, the follower's T(14) as B->Bo, Program 3's L(5) and its
+# rates, all components of the point) against the real mechanism.
+WIDENED_KINEMATICS = {
+    1: ("60 ", "60 PRINT QQ; T(3); W(3); A(3); X(2); V(3); A(35): NEXT QQ", _example1_more),
+    3: ("3060 ", "3060 PRINT T(2); L(5); D(4); E(4); Y(7); V(13); V(14); A(45); A(46): NEXT QQ: END",
+        _example3_more),
+    4: ("4080 ", "4080 GOSUB PROG 2: PRINT QQ; T(13); T(14); W(7); A(7); X(4); Y(4); V(8); A(40): NEXT QQ: END",
+        _example4_more),
+}
+
+
+def _run_widened(n, prefix, line, tmp_path):
+    text = (LISTINGS / f"example{n}.bas").read_text().splitlines()
+    widened = [line if row.startswith(prefix) else row for row in text]
+    assert widened != text
+    listing = tmp_path / f"example{n}_widened.bas"
+    listing.write_text("\n".join(widened) + "\n")
+    result = subprocess.run([sys.executable, "-m", "yaseer", "run", str(listing), "--format", "csv"],
+                            capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stderr
+    return np.array([[float(v) for v in row.split(",")] for row in result.stdout.strip().splitlines()])
+
+
+@pytest.mark.parametrize("n", [1, 3, 4])
+def test_other_kinematic_outputs_match_the_real_mechanism(n, tmp_path):
+    from yaseer.reference.paper_mechanisms import example_snapshots
+
+    prefix, line, reader = WIDENED_KINEMATICS[n]
+    printed = _run_widened(n, prefix, line, tmp_path)
+    model = np.array([[float(v) for v in reader(s)] for s in example_snapshots(n, list(printed[:, 0]))])
+    assert model.shape == printed[:, 1:].shape
+    error = np.abs(printed[:, 1:] - model) / np.abs(model).max(axis=0)
+    assert error.max() < 1e-11, error.max(axis=0)
