@@ -182,3 +182,13 @@ def test_listing_backsolve_recovers_the_crank(listing_csv):
     expected = crank_from_slider(-OFFSET, AO, AB, 9.79, -41.46, -709.1, crank_side=RIGHT)
     assert (float(theta), float(omega), float(alpha)) == pytest.approx(tuple(expected), rel=1e-9)
     assert float(theta) == pytest.approx(THETA, abs=0.2) and float(omega) == pytest.approx(OMEGA, abs=0.1)
+
+
+def test_listing_with_the_pseudographic_method_gives_the_same_rows(listing_csv):
+    """The TK model's construction (PROG 1 method "pseudographic") against the default."""
+    done = subprocess.run([sys.executable, "-m", "yaseer", "run", str(LISTING), "--format", "csv",
+                           "--method", "1=pseudographic"], capture_output=True, text=True, check=True)
+    rows = list(csv.reader(done.stdout.splitlines()))
+    assert len(rows) == len(listing_csv) == 51
+    for mine, default in zip(rows[:-1], listing_csv[:-1]):
+        assert [float(x) for x in mine] == pytest.approx([float(x) for x in default], rel=1e-9, abs=1e-9)
