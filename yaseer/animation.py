@@ -23,6 +23,7 @@ angles in degrees counter-clockwise from +x, any consistent length unit.
 from __future__ import annotations
 
 import math
+import shutil
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Callable, Sequence
@@ -464,11 +465,8 @@ def build_scene(frames: Sequence[Frame]) -> Scene:
     return Scene(list(frames), bounds, traced_paths(frames, span), 0.035 * span)
 
 
-def draw_frame(ax, scene: Scene, number: int, title: str = "") -> None:
-    """Draw frame ``number`` of ``scene`` on an empty ``ax``."""
-    from matplotlib.patches import Circle, Polygon
-
-    frame = scene.frames[number]
+def draw_background(ax, scene: Scene) -> None:
+    """What every frame shares: the limits, equal scales, the grid and the traced paths."""
     ax.set_xlim(scene.bounds[0], scene.bounds[1])
     ax.set_ylim(scene.bounds[2], scene.bounds[3])
     ax.set_aspect("equal", adjustable="box")
@@ -477,32 +475,52 @@ def draw_frame(ax, scene: Scene, number: int, title: str = "") -> None:
     for colour, path in zip(_colours(), scene.paths):
         for segment in path_segments(path, span):
             ax.plot(*zip(*segment), color=colour, linewidth=1.0, alpha=0.6, marker=".", markersize=2.5)
+
+
+def draw_moving(ax, scene: Scene, number: int, title: str = "", animated: bool = False) -> list:
+    """Add frame ``number``'s mechanism, angle and printed text to ``ax``; returns the artists."""
+    from matplotlib.patches import Circle, Polygon
+
+    frame = scene.frames[number]
+    artists: list = []
     for snapshot in frame.snapshots:
         for pivot in snapshot.ground:
-            ax.add_patch(Polygon(_ground_triangle(pivot, scene.size), closed=True, color="0.6", zorder=2))
+            artists.append(ax.add_patch(Polygon(_ground_triangle(pivot, scene.size), closed=True,
+                                                color="0.6", zorder=2)))
         for slider in snapshot.sliders:
             if slider.axis is not None:
-                ax.axline(slider.axis, plus(slider.axis, polar(1.0, slider.angle_deg)),
-                          color="0.5", linewidth=0.8, linestyle="-.", zorder=1)
-            ax.add_patch(Polygon(_block(slider, scene.size), closed=True, facecolor="#c9d6e8",
-                                 edgecolor="black", linewidth=1.0, zorder=4))
+                artists.append(ax.axline(slider.axis, plus(slider.axis, polar(1.0, slider.angle_deg)),
+                                         color="0.5", linewidth=0.8, linestyle="-.", zorder=1))
+            artists.append(ax.add_patch(Polygon(_block(slider, scene.size), closed=True, facecolor="#c9d6e8",
+                                                edgecolor="black", linewidth=1.0, zorder=4)))
         for traced in snapshot.points:  # the rigid link carried on to its point of interest
-            ax.plot(*zip(traced.joint, traced.position), color="0.3", linewidth=2.0,
-                    solid_capstyle="round", zorder=3)
+            artists += ax.plot(*zip(traced.joint, traced.position), color="0.3", linewidth=2.0,
+                               solid_capstyle="round", zorder=3)
         for bar in snapshot.bars:
             style = dict(color="0.45", linewidth=1.4, linestyle="--") if bar.virtual else \
                 dict(color="black", linewidth=3.2, solid_capstyle="round")
-            ax.plot(*zip(bar.start, bar.end), zorder=3, **style)
+            artists += ax.plot(*zip(bar.start, bar.end), zorder=3, **style)
         for joint in (*snapshot.joints, *snapshot.ground):
-            ax.add_patch(Circle(joint, 0.35 * scene.size, facecolor="white", edgecolor="black",
-                                linewidth=1.2, zorder=5))
+            artists.append(ax.add_patch(Circle(joint, 0.35 * scene.size, facecolor="white", edgecolor="black",
+                                               linewidth=1.2, zorder=5)))
     for colour, path in zip(_colours(), scene.paths):
         position = path.positions[number]
         if position is not None:
-            ax.plot(*position, marker="o", markersize=5, color=colour, zorder=6)
-    ax.set_title(f"{title}   crank angle {frame.crank_angle:.1f}\N{DEGREE SIGN}".strip(), fontsize=10)
-    ax.annotate(frame.printed, xy=(0.0, 0.0), xycoords="axes fraction", xytext=(0, -24),
-                textcoords="offset points", va="top", ha="left", family="monospace", fontsize=9)
+            artists += ax.plot(*position, marker="o", markersize=5, color=colour, zorder=6)
+    heading = f"{title}   crank angle {frame.crank_angle:.1f}\N{DEGREE SIGN}".strip()
+    artists.append(ax.text(0.5, 1.015, heading, transform=ax.transAxes, ha="center", va="bottom", fontsize=10))
+    artists.append(ax.annotate(frame.printed, xy=(0.0, 0.0), xycoords="axes fraction", xytext=(0, -24),
+                               textcoords="offset points", va="top", ha="left", family="monospace",
+                               fontsize=9, annotation_clip=False))
+    for artist in artists:
+        artist.set_animated(animated)
+    return artists
+
+
+def draw_frame(ax, scene: Scene, number: int, title: str = "") -> None:
+    """Draw frame ``number`` of ``scene`` on an empty ``ax`` (background and mechanism)."""
+    draw_background(ax, scene)
+    draw_moving(ax, scene, number, title)
 
 
 def _colours():
@@ -524,36 +542,139 @@ def _block(slider: Slider, size: float) -> list[Point]:
             for sa, sc in ((1, 1), (-1, 1), (-1, -1), (1, -1))]
 
 
+class _Painter:
+    """Paints frames fast: the background is drawn once, each frame only adds its moving parts."""
+
+    def __init__(self, scene: Scene, title: str) -> None:
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        width, height, bottom, top = _figure_layout(scene)
+        self.figure, self.ax = plt.subplots(figsize=(width, height), dpi=90)
+        self.figure.subplots_adjust(left=0.1, right=0.97, top=1.0 - top / height, bottom=bottom / height)
+        self.scene, self.title = scene, title
+        draw_background(self.ax, scene)
+        self.figure.canvas.draw()
+        self.background = self.figure.canvas.copy_from_bbox(self.figure.bbox)
+
+    def image(self, number: int):
+        """Frame ``number`` as a PIL RGB image."""
+        import numpy as np
+        from PIL import Image
+
+        canvas = self.figure.canvas
+        canvas.restore_region(self.background)
+        artists = draw_moving(self.ax, self.scene, number, self.title, animated=True)
+        for artist in sorted(artists, key=lambda a: a.get_zorder()):
+            self.ax.draw_artist(artist)
+        pixels = np.asarray(canvas.buffer_rgba())
+        image = Image.fromarray(pixels[..., :3].copy(), "RGB")
+        for artist in artists:
+            artist.remove()
+        return image
+
+    def close(self) -> None:
+        import matplotlib.pyplot as plt
+
+        plt.close(self.figure)
+
+
 def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0,
            frame_number: int = 0, progress_file=None) -> int:
     """Write the animation to ``out`` (.gif, .mp4, .html; .png: only frame ``frame_number``).
 
     Returns the number of frames written.  Raises :class:`AnimationError` for
-    an unknown suffix, no frames, or .mp4 without ffmpeg.
+    an unknown suffix, no frames, a missing frame, or .mp4 without ffmpeg.
+    A progress bar (stderr) appears when painting takes over a second.
     """
     suffix = out.suffix.lower()
     if suffix not in SUFFIXES:
         raise AnimationError(f"Unknown animation format {out.suffix!r}: use {', '.join(SUFFIXES)}")
     scene = build_scene(frames)
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    width, height, bottom, top = _figure_layout(scene)
-    figure, ax = plt.subplots(figsize=(width, height), dpi=90)
-    figure.subplots_adjust(left=0.1, right=0.97, top=1.0 - top / height, bottom=bottom / height)
+    if suffix == ".png" and not 0 <= frame_number < len(scene.frames):
+        raise AnimationError(f"Frame {frame_number} does not exist: the run has {len(scene.frames)}")
+    if suffix == ".mp4" and shutil.which("ffmpeg") is None:
+        raise AnimationError("Writing .mp4 needs ffmpeg, which is not installed here; use .gif or .html")
+    painter = _Painter(scene, title)
     try:
         if suffix == ".png":
-            if not 0 <= frame_number < len(scene.frames):
-                raise AnimationError(f"Frame {frame_number} does not exist: the run has {len(scene.frames)}")
-            draw_frame(ax, scene, frame_number, title)
-            figure.savefig(out)
+            painter.image(frame_number).save(out)
             return 1
-        _write_movie(figure, ax, scene, out, title, fps, progress_file)
-        return len(scene.frames)
+        images = _paint_all(painter, len(scene.frames), progress_file)
     finally:
-        plt.close(figure)
+        painter.close()
+    WRITERS[suffix](images, out, fps)
+    return len(images)
+
+
+def _paint_all(painter: _Painter, count: int, progress_file) -> list:
+    from yaseer.progress import track
+
+    return [painter.image(n) for n in track(range(count), description="rendering", unit="frame",
+                                             file=progress_file)]
+
+
+def write_gif(images: list, out: Path, fps: float) -> None:
+    """An endlessly looping GIF, ``fps`` frames a second (Pillow)."""
+    frames = [image.convert("P", palette=1, colors=255) for image in images]  # 1 = Image.ADAPTIVE
+    frames[0].save(out, save_all=True, append_images=frames[1:], duration=round(1000.0 / fps), loop=0)
+
+
+HTML_PAGE = """<!DOCTYPE html>
+<html><head><meta charset="utf-8"><title>{title}</title></head>
+<body style="font-family: sans-serif">
+<img id="frame" src="{first}" alt="{title}"><br>
+<button id="play">pause</button>
+<input id="slider" type="range" min="0" max="{last}" value="0" style="width: 60%">
+<span id="number">0</span>
+<script>
+const frames = {frames};
+const img = document.getElementById("frame"), slider = document.getElementById("slider");
+const number = document.getElementById("number"), play = document.getElementById("play");
+let current = 0, timer = null;
+function show(n) {{ current = n; img.src = frames[n]; slider.value = n; number.textContent = n; }}
+function start() {{ timer = setInterval(() => show((current + 1) % frames.length), {interval}); play.textContent = "pause"; }}
+function stop() {{ clearInterval(timer); timer = null; play.textContent = "play"; }}
+play.onclick = () => (timer ? stop() : start());
+slider.oninput = () => {{ stop(); show(Number(slider.value)); }};
+start();
+</script>
+</body></html>
+"""
+
+
+def write_html(images: list, out: Path, fps: float) -> None:
+    """A self-contained page: the frames as PNG data, play/pause and a frame slider."""
+    import base64
+    import io
+    import json
+
+    urls = []
+    for image in images:
+        buffer = io.BytesIO()
+        image.save(buffer, format="PNG")
+        urls.append("data:image/png;base64," + base64.b64encode(buffer.getvalue()).decode("ascii"))
+    out.write_text(HTML_PAGE.format(title=out.stem, first=urls[0], last=len(urls) - 1, frames=json.dumps(urls),
+                                    interval=round(1000.0 / fps)), encoding="utf-8")
+
+
+def write_mp4(images: list, out: Path, fps: float) -> None:
+    """H.264 through the ffmpeg program: raw RGB frames piped to it."""
+    import subprocess
+
+    width, height = images[0].size
+    width, height = width - width % 2, height - height % 2  # yuv420p wants even sizes
+    command = ["ffmpeg", "-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "rgb24",
+               "-s", f"{width}x{height}", "-r", f"{fps}", "-i", "-", "-pix_fmt", "yuv420p", str(out)]
+    data = b"".join(image.crop((0, 0, width, height)).tobytes() for image in images)
+    result = subprocess.run(command, input=data, capture_output=True)
+    if result.returncode != 0:
+        raise AnimationError(f"ffmpeg failed: {result.stderr.decode(errors='replace').strip()[:200]}")
+
+
+WRITERS = {".gif": write_gif, ".html": write_html, ".mp4": write_mp4}
 
 
 FIGURE_WIDTH = 6.4  # inches
@@ -572,32 +693,3 @@ def _figure_layout(scene: Scene) -> tuple[float, float, float, float]:
     bottom = 0.55 + 0.18 * caption_lines
     top = 0.4
     return FIGURE_WIDTH, axes_height + bottom + top, bottom, top
-
-
-def _write_movie(figure, ax, scene: Scene, out: Path, title: str, fps: float, progress_file) -> None:
-    from matplotlib import animation
-
-    from yaseer.progress import bar
-
-    suffix = out.suffix.lower()
-    if suffix == ".mp4" and not animation.writers.is_available("ffmpeg"):
-        raise AnimationError("Writing .mp4 needs ffmpeg, which is not installed here; use .gif or .html")
-    with bar(len(scene.frames), "rendering", "frame", file=progress_file) as progress:
-        drawn: set[int] = set()
-
-        def update(number: int) -> list:
-            ax.clear()
-            draw_frame(ax, scene, number, title)
-            if number not in drawn:
-                drawn.add(number)
-                progress.update(1)
-            return []
-
-        movie = animation.FuncAnimation(figure, update, frames=len(scene.frames),
-                                        init_func=lambda: [], interval=1000.0 / fps, blit=False)
-        if suffix == ".html":
-            out.write_text(movie.to_jshtml(fps=fps), encoding="utf-8")
-        elif suffix == ".gif":
-            movie.save(str(out), writer=animation.PillowWriter(fps=fps))
-        else:
-            movie.save(str(out), writer=animation.FFMpegWriter(fps=fps))

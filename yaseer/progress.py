@@ -63,7 +63,8 @@ def track(
     """Iterate over ``items`` with a :func:`bar` that ticks once per item."""
     if total is None and hasattr(items, "__len__"):
         total = len(items)  # type: ignore[arg-type]
-    with bar(total, description, unit, file, delay, force, refresh_seconds) as progress:
+    with bar(total, description, unit, file=file, delay=delay, force=force,
+             refresh_seconds=refresh_seconds) as progress:
         for item in items:
             yield item
             progress.update(1)
