@@ -33,14 +33,12 @@ from yaseer.linkages.planar import (
     Motion,
     Rotation,
     Stretch,
-    any_nonzero,
-    crank_pin,
+    driven_crank,
     fixed_point,
     perpendicular_direction,
     rigid_point,
     solve_two_directions,
     still,
-    unit,
     unit_degrees,
 )
 
@@ -174,11 +172,8 @@ def fourbar_closed(
     """
     b = np.asarray(coupler_length, dtype=float)
     c = np.asarray(follower_length, dtype=float)
-    length = Stretch(*(np.asarray(v, dtype=float) for v in (crank_length, crank_length_rate, crank_length_accel)))
-    crank = Rotation(np.radians(np.asarray(crank_angle_deg, dtype=float)), np.asarray(omega, float), np.asarray(alpha, float))
-    moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
-    pin_a = crank_pin(length, crank, unit_degrees(crank_angle_deg))
-    pin_a = pin_a if moving else still(pin_a)
+    crank, length, pin_a, moving = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate,
+                                                crank_length_accel)
     pivot = fixed_point(np.asarray(ground_length, dtype=float) * unit_degrees(ground_angle_deg))
     if np.any(b <= 0) or np.any(c <= 0):
         raise AssemblyError("coupler or follower of zero length")

@@ -30,13 +30,11 @@ from yaseer.linkages.planar import (
     Motion,
     Rotation,
     Stretch,
-    any_nonzero,
-    crank_pin,
+    driven_crank,
     fixed_point,
     perpendicular_direction,
     rigid_point,
     solve_two_directions,
-    still,
     unit,
     unit_degrees,
 )
@@ -139,11 +137,8 @@ def inverted_slider_crank_closed(
     ``ground_length``, ``ground_angle_deg``: the vector Bo->Ao.  Raises
     AssemblyError where the crank pin A falls on Bo (L5 = 0).
     """
-    length = Stretch(*(np.asarray(v, dtype=float) for v in (crank_length, crank_length_rate, crank_length_accel)))
-    crank = Rotation(np.radians(np.asarray(crank_angle_deg, dtype=float)), np.asarray(omega, float), np.asarray(alpha, float))
-    moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
-    pin_a = crank_pin(length, crank, unit_degrees(crank_angle_deg))
-    pin_a = pin_a if moving else still(pin_a)
+    crank, length, pin_a, moving = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate,
+                                                crank_length_accel)
     pivot = fixed_point(-np.asarray(ground_length, dtype=float) * unit_degrees(ground_angle_deg))
     radius = pin_a.pos - pivot.pos
     l5 = np.abs(radius)
@@ -195,11 +190,8 @@ def inverted_slider_crank_paper(
     t9 = np.where(denominator < 0, t9 + 180.0, t9)
     c9, s9 = cos_sin_degrees(t9)
     l5 = divide(denominator, c9, "COS T(9)")  # (8)
-    length = Stretch(l7, d3, e3)
-    crank = Rotation(np.radians(np.asarray(crank_angle_deg, float)), w0, a0)
-    moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
-    pin_a = crank_pin(length, crank, c7 + 1j * s7)
-    pin_a = pin_a if moving else still(pin_a)
+    crank, length, pin_a, moving = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate,
+                                                crank_length_accel)
     pivot = fixed_point(-l6 * (c6 + 1j * s6))
     follower_angle = np.radians(t9)
     if not moving:

@@ -158,3 +158,25 @@ def perpendicular_direction(reference_angle, offset_deg, distance) -> np.ndarray
     """
     sign = np.where(np.asarray(distance) < 0, -1.0, 1.0)
     return sign * unit(reference_angle + np.radians(offset_deg) + np.pi / 2)
+
+
+class DrivenCrank(NamedTuple):
+    """The driving crank of a call: its rotation, its (flexible) length, the motion
+    of its pin A, and whether any crank rate is non-zero (``moving``; when not,
+    A's velocity and acceleration are exactly 0 and no rates are computed)."""
+
+    rotation: Rotation
+    length: Stretch
+    pin: Motion
+    moving: bool
+
+
+def driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel) -> DrivenCrank:
+    """The crank inputs every linkage shares, as arrays: angle in degrees (exact at
+    multiples of 90), omega, alpha in rad/s, rad/s**2, the length and its rates."""
+    length = Stretch(*(np.asarray(v, dtype=float) for v in (crank_length, crank_length_rate, crank_length_accel)))
+    rotation = Rotation(np.radians(np.asarray(crank_angle_deg, dtype=float)), np.asarray(omega, float),
+                        np.asarray(alpha, float))
+    moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
+    pin = crank_pin(length, rotation, unit_degrees(crank_angle_deg))
+    return DrivenCrank(rotation, length, pin if moving else still(pin), moving)

@@ -31,8 +31,7 @@ from yaseer.linkages.planar import (
     Motion,
     Rotation,
     Stretch,
-    any_nonzero,
-    crank_pin,
+    driven_crank,
     dot,
     fixed_point,
     perpendicular_direction,
@@ -162,11 +161,8 @@ def slider_crank_closed(
     """
     e = np.asarray(eccentricity, dtype=float)
     b = np.asarray(rod_length, dtype=float)
-    length = Stretch(*(np.asarray(v, dtype=float) for v in (crank_length, crank_length_rate, crank_length_accel)))
-    crank = Rotation(np.radians(np.asarray(crank_angle_deg, dtype=float)), np.asarray(omega, float), np.asarray(alpha, float))
-    moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
-    pin_a = crank_pin(length, crank, unit_degrees(crank_angle_deg))
-    pin_a = pin_a if moving else still(pin_a)
+    crank, length, pin_a, moving = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate,
+                                                crank_length_accel)
     phi = np.radians(np.asarray(axis_deg, dtype=float))
     n = unit_degrees(axis_deg)
     if np.any(b <= 0):
