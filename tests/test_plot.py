@@ -107,3 +107,12 @@ def test_plot_command_refuses_a_listing_without_a_table(tmp_path):
     assert result.returncode == 1
     assert "no table" in result.stderr
     assert not (tmp_path / "out").exists()
+
+
+def test_plot_command_reports_an_unwritable_output_directory(tmp_path):
+    occupied = tmp_path / "occupied"
+    occupied.write_text("a file, not a directory")
+    result = _yaseer_plot("listings/example2.bas", "--out", str(occupied))
+    assert result.returncode == 1
+    assert result.stderr.startswith(f"Cannot write the plot into {occupied}")
+    assert "Traceback" not in result.stderr

@@ -49,6 +49,11 @@ def main(args) -> int:
         return 1
     spec = plotting.figure_spec(listing, len(rows[0]))
     figure = plotting.build_figure(rows, spec)
-    for path in plotting.save_figure(figure, Path(args.out), listing.stem):
+    try:
+        paths = plotting.save_figure(figure, Path(args.out), listing.stem)
+    except OSError as exc:
+        print(f"Cannot write the plot into {args.out}: {exc.strerror or exc}", file=sys.stderr)
+        return 1
+    for path in paths:
         print(path)
     return 0
