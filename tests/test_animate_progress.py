@@ -41,3 +41,25 @@ def test_unknown_totals_count_up():
     with bar(None, "running", "line", file=stream, delay=0.0, refresh_seconds=0.0) as progress:
         progress.update(5)
     assert "5line" in stream.getvalue().replace(" ", "")
+
+
+def test_program_output_to_a_file_is_counted_on_the_terminal():
+    from yaseer.progress import output_progress
+
+    output, terminal = io.StringIO(), Terminal()
+    with output_progress(output, file=terminal, delay=0.0, refresh_seconds=0.0) as stream:
+        stream.write(" 1 \n 2 \n")
+        stream.write(" 3 \n")
+    assert output.getvalue() == " 1 \n 2 \n 3 \n"  # the output itself is untouched
+    assert "3line" in terminal.getvalue().replace(" ", "")
+    assert "1 \n" not in terminal.getvalue()
+
+
+def test_program_output_to_the_terminal_gets_no_bar():
+    from yaseer.progress import output_progress
+
+    screen = Terminal()
+    with output_progress(screen, delay=0.0, refresh_seconds=0.0) as stream:
+        assert stream is screen
+        stream.write("row\n")
+    assert screen.getvalue() == "row\n"

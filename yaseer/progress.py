@@ -10,6 +10,7 @@ lazily: importing this module costs nothing at start-up.
 from __future__ import annotations
 
 import sys
+from contextlib import contextmanager
 from typing import IO, Iterable, Iterator, TypeVar
 
 DELAY_SECONDS = 1.0  # a task quicker than this shows no bar at all
@@ -46,6 +47,7 @@ def bar(
         leave=False,
         dynamic_ncols=True,
         mininterval=refresh_seconds,
+        miniters=1,
         disable=False if force else not _is_terminal(stream),
     )
 
@@ -76,3 +78,48 @@ def _is_terminal(stream: IO[str]) -> bool:
         return bool(isatty and isatty())
     except ValueError:  # a closed stream
         return False
+
+
+class CountingStream:
+    """A text stream that forwards to ``stream`` and ticks ``progress`` once per line written."""
+
+    def __init__(self, stream: IO[str], progress) -> None:
+        self._stream = stream
+        self._progress = progress
+
+    def write(self, text: str) -> int:
+        """Forward ``text``; each newline in it is one tick."""
+        self._stream.write(text)
+        lines = text.count("\n")
+        if lines:
+            self._progress.update(lines)
+        return len(text)
+
+    def flush(self) -> None:
+        """Flush the stream underneath."""
+        self._stream.flush()
+
+    def isatty(self) -> bool:
+        """Whatever the stream underneath is."""
+        return _is_terminal(self._stream)
+
+
+@contextmanager
+def output_progress(stream: IO[str], description: str = "running", file: IO[str] | None = None,
+                    delay: float = DELAY_SECONDS, refresh_seconds: float = 0.1) -> Iterator[IO[str]]:
+    """A program's output stream that counts its lines on a bar, when that cannot mix with it.
+
+    When ``stream`` is a terminal the program's output is the progress, so
+    ``stream`` itself is given back and no bar is drawn; otherwise (output to
+    a file or a pipe) a bar counting the lines written appears on ``file``
+    (stderr) after ``delay`` seconds, if that is a terminal.  Usage::
+
+        with output_progress(sys.stdout) as out:
+            machine = Machine(screen=out)
+            machine.run()
+    """
+    if _is_terminal(stream):
+        yield stream
+        return
+    with bar(None, description, "line", file=file, delay=delay, refresh_seconds=refresh_seconds) as progress:
+        yield CountingStream(stream, progress)
