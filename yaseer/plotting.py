@@ -64,12 +64,12 @@ PAPER_EXAMPLES: dict[str, FigureSpec] = {
         ),
     ),
     "example3": FigureSpec(
-        "Example 3: indexing mechanism, output member CoD (paper Fig. 10)",
+        "Example 3: indexing mechanism, output member CCoD (paper Fig. 10)",
         Quantity("crank angle T(2)", DEG),
         (
-            Quantity("inclination of CoD, T(9)", DEG),
-            Quantity("angular velocity of CoD, W(4)", RAD_S),
-            Quantity("angular acceleration of CoD, A(4)", RAD_S2),
+            Quantity("inclination of CCoD (Co→C), T(9)", DEG),
+            Quantity("angular velocity of CCoD, W(4)", RAD_S),
+            Quantity("angular acceleration of CCoD, A(4)", RAD_S2),
             Quantity("x of point D, X(7)", "cm"),
         ),
     ),
