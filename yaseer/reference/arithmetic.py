@@ -97,13 +97,31 @@ class MpArithmetic:
         return float(value)
 
     def solve(self, rows, rhs):
-        """Solve the square system ``rows @ x = rhs`` by LU at the context's precision."""
-        ctx = self.ctx
-        try:
-            solution = ctx.lu_solve(ctx.matrix(rows), ctx.matrix(rhs))
-        except ZeroDivisionError as exc:
-            raise SingularSystemError("singular system") from exc
-        return [solution[i] for i in range(len(rhs))]
+        """Solve the square system ``rows @ x = rhs`` at the context's precision.
+
+        Gaussian elimination with partial pivoting on plain lists (mpmath's
+        matrix class costs ten times more for these 5-20 unknowns).
+        """
+        n = len(rhs)
+        augmented = [list(row) + [value] for row, value in zip(rows, rhs)]
+        for k in range(n):
+            pivot = max(range(k, n), key=lambda i: abs(augmented[i][k]))
+            if not augmented[pivot][k]:
+                raise SingularSystemError("singular system")
+            augmented[k], augmented[pivot] = augmented[pivot], augmented[k]
+            head = augmented[k]
+            for i in range(k + 1, n):
+                row = augmented[i]
+                factor = row[k] / head[k]
+                if factor:
+                    for j in range(k + 1, n + 1):
+                        row[j] -= factor * head[j]
+        solution = [self.ctx.mpf(0)] * n
+        for k in range(n - 1, -1, -1):
+            head = augmented[k]
+            total = head[n] - sum((head[j] * solution[j] for j in range(k + 1, n)), self.ctx.mpf(0))
+            solution[k] = total / head[k]
+        return solution
 
 
 FLOAT = FloatArithmetic()
