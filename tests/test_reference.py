@@ -524,3 +524,17 @@ def test_basic_linkage_references_in_mpmath():
     s = basic_linkages.slider_crank("25", "75", "300", [33.0], 25, 0, axis_deg="0.1", number="mpmath", dps=40)
     g = basic_linkages.slider_crank(25, 75, 300, [33.0], 25, 0, axis_deg=0.1)
     assert abs(float(s["ayB"][0]) - g["ayB"][0]) < 1e-10 * abs(g["axB"][0])
+
+
+def test_mp_solve_against_a_system_with_a_known_solution():
+    """A 3x3 system built from x = (1/3, -2, 7/11) needs pivoting (zero first pivot)."""
+    from yaseer.reference.arithmetic import SingularSystemError
+
+    ar = MpArithmetic(60)
+    x = [ar.num(1) / 3, ar.num(-2), ar.num(7) / 11]
+    rows = [[ar.num(0), ar.num(2), ar.num(1)], [ar.num(4), ar.num(-1), ar.num(3)], [ar.num(1), ar.num(5), ar.num(-2)]]
+    rhs = [sum(a * b for a, b in zip(row, x)) for row in rows]
+    solved = ar.solve(rows, rhs)
+    assert all(abs(a - b) < ar.num(10) ** -57 for a, b in zip(solved, x))
+    with pytest.raises(SingularSystemError):
+        ar.solve([[ar.num(1), ar.num(2)], [ar.num(2), ar.num(4)]], [ar.num(1), ar.num(2)])
