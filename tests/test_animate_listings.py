@@ -93,22 +93,23 @@ def test_the_command_writes_a_gif_with_a_frame_per_row(tmp_path):
         assert image.n_frames == 19
 
 
-def test_command_errors_are_one_line(tmp_path):
+def test_command_errors_are_one_line(tmp_path, monkeypatch, capsys):
+    from yaseer.cli import main
+
+    monkeypatch.chdir(tmp_path)
     (tmp_path / "bad.bas").write_text("10 PRINT 1\n20 PRINT (\n")
     (tmp_path / "none.bas").write_text("10 PRINT 1\n")
     (tmp_path / "apart.bas").write_text("10 L(2) = 1: L(3) = 9: L(1) = 20: GOSUB PROG 1\n")
     cases = {
-        "missing.bas": "File not found: missing.bas\n",
-        "bad.bas": "Syntax error in 20\n",
-        "none.bas": "Nothing to animate: the listing called no library program before printing\n",
-        "apart.bas": "cannot be assembled (PROG 1) in 10\n",
+        ("missing.bas",): "File not found: missing.bas\n",
+        ("bad.bas",): "Syntax error in 20\n",
+        ("none.bas",): "Nothing to animate: the listing called no library program before printing\n",
+        ("apart.bas",): "cannot be assembled (PROG 1) in 10\n",
+        ("none.bas", "--out", "x.avi"): "Unknown animation format '.avi': use .gif, .mp4, .html, .png\n",
+        ("none.bas", "--method", "2"): "--method wants N=NAME, not '2'\n",
     }
-    for name, message in cases.items():
-        result = run_cli(name, cwd=tmp_path)
-        assert result.returncode == 1
-        assert result.stderr.endswith(message), (name, result.stderr)
-        assert "Traceback" not in result.stderr
-    result = run_cli("none.bas", "--out", "x.avi", cwd=tmp_path)
-    assert result.returncode == 1 and "Unknown animation format" in result.stderr
-    result = run_cli("none.bas", "--method", "2", cwd=tmp_path)
-    assert result.returncode == 1 and "--method wants N=NAME" in result.stderr
+    for args, message in cases.items():
+        assert main(["animate", *args]) == 1
+        shown = capsys.readouterr()
+        assert shown.err.endswith(message), (args, shown.err)
+        assert shown.out == ""
