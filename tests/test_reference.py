@@ -538,3 +538,16 @@ def test_mp_solve_against_a_system_with_a_known_solution():
     assert all(abs(a - b) < ar.num(10) ** -57 for a, b in zip(solved, x))
     with pytest.raises(SingularSystemError):
         ar.solve([[ar.num(1), ar.num(2)], [ar.num(2), ar.num(4)]], [ar.num(1), ar.num(2)])
+
+
+def test_drive_rates_may_change_from_position_to_position():
+    """theta(t) with a varying rate: each position uses its own (rate, acceleration)."""
+    model = slider_crank_model(3.0, 8.0, 2.0)
+    sketch = model.coordinates({"crank": (0, 0, 10), "rod": (2.95, 0.52, 10)})
+    varying = model.analyse([10.0, 50.0], [4.0, -7.0], [1.0, 2.5], sketch)
+    for s, (theta, w, alpha) in zip(varying, [(10.0, 4.0, 1.0), (50.0, -7.0, 2.5)]):
+        exact = slider_crank_closed_form(3.0, 8.0, 2.0, theta, w, alpha)
+        assert rel(s.velocity("rod", "B")[0], exact["v"]) < 1e-11
+        assert rel(s.acceleration("rod", "B")[0], exact["a"]) < 1e-10
+    with pytest.raises(ValueError, match="rates for"):
+        model.analyse([10.0, 50.0], [4.0], 0, sketch)

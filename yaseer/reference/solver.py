@@ -287,8 +287,9 @@ class Mechanism:
                 accuracy=1e-6):
         """Analyse the mechanism at each driver angle of ``angles_deg`` (degrees, in order).
 
-        ``rate``, ``acceleration``: the driver's rad/s and rad/s^2 (the same at
-        every position).  ``level``: how far to go ("positions", "velocities",
+        ``rate``, ``acceleration``: the driver's rad/s and rad/s^2, numbers (the
+        same at every position) or sequences (one per angle: theta(t) with any
+        rate history).  ``level``: how far to go ("positions", "velocities",
         "accelerations", "forces").  ``q_guess``: coordinates near the first
         position; the first position is found by Newton from it, each next one
         by continuation from the previous (float steps of at most
@@ -308,10 +309,12 @@ class Mechanism:
         if home_deg is not None:
             q_float = self._continue(q_guess, None, float(home_deg), max_step_deg=max_step_deg)
             previous = float(home_deg)
-        for angle in angles_deg:
+        angles = list(angles_deg)
+        rates, accelerations = _per_position(rate, len(angles)), _per_position(acceleration, len(angles))
+        for angle, rate_here, acceleration_here in zip(angles, rates, accelerations):
             q_float, q = self._position(q_float, previous, angle, ar, max_step_deg)
             previous = float(angle)
-            drive = self._drive(ar, angle, rate, acceleration)
+            drive = self._drive(ar, angle, rate_here, acceleration_here)
             condition, bound = self.check_conditioning(q, drive, ar, accuracy, level)
             snap = self.snapshot(q, drive, ar, level=level)
             snap.condition, snap.error_bound = condition, bound
@@ -355,6 +358,15 @@ class Mechanism:
             predicted = [v + s * step for v, s in zip(q, slope)]
             q = self.newton(predicted, self._drive(FLOAT, there, 0, 0), tolerance=tolerance)
         return q
+
+
+def _per_position(value, count):
+    """``value`` repeated ``count`` times, or the sequence itself if it has ``count`` entries."""
+    if isinstance(value, (str, bytes)) or not hasattr(value, "__len__"):
+        return [value] * count
+    if len(value) != count:
+        raise ValueError(f"{len(value)} rates for {count} crank angles")
+    return list(value)
 
 
 class Snapshot:
