@@ -37,8 +37,11 @@ def main(args) -> int:
         frames = record_listing(text, methods)
         count = render(frames, out, title=args.title if args.title is not None else listing.name,
                        fps=args.fps, frame_number=args.frame)
-    except OSError as error:
+    except FileNotFoundError as error:
         print(f"File not found: {error.filename or listing}", file=sys.stderr)
+        return 1
+    except OSError as error:
+        print(f"Cannot use {error.filename or listing}: {error.strerror or error}", file=sys.stderr)
         return 1
     except (BasicError, AnimationError) as error:
         print(error, file=sys.stderr)
