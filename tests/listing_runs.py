@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import contextlib
 import functools
-import subprocess
-import sys
+import io
+import os
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 
@@ -14,11 +16,32 @@ GOLDEN = ROOT / "tests" / "golden"
 EXAMPLES = (1, 2, 3, 4, 5)
 
 
+class Run(NamedTuple):
+    """What ``yaseer run`` returned and wrote."""
+
+    returncode: int
+    stdout: str
+    stderr: str
+
+
 @functools.lru_cache(maxsize=None)
-def run_yaseer(*args: str) -> subprocess.CompletedProcess:
-    """``python -m yaseer run ARGS`` from the repository root (cached: each run happens once)."""
-    return subprocess.run([sys.executable, "-m", "yaseer", "run", *args], cwd=ROOT,
-                          capture_output=True, text=True, timeout=120, check=False)
+def run_yaseer(*args: str) -> Run:
+    """``yaseer run ARGS`` from the repository root, in this process (cached: each run once).
+
+    The command line itself (``python -m yaseer ...`` in a child process) is exercised by
+    the plot tests and tests/test_reference_examples.py; in-process keeps these tests fast.
+    """
+    from yaseer.cli import main
+
+    stdout, stderr = io.StringIO(), io.StringIO()
+    previous = os.getcwd()
+    os.chdir(ROOT)
+    try:
+        with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
+            returncode = main(["run", *args])
+    finally:
+        os.chdir(previous)
+    return Run(returncode, stdout.getvalue(), stderr.getvalue())
 
 
 def csv_table(text: str) -> np.ndarray:
