@@ -272,3 +272,18 @@ def test_linetap_hands_on_lines_and_a_last_partial_line():
     tap.close_line()
     assert seen == ["a", "bc", "", "end"]
     assert isinstance(Frame((), "x"), Frame)
+
+
+def test_long_runs_are_thinned_evenly_keeping_first_and_last(tmp_path):
+    from PIL import Image
+
+    from yaseer.animation import frames_to_paint
+
+    assert frames_to_paint(5, 10) == [0, 1, 2, 3, 4]
+    assert frames_to_paint(1000, 5) == [0, 250, 500, 749, 999]
+    with pytest.raises(AnimationError):
+        frames_to_paint(10, 1)
+    frames, _ = run_cycle([float(a) for a in range(0, 360, 10)])
+    assert render(frames, tmp_path / "thin.gif", max_frames=4) == 4
+    with Image.open(tmp_path / "thin.gif") as image:
+        assert image.n_frames == 4

@@ -581,13 +581,27 @@ class _Painter:
         plt.close(self.figure)
 
 
+MAX_FRAMES = 360  # a longer run is shown by evenly spaced frames (its paths stay complete)
+
+
+def frames_to_paint(count: int, max_frames: int = MAX_FRAMES) -> list[int]:
+    """The frame numbers an animation shows: all, or ``max_frames`` evenly spaced ones (first and last kept)."""
+    if max_frames < 2:
+        raise AnimationError("An animation needs at least 2 frames")
+    if count <= max_frames:
+        return list(range(count))
+    return sorted({round(k * (count - 1) / (max_frames - 1)) for k in range(max_frames)})
+
+
 def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0,
-           frame_number: int = 0, progress_file=None) -> int:
+           frame_number: int = 0, progress_file=None, max_frames: int = MAX_FRAMES) -> int:
     """Write the animation to ``out`` (.gif, .mp4, .html; .png: only frame ``frame_number``).
 
-    Returns the number of frames written.  Raises :class:`AnimationError` for
-    an unknown suffix, no frames, a missing frame, or .mp4 without ffmpeg.
-    A progress bar (stderr) appears when painting takes over a second.
+    Returns the number of frames written (at most ``max_frames``: a longer run
+    is thinned evenly, see :func:`frames_to_paint`).  Raises
+    :class:`AnimationError` for an unknown suffix, no frames, a missing frame,
+    or .mp4 without ffmpeg.  A progress bar (stderr) appears when painting
+    takes over a second.
     """
     suffix = out.suffix.lower()
     if suffix not in SUFFIXES:
@@ -602,18 +616,17 @@ def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0
         if suffix == ".png":
             painter.image(frame_number).save(out)
             return 1
-        images = _paint_all(painter, len(scene.frames), progress_file)
+        images = _paint_all(painter, frames_to_paint(len(scene.frames), max_frames), progress_file)
     finally:
         painter.close()
     WRITERS[suffix](images, out, fps)
     return len(images)
 
 
-def _paint_all(painter: _Painter, count: int, progress_file) -> list:
+def _paint_all(painter: _Painter, numbers: list[int], progress_file) -> list:
     from yaseer.progress import track
 
-    return [painter.image(n) for n in track(range(count), description="rendering", unit="frame",
-                                             file=progress_file)]
+    return [painter.image(n) for n in track(numbers, description="rendering", unit="frame", file=progress_file)]
 
 
 def write_gif(images: list, out: Path, fps: float) -> None:

@@ -14,12 +14,14 @@ from pathlib import Path
 
 
 def add_arguments(parser) -> None:
-    """FILE, --out, --fps, --frame, --method N=NAME, --title."""
+    """FILE, --out, --fps, --frame, --title, --max-frames, --method N=NAME."""
     parser.add_argument("file", help="the calling listing (.bas)")
     parser.add_argument("--out", help="FILE.gif (default), .html, .mp4 (needs ffmpeg) or .png (one frame)")
     parser.add_argument("--fps", type=float, default=6.0, help="frames per second (default 6)")
     parser.add_argument("--frame", type=int, default=0, help="with --out FILE.png: which frame (from 0)")
     parser.add_argument("--title", default=None, help="a title over every frame (default: the file name)")
+    parser.add_argument("--max-frames", type=int, default=360,
+                        help="show at most this many evenly spaced frames of a long run (default 360)")
     parser.add_argument("--method", action="append", default=[], metavar="N=NAME",
                         help="the method for program area N, as for yaseer run")
 
@@ -36,7 +38,7 @@ def main(args) -> int:
         text = listing.read_text(encoding="utf-8", errors="replace")
         frames = record_listing(text, methods)
         count = render(frames, out, title=args.title if args.title is not None else listing.name,
-                       fps=args.fps, frame_number=args.frame)
+                       fps=args.fps, frame_number=args.frame, max_frames=args.max_frames)
     except FileNotFoundError as error:
         print(f"File not found: {error.filename or listing}", file=sys.stderr)
         return 1
