@@ -85,36 +85,37 @@ def test_slider_crank_against_closed_form(theta, with_slider_body):
     assert abs(s.velocity("rod", "B")[1]) < 1e-11 and abs(s.acceleration("rod", "B")[1]) < 1e-9
 
 
-def four_bar_closed_form(a, b, c, d, theta_deg, w, alpha, side):
+def four_bar_closed_form(a, b, c, d, theta_deg, w, alpha, side, m=math):
     """Crank A(0,0)-B, coupler B-C, follower D(d,0)-C; C on ``side`` (+1 left) of B->D.
 
     Position: intersection of the circles (B, b) and (D, c).  Rates: the loop
     a u(t) + b u(beta) - c u(phi) - d x = 0 differentiated; the 2x2 system in
-    (beta', phi') [and (beta'', phi'')] solved by Cramer's rule.
+    (beta', phi') [and (beta'', phi'')] solved by Cramer's rule.  ``m``: math, or an
+    mpmath context for the same formulas in high precision.
     """
-    t = math.radians(theta_deg)
-    bx, by = a * math.cos(t), a * math.sin(t)
+    t = m.radians(theta_deg)
+    bx, by = a * m.cos(t), a * m.sin(t)
     ex, ey = d - bx, -by
-    dist = math.hypot(ex, ey)
+    dist = m.hypot(ex, ey)
     along = (b * b - c * c + dist * dist) / (2 * dist)
-    h = math.sqrt(b * b - along * along)
+    h = m.sqrt(b * b - along * along)
     cx = bx + along * ex / dist - side * h * ey / dist
     cy = by + along * ey / dist + side * h * ex / dist
-    beta, phi = math.atan2(cy - by, cx - bx), math.atan2(cy, cx - d)
+    beta, phi = m.atan2(cy - by, cx - bx), m.atan2(cy, cx - d)
     # columns: beta' multiplies b J u(beta), phi' multiplies -c J u(phi)
-    m11, m21 = -b * math.sin(beta), b * math.cos(beta)
-    m12, m22 = c * math.sin(phi), -c * math.cos(phi)
+    m11, m21 = -b * m.sin(beta), b * m.cos(beta)
+    m12, m22 = c * m.sin(phi), -c * m.cos(phi)
     det = m11 * m22 - m12 * m21
 
     def cramer(r1, r2):
         return (r1 * m22 - m12 * r2) / det, (m11 * r2 - r1 * m21) / det
 
-    r1, r2 = a * w * math.sin(t), -a * w * math.cos(t)
+    r1, r2 = a * w * m.sin(t), -a * w * m.cos(t)
     bd, pd = cramer(r1, r2)
-    r1 = a * alpha * math.sin(t) + a * w * w * math.cos(t) + b * bd * bd * math.cos(beta) - c * pd * pd * math.cos(phi)
-    r2 = -a * alpha * math.cos(t) + a * w * w * math.sin(t) + b * bd * bd * math.sin(beta) - c * pd * pd * math.sin(phi)
+    r1 = a * alpha * m.sin(t) + a * w * w * m.cos(t) + b * bd * bd * m.cos(beta) - c * pd * pd * m.cos(phi)
+    r2 = -a * alpha * m.cos(t) + a * w * w * m.sin(t) + b * bd * bd * m.sin(beta) - c * pd * pd * m.sin(phi)
     bdd, pdd = cramer(r1, r2)
-    return dict(beta=math.degrees(beta), phi=math.degrees(phi), bd=bd, pd=pd, bdd=bdd, pdd=pdd, C=(cx, cy))
+    return dict(beta=m.degrees(beta), phi=m.degrees(phi), bd=bd, pd=pd, bdd=bdd, pdd=pdd, C=(cx, cy))
 
 
 @pytest.mark.parametrize("theta", [0.0, 37.0, 95.0, 181.0, 260.0, 333.0])
@@ -551,3 +552,22 @@ def test_drive_rates_may_change_from_position_to_position():
         assert rel(s.acceleration("rod", "B")[0], exact["a"]) < 1e-10
     with pytest.raises(ValueError, match="rates for"):
         model.analyse([10.0, 50.0], [4.0], 0, sketch)
+
+
+def test_mpmath_reference_near_a_toggle_against_the_closed_form_in_mpmath():
+    """1e-9 deg before the toggle of seed 003's four-bar (rates ~1e4 x normal): the 50-digit
+    solver and the closed form evaluated at 50 digits agree to 1e-30."""
+    import mpmath
+
+    ctx = mpmath.MPContext()
+    ctx.dps = 50
+    a, b, c, d = 30, 36, 36, 60
+    toggle = ctx.degrees(ctx.acos(ctx.mpf(a * a + d * d - (b + c) ** 2) / (2 * a * d)))
+    theta = toggle - ctx.mpf("1e-9")
+    exact = four_bar_closed_form(a, b, c, d, theta, 10, 0, -1, m=ctx)
+    r = basic_linkages.fourbar(d, 0, a, b, c, [theta], 10, 0, crossed=True, number="mpmath", dps=50)
+    assert abs(r["W(6)"][0] - exact["bd"]) < ctx.mpf("1e-30") * abs(exact["bd"])
+    assert abs(r["A(7)"][0] - exact["pdd"]) < ctx.mpf("1e-30") * abs(exact["pdd"])
+    assert abs(exact["bd"]) > 1e4
+    with pytest.raises(MechanismError, match="singular"):
+        basic_linkages.fourbar(d, 0, a, b, c, [float(theta)], 10, 0, crossed=True)
