@@ -64,6 +64,12 @@ def screen(session) -> str:
     return text
 
 
+def after(session, line: str) -> str:
+    """What the session shows after ``line`` is typed."""
+    session.handle(line)
+    return screen(session)
+
+
 def type_lines(session, *lines):
     for line in lines:
         session.handle(line)
@@ -71,8 +77,7 @@ def type_lines(session, *lines):
 
 def test_numbered_lines_are_stored_in_order_replaced_and_deleted(session):
     type_lines(session, "30 END", "10 PRINT 1", "20 PRINT 2", "10 PRINT 10", "20")
-    session.handle("LIST")
-    assert screen(session) == "10 PRINT 10\n30 END\n"
+    assert after(session, "LIST") == "10 PRINT 10\n30 END\n"
 
 
 @pytest.mark.parametrize(
@@ -81,33 +86,26 @@ def test_numbered_lines_are_stored_in_order_replaced_and_deleted(session):
 )
 def test_list_ranges(session, argument, shown):
     type_lines(session, "10 A", "20 B", "30 C", "40 D")
-    session.handle(f"LIST {argument}")
-    assert screen(session) == shown
+    assert after(session, f"LIST {argument}") == shown
 
 
 def test_list_accepts_lower_case_and_no_space(session):
     type_lines(session, "10 A", "20 B")
-    session.handle("list20")
-    assert screen(session) == "20 B\n"
+    assert after(session, "list20") == "20 B\n"
 
 
 def test_delete_range_and_missing_single_line(session):
     type_lines(session, "10 A", "20 B", "30 C", "40 D")
     session.handle("DELETE 20-30")
-    session.handle("LIST")
-    assert screen(session) == "10 A\n40 D\n"
-    session.handle("DELETE 25")
-    assert screen(session) == "Illegal function call\n"
-    session.handle("DELETE")
-    assert screen(session) == "Syntax error\n"
+    assert after(session, "LIST") == "10 A\n40 D\n"
+    assert after(session, "DELETE 25") == "Illegal function call\n"
+    assert after(session, "DELETE") == "Syntax error\n"
 
 
 def test_bad_range_is_a_syntax_error_and_the_session_goes_on(session):
-    session.handle("LIST 1-2-3")
-    assert screen(session) == "Syntax error\n"
+    assert after(session, "LIST 1-2-3") == "Syntax error\n"
     session.handle("10 A")
-    session.handle("LIST")
-    assert screen(session) == "10 A\n"
+    assert after(session, "LIST") == "10 A\n"
 
 
 def test_renum_rewrites_jumps_but_not_strings_remarks_or_program_areas(session):
@@ -119,8 +117,7 @@ def test_renum_rewrites_jumps_but_not_strings_remarks_or_program_areas(session):
         "11 RESTORE 9: GOTO 11",
     )
     session.handle("RENUM")
-    session.handle("LIST")
-    assert screen(session) == (
+    assert after(session, "LIST") == (
         '10 IF X THEN 20 ELSE 30: PRINT "GOTO 7"\n'
         "20 ON X GOTO 10,30, 20: GOSUB PROG 5\n"
         "30 GOSUB 10: REM GOTO 9\n"
@@ -130,18 +127,14 @@ def test_renum_rewrites_jumps_but_not_strings_remarks_or_program_areas(session):
 
 def test_renum_with_start_old_and_step_and_undefined_target(session):
     type_lines(session, "10 A", "20 GOTO 90", "30 GOTO 20")
-    session.handle("RENUM 100,20,5")
-    assert screen(session) == "Undefined line 90 in 20\n"
-    session.handle("LIST")
-    assert screen(session) == "10 A\n100 GOTO 90\n105 GOTO 100\n"
+    assert after(session, "RENUM 100,20,5") == "Undefined line 90 in 20\n"
+    assert after(session, "LIST") == "10 A\n100 GOTO 90\n105 GOTO 100\n"
 
 
 def test_renum_that_would_overrun_kept_lines_is_refused(session):
     type_lines(session, "10 A", "20 B", "30 C")
-    session.handle("RENUM 5,20")
-    assert screen(session) == "Illegal function call\n"
-    session.handle("LIST")
-    assert screen(session) == "10 A\n20 B\n30 C\n"
+    assert after(session, "RENUM 5,20") == "Illegal function call\n"
+    assert after(session, "LIST") == "10 A\n20 B\n30 C\n"
 
 
 def _ordinal_form(program):
@@ -169,8 +162,7 @@ def test_edit_puts_the_line_up_for_the_next_input(session):
     session.handle("10 PRINT X")
     session.handle("EDIT 10")
     assert session.edit_text == "10 PRINT X"
-    session.handle("EDIT 20")
-    assert screen(session) == "Undefined line number\n"
+    assert after(session, "EDIT 20") == "Undefined line number\n"
     assert session.edit_text is None
 
 
@@ -179,41 +171,31 @@ def test_save_then_load_round_trip(session, tmp_path):
     session.handle('SAVE "prog.bas"')
     assert (tmp_path / "prog.bas").read_text() == "10 PRINT 1\n20 PRINT 2\n"
     session.handle("NEW")
-    session.handle("LIST")
-    assert screen(session) == ""
+    assert after(session, "LIST") == ""
     session.handle('LOAD "prog"')  # .bas is tried when the name has no suffix
-    session.handle("LIST")
-    assert screen(session) == "10 PRINT 1\n20 PRINT 2\n"
+    assert after(session, "LIST") == "10 PRINT 1\n20 PRINT 2\n"
 
 
 def test_load_joins_wrapped_lines_and_reports_a_missing_file(session, tmp_path):
     (tmp_path / "wrapped.bas").write_text("10 FOR I = 1 TO 3:\n   PRINT I\n\n20 NEXT I\n")
     session.handle('LOAD "wrapped.bas')
-    session.handle("LIST")
-    assert screen(session) == "10 FOR I = 1 TO 3: PRINT I\n20 NEXT I\n"
-    session.handle('LOAD "nothing.bas"')
-    assert screen(session) == "File not found\n"
+    assert after(session, "LIST") == "10 FOR I = 1 TO 3: PRINT I\n20 NEXT I\n"
+    assert after(session, 'LOAD "nothing.bas"') == "File not found\n"
 
 
 def test_load_without_a_name_is_a_syntax_error(session):
-    session.handle("LOAD")
-    assert screen(session) == "Syntax error\n"
+    assert after(session, "LOAD") == "Syntax error\n"
 
 
 def test_prog_switches_the_edited_area(session):
     session.handle("10 PRINT 0")
-    session.handle("PROG 5")
-    assert screen(session) == "PROG 5: library program (Python); typed lines replace it\n"
-    session.handle("LIST")
-    assert screen(session) == "PROG 5: library program (Python)\n"
+    assert after(session, "PROG 5") == "PROG 5: library program (Python); typed lines replace it\n"
+    assert after(session, "LIST") == "PROG 5: library program (Python)\n"
     session.handle("10 RETURN")
-    session.handle("LIST")
-    assert screen(session) == "10 RETURN\n"
+    assert after(session, "LIST") == "10 RETURN\n"
     session.handle("PROG 0")
-    session.handle("LIST")
-    assert screen(session) == "10 PRINT 0\n"
-    session.handle("PROG 12")
-    assert screen(session) == "Illegal function call\n"
+    assert after(session, "LIST") == "10 PRINT 0\n"
+    assert after(session, "PROG 12") == "Illegal function call\n"
 
 
 def test_run_hands_every_typed_area_to_the_machine(session):
@@ -229,19 +211,16 @@ def test_run_hands_every_typed_area_to_the_machine(session):
 def test_an_error_in_a_run_is_shown_and_the_session_stays(session):
     session.handle("10 PRINT 1/0")
     session.engine.fail_with = BasicError("Division by zero", 11, line=10)
-    session.handle("RUN")
-    assert screen(session) == "Division by zero in 10\n"
+    assert after(session, "RUN") == "Division by zero in 10\n"
     session.handle("PRINT 1")
     assert session.engine.calls[-1] == ("direct", "PRINT 1")
 
 
 def test_cont_only_after_a_break_and_not_after_an_edit(session):
     session.handle("10 STOP")
-    session.handle("CONT")
-    assert screen(session) == "Can't continue\n"
+    assert after(session, "CONT") == "Can't continue\n"
     session.engine.fail_with = BasicError("Break", BREAK, line=10)
-    session.handle("RUN")
-    assert screen(session) == "Break in 10\n"
+    assert after(session, "RUN") == "Break in 10\n"
     session.handle("PRINT X")  # a direct statement keeps CONT possible
     session.handle("CONT")
     assert session.engine.calls[-1] == ("cont",)
@@ -249,8 +228,7 @@ def test_cont_only_after_a_break_and_not_after_an_edit(session):
     session.handle("CONT")
     session.handle("20 END")  # editing the program forbids CONT
     screen(session)
-    session.handle("CONT")
-    assert screen(session) == "Can't continue\n"
+    assert after(session, "CONT") == "Can't continue\n"
 
 
 def test_direct_mode_statements_go_to_the_machine(session):
@@ -277,8 +255,7 @@ def test_system_and_bye_end_the_session(session):
 
 
 def test_line_numbers_beyond_65529_are_refused(session):
-    session.handle("70000 PRINT")
-    assert screen(session) == "Syntax error\n"
+    assert after(session, "70000 PRINT") == "Syntax error\n"
 
 
 def test_parse_range_and_listing_helpers():
