@@ -60,16 +60,16 @@ def test_fourbar_seed_003_positions_the_program_skipped_do_not_assemble(theta):
 
 
 def test_fourbar_velocity_magnitudes_match_seed_003():
-    # Only magnitudes are compared.  The paper's own equations (xxi)-(xxii) carry a spurious
-    # minus sign (eliminating w2 from the differentiated loop gives
-    # w3 = a w1 sin(theta - beta) / (c sin(phi - beta)), not its negative), and its acceleration
-    # columns are not accelerations: (xxv) mixes cos/sin terms, the listing's C2 uses VEL (an
-    # undeclared Fortran variable, not VELA) and ACCB = B1 - B2 - B3/B4 divides only B3 (operator
-    # precedence), so ACCC/ACCB are not compared.  The scan keeps VELC legible only in the first
-    # row (theta = 0, upper: -10.00) and the last (theta = 330, lower: -8.69); VELB's first row
-    # reads -10.00; the legible VELC values are {10.00, 8.69, 8.26, 12.26} in magnitude.
+    # Only magnitudes of the follower's angular velocity (VELC) are compared, and VELB and the
+    # acceleration columns not at all: the paper's equation (xxi) carries a spurious minus sign
+    # (eliminating w2 from the differentiated loop gives w3 = a w1 sin(theta - beta) /
+    # (c sin(phi - beta)); the listing's VELC statement has the right sign), the listing's VELB
+    # divides by SIN(BET(I) - (I)) -- the loop index in radians where PHI(I) belongs -- its C2
+    # uses VEL, never set (0 in Fortran), not VELA, and ACCB = B1 - B2 - B3/B4 divides only B3
+    # (see docs/seed-003.md).  The scan keeps VELC legible in the first row (theta = 0, upper:
+    # -10.00) and the last (theta = 330, lower: -8.69); the legible VELC values are
+    # {10.00, 8.69, 8.26, 12.26} in magnitude.
     assert abs(seed_003(0, -1).follower.omega) == pytest.approx(10.00, abs=0.005)
-    assert abs(seed_003(0, -1).coupler.omega) == pytest.approx(10.00, abs=0.005)
     assert abs(seed_003(330, 1).follower.omega) == pytest.approx(8.69, abs=0.005)
     computed = {round(float(abs(seed_003(theta, branch).follower.omega)), 2)
                 for theta in SEED_003_ANGLES for branch in (1, -1)}
