@@ -163,8 +163,7 @@ def test_paper_example_chain_agrees_with_the_reference():
 # --------------------------------------------------------------------------- the listing way and the command
 
 def test_listing_way_through_the_interpreter():
-    startup = ways.startup_seconds(repeat=1)
-    run = ways.run_listing(cases.SEED001, "pseudographic", cases.SEED001.quick, startup)
+    run = ways.run_listing(cases.SEED001, "pseudographic", cases.SEED001.quick)
     assert run.positions == len(cases.SEED001.quick)
     assert run.outcome.status == "ok" and run.outcome.worst < 1e-13
 
@@ -172,7 +171,7 @@ def test_listing_way_through_the_interpreter():
 def test_bench_command_quick(tmp_path, capsys):
     from yaseer.cli import main
 
-    assert main(["bench", "--quick", "--no-listing", "--case", "seed", "--out", str(tmp_path)]) == 0
+    assert main(["bench", "--quick", "--case", "seed 00", "--out", str(tmp_path)]) == 0
     out = capsys.readouterr().out
     assert "pseudographic" in out and "half-angle-printed" in out and "Laziness" in out
     with open(tmp_path / "bench.csv") as handle:
@@ -183,6 +182,7 @@ def test_bench_command_quick(tmp_path, capsys):
     assert {r["case"] for r in rows} == {"seed 001 slider-crank", "seed 003 four-bar, uncrossed",
                                          "seed 003 four-bar, crossed", "seed 004 change-point four-bar"}
     assert all(r["status"] == "ok" for r in rows if not r["method"].startswith("newton tol=0.1"))
+    assert {r["way"] for r in rows} == {"listing", "per position", "array"}
     with open(tmp_path / "bench_laziness.csv") as handle:
         levels = {r["level"] for r in csv.DictReader(handle)}
     assert levels == {"positions", "+ velocities and accelerations", "+ forces"}

@@ -16,10 +16,10 @@ from pathlib import Path
 import numpy as np
 
 from .cases import all_cases
-from .ways import WAYS, run_listing, run_python, startup_seconds
+from .ways import WAYS, run_listing, run_python
 
-FIELDS = ("case", "linkage", "method", "way", "positions", "seconds_per_position", "worst_error", "status",
-          "where", "detail")
+FIELDS = ("case", "linkage", "method", "way", "single", "positions", "seconds_per_position", "worst_error", "status",
+          "where", "detail", "model_note")
 NEWTON_TOLERANCES = (1e-1, 1e-2, 1e-3, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-14)
 ERROR_FLOOR = 1e-17  # a zero error is drawn here on the log axis
 
@@ -42,7 +42,9 @@ def interpreter_available() -> bool:
 
 def _row(case, method, way, run) -> dict:
     outcome = run.outcome
-    return {"case": case.name, "linkage": case.linkage, "method": method, "way": way, "positions": run.positions,
+    return {"case": case.name, "linkage": case.linkage, "method": method, "way": way, "single": case.single,
+            "model_note": case.model_note,
+            "positions": run.positions,
             "seconds_per_position": run.seconds_per_position, "worst_error": outcome.worst,
             "status": outcome.status, "where": outcome.where, "detail": outcome.detail}
 
@@ -56,7 +58,6 @@ def bench_rows(quick: bool = False, ways=WAYS, repeat: int = 3, progress=None, p
     """Every case x method x way.  ``progress(text)`` is told what runs."""
     rows = []
     listing = "listing" in ways and interpreter_available()
-    startup = startup_seconds() if listing else math.nan
     for case in selected_cases(pattern):
         angles = case.quick if quick else case.dense
         for method in methods_of(case.linkage):
@@ -66,7 +67,7 @@ def bench_rows(quick: bool = False, ways=WAYS, repeat: int = 3, progress=None, p
                 if way == "listing":
                     if not listing:
                         continue
-                    run = run_listing(case, method, angles, startup)
+                    run = run_listing(case, method, angles)
                 elif case.compute is None:
                     continue
                 else:
@@ -89,14 +90,18 @@ def newton_rows(quick: bool = False, repeat: int = 3, pattern=None) -> list[dict
 
 
 def aggregate(rows) -> list[dict]:
-    """Per (linkage, method, way): median seconds per position, worst error, failures."""
+    """Per (linkage, method, way): the median seconds per position over the
+    single-program cases (one program call a position: the seeds' linkages, the
+    ellipse), the worst error over every case (but those whose listing and
+    reference differ by a modelling choice, ``model_note``), and the failures."""
     groups: dict[tuple, list[dict]] = {}
     for row in rows:
         groups.setdefault((row["linkage"], row["method"], row["way"]), []).append(row)
     summary = []
     for (linkage, method, way), members in groups.items():
-        timed = [m["seconds_per_position"] for m in members if math.isfinite(m["seconds_per_position"])]
-        errors = [m["worst_error"] for m in members if m["status"] != "exception"]
+        timed = [m["seconds_per_position"] for m in members
+                 if math.isfinite(m["seconds_per_position"]) and m.get("single", True)]
+        errors = [m["worst_error"] for m in members if m["status"] != "exception" and not m.get("model_note")]
         failures = [m for m in members if m["status"] not in ("ok",)]
         summary.append({"linkage": linkage, "method": method, "way": way, "cases": len(members),
                         "seconds_per_position": statistics.median(timed) if timed else math.nan,
@@ -124,15 +129,20 @@ def format_table(summary) -> str:
 
 
 def draw_chart(summary, newton_summary, path_stem: Path) -> list[Path]:
-    """Time per position (log) against worst error (log): PNG and SVG."""
+    """Time per position (log) against worst error (log), a panel per linkage: PNG and SVG.
+
+    Colour: the method; marker: the way of running; grey line: Newton over its
+    tolerance (array way), each point labelled with its tolerance and failures.
+    """
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
 
     markers = {"listing": "s", "per position": "o", "array": "^"}
     linkages = sorted({s["linkage"] for s in summary})
-    figure, axes = plt.subplots(1, len(linkages), figsize=(6 * len(linkages), 6), squeeze=False)
+    figure, axes = plt.subplots(1, len(linkages), figsize=(5.5 * len(linkages), 6.2), squeeze=False)
     for axis, linkage in zip(axes[0], linkages):
         members = [s for s in summary if s["linkage"] == linkage]
         methods = sorted({s["method"] for s in members})
@@ -142,26 +152,27 @@ def draw_chart(summary, newton_summary, path_stem: Path) -> list[Path]:
                 continue
             error = s["worst_error"] if math.isfinite(s["worst_error"]) else 1.0
             axis.scatter(s["seconds_per_position"] * 1e6, max(error, ERROR_FLOOR), marker=markers.get(s["way"], "x"),
-                         color=colours[s["method"]], s=60, zorder=3)
-            axis.annotate(f"{s['method']} ({s['way']})", (s["seconds_per_position"] * 1e6, max(error, ERROR_FLOOR)),
-                          textcoords="offset points", xytext=(5, 4), fontsize=7)
+                         color=colours[s["method"]], s=70, zorder=3, edgecolors="black", linewidths=0.4)
+        handles = [Line2D([], [], color=colours[m], marker="o", ls="", label=m) for m in methods]
+        handles += [Line2D([], [], color="black", marker=markers[w], ls="", mfc="none", label=w) for w in markers]
         curve = sorted((n for n in newton_summary if n["linkage"] == linkage), key=lambda n: n["tol"])
         if curve:
             xs = [n["seconds_per_position"] * 1e6 for n in curve]
             ys = [max(n["worst_error"], ERROR_FLOOR) for n in curve]
-            axis.plot(xs, ys, "-", color="grey", lw=1, zorder=2, label="Newton over tol (array)")
+            axis.plot(xs, ys, "-", color="grey", lw=1, zorder=2)
             for n, x, y in zip(curve, xs, ys):
-                axis.annotate(f"{n['tol']:g}", (x, y), textcoords="offset points", xytext=(-4, -10), fontsize=6,
-                              color="grey")
-            axis.legend(loc="upper right", fontsize=7)
+                label = f"{n['tol']:g}" + (f" ({n['failures']} failed)" if n["failures"] else "")
+                axis.annotate(label, (x, y), textcoords="offset points", xytext=(4, -3), fontsize=6, color="dimgrey")
+            handles.append(Line2D([], [], color="grey", label="Newton over tol (array)"))
+        axis.legend(handles=handles, fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=4,
+                    frameon=False)
         axis.set_xscale("log")
         axis.set_yscale("log")
-        axis.set_xlabel("time per position (us)")
-        axis.set_ylabel("worst error over the cases (relative; angles in rad)")
+        axis.set_xlabel("time per position, single-program cases (us)")
+        axis.set_ylabel("worst error over all cases (relative; angles in rad)")
         axis.set_title(linkage.replace("_", " "))
-        axis.grid(True, which="both", alpha=0.3)
-    figure.suptitle("yaseer bench: speed against accuracy (markers: square listing, circle per position, "
-                    "triangle array)", fontsize=10)
+        axis.grid(True, which="major", alpha=0.3)
+    figure.suptitle("yaseer bench: speed against accuracy per method and way of running", fontsize=10)
     figure.tight_layout()
     paths = []
     for suffix in (".png", ".svg"):
@@ -180,7 +191,8 @@ def newton_summary(rows) -> list[dict]:
         groups.setdefault((row["linkage"], tol), []).append(row)
     out = []
     for (linkage, tol), members in groups.items():
-        timed = [m["seconds_per_position"] for m in members if math.isfinite(m["seconds_per_position"])]
+        timed = [m["seconds_per_position"] for m in members
+                 if math.isfinite(m["seconds_per_position"]) and m.get("single", True)]
         errors = [m["worst_error"] for m in members if m["status"] != "exception"]
         out.append({"linkage": linkage, "tol": tol,
                     "seconds_per_position": statistics.median(timed) if timed else math.nan,

@@ -17,6 +17,7 @@ the paper's mechanisms use their listing's own grid for both):
   crank range where it assembles (|theta| <= 100 deg of its 100.95);
 * seed 004's change-point four-bar (0.3, 0.5, 1, 1.2), the mode of its FindRoot
   answer (crossed), a full turn at odd degrees (1 deg short of the change point);
+* Program 5 alone: a point on an ellipse around Ao (all four quadrants);
 * the paper's Examples 1, 3, 4 as chains of programs (slider-crank or four-bar
   methods, and the virtual link's), printing the listing's columns;
 * Examples 2 and 5 print forces: their Python chain is left to the listing way.
@@ -52,6 +53,8 @@ class Case:
     listing: Callable[[np.ndarray], str] | None
     other_branch: Callable[[np.ndarray, dict], bool] | None = None
     reference_key: str = ""
+    single: bool = True  # one program call per position (the chart's times come from these)
+    model_note: str = ""  # why the listing and the reference differ whatever the method (then not charted)
 
     def reference(self, angles) -> list[ReferenceColumn]:
         """The 50-digit reference at ``angles`` (computed once per mechanism and set of angles)."""
@@ -167,6 +170,57 @@ SEED004 = _fourbar_case("seed 004 change-point four-bar", (0.3, 0.5, 1.0, 1.2), 
                         np.arange(1.0, 360.0, 2.0), np.arange(15.0, 360.0, 30.0))
 
 
+# --------------------------------------------------------------------------- Program 5 alone
+
+ELLIPSE = (60.0, 40.0, 25.0, 3.0)  # semi-axes, centre offset along x, angular speed (rad/s)
+
+
+def ellipse_point(angles):
+    """A point on an ellipse around Ao: p = (a cos t + c, b sin t), t at ``angles`` deg, dt/dt = w.
+
+    Returns x, y, vx, vy, ax, ay (floats or arrays); its polar angle runs through
+    every quadrant (near but not on the axes: the sweeps of ``yaseer stability``
+    go onto them).
+    """
+    a, b, c, w = ELLIPSE
+    t = np.radians(np.asarray(angles, float))
+    return (a * np.cos(t) + c, b * np.sin(t), -a * w * np.sin(t), b * w * np.cos(t),
+            -a * w * w * np.cos(t), -b * w * w * np.sin(t))
+
+
+VIRTUAL_COLUMNS = ("T", "L", "D(5)", "E(5)", "D(6)", "E(6)")
+
+
+def _ellipse_compute(methods, angles, options):
+    from yaseer.linkages import virtual_link
+
+    r = virtual_link(*ellipse_point(angles), method=methods.get("virtual_link"), **options)
+    return {"T": r.angle_deg, "L": r.length, "D(5)": r.angle_rate, "E(5)": r.angle_accel,
+            "D(6)": r.length_rate, "E(6)": r.length_accel}
+
+
+def _ellipse_reference(angles):
+    from .virtual_link_reference import virtual_link_reference
+
+    rows = [virtual_link_reference(*(float(v) for v in ellipse_point(angle))) for angle in angles]
+    return {name: [row[name] for row in rows] for name in VIRTUAL_COLUMNS}
+
+
+def _ellipse_listing(angles):
+    """READ the point's position, velocity and acceleration from DATA, GOSUB PROG 5."""
+    values = np.array(ellipse_point(np.asarray(angles, float))).T
+    lines = [DIM_LINE, f"10 FOR K = 1 TO {len(angles)}: READ Q, X(10), Y(10), V(17), V(18), A(49), A(50)",
+             "20 GOSUB PROG 5", "30 PRINT Q; T; L; D(5); E(5); D(6); E(6): NEXT K: END"]
+    items = [repr(float(v)) for angle, row in zip(angles, values) for v in (angle, *row)]
+    lines += [f"{1000 + k} DATA " + ", ".join(items[i:i + 7]) for k, i in enumerate(range(0, len(items), 7))]
+    return "\n".join(lines) + "\n"
+
+
+ELLIPSE_CASE = Case("virtual link on an ellipse", "virtual_link", VIRTUAL_COLUMNS, frozenset({"T"}),
+                    np.arange(0.5, 360.0, 2.0), np.arange(0.5, 360.0, 30.0), _ellipse_reference,
+                    _ellipse_compute, _ellipse_listing)
+
+
 # --------------------------------------------------------------------------- the paper's mechanisms
 
 def _example1(methods, angles, options):
@@ -246,13 +300,18 @@ def _options_for(linkage, compute):
     return wrapped
 
 
+EXAMPLE2_NOTE = ("the listing's P(1) = 650*V(4)^2 uses the vertical velocity, the reference the velocity along "
+                 "the 90.1 deg axis: a factor sin^2(90.1 deg) = 1 - 3.05e-6 (listings/ERRATA.md)")
+
+
 def _paper_case(number, linkage, compute, angle_columns, dense, quick):
     from yaseer.reference.paper_mechanisms import COLUMNS
 
     return Case(f"paper Example {number} ({linkage.replace('_', ' ')})", linkage, COLUMNS[number],
                 frozenset(angle_columns), dense, quick, _paper_reference(number),
                 None if compute is None else _options_for(linkage, compute), _paper_listing(number),
-                reference_key=f"paper Example {number}")
+                reference_key=f"paper Example {number}", single=False,
+                model_note=EXAMPLE2_NOTE if number == 2 else "")
 
 
 def _grids(number):
@@ -285,4 +344,4 @@ def paper_cases() -> list[Case]:
 
 def all_cases() -> list[Case]:
     """Every bench case: the seeds' linkages, then the paper's mechanisms."""
-    return [SEED001, SEED003_UNCROSSED, SEED003_CROSSED, SEED004, *paper_cases()]
+    return [SEED001, SEED003_UNCROSSED, SEED003_CROSSED, SEED004, ELLIPSE_CASE, *paper_cases()]

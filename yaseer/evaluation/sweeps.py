@@ -24,8 +24,10 @@ Families:
    at theta = 90 deg (it assembles on both sides; rates are unbounded there).
 4. Four-bar toggle: seed 003's linkage (30, 36, 36, 60) at the end of its crank
    range, theta_lim = 100.95 deg, approached from inside, both modes.
-5. The change-point four-bar of seed 004 (0.3, 0.5, 1, 1.2) through its collinear
-   configuration (theta = 180 deg), both sides, crossed mode.
+5. The change-point four-bar of seed 004 through its collinear configuration
+   (theta = 180 deg), both sides, crossed mode, in decimetres (3, 5, 10, 12): as
+   binary floats 0.3 + 1.2 falls 5.6e-17 short of 0.5 + 1, so the metre version
+   is not a change point at all (its branches pass 7e-9 rad apart near 180 deg).
 6. The half-angle quadratic's own trouble: seed 003's linkage where AA = 0
    (theta = 82.82 deg, the follower at 180 deg on one root), both modes.
 """
@@ -232,7 +234,7 @@ def seed003_half_angle_pole_deg() -> float:
 
 def all_sweeps() -> list[Sweep]:
     seed003 = (30.0, 36.0, 36.0, 60.0)
-    seed004 = (0.3, 0.5, 1.0, 1.2)
+    seed004 = (3.0, 5.0, 10.0, 12.0)  # seed 004 in decimetres: 0.3 + 1.2 != 0.5 + 1 in binary floats
     sweeps = [_virtual_sweep(t) for t in (0, 90, 180, 270)]
     dead = "slider-crank dead centres, axis at 0 and exactly 90"
     sweeps += [

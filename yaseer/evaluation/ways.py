@@ -1,9 +1,8 @@
 """The three ways of running a method on a case, each timed and measured.
 
-* ``listing``: a calling listing through the interpreter (``yaseer run FILE
-  --format csv --method N=NAME`` in a subprocess).  Its time per position is
-  (run time - the run time of an empty listing) / positions, both measured in
-  the same bench run, so the interpreter's start-up is not counted.
+* ``listing``: a calling listing through the interpreter, in process, exactly
+  as ``yaseer run FILE --format csv --method N=NAME`` runs it; its time per
+  position is the time of ``machine.run()`` / printed rows.
 * ``per position``: the Python programs called once per crank angle (floats).
 * ``array``: one vectorised call over the whole cycle (numpy arrays).
 
@@ -13,11 +12,8 @@ Each returns a :class:`Run`: seconds per position (best of ``repeat``) and the
 
 from __future__ import annotations
 
+import io
 import math
-import os
-import subprocess
-import sys
-import tempfile
 import time
 from dataclasses import dataclass
 
@@ -64,47 +60,38 @@ def _judge(case, angles, results) -> Outcome:
     return outcome_of(case.reference(angles), {k: np.asarray(v, float) for k, v in results.items()}, other)
 
 
-def yaseer_command() -> list[str]:
-    return [sys.executable, "-m", "yaseer"]
+def run_listing(case, method: str, angles, repeat: int = 1) -> Run:
+    """Run ``case``'s listing through the interpreter with program ``N`` using ``method``.
 
-
-def _run_listing_text(text: str, method: str | None, program: int, timeout: float = 300.0):
-    """Run a listing in a subprocess; (seconds, completed process)."""
-    with tempfile.TemporaryDirectory() as folder:
-        path = os.path.join(folder, "bench.bas")
-        with open(path, "w") as handle:
-            handle.write(text)
-        command = yaseer_command() + ["run", path, "--format", "csv"]
-        if method is not None:
-            command += ["--method", f"{program}={method}"]
-        start = time.perf_counter()
-        done = subprocess.run(command, capture_output=True, text=True, timeout=timeout)
-        return time.perf_counter() - start, done
-
-
-def startup_seconds(repeat: int = 3) -> float:
-    """The run time of an empty listing (interpreter start-up), best of ``repeat``."""
-    return min(_run_listing_text("10 END\n", None, 1)[0] for _ in range(repeat))
-
-
-def run_listing(case, method: str, angles, startup: float, repeat: int = 1) -> Run:
-    """Run ``case``'s listing through the interpreter with ``--method N=method``."""
+    In process, as ``yaseer run FILE --format csv --method N=NAME`` does it (the
+    same Machine, binding and output format); the clock runs over
+    ``machine.run()`` only, so parsing and compiling the listing are not counted.
+    """
     if case.listing is None:
         return Run(math.nan, Outcome(math.nan, "n/a", "no listing for this case"), 0)
+    from yaseer import binding
+    from yaseer.basic.errors import BasicError
+    from yaseer.basic.machine import Machine
+
     text = case.listing(np.asarray(angles, float))
-    best, done = math.inf, None
+    best, output = math.inf, ""
     for _ in range(repeat):
-        seconds, done = _run_listing_text(text, method, PROGRAM_OF[case.linkage])
-        best = min(best, seconds)
-    rows = parse_csv_rows(done.stdout)
-    if done.returncode != 0 or not rows:
-        message = (done.stderr.strip() or done.stdout.strip() or f"exit status {done.returncode}").splitlines()
-        return Run(math.nan, Outcome(math.nan, "exception", message[-1] if message else "no output"), 0)
-    printed_angles = np.array([row[0] for row in rows])
+        screen = io.StringIO()
+        machine = Machine(screen=screen, printer=screen, output_format="csv")
+        try:
+            machine.load(text)
+            binding.install(machine, {PROGRAM_OF[case.linkage]: method})
+            start = time.perf_counter()
+            machine.run()
+            best = min(best, time.perf_counter() - start)
+        except BasicError as error:
+            return Run(math.nan, Outcome(math.nan, "exception", f"BasicError: {error}"), 0)
+        machine.flush()
+        output = screen.getvalue()
+    rows = parse_csv_rows(output)
     width = len(case.columns)
-    values = [row[-width:] for row in rows]
-    if any(len(row) < width for row in values):
-        return Run(math.nan, Outcome(math.nan, "exception", "the listing printed fewer columns"), len(rows))
-    results = {name: np.array([row[k] for row in values]) for k, name in enumerate(case.columns)}
-    per_position = (best - startup) / len(rows) if best > startup else math.nan  # too short to time
-    return Run(per_position, _judge(case, printed_angles, results), len(rows))
+    if not rows or any(len(row) < width for row in rows):
+        return Run(math.nan, Outcome(math.nan, "exception", "the listing printed no or too few columns"), len(rows))
+    printed_angles = np.array([row[0] for row in rows])
+    results = {name: np.array([row[len(row) - width + k] for row in rows]) for k, name in enumerate(case.columns)}
+    return Run(best / len(rows), _judge(case, printed_angles, results), len(rows))
