@@ -40,6 +40,7 @@ from yaseer.basic.errors import (
 )
 
 FILE_NOT_FOUND = 53  # MS-BASIC's ERR for a missing file
+PATH_FILE_ACCESS_ERROR = 75  # MS-BASIC's ERR for a file that cannot be read or written
 MAX_LINE_NUMBER = 65529  # the largest line number MS-BASIC accepts
 AREAS = range(10)  # PROG 0 (the listing) to PROG 9, as on the pocket computers
 LIBRARY_AREAS = (1, 2, 3, 5)  # the areas yaseer.binding fills with Python programs
@@ -190,7 +191,7 @@ def read_listing_file(name: str, directory: Path) -> Program:
     except (FileNotFoundError, IsADirectoryError, NotADirectoryError):
         raise BasicError("File not found", FILE_NOT_FOUND) from None
     except OSError:
-        raise BasicError("Path/File access error", 75) from None
+        raise BasicError("Path/File access error", PATH_FILE_ACCESS_ERROR) from None
     return parse_listing(text)
 
 
@@ -207,8 +208,10 @@ class Session:
     """One user's pocket computer: programs per area, the machine, the commands.
 
     ``write`` receives everything shown (program output and messages, with
-    newlines).  ``engine`` runs BASIC (see :class:`yaseer.session_engine.Engine`
-    for the interface); ``directory`` is where LOAD and SAVE look.
+    newlines).  ``engine`` runs BASIC: :class:`MachineEngine`, or anything
+    with ``run(programs, start)``, ``cont()``, ``direct(statement, programs)``
+    and ``reset()`` that reports errors, STOP and breaks as BasicError.
+    ``directory`` is where LOAD and SAVE look.
     """
 
     write: Callable[[str], object]
@@ -228,7 +231,11 @@ class Session:
         try:
             self._dispatch(text)
         except BasicError as error:
-            self._show_error(error)
+            self.write(f"{error}\n")
+        except (KeyboardInterrupt, SystemExit):
+            raise
+        except Exception as error:  # noqa: BLE001 - a slip of ours must not end the user's session
+            self.write(f"Internal error ({type(error).__name__}: {error})\n")
 
     def _dispatch(self, text: str) -> None:
         if not text.strip():
@@ -243,9 +250,6 @@ class Session:
             return
         name, argument = command.group(1).upper(), command.group(2).strip()
         getattr(self, f"command_{name.lower()}")(argument)
-
-    def _show_error(self, error: BasicError) -> None:
-        self.write(f"{error}\n")
 
     # -- the program store --
 
@@ -334,7 +338,7 @@ class Session:
         try:
             path.write_text(program_text(self.program), encoding="utf-8")
         except OSError:
-            raise BasicError("Path/File access error", 75) from None
+            raise BasicError("Path/File access error", PATH_FILE_ACCESS_ERROR) from None
 
     def command_run(self, argument: str) -> None:
         """RUN [line]: fresh variables, then run PROG 0 from its start (or ``line``)."""

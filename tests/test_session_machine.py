@@ -1,0 +1,98 @@
+"""The session on the real BASIC machine, by calling it (fast; the terminal is tested elsewhere)."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from yaseer.session import MachineEngine, Session
+
+REPO_PROGRAMS = __import__("pathlib").Path(__file__).resolve().parents[1] / "programs"
+
+
+@pytest.fixture
+def session(tmp_path):
+    shown = []
+    s = Session(write=shown.append, engine=MachineEngine(shown.append), directory=tmp_path)
+    s.shown = shown
+    return s
+
+
+def after(session, *lines) -> str:
+    """What the session shows after typing ``lines``."""
+    session.shown.clear()
+    for line in lines:
+        session.handle(line)
+    return "".join(session.shown)
+
+
+def test_run_stop_direct_and_cont_share_the_variables(session):
+    after(session, "10 A = 1", "20 STOP", "30 PRINT A * 10")
+    assert after(session, "RUN") == "Break in 20\n"
+    assert after(session, "A = 4", "CONT") == " 40 \n"
+    assert after(session, "CONT") == "Can't continue\n"
+
+
+def test_editing_after_stop_forbids_cont(session):
+    after(session, "10 STOP", "20 PRINT 2")
+    after(session, "RUN")
+    assert after(session, "20 PRINT 3", "CONT") == "Can't continue\n"
+
+
+def test_direct_goto_runs_the_program_as_typed_now(session):
+    after(session, "10 PRINT 1", "RUN")
+    assert after(session, "20 PRINT 2", "GOTO 20") == " 2 \n"
+
+
+def test_gosub_prog_5_in_direct_mode_is_the_library_virtual_link(session):
+    shown = after(session, "X(10) = -1: Y(10) = -1: GOSUB PROG 5: PRINT T; L")
+    angle, length = map(float, shown.split())
+    assert angle == pytest.approx(225.0) and length == pytest.approx(math.sqrt(2))
+
+
+def test_a_typed_program_area_replaces_the_library_until_new(session):
+    after(session, "PROG 5", "10 L = 99: RETURN", "PROG 0")
+    assert after(session, "GOSUB PROG 5: PRINT L") == " 99 \n"
+    after(session, "PROG 5", "NEW", "PROG 0")
+    assert after(session, "X(10) = 3: Y(10) = 4: GOSUB PROG 5: PRINT L") == " 5 \n"
+
+
+def test_the_printed_program_5_loaded_into_its_area(session):
+    after(session, "PROG 5", f'LOAD "{REPO_PROGRAMS / "prog5.bas"}"', "PROG 0")
+    # the printed subroutine divides by COS T: at T = 90 degrees it breaks, as the paper's listings avoid
+    assert after(session, "X(10) = 0: Y(10) = 1: GOSUB PROG 5") == "Division by zero in 10 (PROG 5)\n"
+    shown = after(session, "X(10) = 3: Y(10) = 4: GOSUB PROG 5: PRINT L")
+    assert float(shown) == pytest.approx(5.0)
+
+
+def test_library_errors_name_the_program_and_line(session):
+    after(session, "10 L(2) = 1: L(3) = 9: L(1) = 20: GOSUB PROG 1")
+    assert "cannot be assembled (PROG 1) in 10" in after(session, "RUN")
+
+
+def test_a_slip_inside_the_engine_is_shown_not_raised(tmp_path):
+    class BrokenEngine:
+        def direct(self, statement, programs):
+            raise RuntimeError("boom")
+
+    shown = []
+    Session(write=shown.append, engine=BrokenEngine(), directory=tmp_path).handle("PRINT 1")
+    assert shown == ["Internal error (RuntimeError: boom)\n"]
+
+
+WORDS = ["PRINT", "X", "L(2)", "(", ")", "1", "/", "0", "GOSUB", "PROG", "5", "2", ":", "=", '"', "T",
+         ",", ";", "SQR", "-", "LIST", "RENUM", "DELETE", "EDIT", "10", "20", "RUN", "CONT", "STOP", "NEW",
+         "RETURN", "END", "IF", "THEN", "ELSE", "DIM", "A$", "LOAD", "SAVE", " "]
+
+
+@settings(max_examples=120, deadline=None)
+@given(st.lists(st.lists(st.sampled_from(WORDS), max_size=8).map(" ".join), max_size=6))
+def test_whatever_is_typed_the_session_answers_with_basic_messages(tmp_path_factory, typed):
+    shown = []
+    directory = tmp_path_factory.mktemp("typed")
+    session = Session(write=shown.append, engine=MachineEngine(shown.append), directory=directory)
+    for line in typed:
+        session.handle(line)  # never raises
+    assert not any("Internal error" in text or "Traceback" in text for text in shown)
