@@ -97,3 +97,14 @@ def test_forces_only_when_z_is_2(tmp_path, capsys):
     assert status == 0, err
     assert rows[0] == [0.0, 777.0]
     assert rows[1][0] != 0 and rows[1][1] != 777.0
+
+
+def test_a_two_dimensional_input_array_is_a_basic_error_not_a_traceback(tmp_path, capsys):
+    status, rows, err = run(tmp_path, capsys, "10 DIM W(3, 3)\n20 L(1) = 0: L(2) = 1: L(3) = 3\n30 GOSUB PROG 1\n")
+    assert status == 1 and err == "Type mismatch (PROG 1) in 30"
+
+
+def test_a_two_dimensional_output_array_is_a_basic_error(tmp_path, capsys):
+    listing = "10 DIM V(4, 4)\n20 L(2) = 1: L(3) = 3: W(2) = 1\n30 GOSUB PROG 1\n"  # V is written, never read
+    status, rows, err = run(tmp_path, capsys, listing)
+    assert status == 1 and err == "Type mismatch (PROG 1) in 30"

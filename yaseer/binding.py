@@ -28,6 +28,7 @@ from yaseer.basic.errors import (
     ILLEGAL_FUNCTION_CALL,
     OVERFLOW,
     SUBSCRIPT_OUT_OF_RANGE,
+    TYPE_MISMATCH,
     BasicError,
 )
 from yaseer.linkages import (
@@ -113,6 +114,8 @@ class _Frame:
         arrays = {name: self.machine.array(name) for name, _ in self._elements}
         if any(index >= len(arrays[name]) or index < 0 for name, index in self._elements):
             raise self.error("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
+        if any(isinstance(arrays[name][index], (list, str)) for name, index in self._elements):
+            raise self.error("Type mismatch", TYPE_MISMATCH)  # a 2-D (or string) array where a number goes
         for (name, index), value in self._elements.items():
             arrays[name][index] = value
         for name, value in self._scalars.items():
@@ -132,6 +135,8 @@ def _translate(error: Exception, frame: _Frame) -> BasicError:
         return frame.error("Force system is singular")
     if isinstance(error, MethodDivisionByZero):
         return frame.error("Division by zero", DIVISION_BY_ZERO)
+    if isinstance(error, TypeError):  # e.g. an input array the listing made two-dimensional
+        return frame.error("Type mismatch", TYPE_MISMATCH)
     return frame.error(str(error))
 
 
@@ -312,7 +317,7 @@ def make_area(number: int, method: str | None = None) -> Callable[[object], None
                 program(frame, method)
         except BasicError:
             raise
-        except (ArithmeticError, ValueError) as error:
+        except (ArithmeticError, ValueError, TypeError) as error:
             raise _translate(error, frame) from error
         frame.commit()
 
