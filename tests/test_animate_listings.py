@@ -113,3 +113,15 @@ def test_command_errors_are_one_line(tmp_path, monkeypatch, capsys):
         shown = capsys.readouterr()
         assert shown.err.endswith(message), (args, shown.err)
         assert shown.out == ""
+
+
+def test_example_3_slotted_follower_keeps_one_length_through_the_cycle():
+    frames = build_scene(record_listing((LISTINGS / "example3.bas").read_text())).frames
+    lengths = set()
+    for frame in frames:
+        slider_crank, virtual, inversion = frame.snapshots
+        follower = inversion.bars[1]
+        (block,) = inversion.sliders
+        lengths.add(round(distance(follower.start, follower.end), 9))
+        assert distance(follower.start, block.centre) < distance(follower.start, follower.end)
+    assert len(lengths) == 1

@@ -454,10 +454,40 @@ class Scene:
     size: float  # a length in the mechanism's units used for blocks and ground symbols
 
 
+def steady_followers(frames: Sequence[Frame]) -> list[Frame]:
+    """Give each Program 3 follower (the slotted link) one length over the run: its longest.
+
+    Per call the follower is drawn from Bo past the block; over a cycle the
+    block slides, so a follower drawn to each call's own length would seem to
+    telescope.  Followers are matched by their call's place in the frame.
+    """
+    longest: dict[int, float] = {}
+    for frame in frames:
+        for index, snapshot in enumerate(frame.snapshots):
+            if snapshot.area == 3:
+                follower = snapshot.bars[1]
+                longest[index] = max(longest.get(index, 0.0), distance(follower.start, follower.end))
+    if not longest:
+        return list(frames)
+    return [Frame(tuple(_with_follower_length(s, longest[i]) if s.area == 3 else s
+                        for i, s in enumerate(frame.snapshots)), frame.printed) for frame in frames]
+
+
+def _with_follower_length(snapshot: Snapshot, length: float) -> Snapshot:
+    pivot, end = snapshot.bars[1].start, snapshot.bars[1].end
+    current = distance(pivot, end)
+    if current == 0.0:
+        return snapshot
+    scale = length / current
+    new_end = (pivot[0] + (end[0] - pivot[0]) * scale, pivot[1] + (end[1] - pivot[1]) * scale)
+    return replace(snapshot, bars=(snapshot.bars[0], replace(snapshot.bars[1], end=new_end)))
+
+
 def build_scene(frames: Sequence[Frame]) -> Scene:
     """Bounds with a margin, the moving traced points' paths, the symbol size."""
     if not frames:
         raise AnimationError("Nothing to animate: the listing called no library program before printing")
+    frames = steady_followers(frames)
     xmin, xmax, ymin, ymax = scene_bounds(frames)
     span = max(xmax - xmin, ymax - ymin, 1e-12)
     margin = 0.12 * span
