@@ -15,7 +15,9 @@ from .benchmark import methods_of, write_csv
 from .sweeps import all_sweeps, evaluate
 
 SILENT = 1e-6
-POINT_FIELDS = ("family", "group", "method", "distance_deg", "status", "error", "detail")
+POINT_FIELDS = ("family", "group", "method", "distance_deg", "status", "error", "position_error", "velocity_error",
+                "acceleration_error", "detail")
+KIND_NAMES = ("position", "velocity", "acceleration")
 
 
 def sweep_points(sweeps=None) -> list[dict]:
@@ -24,8 +26,10 @@ def sweep_points(sweeps=None) -> list[dict]:
     for sweep in sweeps if sweeps is not None else all_sweeps():
         for method in methods_of(sweep.linkage):
             for point in evaluate(sweep, method):
+                kinds = dict(point.by_kind)
                 rows.append({"family": sweep.family, "group": sweep.group, "method": method,
                              "distance_deg": point.distance, "status": point.status, "error": point.error,
+                             **{f"{k}_error": kinds.get(k, math.nan) for k in KIND_NAMES},
                              "detail": point.detail})
     return rows
 
@@ -40,9 +44,11 @@ def summarise(points) -> list[dict]:
         at_zero = [m for m in members if m["distance_deg"] == 0.0]
         silent = [m for m in members if m["status"] in ("nan", "wrong branch")
                   or (m["status"] == "ok" and m["error"] > SILENT)]
+        away = [m for m in members if m["status"] in ("ok", "wrong branch") and m["distance_deg"] != 0.0]
         summary.append({
             "family": family, "group": members[0]["group"], "method": method,
             "worst_error": max(verified) if verified else math.nan,
+            **{f"worst_{k}": max((m[f"{k}_error"] for m in away), default=math.nan) for k in KIND_NAMES},
             "nan": sum(m["status"] == "nan" for m in members),
             "exception": sum(m["status"] == "exception" for m in members),
             "wrong_branch": sum(m["status"] == "wrong branch" for m in members),
@@ -76,11 +82,12 @@ def _closest_clean(members) -> float:
 
 def format_table(summary) -> str:
     """Method x sweep: worst error / NaN / exceptions / wrong branch / silent, and the value at 0."""
-    lines = [f"{'sweep':<52} {'method':<19} {'worst err':>9} {'NaN':>4} {'exc':>4} {'wrong':>5} "
-             f"{'silent':>6}  at the singularity"]
+    lines = [f"{'sweep':<52} {'method':<19} {'pos err':>8} {'vel err':>8} {'acc err':>8} {'NaN':>4} {'exc':>4} "
+             f"{'wrong':>5} {'silent':>6}  at the singularity"]
     for s in summary:
-        lines.append(f"{s['family']:<52} {s['method']:<19} {s['worst_error']:>9.2g} {s['nan']:>4} "
-                     f"{s['exception']:>4} {s['wrong_branch']:>5} {s['silent_wrong']:>6}  {s['at_singularity']}")
+        lines.append(f"{s['family']:<52} {s['method']:<19} {s['worst_position']:>8.1e} {s['worst_velocity']:>8.1e} "
+                     f"{s['worst_acceleration']:>8.1e} {s['nan']:>4} {s['exception']:>4} {s['wrong_branch']:>5} "
+                     f"{s['silent_wrong']:>6}  {s['at_singularity']}")
     return "\n".join(lines)
 
 
@@ -100,16 +107,19 @@ def draw_chart(points, path_stem: Path) -> list[Path]:
         methods = list(dict.fromkeys(p["method"] for p in members))
         for k, method in enumerate(methods):
             colour = plt.cm.tab10(k % 10)
-            worst: dict[float, float] = {}
+            worst: dict[float, list[float]] = {}
             failures: dict[str, list[float]] = {}
             for p in (m for m in members if m["method"] == method):
                 d = abs(p["distance_deg"])
                 if p["status"] == "ok":
-                    worst[d] = max(worst.get(d, 0.0), p["error"])
+                    rates = max(p["position_error"], p["velocity_error"])
+                    old_rates, old_acc = worst.get(d, [0.0, 0.0])
+                    worst[d] = [max(old_rates, rates), max(old_acc, p["acceleration_error"])]
                 else:
                     failures.setdefault(p["status"], []).append(d)
             xs = sorted(worst)
-            axis.plot(xs, [min(max(worst[x], 1e-17), 1e3) for x in xs], "-o", ms=3, color=colour, label=method)
+            axis.plot(xs, [min(max(worst[x][0], 1e-17), 1e3) for x in xs], "-o", ms=3, color=colour, label=method)
+            axis.plot(xs, [min(max(worst[x][1], 1e-17), 1e3) for x in xs], "--", lw=0.8, color=colour)
             for status, marker, level in (("exception", "x", 1e5), ("nan", "v", 1e6), ("wrong branch", "D", 1e7),
                                           ("unverified", "+", 1e4)):
                 if status in failures:
@@ -126,8 +136,8 @@ def draw_chart(points, path_stem: Path) -> list[Path]:
         axis.legend(fontsize=7, loc="lower left")
     for axis in list(axes.flat)[len(groups):]:
         axis.set_visible(False)
-    figure.suptitle("yaseer stability: errors drawn at most 1e3; above: + unverifiable, x exception, v NaN/inf, "
-                    "diamond wrong branch; dotted line 1e-6", fontsize=10)
+    figure.suptitle("yaseer stability: solid = positions and velocities, dashed = accelerations (drawn at most 1e3); "
+                    "above: + unverifiable, x exception, v NaN/inf, diamond wrong branch; dotted line 1e-6", fontsize=10)
     figure.tight_layout()
     paths = []
     for suffix in (".png", ".svg"):

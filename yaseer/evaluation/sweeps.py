@@ -44,6 +44,11 @@ from .cases import FOURBAR_COLUMNS, SLIDER_COLUMNS
 from .measure import ReferenceColumn
 
 DISTANCES = tuple(10.0 ** -k for k in range(1, 13))
+#: the kind of each quantity: position, velocity or acceleration
+KINDS = {"T": "position", "L": "position", "D(5)": "velocity", "D(6)": "velocity", "E(5)": "acceleration",
+         "E(6)": "acceleration", "T(3)": "position", "X(2)": "position", "W(3)": "velocity", "V(3)": "velocity",
+         "A(3)": "acceleration", "A(35)": "acceleration", "T(13)": "position", "T(14)": "position",
+         "W(6)": "velocity", "W(7)": "velocity", "A(6)": "acceleration", "A(7)": "acceleration"}
 VIRTUAL_COLUMNS = ("T", "L", "D(5)", "E(5)", "D(6)", "E(6)")
 
 
@@ -92,6 +97,7 @@ class Point:
     status: str
     error: float
     detail: str = ""
+    by_kind: tuple = ()  # ((kind, worst error of that kind), ...)
 
 
 def evaluate(sweep: Sweep, method: str) -> list[Point]:
@@ -111,14 +117,16 @@ def evaluate(sweep: Sweep, method: str) -> list[Point]:
         if reference is None:
             points.append(Point(distance, "unverified", math.nan, "finite values at the singular configuration"))
             continue
-        error = 0.0
+        kinds: dict[str, float] = {}
         for name in sweep.columns:
             column = ReferenceColumn.from_mpf(name, [reference[name]], name in sweep.angle_columns)
-            error = max(error, float(column.errors([result[name]])[0]) * column.scale / scales[name])
+            value = float(column.errors([result[name]])[0]) * column.scale / scales[name]
+            kinds[KINDS[name]] = max(kinds.get(KINDS[name], 0.0), value)
+        error, by_kind = max(kinds.values()), tuple(sorted(kinds.items()))
         if error > 1e-3 and sweep.other_branch is not None and sweep.other_branch(inputs, result):
-            points.append(Point(distance, "wrong branch", error, "the other assembly mode"))
+            points.append(Point(distance, "wrong branch", error, "the other assembly mode", by_kind))
         else:
-            points.append(Point(distance, "ok", error))
+            points.append(Point(distance, "ok", error, "", by_kind))
     return points
 
 
