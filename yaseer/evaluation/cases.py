@@ -17,6 +17,8 @@ the paper's mechanisms use their listing's own grid for both):
   crank range where it assembles (|theta| <= 100 deg of its 100.95);
 * seed 004's change-point four-bar (0.3, 0.5, 1, 1.2), the mode of its FindRoot
   answer (crossed), a full turn at odd degrees (1 deg short of the change point);
+* a crank-rocker whose coupler swings past 90 deg from the fixed link (a = 1, b = 3,
+  c = 3, d = 2): where seed 003's printed ASIN returns the wrong coupler angle;
 * Program 5 alone: a point on an ellipse around Ao (all four quadrants);
 * the paper's Examples 1, 3, 4 as chains of programs (slider-crank or four-bar
   methods, and the virtual link's), printing the listing's columns;
@@ -166,6 +168,8 @@ SEED003_UNCROSSED = _fourbar_case("seed 003 four-bar, uncrossed", (30.0, 36.0, 3
                                   np.arange(-100.0, 100.5, 2.0), np.arange(-90.0, 91.0, 30.0))
 SEED003_CROSSED = _fourbar_case("seed 003 four-bar, crossed", (30.0, 36.0, 36.0, 60.0), 10.0, True,
                                 np.arange(-100.0, 100.5, 2.0), np.arange(-90.0, 91.0, 30.0))
+STEEP_COUPLER = _fourbar_case("four-bar with the coupler past 90 deg", (1.0, 3.0, 3.0, 2.0), 1.0, False,
+                              np.arange(0.5, 360.0, 2.0), np.arange(0.5, 360.0, 30.0))
 SEED004 = _fourbar_case("seed 004 change-point four-bar", (0.3, 0.5, 1.0, 1.2), 1.0, True,
                         np.arange(1.0, 360.0, 2.0), np.arange(15.0, 360.0, 30.0))
 
@@ -344,4 +348,4 @@ def paper_cases() -> list[Case]:
 
 def all_cases() -> list[Case]:
     """Every bench case: the seeds' linkages, then the paper's mechanisms."""
-    return [SEED001, SEED003_UNCROSSED, SEED003_CROSSED, SEED004, ELLIPSE_CASE, *paper_cases()]
+    return [SEED001, SEED003_UNCROSSED, SEED003_CROSSED, SEED004, STEEP_COUPLER, ELLIPSE_CASE, *paper_cases()]
