@@ -279,12 +279,12 @@ def test_half_angle_printed_returns_nan_silently_at_its_pole():
 
 def test_half_angle_printed_asin_loses_a_coupler_past_90_degrees():
     """Seed 003's BET = ASIN(...) only returns |beta| <= 90 deg: with the coupler at
-    about 104 deg (a = 1, b = 3, c = 3, d = 2, theta = 150) it answers 180 - beta,
+    about 104 deg (a = 1, b = 3, c = 3, d = 2, theta = 315) it answers 180 - beta,
     silently, while its follower angle (the quadratic) is right."""
-    reference = mp_fourbar(2.0, 1.0, 3.0, 3.0, 150.0, 1.0, 0.0, False)
+    reference = mp_fourbar(2.0, 1.0, 3.0, 3.0, 315.0, 1.0, 0.0, False)
     assert float(reference[0]) > 90.0
-    printed = fourbar(2.0, 0.0, 1.0, 3.0, 3.0, 150.0, 1.0, method="half-angle-printed")
+    printed = fourbar(2.0, 0.0, 1.0, 3.0, 3.0, 315.0, 1.0, method="half-angle-printed")
     assert float(printed.coupler.degrees) == pytest.approx(180.0 - float(reference[0]), abs=1e-9)
     assert float(printed.follower.degrees) == pytest.approx(float(reference[3]), abs=1e-9)
-    stable = fourbar(2.0, 0.0, 1.0, 3.0, 3.0, 150.0, 1.0, method="half-angle")
+    stable = fourbar(2.0, 0.0, 1.0, 3.0, 3.0, 315.0, 1.0, method="half-angle")
     assert_close(fourbar_values(stable), reference, 1e-12, 100.0)
