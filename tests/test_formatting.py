@@ -170,3 +170,59 @@ def test_format_without_a_field_is_illegal_function_call(fmt):
         using(fmt, [1.0])
     assert caught.value.code == ILLEGAL_FUNCTION_CALL
     assert str(caught.value) == "Illegal function call"
+
+
+# ---------------------------------------------------------------------------
+# Properties (Hypothesis): any format, any value
+# ---------------------------------------------------------------------------
+
+from fractions import Fraction  # noqa: E402
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+FORMAT_CHARS = "#.,+-*$^!&\\ _AB%"
+finite = st.floats(allow_nan=False, allow_infinity=False)
+
+
+@settings(max_examples=300, deadline=None, derandomize=True, database=None)
+@given(fmt=st.text(alphabet=FORMAT_CHARS, max_size=14),
+       values=st.lists(st.one_of(finite, st.text(alphabet="ab ", max_size=4)), max_size=4))
+def test_any_format_and_values_give_text_or_a_basic_error(fmt, values):
+    try:
+        text = using(fmt, values)
+    except BasicError as err:
+        assert err.code in (ILLEGAL_FUNCTION_CALL, TYPE_MISMATCH)
+    else:
+        assert isinstance(text, str) and "\n" not in text
+
+
+def half_away_from_zero(value: Fraction, decimals: int) -> Fraction:
+    """``value`` rounded to ``decimals`` places, halves away from zero (Fraction arithmetic)."""
+    scaled = abs(value) * 10 ** decimals
+    rounded = (scaled + Fraction(1, 2)).__floor__()
+    return Fraction(rounded if value >= 0 else -rounded, 10 ** decimals)
+
+
+@settings(max_examples=300, deadline=None, derandomize=True, database=None)
+@given(x=st.floats(min_value=-1e12, max_value=1e12), positions=st.integers(1, 8), decimals=st.integers(0, 5),
+       commas=st.booleans())
+def test_fixed_field_shows_the_value_rounded_to_its_decimals(x, positions, decimals, commas):
+    fmt = "#" * positions + ("," if commas else "") + "." + "#" * decimals
+    text = using(fmt, [x])
+    overflowed = text.startswith("%")
+    assert overflowed or len(text) == len(fmt)
+    shown = Fraction(text.lstrip("%").replace(",", "").strip())
+    expected = half_away_from_zero(Fraction(repr(x)), decimals)
+    assert shown == expected
+
+
+@settings(max_examples=300, deadline=None, derandomize=True, database=None)
+@given(x=finite)
+def test_print_text_reads_back_within_ten_digits(x):
+    text = number_to_text(x)
+    assert text.endswith(" ") and text[0] in " -"
+    mantissa = text.strip().lstrip("-").split("E")[0].replace(".", "").lstrip("0")
+    assert len(mantissa) <= 10
+    shown = Fraction(text.strip())  # exact: near 1.8E308 the rounded text is beyond the largest double
+    assert abs(shown - Fraction(x)) <= abs(Fraction(x)) * Fraction(5, 10 ** 10) * (1 + Fraction(1, 10 ** 6))

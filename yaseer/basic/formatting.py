@@ -47,12 +47,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from decimal import ROUND_HALF_UP, Decimal
+from decimal import ROUND_HALF_UP, Context, Decimal, localcontext
 from typing import Sequence, Union
 
 from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, OVERFLOW, TYPE_MISMATCH, BasicError
 
 SIGNIFICANT_DIGITS = 10  # a 10-digit pocket-computer display
+
+# Enough digits for any double written out in full (1.8E308 has 309) plus its decimals.
+_WIDE = Context(prec=800, Emax=1000, Emin=-1000)
 
 Value = Union[float, int, str]
 
@@ -276,7 +279,8 @@ def _fixed_body(x: float, field: NumericField) -> str:
     puts it back when there is room (see :func:`format_number`).  A non-zero
     value that rounds to zero keeps its ``0`` (``-0.00``), as in GW-BASIC.
     """
-    rounded = _decimal(x).quantize(Decimal(1).scaleb(-field.decimals), rounding=ROUND_HALF_UP)
+    with localcontext(_WIDE):
+        rounded = _decimal(x).quantize(Decimal(1).scaleb(-field.decimals), rounding=ROUND_HALF_UP)
     whole, _, fraction = f"{rounded:f}".partition(".")
     if field.comma:
         whole = _group_thousands(whole)
@@ -296,23 +300,28 @@ def _scientific_body(x: float, field: NumericField) -> str:
     Zero shows no digit left of the point (GW-BASIC prints ``  E+00`` for
     ``##^^^^``); with no mantissa digit at all only the exponent is shown.
     """
-    before = _scientific_digits_before(field)
-    exponent = 0
     if x == 0:
-        mantissa = ("." + "0" * field.decimals) if field.point else ""
+        mantissa, exponent = ("." + "0" * field.decimals) if field.point else "", 0
     else:
-        value = _decimal(x)
-        quantum = Decimal(1).scaleb(-field.decimals)
-        exponent = value.adjusted() + 1 - before
-        scaled = value.scaleb(-exponent).quantize(quantum, rounding=ROUND_HALF_UP)
-        if scaled >= Decimal(10) ** before and before + field.decimals > 0:
-            exponent += 1
-            scaled = value.scaleb(-exponent).quantize(quantum, rounding=ROUND_HALF_UP)
-        whole, _, fraction = f"{scaled:f}".partition(".")
-        whole = whole if before else ""
-        mantissa = whole + ("." + fraction if field.point else "")
+        with localcontext(_WIDE):
+            mantissa, exponent = _scientific_parts(x, field)
     sign = "-" if exponent < 0 else "+"
     return f"{mantissa}E{sign}{abs(exponent):0{field.exponent_digits}d}"
+
+
+def _scientific_parts(x: float, field: NumericField) -> tuple[str, int]:
+    """Mantissa text and power of ten of non-zero ``abs(x)`` for a ``^^^^`` field."""
+    before = _scientific_digits_before(field)
+    value = _decimal(x)
+    quantum = Decimal(1).scaleb(-field.decimals)
+    exponent = value.adjusted() + 1 - before
+    scaled = value.scaleb(-exponent).quantize(quantum, rounding=ROUND_HALF_UP)
+    if scaled >= Decimal(10) ** before and before + field.decimals > 0:
+        exponent += 1  # rounding carried into a new digit: 9.996 -> 10.00 -> 1.000E+01
+        scaled = value.scaleb(-exponent).quantize(quantum, rounding=ROUND_HALF_UP)
+    whole, _, fraction = f"{scaled:f}".partition(".")
+    whole = whole if before else ""
+    return whole + ("." + fraction if field.point else ""), exponent
 
 
 def _field_width(field: NumericField) -> int:
