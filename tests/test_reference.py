@@ -29,19 +29,21 @@ def rel(a, b, floor=1.0):
 
 # --------------------------------------------------------------------------- closed forms
 
-def slider_crank_closed_form(r, l, e, theta_deg, w, alpha):
+def slider_crank_closed_form(r, l, e, theta_deg, w, alpha, rd=0.0, rdd=0.0):
     """Offset slider-crank, pin B on y = e, B to the right of A: derived by hand.
 
     r sin(t) + l sin(b) = e fixes the rod angle b; x_B = r cos(t) + l cos(b);
-    differentiate twice.
+    differentiate twice (the crank length r may change: rd, rdd).
     """
     t = math.radians(theta_deg)
     b = math.asin((e - r * math.sin(t)) / l)
-    bd = -r * w * math.cos(t) / (l * math.cos(b))
-    bdd = (r * w * w * math.sin(t) - r * alpha * math.cos(t) + l * bd * bd * math.sin(b)) / (l * math.cos(b))
+    bd = -(rd * math.sin(t) + r * w * math.cos(t)) / (l * math.cos(b))
+    bdd = (-rdd * math.sin(t) - 2 * rd * w * math.cos(t) - r * alpha * math.cos(t) + r * w * w * math.sin(t)
+           + l * bd * bd * math.sin(b)) / (l * math.cos(b))
     x = r * math.cos(t) + l * math.cos(b)
-    xd = -r * w * math.sin(t) - l * bd * math.sin(b)
-    xdd = -r * alpha * math.sin(t) - r * w * w * math.cos(t) - l * bdd * math.sin(b) - l * bd * bd * math.cos(b)
+    xd = rd * math.cos(t) - r * w * math.sin(t) - l * bd * math.sin(b)
+    xdd = (rdd * math.cos(t) - 2 * rd * w * math.sin(t) - r * alpha * math.sin(t) - r * w * w * math.cos(t)
+           - l * bdd * math.sin(b) - l * bd * bd * math.cos(b))
     return dict(x=x, v=xd, a=xdd, rod=math.degrees(b), w_rod=bd, a_rod=bdd)
 
 
@@ -571,3 +573,56 @@ def test_mpmath_reference_near_a_toggle_against_the_closed_form_in_mpmath():
     assert abs(exact["bd"]) > 1e4
     with pytest.raises(MechanismError, match="singular"):
         basic_linkages.fourbar(d, 0, a, b, c, [float(theta)], 10, 0, crossed=True)
+
+
+# --------------------------------------------------------------------------- flexible cranks
+
+@pytest.mark.parametrize("theta", [20.0, 160.0, 300.0])
+def test_flexible_slider_crank_against_the_closed_form(theta):
+    """A crank whose length changes (D(0) = 4, E(0) = -30): the pin slides along the crank."""
+    r, rd, rdd, l, e, w, alpha = 3.0, 4.0, -30.0, 8.0, 2.0, -15.0, -10.0
+    got = basic_linkages.slider_crank(-e, r, l, [theta], w, alpha, crank_rate=rd, crank_accel=rdd)
+    exact = slider_crank_closed_form(r, l, e, theta, w, alpha, rd, rdd)
+    assert got["xB"][0] == pytest.approx(exact["x"], rel=1e-12)
+    assert got["vxB"][0] == pytest.approx(exact["v"], rel=1e-11)
+    assert got["axB"][0] == pytest.approx(exact["a"], rel=1e-10)
+    assert got["W(3)"][0] == pytest.approx(exact["w_rod"], rel=1e-11)
+    assert got["A(3)"][0] == pytest.approx(exact["a_rod"], rel=1e-10)
+
+
+def time_law(t, start, rate, accel):
+    return start + rate * t + accel * t * t / 2, rate + accel * t, accel
+
+
+@pytest.mark.parametrize("program", ["fourbar", "fisc"])
+def test_flexible_crank_rates_against_differences_in_time(program):
+    """theta(t) and the crank length L(t) both vary; the outputs at t = -h, 0, h by the
+    reference's positions, differenced in time, against its rates at t = 0."""
+    h = 1e-4
+    times = [-h, 0.0, h]
+    theta = [time_law(t, 35.0, math.degrees(6.0), math.degrees(-4.0)) for t in times]
+    length = [time_law(t, 40.0, 25.0, -300.0) for t in times]
+    angles = [th[0] for th in theta]
+    omegas = [math.radians(th[1]) for th in theta]
+    alphas = [math.radians(th[2]) for th in theta]
+    lengths, rates, accels = ([x[k] for x in length] for k in range(3))
+    if program == "fourbar":
+        r = basic_linkages.fourbar(100, 20, lengths, 120, 80, angles, omegas, alphas,
+                                   crank_rate=rates, crank_accel=accels)
+        pairs = [("T(13)", "W(6)", "A(6)", math.pi / 180), ("T(14)", "W(7)", "A(7)", math.pi / 180)]
+    else:
+        r = basic_linkages.inverted_slider_crank(90, 200, lengths, angles, omegas, alphas,
+                                                 crank_rate=rates, crank_accel=accels)
+        pairs = [("T(9)", "W(4)", "A(4)", math.pi / 180), ("L(5)", "D(4)", "E(4)", 1.0)]
+    for value, rate, accel, unit in pairs:
+        before, here, after = (float(v) * unit for v in r[value])
+        assert r[rate][1] == pytest.approx((after - before) / (2 * h), rel=1e-6), rate
+        assert r[accel][1] == pytest.approx((after - 2 * here + before) / h ** 2, rel=1e-4), accel
+
+
+def test_length_driver_needs_its_values():
+    from yaseer.reference.basic_linkages import FlexibleCrank, slider_crank_model
+
+    model = slider_crank_model(0, FlexibleCrank(3.0, 1.0, 0.0), 8.0)
+    with pytest.raises(ValueError, match="no values given"):
+        model.analyse([10.0], 1, 0, model.coordinates({"crank": (0, 0, 10), "rod": (3, 0.5, 0)}))

@@ -22,8 +22,9 @@ from __future__ import annotations
 import math
 
 from yaseer.reference.arithmetic import arithmetic_for
-from yaseer.reference.solver import (AngleDriver, Body, Mechanism, MechanismError, PointOnLine,
-                                     Revolute, cross, dot, normalise_degrees, polar)
+from yaseer.reference.solver import (AngleDriver, AngleLock, Body, LengthDriver, Mechanism,
+                                     MechanismError, PointOnLine, Revolute, cross, dot,
+                                     normalise_degrees, polar)
 
 
 def collect(rows: list[dict], number):
@@ -36,14 +37,63 @@ def collect(rows: list[dict], number):
     return {name: [r[name] for r in rows] for name in names}
 
 
-def solve_each(mechanism, thetas_deg, rate, acceleration, sketch_at, check, number, dps):
-    """One snapshot per crank angle, each by Newton from ``sketch_at(theta)`` (float, then ``number``)."""
+def solve_each(mechanism, thetas_deg, rate, acceleration, sketch_at, check, number, dps, crank=None):
+    """One snapshot per crank angle, each by Newton from ``sketch_at(theta, k)`` (float, then ``number``).
+
+    ``crank``: the FlexibleCrank of the mechanism, if any.  ``rate``, ``acceleration``:
+    the crank's, numbers or one per angle.
+    """
+    thetas = list(thetas_deg)
+    rates, accelerations = _each(rate, len(thetas)), _each(acceleration, len(thetas))
     snapshots = []
-    for theta in thetas_deg:
-        (snapshot,) = mechanism.analyse([theta], rate, acceleration, sketch_at(float(theta)),
-                                        number=number, dps=dps, branch_check=check)
+    for k, theta in enumerate(thetas):
+        drives = None if crank is None or not crank.flexible else {CRANK_LENGTH: crank.at(k)}
+        (snapshot,) = mechanism.analyse([theta], rates[k], accelerations[k], sketch_at(float(theta), k),
+                                        number=number, dps=dps, branch_check=check, drives=drives)
         snapshots.append(snapshot)
     return snapshots
+
+
+CRANK_LENGTH = "crank length"
+
+
+class FlexibleCrank:
+    """A crank's length per position and its rates (the contract's L, D, E): numbers or one per angle.
+
+    ``flexible`` is False for a rigid crank (no rates, one length): then the pin is a
+    plain revolute; otherwise the pin slides along the crank at the driven distance.
+    """
+
+    def __init__(self, length, rate=0, acceleration=0, count=1):
+        self.lengths = _each(length, count)
+        self.rates, self.accelerations = _each(rate, count), _each(acceleration, count)
+        self.flexible = not (_is_number(length) and _is_zero(rate) and _is_zero(acceleration))
+
+    def at(self, k):
+        return self.lengths[k], self.rates[k], self.accelerations[k]
+
+    def pin(self, crank_body, body, point):
+        """The constraints at the crank pin joining ``body``'s ``point`` to the crank."""
+        if not self.flexible:
+            return [Revolute("pin", crank_body, (self.lengths[0], 0), body, point)]
+        return [PointOnLine("pin", body, point, crank_body, (0, 0), 0),
+                LengthDriver(CRANK_LENGTH, body, point, crank_body, (0, 0), 0)]
+
+
+def _is_number(value):
+    return isinstance(value, str) or not hasattr(value, "__len__")
+
+
+def _is_zero(value):
+    return _is_number(value) and float(value) == 0
+
+
+def _each(value, count):
+    if _is_number(value):
+        return [value] * count
+    if len(value) != count:
+        raise ValueError(f"{len(value)} values for {count} crank angles")
+    return list(value)
 
 
 def _polar_xy(ar, length, angle_deg):
@@ -58,15 +108,15 @@ def _unit(theta_deg):
 
 # --------------------------------------------------------------------------- slider-crank
 
-def slider_crank_model(e, a, b, axis_deg=0):
-    """Crank Ao->A (pivot at the origin), rod A->B, B on the line e u(axis - 90) + s u(axis)."""
-    crank = Body("crank", points={"A": (a, 0)})
+def slider_crank_model(e, crank: FlexibleCrank, b, axis_deg=0):
+    """Crank from Ao (pivot at the origin), rod A->B, B on the line e u(axis - 90) + s u(axis)."""
+    crank_body = Body("crank")
     rod = Body("rod", points={"A": (0, 0), "B": (b, 0)})
-    return Mechanism([crank, rod],
-                     [Revolute("Ao", crank, (0, 0), None, (0, 0)),
-                      Revolute("A", crank, "A", rod, "A"),
+    return Mechanism([crank_body, rod],
+                     [Revolute("Ao", crank_body, (0, 0), None, (0, 0)),
+                      *crank.pin(crank_body, rod, "A"),
                       PointOnLine("B", rod, "B", None, polar(e, _minus_90(axis_deg)), axis_deg),
-                      AngleDriver("crank", crank)])
+                      AngleDriver("crank", crank_body)])
 
 
 def _minus_90(angle):
@@ -78,16 +128,23 @@ def _minus_90(angle):
     return angle - 90
 
 
-def slider_crank(e, a, b, thetas_deg, omega=0, alpha=0, axis_deg=0, ahead=True, number="float", dps=50):
-    """Program 1 with a rigid crank: rod angle T(3) (deg), W(3), A(3); pin B's x, y, v, a."""
-    mechanism = slider_crank_model(e, a, b, axis_deg)
+def slider_crank(e, a, b, thetas_deg, omega=0, alpha=0, axis_deg=0, ahead=True, crank_rate=0,
+                 crank_accel=0, number="float", dps=50):
+    """Program 1: rod angle T(3) (deg), W(3), A(3); pin B's x, y, v, a.
+
+    ``a``, ``crank_rate``, ``crank_accel``: the crank length L(2) and D(0), E(0)
+    (numbers, or one per angle for a flexible crank).
+    """
+    thetas = list(thetas_deg)
+    crank = FlexibleCrank(a, crank_rate, crank_accel, len(thetas))
+    mechanism = slider_crank_model(e, crank, b, axis_deg)
     sign = 1 if ahead else -1
     axis = float(axis_deg)
 
-    def sketch_at(theta):
-        pin = _unit(theta)
+    def sketch_at(theta, k):
+        length = float(crank.lengths[k])
         return mechanism.coordinates({"crank": (0, 0, theta),
-                                      "rod": (float(a) * pin[0], float(a) * pin[1],
+                                      "rod": (length * _unit(theta)[0], length * _unit(theta)[1],
                                               axis if ahead else axis + 180)})
 
     def check(s):
@@ -96,7 +153,7 @@ def slider_crank(e, a, b, thetas_deg, omega=0, alpha=0, axis_deg=0, ahead=True, 
             raise MechanismError("slider-crank: the piston left its assembly branch")
 
     rows = []
-    for s in solve_each(mechanism, thetas_deg, omega, alpha, sketch_at, check, number, dps):
+    for s in solve_each(mechanism, thetas, omega, alpha, sketch_at, check, number, dps, crank):
         position, velocity, acceleration = (s.position("rod", "B"), s.velocity("rod", "B"),
                                             s.acceleration("rod", "B"))
         rows.append({"T(3)": s.angle("rod"), "W(3)": s.omega("rod"), "A(3)": s.alpha("rod"),
@@ -108,17 +165,18 @@ def slider_crank(e, a, b, thetas_deg, omega=0, alpha=0, axis_deg=0, ahead=True, 
 # --------------------------------------------------------------------------- four-bar
 
 def fourbar_model(crank, coupler, follower, follower_pivot):
-    """Crank pivot at the origin, crank pin B = crank u(theta); coupler B->C; follower D->C, D fixed.
+    """Crank pivot at the origin, crank pin B at ``crank`` on the crank; coupler B->C; follower D->C, D fixed.
 
-    (Named as seed 003 names them; in the contract's words the pin is A, the
-    coupler's far end B, the follower pivot Bo.)
+    ``crank``: a length, or a FlexibleCrank.  (Named as seed 003 names them; in the
+    contract's words the pin is A, the coupler's far end B, the follower pivot Bo.)
     """
-    crank_body = Body("crank", points={"B": (crank, 0)})
+    crank = crank if isinstance(crank, FlexibleCrank) else FlexibleCrank(crank)
+    crank_body = Body("crank")
     coupler_body = Body("coupler", points={"B": (0, 0), "C": (coupler, 0)})
     follower_body = Body("follower", points={"D": (0, 0), "C": (follower, 0)})
     return Mechanism([crank_body, coupler_body, follower_body],
                      [Revolute("A", crank_body, (0, 0), None, (0, 0)),
-                      Revolute("B", crank_body, "B", coupler_body, "B"),
+                      *crank.pin(crank_body, coupler_body, "B"),
                       Revolute("C", coupler_body, "C", follower_body, "C"),
                       Revolute("D", follower_body, "D", None, follower_pivot),
                       AngleDriver("crank", crank_body)])
@@ -149,20 +207,30 @@ def fourbar_side_check(side, what):
     return check
 
 
-def fourbar_snapshots(thetas_deg, omega, alpha, lengths, pivot, side, number, dps, what):
-    """Solved four-bar states at each crank angle (see :func:`fourbar_model`)."""
-    crank, coupler, follower = lengths
+def fourbar_snapshots(thetas_deg, omega, alpha, lengths, pivot, side, number, dps, what,
+                      crank_rate=0, crank_accel=0):
+    """Solved four-bar states at each crank angle (see :func:`fourbar_model`); the crank
+    length may be one per angle with its rates (a flexible crank)."""
+    thetas = list(thetas_deg)
+    crank_length, coupler, follower = lengths
+    crank = FlexibleCrank(crank_length, crank_rate, crank_accel, len(thetas))
     mechanism = fourbar_model(crank, coupler, follower, pivot)
-    return solve_each(mechanism, thetas_deg, omega, alpha,
-                      lambda theta: fourbar_sketch(mechanism, theta, crank, coupler, follower, pivot, side),
-                      fourbar_side_check(side, what), number, dps)
+    return solve_each(mechanism, thetas, omega, alpha,
+                      lambda theta, k: fourbar_sketch(mechanism, theta, crank.lengths[k], coupler, follower,
+                                                      pivot, side),
+                      fourbar_side_check(side, what), number, dps, crank)
 
 
-def fourbar(L11, T11, L12, L13, L14, thetas_deg, omega=0, alpha=0, crossed=False, number="float", dps=50):
-    """Program 2 with a rigid crank: T(13), W(6), A(6) of A->B; T(14) of B->Bo, W(7), A(7)."""
+def fourbar(L11, T11, L12, L13, L14, thetas_deg, omega=0, alpha=0, crossed=False, crank_rate=0,
+            crank_accel=0, number="float", dps=50):
+    """Program 2: T(13), W(6), A(6) of A->B; T(14) of B->Bo, W(7), A(7).
+
+    ``L12``, ``crank_rate``, ``crank_accel``: the crank length and D(2), E(2)
+    (numbers, or one per angle for a flexible crank).
+    """
     pivot = _polar_xy(arithmetic_for(number, dps), L11, T11)
     snapshots = fourbar_snapshots(thetas_deg, omega, alpha, (L12, L13, L14), pivot,
-                                  -1 if crossed else 1, number, dps, "PROG 2 reference")
+                                  -1 if crossed else 1, number, dps, "PROG 2 reference", crank_rate, crank_accel)
     rows = [{"T(13)": s.angle("coupler"), "W(6)": s.omega("coupler"), "A(6)": s.alpha("coupler"),
              "T(14)": normalise_degrees(s.angle("follower") + 180, s.ar),
              "W(7)": s.omega("follower"), "A(7)": s.alpha("follower")} for s in snapshots]
@@ -171,34 +239,46 @@ def fourbar(L11, T11, L12, L13, L14, thetas_deg, omega=0, alpha=0, crossed=False
 
 # --------------------------------------------------------------------------- inverted slider-crank
 
-def inverted_slider_crank(L6, T6, L7, thetas_deg, omega=0, alpha=0, number="float", dps=50):
-    """Program 3 (FISC) with a rigid crank: L(5) = |Bo->A|, D(4), E(4); T(9) of Bo->A, W(4), A(4)."""
+def inverted_slider_crank(L6, T6, L7, thetas_deg, omega=0, alpha=0, crank_rate=0, crank_accel=0,
+                          number="float", dps=50):
+    """Program 3 (FISC): L(5) = |Bo->A|, D(4), E(4); T(9) of Bo->A, W(4), A(4).
+
+    ``L7``, ``crank_rate``, ``crank_accel``: the crank length and D(3), E(3)
+    (numbers, or one per angle for a flexible crank).  The block at A carries
+    the pin; it slides along the follower, whose line passes through Bo.
+    """
     ar = arithmetic_for(number, dps)
-    crank = Body("crank", points={"A": (L7, 0)})
+    thetas = list(thetas_deg)
+    crank = FlexibleCrank(L7, crank_rate, crank_accel, len(thetas))
+    crank_body, block = Body("crank"), Body("block", points={"A": (0, 0)})
     follower = Body("follower", points={"Bo": (0, 0)})
     ao_from_bo = _polar_xy(ar, L6, T6)
     bo_xy = (-ao_from_bo[0], -ao_from_bo[1])
-    mechanism = Mechanism([crank, follower],
-                          [Revolute("Ao", crank, (0, 0), None, (0, 0)),
+    mechanism = Mechanism([crank_body, block, follower],
+                          [Revolute("Ao", crank_body, (0, 0), None, (0, 0)),
+                           *crank.pin(crank_body, block, "A"),
                            Revolute("Bo", follower, "Bo", None, bo_xy),
-                           PointOnLine("A", crank, "A", follower, (0, 0), 0),
-                           AngleDriver("crank", crank)])
+                           PointOnLine("A", block, "A", follower, (0, 0), 0),
+                           AngleLock("block", block, follower, 0),
+                           AngleDriver("crank", crank_body)])
     bo_float = (float(bo_xy[0]), float(bo_xy[1]))
 
-    def sketch_at(theta):
-        pin = (float(L7) * _unit(theta)[0], float(L7) * _unit(theta)[1])
+    def sketch_at(theta, k):
+        length = float(crank.lengths[k])
+        pin = (length * _unit(theta)[0], length * _unit(theta)[1])
         direction = math.degrees(math.atan2(pin[1] - bo_float[1], pin[0] - bo_float[0]))
-        return mechanism.coordinates({"crank": (0, 0, theta), "follower": (bo_float[0], bo_float[1], direction)})
+        return mechanism.coordinates({"crank": (0, 0, theta), "block": (pin[0], pin[1], direction),
+                                      "follower": (bo_float[0], bo_float[1], direction)})
 
     def check(s):
-        pin, pivot = s.position("crank", "A"), s.position("follower", "Bo")
+        pin, pivot = s.position("block", "A"), s.position("follower", "Bo")
         if dot((pin[0] - pivot[0], pin[1] - pivot[1]), _unit(float(s.angle("follower")))) <= 0:
             raise MechanismError("FISC: the block passed through the follower's pivot")
 
     rows = []
-    for s in solve_each(mechanism, thetas_deg, omega, alpha, sketch_at, check, number, dps):
-        r = [p - q for p, q in zip(s.position("crank", "A"), s.position("follower", "Bo"))]
-        v, a = s.velocity("crank", "A"), s.acceleration("crank", "A")
+    for s in solve_each(mechanism, thetas, omega, alpha, sketch_at, check, number, dps, crank):
+        r = [p - q for p, q in zip(s.position("block", "A"), s.position("follower", "Bo"))]
+        v, a = s.velocity("block", "A"), s.acceleration("block", "A")
         length = s.ar.sqrt(dot(r, r))
         rate = dot(r, v) / length
         rows.append({"L(5)": length, "D(4)": rate, "E(4)": (dot(v, v) + dot(r, a) - rate * rate) / length,

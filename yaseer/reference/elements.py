@@ -222,8 +222,61 @@ class Revolute:
         return [ai[0] * wi * wi - aj[0] * wj * wj, ai[1] * wi * wi - aj[1] * wj * wj]
 
 
+class _LineProjection:
+    """Shared algebra of constraints on ``axis . (p_i - p_j)``, with ``axis`` a unit vector
+    fixed in body j (or the ground) at ``line_angle_deg`` (+ 90 for a normal), ``p_j`` on
+    the line through ``line_point``: residual ``axis.d - target``."""
+
+    axis_offset_deg = 0
+
+    def __post_init__(self):
+        self.local_i = _resolve(self.body_i, self.point_i)
+        self.local_j = _resolve(self.body_j, self.line_point)
+
+    def axis(self, kin):
+        """The global unit vector the separation is projected on."""
+        ar = kin.ar
+        angle = ar.radians(ar.num(self.line_angle_deg) + self.axis_offset_deg) + kin.angle(self.body_j)
+        return (ar.cos(angle), ar.sin(angle))
+
+    def _separation(self, kin):
+        pi, pj = kin.position(self.body_i, self.local_i), kin.position(self.body_j, self.local_j)
+        return (pi[0] - pj[0], pi[1] - pj[1])
+
+    def _target(self, kin, drive):
+        """(value, rate, acceleration) the projection must follow (zero for a slider)."""
+        zero = kin.ar.num(0)
+        return zero, zero, zero
+
+    def residuals(self, kin, drive):
+        return [dot(self.axis(kin), self._separation(kin)) - self._target(kin, drive)[0]]
+
+    def jacobian(self, kin):
+        n, d = self.axis(kin), self._separation(kin)
+        ai, aj = kin.arm(self.body_i, self.local_i), kin.arm(self.body_j, self.local_j)
+        row = {}
+        _add(row, self.body_i, (n[0], n[1], dot(n, perp(ai))))
+        _add(row, self.body_j, (-n[0], -n[1], dot(perp(n), d) - dot(n, perp(aj))))
+        return [row]
+
+    def nu(self, kin, drive):
+        return [self._target(kin, drive)[1]]
+
+    def gamma(self, kin, drive):
+        n, d = self.axis(kin), self._separation(kin)
+        ai, aj = kin.arm(self.body_i, self.local_i), kin.arm(self.body_j, self.local_j)
+        wi, wj = kin.rate(self.body_i, kin.qd), kin.rate(self.body_j, kin.qd)
+        vi, vj = kin.velocity(self.body_i, self.local_i), kin.velocity(self.body_j, self.local_j)
+        d_rate = (vi[0] - vj[0], vi[1] - vj[1])
+        # Phi'' = n''.d + 2 n'.d' + n.d'' - target''; n' = wj perp(n), n'' = alpha_j perp(n) - wj^2 n,
+        # d'' = (accelerations of the two points); keep the terms free of qdd.
+        rest = (-wj * wj * dot(n, d) + 2 * wj * dot(perp(n), d_rate)
+                - wi * wi * dot(n, ai) + wj * wj * dot(n, aj))
+        return [self._target(kin, drive)[2] - rest]
+
+
 @dataclass
-class PointOnLine:
+class PointOnLine(_LineProjection):
     """A slider: point ``point_i`` of ``body_i`` stays on a line fixed in ``body_j`` (or the ground).
 
     The line passes through ``line_point`` with direction angle ``line_angle_deg``
@@ -240,46 +293,36 @@ class PointOnLine:
     line_point: object
     line_angle_deg: object
     size = 1
-
-    def __post_init__(self):
-        self.local_i = _resolve(self.body_i, self.point_i)
-        self.local_j = _resolve(self.body_j, self.line_point)
+    axis_offset_deg = 90
 
     def normal(self, kin):
         """Global unit normal of the line (its direction turned +90 degrees)."""
-        ar = kin.ar
-        angle = ar.radians(ar.num(self.line_angle_deg)) + kin.angle(self.body_j)
-        return (-ar.sin(angle), ar.cos(angle))
+        return self.axis(kin)
 
-    def _separation(self, kin):
-        pi, pj = kin.position(self.body_i, self.local_i), kin.position(self.body_j, self.local_j)
-        return (pi[0] - pj[0], pi[1] - pj[1])
 
-    def residuals(self, kin, drive):
-        return [dot(self.normal(kin), self._separation(kin))]
+@dataclass
+class LengthDriver(_LineProjection):
+    """A driven slide (a flexible crank's length): the distance of ``point_i`` of ``body_i``
+    along a line fixed in ``body_j``, measured from ``line_point`` in the direction
+    ``line_angle_deg``, follows s(t); per position s, its rate and acceleration (lengths).
 
-    def jacobian(self, kin):
-        n, d = self.normal(kin), self._separation(kin)
-        ai, aj = kin.arm(self.body_i, self.local_i), kin.arm(self.body_j, self.local_j)
-        row = {}
-        _add(row, self.body_i, (n[0], n[1], dot(n, perp(ai))))
-        _add(row, self.body_j, (-n[0], -n[1], dot(perp(n), d) - dot(n, perp(aj))))
-        return [row]
+    Use it with a PointOnLine on the same line.  :meth:`Snapshot.driver_torque` gives the
+    force the drive applies to body i along the line direction.
+    """
 
-    def nu(self, kin, drive):
-        return [kin.ar.num(0)]
+    name: str
+    body_i: Body
+    point_i: object
+    body_j: Body | None
+    line_point: object
+    line_angle_deg: object = 0
+    size = 1
 
-    def gamma(self, kin, drive):
-        n, d = self.normal(kin), self._separation(kin)
-        ai, aj = kin.arm(self.body_i, self.local_i), kin.arm(self.body_j, self.local_j)
-        wi, wj = kin.rate(self.body_i, kin.qd), kin.rate(self.body_j, kin.qd)
-        vi, vj = kin.velocity(self.body_i, self.local_i), kin.velocity(self.body_j, self.local_j)
-        d_rate = (vi[0] - vj[0], vi[1] - vj[1])
-        # Phi'' = n''.d + 2 n'.d' + n.d''; n' = wj perp(n), n'' = alpha_j perp(n) - wj^2 n,
-        # d'' = (accelerations of the two points); keep the terms free of qdd.
-        rest = (-wj * wj * dot(n, d) + 2 * wj * dot(perp(n), d_rate)
-                - wi * wi * dot(n, ai) + wj * wj * dot(n, aj))
-        return [-rest]
+    def _target(self, kin, drive):
+        if self.name not in drive.others:
+            raise ValueError(f"no values given for the driver {self.name!r} (analyse(..., drives=...))")
+        values = drive.others[self.name]
+        return values.angle, values.rate, values.acceleration
 
 
 @dataclass
@@ -323,7 +366,7 @@ class AngleDriver:
     size = 1
 
     def residuals(self, kin, drive):
-        return [kin.angle(self.body_i) - drive.angle]
+        return [kin.angle(self.body_i) - drive.of(self.name).angle]
 
     def jacobian(self, kin):
         one, zero = kin.ar.num(1), kin.ar.num(0)
@@ -332,19 +375,29 @@ class AngleDriver:
         return [row]
 
     def nu(self, kin, drive):
-        return [drive.rate]
+        return [drive.of(self.name).rate]
 
     def gamma(self, kin, drive):
-        return [drive.acceleration]
+        return [drive.of(self.name).acceleration]
 
 
 @dataclass
 class Drive:
-    """The driver's value at one position: angle (radians), rate (rad/s), acceleration (rad/s^2)."""
+    """The driver's value at one position: angle (radians), rate (rad/s), acceleration (rad/s^2).
+
+    ``others`` holds the values of further drivers by name (a LengthDriver's length,
+    rate and acceleration in the model's units); every driver reads its own with
+    :meth:`of`, the crank's AngleDriver the main values.
+    """
 
     angle: object
     rate: object
     acceleration: object
+    others: dict = field(default_factory=dict)
+
+    def of(self, name: str) -> "Drive":
+        """The values of driver ``name`` (the main ones unless ``others`` has it)."""
+        return self.others.get(name, self)
 
 
 def _arms(constraint):

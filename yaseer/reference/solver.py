@@ -37,8 +37,9 @@ from typing import Sequence
 
 from yaseer.reference.arithmetic import FLOAT, SingularSystemError, arithmetic_for
 from yaseer.reference.elements import (  # noqa: F401  (the solver's public vocabulary)
-    AngleDriver, AngleLock, Body, Couple, Drive, LocalPoint, MechanismError, PointLoad, PointOnLine,
-    Revolute, _arms, _Kinematics, _resolve, cross, dot, normalise_degrees, perp, polar, rotate, xy)
+    AngleDriver, AngleLock, Body, Couple, Drive, LengthDriver, LocalPoint, MechanismError, PointLoad,
+    PointOnLine, Revolute, _arms, _Kinematics, _resolve, cross, dot, normalise_degrees, perp, polar,
+    rotate, xy)
 
 
 # --------------------------------------------------------------------------- the mechanism
@@ -199,18 +200,17 @@ class Mechanism:
     def condition(self, q, ar=FLOAT) -> float:
         """Condition number of the position Jacobian made dimensionless.
 
-        Angle columns are multiplied by a characteristic length (the largest
-        body-point arm at ``q``) and angle rows divided by it, so the number
-        does not depend on the unit of length.  Infinite when singular.
+        With a characteristic length (the extent of the mechanism at ``q``),
+        angle columns are divided by it (the unknown becomes length x angle) and
+        the rows of angle constraints multiplied by it, so the number does not
+        depend on the unit of length.  Infinite when singular.
         Estimated in float; above 1e13 an mpmath analysis recomputes it in its
         own precision.
         """
         import numpy as np
 
         kin = _Kinematics(ar, q)
-        length = max([1e-300] + [abs(ar.to_float(v)) for c in self.constraints.values()
-                                 for body, local in _arms(c) for v in kin.arm(body, local)])
-        rows = self._scaled_jacobian(kin, ar.num(length))
+        rows = self._scaled_jacobian(kin, ar.num(self._size_of(kin)))
         singular = np.linalg.svd(np.array([[ar.to_float(v) for v in row] for row in rows]), compute_uv=False)
         if ar is not FLOAT and (singular[-1] == 0 or singular[0] > 1e13 * singular[-1]):
             exact = ar.ctx.svd_r(ar.ctx.matrix(rows), compute_uv=False)
@@ -218,6 +218,21 @@ class Mechanism:
         if singular[-1] == 0:
             return math.inf
         return float(singular[0] / singular[-1])
+
+    def _size_of(self, kin):
+        """The mechanism's extent at this position: the larger side of the box around its
+        body origins and constraint points (float; 1 if it is a single point)."""
+        xs, ys = [], []
+        for constraint in self.constraints.values():
+            for body, local in _arms(constraint):
+                point = kin.position(body, local)
+                xs.append(kin.ar.to_float(point[0]))
+                ys.append(kin.ar.to_float(point[1]))
+        for body in self.bodies.values():
+            xs.append(kin.ar.to_float(kin.q[3 * body.index]))
+            ys.append(kin.ar.to_float(kin.q[3 * body.index + 1]))
+        extent = max(max(xs) - min(xs), max(ys) - min(ys))
+        return extent if extent > 0 else 1.0
 
     def _scaled_jacobian(self, kin, length):
         """Jacobian rows with angle columns times 1/length and angle rows times length."""
@@ -269,10 +284,9 @@ class Mechanism:
             snap.lam = self.multipliers(snap)
         return snap
 
-    def tangent(self, q, ar=FLOAT):
-        """dq/dtheta (per radian of the driver) at position ``q``."""
-        one, zero = ar.num(1), ar.num(0)
-        return self.velocities(q, Drive(zero, one, zero), ar)
+    def tangent(self, q, direction: Drive, ar=FLOAT):
+        """dq/ds along a path of the drivers whose rates per unit s are ``direction``'s rates."""
+        return self.velocities(q, direction, ar)
 
     def coordinates(self, placements: dict) -> list:
         """A coordinate vector from ``{body name: (x, y, angle_deg)}`` (e.g. a rough sketch)."""
@@ -284,37 +298,44 @@ class Mechanism:
 
     def analyse(self, angles_deg, rate, acceleration, q_guess, *, number="float", dps=50,
                 level="accelerations", max_step_deg=2.0, branch_check=None, home_deg=None,
-                accuracy=1e-6):
+                accuracy=1e-6, drives=None):
         """Analyse the mechanism at each driver angle of ``angles_deg`` (degrees, in order).
 
         ``rate``, ``acceleration``: the driver's rad/s and rad/s^2, numbers (the
         same at every position) or sequences (one per angle: theta(t) with any
-        rate history).  ``level``: how far to go ("positions", "velocities",
+        rate history).  ``drives``: the further drivers (LengthDriver) as
+        ``{name: (values, rates, accelerations)}``, each a number or one per
+        angle.  ``level``: how far to go ("positions", "velocities",
         "accelerations", "forces").  ``q_guess``: coordinates near the first
         position; the first position is found by Newton from it, each next one
         by continuation from the previous (float steps of at most
-        ``max_step_deg``, predictor from the tangent).  With ``home_deg``,
-        ``q_guess`` is near the position at driver angle ``home_deg`` and the
-        continuation starts there.  ``number="mpmath"`` polishes every position
-        by Newton at ``dps`` digits and computes rates and forces there.
-        ``branch_check(snapshot)`` may raise MechanismError when the assembly
-        branch is lost.  Each position is checked for conditioning
-        (:meth:`check_conditioning`): where the estimated relative error
-        exceeds ``accuracy`` the analysis stops with MechanismError instead of
-        returning a wrong number.  Returns a list of :class:`Snapshot`.
+        ``max_step_deg`` of the crank, the other drivers interpolated,
+        predictor from the tangent).  With ``home_deg``, ``q_guess`` is near
+        the position at driver angle ``home_deg`` (others at their first
+        values) and the continuation starts there.  ``number="mpmath"``
+        polishes every position by Newton at ``dps`` digits and computes rates
+        and forces there.  ``branch_check(snapshot)`` may raise MechanismError
+        when the assembly branch is lost.  Each position is checked for
+        conditioning (:meth:`check_conditioning`): where the estimated relative
+        error exceeds ``accuracy`` the analysis stops with MechanismError
+        instead of returning a wrong number.  Returns a list of :class:`Snapshot`.
         """
         ar = arithmetic_for(number, dps)
+        angles = list(angles_deg)
+        count = len(angles)
+        rates, accelerations = _per_position(rate, count), _per_position(acceleration, count)
+        others = {name: [_per_position(v, count) for v in values] for name, values in (drives or {}).items()}
+        states = [(angle, {name: values[0][k] for name, values in others.items()}) for k, angle in enumerate(angles)]
         results = []
         q_float, previous = q_guess, None
-        if home_deg is not None:
-            q_float = self._continue(q_guess, None, float(home_deg), max_step_deg=max_step_deg)
-            previous = float(home_deg)
-        angles = list(angles_deg)
-        rates, accelerations = _per_position(rate, len(angles)), _per_position(acceleration, len(angles))
-        for angle, rate_here, acceleration_here in zip(angles, rates, accelerations):
-            q_float, q = self._position(q_float, previous, angle, ar, max_step_deg)
-            previous = float(angle)
-            drive = self._drive(ar, angle, rate_here, acceleration_here)
+        if home_deg is not None and states:
+            previous = (home_deg, states[0][1])
+            q_float = self._continue(q_guess, None, previous, max_step_deg=max_step_deg)
+        for k, state in enumerate(states):
+            q_float, q = self._position(q_float, previous, state, ar, max_step_deg)
+            previous = state
+            drive = self._drive(ar, state, rates[k], accelerations[k],
+                                {name: (values[1][k], values[2][k]) for name, values in others.items()})
             condition, bound = self.check_conditioning(q, drive, ar, accuracy, level)
             snap = self.snapshot(q, drive, ar, level=level)
             snap.condition, snap.error_bound = condition, bound
@@ -323,39 +344,45 @@ class Mechanism:
             results.append(snap)
         return results
 
-    def _position(self, q_float, previous_deg, angle_deg, ar, max_step_deg):
-        """(float position, position in ``ar``) at ``angle_deg``, continuing from ``previous_deg``.
+    def _position(self, q_float, previous, state, ar, max_step_deg):
+        """(float position, position in ``ar``) at driver ``state``, continuing from ``previous``.
 
-        ``angle_deg`` may be an mpf: the mpmath polish takes it exactly.
-
-        A float stage that only guesses for mpmath stops at 1e-9: near a
-        singular position float Newton cannot reach 1e-13, the mpmath polish can.
+        A state is (crank angle in degrees, {other driver: value}); its numbers
+        may be mpf: the mpmath polish takes them exactly.  A float stage that
+        only guesses for mpmath stops at 1e-9: near a singular position float
+        Newton cannot reach 1e-13, the mpmath polish can.
         """
         loose = None if ar is FLOAT else 1e-9
-        q_float = self._continue(q_float, previous_deg, float(angle_deg), max_step_deg=max_step_deg,
-                                 tolerance=loose)
+        q_float = self._continue(q_float, previous, state, max_step_deg=max_step_deg, tolerance=loose)
         if ar is FLOAT:
             return q_float, q_float
-        return q_float, self.newton(q_float, self._drive(ar, angle_deg, 0, 0), ar, max_iterations=200)
+        return q_float, self.newton(q_float, self._drive(ar, state, 0, 0), ar, max_iterations=200)
 
     @staticmethod
-    def _drive(ar, angle_deg, rate, acceleration):
-        return Drive(ar.radians(ar.num(angle_deg)), ar.num(rate), ar.num(acceleration))
+    def _drive(ar, state, rate, acceleration, other_rates=None):
+        """The Drive at ``state`` with the crank's rate and acceleration and the others' (rate, accel)."""
+        angle_deg, values = state
+        other_rates = other_rates or {}
+        others = {name: Drive(ar.num(value), ar.num(other_rates.get(name, (0, 0))[0]),
+                              ar.num(other_rates.get(name, (0, 0))[1]))
+                  for name, value in values.items()}
+        return Drive(ar.radians(ar.num(angle_deg)), ar.num(rate), ar.num(acceleration), others)
 
-    def _continue(self, q, from_deg, to_deg, *, max_step_deg, tolerance=None):
-        """Float positions: Newton at ``to_deg`` from ``q`` (at ``from_deg``; None: ``q`` is a
-        guess for ``to_deg`` itself), stepping along the tangent."""
-        if from_deg is None:
-            return self.newton(q, self._drive(FLOAT, to_deg, 0, 0), tolerance=tolerance,
-                               max_iterations=100)
-        span = to_deg - from_deg
+    def _continue(self, q, previous, state, *, max_step_deg, tolerance=None):
+        """Float positions: Newton at ``state`` from ``q`` (at ``previous``; None: ``q`` is a
+        guess for ``state`` itself), in steps along the tangent, the drivers interpolated."""
+        target = (float(state[0]), {name: float(v) for name, v in state[1].items()})
+        if previous is None:
+            return self.newton(q, self._drive(FLOAT, target, 0, 0), tolerance=tolerance, max_iterations=100)
+        start = (float(previous[0]), {name: float(v) for name, v in previous[1].items()})
+        span = target[0] - start[0]
         steps = max(1, int(abs(span) // max_step_deg) + (abs(span) % max_step_deg > 0))
+        per_step = self._drive(FLOAT, (0.0, {name: 0.0 for name in target[1]}), FLOAT.radians(span / steps), 0,
+                               {name: ((target[1][name] - start[1][name]) / steps, 0) for name in target[1]})
         for k in range(1, steps + 1):
-            here = from_deg + span * (k - 1) / steps
-            there = from_deg + span * k / steps
-            slope = self.tangent(q)
-            step = FLOAT.radians(there - here)
-            predicted = [v + s * step for v, s in zip(q, slope)]
+            predicted = [v + s for v, s in zip(q, self.tangent(q, per_step))]
+            there = (start[0] + span * k / steps,
+                     {name: start[1][name] + (target[1][name] - start[1][name]) * k / steps for name in target[1]})
             q = self.newton(predicted, self._drive(FLOAT, there, 0, 0), tolerance=tolerance)
         return q
 
