@@ -2,7 +2,7 @@
 
 Writes to ``--out`` (default ``bench-out``): ``bench.csv`` (every case x method x
 way), ``bench_summary.csv`` (per method and way), ``bench_newton.csv`` (Newton
-over its tolerances), ``bench_laziness.csv`` and the chart ``bench.png`` /
+over its tolerances), ``bench_laziness.csv``, ``bench_table.md`` and the chart ``bench.png`` /
 ``bench.svg``; prints the summary and the laziness table.  See docs/bench.md.
 """
 
@@ -41,6 +41,7 @@ def main(args) -> int:
     bench.write_csv(out / "bench_summary.csv", summary, list(summary[0]))
     bench.write_csv(out / "bench_newton.csv", newton_curve, list(newton_curve[0]))
     bench.write_csv(out / "bench_laziness.csv", laziness, list(laziness[0]))
+    (out / "bench_table.md").write_text(bench.format_markdown(rows))
     print(bench.format_table(summary))
     print()
     print("Newton over its tolerance (array way; median time, worst error over the cases):")

@@ -2,7 +2,7 @@
 
 Prints the table (sweep x method: worst error, NaN, exceptions, wrong branches,
 silent wrong numbers, what happened at the singular configuration) and writes
-``stability.csv``, ``stability_points.csv`` and the chart ``stability.png`` /
+``stability.csv``, ``stability_points.csv``, ``stability_table.md`` and the chart ``stability.png`` /
 ``stability.svg`` to ``--out`` (default ``stability-out``).  See docs/stability.md.
 """
 

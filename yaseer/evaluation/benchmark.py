@@ -128,6 +128,23 @@ def format_table(summary) -> str:
     return "\n".join(lines)
 
 
+def format_markdown(rows) -> str:
+    """Every case x method: worst error (time per position) per way, as a markdown table."""
+    cases = list(dict.fromkeys(r["case"] for r in rows))
+    lines = ["| case | method | listing | per position | array |", "|---|---|---|---|---|"]
+    for case in cases:
+        members = [r for r in rows if r["case"] == case and "tol=" not in r["method"]]
+        for method in dict.fromkeys(r["method"] for r in members):
+            cells = {}
+            for r in (m for m in members if m["method"] == method):
+                if r["status"] == "ok":
+                    cells[r["way"]] = f"{r['worst_error']:.1e} ({r['seconds_per_position'] * 1e6:.1f} us)"
+                else:
+                    cells[r["way"]] = f"{r['status']}: {r['detail']}"
+            lines.append(f"| {case} | {method} | " + " | ".join(cells.get(w, "–") for w in WAYS) + " |")
+    return "\n".join(lines) + "\n"
+
+
 def draw_chart(summary, newton_summary, path_stem: Path) -> list[Path]:
     """Time per position (log) against worst error (log), a panel per linkage: PNG and SVG.
 

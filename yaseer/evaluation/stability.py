@@ -91,6 +91,26 @@ def format_table(summary) -> str:
     return "\n".join(lines)
 
 
+def format_markdown(summary) -> str:
+    """The summary as a markdown table (docs/stability.md pastes it)."""
+    def number(value):
+        return f"{value:.1e}" if math.isfinite(value) else "–"
+
+    def clean(value):
+        if value <= min(d for d in (10.0 ** -k for k in range(1, 13))):
+            return "all"
+        return "none" if math.isinf(value) else f"{value:g}"
+
+    lines = ["| sweep | method | positions | velocities | accelerations | NaN | error raised | wrong branch "
+             "| silent > 1e-6 | clean down to (deg) | at the singular configuration |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for s in summary:
+        lines.append(f"| {s['family']} | {s['method']} | {number(s['worst_position'])} | {number(s['worst_velocity'])} "
+                     f"| {number(s['worst_acceleration'])} | {s['nan']} | {s['exception']} | {s['wrong_branch']} "
+                     f"| {s['silent_wrong']} | {clean(s['closest_silent_free_deg'])} | {s['at_singularity']} |")
+    return "\n".join(lines) + "\n"
+
+
 def draw_chart(points, path_stem: Path) -> list[Path]:
     """Error against distance from the singularity, one panel per group, a line per method."""
     import matplotlib
@@ -151,4 +171,5 @@ def draw_chart(points, path_stem: Path) -> list[Path]:
 def write_all(out: Path, points, summary) -> list[Path]:
     write_csv(out / "stability_points.csv", points, POINT_FIELDS)
     write_csv(out / "stability.csv", summary, list(summary[0]))
-    return [out / "stability_points.csv", out / "stability.csv"]
+    (out / "stability_table.md").write_text(format_markdown(summary))
+    return [out / "stability_points.csv", out / "stability.csv", out / "stability_table.md"]
