@@ -207,3 +207,12 @@ def test_a_paper_listing_loads_and_runs(terminal):
     angles = [float(re.match(r"\s*(\d+\.\d*)", row).group(1)) for row in rows]
     assert angles == pytest.approx([0.1 + 20 * k for k in range(19)], abs=0.006)
     terminal.close()
+
+
+def test_input_reads_the_answer_typed_at_the_terminal(terminal):
+    terminal.type('10 INPUT "VALUE"; A: PRINT A * 2')
+    terminal.child.send("RUN\r")
+    terminal.child.expect("VALUE")
+    terminal.child.send("21\r")
+    assert plain(terminal.wait()).endswith("? 21\n 42 \n")
+    terminal.close()
