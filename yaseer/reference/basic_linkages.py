@@ -1,11 +1,13 @@
-"""Al-Yaseer's basic linkages with rigid cranks, in the contract's conventions, as real bodies.
+"""Al-Yaseer's basic linkages in the contract's conventions, as real bodies and joints.
 
 Independent references for Programs 1, 2 and 3 (shared/spec/programs.md): each
 linkage is built from bodies, pins and sliders and solved by
 :mod:`yaseer.reference.solver`; nothing here uses yaseer.linkages.  Each
 function takes crank angles (degrees; solved one by one by Newton from a rough
 sketch on the requested branch, so positions that do not assemble raise
-MechanismError), the crank's rate and acceleration (rad/s, rad/s^2, ccw +),
+MechanismError), the crank's rate and acceleration (rad/s, rad/s^2, ccw +;
+numbers or one per angle), optionally a flexible crank's length rates (the
+contract's D and E; the pin then slides along the crank at a driven distance),
 and returns a dict of numpy arrays, or of lists of mpf with
 ``number="mpmath"`` (``dps`` digits).  Angles out are degrees in (-180, 180].
 
