@@ -155,3 +155,48 @@ def test_virtual_link_rates_match_differences(method):
     rate, accel = central(*[k.length for k in samples])
     assert_close(link.length_rate, rate, 1.0, tolerance)
     assert_close(link.length_accel, accel, 10.0, tolerance)
+
+
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+
+@settings(max_examples=40, deadline=None)
+@given(ground_fraction=st.floats(0.05, 0.95), ground_angle=st.floats(-180, 180), crank=st.floats(0.05, 0.3),
+       coupler=st.floats(1.0, 2.0), follower=st.floats(1.0, 2.0), start=st.floats(0, 360),
+       omega=st.floats(-5, 5), alpha=st.floats(-5, 5), rate=st.floats(-1, 1), accel=st.floats(-1, 1),
+       branch=st.sampled_from([1, -1]))
+def test_fourbar_rates_match_differences_for_random_linkages(ground_fraction, ground_angle, crank, coupler, follower,
+                                                             start, omega, alpha, rate, accel, branch):
+    # a short crank and a ground between |b - c| + a and b + c - a: it assembles at every crank
+    # angle and stays away from toggles
+    shortest, longest = abs(coupler - follower) + crank + 0.05, coupler + follower - crank - 0.05
+    ground = shortest + ground_fraction * (longest - shortest)
+    t = np.array([-STEP, 0.0, STEP])
+    theta = start + np.degrees(omega * t + alpha * t**2 / 2)
+    length = crank + rate * t + accel * t**2 / 2
+    positions = fourbar(ground, ground_angle, length, coupler, follower, theta, branch=branch)
+    moving = fourbar(ground, ground_angle, crank, coupler, follower, start, omega, alpha, crank_length_rate=rate,
+                     crank_length_accel=accel, branch=branch)
+    velocity, acceleration = central(*positions.pin_b.pos)
+    assert abs(moving.pin_b.vel - velocity) < 1e-5 * (1 + abs(velocity))
+    assert abs(moving.pin_b.acc - acceleration) < 1e-3 * (1 + abs(acceleration))
+
+
+@settings(max_examples=40, deadline=None)
+@given(eccentricity=st.floats(-1, 1), crank=st.floats(0.1, 1.0), rod=st.floats(2.5, 5.0), axis=st.floats(-180, 180),
+       start=st.floats(0, 360), omega=st.floats(-5, 5), alpha=st.floats(-5, 5), rate=st.floats(-1, 1),
+       accel=st.floats(-1, 1))
+def test_slider_crank_rates_match_differences_for_random_linkages(eccentricity, crank, rod, axis, start, omega, alpha,
+                                                                  rate, accel):
+    t = np.array([-STEP, 0.0, STEP])
+    theta = start + np.degrees(omega * t + alpha * t**2 / 2)
+    length = crank + rate * t + accel * t**2 / 2
+    positions = slider_crank(eccentricity, length, rod, theta, axis_deg=axis)
+    moving = slider_crank(eccentricity, crank, rod, start, omega, alpha, crank_length_rate=rate,
+                          crank_length_accel=accel, axis_deg=axis)
+    velocity, acceleration = central(*positions.pin_b.pos)
+    assert abs(moving.pin_b.vel - velocity) < 1e-5 * (1 + abs(velocity))
+    assert abs(moving.pin_b.acc - acceleration) < 1e-3 * (1 + abs(acceleration))
+    rod_rate, rod_accel = central(*angle_samples(*positions.rod.angle))
+    assert abs(moving.rod.omega - rod_rate) < 1e-5 * (1 + abs(rod_rate))
+    assert abs(moving.rod.alpha - rod_accel) < 1e-3 * (1 + abs(rod_accel))
