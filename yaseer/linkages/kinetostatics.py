@@ -100,12 +100,12 @@ def _rows(bodies: list[Body]) -> dict[str, int]:
     return rows
 
 
-def _add(matrix_or_rhs, index, value, shape) -> None:
+def _add(matrix_or_rhs, index, value) -> None:
     """Add ``value`` (broadcast over the positions) to one equation entry.
 
     The arrays are laid out equations-first, (rows, [columns,] *positions), so
     each entry is a contiguous vector over the positions."""
-    matrix_or_rhs[index] += np.broadcast_to(value, shape)
+    matrix_or_rhs[index] += value
 
 
 def solve_kinetostatics(
@@ -139,17 +139,17 @@ def solve_kinetostatics(
             body = by_name[body_name]
             fx, fy, moment = _effect(direction, point, body.centre.pos)
             row = rows[body_name]
-            _add(matrix, (row, column), sign * fx, shape)
-            _add(matrix, (row + 1, column), sign * fy, shape)
+            _add(matrix, (row, column), sign * fx)
+            _add(matrix, (row + 1, column), sign * fy)
             if not body.particle:
-                _add(matrix, (row + 2, column), sign * moment, shape)
+                _add(matrix, (row + 2, column), sign * moment)
     for body in bodies:
         row = rows[body.name]
         inertial = body.mass * body.centre.acc
-        _add(rhs, (row,), inertial.real, shape)
-        _add(rhs, (row + 1,), inertial.imag + body.mass * gravity, shape)
+        _add(rhs, (row,), inertial.real)
+        _add(rhs, (row + 1,), inertial.imag + body.mass * gravity)
         if not body.particle:
-            _add(rhs, (row + 2,), body.inertia * body.alpha, shape)
+            _add(rhs, (row + 2,), body.inertia * body.alpha)
     for name, load in loads.items():
         value = values.get(name, 0.0)
         if name == unknown or not np.any(value):
@@ -157,10 +157,10 @@ def solve_kinetostatics(
         body = by_name[load.body]
         fx, fy, moment = _effect(load.direction, load.point, body.centre.pos)
         row = rows[load.body]
-        _add(rhs, (row,), -value * fx, shape)
-        _add(rhs, (row + 1,), -value * fy, shape)
+        _add(rhs, (row,), -value * fx)
+        _add(rhs, (row + 1,), -value * fy)
         if not body.particle:
-            _add(rhs, (row + 2,), -value * moment, shape)
+            _add(rhs, (row + 2,), -value * moment)
     solution = _solve(matrix, rhs)
     return _unpack(joints, solution), solution[..., -1]
 
