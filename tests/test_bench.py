@@ -188,3 +188,25 @@ def test_bench_command_quick(tmp_path, capsys):
     assert levels == {"positions", "+ velocities and accelerations", "+ forces"}
     for name in ("bench.png", "bench.svg", "bench_summary.csv", "bench_newton.csv"):
         assert (tmp_path / name).stat().st_size > 0
+
+
+def test_yaseer_run_selects_the_methods_by_name(tmp_path, capsys):
+    """``--method 2=NAME`` reaches the alternative methods; a position that cannot be
+    assembled is a BASIC error naming the program and the line, whatever the method."""
+    from yaseer.cli import main
+
+    listing = tmp_path / "fourbar.bas"
+    listing.write_text(cases.SEED003_CROSSED.listing(np.array([0.0, 30.0])))
+    results = {}
+    for method in ("closed", "half-angle", "half-angle-printed", "newton"):
+        assert main(["run", str(listing), "--format", "csv", "--method", f"2={method}"]) == 0
+        results[method] = capsys.readouterr().out
+    rows = {m: [[float(v) for v in line.split(",")] for line in out.split()] for m, out in results.items()}
+    for method in ("half-angle", "half-angle-printed", "newton"):
+        assert np.allclose(rows[method], rows["closed"], rtol=1e-12, atol=1e-12)
+    bad = tmp_path / "bad.bas"
+    bad.write_text(cases.SEED003_CROSSED.listing(np.array([150.0])))
+    for method in ("half-angle", "newton"):
+        assert main(["run", str(bad), "--method", f"2={method}"]) == 1
+        error = capsys.readouterr().err
+        assert "cannot" in error and "(PROG 2) in 20" in error

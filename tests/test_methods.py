@@ -233,10 +233,12 @@ def test_cannot_assemble_is_an_assembly_error():
         fourbar(60.0, 0.0, 30.0, 36.0, 36.0, 150.0, 1.0, method="half-angle")
 
 
-def test_newton_does_not_return_when_it_cannot_close_the_loop():
-    """Seed 003's linkage at 150 deg cannot be assembled: Newton stops at its cap."""
-    with pytest.raises(NoConvergenceError):
-        fourbar(60.0, 0.0, 30.0, 36.0, 36.0, 150.0, 1.0, method="newton", max_iter=30)
+def test_newton_recognises_a_position_that_cannot_be_assembled():
+    """Seed 003's linkage at 150 deg cannot be assembled (|A - Bo| > b + c)."""
+    with pytest.raises(AssemblyError):
+        fourbar(60.0, 0.0, 30.0, 36.0, 36.0, 150.0, 1.0, method="newton")
+    with pytest.raises(AssemblyError):
+        slider_crank(0.0, 2.0, 1.0, 90.0, 1.0, method="newton")
 
 
 def test_newton_tolerance_and_iteration_cap_are_parameters():

@@ -28,7 +28,14 @@ from yaseer.linkages.slider_crank import SliderCrank
 
 
 class NoConvergenceError(LinkageError):
-    """An iterative method stopped at its iteration cap (or met a singular Jacobian)."""
+    """An iterative method stopped at its iteration cap (or met a singular Jacobian).
+
+    ``index`` is the flat index of the first such position of an array call.
+    """
+
+    def __init__(self, message: str, index: int | None = None):
+        super().__init__(message)
+        self.index = index
 
 
 class CrankInput:

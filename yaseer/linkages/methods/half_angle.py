@@ -11,21 +11,22 @@ t = tan(phi/2), the quadratic AA*t^2 + BB*t + CC = 0 with (Fortran listing of 00
 
 Two forms:
 
-* :func:`fourbar_printed` is the listing as printed: t = (-BB +/- sqrt(BB^2 - 4*AA*CC))/(2*AA),
+* ``half-angle-printed`` (:func:`fourbar_half_angle_printed`) is the listing as printed: t = (-BB +/- sqrt(BB^2 - 4*AA*CC))/(2*AA),
   phi = 2*ATAN(t), and the coupler from BET = ASIN((c*sin(phi) - a*sin(theta))/b).
   The quadratic formula cancels catastrophically for the root that stays finite
   as AA -> 0 (phi near 180 deg on the other root) and divides by zero at AA = 0;
   ASIN returns only |beta| <= 90 deg, the wrong coupler when it points back
   towards Ao; near |beta| = 90 deg it loses half the digits.  Nothing is checked:
   those are findings for ``yaseer stability``, reported as they fall.
-* :func:`fourbar_stable` is the cancellation-free form: q = -(BB + sign(BB)*sqrt(D))/2,
+* ``half-angle`` (:func:`fourbar_half_angle`) is the cancellation-free form: q = -(BB + sign(BB)*sqrt(D))/2,
   the roots q/AA and CC/q taken as half-angles with atan2 (no division at all),
-  and the coupler from atan2 of B - A.  It raises LinkageError where the
+  and the coupler from the angle of B - A.  It raises AssemblyError where the
   discriminant is negative (cannot be assembled).
 
 Both compute the two roots and keep the one on the side of A->Bo the
-contract's assembly mode asks for (uncrossed: B left of A->Bo) and take the rates from the differentiated loop equations (the rate
-formulas printed in 003 carry sign errors that are not a matter of numerics).
+contract's assembly mode asks for (uncrossed: B left of A->Bo), and take the
+rates from the differentiated loop equations (the rate formulas printed in 003
+carry sign errors that are not a matter of numerics; issue 6 documents them).
 """
 
 from __future__ import annotations

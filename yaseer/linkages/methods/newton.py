@@ -6,7 +6,9 @@ accelerations then come from the differentiated loop equations.  ``tol`` is the
 size of the last Newton step at which the iteration stops (radians; the slider
 travel is scaled by the rod length), ``max_iter`` the iteration cap.  Not
 converging within the cap, or a singular Jacobian, raises
-:class:`NoConvergenceError`; nothing is returned silently.  What Newton cannot
+:class:`NoConvergenceError` (a position that cannot be assembled at all is
+recognised first, from the link lengths, and raises AssemblyError); nothing is
+returned silently.  What Newton cannot
 promise is the branch: from a poor guess near a toggle it may converge to the
 other assembly, silently (``yaseer stability`` counts those).
 
@@ -45,6 +47,8 @@ def slider_crank_newton(eccentricity, crank_length, rod_length, crank_angle_deg,
     phi = np.radians(np.asarray(axis_deg, float))
     axis = np.exp(1j * phi)
     pin = crank.pin.pos
+    if np.any(np.abs(e + (pin * axis.conjugate()).imag) > b):
+        raise AssemblyError("Newton (slider-crank): the rod cannot reach the cylinder axis")
     if guess is None:
         beta, s = phi + 0.0 * pin.real, (pin * axis.conjugate()).real + b
     else:
@@ -76,6 +80,9 @@ def fourbar_newton(ground_length, ground_angle_deg, crank_length, coupler_length
     if np.any(b <= 0) or np.any(c <= 0):
         raise AssemblyError("coupler or follower of zero length")
     pin = crank.pin.pos
+    span = np.abs(pivot.pos - pin)
+    if np.any(span > b + c) or np.any(span < np.abs(b - c)):
+        raise AssemblyError("Newton (four-bar): the coupler and follower cannot meet")
     if guess is None:
         middle = (pin + pivot.pos) / 2
         with np.errstate(all="ignore"):
