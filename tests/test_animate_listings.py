@@ -125,3 +125,23 @@ def test_example_3_slotted_follower_keeps_one_length_through_the_cycle():
         lengths.add(round(distance(follower.start, follower.end), 9))
         assert distance(follower.start, block.centre) < distance(follower.start, follower.end)
     assert len(lengths) == 1
+
+
+def test_a_run_that_breaks_part_way_is_drawn_up_to_the_break(tmp_path, monkeypatch, capsys):
+    """A slider-crank whose offset grows until the rod cannot reach its axis (at 60 degrees)."""
+    from PIL import Image
+
+    from yaseer.cli import main
+
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "short.bas").write_text(
+        "10 L(1) = 0: L(2) = 2: L(3) = 5: T(4) = 0: R(4) = 1: H(4) = 180\n"
+        "20 FOR QQ = 0 TO 90 STEP 10: L(1) = QQ / 15: T(2) = QQ: GOSUB PROG 1: PRINT QQ; X(2): NEXT QQ\n")
+    # B exists while the rod reaches the axis: e + (pin height) = QQ/15 + 2 sin(QQ) <= 5 (up to QQ = 50)
+    frames_before = [qq for qq in range(0, 91, 10) if (qq / 15 + 2 * math.sin(math.radians(qq))) <= 5]
+    assert main(["animate", "short.bas"]) == 1
+    shown = capsys.readouterr()
+    assert shown.out == f"short.gif: {len(frames_before)} frames\n"
+    assert shown.err.endswith("cannot be assembled (PROG 1) in 20 (the animation stops there)\n")
+    with Image.open(tmp_path / "short.gif") as image:
+        assert image.n_frames == len(frames_before)

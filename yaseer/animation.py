@@ -295,17 +295,29 @@ class LineTap:
         return False
 
 
-def record_listing(text: str, methods: dict[int, str] | None = None, progress_file=None) -> list[Frame]:
-    """Run the listing ``text`` once and return its frames (see :class:`Recorder`).
+@dataclass
+class Recording:
+    """The frames of one run and the BASIC error that stopped it (None: it ran to its end)."""
 
-    PRINT and LPRINT output both close frames.  A progress counter of frames
-    appears on stderr if the run takes more than a second.  BASIC errors
-    propagate as :class:`~yaseer.basic.errors.BasicError`.
+    frames: list[Frame]
+    error: Exception | None = None
+
+
+def record_run(text: str, methods: dict[int, str] | None = None, progress_file=None) -> Recording:
+    """Run the listing ``text`` once, recording its frames (see :class:`Recorder`).
+
+    PRINT and LPRINT output both close frames.  A BASIC error (syntax, run
+    time, a mechanism that cannot be assembled) ends the run: the frames
+    recorded before it are kept with the error, so the animation can show the
+    mechanism up to where the method broke.  A progress counter of printed
+    lines appears on stderr if the run takes more than a second.
     """
+    from yaseer.basic.errors import BasicError
     from yaseer.progress import bar
     from yaseer.session import create_machine
 
     recorder = Recorder()
+    error = None
     with bar(None, "running", "line", file=progress_file) as progress:
 
         def on_line(line: str) -> None:
@@ -319,11 +331,22 @@ def record_listing(text: str, methods: dict[int, str] | None = None, progress_fi
 
             binding.install(AreaInterceptor(machine, recorder), chosen)
 
-        machine = create_machine(tap, tap, methods, install)
-        machine.load(text)
-        machine.run()
+        try:
+            machine = create_machine(tap, tap, methods, install)
+            machine.load(text)
+            machine.run()
+        except BasicError as stopped:
+            error = stopped
         tap.close_line()
-    return recorder.finish()
+    return Recording(recorder.finish(), error)
+
+
+def record_listing(text: str, methods: dict[int, str] | None = None, progress_file=None) -> list[Frame]:
+    """The frames of a run that must complete: as :func:`record_run`, raising its BASIC error."""
+    recording = record_run(text, methods, progress_file)
+    if recording.error is not None:
+        raise recording.error
+    return recording.frames
 
 
 # --- assembling frames ------------------------------------------------------------

@@ -4,7 +4,8 @@ The listing runs once on the BASIC machine with the library programs bound as
 for ``yaseer run``; every ``GOSUB PROG n`` is recorded (see
 ``yaseer.animation``) and each printed line closes a frame.  The listing's own
 output is not shown (it is the caption of each frame); errors are BASIC error
-lines on stderr with exit status 1.
+lines on stderr with exit status 1 — a run that fails part-way is still drawn
+up to the failure.
 """
 
 from __future__ import annotations
@@ -27,8 +28,12 @@ def add_arguments(parser) -> None:
 
 
 def main(args) -> int:
-    """Record the run, render it; 0 on success, 1 with a one-line error otherwise."""
-    from yaseer.animation import AnimationError, record_listing, render
+    """Record the run, render it; 0 on success, 1 with a one-line error otherwise.
+
+    A run stopped by a BASIC error after some frames is still drawn up to the
+    error (the error line goes to stderr and the status is 1).
+    """
+    from yaseer.animation import AnimationError, record_run, render
     from yaseer.basic.errors import BasicError
 
     listing = Path(args.file)
@@ -36,8 +41,10 @@ def main(args) -> int:
     try:
         methods = parse_methods(args.method)
         text = listing.read_text(encoding="utf-8", errors="replace")
-        frames = record_listing(text, methods)
-        count = render(frames, out, title=args.title if args.title is not None else listing.name,
+        recording = record_run(text, methods)
+        if recording.error is not None and not recording.frames:
+            raise recording.error
+        count = render(recording.frames, out, title=args.title if args.title is not None else listing.name,
                        fps=args.fps, frame_number=args.frame, max_frames=args.max_frames)
     except FileNotFoundError as error:
         print(f"File not found: {error.filename or listing}", file=sys.stderr)
@@ -49,6 +56,9 @@ def main(args) -> int:
         print(error, file=sys.stderr)
         return 1
     print(f"{out}: {count} frame{'s' if count != 1 else ''}")
+    if recording.error is not None:
+        print(f"{recording.error} (the animation stops there)", file=sys.stderr)
+        return 1
     return 0
 
 
