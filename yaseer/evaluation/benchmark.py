@@ -190,11 +190,18 @@ def draw_chart(summary, newton_summary, path_stem: Path) -> list[Path]:
         axis.set_title(linkage.replace("_", " "))
         axis.grid(True, which="major", alpha=0.3)
     figure.suptitle("yaseer bench: speed against accuracy per method and way of running", fontsize=10)
+    return save_figure(figure, path_stem, dpi=110)
+
+
+def save_figure(figure, path_stem: Path, dpi: int) -> list[Path]:
+    """Write ``figure`` as PNG and SVG next to each other, close it, return the paths."""
+    import matplotlib.pyplot as plt
+
     figure.tight_layout()
     paths = []
     for suffix in (".png", ".svg"):
         path = path_stem.with_suffix(suffix)
-        figure.savefig(path, dpi=110)
+        figure.savefig(path, dpi=dpi)
         paths.append(path)
     plt.close(figure)
     return paths

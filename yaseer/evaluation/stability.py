@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from .benchmark import methods_of, write_csv
+from .benchmark import methods_of, save_figure, write_csv
 from .sweeps import all_sweeps, evaluate
 
 SILENT = 1e-6
@@ -158,14 +158,7 @@ def draw_chart(points, path_stem: Path) -> list[Path]:
         axis.set_visible(False)
     figure.suptitle("yaseer stability: solid = positions and velocities, dashed = accelerations (drawn at most 1e3); "
                     "above: + unverifiable, x exception, v NaN/inf, diamond wrong branch; dotted line 1e-6", fontsize=10)
-    figure.tight_layout()
-    paths = []
-    for suffix in (".png", ".svg"):
-        path = path_stem.with_suffix(suffix)
-        figure.savefig(path, dpi=100)
-        paths.append(path)
-    plt.close(figure)
-    return paths
+    return save_figure(figure, path_stem, dpi=100)
 
 
 def write_all(out: Path, points, summary) -> list[Path]:
