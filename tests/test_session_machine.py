@@ -96,3 +96,10 @@ def test_whatever_is_typed_the_session_answers_with_basic_messages(tmp_path_fact
     for line in typed:
         session.handle(line)  # never raises
     assert not any("Internal error" in text or "Traceback" in text for text in shown)
+
+
+def test_run_file_loads_it_into_prog_0_and_runs_it(session, tmp_path):
+    (tmp_path / "two.bas").write_text("10 PRINT 1 + 1\n")
+    after(session, "PROG 3")
+    assert after(session, 'RUN "two"') == " 2 \n"
+    assert after(session, "PROG 0", "LIST") == "10 PRINT 1 + 1\n"

@@ -341,7 +341,13 @@ class Session:
             raise BasicError("Path/File access error", PATH_FILE_ACCESS_ERROR) from None
 
     def command_run(self, argument: str) -> None:
-        """RUN [line]: fresh variables, then run PROG 0 from its start (or ``line``)."""
+        """RUN [line] or RUN "file": fresh variables, then run PROG 0 from its start (or ``line``).
+
+        ``RUN "file"`` loads the file into PROG 0 first (whatever area is being edited).
+        """
+        if argument.startswith('"'):
+            self.programs[0] = read_listing_file(file_name_argument(argument), self.directory)
+            argument = ""
         if argument and not argument.isdigit():
             raise BasicError("Syntax error", SYNTAX_ERROR)
         start = int(argument) if argument else None
