@@ -145,3 +145,15 @@ def test_a_run_that_breaks_part_way_is_drawn_up_to_the_break(tmp_path, monkeypat
     assert shown.err.endswith("cannot be assembled (PROG 1) in 20 (the animation stops there)\n")
     with Image.open(tmp_path / "short.gif") as image:
         assert image.n_frames == len(frames_before)
+
+
+def test_a_listing_that_dims_an_input_array_small_still_animates():
+    """With DIM T(3), T(4) (the cylinder axis) reads as 0 for Program 1 and for the recorder alike."""
+    frames = record_listing(
+        "5 DIM T(3)\n"
+        "10 L(1) = 1: L(2) = 2: L(3) = 6: R(4) = 1: H(4) = 180\n"
+        "20 FOR QQ = 0 TO 90 STEP 30: T(2) = QQ: GOSUB PROG 1: PRINT QQ; X(2): NEXT QQ\n")
+    assert len(frames) == 4
+    for frame in frames:
+        (slider,) = frame.snapshots[0].sliders
+        assert slider.angle_deg == 0.0 and slider.centre[1] == pytest.approx(-1.0)  # axis y = -e

@@ -118,8 +118,24 @@ class Frame:
 # --- reading a call's geometry back from the machine ------------------------------
 
 
-def _arrays(machine, *names: str) -> list[list[float]]:
-    return [machine.array(name) for name in names]
+class _Elements:
+    """Read-only view of a machine array: an element the listing's DIM left out reads as 0.
+
+    (The recorder must never turn a listing's own ``DIM X(3)`` into an error.)
+    """
+
+    def __init__(self, values) -> None:
+        self._values = values
+
+    def __getitem__(self, index: int) -> float:
+        try:
+            return float(self._values[index])
+        except (IndexError, TypeError, ValueError):
+            return 0.0
+
+
+def _arrays(machine, *names: str) -> list[_Elements]:
+    return [_Elements(machine.array(name)) for name in names]
 
 
 def snapshot_slider_crank(machine) -> Snapshot:
