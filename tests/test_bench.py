@@ -210,3 +210,16 @@ def test_yaseer_run_selects_the_methods_by_name(tmp_path, capsys):
         assert main(["run", str(bad), "--method", f"2={method}"]) == 1
         error = capsys.readouterr().err
         assert "cannot" in error and "(PROG 2) in 20" in error
+
+
+@pytest.mark.parametrize("method", ["polar", "paper"])
+def test_reported_virtual_link_error_is_the_independent_error(method):
+    case = cases.ELLIPSE_CASE
+    angles = case.quick
+    run = ways.run_python(case, method, angles, "array", repeat=1)
+    values = case.compute({"virtual_link": method}, angles, {})
+    points = np.array(cases.ellipse_point(angles)).T
+    with mpmath.workdps(50):
+        closed = [[polar_closed_form(*p)[name] for name in case.columns] for p in points]
+    expected = independent_worst(values, case.columns, case.angle_columns, closed)
+    assert run.outcome.worst == pytest.approx(expected, rel=1e-6)

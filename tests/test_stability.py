@@ -115,3 +115,29 @@ def test_limits_are_where_the_formulas_say():
     assert abs(math.hypot(30 * math.cos(limit) - 60, 30 * math.sin(limit)) - 72) < 1e-12
     pole = math.radians(sweeps.seed003_half_angle_pole_deg())
     assert abs(2250 - 30 * 24 * math.cos(pole) - 2160) < 1e-10
+
+
+@mpmath.workdps(50)
+def test_reported_sweep_errors_are_the_independent_errors():
+    """PROG 5 "paper" next to T = 90: each position's error, recomputed from the polar
+    closed form in mpmath with the sweep's normalisation (largest |value| per quantity)."""
+    from yaseer.linkages import virtual_link
+
+    sweep = SWEEPS["PROG 5 near T = 90"]
+    references = [polar_closed_form(p["x"], p["y"], 3.0, -4.0, -50.0, 20.0) for _, p in sweep.positions]
+    scale = {name: max(abs(r[name]) for r in references) for name in references[0]}
+    scale["T"] = 1
+    for point, (_, p), reference in zip(evaluate(sweep, "paper"), sweep.positions, references):
+        if point.status == "exception":
+            assert p["x"] == 0.0
+            continue
+        r = virtual_link(p["x"], p["y"], 3.0, -4.0, -50.0, 20.0, method="paper")
+        got = {"T": r.angle_deg, "L": r.length, "D(5)": r.angle_rate, "E(5)": r.angle_accel,
+               "D(6)": r.length_rate, "E(6)": r.length_accel}
+        worst = 0
+        for name, value in got.items():
+            difference = mpmath.mpf(float(value)) - reference[name]
+            if name == "T":
+                difference = mpmath.radians((difference + 180) % 360 - 180)
+            worst = max(worst, abs(difference) / scale[name])
+        assert point.error == pytest.approx(float(worst), rel=1e-6, abs=1e-30)
