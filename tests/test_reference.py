@@ -626,3 +626,33 @@ def test_length_driver_needs_its_values():
     model = slider_crank_model(0, FlexibleCrank(3.0, 1.0, 0.0), 8.0)
     with pytest.raises(ValueError, match="no values given"):
         model.analyse([10.0], 1, 0, model.coordinates({"crank": (0, 0, 10), "rod": (3, 0.5, 0)}))
+
+
+@pytest.mark.parametrize("q", [1, 2, 3, 4])
+def test_program1_reference_unknown_load_balances_the_energy(q):
+    """With the unknown load found, the drive does no work: dT/dt (central differences of the
+    kinetic energy) = power of all loads, the unknown one and gravity included."""
+    from yaseer.reference.basic_linkages import FlexibleCrank, program1_model
+
+    inputs = {"L(1)": 0.01, "T(4)": 20, "L(2)": 0.021, "L(3)": 0.06, "R(1)": 0.02, "H(1)": 45,
+              "R(2)": 0.01, "H(2)": 30, "R(3)": 0.015, "H(3)": -20, "R(4)": 0.01, "H(4)": 150,
+              "M(2)": 2, "M(3)": 3, "M(4)": 1.5, "I(2)": 0.1, "I(3)": 0.2, "F(0)": 5, "F(1)": -3, "F(7)": 2,
+              "F(8)": 1, "F(2)": 4, "F(9)": -6, "U(1)": 0.7, "P(1)": 12, "G": 9.81, "Z(1)": 2, "Q(1)": q}
+    model = program1_model(inputs, FlexibleCrank(0.021))
+    w, h, theta = -8.0, 1e-4, 130.0
+    sketch = model.coordinates({"crank": (0, 0, theta), "rod": (0.05, 0.03, 200), "piston": (0.05, 0.03, 0)})
+    before, here, after = model.analyse([theta - math.degrees(h), theta, theta + math.degrees(h)], w, 0,
+                                        sketch, level="forces")
+    assert abs(here.driver_torque("crank")) < 1e-12
+    assert here.unknown_value != 0
+    energy_rate = w * (after.kinetic_energy() - before.kinetic_energy()) / (2 * h)
+    assert here.power_of_loads() == pytest.approx(energy_rate, rel=1e-6)
+
+
+def test_program1_reference_refuses_an_unknown_that_cannot_balance():
+    """An unknown perpendicular force at R = 0 on the crank has no moment: a clear error."""
+    with pytest.raises(MechanismError, match="cannot balance"):
+        basic_linkages.program1({"L(2)": 2, "L(3)": 6, "T(4)": 0, "W(2)": 1, "Z(1)": 2, "Q(1)": 2,
+                                 "U(1)": 1.0}, [40.0])
+    with pytest.raises(ValueError, match="Q\\(1\\)"):
+        basic_linkages.program1({"L(2)": 2, "L(3)": 6, "Z(1)": 2, "Q(1)": 7}, [40.0])

@@ -149,3 +149,46 @@ def test_other_kinematic_outputs_match_the_real_mechanism(n, tmp_path):
     assert model.shape == printed[:, 1:].shape
     error = np.abs(printed[:, 1:] - model) / np.abs(model).max(axis=0)
     assert error.max() < 1e-11, error.max(axis=0)
+
+
+# --------------------------------------------------------------------------- Program 1 in full
+
+PROGRAM1_INPUTS = {
+    "L(1)": 0.01, "T(4)": 20, "L(2)": 0.021, "L(3)": 0.06, "W(2)": -8, "A(2)": 3, "D(0)": 0.05, "E(0)": -0.4,
+    "R(1)": 0.02, "H(1)": 45, "R(2)": 0.01, "H(2)": 30, "R(3)": 0.015, "H(3)": -20, "R(4)": 0.01, "H(4)": 150,
+    "M(2)": 2, "M(3)": 3, "M(4)": 1.5, "I(2)": 0.1, "I(3)": 0.2, "F(0)": 5, "F(1)": -3, "F(7)": 2, "F(8)": 1,
+    "F(2)": 4, "F(9)": -6, "U(1)": 0.7, "P(1)": 12, "G": 9.81, "Z(1)": 2,
+}
+PROGRAM1_OUTPUTS = ("T(3)", "W(3)", "A(3)", "X(1)", "Y(1)", "V(1)", "V(2)", "A(33)", "A(34)", "A(10)", "A(11)",
+                    "X(2)", "Y(2)", "V(3)", "V(4)", "A(35)", "A(36)", "F(3)", "F(4)", "F(5)", "F(6)",
+                    "F(10)", "F(11)", "N(1)")
+
+
+@pytest.mark.parametrize("q", [1, 2, 3, 4])
+def test_program1_against_the_real_slider_crank(q, tmp_path):
+    """GOSUB PROG 1 with masses, gravity, every kind of known load, a flexible crank and each
+    Q(1), against basic_linkages.program1 (bodies, pins, a piston on its line, the unknown
+    load found with the Lagrange multipliers)."""
+    from yaseer.reference.basic_linkages import UNKNOWN_NAMES_1, program1
+
+    inputs = dict(PROGRAM1_INPUTS, **{"Q(1)": q})
+    angles = [10.0, 95.0, 200.0, 300.0]
+    names = (UNKNOWN_NAMES_1[q],) + PROGRAM1_OUTPUTS
+    setup = ": ".join(f"{name} = {value}" for name, value in inputs.items() if name != "G")
+    listing = tmp_path / "prog1.bas"
+    listing.write_text(f"10 G = {inputs['G']}: {setup}\n"
+                       f"20 FOR QQ = 1 TO {len(angles)}: READ T(2): GOSUB PROG 1\n"
+                       f"30 PRINT {'; '.join(names)}: {UNKNOWN_NAMES_1[q]} = {inputs[UNKNOWN_NAMES_1[q]]}: NEXT QQ\n"
+                       f"40 DATA {', '.join(str(a) for a in angles)}\n")
+    result = subprocess.run([sys.executable, "-m", "yaseer", "run", str(listing), "--format", "csv"],
+                            capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stderr
+    printed = np.array([[float(v) for v in row.split(",")] for row in result.stdout.strip().splitlines()])
+    model = program1(inputs, angles)
+    for k, name in enumerate(names):
+        expected = np.asarray(model[name], dtype=float)
+        if name == "T(3)":
+            gap = np.abs(np.remainder(printed[:, k] - expected + 180, 360) - 180)
+        else:
+            gap = np.abs(printed[:, k] - expected)
+        assert gap.max() <= 1e-10 * (np.abs(expected).max() + 1e-12), name

@@ -24,9 +24,9 @@ from __future__ import annotations
 import math
 
 from yaseer.reference.arithmetic import arithmetic_for
-from yaseer.reference.solver import (AngleDriver, AngleLock, Body, LengthDriver, Mechanism,
-                                     MechanismError, PointOnLine, Revolute, cross, dot,
-                                     normalise_degrees, polar)
+from yaseer.reference.solver import (AngleDriver, AngleLock, Body, Couple, LengthDriver, Mechanism,
+                                     MechanismError, PointLoad, PointOnLine, Revolute, UnknownLoad, cross,
+                                     dot, normalise_degrees, polar)
 
 
 def collect(rows: list[dict], number):
@@ -73,6 +73,10 @@ class FlexibleCrank:
 
     def at(self, k):
         return self.lengths[k], self.rates[k], self.accelerations[k]
+
+    def joint_names(self):
+        """The constraints that make the crank pin (their forces are the pin's force)."""
+        return ("pin",) if not self.flexible else ("pin", CRANK_LENGTH)
 
     def pin(self, crank_body, body, point):
         """The constraints at the crank pin joining ``body``'s ``point`` to the crank."""
@@ -286,3 +290,142 @@ def inverted_slider_crank(L6, T6, L7, thetas_deg, omega=0, alpha=0, crank_rate=0
         rows.append({"L(5)": length, "D(4)": rate, "E(4)": (dot(v, v) + dot(r, a) - rate * rate) / length,
                      "T(9)": s.angle("follower"), "W(4)": s.omega("follower"), "A(4)": s.alpha("follower")})
     return collect(rows, number)
+
+
+# --------------------------------------------------------------------------- Program 1 in full
+
+def _inputs(values: dict):
+    """A reader of the contract's inputs by name; missing ones are 0, as BASIC variables are."""
+    return lambda name: values.get(name, 0)
+
+
+def _perpendicular(body_name, h_deg):
+    """Direction u(body angle + H + 90): perpendicular to the line joint -> point of a body
+    whose frame's x axis is the line H is measured from (the contract's rule, R = 0 included)."""
+    def direction(s):
+        ar = s.ar
+        angle = s.q[3 * s.mechanism.body(body_name).index + 2] + ar.radians(ar.num(h_deg) + 90)
+        return (ar.cos(angle), ar.sin(angle))
+    return direction
+
+
+def _constant(fx, fy):
+    return lambda s: (fx, fy)
+
+
+def program1_model(values: dict, crank: FlexibleCrank) -> Mechanism:
+    """Program 1's slider-crank with masses and loads from the contract's inputs ``values``.
+
+    Crank frame: origin Ao, x along Ao->A.  Rod frame: origin B, x along B->A (points and
+    the mass centre are located from B).  Piston: a particle at B on the cylinder line,
+    its orientation locked.  Known loads: F(0),F(1) and the perpendicular F(2) at the
+    crank point, F(7),F(8) and F(9) at the rod point, U(1), P(1) (toward the crank);
+    Q(1) picks the unknown among U(1), F(2), F(9), P(1).
+    """
+    v = _inputs(values)
+    axis = v("T(4)")
+    crank_body = Body("crank", mass=v("M(2)"), inertia=v("I(2)"), centre=polar(v("R(2)"), v("H(2)")),
+                      points={"P": polar(v("R(1)"), v("H(1)"))})
+    rod = Body("rod", mass=v("M(3)"), inertia=v("I(3)"), centre=polar(v("R(3)"), v("H(3)")),
+               points={"B": (0, 0), "A": (v("L(3)"), 0), "P": polar(v("R(4)"), v("H(4)"))})
+    piston = Body("piston", mass=v("M(4)"), points={"B": (0, 0)})
+    toward_crank = lambda s: _scaled(_line_unit(s.ar, axis), -1)  # noqa: E731
+    known = {
+        1: Couple(crank_body, lambda s: v("U(1)")),
+        2: PointLoad(crank_body, "P", lambda s: _scaled(_perpendicular("crank", v("H(1)"))(s), v("F(2)"))),
+        3: PointLoad(rod, "P", lambda s: _scaled(_perpendicular("rod", v("H(4)"))(s), v("F(9)"))),
+        4: PointLoad(piston, "B", lambda s: _scaled(toward_crank(s), v("P(1)"))),
+    }
+    unknowns = {1: UnknownLoad(crank_body), 2: UnknownLoad(crank_body, "P", _perpendicular("crank", v("H(1)"))),
+                3: UnknownLoad(rod, "P", _perpendicular("rod", v("H(4)"))),
+                4: UnknownLoad(piston, "B", toward_crank)}
+    forces = v("Z(1)") == 2
+    q = int(v("Q(1)")) if forces else None
+    if forces and q not in unknowns:
+        raise ValueError(f"Q(1) must be 1, 2, 3 or 4, not {v('Q(1)')!r}")
+    loads = [PointLoad(crank_body, "P", _constant(v("F(0)"), v("F(1)"))),
+             PointLoad(rod, "P", _constant(v("F(7)"), v("F(8)")))]
+    loads += [load for k, load in known.items() if k != q]
+    return Mechanism([crank_body, rod, piston],
+                     [Revolute("Ao", crank_body, (0, 0), None, (0, 0)),
+                      *crank.pin(crank_body, rod, "A"),
+                      Revolute("B", rod, "B", piston, "B"),
+                      PointOnLine("wall", piston, "B", None, polar(v("L(1)"), _minus_90(axis)), axis),
+                      AngleLock("piston", piston, None, 0),
+                      AngleDriver("crank", crank_body)],
+                     loads, gravity=v("G"), unknown=unknowns.get(q))
+
+
+def _line_unit(ar, angle_deg):
+    angle = ar.radians(ar.num(angle_deg))
+    return (ar.cos(angle), ar.sin(angle))
+
+
+def _scaled(vector, factor):
+    return (vector[0] * factor, vector[1] * factor)
+
+
+UNKNOWN_NAMES_1 = {1: "U(1)", 2: "F(2)", 3: "F(9)", 4: "P(1)"}
+
+
+def program1(values: dict, thetas_deg=None, number="float", dps=50) -> dict:
+    """Program 1 in full (kinematics, and forces when Z(1) = 2) as a real mechanism.
+
+    ``values``: the contract's inputs by name ("L(1)", "T(2)", "W(2)", "M(3)", "Q(1)", "G",
+    ...; missing ones 0).  ``thetas_deg``: crank angles (default [T(2)]); W(2), A(2),
+    D(0), E(0) apply at every one.  B is ahead of A along u(T(4)).  Returns the
+    contract's outputs by name, each an array over the angles: T(3), W(3), A(3), the
+    crank point X(1), Y(1), V(1), V(2), A(33), A(34), the crank's mass-centre
+    acceleration A(10), A(11), the rod point X(2), Y(2), V(3), V(4), A(35), A(36); with
+    Z(1) = 2 the selected unknown, F(3), F(4), F(5), F(6), F(10), F(11), N(1).
+    """
+    v = _inputs(values)
+    thetas = [v("T(2)")] if thetas_deg is None else list(thetas_deg)
+    crank = FlexibleCrank(v("L(2)"), v("D(0)"), v("E(0)"), len(thetas))
+    mechanism = program1_model(values, crank)
+    forces = v("Z(1)") == 2
+    axis = float(v("T(4)"))
+
+    def sketch_at(theta, k):
+        length = float(crank.lengths[k])
+        pin = (length * _unit(theta)[0], length * _unit(theta)[1])
+        reach = float(v("L(3)"))
+        tip = (pin[0] + reach * _unit(axis)[0], pin[1] + reach * _unit(axis)[1])
+        return mechanism.coordinates({"crank": (0, 0, theta), "rod": (tip[0], tip[1], axis + 180),
+                                      "piston": (tip[0], tip[1], 0)})
+
+    def check(s):
+        run = [p - q for p, q in zip(s.position("rod", "B"), s.position("rod", "A"))]
+        if dot(run, _unit(axis)) <= 0:
+            raise MechanismError("PROG 1 reference: the piston left its assembly branch")
+
+    rows = []
+    for k, theta in enumerate(thetas):
+        drives = {CRANK_LENGTH: crank.at(k)} if crank.flexible else None
+        (s,) = mechanism.analyse([theta], v("W(2)"), v("A(2)"), sketch_at(float(theta), k), number=number,
+                                 dps=dps, branch_check=check, drives=drives,
+                                 level="forces" if forces else "accelerations")
+        rows.append(_program1_row(s, crank, forces, int(v("Q(1)")) if forces else None))
+    return collect(rows, number)
+
+
+def _program1_row(s, crank, forces, q):
+    row = {"T(3)": normalise_degrees(s.angle("rod") + 180, s.ar), "W(3)": s.omega("rod"), "A(3)": s.alpha("rod")}
+    row.update(_point_outputs(s, "crank", "P", ("X(1)", "Y(1)", "V(1)", "V(2)", "A(33)", "A(34)")))
+    centre = s.acceleration("crank", s.mechanism.body("crank").centre)
+    row["A(10)"], row["A(11)"] = centre
+    row.update(_point_outputs(s, "rod", "P", ("X(2)", "Y(2)", "V(3)", "V(4)", "A(35)", "A(36)")))
+    if forces:
+        row[UNKNOWN_NAMES_1[q]] = s.unknown_value
+        row["F(3)"], row["F(4)"] = s.reaction("Ao", "crank")
+        row["F(5)"], row["F(6)"] = s.force_on("rod", *crank.joint_names())
+        row["F(10)"], row["F(11)"] = s.reaction("B", "piston")
+        row["N(1)"] = s.normal_force("wall")
+    return row
+
+
+def _point_outputs(s, body, point, names):
+    x, y = s.position(body, point)
+    vx, vy = s.velocity(body, point)
+    ax, ay = s.acceleration(body, point)
+    return dict(zip(names, (x, y, vx, vy, ax, ay)))

@@ -434,3 +434,21 @@ class Couple:
 
     body: Body
     torque: Callable
+
+
+@dataclass
+class UnknownLoad:
+    """The one load of unknown size that balances the motion (the contract's Q(n) choice).
+
+    A force of magnitude X on ``body`` at ``point`` along the unit vector
+    ``direction(snapshot)``, or, with ``point=None``, a couple X on ``body``
+    (counter-clockwise positive).  With an UnknownLoad the crank's drive only
+    prescribes the motion: its torque is held at zero and X takes its place.
+    """
+
+    body: Body
+    point: object = None
+    direction: Callable | None = None
+
+    def __post_init__(self):
+        self.local = None if self.point is None else _resolve(self.body, self.point)

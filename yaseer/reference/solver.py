@@ -38,8 +38,8 @@ from typing import Sequence
 from yaseer.reference.arithmetic import FLOAT, SingularSystemError, arithmetic_for
 from yaseer.reference.elements import (  # noqa: F401  (the solver's public vocabulary)
     AngleDriver, AngleLock, Body, Couple, Drive, LengthDriver, LocalPoint, MechanismError, PointLoad,
-    PointOnLine, Revolute, _arms, _Kinematics, _resolve, cross, dot, normalise_degrees, perp, polar,
-    rotate, xy)
+    PointOnLine, Revolute, UnknownLoad, _arms, _Kinematics, _resolve, cross, dot, normalise_degrees,
+    perp, polar, rotate, xy)
 
 
 # --------------------------------------------------------------------------- the mechanism
@@ -54,7 +54,8 @@ class Mechanism:
     ``gravity`` is the acceleration of gravity, acting along -y on every mass.
     """
 
-    def __init__(self, bodies: Sequence[Body], constraints: Sequence, loads: Sequence = (), gravity=0):
+    def __init__(self, bodies: Sequence[Body], constraints: Sequence, loads: Sequence = (), gravity=0,
+                 unknown: UnknownLoad | None = None):
         self.bodies = {}
         for index, body in enumerate(bodies):
             body.index = index
@@ -66,6 +67,7 @@ class Mechanism:
             self.constraints[constraint.name] = constraint
         self.loads = list(loads)
         self.gravity = gravity
+        self.unknown = unknown
         self.size = 3 * len(self.bodies)
         equations = sum(c.size for c in self.constraints.values())
         if equations != self.size:
@@ -149,17 +151,53 @@ class Mechanism:
                                  "change point: the constraints alone do not fix the motion)") from exc
 
     def multipliers(self, snapshot):
-        """Forces: solve Phi_q^T lambda = Q_applied - Q_inertia (d'Alembert)."""
+        """Forces: solve Phi_q^T lambda = Q_applied - Q_inertia (d'Alembert).
+
+        With an UnknownLoad X: Phi_q^T lambda - X g = Q_applied - Q_inertia and the
+        crank drive's multiplier = 0 (g: the generalised force of the unit load);
+        X is stored as ``snapshot.unknown_value``.
+        """
         ar = snapshot.ar
         kin = snapshot.kin
-        jac = self._jacobian(kin)
-        transposed = [list(col) for col in zip(*jac)]
+        transposed = [list(col) for col in zip(*self._jacobian(kin))]
         rhs = self._applied(snapshot)
         for body in self.bodies.values():
             inertial = self._inertia_force(kin, body)
             for offset in range(3):
                 rhs[3 * body.index + offset] -= inertial[offset]
-        return self._solve(ar, transposed, rhs, "force")
+        if self.unknown is None:
+            return self._solve(ar, transposed, rhs, "force")
+        unit = self._unit_unknown(snapshot)
+        rows = [row + [-g] for row, g in zip(transposed, unit)]
+        drive_row = [ar.num(0)] * (self.size + 1)
+        drive_row[self.rows[self._crank_driver().name][0]] = ar.num(1)
+        try:
+            solution = ar.solve(rows + [drive_row], rhs + [ar.num(0)])
+        except SingularSystemError as exc:
+            raise MechanismError("the unknown load cannot balance the mechanism in this position "
+                                 "(it does no work on the motion)") from exc
+        snapshot.unknown_value = solution[-1]
+        return solution[:-1]
+
+    def _crank_driver(self):
+        for constraint in self.constraints.values():
+            if isinstance(constraint, AngleDriver):
+                return constraint
+        raise ValueError("the mechanism has no crank drive (AngleDriver)")
+
+    def _unit_unknown(self, snapshot):
+        """Generalised force of the unknown load at unit magnitude."""
+        ar, kin, load = snapshot.ar, snapshot.kin, self.unknown
+        generalised = [ar.num(0)] * self.size
+        k = 3 * load.body.index
+        if load.local is None:
+            generalised[k + 2] = ar.num(1)
+            return generalised
+        direction = load.direction(snapshot)
+        arm = kin.arm(load.body, load.local)
+        generalised[k], generalised[k + 1] = direction[0], direction[1]
+        generalised[k + 2] = cross(arm, direction)
+        return generalised
 
     def _inertia_force(self, kin, body):
         """Generalised inertia force (m a_G, m a_G; I alpha + arm x m a_G) of a body."""
@@ -408,6 +446,8 @@ class Snapshot:
     def __init__(self, mechanism, ar, q, qd, qdd, drive):
         self.mechanism, self.ar, self.q, self.qd, self.qdd, self.drive = mechanism, ar, q, qd, qdd, drive
         self.lam = None
+        #: the size of the mechanism's UnknownLoad (forces level), else None
+        self.unknown_value = None
         self.kin = _Kinematics(ar, q, qd, qdd)
         #: dimensionless condition number of the position Jacobian, and kappa^2 * unit roundoff
         #: (the estimated relative error of the rates); set by Mechanism.analyse.
@@ -474,6 +514,17 @@ class Snapshot:
             return (lam[0], lam[1])
         raise ValueError(f"body {on!r} is not in joint {joint!r}")
 
+    def force_on(self, body: str, *joints: str):
+        """Total force (Fx, Fy) the named constraints exert on ``body``: -sum lambda dPhi/d(x, y)."""
+        index = 3 * self.mechanism.body(body).index
+        fx = fy = self.ar.num(0)
+        for joint in joints:
+            rows = self.mechanism.constraints[joint].jacobian(self.kin)
+            for lam, row in zip(self._multipliers(joint), rows):
+                fx -= lam * row.get(index, 0)
+                fy -= lam * row.get(index + 1, 0)
+        return (fx, fy)
+
     def normal_force(self, joint: str):
         """Force of the line's body on the sliding point's body, along the line normal (PointOnLine)."""
         return -self._multipliers(joint)[0]
@@ -492,7 +543,7 @@ class Snapshot:
         return total
 
     def power_of_loads(self):
-        """Power of the known loads and gravity (the drive's power excluded)."""
+        """Power of the loads (the unknown one included, once solved) and gravity (not the drive's)."""
         ar, kin = self.ar, self.kin
         total = ar.num(0)
         gravity = ar.num(self.mechanism.gravity)
@@ -504,6 +555,13 @@ class Snapshot:
                 total += dot((ar.num(force[0]), ar.num(force[1])), kin.velocity(load.body, load.local))
             else:
                 total += ar.num(load.torque(self)) * self.qd[3 * load.body.index + 2]
+        unknown = self.mechanism.unknown
+        if unknown is not None and self.unknown_value is not None:
+            if unknown.local is None:
+                total += self.unknown_value * self.qd[3 * unknown.body.index + 2]
+            else:
+                direction = unknown.direction(self)
+                total += self.unknown_value * dot(direction, kin.velocity(unknown.body, unknown.local))
         return total
 
     def kinetic_energy_rate(self):
