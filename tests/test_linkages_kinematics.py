@@ -33,9 +33,9 @@ def crank_drive(t, flexible):
     return np.degrees(theta), omega, alpha, scale, scale_rate, scale_accel
 
 
-def central(values_minus, values, values_plus):
+def central(values_minus, values, values_plus, step=STEP):
     """First and second central differences of complex or real samples."""
-    return (values_plus - values_minus) / (2 * STEP), (values_plus - 2 * values + values_minus) / STEP**2
+    return (values_plus - values_minus) / (2 * step), (values_plus - 2 * values + values_minus) / step**2
 
 
 def angle_samples(angle_minus, angle, angle_plus):
@@ -157,7 +157,9 @@ def test_virtual_link_rates_match_differences(method):
     assert_close(link.length_accel, accel, 10.0, tolerance)
 
 
-from hypothesis import given, settings, strategies as st  # noqa: E402
+from hypothesis import assume, given, settings, strategies as st  # noqa: E402
+
+FINE = 1e-4  # random rates up to 5 rad/s: a finer step keeps the truncation error small
 
 
 @settings(max_examples=40, deadline=None)
@@ -168,16 +170,18 @@ from hypothesis import given, settings, strategies as st  # noqa: E402
 def test_fourbar_rates_match_differences_for_random_linkages(ground_fraction, ground_angle, crank, coupler, follower,
                                                              start, omega, alpha, rate, accel, branch):
     # a short crank and a ground between |b - c| + a and b + c - a: it assembles at every crank
-    # angle and stays away from toggles
+    # angle; positions near a toggle (coupler and follower within ~17 deg of parallel, where
+    # the differences lose accuracy) are skipped
     shortest, longest = abs(coupler - follower) + crank + 0.05, coupler + follower - crank - 0.05
     ground = shortest + ground_fraction * (longest - shortest)
-    t = np.array([-STEP, 0.0, STEP])
+    t = np.array([-FINE, 0.0, FINE])
     theta = start + np.degrees(omega * t + alpha * t**2 / 2)
     length = crank + rate * t + accel * t**2 / 2
     positions = fourbar(ground, ground_angle, length, coupler, follower, theta, branch=branch)
     moving = fourbar(ground, ground_angle, crank, coupler, follower, start, omega, alpha, crank_length_rate=rate,
                      crank_length_accel=accel, branch=branch)
-    velocity, acceleration = central(*positions.pin_b.pos)
+    assume(abs(np.sin(moving.coupler.angle - moving.follower.angle)) > 0.3)
+    velocity, acceleration = central(*positions.pin_b.pos, step=FINE)
     assert abs(moving.pin_b.vel - velocity) < 1e-5 * (1 + abs(velocity))
     assert abs(moving.pin_b.acc - acceleration) < 1e-3 * (1 + abs(acceleration))
 
@@ -188,15 +192,15 @@ def test_fourbar_rates_match_differences_for_random_linkages(ground_fraction, gr
        accel=st.floats(-1, 1))
 def test_slider_crank_rates_match_differences_for_random_linkages(eccentricity, crank, rod, axis, start, omega, alpha,
                                                                   rate, accel):
-    t = np.array([-STEP, 0.0, STEP])
+    t = np.array([-FINE, 0.0, FINE])
     theta = start + np.degrees(omega * t + alpha * t**2 / 2)
     length = crank + rate * t + accel * t**2 / 2
     positions = slider_crank(eccentricity, length, rod, theta, axis_deg=axis)
     moving = slider_crank(eccentricity, crank, rod, start, omega, alpha, crank_length_rate=rate,
                           crank_length_accel=accel, axis_deg=axis)
-    velocity, acceleration = central(*positions.pin_b.pos)
+    velocity, acceleration = central(*positions.pin_b.pos, step=FINE)
     assert abs(moving.pin_b.vel - velocity) < 1e-5 * (1 + abs(velocity))
     assert abs(moving.pin_b.acc - acceleration) < 1e-3 * (1 + abs(acceleration))
-    rod_rate, rod_accel = central(*angle_samples(*positions.rod.angle))
+    rod_rate, rod_accel = central(*angle_samples(*positions.rod.angle), step=FINE)
     assert abs(moving.rod.omega - rod_rate) < 1e-5 * (1 + abs(rod_rate))
     assert abs(moving.rod.alpha - rod_accel) < 1e-3 * (1 + abs(rod_accel))
