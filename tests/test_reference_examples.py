@@ -164,6 +164,30 @@ PROGRAM1_OUTPUTS = ("T(3)", "W(3)", "A(3)", "X(1)", "Y(1)", "V(1)", "V(2)", "A(3
                     "F(10)", "F(11)", "N(1)")
 
 
+def _run_program(n, inputs, angle_name, angles, names, unknown, tmp_path):
+    """Run GOSUB PROG n at each angle with ``inputs`` set; print ``names``; reset the unknown."""
+    setup = ": ".join(f"{name} = {value}" for name, value in inputs.items())
+    listing = tmp_path / f"prog{n}.bas"
+    listing.write_text(f"10 {setup}\n"
+                       f"20 FOR QQ = 1 TO {len(angles)}: READ {angle_name}: GOSUB PROG {n}\n"
+                       f"30 PRINT {'; '.join(names)}: {unknown} = {inputs.get(unknown, 0)}: NEXT QQ\n"
+                       f"40 DATA {', '.join(str(a) for a in angles)}\n")
+    result = subprocess.run([sys.executable, "-m", "yaseer", "run", str(listing), "--format", "csv"],
+                            capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stderr
+    return np.array([[float(v) for v in row.split(",")] for row in result.stdout.strip().splitlines()])
+
+
+def _compare(printed, model, names, angle_names):
+    for k, name in enumerate(names):
+        expected = np.asarray(model[name], dtype=float)
+        if name in angle_names:
+            gap = np.abs(np.remainder(printed[:, k] - expected + 180, 360) - 180)
+        else:
+            gap = np.abs(printed[:, k] - expected)
+        assert gap.max() <= 1e-10 * (np.abs(expected).max() + 1e-12), name
+
+
 @pytest.mark.parametrize("q", [1, 2, 3, 4])
 def test_program1_against_the_real_slider_crank(q, tmp_path):
     """GOSUB PROG 1 with masses, gravity, every kind of known load, a flexible crank and each
@@ -174,21 +198,30 @@ def test_program1_against_the_real_slider_crank(q, tmp_path):
     inputs = dict(PROGRAM1_INPUTS, **{"Q(1)": q})
     angles = [10.0, 95.0, 200.0, 300.0]
     names = (UNKNOWN_NAMES_1[q],) + PROGRAM1_OUTPUTS
-    setup = ": ".join(f"{name} = {value}" for name, value in inputs.items() if name != "G")
-    listing = tmp_path / "prog1.bas"
-    listing.write_text(f"10 G = {inputs['G']}: {setup}\n"
-                       f"20 FOR QQ = 1 TO {len(angles)}: READ T(2): GOSUB PROG 1\n"
-                       f"30 PRINT {'; '.join(names)}: {UNKNOWN_NAMES_1[q]} = {inputs[UNKNOWN_NAMES_1[q]]}: NEXT QQ\n"
-                       f"40 DATA {', '.join(str(a) for a in angles)}\n")
-    result = subprocess.run([sys.executable, "-m", "yaseer", "run", str(listing), "--format", "csv"],
-                            capture_output=True, text=True, timeout=120)
-    assert result.returncode == 0, result.stderr
-    printed = np.array([[float(v) for v in row.split(",")] for row in result.stdout.strip().splitlines()])
-    model = program1(inputs, angles)
-    for k, name in enumerate(names):
-        expected = np.asarray(model[name], dtype=float)
-        if name == "T(3)":
-            gap = np.abs(np.remainder(printed[:, k] - expected + 180, 360) - 180)
-        else:
-            gap = np.abs(printed[:, k] - expected)
-        assert gap.max() <= 1e-10 * (np.abs(expected).max() + 1e-12), name
+    printed = _run_program(1, inputs, "T(2)", angles, names, UNKNOWN_NAMES_1[q], tmp_path)
+    _compare(printed, program1(inputs, angles), names, {"T(3)"})
+
+
+PROGRAM2_INPUTS = {
+    "L(11)": 100, "T(11)": 15, "L(12)": 40, "L(13)": 120, "L(14)": 80, "W(5)": 7, "A(5)": -2, "D(2)": 3,
+    "E(2)": -20, "R(9)": 20, "H(9)": 30, "R(8)": 10, "H(10)": -40, "R(11)": 60, "H(11)": 25, "R(10)": 50,
+    "H(12)": 10, "R(13)": 30, "H(13)": -15, "R(12)": 35, "H(14)": 20, "M(6)": 2, "M(7)": 3, "M(8)": 2.5,
+    "I(6)": 0.1, "I(7)": 0.4, "I(8)": 0.3, "F(29)": 5, "F(30)": -3, "F(32)": 2, "F(33)": 7, "F(35)": -4,
+    "F(36)": 1, "F(31)": 4, "F(34)": -6, "F(37)": 3, "U(2)": 0.7, "G": 9.81, "Z(2)": 2,
+}
+PROGRAM2_OUTPUTS = ("T(13)", "W(6)", "A(6)", "T(14)", "W(7)", "A(7)", "X(3)", "Y(3)", "V(5)", "V(6)", "A(37)",
+                    "A(38)", "X(4)", "Y(4)", "V(7)", "V(8)", "A(39)", "A(40)", "X(5)", "Y(5)", "V(9)", "V(10)",
+                    "A(41)", "A(42)", "F(21)", "F(22)", "F(23)", "F(24)", "F(25)", "F(26)", "F(27)", "F(28)")
+
+
+@pytest.mark.parametrize("q, crossed", [(1, 0), (2, 1), (3, 0), (4, 1)])
+def test_program2_against_the_real_four_bar(q, crossed, tmp_path):
+    """GOSUB PROG 2 with masses, gravity, every kind of known load, a flexible crank, each
+    Q(2) and both assemblies, against basic_linkages.program2."""
+    from yaseer.reference.basic_linkages import UNKNOWN_NAMES_2, program2
+
+    inputs = dict(PROGRAM2_INPUTS, **{"Q(2)": q, "L(10)": crossed})
+    angles = [10.0, 95.0, 200.0, 300.0]
+    names = (UNKNOWN_NAMES_2[q],) + PROGRAM2_OUTPUTS
+    printed = _run_program(2, inputs, "T(12)", angles, names, UNKNOWN_NAMES_2[q], tmp_path)
+    _compare(printed, program2(inputs, angles), names, {"T(13)", "T(14)"})

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import math
 
+from yaseer.reference.arithmetic import FLOAT as FLOAT_AR
 from yaseer.reference.arithmetic import arithmetic_for
 from yaseer.reference.solver import (AngleDriver, AngleLock, Body, Couple, LengthDriver, Mechanism,
                                      MechanismError, PointLoad, PointOnLine, Revolute, UnknownLoad, cross,
@@ -39,7 +40,8 @@ def collect(rows: list[dict], number):
     return {name: [r[name] for r in rows] for name in names}
 
 
-def solve_each(mechanism, thetas_deg, rate, acceleration, sketch_at, check, number, dps, crank=None):
+def solve_each(mechanism, thetas_deg, rate, acceleration, sketch_at, check, number, dps, crank=None,
+               level="accelerations"):
     """One snapshot per crank angle, each by Newton from ``sketch_at(theta, k)`` (float, then ``number``).
 
     ``crank``: the FlexibleCrank of the mechanism, if any.  ``rate``, ``acceleration``:
@@ -51,7 +53,8 @@ def solve_each(mechanism, thetas_deg, rate, acceleration, sketch_at, check, numb
     for k, theta in enumerate(thetas):
         drives = None if crank is None or not crank.flexible else {CRANK_LENGTH: crank.at(k)}
         (snapshot,) = mechanism.analyse([theta], rates[k], accelerations[k], sketch_at(float(theta), k),
-                                        number=number, dps=dps, branch_check=check, drives=drives)
+                                        number=number, dps=dps, branch_check=check, drives=drives,
+                                        level=level)
         snapshots.append(snapshot)
     return snapshots
 
@@ -339,10 +342,7 @@ def program1_model(values: dict, crank: FlexibleCrank) -> Mechanism:
     unknowns = {1: UnknownLoad(crank_body), 2: UnknownLoad(crank_body, "P", _perpendicular("crank", v("H(1)"))),
                 3: UnknownLoad(rod, "P", _perpendicular("rod", v("H(4)"))),
                 4: UnknownLoad(piston, "B", toward_crank)}
-    forces = v("Z(1)") == 2
-    q = int(v("Q(1)")) if forces else None
-    if forces and q not in unknowns:
-        raise ValueError(f"Q(1) must be 1, 2, 3 or 4, not {v('Q(1)')!r}")
+    q = _selected(v, "Z(1)", "Q(1)", unknowns)
     loads = [PointLoad(crank_body, "P", _constant(v("F(0)"), v("F(1)"))),
              PointLoad(rod, "P", _constant(v("F(7)"), v("F(8)")))]
     loads += [load for k, load in known.items() if k != q]
@@ -399,14 +399,10 @@ def program1(values: dict, thetas_deg=None, number="float", dps=50) -> dict:
         if dot(run, _unit(axis)) <= 0:
             raise MechanismError("PROG 1 reference: the piston left its assembly branch")
 
-    rows = []
-    for k, theta in enumerate(thetas):
-        drives = {CRANK_LENGTH: crank.at(k)} if crank.flexible else None
-        (s,) = mechanism.analyse([theta], v("W(2)"), v("A(2)"), sketch_at(float(theta), k), number=number,
-                                 dps=dps, branch_check=check, drives=drives,
-                                 level="forces" if forces else "accelerations")
-        rows.append(_program1_row(s, crank, forces, int(v("Q(1)")) if forces else None))
-    return collect(rows, number)
+    snapshots = solve_each(mechanism, thetas, v("W(2)"), v("A(2)"), sketch_at, check, number, dps, crank,
+                           "forces" if forces else "accelerations")
+    return collect([_program1_row(s, crank, forces, _selected(v, "Z(1)", "Q(1)", UNKNOWN_NAMES_1))
+                    for s in snapshots], number)
 
 
 def _program1_row(s, crank, forces, q):
@@ -429,3 +425,104 @@ def _point_outputs(s, body, point, names):
     vx, vy = s.velocity(body, point)
     ax, ay = s.acceleration(body, point)
     return dict(zip(names, (x, y, vx, vy, ax, ay)))
+
+
+# --------------------------------------------------------------------------- Program 2 in full
+
+UNKNOWN_NAMES_2 = {1: "U(2)", 2: "F(31)", 3: "F(34)", 4: "F(37)"}
+
+
+def _perpendicular_load(body, body_name, h_deg, size):
+    return PointLoad(body, "P", lambda s: _scaled(_perpendicular(body_name, h_deg)(s), size))
+
+
+def program2_model(values: dict, crank: FlexibleCrank) -> Mechanism:
+    """Program 2's four-bar with masses and loads from the contract's inputs ``values``.
+
+    Frames: crank from Ao along Ao->A, coupler from A along A->B, follower from Bo along
+    Bo->B (the contract's H references).  Known loads: F(29),F(30) and F(31) at the crank
+    point, F(32),F(33) and F(34) at the coupler point, F(35),F(36) and F(37) at the
+    follower point, U(2); Q(2) picks the unknown among U(2), F(31), F(34), F(37).
+    """
+    v = _inputs(values)
+    crank_body = Body("crank", mass=v("M(6)"), inertia=v("I(6)"), centre=polar(v("R(8)"), v("H(10)")),
+                      points={"P": polar(v("R(9)"), v("H(9)"))})
+    coupler = Body("coupler", mass=v("M(7)"), inertia=v("I(7)"), centre=polar(v("R(10)"), v("H(12)")),
+                   points={"A": (0, 0), "B": (v("L(13)"), 0), "P": polar(v("R(11)"), v("H(11)"))})
+    follower = Body("follower", mass=v("M(8)"), inertia=v("I(8)"), centre=polar(v("R(12)"), v("H(14)")),
+                    points={"Bo": (0, 0), "B": (v("L(14)"), 0), "P": polar(v("R(13)"), v("H(13)"))})
+    known = {1: Couple(crank_body, lambda s: v("U(2)")),
+             2: _perpendicular_load(crank_body, "crank", v("H(9)"), v("F(31)")),
+             3: _perpendicular_load(coupler, "coupler", v("H(11)"), v("F(34)")),
+             4: _perpendicular_load(follower, "follower", v("H(13)"), v("F(37)"))}
+    unknowns = {1: UnknownLoad(crank_body),
+                2: UnknownLoad(crank_body, "P", _perpendicular("crank", v("H(9)"))),
+                3: UnknownLoad(coupler, "P", _perpendicular("coupler", v("H(11)"))),
+                4: UnknownLoad(follower, "P", _perpendicular("follower", v("H(13)")))}
+    q = _selected(v, "Z(2)", "Q(2)", unknowns)
+    loads = [PointLoad(crank_body, "P", _constant(v("F(29)"), v("F(30)"))),
+             PointLoad(coupler, "P", _constant(v("F(32)"), v("F(33)"))),
+             PointLoad(follower, "P", _constant(v("F(35)"), v("F(36)")))]
+    loads += [load for k, load in known.items() if k != q]
+    return Mechanism([crank_body, coupler, follower],
+                     [Revolute("Ao", crank_body, (0, 0), None, (0, 0)),
+                      *crank.pin(crank_body, coupler, "A"),
+                      Revolute("B", coupler, "B", follower, "B"),
+                      Revolute("Bo", follower, "Bo", None, polar(v("L(11)"), v("T(11)"))),
+                      AngleDriver("crank", crank_body)],
+                     loads, gravity=v("G"), unknown=unknowns.get(q))
+
+
+def _selected(v, z_name, q_name, unknowns):
+    """The Q choice when forces are asked for (Z = 2), else None; a bad Q is an error."""
+    if v(z_name) != 2:
+        return None
+    q = v(q_name)
+    if q not in unknowns:
+        raise ValueError(f"{q_name} must be one of {sorted(unknowns)}, not {q!r}")
+    return int(q)
+
+
+def program2(values: dict, thetas_deg=None, number="float", dps=50) -> dict:
+    """Program 2 in full (kinematics, and forces when Z(2) = 2) as a real four-bar.
+
+    ``values``: the contract's inputs by name (missing ones 0); ``thetas_deg``: crank
+    angles (default [T(12)]).  L(10) = 1: crossed (B right of A->Bo), else uncrossed.
+    Returns T(13), W(6), A(6), T(14) (B->Bo), W(7), A(7), the points X(3)...A(42); with
+    Z(2) = 2 the selected unknown, F(21)...F(28).
+    """
+    v = _inputs(values)
+    thetas = [v("T(12)")] if thetas_deg is None else list(thetas_deg)
+    crank = FlexibleCrank(v("L(12)"), v("D(2)"), v("E(2)"), len(thetas))
+    mechanism = program2_model(values, crank)
+    forces = v("Z(2)") == 2
+    side = -1 if v("L(10)") == 1 else 1
+    pivot = _polar_xy(FLOAT_AR, v("L(11)"), v("T(11)"))
+    sketch_at = lambda theta, k: fourbar_sketch(mechanism, theta, crank.lengths[k], v("L(13)"),  # noqa: E731
+                                                v("L(14)"), pivot, side)
+
+    def check(s):
+        a, b, bo = s.position("coupler", "A"), s.position("coupler", "B"), s.position("follower", "Bo")
+        if side * cross((bo[0] - a[0], bo[1] - a[1]), (b[0] - a[0], b[1] - a[1])) <= 0:
+            raise MechanismError("PROG 2 reference: the four-bar left its assembly branch")
+
+    snapshots = solve_each(mechanism, thetas, v("W(5)"), v("A(5)"), sketch_at, check, number, dps, crank,
+                           "forces" if forces else "accelerations")
+    return collect([_program2_row(s, crank, forces, _selected(v, "Z(2)", "Q(2)", UNKNOWN_NAMES_2))
+                    for s in snapshots], number)
+
+
+def _program2_row(s, crank, forces, q):
+    row = {"T(13)": s.angle("coupler"), "W(6)": s.omega("coupler"), "A(6)": s.alpha("coupler"),
+           "T(14)": normalise_degrees(s.angle("follower") + 180, s.ar), "W(7)": s.omega("follower"),
+           "A(7)": s.alpha("follower")}
+    row.update(_point_outputs(s, "crank", "P", ("X(3)", "Y(3)", "V(5)", "V(6)", "A(37)", "A(38)")))
+    row.update(_point_outputs(s, "coupler", "P", ("X(4)", "Y(4)", "V(7)", "V(8)", "A(39)", "A(40)")))
+    row.update(_point_outputs(s, "follower", "P", ("X(5)", "Y(5)", "V(9)", "V(10)", "A(41)", "A(42)")))
+    if forces:
+        row[UNKNOWN_NAMES_2[q]] = s.unknown_value
+        row["F(21)"], row["F(22)"] = s.reaction("Ao", "crank")
+        row["F(23)"], row["F(24)"] = s.force_on("coupler", *crank.joint_names())
+        row["F(25)"], row["F(26)"] = s.reaction("B", "follower")
+        row["F(27)"], row["F(28)"] = s.reaction("Bo", "follower")
+    return row
