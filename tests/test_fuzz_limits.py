@@ -1,0 +1,39 @@
+"""Resource limits end a run with a period-style error naming the line, not a Python crash.
+
+GOSUB depth, FOR nesting, recursion through DEF FN, array size, string length and
+expression nesting each have a limit (issue 8); a program that reaches it stops with
+``Out of memory in N`` / ``String too long in N`` like the machines of the period did.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from test_fuzz_listings import run_mutant
+
+
+@pytest.mark.parametrize(
+    "source, expected",
+    [
+        ("10 GOSUB 10\n", "Out of memory in 10"),  # unbounded GOSUB depth
+        ("10 X = X + 1: FOR I = 1 TO 2: GOSUB 10\n", "Out of memory in 10"),  # FOR frames piling up
+        ("10 DEF FNA(X) = FNA(X) + 1: PRINT FNA(1)\n", "Out of memory in 10"),  # recursion in DEF FN
+        ("10 DIM A(3000000)\n", "Out of memory in 10"),
+        ("10 DIM A(1000, 1000, 1000)\n", "Out of memory in 10"),
+        ('10 A$ = "x": FOR I = 1 TO 9: A$ = A$ + A$: NEXT\n', "String too long in 10"),
+        ("10 PRINT 1\n20 X = " + "-" * 5000 + "1\n", "Out of memory in 20"),
+        ("10 PRINT 1\n20 X = " + "NOT " * 3000 + "1\n", "Out of memory in 20"),
+        ("10 X = 1E308 * 10\n", "Overflow in 10"),
+    ],
+)
+def test_limit_is_a_basic_error_naming_the_line(source, expected):
+    assert run_mutant(source, with_prog5=False) == expected
+
+
+def test_same_variable_for_loop_reentered_by_goto_reuses_its_frame():
+    """MS-BASIC replaces the frame of a FOR on the same variable: this loops, it does not fill memory."""
+    assert run_mutant("10 N = N + 1: FOR I = 1 TO 2\n20 GOTO 10\n", with_prog5=False) == "Break in 10"
+
+
+def test_the_largest_allowed_array_works():
+    assert run_mutant('10 DIM A$(1999999): A$(1999999) = "x": PRINT A$(1999999)\n', with_prog5=False) == "ok"
