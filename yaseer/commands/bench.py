@@ -2,7 +2,7 @@
 
 Writes to ``--out`` (default ``bench-out``): ``bench.csv`` (every case x method x
 way), ``bench_summary.csv`` (per method and way), ``bench_newton.csv`` (Newton
-over its tolerances), ``bench_laziness.csv``, ``bench_table.md`` and the chart ``bench.png`` /
+over its tolerances), ``bench_laziness.csv``, ``bench_table.md``, ``bench_summary.md`` and the chart ``bench.png`` /
 ``bench.svg``; prints the summary and the laziness table.  See docs/bench.md.
 """
 
@@ -42,6 +42,7 @@ def main(args) -> int:
     bench.write_csv(out / "bench_newton.csv", newton_curve, list(newton_curve[0]))
     bench.write_csv(out / "bench_laziness.csv", laziness, list(laziness[0]))
     (out / "bench_table.md").write_text(bench.format_markdown(rows))
+    (out / "bench_summary.md").write_text(bench.format_summary_markdown(summary))
     print(bench.format_table(summary))
     print()
     print("Newton over its tolerance (array way; median time, worst error over the cases):")

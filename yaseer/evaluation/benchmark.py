@@ -128,6 +128,18 @@ def format_table(summary) -> str:
     return "\n".join(lines)
 
 
+def format_summary_markdown(summary) -> str:
+    """Per method: time per position for each way and the worst error, as a markdown table."""
+    lines = ["| linkage | method | listing | per position | array | worst error |", "|---|---|---|---|---|---|"]
+    keys = list(dict.fromkeys((s["linkage"], s["method"]) for s in summary))
+    for linkage, method in keys:
+        members = {s["way"]: s for s in summary if (s["linkage"], s["method"]) == (linkage, method)}
+        times = [f"{members[w]['seconds_per_position'] * 1e6:.3g} us" if w in members else "–" for w in WAYS]
+        worst = max(m["worst_error"] for m in members.values())
+        lines.append(f"| {linkage.replace('_', '-')} | {method} | " + " | ".join(times) + f" | {worst:.2g} |")
+    return "\n".join(lines) + "\n"
+
+
 def format_markdown(rows) -> str:
     """Every case x method: worst error (time per position) per way, as a markdown table."""
     cases = list(dict.fromkeys(r["case"] for r in rows))

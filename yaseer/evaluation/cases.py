@@ -20,9 +20,9 @@ the paper's mechanisms use their listing's own grid for both):
 * a crank-rocker whose coupler swings past 90 deg from the fixed link (a = 1, b = 3,
   c = 3, d = 2): where seed 003's printed ASIN returns the wrong coupler angle;
 * Program 5 alone: a point on an ellipse around Ao (all four quadrants);
-* the paper's Examples 1, 3, 4 as chains of programs (slider-crank or four-bar
-  methods, and the virtual link's), printing the listing's columns;
-* Examples 2 and 5 print forces: their Python chain is left to the listing way.
+* the paper's Examples 1-5 as chains of programs (slider-crank or four-bar
+  methods, and the virtual link's), giving the listing's printed columns
+  (Examples 2 and 5: forces, through the linkages' ``forces``).
 """
 
 from __future__ import annotations
@@ -274,6 +274,61 @@ def _example4(methods, angles, options):
             "A(6)": second.coupler.alpha, "V(7)": point.vel.real, "A(39)": point.acc.real}
 
 
+def _example2(methods, angles, options):
+    """Example 2 (corrected listing): PROG 1 on AoABC, PROG 5 (Ao->C), PROG 1 on AoCD with
+    forces (P = 650 v|v| on the plunger), PROG 1 on AoABC with the joint force at C."""
+    from yaseer.linkages import slider_crank, virtual_link
+
+    sc, extra = methods.get("slider_crank"), options.get("slider_crank", {})
+
+    def first():  # GOSUB 100: GOSUB PROG 1
+        return slider_crank(0.0, 0.021, 0.032, angles, -8.0, 0.0, axis_deg=0.1, method=sc, **extra)
+
+    link = _virtual(virtual_link, first().rod_point(0.029, 180.0), methods, options)
+    second = slider_crank(0.08, link.length, 0.054, link.angle_deg, link.angle_rate, link.angle_accel,
+                          crank_length_rate=link.length_rate, crank_length_accel=link.length_accel,
+                          axis_deg=90.1, method=sc, **extra)
+    v4 = second.rod_point(0.0, 180.0).vel.imag
+    plunger = second.forces(rod_point=(0.0, 180.0), loads={"piston": 650.0 * v4 * np.abs(v4)},
+                            unknown="crank_torque")
+    at_c = plunger.reactions["crank_on_rod"]  # F(5) + i F(6): crank AoC on rod CD at C
+    result = first().forces(rod_point=(0.029, 180.0), loads={"rod_fx": -at_c.real, "rod_fy": -at_c.imag},
+                            unknown="crank_torque")
+    return {"QQ": np.asarray(angles, float) + 0 * v4, "U(1)": result.value,
+            "N(1)": result.reactions["wall_on_piston"], "SQR(F(3)^2+F(4)^2)": np.abs(result.reactions["ground_on_crank"])}
+
+
+def _example5(methods, angles, options):
+    """Example 5 (corrected listing): PROG 2 on AoABBo, PROG 5 (Ao->C = B), PROG 2 on AoCDDo
+    with forces (the crushing force on the jaw), PROG 2 on AoABBo with the joint force at C."""
+    from yaseer.linkages import MassProps, fourbar, virtual_link
+
+    fb, extra = methods.get("fourbar"), options.get("fourbar", {})
+
+    def first():  # GOSUB 5100: GOSUB PROG 2
+        return fourbar(math.hypot(0.85, 1.25), math.degrees(math.atan(1.25 / -0.85)) + 180, 0.075, 1.2, 0.85,
+                       angles, -22.0, 0.0, branch=-1, method=fb, **extra)
+
+    link = _virtual(virtual_link, first().coupler_point(1.2, 0.0), methods, options)
+    second = fourbar(math.hypot(1.0, 0.75), math.degrees(math.atan(-1 / 0.75)), link.length, 1.2, 2.45,
+                     link.angle_deg, link.angle_rate, link.angle_accel, crank_length_rate=link.length_rate,
+                     crank_length_accel=link.length_accel, branch=1, method=fb, **extra)
+    t14 = second.follower.degrees
+    crushing = np.where(second.follower.omega < 0, 500.0 / (t14 + 100.5) ** 3, 0.0)
+    push = crushing * np.exp(1j * np.radians(t14 - 90.0))  # F(35) + i F(36), line 5050
+    jaw = second.forces(coupler=MassProps(35.0, 28.0, 0.4, 0.0), follower=MassProps(180.0, 435.0, 1.5, 9.0),
+                        coupler_point=(0.0, 0.0), follower_point=(2.5, 18.0),
+                        loads={"follower_fx": push.real, "follower_fy": push.imag}, unknown="crank_torque")
+    at_c = jaw.reactions["crank_on_coupler"]  # F(23) + i F(24)
+    crank = first().forces(crank=MassProps(200.0, 156.0, 0.0, 0.0), coupler=MassProps(30.0, 18.0, 0.5, 0.0),
+                           follower=MassProps(15.0, 3.7, 0.35, 0.0), coupler_point=(1.2, 0.0),
+                           follower_point=(2.5, 18.0), loads={"coupler_fx": -at_c.real, "coupler_fy": -at_c.imag},
+                           unknown="crank_torque")
+    return {"QQ": np.asarray(angles, float) + 0 * t14, "U(2)": crank.value,
+            "SQR(F(27)^2+F(28)^2)": np.abs(crank.reactions["ground_on_follower"]),
+            "SQR(F(21)^2+F(22)^2)": np.abs(crank.reactions["ground_on_crank"])}
+
+
 def _virtual(virtual_link, point, methods, options):
     return virtual_link(point.pos.real, point.pos.imag, point.vel.real, point.vel.imag, point.acc.real,
                         point.acc.imag, method=methods.get("virtual_link"), **options.get("virtual_link", {}))
@@ -333,16 +388,18 @@ def _grids(number):
 
 
 def paper_cases() -> list[Case]:
-    """The paper's five mechanisms; Examples 2 and 5 (forces) only through their listings."""
+    """The paper's five mechanisms, each once per linkage whose methods it can compare."""
     return [
         _paper_case(1, "slider_crank", _example1, (), *_grids(1)),
         _paper_case(1, "virtual_link", _example1, (), *_grids(1)),
-        _paper_case(2, "slider_crank", None, (), *_grids(2)),
+        _paper_case(2, "slider_crank", _example2, (), *_grids(2)),
+        _paper_case(2, "virtual_link", _example2, (), *_grids(2)),
         _paper_case(3, "slider_crank", _example3, ("T(9)",), *_grids(3)),
         _paper_case(3, "virtual_link", _example3, ("T(9)",), *_grids(3)),
         _paper_case(4, "fourbar", _example4, (), *_grids(4)),
         _paper_case(4, "virtual_link", _example4, (), *_grids(4)),
-        _paper_case(5, "fourbar", None, (), *_grids(5)),
+        _paper_case(5, "fourbar", _example5, (), *_grids(5)),
+        _paper_case(5, "virtual_link", _example5, (), *_grids(5)),
     ]
 
 
