@@ -343,3 +343,60 @@ def test_direct_mode_error_has_no_line():
     with pytest.raises(BasicError) as info:
         machine.execute_direct("A=1/0")
     assert str(info.value) == "Division by zero"
+
+
+# ---------------------------------------------------------------- the loop forms the compiler picks
+
+
+def accumulate(start, limit, step):
+    values, x = [], start
+    while (x <= limit) if step >= 0 else (x >= limit):
+        values.append(x)
+        x += step
+    return values, x
+
+
+def test_body_that_changes_the_variable_steers_the_loop():
+    rows = values("10 FOR I=1 TO 100: I=I*2: PRINT I: NEXT: PRINT I")
+    expected, i = [], 1.0
+    while i <= 100:
+        i *= 2
+        expected.append([i])
+        i += 1
+    assert rows == expected + [[i]]
+
+
+def test_long_loop_reading_its_variable_with_variable_bounds():
+    rows = values("10 N=1000: FOR J=3 TO N STEP 7: S=S+J: NEXT: PRINT S, J")
+    seen, final = accumulate(3.0, 1000.0, 7.0)
+    assert rows == [[sum(seen), final]]
+
+
+def test_long_fractional_loop_not_reading_its_variable():
+    rows = values("10 FOR I=.1 TO 99.7 STEP .3: K=K+1: NEXT: PRINT I, K")
+    seen, final = accumulate(0.1, 99.7, 0.3)
+    assert rows == [[final, float(len(seen))]]
+
+
+def test_error_inside_a_counted_loop_sees_the_current_variable():
+    program = "10 ON ERROR GOTO 100\n20 FOR I=1 TO 100: K=K+1: A=1/(50-K): NEXT\n30 END\n100 PRINT I, K: END"
+    assert values(program) == [[50.0, 50.0]]
+
+
+def test_loop_helpers_match_repeated_addition():
+    import random
+
+    from yaseer.basic import runtime
+
+    rng = random.Random(1)
+    for _ in range(3000):
+        start = rng.choice([rng.randint(-50, 50), rng.uniform(-50, 50), round(rng.uniform(-50, 50), 1)])
+        step = rng.choice([rng.randint(-7, 7), rng.uniform(-7, 7), 0.1, -0.5]) or 1
+        limit = rng.choice([rng.randint(-60, 60), rng.uniform(-60, 60)])
+        if not (start <= limit if step > 0 else start >= limit):
+            continue
+        seen, final = accumulate(start, limit, step)
+        assert list(runtime.float_range(start, limit, step)) == seen
+        passes = runtime.pass_counter(start, limit, step)
+        assert len(list(passes)) == len(seen)
+        assert runtime.counted_final(passes, start, step) == final

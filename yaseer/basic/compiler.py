@@ -131,6 +131,18 @@ def _walk(stmt):
                     yield from _walk(s)
 
 
+def _nodes(value):
+    """Every syntax-tree node in ``value`` (a node, list or tuple), depth first."""
+    stack = [value]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, (list, tuple)):
+            stack.extend(item)
+        elif isinstance(item, ast.Node):
+            yield item
+            stack.extend(getattr(item, name) for name in item._fields)
+
+
 def _splits(stmt) -> bool:
     """True when code after ``stmt`` must be enterable from outside (a return point)."""
     for s in _walk(stmt):
@@ -768,8 +780,24 @@ class AreaCompiler:
                 test = f"{var} >= _l{n}"
             else:
                 test = f"({var} <= _l{n} if _s{n} >= 0.0 else {var} >= _l{n})"
+            mode = self.loop_mode(stmt)
+            if mode == "count":
+                # the body neither reads nor changes the variable: count the passes
+                self.emit(f"if {test}:")
+                self.indent += 1
+                self.emit(f"_it{n} = _fcount(_v{n}, _l{n}, _s{n})")
+                self.emit("try:")
+                self.indent += 1
+                self.emit(f"for _i{n} in _it{n}:")
+                return n, var, step_value, mode
+            if mode == "values":
+                # the body never changes the variable: iterate over its values
+                self.emit(f"if {test}:")
+                self.indent += 1
+                self.emit(f"for {var} in _frange(_v{n}, _l{n}, _s{n}):")
+                return n, var, step_value, mode
             self.emit(f"while {test}:")
-            return n, var, step_value
+            return n, var, step_value, mode
         body = self.entry_block.get(self.index + 1) if self.depth == 0 else None
         skip_index = self.plan.for_next.get(self.index) if self.depth == 0 else None
         block, indent = self.cur, self.indent
@@ -801,6 +829,52 @@ class AreaCompiler:
         self.emit(f"{target} = {target} + _f.step")
         self.emit(f"if {target} <= _f.limit if _f.step >= 0.0 else {target} >= _f.limit: return _f.body")
         self.emit("_pop()")
+
+    def loop_mode(self, stmt) -> str:
+        """How to run the native loop now being compiled.
+
+        ``"while"``: test and add the step each pass (always right; used for a
+        short loop with constant bounds, or when the body may change the variable);
+        ``"values"``: ``for var in _frange(...)`` when nothing in the body can
+        change the variable; ``"count"``: ``for _ in range(n)`` when the body does
+        not even read it (the variable's value is set after the loop, or on an error).
+        """
+        if not self.iterable_loop(stmt.var):
+            return "while"
+        if all(isinstance(x, ast.Num) or x is None for x in (stmt.start, stmt.stop, stmt.step)):
+            step = 1.0 if stmt.step is None else stmt.step.value
+            if step and 0 <= (stmt.stop.value - stmt.start.value) / step < 16:
+                return "while"
+        first, last = self.loop_range
+        body = [self.flat[k][1] for k in range(first + 1, last)]
+        if any(isinstance(node, ast.FnCall) or node == stmt.var for node in _nodes(body)):
+            return "values"
+        return "count"
+
+    def iterable_loop(self, var) -> bool:
+        """May the native loop now being compiled iterate instead of testing?
+
+        Only when nothing in its body can change the control variable: it is a
+        scalar, no statement assigns it, and nothing outside the block (an area,
+        CLEAR) runs inside the loop.
+        """
+        if not isinstance(var, ast.Var):
+            return False
+        first, last = self.loop_range
+        for k in range(first + 1, last):
+            for s in _walk(self.flat[k][1]):
+                if isinstance(s, (ast.GosubProg, ast.Clear)):
+                    return False
+                targets = []
+                if isinstance(s, (ast.Let,)):
+                    targets = [s.target]
+                elif isinstance(s, (ast.Read, ast.Input)):
+                    targets = s.targets
+                elif isinstance(s, ast.For):
+                    targets = [s.var]
+                if var in targets:
+                    return False
+        return True
 
     # -- the program walk
     def set_line(self, number) -> None:
@@ -838,23 +912,35 @@ class AreaCompiler:
         stmt = self.flat[i][1]
         scope = _BlockScope(self)
         block, mark = self.cur, len(self.cur.code)
+        self.loop_range = (i, j)
         try:
-            n, var, step_value = self.stmt_For(stmt, scope, native_next=j)
+            n, var, step_value, mode = self.stmt_For(stmt, scope, native_next=j)
         except CompileError as err:
             del block.code[mark:]
             self.emit(f"raise _err({err.message!r}, {err.code})")
             return i + 1
         self.indent += 1
-        self.line = None
-        self.set_line(self.flat[i][0])
+        if all(self.flat[k][0] == self.flat[i][0] for k in range(i, j + 1)):
+            self.line = self.flat[i][0]  # a one-line loop: _ln is already right
+        else:
+            self.line = None
+            self.set_line(self.flat[i][0])
         self.walk(i + 1, j)
         self.index = j
         if self.flat[j][0] != self.line:
             self.set_line(self.flat[j][0])
-        if step_value is not None:
-            self.emit(f"{var} = {var} + {step_value!r}")
+        increment = repr(step_value) if step_value is not None else f"_s{n}"
+        if mode == "count":
+            self.indent -= 2
+            self.emit("except BaseException:")
+            self.emit(f"    {var} = _fvalue(_it{n}, _v{n}, _s{n}, _i{n})")
+            self.emit("    raise")
+            self.emit(f"{var} = _fafter(_it{n}, _v{n}, _s{n})")
+        elif mode == "values":
+            self.indent -= 1
+            self.emit(f"{var} = {var} + {increment}")
         else:
-            self.emit(f"{var} = {var} + _s{n}")
+            self.emit(f"{var} = {var} + {increment}")
         self.indent -= 1
         self.line = None
         self.set_line(self.flat[j][0])

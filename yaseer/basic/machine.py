@@ -310,7 +310,8 @@ class Machine:
 
     def _namespace(self, area, rt: _AreaRuntime) -> dict:
         ns = {
-            "__builtins__": {"abs": abs, "len": len, "float": float},
+            "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range,
+                             "BaseException": BaseException},
             "_M": self, "_S": self.scalars, "_arr": self.array_nd, "_ix": runtime.subscript,
             "_ovf": runtime.overflow, "_err": BasicError, "_END": END, "_DirectJump": DirectJump,
             "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_Tab": Tab, "_Spc": Spc,
@@ -327,7 +328,9 @@ class Machine:
             "_asc": runtime.asc, "_left": runtime.left, "_right": runtime.right, "_mid": runtime.mid,
             "_cat": runtime.concat, "_pow": runtime.power, "_idiv": runtime.int_divide,
             "_mod": runtime.modulo, "_and": runtime.logical_and, "_or": runtime.logical_or,
-            "_not": runtime.logical_not,
+            "_not": runtime.logical_not, "_frange": runtime.float_range,
+            "_fcount": runtime.pass_counter, "_fvalue": runtime.counted_value,
+            "_fafter": runtime.counted_final,
         }
         ns.update(self._trig_functions())
         self.namespaces[area] = ns

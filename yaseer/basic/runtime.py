@@ -97,6 +97,82 @@ def fix(x: float) -> float:
     return float(math.trunc(x))
 
 
+_EXACT = 2.0 ** 52  # below this, integers and their sums are exact doubles
+
+
+def float_range(start: float, limit: float, step: float):
+    """The values a FOR variable takes, as floats, exactly as repeated ``+ step`` gives them.
+
+    The caller has checked that the first pass runs.  Whole numbers use a C-level
+    ``range``; anything else adds the step one pass at a time.
+    """
+    if (start == int(start) and step == int(step) and step != 0
+            and abs(start) < _EXACT and abs(step) < _EXACT and abs(limit) < _EXACT):
+        first, stride = int(start), int(step)
+        if stride > 0:
+            count = (math.floor(limit) - first) // stride
+            return map(float, range(first, first + count * stride + 1, stride))
+        count = (first - math.ceil(limit)) // -stride
+        return map(float, range(first, first + count * stride - 1, stride))
+    return _accumulate(start, limit, step)
+
+
+class _Accumulator:
+    """Counts the passes of a FOR loop with fractional values; ``value`` is the variable."""
+
+    __slots__ = ("value", "limit", "step")
+
+    def __init__(self, value: float, limit: float, step: float):
+        self.value, self.limit, self.step = value, limit, step
+
+    def __iter__(self):
+        step, limit = self.step, self.limit
+        passes = 0
+        while (self.value <= limit) if step >= 0 else (self.value >= limit):
+            yield passes
+            passes += 1
+            self.value = self.value + step
+
+
+def pass_counter(start: float, limit: float, step: float):
+    """An iterable with one item per pass of a FOR loop whose body ignores its variable.
+
+    Whole numbers give a ``range``; see :func:`counted_value` for the variable.
+    """
+    if (start == int(start) and step == int(step) and step != 0
+            and abs(start) < _EXACT and abs(step) < _EXACT and abs(limit) < _EXACT):
+        first, stride = int(start), int(step)
+        if stride > 0:
+            return range((math.floor(limit) - first) // stride + 1)
+        return range((first - math.ceil(limit)) // -stride + 1)
+    return _Accumulator(start, limit, step)
+
+
+def counted_value(passes, start: float, step: float, index: int) -> float:
+    """The FOR variable during pass ``index`` of a :func:`pass_counter` loop."""
+    if type(passes) is range:
+        return start + index * step
+    return passes.value
+
+
+def counted_final(passes, start: float, step: float) -> float:
+    """The FOR variable after a :func:`pass_counter` loop (one step past the limit)."""
+    if type(passes) is range:
+        return start + len(passes) * step
+    return passes.value
+
+
+def _accumulate(value: float, limit: float, step: float):
+    if step >= 0:
+        while value <= limit:
+            yield value
+            value = value + step
+    else:
+        while value >= limit:
+            yield value
+            value = value + step
+
+
 # ------------------------------------------------------------------ trigonometry
 # In degree mode angles are reduced to [0, 360) first, and the multiples of 90
 # degrees give exact values (a 10-digit pocket computer shows COS 90 = 0), so

@@ -1,0 +1,169 @@
+"""Interpreter speed: yaseer against bwbasic and plain Python (a script, not a test).
+
+    python tests/benchmarks/interpreter_speed.py [--target SECONDS] [--repeat N]
+
+1. The tight loop ``10 FOR I=1 TO 100000: A=A+1: NEXT``: yaseer (load + compile +
+   run, in process) against the same loop in plain Python (a function with
+   float locals, ``while`` and ``for range`` forms), and against bwbasic.
+2. Rugg/Feldman BM1-BM8 and Ahl (../shared/bench/classic): each loop count is
+   scaled so that bwbasic needs about ``--target`` seconds, then yaseer runs the
+   same scaled program.  Reported: seconds and the ratio bwbasic / yaseer, both
+   in process (yaseer's compile + run) and as whole processes (``python -m
+   yaseer run``, which adds Python's start-up).
+3. Start-up: whole process to the first byte of output of a paper listing.
+
+Every ratio is measured in this one run; nothing is compared with stored times.
+"""
+
+from __future__ import annotations
+
+import argparse
+import io
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+CLASSIC = Path(os.environ.get("YASEER_CLASSIC", ROOT.parent / "shared" / "bench" / "classic"))
+if not CLASSIC.exists():
+    CLASSIC = Path("/work/shared/bench/classic")
+sys.path.insert(0, str(ROOT))
+
+from yaseer.basic.machine import Machine  # noqa: E402
+
+TIGHT_LOOP = "10 FOR I=1 TO {n}: A=A+1: NEXT\n"
+TIGHT_LOOP_BW = "10 FOR I=1 TO {n}\n20 A=A+1\n30 NEXT I\n40 SYSTEM\n"
+# How each classic program's loop count is written (the number gets scaled).
+MAX_SCALE = 20_000
+LOOP_COUNT = re.compile(r"(FOR K=1 TO |IF K<|FOR N=1 TO )(\d+)")
+
+
+def best_of(repeat: int, function) -> float:
+    times = []
+    for _ in range(repeat):
+        start = time.perf_counter()
+        function()
+        times.append(time.perf_counter() - start)
+    return min(times)
+
+
+def yaseer_in_process(text: str) -> None:
+    machine = Machine(screen=io.StringIO(), printer=io.StringIO())
+    machine.load(text)
+    machine.run()
+
+
+def plain_python_while(n: int) -> float:
+    a = 0.0
+    i = 1.0
+    while i <= n:
+        a = a + 1.0
+        i = i + 1.0
+    return a
+
+
+def plain_python_range(n: int) -> float:
+    a = 0.0
+    for _ in range(1, n + 1):
+        a = a + 1.0
+    return a
+
+
+def run_process(command: list[str]) -> None:
+    # stdin closed: bwbasic falls into its interactive shell after an error
+    subprocess.run(command, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                   check=False, cwd=tempfile.gettempdir(), timeout=120)
+
+
+def bwbasic_time(text: str, repeat: int) -> float:
+    with tempfile.NamedTemporaryFile("w", suffix=".bas", delete=False) as handle:
+        handle.write(text)
+    try:
+        return best_of(repeat, lambda: run_process(["bwbasic", handle.name]))
+    finally:
+        os.unlink(handle.name)
+
+
+def yaseer_process_time(text: str, repeat: int) -> float:
+    with tempfile.NamedTemporaryFile("w", suffix=".bas", delete=False) as handle:
+        handle.write(text)
+    try:
+        return best_of(repeat, lambda: run_process([sys.executable, "-m", "yaseer", "run", handle.name]))
+    finally:
+        os.unlink(handle.name)
+
+
+def scaled(text: str, factor: float) -> str:
+    return LOOP_COUNT.sub(lambda m: m.group(1) + str(max(1, round(int(m.group(2)) * factor))), text)
+
+
+def first_output_time(path: Path) -> float:
+    start = time.perf_counter()
+    process = subprocess.Popen([sys.executable, "-m", "yaseer", "run", str(path)], stdout=subprocess.PIPE,
+                               stderr=subprocess.DEVNULL, cwd=str(ROOT))
+    process.stdout.read(1)
+    elapsed = time.perf_counter() - start
+    process.stdout.read()
+    process.wait()
+    return elapsed
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--target", type=float, default=1.0, help="seconds bwbasic should need per program")
+    parser.add_argument("--repeat", type=int, default=3, help="best of N runs")
+    args = parser.parse_args()
+    have_bwbasic = shutil.which("bwbasic") is not None
+
+    n = 100_000
+    t_yaseer = best_of(args.repeat, lambda: yaseer_in_process(TIGHT_LOOP.format(n=n)))
+    t_while = best_of(args.repeat, lambda: plain_python_while(n))
+    t_range = best_of(args.repeat, lambda: plain_python_range(n))
+    print(f"tight loop, {n} passes: yaseer {t_yaseer:.4f} s; plain Python while {t_while:.4f} s "
+          f"(ratio {t_yaseer / t_while:.2f}), for-range {t_range:.4f} s (ratio {t_yaseer / t_range:.2f})")
+    if have_bwbasic:
+        big = 1_000_000
+        t_bw = bwbasic_time(TIGHT_LOOP_BW.format(n=big), 1)
+        t_y = best_of(args.repeat, lambda: yaseer_in_process(TIGHT_LOOP.format(n=big)))
+        print(f"tight loop, {big} passes: bwbasic {t_bw:.3f} s, yaseer {t_y:.3f} s: {t_bw / t_y:.0f}x faster")
+
+    if have_bwbasic:
+        print(f"\nclassic benchmarks, loop counts scaled so that bwbasic needs ~{args.target:g} s")
+        print(f"{'program':8} {'scale':>6} {'bwbasic s':>10} {'yaseer s':>9} {'x faster':>9} "
+              f"{'process s':>10} {'x (process)':>11}")
+        pairs = [(f"bm{k}", f"bm{k}.bas", f"bw_bm{k}.bas") for k in range(1, 9)]
+        # bwbasic needs FOR and NEXT on lines of their own: its Ahl is the split form
+        pairs += [("ahl", "ahl.bas", "bw_ahl_split.bas"), ("ahl_split", "ahl_split.bas", "bw_ahl_split.bas")]
+        for name, ms_file, bw_file in pairs:
+            ms_text = (CLASSIC / ms_file).read_text()
+            bw_text = (CLASSIC / bw_file).read_text()
+            base = bwbasic_time(bw_text, 1)
+            factor = min(MAX_SCALE, max(1.0, args.target / max(base, 1e-2)))
+            for _ in range(3):  # refine: bwbasic's start-up makes the first estimate low
+                t_bw = bwbasic_time(scaled(bw_text, factor), 1)
+                if abs(t_bw - args.target) < 0.2 * args.target:
+                    break
+                factor = min(MAX_SCALE, factor * args.target / max(t_bw, 1e-2))
+            t_bw = bwbasic_time(scaled(bw_text, factor), args.repeat)
+            program = scaled(ms_text, factor)
+            t_y = best_of(args.repeat, lambda: yaseer_in_process(program))
+            t_p = yaseer_process_time(program, args.repeat)
+            print(f"{name:8} {factor:6.0f} {t_bw:10.3f} {t_y:9.4f} {t_bw / t_y:9.1f} {t_p:10.3f} {t_bw / t_p:11.1f}")
+    else:
+        print("bwbasic not found: classic comparisons skipped")
+
+    listing = ROOT / "listings" / "example1.bas"
+    if listing.exists():
+        first_output_time(listing)  # warm the lark table cache and the OS file cache
+        t_first = min(first_output_time(listing) for _ in range(5))
+        print(f"\nstart-up to first output of {listing.relative_to(ROOT)}: {t_first:.3f} s (best of 5)")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
