@@ -223,3 +223,19 @@ def test_reported_virtual_link_error_is_the_independent_error(method):
         closed = [[polar_closed_form(*p)[name] for name in case.columns] for p in points]
     expected = independent_worst(values, case.columns, case.angle_columns, closed)
     assert run.outcome.worst == pytest.approx(expected, rel=1e-6)
+
+
+def test_example5_forces_chain_agrees_with_the_reference():
+    """Example 5's chain with forces (PROG 2, 5, 2 with the crushing load, 2 with the joint force)."""
+    case = [c for c in cases.paper_cases() if c.name.startswith("paper Example 5") and c.linkage == "fourbar"][0]
+    run = ways.run_python(case, "half-angle", case.quick[:5], "array", repeat=1)
+    assert run.outcome.status == "ok" and run.outcome.worst < 1e-11
+
+
+def test_example2_differs_by_the_listings_vertical_velocity_only():
+    """Example 2's listing takes P = 650 V(4)|V(4)| with V(4) the vertical velocity; the
+    reference uses the velocity along the 90.1 deg axis: loads differ by tan^2(0.1 deg)."""
+    case = [c for c in cases.paper_cases() if c.name.startswith("paper Example 2") and c.linkage == "slider_crank"][0]
+    assert case.model_note
+    run = ways.run_python(case, "pseudographic", case.quick[:6], "array", repeat=1)
+    assert run.outcome.worst == pytest.approx(math.tan(math.radians(0.1)) ** 2, rel=1e-3)
