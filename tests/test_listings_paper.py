@@ -175,3 +175,31 @@ def test_the_papers_equations_without_the_slip_give_the_corrected_numbers(n):
     corrected = golden_csv(n)
     paper = run_csv(f"listings/example{n}.bas", "--method", "5=paper")
     assert np.all(np.abs(paper - corrected) <= 1e-8 * column_scale(corrected))
+
+
+def test_the_printed_crushing_direction_would_drive_the_jaw(tmp_path):
+    """Line 5050's `T(14) + 90` against the corrected `T(14) - 90`, at QQ = 120.1.
+
+    Only the load's direction differs, so by the power balance the crank torques differ by
+    (U_printed - U_corrected) * omega = -2 * (power of the load in the printed direction).
+    That power comes from the reference model (velocity of P on the real jaw): it is positive,
+    about 21 kW, i.e. the printed load drives the closing jaw and the crank has to brake."""
+    from yaseer.reference.paper_mechanisms import crushing_force, example_snapshots
+
+    text = (ROOT / "listings" / "example5.bas").read_text()
+    assert "T = T(14) - 90" in text
+    listing = tmp_path / "printed_direction.bas"
+    listing.write_text(text.replace("T = T(14) - 90", "T = T(14) + 90"))
+    printed, corrected = run_csv(str(listing)), golden_csv(5)
+    row = int(np.argmin(np.abs(corrected[:, 0] - 120.1)))
+
+    (state,) = example_snapshots(5, [120.1])
+    t14 = float(state.direction("jaw DoD", "D", "Do"))
+    force = float(crushing_force(t14, float(state.omega("jaw DoD"))))
+    velocity = [float(v) for v in state.velocity("jaw DoD", "P")]
+    direction = (math.cos(math.radians(t14 + 90)), math.sin(math.radians(t14 + 90)))
+    power = force * (direction[0] * velocity[0] + direction[1] * velocity[1])
+    assert power > 20_000
+    omega = -22.0
+    assert (printed[row, 1] - corrected[row, 1]) * omega == pytest.approx(-2 * power, rel=1e-9)
+    assert printed[row, 1] > 0 > corrected[row, 1]
