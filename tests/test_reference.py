@@ -641,10 +641,24 @@ PROGRAM2_MASSES_AND_LOADS = {
     "U(2)": 0.7, "G": 9.81, "Z(2)": 2}
 
 
-def _program_snapshots(program, q, angles, w):
-    from yaseer.reference.basic_linkages import FlexibleCrank, fourbar_sketch, program1_model, program2_model
+PROGRAM3_MASSES_AND_LOADS = {
+    "L(6)": 90, "T(6)": 20, "L(7)": 40, "R(0)": 25, "H(23)": 35, "R(5)": 15, "T(5)": -20, "R(7)": 70,
+    "H(6)": -10, "R(6)": 45, "H(7)": 5, "M(0)": 2, "M(1)": 0.8, "M(5)": 3, "I(0)": 0.2, "I(1)": 0.05,
+    "I(5)": 0.6, "U(3)": 0.9, "F(18)": -4, "G": 9.81, "Z(3)": 2}
 
-    if program == 1:
+
+def _program_snapshots(program, q, angles, w):
+    from yaseer.reference.basic_linkages import (FlexibleCrank, fourbar_sketch, program1_model, program2_model,
+                                                 program3_model)
+
+    if program == 3:
+        model = program3_model(dict(PROGRAM3_MASSES_AND_LOADS, **{"Q(3)": q}), FlexibleCrank(40))
+        pin = (40 * math.cos(math.radians(angles[0])), 40 * math.sin(math.radians(angles[0])))
+        bo = (-90 * math.cos(math.radians(20)), -90 * math.sin(math.radians(20)))
+        direction = math.degrees(math.atan2(pin[1] - bo[1], pin[0] - bo[0]))
+        sketch = model.coordinates({"crank": (0, 0, angles[0]), "block": (pin[0], pin[1], direction),
+                                    "follower": (bo[0], bo[1], direction)})
+    elif program == 1:
         model = program1_model(dict(PROGRAM1_MASSES_AND_LOADS, **{"Q(1)": q}), FlexibleCrank(0.021))
         sketch = model.coordinates({"crank": (0, 0, angles[0]), "rod": (0.05, 0.03, 200),
                                     "piston": (0.05, 0.03, 0)})
@@ -655,8 +669,8 @@ def _program_snapshots(program, q, angles, w):
     return model.analyse(angles, w, 0, sketch, level="forces")
 
 
-@pytest.mark.parametrize("program", [1, 2])
-@pytest.mark.parametrize("q", [1, 2, 3, 4])
+@pytest.mark.parametrize("program, q", [(1, 1), (1, 2), (1, 3), (1, 4), (2, 1), (2, 2), (2, 3), (2, 4),
+                                        (3, 1), (3, 3)])
 def test_program_reference_unknown_load_balances_the_energy(program, q):
     """With the unknown load found, the drive does no work: dT/dt (central differences of the
     kinetic energy) = power of all loads, the unknown one and gravity included."""

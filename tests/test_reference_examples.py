@@ -225,3 +225,28 @@ def test_program2_against_the_real_four_bar(q, crossed, tmp_path):
     names = (UNKNOWN_NAMES_2[q],) + PROGRAM2_OUTPUTS
     printed = _run_program(2, inputs, "T(12)", angles, names, UNKNOWN_NAMES_2[q], tmp_path)
     _compare(printed, program2(inputs, angles), names, {"T(13)", "T(14)"})
+
+
+PROGRAM3_INPUTS = {
+    "L(6)": 90, "T(6)": 20, "L(7)": 40, "W(0)": 6, "A(0)": -3, "D(3)": 5, "E(3)": -30, "R(0)": 25, "H(23)": 35,
+    "R(5)": 15, "T(5)": -20, "R(7)": 70, "H(6)": -10, "R(6)": 45, "H(7)": 5, "M(0)": 2, "M(1)": 0.8,
+    "M(5)": 3, "I(0)": 0.2, "I(1)": 0.05, "I(5)": 0.6, "U(3)": 0.9, "F(18)": -4, "G": 9.81, "Z(3)": 2,
+}
+PROGRAM3_OUTPUTS = ("L(5)", "D(4)", "E(4)", "T(9)", "W(4)", "A(4)", "X(6)", "Y(6)", "V(11)", "V(12)", "A(43)",
+                    "A(44)", "X(7)", "Y(7)", "V(13)", "V(14)", "A(45)", "A(46)", "F(12)", "F(13)", "F(14)",
+                    "F(15)", "N(3)", "U(4)", "F(16)", "F(17)")
+
+
+@pytest.mark.parametrize("q", [1, 3])
+def test_program3_against_the_real_fisc(q, tmp_path):
+    """GOSUB PROG 3 with masses, gravity, both loads, a flexible crank and each Q(3), against
+    basic_linkages.program3 (a block pinned to the crank slides along the follower)."""
+    from yaseer.reference.basic_linkages import UNKNOWN_NAMES_3, program3
+
+    inputs = dict(PROGRAM3_INPUTS, **{"Q(3)": q})
+    angles = [10.0, 95.0, 200.0, 300.0]
+    names = (UNKNOWN_NAMES_3[q],) + PROGRAM3_OUTPUTS
+    printed = _run_program(3, inputs, "T(7)", angles, names, UNKNOWN_NAMES_3[q], tmp_path)
+    model = program3(inputs, angles)
+    _compare(printed, model, names, {"T(9)"})
+    assert np.allclose(np.asarray(model["U(4)"], float), 0.05 * np.asarray(model["A(4)"], float), rtol=1e-12)

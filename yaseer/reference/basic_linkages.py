@@ -526,3 +526,97 @@ def _program2_row(s, crank, forces, q):
         row["F(25)"], row["F(26)"] = s.reaction("B", "follower")
         row["F(27)"], row["F(28)"] = s.reaction("Bo", "follower")
     return row
+
+
+# --------------------------------------------------------------------------- Program 3 in full
+
+UNKNOWN_NAMES_3 = {1: "U(3)", 3: "F(18)"}
+
+
+def program3_model(values: dict, crank: FlexibleCrank) -> Mechanism:
+    """Program 3's FISC with masses and loads from the contract's inputs ``values``.
+
+    Crank from Ao along Ao->A; a block pinned to the crank at A (its mass centre there)
+    slides along the follower and turns with it; the follower from Bo along Bo->A.
+    Known loads: U(3) on the crank, the perpendicular F(18) at the follower point;
+    Q(3) picks the unknown (1: U(3), 3: F(18)).
+    """
+    v = _inputs(values)
+    crank_body = Body("crank", mass=v("M(0)"), inertia=v("I(0)"), centre=polar(v("R(5)"), v("T(5)")),
+                      points={"P": polar(v("R(0)"), v("H(23)"))})
+    block = Body("block", mass=v("M(1)"), inertia=v("I(1)"), points={"A": (0, 0)})
+    follower = Body("follower", mass=v("M(5)"), inertia=v("I(5)"), centre=polar(v("R(6)"), v("H(7)")),
+                    points={"Bo": (0, 0), "P": polar(v("R(7)"), v("H(6)"))})
+    known = {1: Couple(crank_body, lambda s: v("U(3)")),
+             3: _perpendicular_load(follower, "follower", v("H(6)"), v("F(18)"))}
+    unknowns = {1: UnknownLoad(crank_body), 3: UnknownLoad(follower, "P", _perpendicular("follower", v("H(6)")))}
+    q = _selected(v, "Z(3)", "Q(3)", unknowns)
+    bo_from_ao = polar(v("L(6)"), _plus_180(v("T(6)")))
+    return Mechanism([crank_body, block, follower],
+                     [Revolute("Ao", crank_body, (0, 0), None, (0, 0)),
+                      *crank.pin(crank_body, block, "A"),
+                      Revolute("Bo", follower, "Bo", None, bo_from_ao),
+                      PointOnLine("slide", block, "A", follower, (0, 0), 0),
+                      AngleLock("lock", block, follower, 0),
+                      AngleDriver("crank", crank_body)],
+                     [load for k, load in known.items() if k != q], gravity=v("G"), unknown=unknowns.get(q))
+
+
+def _plus_180(angle):
+    """angle + 180 (exact for decimal strings)."""
+    if isinstance(angle, str):
+        from decimal import Decimal
+
+        return str(Decimal(angle) + 180)
+    return angle + 180
+
+
+def program3(values: dict, thetas_deg=None, number="float", dps=50) -> dict:
+    """Program 3 in full (kinematics, and forces when Z(3) = 2) as a real FISC.
+
+    ``values``: the contract's inputs by name (missing ones 0); ``thetas_deg``: crank
+    angles (default [T(7)]).  Returns L(5), D(4), E(4), T(9), W(4), A(4), the points
+    X(6)...A(44) and X(7)...A(46); with Z(3) = 2 the unknown, F(12)...F(17), N(3), U(4).
+    """
+    v = _inputs(values)
+    thetas = [v("T(7)")] if thetas_deg is None else list(thetas_deg)
+    crank = FlexibleCrank(v("L(7)"), v("D(3)"), v("E(3)"), len(thetas))
+    mechanism = program3_model(values, crank)
+    forces = v("Z(3)") == 2
+    bo = (-float(v("L(6)")) * _unit(float(v("T(6)")))[0], -float(v("L(6)")) * _unit(float(v("T(6)")))[1])
+
+    def sketch_at(theta, k):
+        length = float(crank.lengths[k])
+        pin = (length * _unit(theta)[0], length * _unit(theta)[1])
+        direction = math.degrees(math.atan2(pin[1] - bo[1], pin[0] - bo[0]))
+        return mechanism.coordinates({"crank": (0, 0, theta), "block": (pin[0], pin[1], direction),
+                                      "follower": (bo[0], bo[1], direction)})
+
+    def check(s):
+        pin, pivot = s.position("block", "A"), s.position("follower", "Bo")
+        if dot((pin[0] - pivot[0], pin[1] - pivot[1]), _unit(float(s.angle("follower")))) <= 0:
+            raise MechanismError("PROG 3 reference: the block passed through the follower's pivot")
+
+    snapshots = solve_each(mechanism, thetas, v("W(0)"), v("A(0)"), sketch_at, check, number, dps, crank,
+                           "forces" if forces else "accelerations")
+    return collect([_program3_row(s, crank, forces, _selected(v, "Z(3)", "Q(3)", UNKNOWN_NAMES_3))
+                    for s in snapshots], number)
+
+
+def _program3_row(s, crank, forces, q):
+    r = [p - q_ for p, q_ in zip(s.position("block", "A"), s.position("follower", "Bo"))]
+    v, a = s.velocity("block", "A"), s.acceleration("block", "A")
+    length = s.ar.sqrt(dot(r, r))
+    rate = dot(r, v) / length
+    row = {"L(5)": length, "D(4)": rate, "E(4)": (dot(v, v) + dot(r, a) - rate * rate) / length,
+           "T(9)": s.angle("follower"), "W(4)": s.omega("follower"), "A(4)": s.alpha("follower")}
+    row.update(_point_outputs(s, "crank", "P", ("X(6)", "Y(6)", "V(11)", "V(12)", "A(43)", "A(44)")))
+    row.update(_point_outputs(s, "follower", "P", ("X(7)", "Y(7)", "V(13)", "V(14)", "A(45)", "A(46)")))
+    if forces:
+        row[UNKNOWN_NAMES_3[q]] = s.unknown_value
+        row["F(12)"], row["F(13)"] = s.reaction("Ao", "crank")
+        row["F(14)"], row["F(15)"] = s.force_on("block", *crank.joint_names())
+        row["N(3)"] = s.normal_force("slide")
+        row["U(4)"] = s.moment_on("block", "slide", "lock")
+        row["F(16)"], row["F(17)"] = s.reaction("Bo", "follower")
+    return row

@@ -525,6 +525,16 @@ class Snapshot:
                 fy -= lam * row.get(index + 1, 0)
         return (fx, fy)
 
+    def moment_on(self, body: str, *joints: str):
+        """Total moment (ccw +) the named constraints exert on ``body`` about its frame origin."""
+        index = 3 * self.mechanism.body(body).index + 2
+        total = self.ar.num(0)
+        for joint in joints:
+            rows = self.mechanism.constraints[joint].jacobian(self.kin)
+            for lam, row in zip(self._multipliers(joint), rows):
+                total -= lam * row.get(index, 0)
+        return total
+
     def normal_force(self, joint: str):
         """Force of the line's body on the sliding point's body, along the line normal (PointOnLine)."""
         return -self._multipliers(joint)[0]
