@@ -186,7 +186,7 @@ def test_bench_command_quick(tmp_path, capsys):
     with open(tmp_path / "bench_laziness.csv") as handle:
         levels = {r["level"] for r in csv.DictReader(handle)}
     assert levels == {"positions", "+ velocities and accelerations", "+ forces"}
-    for name in ("bench.png", "bench.svg", "bench_summary.csv", "bench_newton.csv"):
+    for name in ("bench.png", "bench.svg", "bench_summary.csv", "bench_newton.csv", "bench_results.md"):
         assert (tmp_path / name).stat().st_size > 0
 
 

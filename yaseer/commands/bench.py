@@ -2,7 +2,8 @@
 
 Writes to ``--out`` (default ``bench-out``): ``bench.csv`` (every case x method x
 way), ``bench_summary.csv`` (per method and way), ``bench_newton.csv`` (Newton
-over its tolerances), ``bench_laziness.csv``, ``bench_table.md``, ``bench_summary.md`` and the chart ``bench.png`` /
+over its tolerances), ``bench_laziness.csv``, ``bench_results.md`` (the tables
+as markdown) and the chart ``bench.png`` /
 ``bench.svg``; prints the summary and the laziness table.  See docs/bench.md.
 """
 
@@ -41,8 +42,11 @@ def main(args) -> int:
     bench.write_csv(out / "bench_summary.csv", summary, list(summary[0]))
     bench.write_csv(out / "bench_newton.csv", newton_curve, list(newton_curve[0]))
     bench.write_csv(out / "bench_laziness.csv", laziness, list(laziness[0]))
-    (out / "bench_table.md").write_text(bench.format_markdown(rows))
-    (out / "bench_summary.md").write_text(bench.format_summary_markdown(summary))
+    (out / "bench_results.md").write_text(
+        "### Per method and way (the chart's points)\n\n" + bench.format_summary_markdown(summary)
+        + "\n### Newton over its tolerance\n\n" + bench.format_newton_markdown(newton_curve)
+        + "\n### Laziness\n\n" + bench.format_laziness_markdown(laziness)
+        + "\n### Every case: worst error (time per position)\n\n" + bench.format_markdown(rows))
     print(bench.format_table(summary))
     print()
     print("Newton over its tolerance (array way; median time, worst error over the cases):")

@@ -140,6 +140,27 @@ def format_summary_markdown(summary) -> str:
     return "\n".join(lines) + "\n"
 
 
+def format_newton_markdown(curve) -> str:
+    """Newton over its tolerance: time per position and worst error, per linkage."""
+    lines = ["| linkage | tol | time per position (array) | worst error | failures |", "|---|---|---|---|---|"]
+    for n in sorted(curve, key=lambda n: (n["linkage"], -n["tol"])):
+        lines.append(f"| {n['linkage'].replace('_', '-')} | {n['tol']:g} | {n['seconds_per_position'] * 1e6:.3g} us "
+                     f"| {n['worst_error']:.2g} | {n['failures']} |")
+    return "\n".join(lines) + "\n"
+
+
+def format_laziness_markdown(rows) -> str:
+    """The laziness measurement: time per position per level and way, ratio to positions only."""
+    lines = ["| linkage | level | array | per position |", "|---|---|---|---|"]
+    for linkage in dict.fromkeys(r["linkage"] for r in rows):
+        for level in LAZINESS_LEVELS:
+            cells = {r["way"]: r for r in rows if r["linkage"] == linkage and r["level"] == level}
+            array, single = cells["array"], cells["per position"]
+            lines.append(f"| {linkage.replace('_', '-')} | {level} | {array['seconds_per_position'] * 1e6:.3g} us "
+                         f"(x{array['ratio_to_positions_array']:.1f}) | {single['seconds_per_position'] * 1e6:.3g} us |")
+    return "\n".join(lines) + "\n"
+
+
 def format_markdown(rows) -> str:
     """Every case x method: worst error (time per position) per way, as a markdown table."""
     cases = list(dict.fromkeys(r["case"] for r in rows))
@@ -229,7 +250,7 @@ def newton_summary(rows) -> list[dict]:
     for (linkage, tol), members in groups.items():
         timed = [m["seconds_per_position"] for m in members
                  if math.isfinite(m["seconds_per_position"]) and m.get("single", True)]
-        errors = [m["worst_error"] for m in members if m["status"] != "exception"]
+        errors = [m["worst_error"] for m in members if m["status"] != "exception" and not m.get("model_note")]
         out.append({"linkage": linkage, "tol": tol,
                     "seconds_per_position": statistics.median(timed) if timed else math.nan,
                     "worst_error": max(errors) if errors else math.nan,
