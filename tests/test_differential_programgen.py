@@ -32,6 +32,7 @@ SCALARS = "ABCDEFGHJKMNPQRSUVWXYZ"
 # Constructs where yaseer is known to differ from GW-BASIC (docs/differential-findings.md);
 # switch one on to reproduce its finding.
 ZERO_TRIP_LOOPS = False  # F2: the control variable after a loop that runs zero times
+ERR_AFTER_RESUME = False  # F11: ERR is not reset to 0 by RESUME
 LONG_LINE = 60  # programs whose PC-BASIC output has a line this long are drawn again (80-column wrap)  # no I (loops), no L, O, T (keyword starts look-alikes)
 
 
@@ -48,6 +49,7 @@ class Program:
     next_main: int = 10
     next_sub: int = 5000
     numeric: bool = False
+    arrays: set[str] = field(default_factory=set)
 
     def line(self, text: str) -> int:
         number = self.next_main
@@ -361,9 +363,49 @@ def data_layout_block(rng: random.Random, prog: Program) -> None:
     prog.line("READ P, P1$, P2$, P3$, P4: PRINT P; \"[\"; P1$; \"][\"; P2$; \"][\"; P3$; \"]\"; P4")
 
 
+ARRAY_NAMES = "BCDEFHJK"  # not A (the paper's implicit A(53)), G (ON ERROR block), nor the loop letters
+
+
+def array_block(rng: random.Random, prog: Program) -> None:
+    """DIM, a FOR loop filling an array, READ into elements, a 2-D array, a sum."""
+    free = [name for name in ARRAY_NAMES if name not in prog.arrays]
+    if len(free) < 2:
+        return
+    one, two = free[0], free[1]
+    prog.arrays.update((one, two))
+    size = rng.randint(3, 12)
+    scale = rng.choice([1, 2, 3])
+    prog.line(f"DIM {one}({size}), {two}(2, 3)")
+    prog.line(f"FOR K = 0 TO {size}: {one}(K) = K * {scale} - {rng.randint(0, 5)}: NEXT K")
+    items = [basic_number(float(small_number(rng))) for _ in range(3)]
+    data_line = prog.line("DATA " + ", ".join(items))
+    prog.line(f"RESTORE {data_line}: READ {one}(1), {two}(2, 3), {two}(0, 0)")
+    prog.line(f"S = 0: FOR K = {size} TO 0 STEP -1: S = S + {one}(K): NEXT: PRINT S; {two}(2, 3); {two}(0, 0); {two}(1, 1)")
+
+
+def error_block(rng: random.Random, prog: Program) -> None:
+    """An error inside a subroutine, trapped; RESUME to a line; ERR and ERL; the trap switched off."""
+    after = prog.reserve() + 20
+    handler = prog.sub(['PRINT "E"; ERR; ERL;', f"RESUME {after}"])
+    failing = prog.sub(["PRINT \"s\";", f"X = ASC(\"\")" if rng.random() < 0.5 else "X = SQR(-1)",
+                        'PRINT "not here"', "RETURN"])
+    prog.line(f"ON ERROR GOTO {handler}")
+    prog.line(f"GOSUB {failing}")
+    prog.line(f'PRINT "back"; {"ERR; " if ERR_AFTER_RESUME else ""}ERL: ON ERROR GOTO 0')
+
+
+def zone_block(rng: random.Random, prog: Program) -> None:
+    """Comma zones after strings of every length, TAB behind the cursor, a trailing comma."""
+    # at most 12 characters a word: GW-BASIC's comma wraps to a new line past the
+    # 80-column screen's last full zone, yaseer has no screen width
+    words = ['"' + "x" * rng.randint(0, 12) + '"' for _ in range(3)]
+    prog.line(f"PRINT {words[0]}, {words[1]}; {words[2]},")
+    prog.line(f'PRINT TAB({rng.randint(1, 30)}); "t"; TAB({rng.randint(1, 30)}); "u"; SPC({rng.randint(0, 9)}); 5')
+
+
 EXACT_BLOCKS = [for_block, gosub_block, if_block, on_goto_block, data_block, string_block,
                 expression_block, using_block, def_fn_block, on_error_block, functions_block, control_block,
-                data_layout_block]
+                data_layout_block, array_block, error_block, zone_block]
 
 
 # ---------------------------------------------------------------------------

@@ -1,0 +1,7 @@
+10 REM RESUME resets ERR to 0 (ERL keeps the line)
+20 ON ERROR GOTO 100
+30 X = SQR(-1)
+40 PRINT "back"; ERR; ERL
+50 END
+100 PRINT "trap"; ERR; ERL
+110 RESUME 40
