@@ -19,7 +19,7 @@ from yaseer.reference.arithmetic import MpArithmetic
 from yaseer.reference.solver import (AngleDriver, AngleLock, Body, Couple, Drive, Mechanism,
                                      MechanismError, PointLoad, PointOnLine, Revolute, polar)
 from yaseer.reference.paper_mechanisms import example_mechanism, example_snapshots
-from yaseer.reference import basic_linkages
+from yaseer.reference import basic_linkages, programs
 from yaseer.reference.basic_linkages import fourbar_model as four_bar
 
 
@@ -648,8 +648,8 @@ PROGRAM3_MASSES_AND_LOADS = {
 
 
 def _program_snapshots(program, q, angles, w):
-    from yaseer.reference.basic_linkages import (FlexibleCrank, fourbar_sketch, program1_model, program2_model,
-                                                 program3_model)
+    from yaseer.reference.basic_linkages import FlexibleCrank, fourbar_sketch
+    from yaseer.reference.programs import program1_model, program2_model, program3_model
 
     if program == 3:
         model = program3_model(dict(PROGRAM3_MASSES_AND_LOADS, **{"Q(3)": q}), FlexibleCrank(40))
@@ -686,7 +686,7 @@ def test_program_reference_unknown_load_balances_the_energy(program, q):
 def test_program1_reference_refuses_an_unknown_that_cannot_balance():
     """An unknown perpendicular force at R = 0 on the crank has no moment: a clear error."""
     with pytest.raises(MechanismError, match="cannot balance"):
-        basic_linkages.program1({"L(2)": 2, "L(3)": 6, "T(4)": 0, "W(2)": 1, "Z(1)": 2, "Q(1)": 2,
+        programs.program1({"L(2)": 2, "L(3)": 6, "T(4)": 0, "W(2)": 1, "Z(1)": 2, "Q(1)": 2,
                                  "U(1)": 1.0}, [40.0])
     with pytest.raises(ValueError, match="Q\\(1\\)"):
-        basic_linkages.program1({"L(2)": 2, "L(3)": 6, "Z(1)": 2, "Q(1)": 7}, [40.0])
+        programs.program1({"L(2)": 2, "L(3)": 6, "Z(1)": 2, "Q(1)": 7}, [40.0])

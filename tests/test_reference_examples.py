@@ -191,9 +191,9 @@ def _compare(printed, model, names, angle_names):
 @pytest.mark.parametrize("q", [1, 2, 3, 4])
 def test_program1_against_the_real_slider_crank(q, tmp_path):
     """GOSUB PROG 1 with masses, gravity, every kind of known load, a flexible crank and each
-    Q(1), against basic_linkages.program1 (bodies, pins, a piston on its line, the unknown
+    Q(1), against reference.programs.program1 (bodies, pins, a piston on its line, the unknown
     load found with the Lagrange multipliers)."""
-    from yaseer.reference.basic_linkages import UNKNOWN_NAMES_1, program1
+    from yaseer.reference.programs import UNKNOWN_NAMES_1, program1
 
     inputs = dict(PROGRAM1_INPUTS, **{"Q(1)": q})
     angles = [10.0, 95.0, 200.0, 300.0]
@@ -217,8 +217,8 @@ PROGRAM2_OUTPUTS = ("T(13)", "W(6)", "A(6)", "T(14)", "W(7)", "A(7)", "X(3)", "Y
 @pytest.mark.parametrize("q, crossed", [(1, 0), (2, 1), (3, 0), (4, 1)])
 def test_program2_against_the_real_four_bar(q, crossed, tmp_path):
     """GOSUB PROG 2 with masses, gravity, every kind of known load, a flexible crank, each
-    Q(2) and both assemblies, against basic_linkages.program2."""
-    from yaseer.reference.basic_linkages import UNKNOWN_NAMES_2, program2
+    Q(2) and both assemblies, against reference.programs.program2."""
+    from yaseer.reference.programs import UNKNOWN_NAMES_2, program2
 
     inputs = dict(PROGRAM2_INPUTS, **{"Q(2)": q, "L(10)": crossed})
     angles = [10.0, 95.0, 200.0, 300.0]
@@ -240,8 +240,8 @@ PROGRAM3_OUTPUTS = ("L(5)", "D(4)", "E(4)", "T(9)", "W(4)", "A(4)", "X(6)", "Y(6
 @pytest.mark.parametrize("q", [1, 3])
 def test_program3_against_the_real_fisc(q, tmp_path):
     """GOSUB PROG 3 with masses, gravity, both loads, a flexible crank and each Q(3), against
-    basic_linkages.program3 (a block pinned to the crank slides along the follower)."""
-    from yaseer.reference.basic_linkages import UNKNOWN_NAMES_3, program3
+    reference.programs.program3 (a block pinned to the crank slides along the follower)."""
+    from yaseer.reference.programs import UNKNOWN_NAMES_3, program3
 
     inputs = dict(PROGRAM3_INPUTS, **{"Q(3)": q})
     angles = [10.0, 95.0, 200.0, 300.0]
