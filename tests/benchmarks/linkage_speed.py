@@ -56,12 +56,20 @@ def program_5(theta):
     return virtual_link(p.real, p.imag, -p.imag, p.real, -p.real, -p.imag)
 
 
+def solve_floor(theta):
+    """The floor under the force cases: one batched numpy.linalg.solve of 9x9 systems."""
+    size = np.size(theta)
+    matrices = np.eye(9) + 0.1 * np.sin(np.arange(81.0)).reshape(9, 9) + np.zeros((size, 1, 1))
+    return np.linalg.solve(matrices, np.ones((size, 9, 1)))
+
+
 CASES = {
     "PROG 1 slider-crank, pos+vel+acc+forces": program_1,
     "PROG 2 four-bar, pos+vel+acc+forces": program_2,
     "PROG 2 four-bar, pos+vel+acc only": program_2_kinematics_only,
     "PROG 3 inverted slider-crank, pos+vel+acc+forces": program_3,
     "PROG 5 virtual link": program_5,
+    "floor: numpy.linalg.solve of one 9x9 system": solve_floor,
 }
 
 

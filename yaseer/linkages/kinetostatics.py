@@ -167,16 +167,18 @@ def solve_kinetostatics(
 
 def _solve(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
     """Solve the equations-first system at every position with one batched
-    ``numpy.linalg.solve``, rows scaled to unit size; singular systems raise."""
+    ``numpy.linalg.solve``; singular systems raise.
+
+    Scaling a row does not change the solution, so the rows are scaled only in
+    the singularity test: no component may exceed SINGULAR_GAIN times the largest
+    right-hand side of the rows scaled to unit size."""
     row_scale = np.max(np.abs(matrix), axis=1)
     row_scale[row_scale == 0] = 1.0
-    scaled = np.moveaxis(matrix / row_scale[:, None], (0, 1), (-2, -1))
-    right = np.moveaxis(rhs / row_scale, 0, -1)
     try:
-        solution = np.linalg.solve(scaled, right[..., None])[..., 0]
+        solution = np.linalg.solve(np.moveaxis(matrix, (0, 1), (-2, -1)), np.moveaxis(rhs, 0, -1)[..., None])[..., 0]
     except np.linalg.LinAlgError:
         raise SingularForceError("the selected unknown cannot balance the loads") from None
-    gain_bound = SINGULAR_GAIN * np.max(np.abs(right), axis=-1, keepdims=True)
+    gain_bound = SINGULAR_GAIN * np.moveaxis(np.max(np.abs(rhs) / row_scale, axis=0, keepdims=True), 0, -1)
     if not np.all(np.abs(solution) <= gain_bound):
         raise SingularForceError("the selected unknown cannot balance the loads")
     return solution
