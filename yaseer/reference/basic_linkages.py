@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 
 from yaseer.reference.arithmetic import arithmetic_for
-from yaseer.reference.solver import (AngleDriver, AngleLock, Body, LengthDriver, Mechanism, MechanismError,
+from yaseer.reference.solver import (AngleDriver, Body, LengthDriver, Mechanism, MechanismError,
                                      PointOnLine, Revolute, cross, dot, normalise_degrees, polar)
 
 
@@ -252,42 +252,11 @@ def inverted_slider_crank(L6, T6, L7, thetas_deg, omega=0, alpha=0, crank_rate=0
 
     ``L7``, ``crank_rate``, ``crank_accel``: the crank length and D(3), E(3)
     (numbers, or one per angle for a flexible crank).  The block at A carries
-    the pin; it slides along the follower, whose line passes through Bo.
+    the pin; it slides along the follower, whose line passes through Bo
+    (the kinematics of :func:`yaseer.reference.programs.program3`).
     """
-    ar = arithmetic_for(number, dps)
-    thetas = list(thetas_deg)
-    crank = FlexibleCrank(L7, crank_rate, crank_accel, len(thetas))
-    crank_body, block = Body("crank"), Body("block", points={"A": (0, 0)})
-    follower = Body("follower", points={"Bo": (0, 0)})
-    ao_from_bo = _polar_xy(ar, L6, T6)
-    bo_xy = (-ao_from_bo[0], -ao_from_bo[1])
-    mechanism = Mechanism([crank_body, block, follower],
-                          [Revolute("Ao", crank_body, (0, 0), None, (0, 0)),
-                           *crank.pin(crank_body, block, "A"),
-                           Revolute("Bo", follower, "Bo", None, bo_xy),
-                           PointOnLine("A", block, "A", follower, (0, 0), 0),
-                           AngleLock("block", block, follower, 0),
-                           AngleDriver("crank", crank_body)])
-    bo_float = (float(bo_xy[0]), float(bo_xy[1]))
+    from yaseer.reference.programs import program3
 
-    def sketch_at(theta, k):
-        length = float(crank.lengths[k])
-        pin = (length * _unit(theta)[0], length * _unit(theta)[1])
-        direction = math.degrees(math.atan2(pin[1] - bo_float[1], pin[0] - bo_float[0]))
-        return mechanism.coordinates({"crank": (0, 0, theta), "block": (pin[0], pin[1], direction),
-                                      "follower": (bo_float[0], bo_float[1], direction)})
-
-    def check(s):
-        pin, pivot = s.position("block", "A"), s.position("follower", "Bo")
-        if dot((pin[0] - pivot[0], pin[1] - pivot[1]), _unit(float(s.angle("follower")))) <= 0:
-            raise MechanismError("FISC: the block passed through the follower's pivot")
-
-    rows = []
-    for s in solve_each(mechanism, thetas, omega, alpha, sketch_at, check, number, dps, crank):
-        r = [p - q for p, q in zip(s.position("block", "A"), s.position("follower", "Bo"))]
-        v, a = s.velocity("block", "A"), s.acceleration("block", "A")
-        length = s.ar.sqrt(dot(r, r))
-        rate = dot(r, v) / length
-        rows.append({"L(5)": length, "D(4)": rate, "E(4)": (dot(v, v) + dot(r, a) - rate * rate) / length,
-                     "T(9)": s.angle("follower"), "W(4)": s.omega("follower"), "A(4)": s.alpha("follower")})
-    return collect(rows, number)
+    r = program3({"L(6)": L6, "T(6)": T6, "L(7)": L7, "W(0)": omega, "A(0)": alpha, "D(3)": crank_rate,
+                  "E(3)": crank_accel}, thetas_deg, number, dps)
+    return {name: r[name] for name in ("L(5)", "D(4)", "E(4)", "T(9)", "W(4)", "A(4)")}
