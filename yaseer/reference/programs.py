@@ -111,7 +111,6 @@ def program1(values: dict, thetas_deg=None, number="float", dps=50) -> dict:
     thetas = [v("T(2)")] if thetas_deg is None else list(thetas_deg)
     crank = FlexibleCrank(v("L(2)"), v("D(0)"), v("E(0)"), len(thetas))
     mechanism = program1_model(values, crank)
-    forces = v("Z(1)") == 2
     axis = float(v("T(4)"))
 
     def sketch_at(theta, k):
@@ -127,10 +126,8 @@ def program1(values: dict, thetas_deg=None, number="float", dps=50) -> dict:
         if dot(run, _unit(axis)) <= 0:
             raise MechanismError("PROG 1 reference: the piston left its assembly branch")
 
-    snapshots = solve_each(mechanism, thetas, v("W(2)"), v("A(2)"), sketch_at, check, number, dps, crank,
-                           "forces" if forces else "accelerations")
-    return collect([_program1_row(s, crank, forces, _selected(v, "Z(1)", "Q(1)", UNKNOWN_NAMES_1))
-                    for s in snapshots], number)
+    return _solve_program(v, mechanism, crank, thetas, ("W(2)", "A(2)", "Z(1)", "Q(1)"), UNKNOWN_NAMES_1,
+                          sketch_at, check, _program1_row, number, dps)
 
 
 def _program1_row(s, crank, forces, q):
@@ -201,6 +198,16 @@ def program2_model(values: dict, crank: FlexibleCrank) -> Mechanism:
                      loads, gravity=v("G"), unknown=unknowns.get(q))
 
 
+def _solve_program(v, mechanism, crank, thetas, names, unknown_names, sketch_at, check, row, number, dps):
+    """Solve each angle and read its outputs; ``names``: the program's (rate, acceleration, Z, Q) inputs."""
+    rate, acceleration, z_name, q_name = names
+    forces = v(z_name) == 2
+    snapshots = solve_each(mechanism, thetas, v(rate), v(acceleration), sketch_at, check, number, dps, crank,
+                           "forces" if forces else "accelerations")
+    selected = _selected(v, z_name, q_name, unknown_names)
+    return collect([row(s, crank, forces, selected) for s in snapshots], number)
+
+
 def _selected(v, z_name, q_name, unknowns):
     """The Q choice when forces are asked for (Z = 2), else None; a bad Q is an error."""
     if v(z_name) != 2:
@@ -223,7 +230,6 @@ def program2(values: dict, thetas_deg=None, number="float", dps=50) -> dict:
     thetas = [v("T(12)")] if thetas_deg is None else list(thetas_deg)
     crank = FlexibleCrank(v("L(12)"), v("D(2)"), v("E(2)"), len(thetas))
     mechanism = program2_model(values, crank)
-    forces = v("Z(2)") == 2
     side = -1 if v("L(10)") == 1 else 1
     pivot = _polar_xy(FLOAT, v("L(11)"), v("T(11)"))
     sketch_at = lambda theta, k: fourbar_sketch(mechanism, theta, crank.lengths[k], v("L(13)"),  # noqa: E731
@@ -234,10 +240,8 @@ def program2(values: dict, thetas_deg=None, number="float", dps=50) -> dict:
         if side * cross((bo[0] - a[0], bo[1] - a[1]), (b[0] - a[0], b[1] - a[1])) <= 0:
             raise MechanismError("PROG 2 reference: the four-bar left its assembly branch")
 
-    snapshots = solve_each(mechanism, thetas, v("W(5)"), v("A(5)"), sketch_at, check, number, dps, crank,
-                           "forces" if forces else "accelerations")
-    return collect([_program2_row(s, crank, forces, _selected(v, "Z(2)", "Q(2)", UNKNOWN_NAMES_2))
-                    for s in snapshots], number)
+    return _solve_program(v, mechanism, crank, thetas, ("W(5)", "A(5)", "Z(2)", "Q(2)"), UNKNOWN_NAMES_2,
+                          sketch_at, check, _program2_row, number, dps)
 
 
 def _program2_row(s, crank, forces, q):
@@ -310,7 +314,6 @@ def program3(values: dict, thetas_deg=None, number="float", dps=50) -> dict:
     thetas = [v("T(7)")] if thetas_deg is None else list(thetas_deg)
     crank = FlexibleCrank(v("L(7)"), v("D(3)"), v("E(3)"), len(thetas))
     mechanism = program3_model(values, crank)
-    forces = v("Z(3)") == 2
     bo = (-float(v("L(6)")) * _unit(float(v("T(6)")))[0], -float(v("L(6)")) * _unit(float(v("T(6)")))[1])
 
     def sketch_at(theta, k):
@@ -325,10 +328,8 @@ def program3(values: dict, thetas_deg=None, number="float", dps=50) -> dict:
         if dot((pin[0] - pivot[0], pin[1] - pivot[1]), _unit(float(s.angle("follower")))) <= 0:
             raise MechanismError("PROG 3 reference: the block passed through the follower's pivot")
 
-    snapshots = solve_each(mechanism, thetas, v("W(0)"), v("A(0)"), sketch_at, check, number, dps, crank,
-                           "forces" if forces else "accelerations")
-    return collect([_program3_row(s, crank, forces, _selected(v, "Z(3)", "Q(3)", UNKNOWN_NAMES_3))
-                    for s in snapshots], number)
+    return _solve_program(v, mechanism, crank, thetas, ("W(0)", "A(0)", "Z(3)", "Q(3)"), UNKNOWN_NAMES_3,
+                          sketch_at, check, _program3_row, number, dps)
 
 
 def _program3_row(s, crank, forces, q):
