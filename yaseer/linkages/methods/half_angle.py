@@ -37,16 +37,11 @@ from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.fourbar import UNCROSSED, FourBar
 from yaseer.linkages.registry import register
 
-from .assemble import CrankInput, first_index, fourbar_result, ground_pivot, side_of
+from .assemble import CrankInput, fourbar_result, ground_pivot, side_of
 
 
-@register("fourbar", "half-angle-printed")
-def fourbar_half_angle_printed(ground_length, ground_angle_deg, crank_length, coupler_length, follower_length,
-                               crank_angle_deg, omega=0.0, alpha=0.0, *, crank_length_rate=0.0,
-                               crank_length_accel=0.0, branch=UNCROSSED) -> FourBar:
-    """Seed 003's position formulas as printed; same arguments and result as ``fourbar_closed``."""
-    crank = CrankInput(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel)
-    frame = _Frame(ground_length, ground_angle_deg, crank_length, coupler_length, follower_length, crank_angle_deg)
+def _printed_angles(frame: "_Frame", branch):
+    """Seed 003's listing as printed: the quadratic formula, 2*ATAN, BET = ASIN(...)."""
     with np.errstate(all="ignore"):
         aa, bb, cc = frame.coefficients()
         root = np.sqrt(bb**2 - 4 * aa * cc)  # a negative discriminant gives NaN: Fortran's SQRT would fail
@@ -54,17 +49,11 @@ def fourbar_half_angle_printed(ground_length, ground_angle_deg, crank_length, co
         phi_minus = 2 * np.arctan((-bb - root) / (2 * aa))
         phi = frame.pick(phi_plus, phi_minus, branch)
         beta = np.arcsin((frame.c * np.sin(phi) - frame.a * np.sin(frame.theta)) / frame.b)
-        return fourbar_result(crank, ground_pivot(ground_length, ground_angle_deg),
-                              beta + frame.turn, phi + frame.turn, coupler_length)
+    return beta, phi
 
 
-@register("fourbar", "half-angle")
-def fourbar_half_angle(ground_length, ground_angle_deg, crank_length, coupler_length, follower_length,
-                       crank_angle_deg, omega=0.0, alpha=0.0, *, crank_length_rate=0.0,
-                       crank_length_accel=0.0, branch=UNCROSSED) -> FourBar:
-    """The same quadratic solved without cancellation; same arguments and result as ``fourbar_closed``."""
-    crank = CrankInput(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel)
-    frame = _Frame(ground_length, ground_angle_deg, crank_length, coupler_length, follower_length, crank_angle_deg)
+def _stable_angles(frame: "_Frame", branch):
+    """The same quadratic without cancellation; AssemblyError where it has no real root."""
     aa, bb, cc = frame.coefficients()
     discriminant = bb**2 - 4 * aa * cc
     if np.any(discriminant < 0) or np.any(frame.b <= 0) or np.any(frame.c <= 0):
@@ -72,8 +61,32 @@ def fourbar_half_angle(ground_length, ground_angle_deg, crank_length, coupler_le
     q = -(bb + np.where(bb < 0, -1.0, 1.0) * np.sqrt(discriminant)) / 2
     phi = frame.pick(2 * np.arctan2(q, aa), 2 * np.arctan2(cc, q), branch)
     b_point = frame.d + frame.c * np.exp(1j * phi) - frame.a * np.exp(1j * frame.theta)
-    return fourbar_result(crank, ground_pivot(ground_length, ground_angle_deg),
-                          np.angle(b_point) + frame.turn, phi + frame.turn, coupler_length)
+    return np.angle(b_point), phi
+
+
+def _half_angle_method(name: str, angles, summary: str):
+    """Register a four-bar method with ``fourbar_closed``'s arguments whose positions
+    come from ``angles(frame, branch)`` -> (coupler, Bo->B) in the fixed link's frame."""
+
+    def method(ground_length, ground_angle_deg, crank_length, coupler_length, follower_length, crank_angle_deg,
+               omega=0.0, alpha=0.0, *, crank_length_rate=0.0, crank_length_accel=0.0, branch=UNCROSSED) -> FourBar:
+        crank = CrankInput(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel)
+        frame = _Frame(ground_length, ground_angle_deg, crank_length, coupler_length, follower_length,
+                       crank_angle_deg)
+        beta, phi = angles(frame, branch)
+        with np.errstate(all="ignore"):
+            return fourbar_result(crank, ground_pivot(ground_length, ground_angle_deg),
+                                  beta + frame.turn, phi + frame.turn, coupler_length)
+
+    method.__name__ = method.__qualname__ = "fourbar_" + name.replace("-", "_")
+    method.__doc__ = f"{summary}; same arguments and result as ``fourbar_closed``."
+    return register("fourbar", name)(method)
+
+
+fourbar_half_angle_printed = _half_angle_method(
+    "half-angle-printed", _printed_angles, "Seed 003's position formulas as printed")
+fourbar_half_angle = _half_angle_method(
+    "half-angle", _stable_angles, "The same quadratic solved without cancellation")
 
 
 class _Frame:
