@@ -690,3 +690,15 @@ def test_program1_reference_refuses_an_unknown_that_cannot_balance():
                                  "U(1)": 1.0}, [40.0])
     with pytest.raises(ValueError, match="Q\\(1\\)"):
         programs.program1({"L(2)": 2, "L(3)": 6, "Z(1)": 2, "Q(1)": 7}, [40.0])
+
+
+@pytest.mark.parametrize("program, inputs, q_name", [(1, PROGRAM1_MASSES_AND_LOADS, "Q(1)"),
+                                                    (2, PROGRAM2_MASSES_AND_LOADS, "Q(2)"),
+                                                    (3, PROGRAM3_MASSES_AND_LOADS, "Q(3)")])
+def test_program_references_in_mpmath(program, inputs, q_name):
+    run = getattr(programs, f"program{program}")
+    values = dict(inputs, **{q_name: 3, "W(2)": -8, "W(5)": 7, "W(0)": 6, "L(12)": 40, "L(7)": 40})
+    rough = run(values, [40.0])
+    exact = run(values, [40.0], number="mpmath", dps=40)
+    for name, value in rough.items():
+        assert abs(float(exact[name][0]) - value[0]) <= 1e-12 * (1 + abs(value[0])), name
