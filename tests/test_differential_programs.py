@@ -8,7 +8,8 @@ programs a run generates (40 by default); ``YASEER_DIFF_SEED`` the seed.
 
 The corpus (tests/corpus/*.bas) holds the programs on which yaseer once
 differed from PC-BASIC, each with PC-BASIC's output in ``NAME.expected``
-(recorded by ``python tests/test_differential_programs.py --record``).
+(recorded by ``python tests/test_differential_programs.py --record``).  Open findings
+wait in tests/corpus/pending/; ``--pending`` tells which of them yaseer now gets right.
 """
 
 from __future__ import annotations
@@ -93,6 +94,16 @@ def record() -> None:
             print("recorded", target)
 
 
-if __name__ == "__main__" and "--record" in sys.argv:
-    sys.path.insert(0, str(Path(__file__).parent))
-    record()
+def pending_status() -> None:
+    """For each open finding in tests/corpus/pending/: does yaseer now print PC-BASIC's output?"""
+    for case in sorted((CORPUS / "pending").glob("*.bas")):
+        expected = case.with_suffix(".expected").read_text()
+        verdict = "FIXED (move it to tests/corpus/)" if run_yaseer(case.read_text()) == expected else "still differs"
+        print(f"{case.name}: {verdict}")
+
+
+if __name__ == "__main__":
+    if "--record" in sys.argv:
+        record()
+    if "--pending" in sys.argv:
+        pending_status()
