@@ -269,3 +269,16 @@ def test_parse_range_and_listing_helpers():
     with pytest.raises(BasicError, match="Syntax error"):
         parse_listing("PRINT 1\n10 A\n")
     assert re.fullmatch(r"10 A B\n20 C\n", program_text(parse_listing(program_text(program))))
+
+
+def test_files_lists_the_listings_in_the_directory(session, tmp_path):
+    (tmp_path / "b.bas").write_text("10 END\n")
+    (tmp_path / "a.bas").write_text("10 END\n")
+    (tmp_path / "notes.txt").write_text("x")
+    assert after(session, "FILES") == "a.bas\nb.bas\n"
+
+
+def test_help_names_every_command(session):
+    shown = after(session, "help")
+    for command in ("LIST", "DELETE", "EDIT", "RENUM", "RUN", "CONT", "NEW", "PROG", "LOAD", "SAVE", "FILES", "SYSTEM"):
+        assert command in shown

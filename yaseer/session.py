@@ -197,8 +197,19 @@ def read_listing_file(name: str, directory: Path) -> Program:
 
 # --- the session ----------------------------------------------------------------
 
+HELP_TEXT = """\
+10 PRINT X          store line 10 (10 alone deletes it)
+LIST [a-b]          show lines            DELETE a-b   remove lines
+EDIT n              edit line n           RENUM [new[,old[,step]]]
+RUN [n] | RUN "f"   run PROG 0            CONT         go on after STOP
+NEW                 erase this area       PROG n       edit area n (0-9)
+LOAD "f" | SAVE "f" read / write a .bas   FILES        list the .bas files here
+PRINT 2*3, GOSUB PROG 5, ...              run at once (direct mode)
+SYSTEM, BYE, Ctrl-D leave                 Ctrl-C       break a running program
+"""
+
 _COMMAND = re.compile(
-    r"\s*(LIST|DELETE|RENUM|EDIT|NEW|RUN|CONT|LOAD|SAVE|PROG|SYSTEM|BYE)(?![A-Z$(=])(.*)$",
+    r"\s*(LIST|DELETE|RENUM|EDIT|NEW|RUN|CONT|LOAD|SAVE|PROG|FILES|HELP|SYSTEM|BYE)(?![A-Z$(=])(.*)$",
     re.I | re.S,
 )
 
@@ -361,6 +372,17 @@ class Session:
         if argument or not self._can_continue:
             raise BasicError("Can't continue", CANT_CONTINUE)
         self._execute(self.engine.cont, in_program=True)
+
+    def command_files(self, argument: str) -> None:
+        """FILES: the listings (``*.bas``) in the directory LOAD and SAVE use."""
+        if argument:
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        for path in sorted(self.directory.glob("*.bas")):
+            self.write(path.name + "\n")
+
+    def command_help(self, argument: str) -> None:
+        """HELP: the commands, one line each."""
+        self.write(HELP_TEXT)
 
     def command_system(self, argument: str) -> None:
         """SYSTEM: leave the session."""

@@ -16,7 +16,7 @@ from typing import Callable
 BANNER = (
     "yaseer - the Al-Yaseer pocket computer. PROG 1, 2, 3 and 5 hold the library programs.\n"
     "Type numbered lines to store them; LIST, RUN, CONT, NEW, DELETE, RENUM, EDIT, LOAD, SAVE, PROG n;\n"
-    "SYSTEM (or Ctrl-D) leaves.\n"
+    "HELP lists the commands; SYSTEM (or Ctrl-D) leaves.\n"
 )
 
 Reader = Callable[[str, str], str]  # (prompt, text put up for editing) -> the line typed
