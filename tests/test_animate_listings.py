@@ -157,3 +157,14 @@ def test_a_listing_that_dims_an_input_array_small_still_animates():
     for frame in frames:
         (slider,) = frame.snapshots[0].sliders
         assert slider.angle_deg == 0.0 and slider.centre[1] == pytest.approx(-1.0)  # axis y = -e
+
+
+def test_angle_option_sets_the_unit_of_the_trigonometric_functions():
+    """In radians, T(2) = ATN(1) * 4 is 3.14159: the recorded crank angle is what the listing computed."""
+    from yaseer.animation import record_run
+
+    text = "10 L(2) = 1: L(3) = 3: T(2) = ATN(1) * 4: GOSUB PROG 1: PRINT T(2)\n"
+    (radians,) = record_run(text, angle="rad").frames
+    (degrees,) = record_run(text).frames
+    assert radians.crank_angle == pytest.approx(math.pi)
+    assert degrees.crank_angle == pytest.approx(180.0)

@@ -319,14 +319,16 @@ class Recording:
     error: Exception | None = None
 
 
-def record_run(text: str, methods: dict[int, str] | None = None, progress_file=None) -> Recording:
+def record_run(text: str, methods: dict[int, str] | None = None, progress_file=None,
+               angle: str = "deg") -> Recording:
     """Run the listing ``text`` once, recording its frames (see :class:`Recorder`).
 
     PRINT and LPRINT output both close frames.  A BASIC error (syntax, run
     time, a mechanism that cannot be assembled) ends the run: the frames
     recorded before it are kept with the error, so the animation can show the
     mechanism up to where the method broke.  A progress counter of printed
-    lines appears on stderr if the run takes more than a second.
+    lines appears on stderr if the run takes more than a second.  ``angle``
+    is the unit of the trigonometric functions, as ``yaseer run --angle``.
     """
     from yaseer.basic.errors import BasicError
     from yaseer.progress import bar
@@ -348,7 +350,7 @@ def record_run(text: str, methods: dict[int, str] | None = None, progress_file=N
             binding.install(AreaInterceptor(machine, recorder), chosen)
 
         try:
-            machine = create_machine(tap, tap, methods, install)
+            machine = create_machine(tap, tap, methods, install, angle)
             machine.load(text)
             machine.run()
         except BasicError as stopped:

@@ -415,16 +415,17 @@ class Session:
 # --- the BASIC machine, as the session and the animation use it ---------------------
 
 
-def create_machine(screen, printer, methods: dict[int, str] | None = None, install=None):
+def create_machine(screen, printer, methods: dict[int, str] | None = None, install=None, angle: str = "deg"):
     """A BASIC machine writing PRINT to ``screen`` and LPRINT to ``printer``, library bound.
 
     ``install(machine, methods)`` binds the library programs (default
-    ``yaseer.binding.install``; the animation passes a recording one).
+    ``yaseer.binding.install``; the animation passes a recording one);
+    ``angle`` ("deg" or "rad") is the unit of SIN, COS, TAN and ATN at start.
     """
     from yaseer import binding
     from yaseer.basic.machine import Machine
 
-    machine = Machine(screen=screen, printer=printer)
+    machine = Machine(screen=screen, printer=printer, angle=angle)
     (install or binding.install)(machine, methods)
     return machine
 

@@ -15,7 +15,7 @@ from pathlib import Path
 
 
 def add_arguments(parser) -> None:
-    """FILE, --out, --fps, --frame, --title, --max-frames, --method N=NAME."""
+    """FILE, --out, --fps, --frame, --title, --max-frames, --angle, --method N=NAME."""
     parser.add_argument("file", help="the calling listing (.bas)")
     parser.add_argument("--out", help="FILE.gif (default), .html, .mp4 (needs ffmpeg) or .png (one frame)")
     parser.add_argument("--fps", type=float, default=6.0, help="frames per second (default 6)")
@@ -23,6 +23,8 @@ def add_arguments(parser) -> None:
     parser.add_argument("--title", default=None, help="a title over every frame (default: the file name)")
     parser.add_argument("--max-frames", type=int, default=360,
                         help="show at most this many evenly spaced frames of a long run (default 360)")
+    parser.add_argument("--angle", choices=("deg", "rad"), default="deg",
+                        help="unit of SIN COS TAN ATN, as for yaseer run (default deg)")
     parser.add_argument("--method", action="append", default=[], metavar="N=NAME",
                         help="the method for program area N, as for yaseer run")
 
@@ -41,7 +43,7 @@ def main(args) -> int:
     try:
         methods = parse_methods(args.method)
         text = listing.read_text(encoding="utf-8", errors="replace")
-        recording = record_run(text, methods)
+        recording = record_run(text, methods, angle=args.angle)
         if recording.error is not None and not recording.frames:
             raise recording.error
         count = render(recording.frames, out, title=args.title if args.title is not None else listing.name,
