@@ -282,3 +282,9 @@ def test_help_names_every_command(session):
     shown = after(session, "help")
     for command in ("LIST", "DELETE", "EDIT", "RENUM", "RUN", "CONT", "NEW", "PROG", "LOAD", "SAVE", "FILES", "SYSTEM"):
         assert command in shown
+
+
+def test_renum_follows_erl_comparisons_too(session):
+    type_lines(session, "170 X = 1 / 0", "210 END", "500 IF ERR = 5 AND ERL = 170 THEN RESUME 210")
+    after(session, "RENUM")
+    assert after(session, "LIST 30") == "30 IF ERR = 5 AND ERL = 10 THEN RESUME 20\n"

@@ -111,9 +111,10 @@ def lines_in_range(program: Program, first: int, last: int) -> list[int]:
     return [number for number in sorted(program) if first <= number <= last]
 
 
-# Keywords followed by line numbers.  GOSUB PROG n names an area, not a line.
+# Keywords followed by line numbers, and ERL compared with one (as MS-BASIC's RENUM
+# changes them).  GOSUB PROG n names an area, not a line.
 _REFERENCE = re.compile(
-    r"(GOTO|GOSUB(?!\s*PROG)|THEN|ELSE|RESTORE|RESUME|RUN)(\s*)(\d+(?:\s*,\s*\d+)*)",
+    r"(GOTO|GOSUB(?!\s*PROG)|THEN|ELSE|RESTORE|RESUME|RUN|ERL\s*[<>=]{1,2})(\s*)(\d+(?:\s*,\s*\d+)*)",
     re.I,
 )
 _STRING_OR_REMARK = re.compile(r'"[^"]*"?|\bREM\b.*|\'.*', re.I | re.S)
