@@ -218,6 +218,9 @@ def test_render_gif_html_and_png(tmp_path):
         render(frames, tmp_path / "x.png", frame_number=9)
     with pytest.raises(AnimationError, match="Unknown animation format"):
         render(frames, tmp_path / "x.avi")
+    for fps in (0.0, -3.0, math.nan):
+        with pytest.raises(AnimationError, match="Frames per second must be a positive number"):
+            render(frames, tmp_path / "x.gif", fps=fps)
 
 
 def test_mp4_without_ffmpeg_says_so(tmp_path, monkeypatch):

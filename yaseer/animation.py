@@ -677,6 +677,8 @@ def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0
     suffix = out.suffix.lower()
     if suffix not in SUFFIXES:
         raise AnimationError(f"Unknown animation format {out.suffix!r}: use {', '.join(SUFFIXES)}")
+    if not (math.isfinite(fps) and fps > 0):
+        raise AnimationError(f"Frames per second must be a positive number, not {fps:g}")
     scene = build_scene(frames)
     if suffix == ".png" and not 0 <= frame_number < len(scene.frames):
         raise AnimationError(f"Frame {frame_number} does not exist: the run has {len(scene.frames)}")
