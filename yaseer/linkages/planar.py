@@ -9,8 +9,6 @@ are rad/s and rad/s**2, counter-clockwise positive.
 
 from __future__ import annotations
 
-import cmath
-import math
 from typing import NamedTuple
 
 import numpy as np
@@ -23,7 +21,7 @@ def unit(angle: np.ndarray | float) -> np.ndarray:
     return np.exp(1j * np.asarray(angle, dtype=float))
 
 
-_QUADRANTS = {0.0: 1 + 0j, 90.0: 1j, 180.0: -1 + 0j, 270.0: -1j}
+_QUADRANTS = {0.0: complex(1.0, 0.0), 90.0: complex(0.0, 1.0), 180.0: complex(-1.0, 0.0), 270.0: complex(0.0, -1.0)}
 
 
 def unit_degrees(angle_deg: np.ndarray | float) -> np.ndarray:
@@ -31,9 +29,9 @@ def unit_degrees(angle_deg: np.ndarray | float) -> np.ndarray:
     (cos 90 = 0, as a pocket computer in degree mode gives it), so dead centres and
     vertical axes given as 90, 180, 270 are exact."""
     angle = np.asarray(angle_deg, dtype=float)
-    if angle.ndim == 0:  # one position (a GOSUB PROG call): plain Python is faster
+    if angle.ndim == 0:  # one position (a GOSUB PROG call): a dictionary is faster than np.select
         exact = _QUADRANTS.get(float(angle) % 360.0)
-        return np.asarray(exact if exact is not None else cmath.exp(1j * math.radians(float(angle))))
+        return np.complex128(exact) if exact is not None else np.exp(1j * np.radians(angle))
     turn = np.mod(angle, 360.0)
     vector = np.exp(1j * np.radians(angle))
     cos = np.select([turn == 90.0, turn == 270.0, turn == 0.0, turn == 180.0], [0.0, 0.0, 1.0, -1.0], vector.real)
