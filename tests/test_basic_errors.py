@@ -48,11 +48,33 @@ def test_syntax_error_is_raised_only_when_the_line_runs():
     assert error_of("10 GOTO 30\n20 THIS IS NOT BASIC\n30 X=1/0") == "Division by zero in 30"
 
 
-def test_deeply_nested_expression_is_an_error_not_a_crash():
+def test_deeply_nested_expression_is_an_error_of_its_own_line():
     depth = 400
-    program = "10 A=" + "(" * depth + "1" + ")" * depth
-    message = error_of(program + "\n20 B=1/0")
-    assert message.endswith("in 10") or message == "Division by zero in 20"
+    program = "9 A=1\n10 A=" + "(" * depth + "1" + ")" * depth
+    assert error_of(program + "\n20 B=1/0") == "Out of memory in 10"
+
+
+def test_deep_if_nesting_is_an_error_of_its_own_line():
+    program = "2 X = 1\n3 " + "IF 1 THEN " * 200 + "X = 1\n4 PRINT 5\n"
+    assert error_of(program) == "Out of memory in 3"
+
+
+def test_long_minus_chain_fails_on_its_own_line():
+    assert error_of("10 PRINT 1\n20 X = " + "-" * 5000 + "1") == "Out of memory in 20"
+
+
+def test_print_shows_the_items_before_the_failing_one():
+    from yaseer.basic.machine import Machine
+    import io
+
+    for statement, shown in (('PRINT "a"; SQR(-1)', "a"), ('PRINT USING "##.#"; 1; SQR(-1)', " 1.0")):
+        machine = Machine(screen=io.StringIO())
+        machine.load("10 " + statement)
+        try:
+            machine.run()
+        except Exception as err:  # noqa: BLE001
+            assert str(err) == "Illegal function call in 10"
+        assert machine.screen.stream.getvalue() == shown
 
 
 def test_long_sum_compiles():

@@ -85,9 +85,11 @@ def test_negative_step_and_no_name_next():
 
 
 def test_loop_test_comes_before_the_first_pass():
-    assert values("10 FOR I=5 TO 1: PRINT I: NEXT I: PRINT I") == [[5.0]]
+    # a loop that never runs leaves its variable one STEP past the start (as GW-BASIC)
+    assert values("10 FOR I=5 TO 1: PRINT I: NEXT I: PRINT I") == [[6.0]]
+    assert values("10 FOR J=3 TO -.5 STEP 1.5: PRINT J: NEXT: PRINT J") == [[4.5]]
     # the same through the FOR stack (a GOSUB in the body)
-    assert values("10 FOR I=5 TO 1: GOSUB 50: NEXT I\n20 PRINT I: END\n50 PRINT 99: RETURN") == [[5.0]]
+    assert values("10 FOR I=5 TO 1: GOSUB 50: NEXT I\n20 PRINT I: END\n50 PRINT 99: RETURN") == [[6.0]]
 
 
 def test_next_j_i_closes_two_loops():
@@ -236,7 +238,7 @@ def test_csv_rows_have_full_precision():
 
 def test_on_error_resume_next_err_erl():
     program = "10 ON ERROR GOTO 100\n20 A=1/0: PRINT 2\n30 PRINT ERR, ERL: END\n100 PRINT 1: RESUME NEXT"
-    assert values(program) == [[1.0], [2.0], [11.0, 20.0]]
+    assert values(program) == [[1.0], [2.0], [0.0, 20.0]]  # RESUME clears ERR, keeps ERL
 
 
 def test_resume_line_and_resume_retry():
@@ -400,3 +402,35 @@ def test_loop_helpers_match_repeated_addition():
         passes = runtime.pass_counter(start, limit, step)
         assert len(list(passes)) == len(seen)
         assert runtime.counted_final(passes, start, step) == final
+
+
+def test_apostrophe_remark_after_a_statement():
+    assert values("20 X = 1 ' set X\n30 PRINT X ' show it\n40 ' only a remark\n50 PRINT 2") == [[1.0], [2.0]]
+
+
+def test_csv_row_of_a_statement_printed_in_parts():
+    assert run_rows('10 L(1)=2: PRINT "a"; L(1); SQR(L(1)^2)') == [["a", "2.0", "2.0"]]
+
+
+def test_break_of_a_jump_loop_names_the_line():
+    import signal
+
+    machine = Machine(screen=io.StringIO())
+    machine.load("10 X=X+1\n20 GOTO 10\n")
+    previous = signal.signal(signal.SIGALRM, lambda *_: signal.raise_signal(signal.SIGINT))
+    signal.setitimer(signal.ITIMER_REAL, 0.2)
+    try:
+        with pytest.raises(BasicError) as info:
+            machine.run()
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+    assert str(info.value) in ("Break in 10", "Break in 20")
+    assert machine.scalar("X") > 0
+
+
+def test_total_array_budget():
+    from yaseer.basic import machine as machine_module
+
+    names = ", ".join(f"A{k}(1999998)" for k in range(machine_module.MAX_TOTAL_ELEMENTS // 1999999 + 1))
+    assert error_of(f"10 DIM {names}") == "Out of memory in 10"

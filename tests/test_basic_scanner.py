@@ -65,7 +65,9 @@ def test_string_literal_keeps_case_and_colons():
 
 def test_rem_and_apostrophe_swallow_the_rest():
     assert kinds("REM X: Y") == [("REMARK", " X: Y")]
-    assert kinds("A=1 ' note: x") == [("NAME", "A"), ("EQ", "="), ("NUMBER", 1.0), ("REMARK", " note: x")]
+    assert kinds("' note: x") == [("REMARK", " note: x")]
+    # after a statement (no colon needed) the remark is dropped
+    assert kinds("A=1 ' note: x") == [("NAME", "A"), ("EQ", "="), ("NUMBER", 1.0)]
 
 
 def test_data_text_is_raw_up_to_colon():

@@ -344,6 +344,40 @@ def _may_overflow(node) -> bool:
     return isinstance(node, ast.FnCall)
 
 
+def _too_deep(code: list) -> bool:
+    """Would these generated lines pass Python's nesting limits (indents, parentheses)?"""
+    for indent, text in code:
+        if indent > 80:
+            return True
+        depth = 0
+        for ch in text:
+            if ch == "(":
+                depth += 1
+                if depth > 150:
+                    return True
+            elif ch == ")":
+                depth -= 1
+    return False
+
+
+def _is_safe_item(item) -> bool:
+    """A PRINT item whose evaluation cannot fail (so items may be evaluated together)."""
+    return isinstance(item, (str, ast.Num, ast.Str, ast.Var))
+
+
+def _print_chunks(parts: list) -> list:
+    """PRINT items split so that each chunk holds one value and the separators before it."""
+    chunks, current = [], []
+    for part in parts:
+        current.append(part)
+        if part != "_COMMA" and not part.startswith(("_Tab(", "_Spc(")):
+            chunks.append(current)
+            current = []
+    if current or not chunks:
+        chunks.append(current)
+    return chunks
+
+
 def _simple_operand(code: str) -> bool:
     return code.replace("_", "a").replace("[", "").replace("]", "").isalnum()
 
@@ -524,6 +558,10 @@ class AreaCompiler:
                 del block.code[mark:]
             self.emit(f"raise _err({err.message!r}, {err.code})")
             return
+        if self.cur is block and _too_deep(block.code[mark:]):
+            del block.code[mark:]  # Python could not compile it: the statement's own error
+            self.emit(f"raise _err('Out of memory', {OUT_OF_MEMORY})")
+            return
         if scope.uses_fn:
             block.code.insert(mark, (self.indent, "#FLUSH#"))
 
@@ -570,17 +608,32 @@ class AreaCompiler:
         return parts, newline
 
     def stmt_Print(self, stmt, scope):
+        """PRINT / LPRINT [USING]: items are printed as they are evaluated, so an item
+        that fails leaves the ones before it on the screen (as GW-BASIC does)."""
         device = 1 if stmt.printer else 0
         parts, newline = self.print_items(stmt.items, scope)
-        values = "(" + "".join(p + ", " for p in parts) + ")"
+        safe = all(_is_safe_item(item) for item in stmt.items)
         if stmt.using is None:
-            self.emit(f"_pr({device}, {values}, {newline})")
+            chunks = _print_chunks(parts) if not safe else [parts]
+            for k, chunk in enumerate(chunks):
+                last = k == len(chunks) - 1
+                values = "(" + "".join(p + ", " for p in chunk) + ")"
+                self.emit(f"_pr({device}, {values}, {newline and last}, {last})")
             return
         fmt = self.string(stmt.using, scope)
-        if any(p in ("_COMMA",) or p.startswith(("_Tab(", "_Spc(")) for p in parts):
-            parts = [p for p in parts if p != "_COMMA"]
+        parts = [p for p in parts if p != "_COMMA" and not p.startswith(("_Tab(", "_Spc("))]
+        if safe:
             values = "(" + "".join(p + ", " for p in parts) + ")"
-        self.emit(f"_pru({device}, {fmt}, {values}, {newline})")
+            self.emit(f"_pru({device}, {fmt}, {values}, {newline})")
+            return
+        self.emit("_u = []")
+        self.emit("try:")
+        for part in parts:
+            self.emit(f"    _u.append({part})")
+        self.emit("except BaseException:")
+        self.emit(f"    _pru({device}, {fmt}, _u, False)")
+        self.emit("    raise")
+        self.emit(f"_pru({device}, {fmt}, _u, {newline})")
 
     def stmt_Goto(self, stmt, scope):
         self.emit(self.jump(stmt.target))
@@ -796,6 +849,8 @@ class AreaCompiler:
                 self.indent += 1
                 self.emit(f"for {var} in _frange(_v{n}, _l{n}, _s{n}):")
                 return n, var, step_value, mode
+            self.emit(f"if {test}:")
+            self.indent += 1
             self.emit(f"while {test}:")
             return n, var, step_value, mode
         body = self.entry_block.get(self.index + 1) if self.depth == 0 else None
@@ -809,6 +864,8 @@ class AreaCompiler:
             self.cur = None
         block.code.append((indent + 1, f"_for({key!r}, _l{n}, _s{n}, {body_block})"))
         block.code.append((indent + 1, f"return {body_block}"))
+        # a loop that never runs leaves its variable one STEP past the start (GW-BASIC)
+        block.code.append((indent, f"{var} = _v{n} + _s{n}"))
         if skip_index is None:
             block.code.append((indent, f"raise _err('FOR without NEXT', {FOR_WITHOUT_NEXT})"))
         else:
@@ -941,7 +998,11 @@ class AreaCompiler:
             self.emit(f"{var} = {var} + {increment}")
         else:
             self.emit(f"{var} = {var} + {increment}")
+            self.indent -= 1
         self.indent -= 1
+        # a loop that never runs leaves its variable one STEP past the start (GW-BASIC)
+        self.emit("else:")
+        self.emit(f"    {var} = {var} + {increment}")
         self.line = None
         self.set_line(self.flat[j][0])
         return j + 1

@@ -18,9 +18,11 @@ Python program areas use ``array(name)``, ``scalar(name)``, ``set_scalar``.
 
 from __future__ import annotations
 
+import contextlib
 import csv
 import math
 import random
+import signal
 import sys
 from functools import lru_cache
 from typing import Callable, TextIO
@@ -47,6 +49,7 @@ DEFAULT_DIMENSION = 10  # an array used without DIM: subscripts 0..10
 MAX_STACK = 10_000  # GOSUB returns + open FOR loops together
 MAX_AREA_DEPTH = 100  # GOSUB PROG nesting
 MAX_ARRAY_ELEMENTS = 2_000_000  # per array
+MAX_TOTAL_ELEMENTS = 8_000_000  # all arrays together (about 64 MB)
 INPUT_PAST_END = 62
 INTERNAL_ERROR = 51
 
@@ -235,6 +238,8 @@ class Machine:
         self.last_random = 0.0
         self.run_hooks: list[Callable] = []
         self._extra_entries: set[int] = set()
+        self.array_elements = 0  # elements in all arrays (MAX_TOTAL_ELEMENTS)
+        self.pending_row: list = []  # csv values of a PRINT statement printed in parts
 
     # ------------------------------------------------------------ programs
     def load(self, text: str, area: int = 0) -> None:
@@ -370,10 +375,20 @@ class Machine:
             return found
         size = AL_YASEER_DIMENSIONS.get(name, DEFAULT_DIMENSION) if ndim == 1 else DEFAULT_DIMENSION
         dims = (size,) * ndim
+        self._reserve(name, dims)
         created = _new_array(dims, "" if name.endswith("$") else 0.0)
         self.arrays[name] = created
         self.array_dims[name] = dims
         return created
+
+    def _reserve(self, name: str, dims: tuple) -> None:
+        """Check the array limits for ``name`` with ``dims`` (replacing its old size)."""
+        count = math.prod(d + 1 for d in dims)
+        old = self.array_dims.get(name)
+        total = self.array_elements + count - (math.prod(d + 1 for d in old) if old else 0)
+        if count > MAX_ARRAY_ELEMENTS or total > MAX_TOTAL_ELEMENTS:
+            raise BasicError("Out of memory", OUT_OF_MEMORY)
+        self.array_elements = total
 
     def dim(self, name: str, sizes: tuple) -> None:
         """DIM name(sizes): replaces an implicit array; a second DIM is an error."""
@@ -382,8 +397,7 @@ class Machine:
         dims = tuple(runtime.cint(s) for s in sizes)
         if any(d < 0 for d in dims):
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-        if math.prod(d + 1 for d in dims) > MAX_ARRAY_ELEMENTS:
-            raise BasicError("Out of memory", OUT_OF_MEMORY)
+        self._reserve(name, dims)
         self.arrays[name] = _new_array(dims, "" if name.endswith("$") else 0.0)
         self.array_dims[name] = dims
         self.explicit_arrays.add(name)
@@ -394,6 +408,7 @@ class Machine:
             self.scalars[name] = "" if name.endswith("$") else 0.0
         self.arrays.clear()
         self.array_dims.clear()
+        self.array_elements = 0
         self.explicit_arrays.clear()
         self.fns.clear()
         for rt in self.runtimes.values():
@@ -500,6 +515,7 @@ class Machine:
             raise BasicError("RESUME without error", RESUME_WITHOUT_ERROR)
         area, block = self.error_point
         self.in_handler = False
+        self.err = 0.0
         if next_statement:
             return self._compiled(area).block_next.get(block, block + 1)
         return block
@@ -508,6 +524,7 @@ class Machine:
         if not self.in_handler:
             raise BasicError("RESUME without error", RESUME_WITHOUT_ERROR)
         self.in_handler = False
+        self.err = 0.0
         return block
 
     def _trap(self, err: BasicError, area: int, block: int) -> int | None:
@@ -519,6 +536,7 @@ class Machine:
             return None
         self.err = float(err.code)
         self.erl = float(err.line or 0)
+        self.pending_row = []
         self.in_handler = True
         self.error_point = (area, block)
         return handler_block
@@ -577,8 +595,30 @@ class Machine:
             block = self._compiled(0).line_blocks[line]
         return block
 
+    def _on_interrupt(self, signum, frame) -> None:
+        """SIGINT while running: note the BASIC line and the block's variables, then break.
+
+        (A ``continue`` back-edge in Python 3.11 lets KeyboardInterrupt bypass the
+        block's ``finally``, so the line and the locals are read from the frame here.)
+        """
+        while frame is not None:
+            if frame.f_globals.get("_M") is self and "_ln" in frame.f_locals:
+                self.line = frame.f_locals["_ln"]
+                for local, value in frame.f_locals.items():
+                    if local[:2] in ("n_", "s_") and local[2:3].isalpha():
+                        name = local[2:] + ("$" if local[0] == "s" else "")
+                        if name in self.scalars:
+                            self.scalars[name] = value
+                break
+            frame = frame.f_back
+        raise KeyboardInterrupt
+
     def _execute(self, area: int, block: int) -> str:
         self.cont_point = None
+        with _interrupt_handler(self._on_interrupt):
+            return self._execute_loop(area, block)
+
+    def _execute_loop(self, area: int, block: int) -> str:
         try:
             self._run_area(area, self._compiled(area), block)
         except ProgramEnd:
@@ -624,12 +664,24 @@ class Machine:
             self.flush()
 
     # ------------------------------------------------------------ I/O
-    def print_items(self, device: int, items: tuple, newline: bool) -> None:
-        """PRINT / LPRINT: values, comma zones, TAB and SPC; ``newline`` ends the line."""
+    def print_items(self, device: int, items: tuple, newline: bool, end: bool = True) -> None:
+        """PRINT / LPRINT: values, comma zones, TAB and SPC; ``newline`` ends the line.
+
+        A statement may print in several calls; ``end`` marks its last (csv rows
+        collect the values of the whole statement).
+        """
         stream = self.streams[device]
         if self.csv:
-            values = [repr(v) if type(v) is float else v for v in items if type(v) in (float, str)]
-            self._csv_row(stream, values)
+            for v in items:
+                if type(v) is float:
+                    if v - v:
+                        runtime.overflow()
+                    self.pending_row.append(repr(v))
+                elif type(v) is str:
+                    self.pending_row.append(v)
+            if end:
+                self._csv_row(stream, self.pending_row)
+                self.pending_row = []
             return
         for item in items:
             kind = type(item)
@@ -663,7 +715,8 @@ class Machine:
             if type(v) is float and v - v:
                 runtime.overflow()
         if self.csv:
-            self._csv_row(stream, [repr(v) if type(v) is float else v for v in values])
+            if newline is not False or values:
+                self._csv_row(stream, [repr(v) if type(v) is float else v for v in values])
             return
         stream.write(formatting.using(fmt, values))
         if newline:
@@ -715,6 +768,22 @@ class Machine:
                 stream.flush()
             except (OSError, ValueError):
                 pass
+
+
+@contextlib.contextmanager
+def _interrupt_handler(handler):
+    """Use ``handler`` for SIGINT while running, if Python's default one is in place."""
+    try:
+        installed = signal.getsignal(signal.SIGINT) is signal.default_int_handler
+        if installed:
+            signal.signal(signal.SIGINT, handler)
+    except ValueError:  # not the main thread
+        installed = False
+    try:
+        yield
+    finally:
+        if installed:
+            signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 def _parse_input(text: str, kinds: str):

@@ -280,6 +280,7 @@ def parse_statements(text: str) -> list:
     tokens = tokenize(text)
     if not tokens:
         return []
+    _check_nesting(tokens)
     try:
         statements = _parser().parse(tokens)
     except BasicError:
@@ -290,6 +291,26 @@ def parse_statements(text: str) -> list:
             raise inner from None
         raise BasicError("Syntax error", SYNTAX_ERROR) from None
     return statements
+
+
+MAX_NESTING = 60  # IFs in one line, or parentheses inside each other
+
+
+def _check_nesting(tokens: list) -> None:
+    """Refuse absurdly deep lines before parsing: ``Out of memory`` (the period's answer)."""
+    depth = deepest = ifs = 0
+    for token in tokens:
+        kind = token.type
+        if kind == "_LPAR":
+            depth += 1
+            deepest = max(deepest, depth)
+        elif kind == "_RPAR":
+            depth -= 1
+        elif kind == "IF":
+            ifs += 1
+    if deepest > MAX_NESTING or ifs > MAX_NESTING:
+        from yaseer.basic.errors import OUT_OF_MEMORY
+        raise BasicError("Out of memory", OUT_OF_MEMORY)
 
 
 def parse_line(number: int, text: str) -> ast.Line:

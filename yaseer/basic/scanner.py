@@ -147,8 +147,9 @@ def tokenize(text: str) -> list[Token]:
             value, i = _scan_string(text, i)
             tokens.append(Token("STRING", value))
         elif ch == "'":
-            tokens.append(Token("REMARK", text[i + 1:]))
-            break
+            if not tokens:  # a line that is only a remark
+                tokens.append(Token("REMARK", text[i + 1:]))
+            break  # after a statement the remark is simply dropped (no colon needed)
         elif ch.isdigit() or (ch == "." and i + 1 < n and upper[i + 1].isdigit()):
             value, i = _scan_number(upper, i)
             tokens.append(Token("NUMBER", value))
