@@ -50,6 +50,7 @@ class Program:
     next_sub: int = 5000
     numeric: bool = False
     arrays: set[str] = field(default_factory=set)
+    final: str = "END"  # or STOP (then "Break in N")
 
     def line(self, text: str) -> int:
         number = self.next_main
@@ -71,7 +72,7 @@ class Program:
         return first
 
     def source(self) -> str:
-        return "\n".join(self.main + [f"{self.next_main} END"] + self.subs) + "\n"
+        return "\n".join(self.main + [f"{self.next_main} {self.final}"] + self.subs) + "\n"
 
 
 # ---------------------------------------------------------------------------
@@ -436,4 +437,6 @@ def random_program(rng: random.Random, numeric: bool = False) -> Program:
     blocks = EXACT_BLOCKS + ([numeric_block] * 4 if numeric else [])
     for _ in range(rng.randint(3, 7)):
         rng.choice(blocks)(rng, prog)
+    if rng.random() < 0.1:
+        prog.final = "STOP"
     return prog

@@ -263,11 +263,14 @@ def run_yaseer(source: str, angle: str = "rad") -> str:
     machine = Machine(screen=screen, angle=angle)
     try:
         machine.load(source)
-        machine.run()
+        outcome = machine.run()
     except BasicError as err:
         machine.end_line()
         machine.flush()
         return screen.getvalue() + str(err) + "\n"
+    if outcome == "stop":  # `yaseer run` reports STOP as "Break in N" (on standard error)
+        machine.end_line()
+        return screen.getvalue() + f"Break in {machine.line}\n"
     return screen.getvalue()
 
 

@@ -4,7 +4,8 @@ Each example mutates one seed program (the paper's calling listings in
 listings/, PROG 5 as printed in programs/, the Rugg/Feldman and Ahl
 benchmarks in tests/corpus/fuzz_seeds/) by deleting characters, swapping
 tokens, planting huge numbers, nesting deeply, dropping lines or inserting
-binary junk, then runs it with the library programs bound.  Every run must
+binary junk, inserting state-upsetting statements or garbling a PRINT USING format,
+then runs it with the library programs bound.  Every run must
 end normally or with one of the interpreter's own error lines naming a line
 (``Syntax error in 40``, ``Break in 30`` ...); never a Python exception (nor
 the interpreter's ``Internal error`` wrapper of one), never a hang: a run is
@@ -150,7 +151,34 @@ def binary_junk(text: str, data) -> str:
     return text[:at] + junk + text[at:]
 
 
-MUTATIONS = [delete_characters, swap_tokens, huge_number, deep_nesting, missing_line, binary_junk]
+STATEMENTS = ["RETURN", "NEXT", "NEXT QQ", "GOSUB 1", "RESUME", "RESUME NEXT", "ON ERROR GOTO 20", "RESTORE 3",
+              "READ X", "DIM L(5)", "CLEAR", "STOP", "END", "GOSUB PROG 9", "GOSUB PROG 5", "RAD", "DEG",
+              "DEF FNA(X) = X / 0", "PRINT FNA(1)", "PRINT USING \"##.#^^^^\"; 1E300", "ON 3 GOTO 10, 20",
+              "INPUT A", "X = L(-1)", "PRINT TAB(-1)", "PRINT MID$(\"ab\", 0)", "CLEAR 5", "RANDOMIZE"]
+
+
+def insert_statement(text: str, data) -> str:
+    """A statement that upsets the program's state, placed after a colon or as its own line."""
+    statement = data.draw(st.sampled_from(STATEMENTS))
+    colons = [m.start() for m in re.finditer(":", text)]
+    if colons and data.draw(st.booleans()):
+        at = data.draw(st.sampled_from(colons))
+        return text[:at] + ": " + statement + text[at:]
+    return f"{data.draw(st.integers(1, 120)) * 5} {statement}\n" + text
+
+
+def garble_format(text: str, data) -> str:
+    """Replace a string literal (often a PRINT USING format) by random format characters."""
+    strings = [m.span() for m in re.finditer(r'"[^"\n]*"', text)]
+    if not strings:
+        return text
+    start, end = data.draw(st.sampled_from(strings))
+    body = data.draw(st.text(alphabet="#.,+-*$^!&\\ _%A", max_size=16))
+    return text[:start] + '"' + body + '"' + text[end:]
+
+
+MUTATIONS = [delete_characters, swap_tokens, huge_number, deep_nesting, missing_line, binary_junk,
+             insert_statement, garble_format]
 
 
 def example_count() -> int:
