@@ -702,3 +702,12 @@ def test_program_references_in_mpmath(program, inputs, q_name):
     exact = run(values, [40.0], number="mpmath", dps=40)
     for name, value in rough.items():
         assert abs(float(exact[name][0]) - value[0]) <= 1e-12 * (1 + abs(value[0])), name
+
+
+def test_examples_as_drawn_have_exact_axes():
+    """dodge=0: Example 1's piston D runs on x = 150 exactly, Example 3's B on x = 0."""
+    for s in example_snapshots(1, [12.0, 200.0], dodge=0):
+        assert s.position("link BD", "D")[0] == pytest.approx(150, abs=1e-12)
+        assert abs(s.velocity("link BD", "D")[0]) < 1e-9
+    for s in example_snapshots(3, [12.0, 200.0], dodge=0):
+        assert abs(s.position("rod BAC", "B")[0]) < 1e-12

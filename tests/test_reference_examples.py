@@ -250,3 +250,32 @@ def test_program3_against_the_real_fisc(q, tmp_path):
     model = program3(inputs, angles)
     _compare(printed, model, names, {"T(9)"})
     assert np.allclose(np.asarray(model["U(4)"], float), 0.05 * np.asarray(model["A(4)"], float), rtol=1e-12)
+
+
+# --------------------------------------------------------------------------- without the 0.1-degree dodges
+
+UNDODGED = (("T(4) = .1:", "T(4) = 0:"), ("T(4) = 90.1:", "T(4) = 90:"), ("T(4) = -90.1:", "T(4) = -90:"),
+            ("T(11) = 90.1:", "T(11) = 90:"))
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 4])
+def test_corrected_listing_without_the_dodges_matches_the_mechanism_as_drawn(n, tmp_path):
+    """The listings turn axes 0.1 degree off 0 and 90 to dodge Program 5's cos T, sin T
+    divisions.  With the axes set exactly (the default Program 5 has no such divisions)
+    the listing agrees with the model as drawn (dodge=0), and the dodge itself moves the
+    printed columns by 1e-4 to 1e-2 of their size."""
+    text = (LISTINGS / f"example{n}.bas").read_text()
+    for old, new in UNDODGED:
+        text = text.replace(old, new)
+    assert text != (LISTINGS / f"example{n}.bas").read_text()
+    listing = tmp_path / f"example{n}_undodged.bas"
+    listing.write_text(text)
+    result = subprocess.run([sys.executable, "-m", "yaseer", "run", str(listing), "--format", "csv"],
+                            capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, result.stderr
+    printed = np.array([[float(v) for v in row.split(",")] for row in result.stdout.strip().splitlines()])
+    drawn = example_columns(n, list(printed[:, 0]), dodge=0)
+    scale = np.abs(drawn).max(axis=0)
+    assert (np.abs(printed - drawn) / scale).max() < 1e-11
+    dodged = example_columns(n, list(printed[:, 0]))
+    assert 1e-4 < (np.abs(dodged - drawn) / scale).max() < 1e-2

@@ -60,6 +60,12 @@ COLUMNS = {
 #: crank speed (rad/s, ccw +) of each example
 CRANK_RATE = {1: 25, 2: -8, 3: 30, 4: 35, 5: -22}
 
+#: The listings turn their cylinder axes and Example 4's fixed link by 0.1 degree off 0, 90
+#: and -90 (T(4) = .1, 90.1, -90.1; T(11) = 90.1) to dodge Program 5's divisions by cos T
+#: and sin T.  The models use the listings' geometry by default; ``dodge=0`` gives the
+#: mechanisms as drawn (axes exactly horizontal and vertical).  Example 5 has no dodge.
+DODGE = 0.1
+
 
 def _unit(ar, angle_deg):
     angle = ar.radians(ar.num(angle_deg))
@@ -116,7 +122,7 @@ class ExampleModel:
 
 # --------------------------------------------------------------------------- Example 1
 
-def example1():
+def example1(dodge=DODGE):
     """Double slider-crank (Fig. 6): crank AoA = 75, rod ABC = 300 (B its midpoint), BD = 150, mm.
 
     Listing line 20: piston C on the line e = 25 right of the axis u(0.1 deg)
@@ -131,16 +137,16 @@ def example1():
         [crank, rod, link],
         [Revolute("Ao", crank, (0, 0), None, (0, 0)),
          Revolute("A", crank, "A", rod, "A"),
-         PointOnLine("C", rod, "C", None, polar(25, 0.1 - 90), 0.1),
+         PointOnLine("C", rod, "C", None, polar(25, dodge - 90), dodge),
          Revolute("B", rod, "B", link, "B"),
-         PointOnLine("D", link, "D", None, polar(150, 0.1), 90.1),
+         PointOnLine("D", link, "D", None, polar(150, dodge), 90 + dodge),
          AngleDriver("crank", crank)])
     sketch = mechanism.coordinates({"crank": (0, 0, 0), "rod ABC": (75, 0, -4.8),
                                     "link BD": (224, -12, 120)})
 
     def check(s):
-        _ahead(s, "rod ABC", "A", "rod ABC", "C", 0.1, "Example 1, piston C")
-        _ahead(s, "rod ABC", "B", "link BD", "D", 90.1, "Example 1, piston D")
+        _ahead(s, "rod ABC", "A", "rod ABC", "C", dodge, "Example 1, piston C")
+        _ahead(s, "rod ABC", "B", "link BD", "D", 90 + dodge, "Example 1, piston D")
 
     def columns(s, angle):
         ar = s.ar
@@ -152,10 +158,7 @@ def example1():
 
 # --------------------------------------------------------------------------- Example 2
 
-PLUNGER_AXIS_DEG = 90.1
-
-
-def example2():
+def example2(dodge=DODGE):
     """Churning mechanism (Fig. 8): AoA = .021, AB = .032, BC = .029 (C beyond B), CD = .054, m.
 
     Line 100: piston B on the axis u(0.1 deg) through Ao (L(1) = 0, T(4) = .1),
@@ -169,9 +172,11 @@ def example2():
     rod = Body("rod ABC", points={"A": (0, 0), "B": (".032", 0), "C": (".061", 0)})
     link = Body("link CD", points={"C": (0, 0), "D": (".054", 0)})
 
+    plunger_axis = 90 + dodge
+
     def plunger_force(s):
         ar = s.ar
-        axis = _unit(ar, PLUNGER_AXIS_DEG)
+        axis = _unit(ar, plunger_axis)
         v = dot(s.velocity("link CD", "D"), axis)
         p = 650 * v * abs(v)
         return (-p * axis[0], -p * axis[1])
@@ -180,17 +185,17 @@ def example2():
         [crank, rod, link],
         [Revolute("Ao", crank, (0, 0), None, (0, 0)),
          Revolute("A", crank, "A", rod, "A"),
-         PointOnLine("B", rod, "B", None, (0, 0), 0.1),
+         PointOnLine("B", rod, "B", None, (0, 0), dodge),
          Revolute("C", rod, "C", link, "C"),
-         PointOnLine("D", link, "D", None, polar(".08", 0.1), PLUNGER_AXIS_DEG),
+         PointOnLine("D", link, "D", None, polar(".08", dodge), plunger_axis),
          AngleDriver("crank", crank)],
         loads=[PointLoad(link, "D", plunger_force)])
     sketch = mechanism.coordinates({"crank": (0, 0, 0), "rod ABC": (0.021, 0, 0),
                                     "link CD": (0.082, 0, 92)})
 
     def check(s):
-        _ahead(s, "rod ABC", "A", "rod ABC", "B", 0.1, "Example 2, piston B")
-        _ahead(s, "rod ABC", "C", "link CD", "D", PLUNGER_AXIS_DEG, "Example 2, plunger D")
+        _ahead(s, "rod ABC", "A", "rod ABC", "B", dodge, "Example 2, piston B")
+        _ahead(s, "rod ABC", "C", "link CD", "D", plunger_axis, "Example 2, plunger D")
 
     def columns(s, angle):
         ar = s.ar
@@ -199,7 +204,7 @@ def example2():
 
     def forces(s):
         """Program 1's force outputs for AoABC (the listing's last call), in the contract's signs."""
-        normal, wall = s.normal_force("B"), _unit(s.ar, 90.1)
+        normal, wall = s.normal_force("B"), _unit(s.ar, 90 + dodge)
         return _named(("U(1)", s.driver_torque("crank")), ("N(1)", normal),
                       ("F(3)", "F(4)", s.reaction("Ao", "crank")), ("F(5)", "F(6)", s.reaction("A", "rod ABC")),
                       ("F(10)", "F(11)", (-normal * wall[0], -normal * wall[1])),
@@ -210,7 +215,7 @@ def example2():
 
 # --------------------------------------------------------------------------- Example 3
 
-def example3():
+def example3(dodge=DODGE):
     """Indexing mechanism (Fig. 1): AoA = 2.5, AB = 6, AC = 1.5 (C beyond A), CoD = 3.5, cm.
 
     Line 3010: piston B on the axis u(-90.1 deg) through Ao (L(1) = 0), C on the
@@ -227,7 +232,7 @@ def example3():
         [crank, rod, follower],
         [Revolute("Ao", crank, (0, 0), None, (0, 0)),
          Revolute("A", crank, "A", rod, "A"),
-         PointOnLine("B", rod, "B", None, (0, 0), -90.1),
+         PointOnLine("B", rod, "B", None, (0, 0), -90 - dodge),
          Revolute("Co", follower, "Co", None, (-1.5, 5.5)),
          PointOnLine("C", rod, "C", follower, (0, 0), 0),
          AngleDriver("crank", crank)])
@@ -235,7 +240,7 @@ def example3():
                                     "member CCoD": (-1.5, 5.5, -41.8)})
 
     def check(s):
-        _ahead(s, "rod BAC", "A", "rod BAC", "B", -90.1, "Example 3, piston B")
+        _ahead(s, "rod BAC", "A", "rod BAC", "B", -90 - dodge, "Example 3, piston B")
         _ahead(s, "member CCoD", "Co", "rod BAC", "C", s.ar.to_float(s.angle("member CCoD")),
                "Example 3, block C")
 
@@ -249,7 +254,7 @@ def example3():
 
 # --------------------------------------------------------------------------- Example 4
 
-def example4():
+def example4(dodge=DODGE):
     """Film transport (Fig. 11): AoA = 6.5, AB = 28, BBo = 14, AC = 15, CD = 5.5, DE = 11.5,
     DH = 31.5, HHo = 17.5, mm.
 
@@ -272,7 +277,7 @@ def example4():
          Revolute("Bo", follower, "Bo", None, (26.5, -10)),
          Revolute("D", coupler, "D", link, "D"),
          Revolute("H", link, "H", rocker, "H"),
-         Revolute("Ho", rocker, "Ho", None, polar(25, 90.1)),
+         Revolute("Ho", rocker, "Ho", None, polar(25, 90 + dodge)),
          AngleDriver("crank", crank)])
     sketch = mechanism.coordinates({"crank": (0, 0, 0), "coupler ABD": (6.5, 0, 3.1),
                                     "follower BoB": (26.5, -10, 55.4),
@@ -301,7 +306,7 @@ def crushing_force(t14_deg, w7):
     return 0 * t14_deg
 
 
-def example5():
+def example5(dodge=DODGE):
     """Double-toggle jaw crusher (Fig. 13), m-kg-s, masses and inertias of the paper's table.
 
     Lines 5100-5120: Bo = (-.85, 1.25), crank AoA = .075 (200 kg, I = 156, G at Ao),
@@ -376,22 +381,22 @@ def example5():
 BUILDERS = {1: example1, 2: example2, 3: example3, 4: example4, 5: example5}
 
 
-def example_mechanism(n: int) -> ExampleModel:
-    """Example ``n``'s model (a fresh one each call)."""
+def example_mechanism(n: int, dodge=DODGE) -> ExampleModel:
+    """Example ``n``'s model (a fresh one each call); ``dodge``: see DODGE."""
     try:
-        return BUILDERS[n]()
+        return BUILDERS[n](dodge)
     except KeyError:
         raise ValueError(f"the paper has examples 1 to 5, not {n!r}") from None
 
 
-def example_snapshots(n: int, crank_angles=None, number="float", dps=50, gravity=0, level=None):
+def example_snapshots(n: int, crank_angles=None, number="float", dps=50, gravity=0, level=None, dodge=DODGE):
     """Solved states of example ``n`` at ``crank_angles`` (degrees; default the listing's loop).
 
     ``gravity``: acceleration of gravity along -y (the listings leave G = 0).
     ``level``: as Mechanism.analyse; default "forces" for Examples 2 and 5,
-    "accelerations" for the others.
+    "accelerations" for the others.  ``dodge``: see DODGE.
     """
-    model = example_mechanism(n)
+    model = example_mechanism(n, dodge)
     model.mechanism.gravity = gravity
     angles = EXAMPLE_ANGLES[n] if crank_angles is None else list(crank_angles)
     return model.mechanism.analyse(angles, CRANK_RATE[n], 0, model.sketch, number=number, dps=dps,
@@ -405,18 +410,19 @@ def _table(rows, number):
     return np.array(rows, dtype=float if number == "float" else object)
 
 
-def example_columns(n: int, crank_angles=None, number="float", dps=50, gravity=0):
+def example_columns(n: int, crank_angles=None, number="float", dps=50, gravity=0, dodge=DODGE):
     """The columns example ``n`` prints (see COLUMNS[n]), one row per crank angle, as a numpy array.
 
     Float by default; ``number="mpmath"`` gives an object array of mpf at ``dps`` digits.
+    ``dodge=0``: the mechanism without the listings' 0.1 degree offsets (see DODGE).
     """
-    columns = example_mechanism(n).columns
+    columns = example_mechanism(n, dodge).columns
     angles = EXAMPLE_ANGLES[n] if crank_angles is None else list(crank_angles)
-    snapshots = example_snapshots(n, angles, number, dps, gravity)
+    snapshots = example_snapshots(n, angles, number, dps, gravity, dodge=dodge)
     return _table([columns(s, angle) for s, angle in zip(snapshots, angles)], number)
 
 
-def example_forces(n: int, crank_angles=None, number="float", dps=50, gravity=0) -> dict:
+def example_forces(n: int, crank_angles=None, number="float", dps=50, gravity=0, dodge=DODGE) -> dict:
     """Signed force outputs of Examples 2 and 5 under the contract's names and conventions.
 
     Example 2: U(1), N(1), F(3)..F(6), F(10), F(11) of Program 1 on AoABC and F(7), F(8)
@@ -425,9 +431,9 @@ def example_forces(n: int, crank_angles=None, number="float", dps=50, gravity=0)
     force of the upstream body on the downstream one, of the ground on the link at
     fixed pivots; torques counter-clockwise positive.  Returns {name: array}.
     """
-    reader = example_mechanism(n).forces
+    reader = example_mechanism(n, dodge).forces
     if reader is None:
         raise ValueError(f"Example {n} has no force analysis (Examples 2 and 5 have)")
-    snapshots = example_snapshots(n, crank_angles, number, dps, gravity)
+    snapshots = example_snapshots(n, crank_angles, number, dps, gravity, dodge=dodge)
     named = [reader(s) for s in snapshots]
     return {name: _table([row[name] for row in named], number) for name in named[0]}
