@@ -14,6 +14,7 @@ wait in tests/corpus/pending/; ``--pending`` tells which of them yaseer now gets
 
 from __future__ import annotations
 
+import math
 import os
 import random
 import sys
@@ -22,7 +23,7 @@ from pathlib import Path
 import pytest
 
 from test_differential_programgen import LONG_LINE, random_program
-from test_differential_support import PcBasic, base_seed, outputs_agree, run_yaseer
+from test_differential_support import PcBasic, base_seed, numbers_and_text, outputs_agree, run_yaseer
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 
@@ -60,6 +61,39 @@ def test_generated_programs_match_pcbasic(pc):
         if not outputs_agree(ours, theirs, tolerant=numeric):
             differing.append((source, theirs, ours))
     assert not differing, f"{len(differing)} of {compared} differ; first:\n" + "\n".join(differing[0])
+
+
+def random_angle(rng: random.Random) -> float:
+    """Degrees: multiples of 30 and 45 (where yaseer's exact trig matters), integers, quarters."""
+    kind = rng.random()
+    if kind < 0.3:
+        return float(rng.choice([30, 45, 60, 90, 120, 135, 180, 270, 360]) * rng.choice([-2, -1, 1, 2]))
+    if kind < 0.7:
+        return float(rng.randint(-720, 720))
+    return rng.randint(-2880, 2880) / 4
+
+
+def test_degree_mode_matches_pcbasic_double_radians():
+    """yaseer's default degrees against PC-BASIC in double precision, converting with P = ATN(1#)/45."""
+    rng = random.Random(base_seed() + 2)
+    pc = PcBasic(double=True)
+    ours_lines, theirs_lines = [], []
+    for k in range(30):
+        angle = random_angle(rng)
+        ratio = rng.choice([-4, -1, -0.5, 0, 0.25, 1, 3, 1000])
+        tangent = "" if angle % 180 == 90 else f"; TAN({angle})"
+        ours_lines.append(f"{10 + 10 * k} PRINT SIN({angle}); COS({angle}){tangent}; ATN({ratio})")
+        tangent = "" if not tangent else f"; TAN({angle}# * P)"
+        theirs_lines.append(f"{10 + 10 * k} PRINT SIN({angle}# * P); COS({angle}# * P){tangent}; ATN({ratio}#) / P")
+    ours = run_yaseer("\n".join(ours_lines) + "\n", angle="deg")
+    theirs = pc.program("5 DEFDBL A-Z: P = ATN(1#) / 45#\n" + "\n".join(theirs_lines))
+    pc.close()
+    our_numbers, our_text = numbers_and_text(ours)
+    their_numbers, their_text = numbers_and_text(theirs)
+    assert our_text == their_text
+    assert len(our_numbers) == len(their_numbers) >= 30 * 3
+    far = [(a, b) for a, b in zip(our_numbers, their_numbers) if not math.isclose(a, b, rel_tol=1e-9, abs_tol=1e-9)]
+    assert not far, far[:5]
 
 
 def test_comparison_sees_a_difference():

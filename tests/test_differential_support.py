@@ -43,10 +43,11 @@ class StepLimitExceeded(Exception):
 class PcBasic:
     """One headless PC-BASIC session running direct statements and whole programs."""
 
-    def __init__(self) -> None:
+    def __init__(self, double: bool = False) -> None:
+        """``double``: PC-BASIC's /D option (double-precision SIN, COS, ATN, SQR ... of double arguments)."""
         import pcbasic  # test dependency, imported only when a differential test runs
 
-        self._session = pcbasic.Session(output_streams=None, input_streams=None)
+        self._session = pcbasic.Session(output_streams=None, input_streams=None, double=double)
         self._session.start()
         self._steps = 0
         self._session.set_hook(self._count_step)
@@ -274,12 +275,12 @@ def run_yaseer(source: str, angle: str = "rad") -> str:
     return screen.getvalue()
 
 
-NUMBER = re.compile(r"-?(?:\d+\.?\d*|\.\d+)(?:E[-+]\d+)?")
+NUMBER = re.compile(r"-?(?:\d+\.?\d*|\.\d+)(?:[ED][-+]\d+)?")  # D: GW-BASIC's double exponent
 
 
 def numbers_and_text(output: str) -> tuple[list[float], str]:
     """The numbers of an output and its text with numbers replaced by ``#`` and blanks collapsed."""
-    numbers = [float(m) for m in NUMBER.findall(output)]
+    numbers = [float(m.replace("D", "E")) for m in NUMBER.findall(output)]
     text = " ".join(NUMBER.sub("#", output).split())
     return numbers, text
 
