@@ -47,6 +47,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import lru_cache
 from decimal import ROUND_HALF_UP, Context, Decimal, localcontext
 from typing import Sequence, Union
 
@@ -102,6 +103,8 @@ def _unsigned_text(x: float) -> str:
     """``abs(x)`` as PRINT shows it, without sign or spaces."""
     if x == 0:
         return "0"
+    if x.is_integer() and abs(x) < 1e10:  # the common case (counters, indices), same text, faster
+        return str(int(abs(x)))
     digit_string, exponent = _significant_digits(x, SIGNIFICANT_DIGITS)
     needs_e = exponent >= SIGNIFICANT_DIGITS or len(digit_string) - exponent > SIGNIFICANT_DIGITS + 1
     if needs_e:
@@ -111,6 +114,7 @@ def _unsigned_text(x: float) -> str:
 
 def str_dollar(x: float) -> str:
     """STR$(x): a leading space (or minus), up to 10 significant digits, no trailing space."""
+    x = float(x)
     _check_finite(x)
     sign = "-" if x < 0 else " "
     return sign + _unsigned_text(x)
@@ -256,6 +260,12 @@ def parse_format(fmt: str) -> list[Token]:
     return tokens
 
 
+@lru_cache(maxsize=256)
+def _parsed(fmt: str) -> tuple[Token, ...]:
+    """``parse_format`` remembered: a listing prints with the same few formats in its loop."""
+    return tuple(parse_format(fmt))
+
+
 # ---------------------------------------------------------------------------
 # PRINT USING: the fields
 # ---------------------------------------------------------------------------
@@ -391,7 +401,7 @@ def using(fmt: str, values: Sequence[float | str]) -> str:
     The format is reused from its start while values remain; after the last
     value, literal text is copied up to the next field or the end of the format.
     """
-    tokens = parse_format(fmt)
+    tokens = _parsed(fmt)
     if not any(not isinstance(token, Literal) for token in tokens):
         raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
     out: list[str] = []
