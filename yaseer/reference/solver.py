@@ -49,9 +49,14 @@ LEVELS = ("positions", "velocities", "accelerations", "forces")
 
 
 class Mechanism:
-    """Bodies, constraints (exactly one AngleDriver for a 1-DOF mechanism), loads and gravity.
+    """Bodies, constraints, loads, gravity and optionally the unknown load.
 
-    ``gravity`` is the acceleration of gravity, acting along -y on every mass.
+    The constraints must fix every coordinate once the drivers are given: the
+    first AngleDriver is the crank (its angle is what analyses step along);
+    further drivers (LengthDriver) get their values per analysis.  ``gravity`` is
+    the acceleration of gravity, acting along -y on every mass; ``unknown`` the
+    UnknownLoad that balances the motion in a force analysis (else the crank's
+    drive torque does).
     """
 
     def __init__(self, bodies: Sequence[Body], constraints: Sequence, loads: Sequence = (), gravity=0,
