@@ -226,3 +226,10 @@ def test_print_text_reads_back_within_ten_digits(x):
     assert len(mantissa) <= 10
     shown = Fraction(text.strip())  # exact: near 1.8E308 the rounded text is beyond the largest double
     assert abs(shown - Fraction(x)) <= abs(Fraction(x)) * Fraction(5, 10 ** 10) * (1 + Fraction(1, 10 ** 6))
+
+
+def test_integers_and_integral_floats_print_alike():
+    assert number_to_text(5) == number_to_text(5.0) == " 5 "
+    assert number_to_text(-3) == "-3 "
+    assert number_to_text(9999999999) == " 9999999999 "
+    assert number_to_text(10000000000) == " 1E+10 "
