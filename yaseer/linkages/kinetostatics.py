@@ -100,12 +100,27 @@ def _rows(bodies: list[Body]) -> dict[str, int]:
     return rows
 
 
-def _add(matrix_or_rhs, index, value) -> None:
-    """Add ``value`` (broadcast over the positions) to one equation entry.
+def _add_load(target, column, body: Body, row: int, scale, direction, point) -> None:
+    """Add ``scale`` times a unit load's (Fx, Fy, moment about G) to the body's rows.
 
-    The arrays are laid out equations-first, (rows, [columns,] *positions), so
-    each entry is a contiguous vector over the positions."""
-    matrix_or_rhs[index] += value
+    ``target`` is the matrix (then ``column`` is the unknown's column) or the
+    right-hand side (``column is None``).  The arrays are laid out equations-first,
+    (rows, [columns,] *positions), so each entry is a contiguous vector over the
+    positions and ``+=`` broadcasts the value over them.
+    """
+    components = _effect(direction, point, body.centre.pos)
+    for offset, component in enumerate(components[: 2 if body.particle else 3]):
+        index = (row + offset,) if column is None else (row + offset, column)
+        target[index] += scale * component
+
+
+def _add_inertia(rhs, body: Body, row: int, gravity) -> None:
+    """The d'Alembert side of a body's equations: m a_G (+ m G upward balance), I alpha."""
+    inertial = body.mass * body.centre.acc
+    rhs[row] += inertial.real
+    rhs[row + 1] += inertial.imag + body.mass * gravity
+    if not body.particle:
+        rhs[row + 2] += body.inertia * body.alpha
 
 
 def solve_kinetostatics(
@@ -136,31 +151,13 @@ def solve_kinetostatics(
     rhs = np.zeros((size,) + shape)
     for column, actions in enumerate(columns):
         for body_name, sign, direction, point in actions:
-            body = by_name[body_name]
-            fx, fy, moment = _effect(direction, point, body.centre.pos)
-            row = rows[body_name]
-            _add(matrix, (row, column), sign * fx)
-            _add(matrix, (row + 1, column), sign * fy)
-            if not body.particle:
-                _add(matrix, (row + 2, column), sign * moment)
+            _add_load(matrix, column, by_name[body_name], rows[body_name], sign, direction, point)
     for body in bodies:
-        row = rows[body.name]
-        inertial = body.mass * body.centre.acc
-        _add(rhs, (row,), inertial.real)
-        _add(rhs, (row + 1,), inertial.imag + body.mass * gravity)
-        if not body.particle:
-            _add(rhs, (row + 2,), body.inertia * body.alpha)
+        _add_inertia(rhs, body, rows[body.name], gravity)
     for name, load in loads.items():
         value = values.get(name, 0.0)
-        if name == unknown or not np.any(value):
-            continue
-        body = by_name[load.body]
-        fx, fy, moment = _effect(load.direction, load.point, body.centre.pos)
-        row = rows[load.body]
-        _add(rhs, (row,), -value * fx)
-        _add(rhs, (row + 1,), -value * fy)
-        if not body.particle:
-            _add(rhs, (row + 2,), -value * moment)
+        if name != unknown and np.any(value):
+            _add_load(rhs, None, by_name[load.body], rows[load.body], -value, load.direction, load.point)
     solution = _solve(matrix, rhs)
     return _unpack(joints, solution), solution[..., -1]
 
