@@ -25,6 +25,8 @@ from yaseer.basic.errors import (
     BasicError, FOR_WITHOUT_NEXT, OUT_OF_MEMORY, SYNTAX_ERROR, TYPE_MISMATCH, UNDEFINED_LINE,
 )
 
+MAX_STACK = 10_000  # GOSUB returns + open FOR loops (machine.MAX_STACK)
+
 _PY_RELATIONS = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
 
 # name -> (argument types, result type, Python callable name in the namespace)
@@ -408,6 +410,7 @@ class AreaCompiler:
         self.data: list = []
         self.data_lines: dict = {}
         self.scope = _BlockScope(self)
+        self.counting_vars: set[str] = set()  # native loop variables that stay >= 0
 
     # -- emission primitives
     def emit(self, text: str) -> None:
@@ -469,6 +472,8 @@ class AreaCompiler:
         for index in node.indices:
             if isinstance(index, ast.Num) and index.value >= 0 and index.value == int(index.value):
                 code += f"[{int(index.value)}]"
+            elif isinstance(index, ast.Var) and index.name in self.counting_vars and isinstance(scope, _BlockScope):
+                code += f"[int({scope.scalar(index.name)} + 0.5)]"  # a loop variable known to be >= 0
             else:
                 code += f"[_ix({self.numeric(index, scope)})]"
         return code
@@ -654,7 +659,8 @@ class AreaCompiler:
         target = self.jump(stmt.target)
         block, indent = self.cur, self.indent
         ret = self.continuation()
-        block.code.append((indent, f"_gosub({ret})"))
+        block.code.append((indent, f"if len(_stk) >= {MAX_STACK}: _oom()"))
+        block.code.append((indent, f"_stk.append({ret})"))
         block.code.append((indent, target))
 
     def stmt_GosubProg(self, stmt, scope):
@@ -663,6 +669,8 @@ class AreaCompiler:
         self.emit("#RELOAD#")
 
     def stmt_Return(self, stmt, scope):
+        # the common case inline: a GOSUB's return block on top of the stack
+        self.emit("if _stk and type(_stk[-1]) is int: return _stk.pop()")
         self.emit("return _return()")
 
     def stmt_OnJump(self, stmt, scope):
@@ -908,6 +916,13 @@ class AreaCompiler:
             return "values"
         return "count"
 
+    def counts_up_from_zero(self, stmt) -> bool:
+        """Does the loop's variable stay >= 0 in its body (constant start >= 0, step > 0,
+        never assigned there)?  Then it can index arrays without the subscript check."""
+        start_ok = isinstance(stmt.start, ast.Num) and stmt.start.value >= 0
+        step_ok = stmt.step is None or (isinstance(stmt.step, ast.Num) and stmt.step.value > 0)
+        return start_ok and step_ok and self.iterable_loop(stmt.var)
+
     def iterable_loop(self, var) -> bool:
         """May the native loop now being compiled iterate instead of testing?
 
@@ -976,6 +991,9 @@ class AreaCompiler:
             del block.code[mark:]
             self.emit(f"raise _err({err.message!r}, {err.code})")
             return i + 1
+        counting = self.counts_up_from_zero(stmt)
+        if counting:
+            self.counting_vars.add(stmt.var.name)
         self.indent += 1
         if all(self.flat[k][0] == self.flat[i][0] for k in range(i, j + 1)):
             self.line = self.flat[i][0]  # a one-line loop: _ln is already right
@@ -983,6 +1001,8 @@ class AreaCompiler:
             self.line = None
             self.set_line(self.flat[i][0])
         self.walk(i + 1, j)
+        if counting:
+            self.counting_vars.discard(stmt.var.name)
         self.index = j
         if self.flat[j][0] != self.line:
             self.set_line(self.flat[j][0])

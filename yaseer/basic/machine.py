@@ -46,7 +46,7 @@ AL_YASEER_DIMENSIONS = {
 DEFAULT_DIMENSION = 10  # an array used without DIM: subscripts 0..10
 
 # Resource limits (each exceeded limit is "Out of memory in N").
-MAX_STACK = 10_000  # GOSUB returns + open FOR loops together
+from yaseer.basic.compiler import MAX_STACK  # GOSUB returns + open FOR loops together  # noqa: E402
 MAX_AREA_DEPTH = 100  # GOSUB PROG nesting
 MAX_ARRAY_ELEMENTS = 2_000_000  # per array
 MAX_TOTAL_ELEMENTS = 8_000_000  # all arrays together (about 64 MB)
@@ -315,12 +315,13 @@ class Machine:
 
     def _namespace(self, area, rt: _AreaRuntime) -> dict:
         ns = {
-            "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range,
+            "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range, "type": type, "int": int,
                              "BaseException": BaseException},
             "_M": self, "_S": self.scalars, "_arr": self.array_nd, "_ix": runtime.subscript,
             "_ovf": runtime.overflow, "_err": BasicError, "_END": END, "_DirectJump": DirectJump,
             "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_Tab": Tab, "_Spc": Spc,
-            "_gosub": self.gosub, "_return": self.gosub_return, "_call": self.call_area,
+            "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,
+            "_oom": self._out_of_memory, "_call": self.call_area,
             "_on": self.on_index, "_for": self.for_push, "_next": self.next_frame,
             "_pop": self.stack.pop, "_next_any": self.next_any, "_stop": self._stopper(area),
             "_dim": self.dim, "_clear": self.clear, "_read_n": rt.read_number,
@@ -415,6 +416,10 @@ class Machine:
             rt.data_index = 0
 
     # ------------------------------------------------------------ control flow
+    @staticmethod
+    def _out_of_memory() -> None:
+        raise BasicError("Out of memory", OUT_OF_MEMORY)
+
     def gosub(self, return_block: int) -> None:
         if len(self.stack) >= MAX_STACK:
             raise BasicError("Out of memory", OUT_OF_MEMORY)
