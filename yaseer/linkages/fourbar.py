@@ -19,28 +19,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from yaseer.linkages.errors import AssemblyError
-from yaseer.linkages.kinetostatics import (
-    Body,
-    ForceResult,
-    Joint,
-    Load,
-    MassProps,
-    analysis_shape,
-    solve_kinetostatics,
-)
+from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse
 from yaseer.linkages.registry import lookup, register
-from yaseer.linkages.planar import (
-    Motion,
-    Rotation,
-    Stretch,
-    driven_crank,
-    fixed_point,
-    perpendicular_direction,
-    rigid_point,
-    solve_two_directions,
-    still,
-    unit_degrees,
-)
+from yaseer.linkages.planar import Motion, Rotation, Stretch, driven_crank, fixed_point, perpendicular_direction
+from yaseer.linkages.planar import rigid_point, solve_two_directions, still, unit_degrees
 
 UNCROSSED = 1
 CROSSED = -1
@@ -131,12 +113,7 @@ class FourBar:
             catalogue[f"{body}_fx"] = Load(body, 1.0, position)
             catalogue[f"{body}_fy"] = Load(body, 1j, position)
             catalogue[f"{body}_perpendicular"] = Load(body, perpendicular_direction(reference, offset, distance), position)
-        shape = analysis_shape(
-            self.pin_a.pos, crank.mass, crank.inertia, coupler.mass, coupler.inertia,
-            follower.mass, follower.inertia, gravity, *loads.values(),
-        )
-        reactions, value = solve_kinetostatics(bodies, joints, catalogue, loads, unknown, gravity, shape)
-        return ForceResult(unknown, value, reactions)
+        return analyse(bodies, joints, catalogue, loads, unknown, gravity)
 
 
 def fourbar(*args, method: str | None = None, **kwargs) -> FourBar:

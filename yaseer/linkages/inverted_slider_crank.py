@@ -15,29 +15,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from yaseer.linkages.errors import AssemblyError, MethodDivisionByZero
-from yaseer.linkages.kinetostatics import (
-    Body,
-    ForceResult,
-    Joint,
-    Load,
-    MassProps,
-    analysis_shape,
-    solve_kinetostatics,
-)
+from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse
 from yaseer.linkages.registry import lookup, register
 from yaseer.linkages.virtual_link import cos_sin_degrees
-from yaseer.linkages.planar import (
-    Motion,
-    Rotation,
-    Stretch,
-    driven_crank,
-    fixed_point,
-    perpendicular_direction,
-    rigid_point,
-    solve_two_directions,
-    unit,
-    unit_degrees,
-)
+from yaseer.linkages.planar import Motion, Rotation, Stretch, driven_crank, fixed_point, perpendicular_direction
+from yaseer.linkages.planar import rigid_point, solve_two_directions, unit, unit_degrees
 
 # Loads of Program 3: crank_torque [U(3)], follower_perpendicular [F(18)].
 LOAD_NAMES = ("crank_torque", "follower_perpendicular")
@@ -108,10 +90,7 @@ class InvertedSliderCrank:
             "follower_perpendicular": Load("follower", perpendicular_direction(self.follower.angle, offset, distance),
                                            self.follower_point(distance, offset).pos),
         }
-        shape = analysis_shape(self.pin_a.pos, crank.mass, crank.inertia, block_mass, block_inertia,
-                               follower.mass, follower.inertia, gravity, *loads.values())
-        reactions, value = solve_kinetostatics(bodies, joints, catalogue, loads, unknown, gravity, shape)
-        return ForceResult(unknown, value, reactions)
+        return analyse(bodies, joints, catalogue, loads, unknown, gravity)
 
 
 def inverted_slider_crank(*args, method: str | None = None, **kwargs) -> InvertedSliderCrank:

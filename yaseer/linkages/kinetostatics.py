@@ -219,3 +219,16 @@ class ForceResult:
 def analysis_shape(*arrays) -> tuple[int, ...]:
     """The broadcast shape of every array taking part in a force analysis."""
     return np.broadcast_shapes(*(np.shape(array) for array in arrays))
+
+
+def analyse(bodies: list[Body], joints: list[Joint], loads: dict[str, Load], values: dict, unknown: str,
+            gravity) -> ForceResult:
+    """:func:`solve_kinetostatics` over the common shape of everything given."""
+    shape = analysis_shape(
+        gravity, *values.values(),
+        *(item for body in bodies for item in (body.mass, body.inertia, body.centre.pos, body.alpha)),
+        *(item for joint in joints for item in (joint.point, joint.direction) if item is not None),
+        *(item for load in loads.values() for item in (load.point, load.direction) if item is not None),
+    )
+    reactions, value = solve_kinetostatics(bodies, joints, loads, values, unknown, gravity, shape)
+    return ForceResult(unknown, value, reactions)

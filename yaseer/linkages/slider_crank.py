@@ -17,30 +17,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from yaseer.linkages.errors import AssemblyError
-from yaseer.linkages.kinetostatics import (
-    Body,
-    ForceResult,
-    Joint,
-    Load,
-    MassProps,
-    analysis_shape,
-    solve_kinetostatics,
-)
+from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse
 from yaseer.linkages.registry import lookup, register
-from yaseer.linkages.planar import (
-    Motion,
-    Rotation,
-    Stretch,
-    driven_crank,
-    dot,
-    fixed_point,
-    perpendicular_direction,
-    rigid_point,
-    solve_two_directions,
-    still,
-    unit,
-    unit_degrees,
-)
+from yaseer.linkages.planar import Motion, Rotation, Stretch, driven_crank, dot, fixed_point
+from yaseer.linkages.planar import perpendicular_direction, rigid_point, solve_two_directions, still, unit
+from yaseer.linkages.planar import unit_degrees
 
 # Loads of Program 1, by name (contract element in brackets):
 # crank_fx, crank_fy [F(0), F(1)] force components on the crank at its point;
@@ -129,9 +110,7 @@ class SliderCrank:
             "rod_perpendicular": Load("rod", perpendicular_direction(self._rod_from_b().angle, rod_point[1], rod_point[0]), rod_p),
             "piston": Load("piston", -axis, self.pin_b.pos),
         }
-        shape = analysis_shape(self.pin_a.pos, crank.mass, crank.inertia, rod.mass, rod.inertia, piston_mass, gravity, *loads.values())
-        reactions, value = solve_kinetostatics(bodies, joints, catalogue, loads, unknown, gravity, shape)
-        return ForceResult(unknown, value, reactions)
+        return analyse(bodies, joints, catalogue, loads, unknown, gravity)
 
 
 def slider_crank(*args, method: str | None = None, **kwargs) -> SliderCrank:
