@@ -711,3 +711,25 @@ def test_examples_as_drawn_have_exact_axes():
         assert abs(s.velocity("link BD", "D")[0]) < 1e-9
     for s in example_snapshots(3, [12.0, 200.0], dodge=0):
         assert abs(s.position("rod BAC", "B")[0]) < 1e-12
+
+
+# --------------------------------------------------------------------------- random geometries
+
+from hypothesis import HealthCheck, assume, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(a=st.floats(5, 60), b=st.floats(20, 150), c=st.floats(20, 150), d=st.floats(20, 150),
+       theta=st.floats(-180, 180), side=st.sampled_from([1, -1]), w=st.floats(-20, 20), alpha=st.floats(-50, 50))
+def test_four_bar_reference_on_random_geometries(a, b, c, d, theta, side, w, alpha):
+    """Any assemblable position away from toggles: the solver equals the hand closed form."""
+    t = math.radians(theta)
+    reach = math.hypot(d - a * math.cos(t), a * math.sin(t))
+    assume(abs(b - c) + 1 < reach < b + c - 1)
+    exact = four_bar_closed_form(a, b, c, d, theta, w, alpha, side)
+    r = basic_linkages.fourbar(d, 0, a, b, c, [theta], w, alpha, crossed=side < 0)
+    scale_w = abs(a * w) / min(b, c) + 1e-9
+    assert math.remainder(r["T(13)"][0] - exact["beta"], 360) == pytest.approx(0, abs=1e-9)
+    assert r["W(6)"][0] == pytest.approx(exact["bd"], rel=1e-8, abs=1e-10 * scale_w)
+    assert r["A(7)"][0] == pytest.approx(exact["pdd"], rel=1e-8, abs=1e-10 * (scale_w ** 2 + abs(alpha)))

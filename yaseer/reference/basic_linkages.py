@@ -190,15 +190,19 @@ def fourbar_model(crank, coupler, follower, follower_pivot):
 
 
 def fourbar_sketch(mechanism, theta_deg, crank, coupler, follower, pivot, side):
-    """A rough placement: C half a link off the midpoint of B and D, on ``side`` (+1 left, -1 right of B->D)."""
+    """A rough placement on ``side`` (+1 left, -1 right of B->D): the coupler and follower
+    drawn as the triangle B C D would be drawn by compass, with the spread clamped so that
+    a position that does not assemble still gives a sketch (Newton then reports it)."""
     crank, coupler, follower = float(crank), float(coupler), float(follower)
     pivot = (float(pivot[0]), float(pivot[1]))
     pin = (crank * _unit(theta_deg)[0], crank * _unit(theta_deg)[1])
-    mid = ((pin[0] + pivot[0]) / 2, (pin[1] + pivot[1]) / 2)
     run = (pivot[0] - pin[0], pivot[1] - pin[1])
     length = math.hypot(*run) or 1.0
-    h = 0.5 * min(coupler, follower)
-    tip = (mid[0] - side * h * run[1] / length, mid[1] + side * h * run[0] / length)
+    along = (coupler * coupler - follower * follower + length * length) / (2 * length)
+    along = max(-coupler, min(coupler, along))
+    h = math.sqrt(max(coupler * coupler - along * along, (0.05 * coupler) ** 2))
+    tip = (pin[0] + (along * run[0] - side * h * run[1]) / length,
+           pin[1] + (along * run[1] + side * h * run[0]) / length)
     return mechanism.coordinates({
         "crank": (0, 0, theta_deg),
         "coupler": (pin[0], pin[1], math.degrees(math.atan2(tip[1] - pin[1], tip[0] - pin[0]))),
