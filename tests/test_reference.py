@@ -733,3 +733,19 @@ def test_four_bar_reference_on_random_geometries(a, b, c, d, theta, side, w, alp
     assert math.remainder(r["T(13)"][0] - exact["beta"], 360) == pytest.approx(0, abs=1e-9)
     assert r["W(6)"][0] == pytest.approx(exact["bd"], rel=1e-8, abs=1e-10 * scale_w)
     assert r["A(7)"][0] == pytest.approx(exact["pdd"], rel=1e-8, abs=1e-10 * (scale_w ** 2 + abs(alpha)))
+
+
+@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(r=st.floats(5, 60), l=st.floats(20, 150), e=st.floats(-100, 100), theta=st.floats(-180, 180),
+       axis=st.floats(-180, 180), w=st.floats(-20, 20), alpha=st.floats(-50, 50))
+def test_slider_crank_reference_on_random_geometries(r, l, e, theta, axis, w, alpha):
+    """Program 1's reference on random geometries against the closed form turned by the axis."""
+    height = -e - r * math.sin(math.radians(theta - axis))
+    assume(abs(height) < 0.98 * l)
+    got = basic_linkages.slider_crank(e, r, l, [theta], w, alpha, axis_deg=axis)
+    exact = slider_crank_closed_form(r, l, -e, theta - axis, w, alpha)
+    scale = r * (abs(w) + 1) ** 2 + r * abs(alpha)
+    c, s = math.cos(math.radians(axis)), math.sin(math.radians(axis))
+    assert got["xB"][0] == pytest.approx(c * exact["x"] + s * e, abs=1e-10 * (l + r))
+    assert got["vxB"][0] == pytest.approx(c * exact["v"], abs=1e-9 * scale)
+    assert got["axB"][0] == pytest.approx(c * exact["a"], abs=1e-8 * scale * (1 + r / l) ** 2 / (1 - (height / l) ** 2))
