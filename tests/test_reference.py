@@ -719,7 +719,7 @@ from hypothesis import HealthCheck, assume, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
 
-@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(a=st.floats(5, 60), b=st.floats(20, 150), c=st.floats(20, 150), d=st.floats(20, 150),
        theta=st.floats(-180, 180), side=st.sampled_from([1, -1]), w=st.floats(-20, 20), alpha=st.floats(-50, 50))
 def test_four_bar_reference_on_random_geometries(a, b, c, d, theta, side, w, alpha):
@@ -735,7 +735,7 @@ def test_four_bar_reference_on_random_geometries(a, b, c, d, theta, side, w, alp
     assert r["A(7)"][0] == pytest.approx(exact["pdd"], rel=1e-8, abs=1e-10 * (scale_w ** 2 + abs(alpha)))
 
 
-@settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(r=st.floats(5, 60), l=st.floats(20, 150), e=st.floats(-100, 100), theta=st.floats(-180, 180),
        axis=st.floats(-180, 180), w=st.floats(-20, 20), alpha=st.floats(-50, 50))
 def test_slider_crank_reference_on_random_geometries(r, l, e, theta, axis, w, alpha):
