@@ -749,3 +749,36 @@ def test_slider_crank_reference_on_random_geometries(r, l, e, theta, axis, w, al
     assert got["xB"][0] == pytest.approx(c * exact["x"] + s * e, abs=1e-10 * (l + r))
     assert got["vxB"][0] == pytest.approx(c * exact["v"], abs=1e-9 * scale)
     assert got["axB"][0] == pytest.approx(c * exact["a"], abs=1e-8 * scale * (1 + r / l) ** 2 / (1 - (height / l) ** 2))
+
+
+# --------------------------------------------------------------------------- the virtual link is exact
+
+def polar_motion(r, v, a):
+    """Length, angle (deg) and their rates of the vector r with velocity v and acceleration a.
+
+    r = L u, v = L' u + L T' n, a = (L'' - L T'^2) u + (L T'' + 2 L' T') n, u = r/L, n = u turned 90 deg.
+    """
+    length = math.hypot(*r)
+    u = (r[0] / length, r[1] / length)
+    n = (-u[1], u[0])
+    rate = v[0] * u[0] + v[1] * u[1]
+    angle_rate = (v[0] * n[0] + v[1] * n[1]) / length
+    accel = a[0] * u[0] + a[1] * u[1] + length * angle_rate ** 2
+    angle_accel = (a[0] * n[0] + a[1] * n[1] - 2 * rate * angle_rate) / length
+    return length, math.degrees(math.atan2(r[1], r[0])), rate, accel, angle_rate, angle_accel
+
+
+@pytest.mark.parametrize("theta", [20.0, 150.0, 275.0])
+def test_example1_virtual_link_as_a_flexible_crank_is_exact(theta):
+    """The paper's idea, checked without Program 5: Ao->B of the real Example 1 mechanism,
+    turned into a flexible crank (length, angle and their rates), drives the slider-crank
+    AoBD of programs.program1 to exactly the real piston D."""
+    (s,) = example_snapshots(1, [theta])
+    length, angle, rate, accel, w, alpha = polar_motion(
+        s.position("rod ABC", "B"), s.velocity("rod ABC", "B"), s.acceleration("rod ABC", "B"))
+    crank = programs.program1({"L(1)": 150, "T(4)": 90.1, "L(2)": length, "L(3)": 150, "T(2)": angle,
+                               "W(2)": w, "A(2)": alpha, "D(0)": rate, "E(0)": accel})
+    d = "link BD", "D"
+    assert crank["Y(2)"][0] == pytest.approx(s.position(*d)[1], rel=1e-12)
+    assert crank["V(4)"][0] == pytest.approx(s.velocity(*d)[1], rel=1e-10, abs=1e-9)
+    assert crank["A(36)"][0] == pytest.approx(s.acceleration(*d)[1], rel=1e-9, abs=1e-6)
