@@ -113,8 +113,10 @@ def inverted_slider_crank_closed(
 ) -> InvertedSliderCrank:
     """Positions always; velocities and accelerations when any crank rate is non-zero.
 
-    ``ground_length``, ``ground_angle_deg``: the vector Bo->Ao.  Raises
-    AssemblyError where the crank pin A falls on Bo (L5 = 0).
+    ``ground_length``, ``ground_angle_deg``: the vector Bo->Ao.  Lengths in any
+    unit, angles in degrees counter-clockwise from +x, rates in rad/s, rad/s**2
+    (counter-clockwise positive) and length/s, length/s**2.  Raises AssemblyError
+    where the crank pin A falls on Bo (L5 = 0).
     """
     crank, length, pin_a, moving = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate,
                                                 crank_length_accel)

@@ -135,7 +135,10 @@ def slider_crank_closed(
     """Positions always; velocities and accelerations when any crank rate
     (omega, alpha, crank_length_rate, crank_length_accel) is non-zero.
 
-    Raises AssemblyError for a rod of length <= 0 or where b < |e + A.u(phi+90)|,
+    Lengths in any unit (e is positive to the right of the axis direction u(phi)),
+    angles in degrees counter-clockwise from +x, omega and alpha in rad/s and
+    rad/s**2 counter-clockwise positive, the crank length's rates in length/s and
+    length/s**2.  Raises AssemblyError for a rod of length <= 0 or where b < |e + A.u(phi+90)|,
     LockedError where the rod is perpendicular to the axis and rates are asked.
     """
     e = np.asarray(eccentricity, dtype=float)
