@@ -279,3 +279,23 @@ def test_corrected_listing_without_the_dodges_matches_the_mechanism_as_drawn(n, 
     assert (np.abs(printed - drawn) / scale).max() < 1e-11
     dodged = example_columns(n, list(printed[:, 0]))
     assert 1e-4 < (np.abs(dodged - drawn) / scale).max() < 1e-2
+
+
+@pytest.mark.parametrize("n, inputs, angle_name, q_name, outputs", [
+    (1, PROGRAM1_INPUTS, "T(2)", "Q(1)", PROGRAM1_OUTPUTS),
+    (2, PROGRAM2_INPUTS, "T(12)", "Q(2)", PROGRAM2_OUTPUTS),
+    (3, PROGRAM3_INPUTS, "T(7)", "Q(3)", PROGRAM3_OUTPUTS)])
+def test_static_calls_against_the_real_mechanism(n, inputs, angle_name, q_name, outputs, tmp_path):
+    """All crank rates zero: a static force analysis (weights and loads only), q = 3."""
+    from yaseer.reference import programs
+
+    still = {"W(2)", "A(2)", "D(0)", "E(0)", "W(5)", "A(5)", "D(2)", "E(2)", "W(0)", "A(0)", "D(3)", "E(3)"}
+    values = {name: (0 if name in still else value) for name, value in inputs.items()}
+    values[q_name] = 3
+    unknown = getattr(programs, f"UNKNOWN_NAMES_{n}")[3]
+    angles = [33.0, 250.0]
+    printed = _run_program(n, values, angle_name, angles, (unknown,) + outputs, unknown, tmp_path)
+    model = getattr(programs, f"program{n}")(values, angles)
+    _compare(printed, model, (unknown,) + outputs, {"T(3)", "T(13)", "T(14)", "T(9)"})
+    rates = [k for k, name in enumerate((unknown,) + outputs) if name[0] in "VA" or name[:2] in ("W(", "D(", "E(")]
+    assert np.all(printed[:, rates] == 0)
