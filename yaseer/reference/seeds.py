@@ -44,10 +44,19 @@ def seed001_slider_crank(thetas_deg, omega=-15, alpha=-10, branch="open", AO=3, 
     """
     if branch not in ("open", "crossed"):
         raise ValueError("branch is 'open' (xB > xA) or 'crossed' (xB < xA)")
-    r = slider_crank(-offset if not isinstance(offset, str) else "-" + offset, AO, AB, thetas_deg,
+    r = slider_crank(_negated(offset), AO, AB, thetas_deg,
                      omega, alpha, axis_deg=0, ahead=branch == "open", number=number, dps=dps)
     return {"xB": r["xB"], "vB": r["vxB"], "aB": r["axB"], "thetaAB": r["T(3)"],
             "omegaAB": r["W(3)"], "alphaAB": r["A(3)"]}
+
+
+def _negated(value):
+    """-value, exact for decimal strings."""
+    if isinstance(value, str):
+        from decimal import Decimal
+
+        return str(-Decimal(value))
+    return -value
 
 
 # --------------------------------------------------------------------------- four-bars
