@@ -44,6 +44,7 @@ def error_of(program: str, setup=None, **options) -> str:
     """The one-line error a program stops with."""
     from yaseer.basic.errors import BasicError
 
+    options.setdefault("input_stream", io.StringIO(""))
     machine = Machine(screen=io.StringIO(), **options)
     machine.load(program)
     if setup:

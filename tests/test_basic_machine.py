@@ -434,3 +434,9 @@ def test_total_array_budget():
 
     names = ", ".join(f"A{k}(1999998)" for k in range(machine_module.MAX_TOTAL_ELEMENTS // 1999999 + 1))
     assert error_of(f"10 DIM {names}") == "Out of memory in 10"
+
+
+def test_empty_loops():
+    assert values("10 FOR I=1 TO 1000: NEXT: PRINT I") == [[1001.0]]
+    assert values("10 FOR I=1 TO 3\n20 NEXT I\n30 PRINT I") == [[4.0]]
+    assert values("10 FOR X=.5 TO 99 STEP .25: NEXT: PRINT X") == [[accumulate(0.5, 99.0, 0.25)[1]]]

@@ -411,6 +411,7 @@ class AreaCompiler:
         self.data_lines: dict = {}
         self.scope = _BlockScope(self)
         self.counting_vars: set[str] = set()  # native loop variables that stay >= 0
+        self.fn_params: dict[str, list] = {}  # DEF FN name -> parameter names
 
     # -- emission primitives
     def emit(self, text: str) -> None:
@@ -524,6 +525,13 @@ class AreaCompiler:
         return f"{helper}({', '.join(codes)})", result
 
     def expr_FnCall(self, node, scope):
+        params = self.fn_params.get(node.name)
+        if params is not None:  # a DEF FN of this area: check the call against it
+            if len(params) != len(node.args):
+                raise _syntax_error()
+            for param, arg in zip(params, node.args):
+                if ast.expr_type(arg) != ast.expr_type(ast.Var(param)):
+                    raise _type_mismatch()
         scope.uses_fn = True
         args = ", ".join(self.expr(a, scope)[0] for a in node.args)
         return f"_fn({node.name!r}, {len(node.args)})({args})", ast.expr_type(node)
@@ -995,17 +1003,18 @@ class AreaCompiler:
         if counting:
             self.counting_vars.add(stmt.var.name)
         self.indent += 1
-        if all(self.flat[k][0] == self.flat[i][0] for k in range(i, j + 1)):
-            self.line = self.flat[i][0]  # a one-line loop: _ln is already right
+        if j == i + 1 or all(self.flat[k][0] == self.flat[i][0] for k in range(i, j + 1)):
+            self.line = self.flat[i][0]  # an empty or one-line loop: _ln is already right
         else:
             self.line = None
             self.set_line(self.flat[i][0])
+        body_mark = len(self.cur.code)
         self.walk(i + 1, j)
+        if len(self.cur.code) == body_mark:
+            self.emit("pass")  # an empty body (a delay loop)
         if counting:
             self.counting_vars.discard(stmt.var.name)
-        self.index = j
-        if self.flat[j][0] != self.line:
-            self.set_line(self.flat[j][0])
+        self.index = j  # (stepping cannot fail, so NEXT's line needs no marker in the loop)
         increment = repr(step_value) if step_value is not None else f"_s{n}"
         if mode == "count":
             self.indent -= 2
@@ -1034,6 +1043,10 @@ class AreaCompiler:
                 if isinstance(s, ast.Data):
                     self.data_lines.setdefault(number, len(self.data))
                     self.data.extend((item, number) for item in split_data(s.text))
+        for _, stmt in self.flat:
+            for s in ([] if isinstance(stmt, BasicError) else _walk(stmt)):
+                if isinstance(s, ast.DefFn):
+                    self.fn_params.setdefault(s.name, s.params)
         self.walk(0, len(self.flat))
         end = self.entry_block[len(self.flat)]
         if self.cur is not None:

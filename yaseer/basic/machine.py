@@ -236,7 +236,6 @@ class Machine:
         self.angle = self.default_angle
         self.random = random.Random(0)
         self.last_random = 0.0
-        self.run_hooks: list[Callable] = []
         self._extra_entries: set[int] = set()
         self.array_elements = 0  # elements in all arrays (MAX_TOTAL_ELEMENTS)
         self.pending_row: list = []  # csv values of a PRINT statement printed in parts
@@ -307,11 +306,19 @@ class Machine:
         """Compile one generated function; one too complex for Python becomes an error."""
         try:
             exec(compile(text, f"<BASIC area {area}>", "exec"), namespace)
-        except (SyntaxError, RecursionError, MemoryError):
-            name = text.split("(", 1)[0].split()[-1]
-            stub = (f"def {name}(*_):\n    _M.line = {first_line!r}\n"
-                    f"    raise _err('Out of memory', {OUT_OF_MEMORY})\n")
-            exec(stub, namespace)
+        except SyntaxError as exc:
+            if "too many" not in str(exc) and "nested" not in str(exc):
+                raise BasicError(f"Internal error (generated code: {exc})", INTERNAL_ERROR) from None
+            exec(self._stub(text, first_line), namespace)
+        except (RecursionError, MemoryError):
+            exec(self._stub(text, first_line), namespace)
+
+    @staticmethod
+    def _stub(text: str, first_line) -> str:
+        """A block Python cannot compile (nested too deeply): it raises Out of memory."""
+        name = text.split("(", 1)[0].split()[-1]
+        return (f"def {name}(*_):\n    _M.line = {first_line!r}\n"
+                f"    raise _err('Out of memory', {OUT_OF_MEMORY})\n")
 
     def _namespace(self, area, rt: _AreaRuntime) -> dict:
         ns = {
