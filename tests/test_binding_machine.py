@@ -108,3 +108,12 @@ def test_a_two_dimensional_output_array_is_a_basic_error(tmp_path, capsys):
     listing = "10 DIM V(4, 4)\n20 L(2) = 1: L(3) = 3: W(2) = 1\n30 GOSUB PROG 1\n"  # V is written, never read
     status, rows, err = run(tmp_path, capsys, listing)
     assert status == 1 and err == "Type mismatch (PROG 1) in 30"
+
+
+@pytest.mark.parametrize("inputs", [
+    "L(2) = 1E+200: L(3) = 1E+200: W(2) = 1E+200",  # kinematics overflow
+    "L(2) = 1: L(3) = 3: W(2) = 1: Z(1) = 2: Q(1) = 1: M(2) = 1E+300: R(2) = 1E+300",  # inertia overflows
+])
+def test_overflowing_inputs_are_an_overflow_error(tmp_path, capsys, inputs):
+    status, rows, err = run(tmp_path, capsys, f"10 {inputs}: GOSUB PROG 1\n")
+    assert status == 1 and err == "Overflow (PROG 1) in 10"

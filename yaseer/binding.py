@@ -135,6 +135,8 @@ def _translate(error: Exception, frame: _Frame) -> BasicError:
         return frame.error("Force system is singular")
     if isinstance(error, MethodDivisionByZero):
         return frame.error("Division by zero", DIVISION_BY_ZERO)
+    if isinstance(error, OverflowError):
+        return frame.error("Overflow", OVERFLOW)
     if isinstance(error, TypeError):  # e.g. an input array the listing made two-dimensional
         return frame.error("Type mismatch", TYPE_MISMATCH)
     return frame.error(str(error))

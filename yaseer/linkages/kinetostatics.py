@@ -169,6 +169,8 @@ def _solve(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
     Scaling a row does not change the solution, so the rows are scaled only in
     the singularity test: no component may exceed SINGULAR_GAIN times the largest
     right-hand side of the rows scaled to unit size."""
+    if not (np.all(np.isfinite(matrix)) and np.all(np.isfinite(rhs))):
+        raise OverflowError("the force system overflows (non-finite coefficients)")
     row_scale = np.max(np.abs(matrix), axis=1)
     row_scale[row_scale == 0] = 1.0
     try:
