@@ -440,3 +440,8 @@ def test_empty_loops():
     assert values("10 FOR I=1 TO 1000: NEXT: PRINT I") == [[1001.0]]
     assert values("10 FOR I=1 TO 3\n20 NEXT I\n30 PRINT I") == [[4.0]]
     assert values("10 FOR X=.5 TO 99 STEP .25: NEXT: PRINT X") == [[accumulate(0.5, 99.0, 0.25)[1]]]
+
+
+def test_zero_trip_loop_started_in_an_if_branch_skips_to_its_next():
+    program = "10 IF 1 THEN FOR I=5 TO 1: PRINT 99\n20 PRINT 1\n30 NEXT I\n40 PRINT I"
+    assert values(program) == [[6.0]]

@@ -264,7 +264,37 @@ def _plan(flat: list, entry_lines=()) -> _Plan:
             entries.add(i + 1)
     # dynamic loops' NEXTs are not consumed; natives' are
     dynamic_for_next = {f: j for f, j in for_next.items() if f not in native}
-    return _Plan(sorted(entries), native, dynamic_for_next, next_for, fine)
+    plan = _Plan(sorted(entries), native, dynamic_for_next, next_for, fine)
+    plan.branch_for_next = _branch_loops(statements, entries)
+    plan.entries = sorted(entries)
+    return plan
+
+
+def _branch_loops(statements: list, entries: set) -> dict:
+    """FORs inside IF branches: id(FOR) -> index of the top-level NEXT that closes it.
+
+    A loop that runs zero times continues after that NEXT (MS-BASIC scans forward for
+    it), so the statement after it becomes a block entry.
+    """
+    found = {}
+    for i, stmt in enumerate(statements):
+        if not isinstance(stmt, ast.If):
+            continue
+        for inner in _walk(stmt):
+            if not isinstance(inner, ast.For):
+                continue
+            depth = 0
+            for k in range(i + 1, len(statements)):
+                other = statements[k]
+                if isinstance(other, ast.For):
+                    depth += 1
+                elif isinstance(other, ast.Next):
+                    if depth == 0 and (other.var is None or other.var == inner.var):
+                        found[id(inner)] = k
+                        entries.add(k + 1)
+                        break
+                    depth = max(0, depth - 1)
+    return found
 
 
 # ------------------------------------------------------------------ code generation
@@ -870,7 +900,10 @@ class AreaCompiler:
             self.emit(f"while {test}:")
             return n, var, step_value, mode
         body = self.entry_block.get(self.index + 1) if self.depth == 0 else None
-        skip_index = self.plan.for_next.get(self.index) if self.depth == 0 else None
+        if self.depth == 0:
+            skip_index = self.plan.for_next.get(self.index)
+        else:
+            skip_index = self.plan.branch_for_next.get(id(stmt))
         block, indent = self.cur, self.indent
         self.emit(f"if _v{n} <= _l{n} if _s{n} >= 0.0 else _v{n} >= _l{n}:")
         if body is None:
