@@ -26,3 +26,11 @@ def test_readme_sample_is_example5s_golden_output():
         assert line in golden, line
     assert [golden.index(line) for line in shown] == sorted(golden.index(line) for line in shown)
 
+
+
+def test_readme_links_and_named_files_exist():
+    targets = re.findall(r"\]\(([^)#]+)\)", README)
+    targets += re.findall(r"`((?:docs|listings|programs|tests/benchmarks)/[^`*\s]+\.(?:md|bas|py|png))`", README)
+    assert "listings/ERRATA.md" in targets and "docs/example5.png" in targets
+    missing = [target for target in targets if not (ROOT / target).exists()]
+    assert missing == []
