@@ -445,3 +445,24 @@ def test_empty_loops():
 def test_zero_trip_loop_started_in_an_if_branch_skips_to_its_next():
     program = "10 IF 1 THEN FOR I=5 TO 1: PRINT 99\n20 PRINT 1\n30 NEXT I\n40 PRINT I"
     assert values(program) == [[6.0]]
+
+
+def test_string_arrays_and_string_comparison():
+    out = run_text('10 DIM N$(3): FOR I=1 TO 3: READ N$(I): NEXT: FOR I=3 TO 1 STEP -1: PRINT N$(I);: NEXT: PRINT\n'
+                   '20 IF N$(1) < N$(2) THEN PRINT "lt" ELSE PRINT "ge"\n30 DATA "b", a, c')
+    assert out == "cab\nge\n"
+
+
+def test_on_goto_out_of_range_falls_through():
+    assert values("10 ON 3 GOTO 30, 40: PRINT 1: END\n30 PRINT 30\n40 PRINT 40") == [[1.0]]
+
+
+def test_gosub_prog_inside_a_native_loop_sees_the_loop_variable():
+    def area(machine):
+        machine.array("Y")[1] = machine.scalar("I") * 10
+
+    machine = Machine(screen=io.StringIO(), output_format="csv")
+    machine.load("10 FOR I=1 TO 3: GOSUB PROG 1: PRINT Y(1): NEXT")
+    machine.set_area(1, area)
+    machine.run()
+    assert machine.screen.stream.getvalue().split() == ["10.0", "20.0", "30.0"]
