@@ -466,3 +466,19 @@ def test_gosub_prog_inside_a_native_loop_sees_the_loop_variable():
     machine.set_area(1, area)
     machine.run()
     assert machine.screen.stream.getvalue().split() == ["10.0", "20.0", "30.0"]
+
+
+def test_numbers_a_python_area_stores_as_int_print_as_numbers():
+    def area(machine):
+        machine.array("X")[1] = 3  # an int, not a float
+
+    for output_format, expected in (("csv", "3.0\n"), ("text", None)):
+        screen = io.StringIO()
+        machine = Machine(screen=screen, output_format=output_format)
+        machine.load("10 GOSUB PROG 1: PRINT X(1)")
+        machine.set_area(1, area)
+        machine.run()
+        if expected is not None:
+            assert screen.getvalue() == expected
+        else:
+            assert screen.getvalue().strip() == "3"

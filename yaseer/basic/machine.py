@@ -685,6 +685,8 @@ class Machine:
         stream = self.streams[device]
         if self.csv:
             for v in items:
+                if type(v) is not float and type(v) is not str:
+                    v = _as_number(v)
                 if type(v) is float:
                     if v - v:
                         runtime.overflow()
@@ -697,6 +699,8 @@ class Machine:
             return
         for item in items:
             kind = type(item)
+            if kind is not float and kind is not str and isinstance(item, (int, float)):
+                item, kind = _as_number(item), float  # e.g. a numpy float a Python area stored
             if kind is float:
                 if item - item:
                     runtime.overflow()
@@ -723,6 +727,7 @@ class Machine:
     def print_using(self, device: int, fmt: str, values: tuple, newline: bool) -> None:
         """PRINT USING fmt; values (the format rules live in ``formatting.using``)."""
         stream = self.streams[device]
+        values = [v if type(v) is float or type(v) is str else _as_number(v) for v in values]
         for v in values:
             if type(v) is float and v - v:
                 runtime.overflow()
@@ -796,6 +801,13 @@ def _interrupt_handler(handler):
     finally:
         if installed:
             signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
+def _as_number(value):
+    """A number some Python area stored (int, numpy float) as a Python float; else as is."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return float(value)
+    return value
 
 
 def _parse_input(text: str, kinds: str):
