@@ -29,6 +29,19 @@ def test_example1_as_printed_runs_and_only_its_format_is_wrong():
     assert len(result.stdout.splitlines()) == 25
 
 
+def test_example1s_printed_format_garbles_the_row_in_gw_basic_too(tmp_path):
+    """PC-BASIC (a GW-BASIC reimplementation) prints the first row the same way."""
+    import subprocess
+    import sys
+
+    program = tmp_path / "row.bas"
+    program.write_text('10 PRINT USING "###.###.##"; .1; 117.9653; 982.3431; 30137.3\n')
+    output = tmp_path / "row.txt"
+    subprocess.run([sys.executable, "-m", "pcbasic", "-n", "-q", str(program), f"-o={output}"],
+                   check=True, timeout=60, capture_output=True)
+    assert output.read_text().splitlines()[0].rstrip("\r") == "  0.100%117.97982.343%30137.30"
+
+
 def test_example2_as_printed_applies_the_previous_joint_force_at_the_plunger():
     printed, corrected = run_csv("listings/paper/example2.bas"), golden_csv(2)
     assert printed.shape == corrected.shape
