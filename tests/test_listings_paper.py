@@ -216,3 +216,22 @@ def test_the_printed_crushing_direction_would_drive_the_jaw(tmp_path):
     omega = -22.0
     assert (printed[row, 1] - corrected[row, 1]) * omega == pytest.approx(-2 * power, rel=1e-9)
     assert printed[row, 1] > 0 > corrected[row, 1]
+
+
+@pytest.mark.parametrize(
+    "program, first_line",
+    [
+        ("10 FOR A(1) = 1 TO 2: NEXT A(1)", "Syntax error in 10"),  # Example 3, line 3030
+        ('10 PRINT USING "#####.#":1; 2', "Syntax error in 10"),  # Example 4, line 4080
+        ("10 A = 3: B = 4: PRINT SQR(A^2 = B^2)", " 0 "),  # Example 5, line 5070: a silent 0
+    ],
+)
+def test_the_errata_claims_about_microsoft_basic_hold_in_pc_basic(tmp_path, program, first_line):
+    import subprocess
+    import sys
+
+    source, output = tmp_path / "claim.bas", tmp_path / "claim.txt"
+    source.write_text(program + "\n")
+    subprocess.run([sys.executable, "-m", "pcbasic", "-n", "-q", str(source), f"-o={output}"],
+                   check=True, timeout=60, capture_output=True)
+    assert output.read_text(errors="replace").splitlines()[0].startswith(first_line)
