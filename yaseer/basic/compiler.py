@@ -21,6 +21,7 @@ The variable ``_ln`` tracks the BASIC line for error messages.
 from __future__ import annotations
 
 from yaseer.basic import syntax_tree as ast
+from yaseer.basic.blocks import flatten, nodes, plan, splits, walk_statements
 from yaseer.basic.errors import (
     BasicError, FOR_WITHOUT_NEXT, OUT_OF_MEMORY, SYNTAX_ERROR, TYPE_MISMATCH, UNDEFINED_LINE,
 )
@@ -84,220 +85,6 @@ class CompiledArea:
         self.data, self.data_lines, self.scalars = data, data_lines, scalars
         self.first_line = first_line
         self.blocks: list = []
-
-
-# ------------------------------------------------------------------ planning
-
-
-def _flatten(lines: list) -> list:
-    """[(line number, statement)] in program order; a line with no statement gets a Rem."""
-    flat = []
-    for line in lines:
-        if line.error is not None:
-            flat.append((line.number, line.error))
-            continue
-        statements = line.statements or [ast.Rem()]
-        for stmt in statements:
-            flat.append((line.number, stmt))
-    return flat
-
-
-def _jump_targets(stmt) -> list:
-    if isinstance(stmt, (ast.Goto, ast.Gosub)):
-        return [stmt.target]
-    if isinstance(stmt, ast.OnJump):
-        return list(stmt.targets)
-    if isinstance(stmt, ast.OnError):
-        return [stmt.target] if stmt.target else []
-    if isinstance(stmt, ast.Resume) and stmt.mode == "line":
-        return [stmt.target]
-    if isinstance(stmt, ast.If):
-        out = []
-        for branch in (stmt.then, stmt.otherwise):
-            if isinstance(branch, int):
-                out.append(branch)
-            elif branch:
-                for s in branch:
-                    out.extend(_jump_targets(s))
-        return out
-    return []
-
-
-def _walk(stmt):
-    """The statement and every statement nested in its IF branches."""
-    yield stmt
-    if isinstance(stmt, ast.If):
-        for branch in (stmt.then, stmt.otherwise):
-            if isinstance(branch, list):
-                for s in branch:
-                    yield from _walk(s)
-
-
-def _nodes(value):
-    """Every syntax-tree node in ``value`` (a node, list or tuple), depth first."""
-    stack = [value]
-    while stack:
-        item = stack.pop()
-        if isinstance(item, (list, tuple)):
-            stack.extend(item)
-        elif isinstance(item, ast.Node):
-            yield item
-            stack.extend(getattr(item, name) for name in item._fields)
-
-
-def _splits(stmt) -> bool:
-    """True when code after ``stmt`` must be enterable from outside (a return point)."""
-    for s in _walk(stmt):
-        if isinstance(s, (ast.Gosub, ast.Stop, ast.For)):
-            return True
-        if isinstance(s, ast.OnJump) and s.gosub:
-            return True
-    return False
-
-
-_NATIVE_BODY = (
-    ast.Let, ast.Print, ast.GosubProg, ast.Rem, ast.Data, ast.Read, ast.Dim, ast.Angle,
-    ast.Randomize, ast.DefFn, ast.Input, ast.Clear, ast.Restore, ast.End, ast.OnError,
-)
-
-
-def _native_statement(stmt) -> bool:
-    """May ``stmt`` sit inside a native loop (no jump, no return point, no NEXT)?"""
-    for s in _walk(stmt):
-        if isinstance(s, ast.If):
-            if isinstance(s.then, int) or isinstance(s.otherwise, int):
-                return False
-        elif not isinstance(s, _NATIVE_BODY):
-            return False
-    return True
-
-
-def _same_var(a, b) -> bool:
-    return a == b
-
-
-class _Plan:
-    """Where blocks start and which loops are native.
-
-    ``entries`` sorted statement indices that start blocks (the last is len(flat));
-    ``native`` FOR index -> its NEXT index, for loops compiled to ``while``;
-    ``for_next`` the same for loops run through the FOR stack; ``next_for`` NEXT
-    index -> FOR index; ``fine`` every statement starts a block (RESUME is used).
-    """
-
-    def __init__(self, entries, native, for_next, next_for, fine):
-        self.entries, self.native, self.for_next = entries, native, for_next
-        self.next_for, self.fine = next_for, fine
-
-
-def _match_loops(flat: list) -> tuple[dict, dict]:
-    """Match each top-level FOR to its NEXT by program order (as MS-BASIC scans)."""
-    for_next, next_for = {}, {}
-    open_loops: list[int] = []
-    for i, (_, stmt) in enumerate(flat):
-        if isinstance(stmt, ast.For):
-            open_loops.append(i)
-        elif isinstance(stmt, ast.Next):
-            if stmt.var is None:
-                if open_loops:
-                    f = open_loops.pop()
-                    for_next[f], next_for[i] = i, f
-                continue
-            # NEXT I closes inner loops left open, down to the FOR I.
-            for k in range(len(open_loops) - 1, -1, -1):
-                if _same_var(flat[open_loops[k]][1].var, stmt.var):
-                    f = open_loops[k]
-                    del open_loops[k:]
-                    for_next[f], next_for[i] = i, f
-                    break
-    return for_next, next_for
-
-
-def _plan(flat: list, entry_lines=()) -> _Plan:
-    n = len(flat)
-    statements = [s for _, s in flat]
-    fine = any(isinstance(s, ast.Resume) and s.mode != "line"
-               for stmt in statements if not isinstance(stmt, BasicError) for s in _walk(stmt))
-    first_index: dict[int, int] = {}
-    for i, (number, _) in enumerate(flat):
-        first_index.setdefault(number, i)
-    targets = {first_index[line] for line in entry_lines if line in first_index}
-    for _, stmt in flat:
-        if isinstance(stmt, BasicError):
-            continue
-        for line in _jump_targets(stmt):
-            if line in first_index:
-                targets.add(first_index[line])
-    for_next, next_for = _match_loops(flat)
-    native: dict[int, int] = {}
-    if not fine:
-        # innermost loops first, so a loop knows whether the loops inside it are native
-        for f in sorted(for_next, key=lambda k: for_next[k] - k):
-            j = for_next[f]
-            body_ok = True
-            k = f + 1
-            while k < j:
-                stmt = statements[k]
-                if isinstance(stmt, ast.For):
-                    if k not in native:
-                        body_ok = False
-                        break
-                    k = native[k] + 1
-                    continue
-                if isinstance(stmt, BasicError) or not _native_statement(stmt):
-                    body_ok = False
-                    break
-                k += 1
-            if body_ok and not any(f < t <= j for t in targets):
-                native[f] = j
-    entries = {0, n} | targets
-    for i, stmt in enumerate(statements):
-        if isinstance(stmt, BasicError):
-            continue
-        if fine:
-            entries.add(i)
-        if isinstance(stmt, ast.For) and i not in native:
-            entries.add(i + 1)
-            if i in for_next:
-                entries.add(for_next[i] + 1)
-        elif not isinstance(stmt, ast.For) and _splits(stmt):
-            entries.add(i + 1)
-    # dynamic loops' NEXTs are not consumed; natives' are
-    dynamic_for_next = {f: j for f, j in for_next.items() if f not in native}
-    plan = _Plan(sorted(entries), native, dynamic_for_next, next_for, fine)
-    plan.branch_for_next = _branch_loops(statements, entries)
-    plan.entries = sorted(entries)
-    return plan
-
-
-def _branch_loops(statements: list, entries: set) -> dict:
-    """FORs inside IF branches: id(FOR) -> index of the top-level NEXT that closes it.
-
-    A loop that runs zero times continues after that NEXT (MS-BASIC scans forward for
-    it), so the statement after it becomes a block entry.
-    """
-    found = {}
-    for i, stmt in enumerate(statements):
-        if not isinstance(stmt, ast.If):
-            continue
-        for inner in _walk(stmt):
-            if not isinstance(inner, ast.For):
-                continue
-            depth = 0
-            for k in range(i + 1, len(statements)):
-                other = statements[k]
-                if isinstance(other, ast.For):
-                    depth += 1
-                elif isinstance(other, ast.Next):
-                    if depth == 0 and (other.var is None or other.var == inner.var):
-                        found[id(inner)] = k
-                        entries.add(k + 1)
-                        break
-                    depth = max(0, depth - 1)
-    return found
-
-
-# ------------------------------------------------------------------ code generation
 
 
 class _Block:
@@ -420,8 +207,8 @@ class AreaCompiler:
     def __init__(self, lines: list, area: int = 0, direct: bool = False, entry_lines=()):
         self.area = area
         self.direct = direct
-        self.flat = _flatten(lines)
-        self.plan = _plan(self.flat, entry_lines)
+        self.flat = flatten(lines)
+        self.plan = plan(self.flat, entry_lines)
         self.line_first = {}
         for i, (number, _) in enumerate(self.flat):
             self.line_first.setdefault(number, i)
@@ -805,7 +592,7 @@ class AreaCompiler:
     def stmt_If(self, stmt, scope):
         cond = self.condition(stmt.condition, scope)
         branches = [b for b in (stmt.then, stmt.otherwise) if isinstance(b, list)]
-        split = any(_splits(s) for b in branches for s in b)
+        split = any(splits(s) for b in branches for s in b)
         if not split:
             self.emit(f"if {cond}:")
             self.branch(stmt.then)
@@ -953,7 +740,7 @@ class AreaCompiler:
                 return "while"
         first, last = self.loop_range
         body = [self.flat[k][1] for k in range(first + 1, last)]
-        if any(isinstance(node, ast.FnCall) or node == stmt.var for node in _nodes(body)):
+        if any(isinstance(node, ast.FnCall) or node == stmt.var for node in nodes(body)):
             return "values"
         return "count"
 
@@ -975,7 +762,7 @@ class AreaCompiler:
             return False
         first, last = self.loop_range
         for k in range(first + 1, last):
-            for s in _walk(self.flat[k][1]):
+            for s in walk_statements(self.flat[k][1]):
                 if isinstance(s, (ast.GosubProg, ast.Clear)):
                     return False
                 targets = []
@@ -1072,12 +859,12 @@ class AreaCompiler:
     # -- the whole area
     def compile(self) -> CompiledArea:
         for i, (number, stmt) in enumerate(self.flat):
-            for s in ([] if isinstance(stmt, BasicError) else _walk(stmt)):
+            for s in ([] if isinstance(stmt, BasicError) else walk_statements(stmt)):
                 if isinstance(s, ast.Data):
                     self.data_lines.setdefault(number, len(self.data))
                     self.data.extend((item, number) for item in split_data(s.text))
         for _, stmt in self.flat:
-            for s in ([] if isinstance(stmt, BasicError) else _walk(stmt)):
+            for s in ([] if isinstance(stmt, BasicError) else walk_statements(stmt)):
                 if isinstance(s, ast.DefFn):
                     self.fn_params.setdefault(s.name, s.params)
         self.walk(0, len(self.flat))
