@@ -29,17 +29,22 @@ def test_example1_as_printed_runs_and_only_its_format_is_wrong():
     assert len(result.stdout.splitlines()) == 25
 
 
-def test_example1s_printed_format_garbles_the_row_in_gw_basic_too(tmp_path):
-    """PC-BASIC (a GW-BASIC reimplementation) prints the first row the same way."""
+def _pc_basic_first_line(tmp_path, program: str) -> str:
+    """The first line PC-BASIC 2.0.8 (a GW-BASIC reimplementation) prints for ``program``."""
     import subprocess
     import sys
 
-    program = tmp_path / "row.bas"
-    program.write_text('10 PRINT USING "###.###.##"; .1; 117.9653; 982.3431; 30137.3\n')
-    output = tmp_path / "row.txt"
-    subprocess.run([sys.executable, "-m", "pcbasic", "-n", "-q", str(program), f"-o={output}"],
+    source, output = tmp_path / "peer.bas", tmp_path / "peer.txt"
+    source.write_text(program + "\n")
+    subprocess.run([sys.executable, "-m", "pcbasic", "-n", "-q", str(source), f"-o={output}"],
                    check=True, timeout=60, capture_output=True)
-    assert output.read_text().splitlines()[0].rstrip("\r") == "  0.100%117.97982.343%30137.30"
+    return output.read_text(errors="replace").splitlines()[0].rstrip("\r")
+
+
+def test_example1s_printed_format_garbles_the_row_in_gw_basic_too(tmp_path):
+    """PC-BASIC prints the first row the same way."""
+    program = '10 PRINT USING "###.###.##"; .1; 117.9653; 982.3431; 30137.3'
+    assert _pc_basic_first_line(tmp_path, program) == "  0.100%117.97982.343%30137.30"
 
 
 def test_example2_as_printed_applies_the_previous_joint_force_at_the_plunger():
@@ -227,11 +232,4 @@ def test_the_printed_crushing_direction_would_drive_the_jaw(tmp_path):
     ],
 )
 def test_the_errata_claims_about_microsoft_basic_hold_in_pc_basic(tmp_path, program, first_line):
-    import subprocess
-    import sys
-
-    source, output = tmp_path / "claim.bas", tmp_path / "claim.txt"
-    source.write_text(program + "\n")
-    subprocess.run([sys.executable, "-m", "pcbasic", "-n", "-q", str(source), f"-o={output}"],
-                   check=True, timeout=60, capture_output=True)
-    assert output.read_text(errors="replace").splitlines()[0].startswith(first_line)
+    assert _pc_basic_first_line(tmp_path, program).startswith(first_line)
