@@ -19,9 +19,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from yaseer.linkages.errors import AssemblyError
-from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse
+from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, point_loads
 from yaseer.linkages.registry import lookup, register
-from yaseer.linkages.planar import Motion, Rotation, Stretch, driven_crank, fixed_point, perpendicular_direction
+from yaseer.linkages.planar import CrankedLinkage, Motion, Rotation, Stretch, driven_crank, fixed_point, perpendicular_direction
 from yaseer.linkages.planar import rigid_point, solve_two_directions, still, unit_degrees
 
 UNCROSSED = 1
@@ -39,7 +39,7 @@ LOAD_NAMES = (
 
 
 @dataclass(frozen=True)
-class FourBar:
+class FourBar(CrankedLinkage):
     """Kinematics of a four-bar at one or many positions (arrays broadcast).
 
     ``coupler``: inclination of A->B and rates; ``follower``: inclination of the
@@ -55,10 +55,6 @@ class FourBar:
     pin_b: Motion
     pivot: Motion
     moving: bool
-
-    def crank_point(self, distance, offset_deg) -> Motion:
-        """A point of the crank: ``distance`` from Ao, ``offset_deg`` from Ao->A."""
-        return rigid_point(fixed_point(0j), self.crank, distance, offset_deg)
 
     def coupler_point(self, distance, offset_deg) -> Motion:
         """A point of the coupler: ``distance`` from A, ``offset_deg`` from A->B."""
@@ -110,9 +106,7 @@ class FourBar:
             "follower": (follower_point, self.follower_point(*follower_point).pos, self._follower_from_pivot().angle),
         }
         for body, ((distance, offset), position, reference) in points.items():
-            catalogue[f"{body}_fx"] = Load(body, 1.0, position)
-            catalogue[f"{body}_fy"] = Load(body, 1j, position)
-            catalogue[f"{body}_perpendicular"] = Load(body, perpendicular_direction(reference, offset, distance), position)
+            catalogue.update(point_loads(body, position, perpendicular_direction(reference, offset, distance)))
         return analyse(bodies, joints, catalogue, loads, unknown, gravity)
 
 

@@ -14,19 +14,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from yaseer.linkages.errors import AssemblyError, MethodDivisionByZero
+from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse
 from yaseer.linkages.registry import lookup, register
-from yaseer.linkages.virtual_link import cos_sin_degrees
-from yaseer.linkages.planar import Motion, Rotation, Stretch, driven_crank, fixed_point, perpendicular_direction
-from yaseer.linkages.planar import rigid_point, solve_two_directions, unit, unit_degrees
+from yaseer.linkages.virtual_link import cos_sin_degrees, divide_as_printed
+from yaseer.linkages.planar import CrankedLinkage, DrivenCrank, Motion, Rotation, Stretch, driven_crank, fixed_point
+from yaseer.linkages.planar import perpendicular_direction, rigid_point, solve_two_directions, unit, unit_degrees
 
 # Loads of Program 3: crank_torque [U(3)], follower_perpendicular [F(18)].
 LOAD_NAMES = ("crank_torque", "follower_perpendicular")
 
 
 @dataclass(frozen=True)
-class InvertedSliderCrank:
+class InvertedSliderCrank(CrankedLinkage):
     """Kinematics of the FISC at one or many positions (arrays broadcast).
 
     ``follower``: inclination T9 of Bo->A and rates; ``follower_length``: L5 = |Bo->A|
@@ -40,10 +40,6 @@ class InvertedSliderCrank:
     pin_a: Motion
     pivot: Motion
     moving: bool
-
-    def crank_point(self, distance, offset_deg) -> Motion:
-        """A point of the crank: ``distance`` from Ao, ``offset_deg`` from Ao->A."""
-        return rigid_point(fixed_point(0j), self.crank, distance, offset_deg)
 
     def follower_point(self, distance, offset_deg) -> Motion:
         """A point of the follower: ``distance`` from Bo, ``offset_deg`` from Bo->A."""
@@ -99,56 +95,69 @@ def inverted_slider_crank(*args, method: str | None = None, **kwargs) -> Inverte
     return lookup("inverted_slider_crank", method)(*args, **kwargs)
 
 
-@register("inverted_slider_crank", "closed", default=True)
-def inverted_slider_crank_closed(
-    ground_length,
-    ground_angle_deg,
-    crank_length,
-    crank_angle_deg,
-    omega=0.0,
-    alpha=0.0,
-    *,
-    crank_length_rate=0.0,
-    crank_length_accel=0.0,
-) -> InvertedSliderCrank:
-    """Positions always; velocities and accelerations when any crank rate is non-zero.
+def _fisc_method(name: str, *, default: bool = False):
+    """Register ``solve`` as method ``name`` with the arguments every FISC method takes.
+
+    ``solve(crank, crank_angle_deg, ground_length, ground_angle_deg)`` gets the
+    :class:`DrivenCrank` and returns (pivot Bo, follower inclination T9 in radians,
+    L5, ``rates``); ``rates()`` -> ((T9', T9''), (L5', L5'')) is called only when a
+    crank rate is non-zero (otherwise every rate is exactly 0).
+    """
+
+    def decorate(solve):
+        def method(ground_length, ground_angle_deg, crank_length, crank_angle_deg, omega=0.0, alpha=0.0, *,
+                   crank_length_rate=0.0, crank_length_accel=0.0) -> InvertedSliderCrank:
+            crank = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel)
+            pivot, follower_angle, l5, rates = solve(crank, crank_angle_deg, ground_length, ground_angle_deg)
+            if not crank.moving:
+                zero = np.zeros_like(l5)
+                return InvertedSliderCrank(crank.rotation, crank.length, Rotation(follower_angle, zero, zero),
+                                           Stretch(l5, zero, zero), crank.pin, pivot, False)
+            (w4, a4), (l5_dot, l5_ddot) = rates()
+            return InvertedSliderCrank(crank.rotation, crank.length, Rotation(follower_angle, w4, a4),
+                                       Stretch(l5, l5_dot, l5_ddot), crank.pin, pivot, True)
+
+        method.__name__ = method.__qualname__ = f"inverted_slider_crank_{name}"
+        method.__doc__ = solve.__doc__
+        return register("inverted_slider_crank", name, default=default)(method)
+
+    return decorate
+
+
+@_fisc_method("closed", default=True)
+def inverted_slider_crank_closed(crank: DrivenCrank, crank_angle_deg, ground_length, ground_angle_deg):
+    """FISC kinematics: ``inverted_slider_crank_closed(ground_length, ground_angle_deg,
+    crank_length, crank_angle_deg, omega=0, alpha=0, *, crank_length_rate=0,
+    crank_length_accel=0)``.  Positions always; velocities and accelerations when any
+    crank rate is non-zero.
 
     ``ground_length``, ``ground_angle_deg``: the vector Bo->Ao.  Lengths in any
     unit, angles in degrees counter-clockwise from +x, rates in rad/s, rad/s**2
     (counter-clockwise positive) and length/s, length/s**2.  Raises AssemblyError
     where the crank pin A falls on Bo (L5 = 0).
     """
-    crank, length, pin_a, moving = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate,
-                                                crank_length_accel)
+    pin_a = crank.pin
     pivot = fixed_point(-np.asarray(ground_length, dtype=float) * unit_degrees(ground_angle_deg))
     radius = pin_a.pos - pivot.pos
     l5 = np.abs(radius)
     if np.any(l5 == 0):
         raise AssemblyError("the crank pin falls on the follower pivot (zero-length follower)")
-    t9 = np.angle(radius)
-    if not moving:
-        zero = np.zeros_like(l5)
-        return InvertedSliderCrank(crank, length, Rotation(t9, zero, zero), Stretch(l5, zero, zero), pin_a, pivot, False)
-    u = radius / l5
-    l5_dot, w4 = solve_two_directions(pin_a.vel, u, 1j * radius)
-    rhs = pin_a.acc - 2j * l5_dot * w4 * u + w4**2 * radius
-    l5_ddot, a4 = solve_two_directions(rhs, u, 1j * radius)
-    return InvertedSliderCrank(crank, length, Rotation(t9, w4, a4), Stretch(l5, l5_dot, l5_ddot), pin_a, pivot, True)
+
+    def rates():
+        """A' = L5' u + L5 T9' i u and its derivative, each one 2x2 solve."""
+        u = radius / l5
+        l5_dot, w4 = solve_two_directions(pin_a.vel, u, 1j * radius)
+        rhs = pin_a.acc - 2j * l5_dot * w4 * u + w4**2 * radius
+        l5_ddot, a4 = solve_two_directions(rhs, u, 1j * radius)
+        return (w4, a4), (l5_dot, l5_ddot)
+
+    return pivot, np.angle(radius), l5, rates
 
 
-@register("inverted_slider_crank", "paper")
-def inverted_slider_crank_paper(
-    ground_length,
-    ground_angle_deg,
-    crank_length,
-    crank_angle_deg,
-    omega=0.0,
-    alpha=0.0,
-    *,
-    crank_length_rate=0.0,
-    crank_length_accel=0.0,
-) -> InvertedSliderCrank:
-    """The paper's equations (7)-(11) as printed (section 3.1), same arguments and result.
+@_fisc_method("paper")
+def inverted_slider_crank_paper(crank: DrivenCrank, crank_angle_deg, ground_length, ground_angle_deg):
+    """The paper's equations (7)-(11) as printed (section 3.1); same arguments and
+    result as ``inverted_slider_crank_closed``.
 
     T9 = ATN(num/den) (+180 deg when den < 0, as the listings do), L5 = den / cos T9
     (8), W4 (9), D4 = (...)/cos T9 (10), A4 (11); E4, which the paper does not
@@ -156,34 +165,24 @@ def inverted_slider_crank_paper(
     same style.  They divide by den and cos T9, so they break where the follower is
     vertical (T9 = 90, 270 deg): MethodDivisionByZero there, lost digits near it.
     """
-    def divide(numerator, denominator, what):
-        if np.any(np.asarray(denominator) == 0):
-            raise MethodDivisionByZero(f"division by zero ({what} = 0)")
-        return numerator / denominator
-
-    l6, l7 = np.asarray(ground_length, float), np.asarray(crank_length, float)
-    d3, e3 = np.asarray(crank_length_rate, float), np.asarray(crank_length_accel, float)
-    w0, a0 = np.asarray(omega, float), np.asarray(alpha, float)
+    l6, l7 = np.asarray(ground_length, float), crank.length.value
+    d3, e3 = crank.length.rate, crank.length.accel
+    w0, a0 = crank.rotation.omega, crank.rotation.alpha
     c6, s6 = cos_sin_degrees(ground_angle_deg)
     c7, s7 = cos_sin_degrees(crank_angle_deg)
     numerator, denominator = l6 * s6 + l7 * s7, l6 * c6 + l7 * c7
-    t9 = np.degrees(np.arctan(divide(numerator, denominator, "L(6) cos T(6) + L(7) cos T(7)")))  # (7)
+    t9 = np.degrees(np.arctan(divide_as_printed(numerator, denominator, "L(6) cos T(6) + L(7) cos T(7)")))  # (7)
     t9 = np.where(denominator < 0, t9 + 180.0, t9)
     c9, s9 = cos_sin_degrees(t9)
-    l5 = divide(denominator, c9, "COS T(9)")  # (8)
-    crank, length, pin_a, moving = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate,
-                                                crank_length_accel)
-    pivot = fixed_point(-l6 * (c6 + 1j * s6))
-    follower_angle = np.radians(t9)
-    if not moving:
-        zero = np.zeros_like(l5)
-        return InvertedSliderCrank(crank, length, Rotation(follower_angle, zero, zero), Stretch(l5, zero, zero),
-                                   pin_a, pivot, False)
-    c79, s79 = cos_sin_degrees(np.asarray(crank_angle_deg, float) - t9)  # cos, sin (T7 - T9)
-    w4 = (l7 * w0 * c79 + d3 * s79) / l5  # (9)
-    d4 = divide(d3 * c7 - l7 * w0 * s7 + l5 * w4 * s9, c9, "COS T(9)")  # (10)
-    a4 = (l7 * w0**2 * -s79 + l7 * a0 * c79 + 2 * d3 * w0 * c79 - e3 * -s79 - 2 * d4 * w4) / l5  # (11)
-    x_accel = (e3 - l7 * w0**2) * c7 - (l7 * a0 + 2 * d3 * w0) * s7
-    e4 = divide(x_accel + 2 * d4 * w4 * s9 + l5 * a4 * s9 + l5 * w4**2 * c9, c9, "COS T(9)")
-    return InvertedSliderCrank(crank, length, Rotation(follower_angle, w4, a4), Stretch(l5, d4, e4), pin_a, pivot,
-                               True)
+    l5 = divide_as_printed(denominator, c9, "COS T(9)")  # (8)
+
+    def rates():
+        c79, s79 = cos_sin_degrees(np.asarray(crank_angle_deg, float) - t9)  # cos, sin (T7 - T9)
+        w4 = (l7 * w0 * c79 + d3 * s79) / l5  # (9)
+        d4 = divide_as_printed(d3 * c7 - l7 * w0 * s7 + l5 * w4 * s9, c9, "COS T(9)")  # (10)
+        a4 = (l7 * w0**2 * -s79 + l7 * a0 * c79 + 2 * d3 * w0 * c79 - e3 * -s79 - 2 * d4 * w4) / l5  # (11)
+        x_accel = (e3 - l7 * w0**2) * c7 - (l7 * a0 + 2 * d3 * w0) * s7
+        e4 = divide_as_printed(x_accel + 2 * d4 * w4 * s9 + l5 * a4 * s9 + l5 * w4**2 * c9, c9, "COS T(9)")
+        return (w4, a4), (d4, e4)
+
+    return fixed_point(-l6 * (c6 + 1j * s6)), np.radians(t9), l5, rates

@@ -53,6 +53,17 @@ class Load:
     point: np.ndarray | complex | None = None
 
 
+def point_loads(body: str, point, perpendicular) -> dict[str, "Load"]:
+    """The three point loads the contract puts at a point of interest of ``body``:
+    ``<body>_fx`` along +x, ``<body>_fy`` along +y and ``<body>_perpendicular`` along
+    the unit vector ``perpendicular`` (see :func:`planar.perpendicular_direction`)."""
+    return {
+        f"{body}_fx": Load(body, 1.0, point),
+        f"{body}_fy": Load(body, 1j, point),
+        f"{body}_perpendicular": Load(body, perpendicular, point),
+    }
+
+
 @dataclass(frozen=True)
 class Joint:
     """An unknown reaction, the action of ``upstream`` (None: ground) on ``downstream``.

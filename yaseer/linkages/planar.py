@@ -177,12 +177,29 @@ class DrivenCrank(NamedTuple):
     moving: bool
 
 
-def driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel) -> DrivenCrank:
-    """The crank inputs every linkage shares, as arrays: angle in degrees (exact at
-    multiples of 90), omega, alpha in rad/s, rad/s**2, the length and its rates."""
+def driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel, *,
+                 exact_degrees: bool = True) -> DrivenCrank:
+    """The crank inputs every linkage shares, as arrays: angle in degrees, omega,
+    alpha in rad/s, rad/s**2, the length and its rates.
+
+    ``exact_degrees``: the pin's direction is exact at multiples of 90 degrees (as
+    a pocket computer in degree mode gives it); the alternative methods pass False
+    and take cos and sin of the angle in radians, as their sources do.
+    """
     length = Stretch(*(np.asarray(v, dtype=float) for v in (crank_length, crank_length_rate, crank_length_accel)))
     rotation = Rotation(np.radians(np.asarray(crank_angle_deg, dtype=float)), np.asarray(omega, float),
                         np.asarray(alpha, float))
     moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
-    pin = crank_pin(length, rotation, unit_degrees(crank_angle_deg))
+    pin = crank_pin(length, rotation, unit_degrees(crank_angle_deg) if exact_degrees else None)
     return DrivenCrank(rotation, length, pin if moving else still(pin), moving)
+
+
+class CrankedLinkage:
+    """Mixin of the linkages' kinematics results, whose ``crank`` (a :class:`Rotation`)
+    turns about the origin Ao."""
+
+    crank: Rotation
+
+    def crank_point(self, distance, offset_deg) -> Motion:
+        """A point of the crank: ``distance`` from Ao, ``offset_deg`` from Ao->A."""
+        return rigid_point(fixed_point(0j), self.crank, distance, offset_deg)

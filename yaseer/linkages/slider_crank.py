@@ -17,9 +17,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from yaseer.linkages.errors import AssemblyError
-from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse
+from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, point_loads
 from yaseer.linkages.registry import lookup, register
-from yaseer.linkages.planar import Motion, Rotation, Stretch, driven_crank, dot, fixed_point
+from yaseer.linkages.planar import CrankedLinkage, Motion, Rotation, Stretch, driven_crank, dot, fixed_point
 from yaseer.linkages.planar import perpendicular_direction, rigid_point, solve_two_directions, still, unit
 from yaseer.linkages.planar import unit_degrees
 
@@ -35,7 +35,7 @@ LOAD_NAMES = (
 
 
 @dataclass(frozen=True)
-class SliderCrank:
+class SliderCrank(CrankedLinkage):
     """Kinematics of a slider-crank at one or many positions (arrays broadcast).
 
     ``crank``: crank angle/rates; ``rod``: inclination of A->B and rates;
@@ -52,10 +52,6 @@ class SliderCrank:
     travel: Stretch
     axis: np.ndarray
     moving: bool
-
-    def crank_point(self, distance, offset_deg) -> Motion:
-        """A point of the crank: ``distance`` from Ao, ``offset_deg`` from Ao->A."""
-        return rigid_point(fixed_point(0j), self.crank, distance, offset_deg)
 
     def rod_point(self, distance, offset_deg) -> Motion:
         """A point of the rod: ``distance`` from the piston pin B, ``offset_deg`` from B->A."""
@@ -101,13 +97,9 @@ class SliderCrank:
         crank_p = self.crank_point(*crank_point).pos
         rod_p = self.rod_point(*rod_point).pos
         catalogue = {
-            "crank_fx": Load("crank", 1.0, crank_p),
-            "crank_fy": Load("crank", 1j, crank_p),
-            "crank_perpendicular": Load("crank", perpendicular_direction(self.crank.angle, crank_point[1], crank_point[0]), crank_p),
+            **point_loads("crank", crank_p, perpendicular_direction(self.crank.angle, crank_point[1], crank_point[0])),
             "crank_torque": Load("crank"),
-            "rod_fx": Load("rod", 1.0, rod_p),
-            "rod_fy": Load("rod", 1j, rod_p),
-            "rod_perpendicular": Load("rod", perpendicular_direction(self._rod_from_b().angle, rod_point[1], rod_point[0]), rod_p),
+            **point_loads("rod", rod_p, perpendicular_direction(self._rod_from_b().angle, rod_point[1], rod_point[0])),
             "piston": Load("piston", -axis, self.pin_b.pos),
         }
         return analyse(bodies, joints, catalogue, loads, unknown, gravity)

@@ -80,7 +80,7 @@ def cos_sin_degrees(angle_deg) -> tuple[np.ndarray, np.ndarray]:
     return cos, sin
 
 
-def _divide(numerator, denominator, what: str):
+def divide_as_printed(numerator, denominator, what: str):
     """numerator / denominator, raising MethodDivisionByZero where the denominator is 0."""
     denominator = np.asarray(denominator, dtype=float)
     if np.any(denominator == 0):
@@ -92,16 +92,16 @@ def _divide(numerator, denominator, what: str):
 def virtual_link_paper(x, y, vx=0.0, vy=0.0, ax=0.0, ay=0.0) -> VirtualLink:
     """The paper's equations (1)-(4) with the listing's T and L (lines 10-30)."""
     x, y, vx, vy, ax, ay = (np.asarray(v, dtype=float) for v in (x, y, vx, vy, ax, ay))
-    angle = np.degrees(np.arctan(_divide(y, x, "X")))
+    angle = np.degrees(np.arctan(divide_as_printed(y, x, "X")))
     angle = np.where(x < 0, angle + 180.0, angle)
     cos, sin = cos_sin_degrees(angle)
-    length = _divide(x, cos, "COS T")
+    length = divide_as_printed(x, cos, "COS T")
     angle = np.where(angle < 0, angle + 360.0, angle)
     angle = np.where(angle - 360.0 > 0, angle - 360.0, angle)
     length_rate = vx * cos + vy * sin  # (1)
-    angle_rate = _divide(_divide(vy - length_rate * sin, length, "L"), cos, "COS T")  # (2)
+    angle_rate = divide_as_printed(divide_as_printed(vy - length_rate * sin, length, "L"), cos, "COS T")  # (2)
     angle_accel = (ay * cos - ax * sin - 2 * length_rate * angle_rate) / length  # (3)
-    length_accel = _divide(  # (4)
+    length_accel = divide_as_printed(  # (4)
         ay + length * angle_rate**2 * sin - length * angle_accel * cos - 2 * length_rate * angle_rate * cos,
         sin, "SIN T",
     )

@@ -12,19 +12,9 @@ from __future__ import annotations
 import numpy as np
 
 from yaseer.linkages.errors import LinkageError
-from yaseer.linkages.fourbar import CROSSED, FourBar
-from yaseer.linkages.planar import (
-    Motion,
-    Rotation,
-    Stretch,
-    any_nonzero,
-    crank_pin,
-    fixed_point,
-    solve_two_directions,
-    still,
-    unit,
-)
-from yaseer.linkages.slider_crank import SliderCrank
+from yaseer.linkages.fourbar import CROSSED, FourBar, loop_rates
+from yaseer.linkages.planar import DrivenCrank, Motion, Rotation, Stretch, fixed_point, still, unit
+from yaseer.linkages.slider_crank import SliderCrank, slider_rates
 
 
 class NoConvergenceError(LinkageError):
@@ -38,26 +28,14 @@ class NoConvergenceError(LinkageError):
         self.index = index
 
 
-class CrankInput:
-    """The driving crank of a call: angle, rates, flexible length, pin A.
-
-    Angles in degrees at the interface, radians inside; rates rad/s, rad/s^2.
-    """
-
-    def __init__(self, crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel):
-        self.moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
-        self.length = Stretch(*(np.asarray(v, dtype=float) for v in (crank_length, crank_length_rate, crank_length_accel)))
-        self.rotation = Rotation(np.radians(np.asarray(crank_angle_deg, dtype=float)),
-                                 np.asarray(omega, float), np.asarray(alpha, float))
-        pin = crank_pin(self.length, self.rotation)
-        self.pin = pin if self.moving else still(pin)
-
-
-def slider_crank_result(crank: CrankInput, eccentricity, rod_length, axis, rod_angle, travel, rates=None) -> SliderCrank:
-    """Build :class:`SliderCrank` from positions (radians, length) found by a method.
+def slider_crank_result(crank: DrivenCrank, eccentricity, rod_length, axis, rod_angle, travel, rates=None) -> SliderCrank:
+    """Build :class:`SliderCrank` from positions (radians, length) found by a method;
+    ``crank`` from :func:`driven_crank` (``exact_degrees=False``: the methods take cos
+    and sin of radians, as their sources do).
 
     ``rates(pin)`` may give (rod omega, rod alpha, s', s''); by default they come
-    from the differentiated loop A + b u(beta) = -e i u(phi) + s u(phi).
+    from the differentiated loop A + b u(beta) = -e i u(phi) + s u(phi)
+    (:func:`slider_rates`, shared with the closed form).
     """
     e, b = np.asarray(eccentricity, float), np.asarray(rod_length, float)
     direction = unit(axis)
@@ -69,20 +47,19 @@ def slider_crank_result(crank: CrankInput, eccentricity, rod_length, axis, rod_a
         return SliderCrank(crank.rotation, crank.length, Rotation(rod_angle, zero, zero), crank.pin,
                            still(fixed_point(b_pos)), Stretch(travel, zero, zero), axis, False)
     if rates is None:
-        rod = b * unit(rod_angle)
-        s_dot, omega = solve_two_directions(crank.pin.vel, direction, -1j * rod)
-        s_ddot, alpha = solve_two_directions(crank.pin.acc - omega**2 * rod, direction, -1j * rod)
+        (omega, alpha), (s_dot, s_ddot) = slider_rates(crank.pin, b * unit(rod_angle), direction)
     else:
         omega, alpha, s_dot, s_ddot = rates(crank.pin)
     return SliderCrank(crank.rotation, crank.length, Rotation(rod_angle, omega, alpha), crank.pin,
                        Motion(b_pos, s_dot * direction, s_ddot * direction), Stretch(travel, s_dot, s_ddot), axis, True)
 
 
-def fourbar_result(crank: CrankInput, pivot: Motion, coupler_angle, follower_pivot_angle, coupler_length) -> FourBar:
+def fourbar_result(crank: DrivenCrank, pivot: Motion, coupler_angle, follower_pivot_angle, coupler_length) -> FourBar:
     """Build :class:`FourBar` from the coupler angle A->B and the angle Bo->B (radians).
 
-    Rates from the differentiated loop A + b u(beta) = Bo - (B->Bo); LockedError
-    where coupler and follower are in line (toggle or change point).
+    Rates from the differentiated loop A + b u(beta) = Bo - (B->Bo) (:func:`loop_rates`,
+    shared with the closed form); LockedError where coupler and follower are in line
+    (toggle or change point).
     """
     b = np.asarray(coupler_length, float)
     coupler_vec = b * unit(coupler_angle)
@@ -95,10 +72,7 @@ def fourbar_result(crank: CrankInput, pivot: Motion, coupler_angle, follower_piv
         zero = np.zeros(shape)
         return FourBar(crank.rotation, crank.length, Rotation(coupler_angle, zero, zero),
                        Rotation(follower_angle, zero, zero), crank.pin, still(fixed_point(b_pos)), pivot, False)
-    w3, w4 = solve_two_directions(-crank.pin.vel, 1j * coupler_vec, 1j * follower_vec)
-    a3, a4 = solve_two_directions(-crank.pin.acc + w3**2 * coupler_vec + w4**2 * follower_vec,
-                                  1j * coupler_vec, 1j * follower_vec)
-    b_motion = Motion(b_pos, crank.pin.vel + 1j * w3 * coupler_vec, crank.pin.acc + (1j * a3 - w3**2) * coupler_vec)
+    (w3, a3), (w4, a4), b_motion = loop_rates(crank.pin, coupler_vec, follower_vec)
     return FourBar(crank.rotation, crank.length, Rotation(coupler_angle, w3, a3), Rotation(follower_angle, w4, a4),
                    crank.pin, b_motion, pivot, True)
 

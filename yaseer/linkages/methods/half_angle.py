@@ -37,7 +37,9 @@ from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.fourbar import UNCROSSED, FourBar
 from yaseer.linkages.registry import register
 
-from .assemble import CrankInput, fourbar_result, ground_pivot, side_of
+from yaseer.linkages.planar import driven_crank
+
+from .assemble import fourbar_result, ground_pivot, side_of
 
 
 def _printed_angles(frame: "_Frame", branch):
@@ -70,7 +72,8 @@ def _half_angle_method(name: str, angles, summary: str):
 
     def method(ground_length, ground_angle_deg, crank_length, coupler_length, follower_length, crank_angle_deg,
                omega=0.0, alpha=0.0, *, crank_length_rate=0.0, crank_length_accel=0.0, branch=UNCROSSED) -> FourBar:
-        crank = CrankInput(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel)
+        crank = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel,
+                         exact_degrees=False)
         frame = _Frame(ground_length, ground_angle_deg, crank_length, coupler_length, follower_length,
                        crank_angle_deg)
         beta, phi = angles(frame, branch)

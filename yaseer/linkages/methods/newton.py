@@ -25,7 +25,9 @@ from yaseer.linkages.fourbar import UNCROSSED, FourBar
 from yaseer.linkages.registry import register
 from yaseer.linkages.slider_crank import SliderCrank
 
-from .assemble import CrankInput, NoConvergenceError, first_index, fourbar_result, ground_pivot, side_of, slider_crank_result
+from yaseer.linkages.planar import driven_crank
+
+from .assemble import NoConvergenceError, first_index, fourbar_result, ground_pivot, side_of, slider_crank_result
 
 DEFAULT_TOL = 1e-12
 DEFAULT_MAX_ITER = 50
@@ -40,7 +42,8 @@ def slider_crank_newton(eccentricity, crank_length, rod_length, crank_angle_deg,
     Residual A + b u(beta) + e i u(phi) - s u(phi) = 0 (complex form).  First guess:
     the rod along the axis (beta = phi), s = A.u(phi) + b; or ``guess`` = (beta deg, s).
     """
-    crank = CrankInput(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel)
+    crank = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel,
+                         exact_degrees=False)
     e, b = np.asarray(eccentricity, float), np.asarray(rod_length, float)
     if np.any(b <= 0):
         raise AssemblyError("connecting rod of zero length")
@@ -74,7 +77,8 @@ def fourbar_newton(ground_length, ground_angle_deg, crank_length, coupler_length
     b, c off the midpoint of A and Bo, on the side ``branch`` asks for; or ``guess`` =
     (coupler deg, follower B->Bo deg), the contract's T(13), T(14).
     """
-    crank = CrankInput(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel)
+    crank = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel,
+                         exact_degrees=False)
     pivot = ground_pivot(ground_length, ground_angle_deg)
     b, c = np.asarray(coupler_length, float), np.asarray(follower_length, float)
     if np.any(b <= 0) or np.any(c <= 0):

@@ -26,7 +26,9 @@ from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.registry import register
 from yaseer.linkages.slider_crank import SliderCrank
 
-from .assemble import CrankInput, slider_crank_result
+from yaseer.linkages.planar import driven_crank
+
+from .assemble import slider_crank_result
 
 
 @register("slider_crank", "pseudographic")
@@ -38,7 +40,8 @@ def slider_crank_pseudographic(eccentricity, crank_length, rod_length, crank_ang
 
     Raises AssemblyError where TK has no square root (b^2 < (yB - yA)^2).
     """
-    crank = CrankInput(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel)
+    crank = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel,
+                         exact_degrees=False)
     phi = np.radians(np.asarray(axis_deg, dtype=float))
     to_axis = np.exp(-1j * phi)  # global -> axis frame
     b = np.asarray(rod_length, float)
