@@ -891,7 +891,8 @@ class AreaCompiler:
         names = sorted(block.scalars)
         written = [n for n in names if block.scalars[n]]
         load = "; ".join(f"{local_name(n)} = _S[{n!r}]" for n in names)
-        load_arrays = "; ".join(f"{array_local(a)} = _arr({a!r}, {d})" for a, d in sorted(block.arrays.items()))
+        load_arrays = "; ".join(f"{array_local(a)} = _A.get({a!r}) or _arr({a!r}, {d})"
+                                for a, d in sorted(block.arrays.items()))
         store = "; ".join(f"_S[{n!r}] = {local_name(n)}" for n in written)
         loop_back = f"return {block.number}"
         self_loop = any(text == loop_back or text.endswith(": " + loop_back) for _, text in block.code)
@@ -918,7 +919,7 @@ class AreaCompiler:
             if text.startswith("#ARRAY#"):
                 name = text[7:]
                 if name in block.arrays:
-                    out.append(pad + f"{array_local(name)} = _arr({name!r}, {block.arrays[name]})")
+                    out.append(pad + f"{array_local(name)} = _A[{name!r}]")  # just dimensioned
                 continue
             if self_loop:
                 if text == loop_back:
