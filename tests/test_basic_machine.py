@@ -482,3 +482,18 @@ def test_numbers_a_python_area_stores_as_int_print_as_numbers():
             assert screen.getvalue() == expected
         else:
             assert screen.getvalue().strip() == "3"
+
+
+def test_clear_resets_variables_and_arrays():
+    program = "10 A=5: A$=\"x\": L(2)=7: DIM M(3): CLEAR: PRINT A; A$; L(2): DIM M(20): M(20)=1: PRINT M(20)"
+    assert run_rows(program) == [["0.0", "", "0.0"], ["1.0"]]
+
+
+def test_lower_case_program():
+    assert values("10 for i=1 to 3: s=s+i: next i: print s") == [[6.0]]
+
+
+def test_print_using_line_ending():
+    # MS-BASIC: "###.##" right-aligns with two decimals; a trailing ; keeps the line open
+    out = run_text('10 PRINT USING "###.##"; 3.14159;\n20 PRINT USING "###.##"; -2\n30 PRINT USING "##"; 1, 2')
+    assert out == "  3.14 -2.00\n 1 2\n"

@@ -96,3 +96,45 @@ def test_garbage_gives_a_basic_error(tmp_path, capsys, junk):
     assert main(["run", path]) == 1
     err = capsys.readouterr().err
     assert err.endswith("in 10\n") and "Traceback" not in err
+
+
+PAPER_PROGRAM_5 = """1 REM Motion of a virtual link
+10 X=X(10): Y=Y(10): T=ATN(Y/X): IF X<0 THEN T=T+180
+20 L=X/COST: IF T<0 THEN T=T+360
+30 IF T-360>0 THEN T=T-360
+40 D(6)=V(17)*COST+V(18)*SINT: D(5)=(V(18)-D(6)*SINT)/L/COST
+50 E(5)=(A(50)*COST-A(49)*SINT-2*D(6)*D(5))/L
+60 E(6)=(A(50)-2*D(6)*D(5)*COST+L*D(5)^2*SINT-E(5)*COST)/SINT: RETURN
+"""
+
+# Shaped like the paper's Example 1: the universal line and line 20 wrapped, a FOR
+# over QQ from .1 in steps of 15, a virtual link through GOSUB PROG 5.
+LISTING = """2 CLEAR: DIM F(46), M(11), R(19), H(24), A(53), L(20), T(25), W(10),
+Z(5), C(14), U(4), D(6), E(6), X(11), Y(11), V(21), Q(4), N(3), I(11), P(4)
+20 FOR QQ = .1 TO 360.1 STEP 15: X(10) = 3 * COS QQ: Y(10) = 3 *
+SIN QQ: V(17) = 1: V(18) = 2: A(49) = 0: A(50) = 0: GOSUB
+   PROG 5
+60 PRINT QQ; T; L; D(5); D(6): NEXT QQ
+70 END
+"""
+
+
+def test_listing_shaped_program_with_the_papers_program_5(tmp_path, capsys):
+    import math
+
+    listing = write(tmp_path, "example.bas", LISTING)
+    area = write(tmp_path, "prog5.bas", PAPER_PROGRAM_5)
+    assert main(["run", listing, "--prog", f"5={area}", "--format", "csv"]) == 0
+    rows = [[float(x) for x in line.split(",")] for line in capsys.readouterr().out.splitlines()]
+    qq, expected = 0.1, []
+    while qq <= 360.1:
+        x, y = 3 * math.cos(math.radians(qq)), 3 * math.sin(math.radians(qq))
+        vx, vy = 1.0, 2.0
+        length = math.hypot(x, y)
+        angle = math.degrees(math.atan2(y, x)) % 360
+        # independent: d|r|/dt = r.v/|r|, dtheta/dt = (r x v)/|r|^2
+        expected.append([qq, angle, length, (x * vy - y * vx) / length ** 2, (x * vx + y * vy) / length])
+        qq += 15
+    assert len(rows) == len(expected) == 25
+    for row, want in zip(rows, expected):
+        assert row == pytest.approx(want, rel=1e-9, abs=1e-9)
