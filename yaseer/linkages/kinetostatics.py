@@ -4,8 +4,10 @@ For each rigid body:  sum F = m a_G  and  sum M_G = I_G alpha  (a particle has
 no moment equation).  Gravity G acts in -y on every mass.  The unknowns are the
 joint reactions (a pin: two components; a slide: a force along a given
 direction; a couple) and one selected load; everything else is known.  One
-linear system per position, all positions solved by one batched
-``numpy.linalg.solve``.
+linear system per position, the same for Programs 1-3; the pin reactions are
+eliminated exactly from the force equations (their coefficients are +-1) and
+the small system left (k <= 3 unknowns) is solved at all positions at once by
+a vectorised elimination with partial pivoting.
 
 Sign conventions: a joint's unknown is the action of its ``upstream`` body on
 its ``downstream`` body (``upstream=None`` is the ground); the downstream body
@@ -22,12 +24,10 @@ import numpy as np
 from yaseer.linkages.errors import SingularForceError, UnknownLoadError
 from yaseer.linkages.planar import Motion, cross
 
-# Singularity test: with the rows scaled to unit size, a solution component more
-# than this many times the largest right-hand side means the matrix is singular
-# or nearly so (the unknowns cannot balance the loads).  An exactly singular
-# matrix makes LAPACK stop; a nearly singular one with an all-zero right-hand
-# side (nothing to balance) gives the zero solution.
-SINGULAR_GAIN = 1e9
+# Singularity test: with every column and then every row of the reduced system
+# scaled to a largest entry of 1, a determinant at most this small means the
+# matrix is singular or nearly so (its condition number is then about 1e9 or more).
+SINGULAR_TOLERANCE = 1e-9
 
 
 @dataclass(frozen=True)
@@ -80,58 +80,86 @@ class Joint:
     direction: np.ndarray | complex | None = None
 
 
-def _columns(joints: list[Joint], unknown_load: Load) -> list[list[tuple[str, float, object, object]]]:
-    """The unknowns as columns: each a list of (body, sign, direction|None, point)."""
-    columns = []
-    for joint in joints:
-        directions = [1.0, 1j] if joint.kind == "pin" else [joint.direction if joint.kind == "slide" else None]
-        for direction in directions:
-            actions = [(joint.downstream, 1.0, direction, joint.point)]
-            if joint.upstream is not None:
-                actions.append((joint.upstream, -1.0, direction, joint.point))
-            columns.append(actions)
-    columns.append([(unknown_load.body, 1.0, unknown_load.direction, unknown_load.point)])
-    return columns
+class _Plan:
+    """How the d'Alembert system of a linkage is reduced, from its structure alone.
 
-
-def _effect(direction, point, centre) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(Fx, Fy, moment about the mass centre) of a unit load."""
-    if direction is None:
-        return 0.0, 0.0, 1.0
-    direction = np.asarray(direction, dtype=complex)
-    return direction.real, direction.imag, cross(np.asarray(point, dtype=complex) - centre, direction)
-
-
-def _rows(bodies: list[Body]) -> dict[str, int]:
-    """The first equation row of each body (3 rows a body, 2 for a particle)."""
-    rows, row = {}, 0
-    for body in bodies:
-        rows[body.name] = row
-        row += 2 if body.particle else 3
-    return rows
-
-
-def _add_load(target, column, body: Body, row: int, scale, direction, point) -> None:
-    """Add ``scale`` times a unit load's (Fx, Fy, moment about G) to the body's rows.
-
-    ``target`` is the matrix (then ``column`` is the unknown's column) or the
-    right-hand side (``column is None``).  The arrays are laid out equations-first,
-    (rows, [columns,] *positions), so each entry is a contiguous vector over the
-    positions and ``+=`` broadcasts the value over them.
+    Every pin reaction enters the force equations of the bodies it joins with a
+    coefficient of exactly +1 or -1, so it can be eliminated exactly: peeling the
+    bodies from the ends of the chain, a body with only one pin still open gets that
+    pin ("matched") from its force balance, in terms of what is left.  When no body
+    has a single open pin, the last open pin in joint order stays unknown.  The
+    ``reduced`` unknowns (slides, couples, pins left over, the unknown load) are then
+    fixed by the moment equations (and the force equations of bodies without a
+    matched pin): a k x k system, k <= 3 for Programs 1-3.
     """
-    components = _effect(direction, point, body.centre.pos)
-    for offset, component in enumerate(components[: 2 if body.particle else 3]):
-        index = (row + offset,) if column is None else (row + offset, column)
-        target[index] += scale * component
+
+    def __init__(self, bodies: list[Body], joints: list[Joint], unknown_load: Load):
+        pins = [joint for joint in joints if joint.kind == "pin"]
+        touching = {body.name: [pin for pin in pins if body.name in (pin.upstream, pin.downstream)] for body in bodies}
+        open_pins = {id(pin) for pin in pins}
+        self.matched: dict[str, Joint] = {}  # body name -> the pin its force balance gives
+        self.order: list[Body] = []
+        waiting = list(bodies)
+        while waiting:
+            still_open = {body.name: [pin for pin in touching[body.name] if id(pin) in open_pins] for body in waiting}
+            single = [body for body in waiting if len(still_open[body.name]) <= 1]
+            if not single:
+                open_pins.discard(id([pin for pin in pins if id(pin) in open_pins][-1]))  # stays unknown
+                continue
+            body = single[0]
+            waiting.remove(body)
+            self.order.append(body)
+            if still_open[body.name]:
+                self.matched[body.name] = still_open[body.name][0]
+                open_pins.discard(id(still_open[body.name][0]))
+        matched = {id(pin) for pin in self.matched.values()}
+        self.index: dict[int, int] = {}  # first column of each reduced unknown (a pin: x, then y)
+        size = 0
+        for item in [joint for joint in joints if id(joint) not in matched] + [unknown_load]:
+            self.index[id(item)] = size
+            size += 2 if isinstance(item, Joint) and item.kind == "pin" else 1
+        self.size = size
+        equations = sum(0 if body.particle else 1 for body in bodies)
+        equations += sum(2 for body in bodies if body.name not in self.matched)
+        if equations != size:
+            raise ValueError(f"{size} reduced unknowns for {equations} equations")
 
 
-def _add_inertia(rhs, body: Body, row: int, gravity) -> None:
-    """The d'Alembert side of a body's equations: m a_G (+ m G upward balance), I alpha."""
-    inertial = body.mass * body.centre.acc
-    rhs[row] += inertial.real
-    rhs[row + 1] += inertial.imag + body.mass * gravity
-    if not body.particle:
-        rhs[row + 2] += body.inertia * body.alpha
+def _actions(bodies: list[Body], joints: list[Joint], unknown_load: Load) -> dict[str, list[tuple]]:
+    """The unknowns acting on each body: (joint or load, sign, force direction, point).
+
+    A pin's direction is 1 (its form is already x + i y); a couple has direction and
+    point None.  The downstream body of a joint receives +value, the upstream -value.
+    """
+    actions = {body.name: [] for body in bodies}
+    for joint in joints:
+        direction = {"pin": 1.0, "slide": joint.direction, "couple": None}[joint.kind]
+        point = None if joint.kind == "couple" else joint.point
+        actions[joint.downstream].append((joint, 1.0, direction, point))
+        if joint.upstream is not None:
+            actions[joint.upstream].append((joint, -1.0, direction, point))
+    actions[unknown_load.body].append((unknown_load, 1.0, unknown_load.direction, unknown_load.point))
+    return actions
+
+
+def _targets(bodies: list[Body], loads: dict[str, Load], values: dict, unknown: str, gravity):
+    """What the unknowns must supply to each body: the force m a_G + m G (upward)
+    minus the known loads (complex), and the moment I alpha minus theirs about G."""
+    by_name = {body.name: body for body in bodies}
+    force = {body.name: body.mass * body.centre.acc + 1j * (body.mass * gravity) for body in bodies}
+    moment = {body.name: body.inertia * body.alpha for body in bodies}
+    for name, load in loads.items():
+        value = values.get(name, 0.0)
+        if name == unknown or not np.any(value):
+            continue
+        if load.direction is None:
+            moment[load.body] = moment[load.body] - value
+            continue
+        direction = np.asarray(load.direction, dtype=complex)
+        force[load.body] = force[load.body] - value * direction
+        arm = np.asarray(load.point, dtype=complex) - by_name[load.body].centre.pos
+        moment[load.body] = moment[load.body] - value * cross(arm, direction)
+    return force, moment
 
 
 def solve_kinetostatics(
@@ -148,62 +176,121 @@ def solve_kinetostatics(
     ``loads`` names every load the linkage knows; ``values`` gives the known ones
     (missing names are 0); ``unknown`` names the one solved for.  Returns the
     joint reactions by name (complex for pins) and the unknown load's value.
-    Raises :class:`SingularForceError` where the system has no unique solution.
+
+    The system is the d'Alembert one (3 equations a body, 2 a particle) with the
+    pin reactions eliminated exactly (:class:`_Plan`).  A force is held as a
+    "form", a complex array (k + 1, *shape): its coefficient on each reduced
+    unknown and, last, a constant.  Raises :class:`SingularForceError` where the
+    system has no unique solution, whatever the loads (:func:`_solve_reduced`),
+    and OverflowError where its coefficients are not finite.
     """
     if unknown not in loads:
         raise UnknownLoadError(f"unknown load {unknown!r} (known: {', '.join(loads)})")
-    rows = _rows(bodies)
-    by_name = {body.name: body for body in bodies}
-    size = sum(2 if body.particle else 3 for body in bodies)
-    columns = _columns(joints, loads[unknown])
-    if len(columns) != size:
-        raise ValueError(f"{len(columns)} unknowns for {size} equations")
-    matrix = np.zeros((size, size) + shape)
-    rhs = np.zeros((size,) + shape)
-    for column, actions in enumerate(columns):
-        for body_name, sign, direction, point in actions:
-            _add_load(matrix, column, by_name[body_name], rows[body_name], sign, direction, point)
+    plan = _Plan(bodies, joints, loads[unknown])
+    force_target, moment_target = _targets(bodies, loads, values, unknown, gravity)
+    actions = _actions(bodies, joints, loads[unknown])
+    pin_forms: dict[int, np.ndarray] = {}
+
+    def form(item, sign, direction):
+        """The force (or couple) form of one action on a body."""
+        if id(item) in pin_forms:
+            return sign * pin_forms[id(item)]
+        return _basis(plan, item, sign * (1.0 if direction is None else direction), shape)
+
+    for body in plan.order:  # each matched pin from its body's force balance
+        pin = plan.matched.get(body.name)
+        if pin is not None:
+            sign = 1.0 if pin.downstream == body.name else -1.0
+            found = -sum((form(item, s, d) for item, s, d, point in actions[body.name]
+                          if item is not pin and point is not None), np.zeros((plan.size + 1,) + shape, complex))
+            found[-1] += force_target[body.name]
+            pin_forms[id(pin)] = sign * found
+    rows, right = [], []
     for body in bodies:
-        _add_inertia(rhs, body, rows[body.name], gravity)
-    for name, load in loads.items():
-        value = values.get(name, 0.0)
-        if name != unknown and np.any(value):
-            _add_load(rhs, None, by_name[load.body], rows[load.body], -value, load.direction, load.point)
-    solution = _solve(matrix, rhs)
-    return _unpack(joints, solution), solution[..., -1]
+        acting = [(form(item, s, d), point) for item, s, d, point in actions[body.name]]
+        if body.name not in plan.matched:
+            total = sum((f for f, point in acting if point is not None), np.zeros((plan.size + 1,) + shape, complex))
+            rows += [total.real[:-1], total.imag[:-1]]
+            remainder = force_target[body.name] - total[-1]
+            right += [remainder.real, remainder.imag]
+        if not body.particle:
+            centre = body.centre.pos
+            total = sum((f.real if point is None else cross(np.asarray(point) - centre, f) for f, point in acting),
+                        np.zeros((plan.size + 1,) + shape))
+            rows.append(total[:-1])
+            right.append(moment_target[body.name] - total[-1])
+    solution = _solve_reduced(np.stack(rows), np.stack([np.broadcast_to(r, shape) for r in right]))
+    return _reactions(plan, joints, pin_forms, solution), solution[plan.index[id(loads[unknown])]]
 
 
-def _solve(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
-    """Solve the equations-first system at every position with one batched
-    ``numpy.linalg.solve``; singular systems raise.
+def _basis(plan: _Plan, item, factor, shape) -> np.ndarray:
+    """The form of ``factor`` times a reduced unknown (a pin's: factor (x + i y))."""
+    form = np.zeros((plan.size + 1,) + shape, dtype=complex)
+    column = plan.index[id(item)]
+    form[column] = factor
+    if isinstance(item, Joint) and item.kind == "pin":
+        form[column + 1] = 1j * factor
+    return form
 
-    Scaling a row does not change the solution, so the rows are scaled only in
-    the singularity test: no component may exceed SINGULAR_GAIN times the largest
-    right-hand side of the rows scaled to unit size."""
+
+def _solve_reduced(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+    """Solve the k x k systems ``matrix`` (k, k, *shape) x = ``rhs`` (k, *shape) at
+    every position: Gaussian elimination with partial pivoting, vectorised over the
+    positions, after scaling every column and then every row to a largest entry of 1.
+
+    Singular (:class:`SingularForceError`) where the determinant of the scaled matrix
+    is at most SINGULAR_TOLERANCE: the unknowns cannot balance every load, and for
+    the loads they can balance they are not unique, so it is an error even when
+    nothing needs balancing.  Non-finite coefficients are an OverflowError.
+    """
     if not (np.all(np.isfinite(matrix)) and np.all(np.isfinite(rhs))):
         raise OverflowError("the force system overflows (non-finite coefficients)")
-    row_scale = np.max(np.abs(matrix), axis=1)
+    size = matrix.shape[0]
+    column_scale = np.max(np.abs(matrix), axis=0)
+    column_scale[column_scale == 0] = 1.0
+    work = matrix / column_scale
+    row_scale = np.max(np.abs(work), axis=1)
     row_scale[row_scale == 0] = 1.0
-    try:
-        solution = np.linalg.solve(np.moveaxis(matrix, (0, 1), (-2, -1)), np.moveaxis(rhs, 0, -1)[..., None])[..., 0]
-    except np.linalg.LinAlgError:
-        raise SingularForceError("the selected unknown cannot balance the loads") from None
-    gain_bound = SINGULAR_GAIN * np.moveaxis(np.max(np.abs(rhs) / row_scale, axis=0, keepdims=True), 0, -1)
-    if not np.all(np.abs(solution) <= gain_bound):
-        raise SingularForceError("the selected unknown cannot balance the loads")
+    work = np.concatenate([work / row_scale[:, None], (rhs / row_scale)[:, None]], axis=1)
+    determinant = np.ones(matrix.shape[2:])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for column in range(size):
+            pivot_row = column + np.argmax(np.abs(work[column:, column]), axis=0)
+            swapped = pivot_row != column
+            if np.any(swapped):
+                chosen = np.take_along_axis(work, pivot_row[None, None], axis=0)[0]
+                np.put_along_axis(work, pivot_row[None, None], work[column][None], axis=0)
+                work[column] = chosen
+                determinant = np.where(swapped, -determinant, determinant)
+            pivot = work[column, column]
+            determinant = determinant * pivot
+            below = work[column + 1:, column] / pivot
+            work[column + 1:] -= below[:, None] * work[column][None]
+        if not np.all(np.abs(determinant) > SINGULAR_TOLERANCE):
+            raise SingularForceError("the selected unknown cannot balance the loads")
+        solution = np.empty((size,) + matrix.shape[2:])
+        for row in reversed(range(size)):
+            known = np.sum(work[row, row + 1:size] * solution[row + 1:], axis=0)
+            solution[row] = (work[row, size] - known) / work[row, row]
+    solution = solution / column_scale
+    if not np.all(np.isfinite(solution)):
+        raise OverflowError("the force system overflows (non-finite reactions)")
     return solution
 
 
-def _unpack(joints: list[Joint], solution: np.ndarray) -> dict[str, np.ndarray]:
-    """Joint reactions by name from the solution vector (pins as complex)."""
-    reactions, column = {}, 0
+def _reactions(plan: _Plan, joints: list[Joint], pin_forms: dict, solution: np.ndarray) -> dict[str, np.ndarray]:
+    """Joint reactions by name (pins complex): reduced unknowns read off the
+    solution, eliminated pins evaluated from their forms."""
+    reactions = {}
     for joint in joints:
-        if joint.kind == "pin":
-            reactions[joint.name] = solution[..., column] + 1j * solution[..., column + 1]
-            column += 2
+        if id(joint) in pin_forms:
+            form = pin_forms[id(joint)]
+            reactions[joint.name] = form[-1] + np.sum(form[:-1] * solution, axis=0)
+        elif joint.kind == "pin":
+            column = plan.index[id(joint)]
+            reactions[joint.name] = solution[column] + 1j * solution[column + 1]
         else:
-            reactions[joint.name] = solution[..., column]
-            column += 1
+            reactions[joint.name] = solution[plan.index[id(joint)]]
     return reactions
 
 
