@@ -497,3 +497,13 @@ def test_print_using_line_ending():
     # MS-BASIC: "###.##" right-aligns with two decimals; a trailing ; keeps the line open
     out = run_text('10 PRINT USING "###.##"; 3.14159;\n20 PRINT USING "###.##"; -2\n30 PRINT USING "##"; 1, 2')
     assert out == "  3.14 -2.00\n 1 2\n"
+
+
+def test_area_hooks_see_every_gosub_prog():
+    seen = []
+    machine = Machine(screen=io.StringIO())
+    machine.load("10 FOR QQ=1 TO 3: X(1)=QQ*2: GOSUB PROG 1: NEXT")
+    machine.set_area(1, lambda m: None)
+    machine.area_hooks.append(lambda m, n: seen.append((n, m.line, m.array("X")[1])))
+    machine.run()
+    assert seen == [(1, 10, 2.0), (1, 10, 4.0), (1, 10, 6.0)]

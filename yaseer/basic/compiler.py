@@ -490,7 +490,7 @@ class AreaCompiler:
 
     def stmt_GosubProg(self, stmt, scope):
         self.emit("#FLUSH#")
-        self.emit(f"_call({stmt.area})")
+        self.emit(f"_call({stmt.area}, _ln)")
         self.emit("#RELOAD#")
 
     def stmt_Return(self, stmt, scope):

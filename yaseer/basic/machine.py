@@ -239,6 +239,9 @@ class Machine:
         self._extra_entries: set[int] = set()
         self.array_elements = 0  # elements in all arrays (MAX_TOTAL_ELEMENTS)
         self.pending_row: list = []  # csv values of a PRINT statement printed in parts
+        # Called as hook(machine, n) after every GOSUB PROG n returns (e.g. to record a
+        # mechanism's positions for an animation); machine.line is the calling line.
+        self.area_hooks: list[Callable] = []
 
     # ------------------------------------------------------------ programs
     def load(self, text: str, area: int = 0) -> None:
@@ -501,12 +504,19 @@ class Machine:
             raise ProgramStop(area, block, self.line)
         return stop
 
-    def call_area(self, n: int) -> None:
-        """GOSUB PROG n: run program area n and come back."""
+    def call_area(self, n: int, line=None) -> None:
+        """GOSUB PROG n (at BASIC ``line``): run program area n and come back."""
+        self.line = line
         python_area = self.python_areas.get(n)
         if python_area is not None:
             python_area(self)
-            return
+        else:
+            self._call_basic_area(n)
+        for hook in self.area_hooks:
+            self.line = line
+            hook(self, n)
+
+    def _call_basic_area(self, n: int) -> None:
         if n not in self.programs:
             raise BasicError(f"Undefined program area {n}", UNDEFINED_PROGRAM_AREA)
         if self.area_depth >= MAX_AREA_DEPTH:
