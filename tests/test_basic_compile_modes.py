@@ -57,10 +57,17 @@ def _statement(rng: random.Random, loop_vars: list) -> str:
 def _program(seed: int) -> str:
     rng = random.Random(seed)
     lines, number, open_loops = [], 10, []
-    for _ in range(rng.randint(4, 12)):
+    count = rng.randint(4, 12)
+    for k in range(count):
         statements = []
         for _ in range(rng.randint(1, 3)):
             r = rng.random()
+            if r > 0.93 and k < count - 1:  # a forward jump (into or out of loop bodies)
+                target = number + 10 * rng.randint(1, count - 1 - k)
+                jump = rng.choice([f"IF K > {rng.randint(-1, 2)} THEN {target}", f"GOTO {target}",
+                                   f"ON K GOTO {target}, {target}"])
+                statements.append(jump)
+                continue
             free = [v for v in LOOP_VARIABLES if v not in open_loops]
             if r < 0.25 and free and len(open_loops) < 2:
                 var = rng.choice(free)
@@ -82,7 +89,7 @@ def _program(seed: int) -> str:
     return "\n".join(lines) + "\n"
 
 
-@pytest.mark.parametrize("seed", range(120))
+@pytest.mark.parametrize("seed", range(200))
 def test_fast_and_plain_compilations_print_the_same(seed):
     program = _program(seed)
     plain = program + "65000 RESUME\n"

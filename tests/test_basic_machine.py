@@ -507,3 +507,10 @@ def test_area_hooks_see_every_gosub_prog():
     machine.area_hooks.append(lambda m, n: seen.append((n, m.line, m.array("X")[1])))
     machine.run()
     assert seen == [(1, 10, 2.0), (1, 10, 4.0), (1, 10, 6.0)]
+
+
+def test_statements_after_then_line_never_run():
+    # as GW-BASIC (checked with PC-BASIC): they belong to the THEN branch, which jumps
+    program = ('10 K=3: IF K > 2 THEN 40: PRINT "a"\n30 PRINT 30\n40 PRINT 40\n'
+               '50 K=0: IF K > 2 THEN 40: PRINT "b"\n60 PRINT 60')
+    assert run_rows(program) == [["40.0"], ["60.0"]]
