@@ -21,8 +21,8 @@ import numpy as np
 from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, point_loads
 from yaseer.linkages.registry import lookup, register
-from yaseer.linkages.planar import CrankedLinkage, Motion, Rotation, Stretch, driven_crank, fixed_point, perpendicular_direction
-from yaseer.linkages.planar import rigid_point, solve_two_directions, still, unit_degrees
+from yaseer.linkages.planar import CrankedLinkage, Motion, Rotation, Stretch, driven_crank, fixed_point
+from yaseer.linkages.planar import solve_two_directions, still, unit_degrees
 
 UNCROSSED = 1
 CROSSED = -1
@@ -58,14 +58,11 @@ class FourBar(CrankedLinkage):
 
     def coupler_point(self, distance, offset_deg) -> Motion:
         """A point of the coupler: ``distance`` from A, ``offset_deg`` from A->B."""
-        return rigid_point(self.pin_a, self.coupler, distance, offset_deg)
+        return self.link_point(self.pin_a, "coupler", distance, offset_deg)
 
     def follower_point(self, distance, offset_deg) -> Motion:
         """A point of the follower: ``distance`` from Bo, ``offset_deg`` from Bo->B."""
-        return rigid_point(self.pivot, self._follower_from_pivot(), distance, offset_deg)
-
-    def _follower_from_pivot(self) -> Rotation:
-        return Rotation(self.follower.angle + np.pi, self.follower.omega, self.follower.alpha)
+        return self.link_point(self.pivot, "follower", distance, offset_deg, reverse=True)
 
     def forces(
         self,
@@ -100,13 +97,11 @@ class FourBar(CrankedLinkage):
             Joint("ground_on_follower", None, "follower", "pin", point=self.pivot.pos),
         ]
         catalogue = {"crank_torque": Load("crank")}
-        points = {
-            "crank": (crank_point, self.crank_point(*crank_point).pos, self.crank.angle),
-            "coupler": (coupler_point, self.coupler_point(*coupler_point).pos, self.coupler.angle),
-            "follower": (follower_point, self.follower_point(*follower_point).pos, self._follower_from_pivot().angle),
-        }
-        for body, ((distance, offset), position, reference) in points.items():
-            catalogue.update(point_loads(body, position, perpendicular_direction(reference, offset, distance)))
+        points = {"crank": (crank_point, self.crank_point(*crank_point).pos, False),
+                  "coupler": (coupler_point, self.coupler_point(*coupler_point).pos, False),
+                  "follower": (follower_point, self.follower_point(*follower_point).pos, True)}
+        for body, ((distance, offset), position, reverse) in points.items():
+            catalogue.update(point_loads(body, position, self.load_direction(body, distance, offset, reverse)))
         return analyse(bodies, joints, catalogue, loads, unknown, gravity)
 
 

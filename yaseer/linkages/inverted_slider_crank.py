@@ -19,7 +19,7 @@ from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassPr
 from yaseer.linkages.registry import lookup, register
 from yaseer.linkages.virtual_link import cos_sin_degrees, divide_as_printed
 from yaseer.linkages.planar import CrankedLinkage, DrivenCrank, Motion, Rotation, Stretch, driven_crank, fixed_point
-from yaseer.linkages.planar import perpendicular_direction, rigid_point, solve_two_directions, unit, unit_degrees
+from yaseer.linkages.planar import solve_two_directions, unit_degrees
 
 # Loads of Program 3: crank_torque [U(3)], follower_perpendicular [F(18)].
 LOAD_NAMES = ("crank_torque", "follower_perpendicular")
@@ -43,7 +43,7 @@ class InvertedSliderCrank(CrankedLinkage):
 
     def follower_point(self, distance, offset_deg) -> Motion:
         """A point of the follower: ``distance`` from Bo, ``offset_deg`` from Bo->A."""
-        return rigid_point(self.pivot, self.follower, distance, offset_deg)
+        return self.link_point(self.pivot, "follower", distance, offset_deg)
 
     def forces(
         self,
@@ -76,14 +76,14 @@ class InvertedSliderCrank(CrankedLinkage):
             Joint("ground_on_crank", None, "crank", "pin", point=0j),
             Joint("crank_on_block", "crank", "block", "pin", point=self.pin_a.pos),
             Joint("follower_on_block", "follower", "block", "slide", point=self.pin_a.pos,
-                  direction=1j * unit(self.follower.angle)),
+                  direction=1j * self.unit_vector("follower")),
             Joint("follower_on_block_couple", "follower", "block", "couple"),
             Joint("ground_on_follower", None, "follower", "pin", point=self.pivot.pos),
         ]
         distance, offset = follower_point
         catalogue = {
             "crank_torque": Load("crank"),
-            "follower_perpendicular": Load("follower", perpendicular_direction(self.follower.angle, offset, distance),
+            "follower_perpendicular": Load("follower", self.load_direction("follower", distance, offset),
                                            self.follower_point(distance, offset).pos),
         }
         return analyse(bodies, joints, catalogue, loads, unknown, gravity)

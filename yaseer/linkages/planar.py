@@ -21,6 +21,7 @@ def unit(angle: np.ndarray | float) -> np.ndarray:
     return np.exp(1j * np.asarray(angle, dtype=float))
 
 
+_AXES = np.array([complex(1.0, 0.0), complex(0.0, 1.0), complex(-1.0, 0.0), complex(0.0, -1.0)])  # u(0, 90, 180, 270)
 _QUADRANTS = {0.0: complex(1.0, 0.0), 90.0: complex(0.0, 1.0), 180.0: complex(-1.0, 0.0), 270.0: complex(0.0, -1.0)}
 
 
@@ -34,9 +35,10 @@ def unit_degrees(angle_deg: np.ndarray | float) -> np.ndarray:
         return np.complex128(exact) if exact is not None else np.exp(1j * np.radians(angle))
     turn = np.mod(angle, 360.0)
     vector = np.exp(1j * np.radians(angle))
-    cos = np.select([turn == 90.0, turn == 270.0, turn == 0.0, turn == 180.0], [0.0, 0.0, 1.0, -1.0], vector.real)
-    sin = np.select([turn == 0.0, turn == 180.0, turn == 90.0, turn == 270.0], [0.0, 0.0, 1.0, -1.0], vector.imag)
-    return cos + 1j * sin
+    on_axis = (np.mod(turn, 90.0) == 0.0) & (turn < 360.0)  # mod gives 360.0 for -1e-17
+    if np.any(on_axis):
+        vector[on_axis] = _AXES[(turn[on_axis] // 90.0).astype(int)]
+    return vector
 
 
 def cross(p: np.ndarray, q: np.ndarray) -> np.ndarray:
@@ -118,14 +120,17 @@ def fixed_point(position: np.ndarray | complex) -> Motion:
     return Motion(pos, zero, zero)
 
 
-def rigid_point(origin: Motion, link: Rotation, distance, offset_deg) -> Motion:
+def rigid_point(origin: Motion, link: Rotation, distance, offset_deg, direction=None) -> Motion:
     """A point of a rigid link, ``distance`` from ``origin`` (a point of the link) at
     ``offset_deg`` degrees counter-clockwise from the link's reference line, whose
-    inclination and rates are ``link``.
+    inclination and rates are ``link``; ``direction`` is u(link.angle) when the
+    caller has it already (it saves a complex exponential over the positions).
 
     v = v_origin + omega k x r and a = a_origin + alpha k x r - omega**2 r, r = origin->point.
     """
-    r = np.asarray(distance, dtype=float) * unit(link.angle + np.radians(offset_deg))
+    if direction is None:
+        direction = unit(link.angle)
+    r = np.asarray(distance, dtype=float) * direction * unit(np.radians(offset_deg))
     pos = origin.pos + r
     vel = origin.vel + 1j * link.omega * r
     acc = origin.acc + (1j * link.alpha - link.omega**2) * r
@@ -153,17 +158,17 @@ def still(motion: Motion) -> Motion:
     return Motion(motion.pos, zero, zero)
 
 
-def perpendicular_direction(reference_angle, offset_deg, distance) -> np.ndarray:
+def perpendicular_direction(reference_direction, offset_deg, distance) -> np.ndarray:
     """The direction of a perpendicular point load (Shared rules of the contract).
 
     The load acts at the point ``distance`` from the link's reference joint at
-    ``offset_deg`` from the reference line (inclination ``reference_angle``, rad),
+    ``offset_deg`` from the reference line (the unit vector ``reference_direction``),
     perpendicular to joint->point and counter-clockwise about the joint:
     u(reference + H + 90 deg), reversed when ``distance`` is negative (the point
     then lies the other way); at distance 0 it is u(reference + H + 90 deg).
     """
     sign = np.where(np.asarray(distance) < 0, -1.0, 1.0)
-    return sign * unit(reference_angle + np.radians(offset_deg) + np.pi / 2)
+    return sign * reference_direction * unit(np.radians(offset_deg) + np.pi / 2)
 
 
 class DrivenCrank(NamedTuple):
@@ -195,11 +200,31 @@ def driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate,
 
 
 class CrankedLinkage:
-    """Mixin of the linkages' kinematics results, whose ``crank`` (a :class:`Rotation`)
-    turns about the origin Ao."""
+    """Mixin of the linkages' kinematics results (frozen dataclasses), whose ``crank``
+    (a :class:`Rotation`) turns about the origin Ao; their other links are further
+    :class:`Rotation` attributes, named in the methods below."""
 
     crank: Rotation
 
+    def unit_vector(self, link: str, reverse: bool = False) -> np.ndarray:
+        """u(inclination) of the link named ``link`` (``-u`` with ``reverse``: its line
+        measured from the other end), computed once per result and kept."""
+        kept = self.__dict__.setdefault("_unit_vectors", {})  # the dataclass is frozen; its __dict__ is not
+        if link not in kept:
+            kept[link] = unit(getattr(self, link).angle)
+        return -kept[link] if reverse else kept[link]
+
+    def link_point(self, origin: Motion, link: str, distance, offset_deg, reverse: bool = False) -> Motion:
+        """A point of the link named ``link``: ``distance`` from ``origin`` (a point of
+        it), ``offset_deg`` counter-clockwise from its line (from the other end with
+        ``reverse``: inclination + 180 deg, the same rates)."""
+        return rigid_point(origin, getattr(self, link), distance, offset_deg, self.unit_vector(link, reverse))
+
+    def load_direction(self, link: str, distance, offset_deg, reverse: bool = False) -> np.ndarray:
+        """The direction of the perpendicular point load at (``distance``, ``offset_deg``)
+        of the link named ``link`` (:func:`perpendicular_direction`)."""
+        return perpendicular_direction(self.unit_vector(link, reverse), offset_deg, distance)
+
     def crank_point(self, distance, offset_deg) -> Motion:
         """A point of the crank: ``distance`` from Ao, ``offset_deg`` from Ao->A."""
-        return rigid_point(fixed_point(0j), self.crank, distance, offset_deg)
+        return self.link_point(fixed_point(0j), "crank", distance, offset_deg)

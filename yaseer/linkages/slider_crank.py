@@ -20,7 +20,7 @@ from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, point_loads
 from yaseer.linkages.registry import lookup, register
 from yaseer.linkages.planar import CrankedLinkage, Motion, Rotation, Stretch, driven_crank, dot, fixed_point
-from yaseer.linkages.planar import perpendicular_direction, rigid_point, solve_two_directions, still, unit
+from yaseer.linkages.planar import solve_two_directions, still, unit
 from yaseer.linkages.planar import unit_degrees
 
 # Loads of Program 1, by name (contract element in brackets):
@@ -55,10 +55,7 @@ class SliderCrank(CrankedLinkage):
 
     def rod_point(self, distance, offset_deg) -> Motion:
         """A point of the rod: ``distance`` from the piston pin B, ``offset_deg`` from B->A."""
-        return rigid_point(self.pin_b, self._rod_from_b(), distance, offset_deg)
-
-    def _rod_from_b(self) -> Rotation:
-        return Rotation(self.rod.angle + np.pi, self.rod.omega, self.rod.alpha)
+        return self.link_point(self.pin_b, "rod", distance, offset_deg, reverse=True)
 
     def forces(
         self,
@@ -97,9 +94,9 @@ class SliderCrank(CrankedLinkage):
         crank_p = self.crank_point(*crank_point).pos
         rod_p = self.rod_point(*rod_point).pos
         catalogue = {
-            **point_loads("crank", crank_p, perpendicular_direction(self.crank.angle, crank_point[1], crank_point[0])),
+            **point_loads("crank", crank_p, self.load_direction("crank", *crank_point)),
             "crank_torque": Load("crank"),
-            **point_loads("rod", rod_p, perpendicular_direction(self._rod_from_b().angle, rod_point[1], rod_point[0])),
+            **point_loads("rod", rod_p, self.load_direction("rod", *rod_point, reverse=True)),
             "piston": Load("piston", -axis, self.pin_b.pos),
         }
         return analyse(bodies, joints, catalogue, loads, unknown, gravity)
