@@ -707,9 +707,8 @@ GIF_COLOURS = 64  # line art in a few colours: plenty, and a quarter of the time
 
 def write_gif(images: list, out: Path, fps: float) -> None:
     """An endlessly looping GIF, ``fps`` frames a second (Pillow; 64 colours, fast octree palette)."""
-    from PIL import Image
-
-    frames = [image.quantize(colors=GIF_COLOURS, method=Image.Quantize.FASTOCTREE) for image in images]
+    fast_octree = 2  # Image.Quantize.FASTOCTREE (a plain number for Pillow before 9.1)
+    frames = [image.quantize(colors=GIF_COLOURS, method=fast_octree) for image in images]
     frames[0].save(out, save_all=True, append_images=frames[1:], duration=round(1000.0 / fps), loop=0)
 
 
