@@ -23,7 +23,14 @@ from pathlib import Path
 import pytest
 
 from test_differential_programgen import LONG_LINE, random_program
-from test_differential_support import PcBasic, base_seed, numbers_and_text, outputs_agree, run_yaseer
+from test_differential_support import (
+    PcBasic,
+    base_seed,
+    basic_number,
+    numbers_and_text,
+    outputs_agree,
+    run_yaseer,
+)
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 
@@ -93,6 +100,76 @@ def test_degree_mode_matches_pcbasic_double_radians():
     assert our_text == their_text
     assert len(our_numbers) == len(their_numbers) >= 30 * 3
     far = [(a, b) for a, b in zip(our_numbers, their_numbers) if not math.isclose(a, b, rel_tol=1e-9, abs_tol=1e-9)]
+    assert not far, far[:5]
+
+
+LITERALS = [0.1, 0.25, 0.3, 1.5, 2, 3, 7, 10, 12.75, 100, 0.007]
+FUNCTIONS = {
+    "SQR": lambda x: math.sqrt(x) if x >= 0 else None,
+    "EXP": lambda x: math.exp(x) if x < 40 else None,
+    "LOG": lambda x: math.log(x) if x > 0 else None,
+    "SIN": math.sin, "COS": math.cos, "ATN": math.atan, "ABS": abs,
+}
+
+
+def real_expression(rng: random.Random, depth: int) -> tuple[str, str, float, float]:
+    """An expression on decimal literals: yaseer's text, PC-BASIC's (double literals ``#``), its value, and
+    the largest magnitude met on the way (the scale of rounding errors)."""
+    if depth == 0 or rng.random() < 0.2:
+        value = float(rng.choice(LITERALS))
+        text = repr(value)  # the shortest text that reads back as this double: 0.1, 12.75, 2.0
+        return text, text + "#", value, abs(value)
+    kind = rng.random()
+    if kind < 0.3:
+        name = rng.choice(sorted(FUNCTIONS))
+        inner_y, inner_pc, inner, scale = real_expression(rng, depth - 1)
+        value = FUNCTIONS[name](inner)
+        if value is None:
+            raise ValueError(name)
+        return f"{name}({inner_y})", f"{name}({inner_pc})", value, max(scale, abs(value))
+    op = rng.choice("+-*/^")
+    left_y, left_pc, left, left_scale = real_expression(rng, depth - 1)
+    if op == "^":
+        exponent = rng.choice([2, 3, 0.5, -1])
+        if left <= 0 and exponent == 0.5 or left == 0:
+            raise ValueError("power")
+        right_y = right_pc = basic_number(exponent)
+        right, right_scale = float(exponent), 1.0
+    else:
+        right_y, right_pc, right, right_scale = real_expression(rng, depth - 1)
+    if op == "/" and abs(right) < 1e-6:
+        raise ValueError("division")
+    value = {"+": lambda: left + right, "-": lambda: left - right, "*": lambda: left * right,
+             "/": lambda: left / right, "^": lambda: left ** right}[op]()
+    scale = max(left_scale, right_scale, abs(value))
+    return f"({left_y} {op} {right_y})", f"({left_pc} {op} {right_pc})", value, scale
+
+
+def test_real_arithmetic_matches_pcbasic_double_precision():
+    """Decimal literals, + - * / ^ and SQR EXP LOG SIN COS ATN ABS: yaseer's 10 digits against PC-BASIC's
+    double precision (DEFDBL, ``#`` literals, /D functions) within 1e-9 of the computation's scale."""
+    rng = random.Random(base_seed() + 3)
+    ours_lines, theirs_lines, scales = [], [], []
+    while len(ours_lines) < 40:
+        try:
+            ours_text, theirs_text, value, scale = real_expression(rng, rng.randint(1, 4))
+        except (ValueError, OverflowError, ZeroDivisionError):
+            continue
+        if not 1e-6 < abs(value) < 1e30 or scale > 1e30:
+            continue
+        number = 10 * (len(ours_lines) + 1)
+        ours_lines.append(f"{number} PRINT {ours_text}")
+        theirs_lines.append(f"{number} PRINT {theirs_text}")
+        scales.append(scale)
+    ours = run_yaseer("\n".join(ours_lines) + "\n", angle="rad")
+    pc = PcBasic(double=True)
+    theirs = pc.program("5 DEFDBL A-Z\n" + "\n".join(theirs_lines))
+    pc.close()
+    our_numbers, _ = numbers_and_text(ours)
+    their_numbers, _ = numbers_and_text(theirs)
+    assert len(our_numbers) == len(their_numbers) == len(scales), (ours, theirs)
+    far = [(line, a, b) for line, a, b, scale in zip(ours_lines, our_numbers, their_numbers, scales)
+           if abs(a - b) > 1e-9 * max(abs(a), abs(b)) + 1e-12 * scale]
     assert not far, far[:5]
 
 
