@@ -37,3 +37,9 @@ def test_same_variable_for_loop_reentered_by_goto_reuses_its_frame():
 
 def test_the_largest_allowed_array_works():
     assert run_mutant('10 DIM A$(1999999): A$(1999999) = "x": PRINT A$(1999999)\n', with_prog5=False) == "ok"
+
+
+@pytest.mark.parametrize("limit", ["1E9", "1E12", "1E300"])
+def test_a_long_empty_loop_runs_until_interrupted_not_out_of_memory(limit):
+    """A loop's pass count is not a memory size (one committed state said Out of memory here)."""
+    assert run_mutant(f"10 FOR I = 1 TO {limit}: NEXT\n", with_prog5=False) == "Break in 10"
