@@ -6,8 +6,8 @@ joint reactions (a pin: two components; a slide: a force along a given
 direction; a couple) and one selected load; everything else is known.  One
 linear system per position, the same for Programs 1-3; the pin reactions are
 eliminated exactly from the force equations (their coefficients are +-1) and
-the small system left (k <= 3 unknowns) is solved at all positions at once by
-a vectorised elimination with partial pivoting.
+the small system left (k <= 3 unknowns) is solved at all positions at once
+with its adjugate and one step of refinement.
 
 Sign conventions: a joint's unknown is the action of its ``upstream`` body on
 its ``downstream`` body (``upstream=None`` is the ground); the downstream body
@@ -162,6 +162,27 @@ def _targets(bodies: list[Body], loads: dict[str, Load], values: dict, unknown: 
     return force, moment
 
 
+# A "form" is a force (or, for a couple, a moment) that is linear in the reduced
+# unknowns: a dict from column to coefficient (complex for a force, real for a
+# moment; a scalar or an array over the positions), CONSTANT keying the part
+# that does not depend on them.  Sparse: a term is an array only where it varies.
+CONSTANT = -1
+
+
+def _combined(*terms: tuple[float, dict]) -> dict:
+    """The form sum of ``factor * form`` over ``terms``."""
+    total: dict = {}
+    for factor, form in terms:
+        for key, value in form.items():
+            total[key] = total.get(key, 0.0) + factor * value
+    return total
+
+
+def _moment_of(arm, form: dict) -> dict:
+    """The moment form of a force form acting at ``arm`` from the mass centre."""
+    return {key: cross(arm, np.asarray(value)) for key, value in form.items()}
+
+
 def solve_kinetostatics(
     bodies: list[Body],
     joints: list[Joint],
@@ -178,104 +199,108 @@ def solve_kinetostatics(
     joint reactions by name (complex for pins) and the unknown load's value.
 
     The system is the d'Alembert one (3 equations a body, 2 a particle) with the
-    pin reactions eliminated exactly (:class:`_Plan`).  A force is held as a
-    "form", a complex array (k + 1, *shape): its coefficient on each reduced
-    unknown and, last, a constant.  Raises :class:`SingularForceError` where the
-    system has no unique solution, whatever the loads (:func:`_solve_reduced`),
-    and OverflowError where its coefficients are not finite.
+    pin reactions eliminated exactly (:class:`_Plan`), each held as a form (see
+    CONSTANT).  Raises :class:`SingularForceError` where the system has no unique
+    solution, whatever the loads (:func:`_solve_reduced`), and OverflowError
+    where its coefficients are not finite.
     """
     if unknown not in loads:
         raise UnknownLoadError(f"unknown load {unknown!r} (known: {', '.join(loads)})")
     plan = _Plan(bodies, joints, loads[unknown])
     force_target, moment_target = _targets(bodies, loads, values, unknown, gravity)
     actions = _actions(bodies, joints, loads[unknown])
-    pin_forms: dict[int, np.ndarray] = {}
+    pin_forms: dict[int, dict] = {}
 
-    def form(item, sign, direction):
-        """The force (or couple) form of one action on a body."""
+    def form(item, direction) -> dict:
+        """The form of the action of ``item`` (a joint or the unknown load), sign +."""
         if id(item) in pin_forms:
-            return sign * pin_forms[id(item)]
-        return _basis(plan, item, sign * (1.0 if direction is None else direction), shape)
+            return pin_forms[id(item)]
+        column = plan.index[id(item)]
+        if isinstance(item, Joint) and item.kind == "pin":
+            return {column: 1.0, column + 1: 1j}
+        return {column: 1.0 if direction is None else direction}
 
     for body in plan.order:  # each matched pin from its body's force balance
         pin = plan.matched.get(body.name)
         if pin is not None:
+            others = [(-sign, form(item, d)) for item, sign, d, point in actions[body.name]
+                      if item is not pin and point is not None]
             sign = 1.0 if pin.downstream == body.name else -1.0
-            found = -sum((form(item, s, d) for item, s, d, point in actions[body.name]
-                          if item is not pin and point is not None), np.zeros((plan.size + 1,) + shape, complex))
-            found[-1] += force_target[body.name]
-            pin_forms[id(pin)] = sign * found
+            pin_forms[id(pin)] = _combined(*((sign * f, terms) for f, terms in others),
+                                           (sign, {CONSTANT: force_target[body.name]}))
     rows, right = [], []
     for body in bodies:
-        acting = [(form(item, s, d), point) for item, s, d, point in actions[body.name]]
         if body.name not in plan.matched:
-            total = sum((f for f, point in acting if point is not None), np.zeros((plan.size + 1,) + shape, complex))
-            rows += [total.real[:-1], total.imag[:-1]]
-            remainder = force_target[body.name] - total[-1]
-            right += [remainder.real, remainder.imag]
+            total = _combined(*((sign, form(item, d)) for item, sign, d, point in actions[body.name]
+                                if point is not None))
+            remainder = force_target[body.name] - total.get(CONSTANT, 0.0)
+            rows += [[np.real(total.get(j, 0.0)) for j in range(plan.size)],
+                     [np.imag(total.get(j, 0.0)) for j in range(plan.size)]]
+            right += [np.real(remainder), np.imag(remainder)]
         if not body.particle:
             centre = body.centre.pos
-            total = sum((f.real if point is None else cross(np.asarray(point) - centre, f) for f, point in acting),
-                        np.zeros((plan.size + 1,) + shape))
-            rows.append(total[:-1])
-            right.append(moment_target[body.name] - total[-1])
-    solution = _solve_reduced(np.stack(rows), np.stack([np.broadcast_to(r, shape) for r in right]))
+            total = _combined(*((sign, form(item, d) if point is None else
+                                 _moment_of(np.asarray(point) - centre, form(item, d)))
+                                for item, sign, d, point in actions[body.name]))
+            rows.append([np.real(total.get(j, 0.0)) for j in range(plan.size)])
+            right.append(moment_target[body.name] - total.get(CONSTANT, 0.0))
+    matrix = np.array([[np.broadcast_to(entry, shape) for entry in row] for row in rows], dtype=float)
+    solution = _solve_reduced(matrix, np.array([np.broadcast_to(entry, shape) for entry in right], dtype=float))
     return _reactions(plan, joints, pin_forms, solution), solution[plan.index[id(loads[unknown])]]
-
-
-def _basis(plan: _Plan, item, factor, shape) -> np.ndarray:
-    """The form of ``factor`` times a reduced unknown (a pin's: factor (x + i y))."""
-    form = np.zeros((plan.size + 1,) + shape, dtype=complex)
-    column = plan.index[id(item)]
-    form[column] = factor
-    if isinstance(item, Joint) and item.kind == "pin":
-        form[column + 1] = 1j * factor
-    return form
 
 
 def _solve_reduced(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
     """Solve the k x k systems ``matrix`` (k, k, *shape) x = ``rhs`` (k, *shape) at
-    every position: Gaussian elimination with partial pivoting, vectorised over the
-    positions, after scaling every column and then every row to a largest entry of 1.
+    every position, vectorised over the positions.
 
-    Singular (:class:`SingularForceError`) where the determinant of the scaled matrix
-    is at most SINGULAR_TOLERANCE: the unknowns cannot balance every load, and for
-    the loads they can balance they are not unique, so it is an error even when
-    nothing needs balancing.  Non-finite coefficients are an OverflowError.
+    Every column and then every row is scaled to a largest entry of 1; the scaled
+    system is solved with its adjugate (cofactors; k <= 3 here, so a handful of
+    array products) and one step of iterative refinement, which brings the error
+    to that of a pivoted elimination.  Singular (:class:`SingularForceError`) where
+    the determinant of the scaled matrix is at most SINGULAR_TOLERANCE: the unknowns
+    cannot balance every load, and for the loads they can balance they are not
+    unique, so it is an error even when nothing needs balancing.  Non-finite
+    coefficients are an OverflowError.
     """
     if not (np.all(np.isfinite(matrix)) and np.all(np.isfinite(rhs))):
         raise OverflowError("the force system overflows (non-finite coefficients)")
     size = matrix.shape[0]
     column_scale = np.max(np.abs(matrix), axis=0)
     column_scale[column_scale == 0] = 1.0
-    work = matrix / column_scale
-    row_scale = np.max(np.abs(work), axis=1)
+    scaled = matrix / column_scale
+    row_scale = np.max(np.abs(scaled), axis=1)
     row_scale[row_scale == 0] = 1.0
-    work = np.concatenate([work / row_scale[:, None], (rhs / row_scale)[:, None]], axis=1)
-    determinant = np.ones(matrix.shape[2:])
-    with np.errstate(divide="ignore", invalid="ignore"):
-        for column in range(size):
-            pivot_row = column + np.argmax(np.abs(work[column:, column]), axis=0)
-            swapped = pivot_row != column
-            if np.any(swapped):
-                chosen = np.take_along_axis(work, pivot_row[None, None], axis=0)[0]
-                np.put_along_axis(work, pivot_row[None, None], work[column][None], axis=0)
-                work[column] = chosen
-                determinant = np.where(swapped, -determinant, determinant)
-            pivot = work[column, column]
-            determinant = determinant * pivot
-            below = work[column + 1:, column] / pivot
-            work[column + 1:] -= below[:, None] * work[column][None]
-        if not np.all(np.abs(determinant) > SINGULAR_TOLERANCE):
-            raise SingularForceError("the selected unknown cannot balance the loads")
-        solution = np.empty((size,) + matrix.shape[2:])
-        for row in reversed(range(size)):
-            known = np.sum(work[row, row + 1:size] * solution[row + 1:], axis=0)
-            solution[row] = (work[row, size] - known) / work[row, row]
-    solution = solution / column_scale
+    scaled /= row_scale[:, None]
+    rows = [[scaled[i, j] for j in range(size)] for i in range(size)]
+    cofactors = [[_cofactor(rows, i, j) for j in range(size)] for i in range(size)]
+    determinant = sum(rows[0][j] * cofactors[0][j] for j in range(size))
+    if not np.all(np.abs(determinant) > SINGULAR_TOLERANCE):
+        raise SingularForceError("the selected unknown cannot balance the loads")
+
+    def adjugate_solve(right):
+        return [sum(cofactors[i][j] * right[i] for i in range(size)) / determinant for j in range(size)]
+
+    right = rhs / row_scale
+    solution = adjugate_solve(right)
+    residual = [right[i] - sum(rows[i][j] * solution[j] for j in range(size)) for i in range(size)]
+    solution = np.array([x + dx for x, dx in zip(solution, adjugate_solve(residual))]) / column_scale
     if not np.all(np.isfinite(solution)):
         raise OverflowError("the force system overflows (non-finite reactions)")
     return solution
+
+
+def _cofactor(rows: list[list], i: int, j: int):
+    """(-1)**(i + j) times the minor of ``rows`` without row i and column j."""
+    minor = [row[:j] + row[j + 1:] for k, row in enumerate(rows) if k != i]
+    return (-1.0) ** (i + j) * _determinant(minor)
+
+
+def _determinant(rows: list[list]):
+    """The determinant of a small matrix given as rows of arrays (Laplace expansion
+    along the first row: k! products, meant for k <= 3)."""
+    if len(rows) == 1:
+        return rows[0][0]
+    return sum(rows[0][j] * _cofactor(rows, 0, j) for j in range(len(rows)))
 
 
 def _reactions(plan: _Plan, joints: list[Joint], pin_forms: dict, solution: np.ndarray) -> dict[str, np.ndarray]:
@@ -284,8 +309,9 @@ def _reactions(plan: _Plan, joints: list[Joint], pin_forms: dict, solution: np.n
     reactions = {}
     for joint in joints:
         if id(joint) in pin_forms:
-            form = pin_forms[id(joint)]
-            reactions[joint.name] = form[-1] + np.sum(form[:-1] * solution, axis=0)
+            terms = pin_forms[id(joint)]
+            reactions[joint.name] = sum((value * (1.0 if key == CONSTANT else solution[key])
+                                         for key, value in terms.items()), np.zeros(solution.shape[1:], complex))
         elif joint.kind == "pin":
             column = plan.index[id(joint)]
             reactions[joint.name] = solution[column] + 1j * solution[column + 1]
