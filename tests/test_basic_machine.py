@@ -514,3 +514,14 @@ def test_statements_after_then_line_never_run():
     program = ('10 K=3: IF K > 2 THEN 40: PRINT "a"\n30 PRINT 30\n40 PRINT 40\n'
                '50 K=0: IF K > 2 THEN 40: PRINT "b"\n60 PRINT 60')
     assert run_rows(program) == [["40.0"], ["60.0"]]
+
+
+def test_zero_trip_loop_finds_its_next_inside_an_if_branch():
+    # GW-BASIC scans forward for the NEXT, also into IF branches (checked with PC-BASIC)
+    program = '10 FOR N=0 TO 4 STEP -1: IF 0 THEN 20 ELSE PRINT 9: NEXT N\n20 PRINT "x"\n30 NEXT N'
+    assert run_rows(program) == [["x"]]
+    program = "10 IF 0 THEN A=1 ELSE PRINT 1: FOR N=3 TO 1 STEP 2: NEXT N\n20 PRINT N"
+    assert values(program) == [[1.0], [5.0]]
+    # even a NEXT after "THEN n:", which can never run, ends the scan
+    program = '10 FOR J=3 TO 2: PRINT 1\n20 IF 1 THEN 30: NEXT J\n30 PRINT "y"; J'
+    assert run_rows(program) == [["y", "4.0"]]

@@ -49,7 +49,7 @@ def walk_statements(stmt):
     """The statement and every statement nested in its IF branches."""
     yield stmt
     if isinstance(stmt, ast.If):
-        for branch in (stmt.then, stmt.otherwise):
+        for branch in (stmt.then, stmt.otherwise, stmt.unreachable):
             if isinstance(branch, list):
                 for s in branch:
                     yield from walk_statements(s)
@@ -94,10 +94,6 @@ def _native_statement(stmt) -> bool:
     return True
 
 
-def _same_var(a, b) -> bool:
-    return a == b
-
-
 class Plan:
     """Where blocks start and which loops are native.
 
@@ -114,26 +110,41 @@ class Plan:
 
 
 def _match_loops(flat: list) -> tuple[dict, dict]:
-    """Match each top-level FOR to its NEXT by program order (as MS-BASIC scans)."""
+    """Match each top-level FOR to its NEXT by program order (as MS-BASIC scans).
+
+    FORs and NEXTs inside IF branches take part in the scan (a NEXT in a branch
+    closes the loop it names) but are not recorded: only a top-level pair can become
+    a native loop, and ``_branch_loops`` finds where a branch-closed loop ends.
+    """
     for_next, next_for = {}, {}
-    open_loops: list[int] = []
+    open_loops: list[tuple] = []  # (statement index, loop variable, top level?)
     for i, (_, stmt) in enumerate(flat):
-        if isinstance(stmt, ast.For):
-            open_loops.append(i)
+        if isinstance(stmt, BasicError):
+            continue
+        if isinstance(stmt, ast.If):
+            for inner in walk_statements(stmt):
+                if isinstance(inner, ast.For):
+                    open_loops.append((i, inner.var, False))
+                elif isinstance(inner, ast.Next):
+                    _close(open_loops, inner.var)
+        elif isinstance(stmt, ast.For):
+            open_loops.append((i, stmt.var, True))
         elif isinstance(stmt, ast.Next):
-            if stmt.var is None:
-                if open_loops:
-                    f = open_loops.pop()
-                    for_next[f], next_for[i] = i, f
-                continue
-            # NEXT I closes inner loops left open, down to the FOR I.
-            for k in range(len(open_loops) - 1, -1, -1):
-                if _same_var(flat[open_loops[k]][1].var, stmt.var):
-                    f = open_loops[k]
-                    del open_loops[k:]
-                    for_next[f], next_for[i] = i, f
-                    break
+            closed = _close(open_loops, stmt.var)
+            if closed is not None and closed[2]:
+                for_next[closed[0]], next_for[i] = i, closed[0]
     return for_next, next_for
+
+
+def _close(open_loops: list, var):
+    """Close the innermost open loop over ``var`` (any loop for a NEXT without a name),
+    and the loops opened inside it; the closed loop's entry, or None."""
+    for k in range(len(open_loops) - 1, -1, -1):
+        if var is None or open_loops[k][1] == var:
+            closed = open_loops[k]
+            del open_loops[k:]
+            return closed
+    return None
 
 
 def plan(flat: list, entry_lines=()) -> Plan:
@@ -187,35 +198,64 @@ def plan(flat: list, entry_lines=()) -> Plan:
             entries.add(i + 1)
     # dynamic loops' NEXTs are not consumed; natives' are
     dynamic_for_next = {f: j for f, j in for_next.items() if f not in native}
-    branch_for_next = _branch_loops(statements, entries)  # adds the entries it needs
+    branch_for_next = _branch_loops(statements, entries, for_next)  # adds the entries it needs
     return Plan(sorted(entries), native, dynamic_for_next, next_for, fine, branch_for_next)
 
 
-def _branch_loops(statements: list, entries: set) -> dict:
-    """FORs inside IF branches: id(FOR) -> index of the top-level NEXT that closes it.
+def _branch_loops(statements: list, entries: set, for_next: dict) -> dict:
+    """Where a loop that runs zero times goes when the simple match cannot say.
 
-    A loop that runs zero times continues after that NEXT (MS-BASIC scans forward for
-    it), so the statement after it becomes a block entry.
+    For a FOR inside an IF branch, or a top-level FOR whose NEXT sits inside an IF
+    branch: id(FOR) -> index of the top-level statement holding the closing NEXT.
+    MS-BASIC scans forward for that NEXT and goes on after it; here execution goes on
+    with the statement after the one holding it (exact when the NEXT ends its branch),
+    which therefore becomes a block entry.
     """
     found = {}
     for i, stmt in enumerate(statements):
-        if not isinstance(stmt, ast.If):
+        if isinstance(stmt, ast.If):
+            loops = [s for s in walk_statements(stmt) if isinstance(s, ast.For)]
+        elif isinstance(stmt, ast.For) and i not in for_next:
+            loops = [stmt]
+        else:
             continue
-        for inner in walk_statements(stmt):
-            if not isinstance(inner, ast.For):
-                continue
-            depth = 0
-            for k in range(i + 1, len(statements)):
-                other = statements[k]
-                if isinstance(other, ast.For):
-                    depth += 1
-                elif isinstance(other, ast.Next):
-                    if depth == 0 and (other.var is None or other.var == inner.var):
-                        found[id(inner)] = k
-                        entries.add(k + 1)
-                        break
-                    depth = max(0, depth - 1)
+        for loop in loops:
+            k = i if _closes_later(stmt, loop) else _closing_statement(statements, i + 1, loop.var)
+            if k is not None:
+                found[id(loop)] = k
+                entries.add(k + 1)
     return found
+
+
+def _closes_later(stmt, loop) -> bool:
+    """Does a NEXT after ``loop`` inside the same IF statement close it?"""
+    inner = list(walk_statements(stmt))
+    if not isinstance(stmt, ast.If) or not any(s is loop for s in inner):
+        return False
+    depth = 0
+    for other in inner[next(k for k, s in enumerate(inner) if s is loop) + 1:]:
+        if isinstance(other, ast.For):
+            depth += 1
+        elif isinstance(other, ast.Next):
+            if depth == 0 and (other.var is None or other.var == loop.var):
+                return True
+            depth = max(0, depth - 1)
+    return False
+
+
+def _closing_statement(statements: list, start: int, var) -> int | None:
+    """The index of the first top-level statement from ``start`` that holds a NEXT
+    closing a loop over ``var`` (loops opened on the way are skipped over)."""
+    depth = 0
+    for k in range(start, len(statements)):
+        for inner in walk_statements(statements[k]) if not isinstance(statements[k], BasicError) else ():
+            if isinstance(inner, ast.For):
+                depth += 1
+            elif isinstance(inner, ast.Next):
+                if depth == 0 and (inner.var is None or inner.var == var):
+                    return k
+                depth = max(0, depth - 1)
+    return None
 
 
 # ------------------------------------------------------------------ code generation

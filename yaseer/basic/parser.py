@@ -74,6 +74,22 @@ def _values(children) -> list:
     return [c for c in children if not (isinstance(c, Token) and c.type in ("COMMA", "SEMI", "EQ"))]
 
 
+class _LineThenRest:
+    """A branch ``n: statements``: a jump, then statements that can never run."""
+
+    def __init__(self, line: int, rest: list):
+        self.line, self.rest = line, rest
+
+
+def _if(condition, then, otherwise) -> ast.If:
+    unreachable = []
+    if isinstance(then, _LineThenRest):
+        then, unreachable = then.line, unreachable + then.rest
+    if isinstance(otherwise, _LineThenRest):
+        otherwise, unreachable = otherwise.line, unreachable + otherwise.rest
+    return ast.If(condition, then, otherwise, unreachable)
+
+
 class _ToAst(Transformer):
     """lark tree -> syntax_tree nodes (called bottom-up during the parse)."""
 
@@ -98,18 +114,17 @@ class _ToAst(Transformer):
     def branch_line(self, c):
         return _line_number(c[0])
 
+    def branch_line_rest(self, c):
+        return _LineThenRest(_line_number(c[0]), c[1])
+
     def branch_seq(self, c):
         return c[0]
 
     def if_stmt(self, c):
-        cond, then = c[1], c[3]
-        otherwise = c[5] if len(c) > 5 else None
-        return ast.If(cond, then, otherwise)
+        return _if(c[1], c[3], c[5] if len(c) > 5 else None)
 
     def if_goto(self, c):
-        cond, target = c[1], _line_number(c[3])
-        otherwise = c[5] if len(c) > 5 else None
-        return ast.If(cond, target, otherwise)
+        return _if(c[1], _line_number(c[3]), c[5] if len(c) > 5 else None)
 
     # -- statements
     def let_stmt(self, c):

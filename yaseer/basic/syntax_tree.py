@@ -289,6 +289,7 @@ class If:
     condition: object
     then: object  # int line number or list of statements
     otherwise: object = None  # int, list or None
+    unreachable: list = _LIST  # statements after "THEN n:" (never run; scanned for NEXT/DATA)
 
 
 @_node
