@@ -518,7 +518,7 @@ def test_statements_after_then_line_never_run():
 
 def test_zero_trip_loop_finds_its_next_inside_an_if_branch():
     # GW-BASIC scans forward for the NEXT, also into IF branches (checked with PC-BASIC)
-    program = '10 FOR N=0 TO 4 STEP -1: IF 0 THEN 20 ELSE PRINT 9: NEXT N\n20 PRINT "x"\n30 NEXT N'
+    program = '10 FOR N=0 TO 4 STEP -1: IF 0 THEN 20 ELSE PRINT 9: NEXT N\n20 PRINT "x"'
     assert run_rows(program) == [["x"]]
     program = "10 IF 0 THEN A=1 ELSE PRINT 1: FOR N=3 TO 1 STEP 2: NEXT N\n20 PRINT N"
     assert values(program) == [[1.0], [5.0]]
