@@ -32,7 +32,8 @@ def test_limit_is_a_basic_error_naming_the_line(source, expected):
 
 def test_same_variable_for_loop_reentered_by_goto_reuses_its_frame():
     """MS-BASIC replaces the frame of a FOR on the same variable: this loops, it does not fill memory."""
-    assert run_mutant("10 N = N + 1: FOR I = 1 TO 2\n20 GOTO 10\n", with_prog5=False) == "Break in 10"
+    outcome = run_mutant("10 N = N + 1: FOR I = 1 TO 2\n20 GOTO 10\n", with_prog5=False)
+    assert outcome in ("Break in 10", "Break in 20")  # wherever the interrupt lands
 
 
 def test_the_largest_allowed_array_works():
