@@ -114,11 +114,13 @@ class _Plan:
                 open_pins.discard(id(still_open[body.name][0]))
         matched = {id(pin) for pin in self.matched.values()}
         self.index: dict[int, int] = {}  # first column of each reduced unknown (a pin: x, then y)
-        size = 0
+        self.couples: list[bool] = []  # per column: is the unknown a couple (N m) rather than a force (N)?
         for item in [joint for joint in joints if id(joint) not in matched] + [unknown_load]:
-            self.index[id(item)] = size
-            size += 2 if isinstance(item, Joint) and item.kind == "pin" else 1
-        self.size = size
+            self.index[id(item)] = len(self.couples)
+            pin = isinstance(item, Joint) and item.kind == "pin"
+            couple = item.kind == "couple" if isinstance(item, Joint) else item.direction is None
+            self.couples += [False, False] if pin else [couple]
+        size = self.size = len(self.couples)
         equations = sum(0 if body.particle else 1 for body in bodies)
         equations += sum(2 for body in bodies if body.name not in self.matched)
         if equations != size:
@@ -245,28 +247,36 @@ def solve_kinetostatics(
             rows.append([np.real(total.get(j, 0.0)) for j in range(plan.size)])
             right.append(moment_target[body.name] - total.get(CONSTANT, 0.0))
     matrix = np.array([[np.broadcast_to(entry, shape) for entry in row] for row in rows], dtype=float)
-    solution = _solve_reduced(matrix, np.array([np.broadcast_to(entry, shape) for entry in right], dtype=float))
+    solution = _solve_reduced(matrix, np.array([np.broadcast_to(entry, shape) for entry in right], dtype=float),
+                              plan.couples)
     return _reactions(plan, joints, pin_forms, solution), solution[plan.index[id(loads[unknown])]]
 
 
-def _solve_reduced(matrix: np.ndarray, rhs: np.ndarray) -> np.ndarray:
+def _solve_reduced(matrix: np.ndarray, rhs: np.ndarray, couples: list[bool]) -> np.ndarray:
     """Solve the k x k systems ``matrix`` (k, k, *shape) x = ``rhs`` (k, *shape) at
     every position, vectorised over the positions.
 
-    Every column and then every row is scaled to a largest entry of 1; the scaled
-    system is solved with its adjugate (cofactors; k <= 3 here, so a handful of
-    array products) and one step of iterative refinement, which brings the error
-    to that of a pivoted elimination.  Singular (:class:`SingularForceError`) where
-    the determinant of the scaled matrix is at most SINGULAR_TOLERANCE: the unknowns
-    cannot balance every load, and for the loads they can balance they are not
-    unique, so it is an error even when nothing needs balancing.  Non-finite
-    coefficients are an OverflowError.
+    Scaling: the columns of couple unknowns (``couples``) are multiplied by the
+    largest moment arm of the force columns (a couple counts as that force at that
+    arm), so all columns are alike whatever the unit of length; then every row is
+    scaled to a largest entry of 1.
+    (Scaling each column to 1 instead would hide an unknown that has almost no
+    effect, such as a piston force a hair from dead centre.)  The scaled system is
+    solved with its adjugate (cofactors; k <= 3 here, so a handful of array
+    products) and one step of iterative refinement, which brings the error to
+    that of a pivoted elimination.  Singular (:class:`SingularForceError`) where
+    the determinant of the scaled matrix is at most SINGULAR_TOLERANCE: the
+    unknowns cannot balance every load, and for the loads they can balance they
+    are not unique, so it is an error even when nothing needs balancing.
+    Non-finite coefficients are an OverflowError.
     """
     if not (np.all(np.isfinite(matrix)) and np.all(np.isfinite(rhs))):
         raise OverflowError("the force system overflows (non-finite coefficients)")
     size = matrix.shape[0]
-    column_scale = np.max(np.abs(matrix), axis=0)
-    column_scale[column_scale == 0] = 1.0
+    forces = [column for column in range(size) if not couples[column]]
+    arm = np.max(np.abs(matrix[:, forces]), axis=(0, 1)) if forces else np.ones(matrix.shape[2:])
+    arm = np.where(arm == 0, 1.0, arm)
+    column_scale = np.array([1.0 / arm if couple else np.ones_like(arm) for couple in couples])
     scaled = matrix / column_scale
     row_scale = np.max(np.abs(scaled), axis=1)
     row_scale[row_scale == 0] = 1.0
