@@ -12,7 +12,6 @@ import math
 
 from yaseer.basic.errors import (
     BasicError, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_CALL, OVERFLOW, STRING_TOO_LONG,
-    SUBSCRIPT_OUT_OF_RANGE, TYPE_MISMATCH,
 )
 
 MAX_STRING = 255  # characters (MS-BASIC's limit)
@@ -28,14 +27,14 @@ def overflow() -> None:
     raise BasicError("Overflow", OVERFLOW)
 
 
-def type_mismatch() -> BasicError:
-    return BasicError("Type mismatch", TYPE_MISMATCH)
-
-
 def subscript(x: float) -> int:
-    """An array subscript: rounded to the nearest integer; below 0 is out of range."""
+    """An array subscript: rounded to the nearest integer.
+
+    A negative subscript is ``Illegal function call`` (as GW-BASIC, checked with
+    PC-BASIC); one above the dimension is ``Subscript out of range`` (an IndexError).
+    """
     if x < -0.5:
-        raise BasicError("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
+        raise illegal_function_call()
     return int(x + 0.5)
 
 

@@ -70,12 +70,6 @@ _RELATIONS = {
 _NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)(E[+-]?\d+)?")
 _LINE_NUMBER = re.compile(r"\s*(\d+)(?=[\sA-Za-z'?]|$)\s?")
 
-TERMINALS = sorted(
-    set(_KEYWORD_TYPES.values()) | set(_OPERATORS.values()) | set(_RELATIONS.values())
-    | {"NUMBER", "STRING", "NAME", "STRNAME"}
-)
-
-
 def keyword_at(upper: str, i: int) -> str | None:
     """The longest keyword that starts at position ``i`` of the upper-cased text."""
     for word in _KEYWORDS_BY_LETTER.get(upper[i], ()):
