@@ -380,3 +380,58 @@ def test_follower_load_cannot_drive_a_fourbar_whose_crank_and_coupler_are_in_lin
     # a generic position of the same linkage solves
     assert np.isfinite(fourbar(1.0, 0.0, 0.3, 0.9, 0.5, theta + 30, 1.0).forces(
         loads=dict(crank_torque=1.0), unknown="follower_perpendicular", follower_point=(0.4, 0.0)).value)
+
+
+# A singular system is singular whatever the loads: with nothing to balance, the
+# zero solution is one of infinitely many (the contract: a run-time error).
+
+@pytest.mark.parametrize("off_dead_centre", [0.0, 1e-12, -1e-10])
+def test_piston_force_at_dead_centre_is_singular_even_with_nothing_to_balance(off_dead_centre):
+    kin = slider_crank(0.0, 0.1, 0.3, 180.0 + off_dead_centre, 5.0)
+    with pytest.raises(SingularForceError):
+        kin.forces(unknown="piston")  # no masses, no loads, no gravity
+
+
+def test_fourbar_follower_load_is_singular_at_a_crank_coupler_line_up_with_nothing_to_balance():
+    theta = np.degrees(np.arccos((1.44 + 1 - 0.25) / 2.4))  # crank and coupler in line (see above)
+    kin = next(k for k in (fourbar(1.0, 0.0, 0.3, 0.9, 0.5, theta, branch=b) for b in (1, -1))
+               if abs(k.pin_b.pos - 1.2 * np.exp(1j * np.radians(theta))) < 1e-6)
+    with pytest.raises(SingularForceError):
+        kin.forces(unknown="follower_perpendicular", follower_point=(0.4, 0.0))
+
+
+def test_unknown_perpendicular_force_at_the_pivot_is_singular_with_nothing_to_balance():
+    with pytest.raises(SingularForceError):
+        inverted_slider_crank(0.5, 30.0, 0.25, 40.0).forces(unknown="follower_perpendicular", follower_point=(0.0, 0.0))
+
+
+@pytest.mark.parametrize("unknown", ["crank_torque", "piston", "rod_perpendicular"])
+def test_a_regular_position_with_nothing_to_balance_gives_exact_zeros(unknown):
+    result = slider_crank(0.02, 0.1, 0.3, 50.0).forces(unknown=unknown, rod_point=(0.1, 10.0))
+    assert result.value == 0.0
+    assert all(np.all(reaction == 0.0) for reaction in result.reactions.values())
+
+
+@pytest.mark.parametrize("scale", [1e-4, 1.0, 1e3])
+def test_near_dead_centre_the_piston_force_follows_virtual_work_in_any_unit_of_length(scale):
+    # 1e-6 deg from dead centre the system is nearly singular but solvable: the piston
+    # force P that balances a crank torque U obeys U dtheta = P ds (power balance; the
+    # piston load acts along -u(phi)), with ds/dtheta of s = a cos + sqrt(b^2 - a^2 sin^2)
+    # differentiated by hand (e = 0, phi = 0).
+    a, b, theta, torque = 0.1 * scale, 0.3 * scale, 180.0 + 1e-6, 2.0 * scale
+    result = slider_crank(0.0, a, b, theta).forces(unknown="piston", loads=dict(crank_torque=torque))
+    sin, cos = np.sin(np.radians(theta)), np.cos(np.radians(theta))
+    ds_dtheta = -a * sin - a**2 * sin * cos / np.sqrt(b**2 - a**2 * sin**2)
+    assert result.value == pytest.approx(torque / ds_dtheta, rel=1e-6)
+    assert abs(result.value) > 1e8
+
+
+def test_the_listing_gets_the_contracts_singular_force_error_when_nothing_needs_balancing(tmp_path, capsys):
+    from yaseer import cli
+
+    listing = tmp_path / "dead_centre.bas"  # crank at dead centre, piston force asked, no loads or masses
+    listing.write_text("10 L(2) = 0.1: L(3) = 0.3: T(2) = 180: Z(1) = 2: Q(1) = 4\n20 GOSUB PROG 1\n30 PRINT P(1)\n")
+    status = cli.main(["run", str(listing)])
+    captured = capsys.readouterr()
+    assert status == 1 and captured.out == ""
+    assert captured.err.strip() == "Force system is singular (PROG 1) in 20"
