@@ -525,3 +525,20 @@ def test_zero_trip_loop_finds_its_next_inside_an_if_branch():
     # even a NEXT after "THEN n:", which can never run, ends the scan
     program = '10 FOR J=3 TO 2: PRINT 1\n20 IF 1 THEN 30: NEXT J\n30 PRINT "y"; J'
     assert run_rows(program) == [["y", "4.0"]]
+
+
+def test_break_inside_a_long_native_loop_keeps_the_variable():
+    import signal
+
+    machine = Machine(screen=io.StringIO())
+    machine.load("10 FOR I=1 TO 1E12: NEXT\n20 PRINT I")
+    previous = signal.signal(signal.SIGALRM, lambda *_: signal.raise_signal(signal.SIGINT))
+    signal.setitimer(signal.ITIMER_REAL, 0.2)
+    try:
+        with pytest.raises(BasicError) as info:
+            machine.run()
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+    assert str(info.value) == "Break in 10"
+    assert 1 < machine.scalar("I") < 1e12 and machine.scalar("I") == int(machine.scalar("I"))
