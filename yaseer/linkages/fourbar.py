@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from yaseer.linkages.errors import AssemblyError
-from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, point_loads
+from yaseer.linkages.kinetostatics import ForceResult, Joint, Load, MassProps, analyse, loads_at_point, rigid_body
 from yaseer.linkages.registry import lookup, register
 from yaseer.linkages.planar import CrankedLinkage, Motion, Rotation, Stretch, driven_crank, fixed_point
 from yaseer.linkages.planar import solve_two_directions, still, unit_degrees
@@ -56,13 +56,16 @@ class FourBar(CrankedLinkage):
     pivot: Motion
     moving: bool
 
+    FRAMES = {"crank": (None, "crank", False), "coupler": ("pin_a", "coupler", False),
+              "follower": ("pivot", "follower", True)}
+
     def coupler_point(self, distance, offset_deg) -> Motion:
         """A point of the coupler: ``distance`` from A, ``offset_deg`` from A->B."""
-        return self.link_point(self.pin_a, "coupler", distance, offset_deg)
+        return self.body_point("coupler", distance, offset_deg)
 
     def follower_point(self, distance, offset_deg) -> Motion:
         """A point of the follower: ``distance`` from Bo, ``offset_deg`` from Bo->B."""
-        return self.link_point(self.pivot, "follower", distance, offset_deg, reverse=True)
+        return self.body_point("follower", distance, offset_deg)
 
     def forces(
         self,
@@ -83,25 +86,16 @@ class FourBar(CrankedLinkage):
         ``coupler_on_follower`` at B, ``ground_on_follower`` at Bo.
         """
         loads = loads or {}
-        bodies = [
-            Body("crank", crank.mass, crank.inertia, self.crank_point(crank.distance, crank.offset_deg), self.crank.alpha),
-            Body("coupler", coupler.mass, coupler.inertia,
-                 self.coupler_point(coupler.distance, coupler.offset_deg), self.coupler.alpha),
-            Body("follower", follower.mass, follower.inertia,
-                 self.follower_point(follower.distance, follower.offset_deg), self.follower.alpha),
-        ]
+        bodies = [rigid_body(self, "crank", crank), rigid_body(self, "coupler", coupler),
+                  rigid_body(self, "follower", follower)]
         joints = [
             Joint("ground_on_crank", None, "crank", "pin", point=0j),
             Joint("crank_on_coupler", "crank", "coupler", "pin", point=self.pin_a.pos),
             Joint("coupler_on_follower", "coupler", "follower", "pin", point=self.pin_b.pos),
             Joint("ground_on_follower", None, "follower", "pin", point=self.pivot.pos),
         ]
-        catalogue = {"crank_torque": Load("crank")}
-        points = {"crank": (crank_point, self.crank_point(*crank_point).pos, False),
-                  "coupler": (coupler_point, self.coupler_point(*coupler_point).pos, False),
-                  "follower": (follower_point, self.follower_point(*follower_point).pos, True)}
-        for body, ((distance, offset), position, reverse) in points.items():
-            catalogue.update(point_loads(body, position, self.load_direction(body, distance, offset, reverse)))
+        catalogue = {"crank_torque": Load("crank"), **loads_at_point(self, "crank", crank_point),
+                     **loads_at_point(self, "coupler", coupler_point), **loads_at_point(self, "follower", follower_point)}
         return analyse(bodies, joints, catalogue, loads, unknown, gravity)
 
 

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from yaseer.linkages.errors import AssemblyError
-from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse
+from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, loads_at_point, rigid_body
 from yaseer.linkages.registry import lookup, register
 from yaseer.linkages.virtual_link import cos_sin_degrees, divide_as_printed
 from yaseer.linkages.planar import CrankedLinkage, DrivenCrank, Motion, Rotation, Stretch, driven_crank, fixed_point
@@ -41,9 +41,11 @@ class InvertedSliderCrank(CrankedLinkage):
     pivot: Motion
     moving: bool
 
+    FRAMES = {"crank": (None, "crank", False), "follower": ("pivot", "follower", False)}
+
     def follower_point(self, distance, offset_deg) -> Motion:
         """A point of the follower: ``distance`` from Bo, ``offset_deg`` from Bo->A."""
-        return self.link_point(self.pivot, "follower", distance, offset_deg)
+        return self.body_point("follower", distance, offset_deg)
 
     def forces(
         self,
@@ -66,12 +68,8 @@ class InvertedSliderCrank(CrankedLinkage):
         ``follower_on_block_couple`` (couple about A); ``ground_on_follower`` at Bo.
         """
         loads = loads or {}
-        bodies = [
-            Body("crank", crank.mass, crank.inertia, self.crank_point(crank.distance, crank.offset_deg), self.crank.alpha),
-            Body("block", block_mass, block_inertia, self.pin_a, self.follower.alpha),
-            Body("follower", follower.mass, follower.inertia,
-                 self.follower_point(follower.distance, follower.offset_deg), self.follower.alpha),
-        ]
+        bodies = [rigid_body(self, "crank", crank), Body("block", block_mass, block_inertia, self.pin_a, self.follower.alpha),
+                  rigid_body(self, "follower", follower)]
         joints = [
             Joint("ground_on_crank", None, "crank", "pin", point=0j),
             Joint("crank_on_block", "crank", "block", "pin", point=self.pin_a.pos),
@@ -80,12 +78,8 @@ class InvertedSliderCrank(CrankedLinkage):
             Joint("follower_on_block_couple", "follower", "block", "couple"),
             Joint("ground_on_follower", None, "follower", "pin", point=self.pivot.pos),
         ]
-        distance, offset = follower_point
-        catalogue = {
-            "crank_torque": Load("crank"),
-            "follower_perpendicular": Load("follower", self.load_direction("follower", distance, offset),
-                                           self.follower_point(distance, offset).pos),
-        }
+        catalogue = {"crank_torque": Load("crank"),
+                     "follower_perpendicular": loads_at_point(self, "follower", follower_point)["follower_perpendicular"]}
         return analyse(bodies, joints, catalogue, loads, unknown, gravity)
 
 

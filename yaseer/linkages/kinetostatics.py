@@ -342,6 +342,22 @@ class MassProps:
     offset_deg: np.ndarray | float = 0.0
 
 
+def rigid_body(linkage, body: str, props: MassProps) -> Body:
+    """The moving ``body`` of a kinematics result ``linkage`` (a CrankedLinkage; body a
+    key of its FRAMES) with the mass, inertia and mass centre given by ``props``."""
+    _, link, _ = linkage.FRAMES[body]
+    centre = linkage.body_point(body, props.distance, props.offset_deg)
+    return Body(body, props.mass, props.inertia, centre, getattr(linkage, link).alpha)
+
+
+def loads_at_point(linkage, body: str, point_of_interest) -> dict[str, Load]:
+    """The contract's three point loads (:func:`point_loads`) at the point of interest
+    (distance, offset_deg) of ``body`` of the kinematics result ``linkage``."""
+    distance, offset = point_of_interest
+    return point_loads(body, linkage.body_position(body, distance, offset),
+                       linkage.load_direction(body, distance, offset))
+
+
 @dataclass(frozen=True)
 class ForceResult:
     """A solved force analysis: the name and value of the unknown load, and the

@@ -9,7 +9,7 @@ are rad/s and rad/s**2, counter-clockwise positive.
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import ClassVar, NamedTuple
 
 import numpy as np
 
@@ -120,6 +120,12 @@ def fixed_point(position: np.ndarray | complex) -> Motion:
     return Motion(pos, zero, zero)
 
 
+def arm(distance, offset_deg, direction) -> np.ndarray:
+    """The vector ``distance`` long at ``offset_deg`` degrees counter-clockwise from
+    the unit vector ``direction``."""
+    return np.asarray(distance, dtype=float) * direction * unit(np.radians(offset_deg))
+
+
 def rigid_point(origin: Motion, link: Rotation, distance, offset_deg, direction=None) -> Motion:
     """A point of a rigid link, ``distance`` from ``origin`` (a point of the link) at
     ``offset_deg`` degrees counter-clockwise from the link's reference line, whose
@@ -128,9 +134,7 @@ def rigid_point(origin: Motion, link: Rotation, distance, offset_deg, direction=
 
     v = v_origin + omega k x r and a = a_origin + alpha k x r - omega**2 r, r = origin->point.
     """
-    if direction is None:
-        direction = unit(link.angle)
-    r = np.asarray(distance, dtype=float) * direction * unit(np.radians(offset_deg))
+    r = arm(distance, offset_deg, unit(link.angle) if direction is None else direction)
     pos = origin.pos + r
     vel = origin.vel + 1j * link.omega * r
     acc = origin.acc + (1j * link.alpha - link.omega**2) * r
@@ -201,10 +205,16 @@ def driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate,
 
 class CrankedLinkage:
     """Mixin of the linkages' kinematics results (frozen dataclasses), whose ``crank``
-    (a :class:`Rotation`) turns about the origin Ao; their other links are further
-    :class:`Rotation` attributes, named in the methods below."""
+    (a :class:`Rotation`) turns about the origin Ao.
+
+    ``FRAMES`` names, for each moving body, how its points are given: (the attribute
+    holding the Motion of the joint they are measured from, None for Ao; the
+    attribute holding the body's Rotation; True where the reference line runs from
+    that joint the other way, inclination + 180 deg, as for the rod B->A).
+    """
 
     crank: Rotation
+    FRAMES: ClassVar[dict[str, tuple[str | None, str, bool]]] = {"crank": (None, "crank", False)}
 
     def unit_vector(self, link: str, reverse: bool = False) -> np.ndarray:
         """u(inclination) of the link named ``link`` (``-u`` with ``reverse``: its line
@@ -214,17 +224,25 @@ class CrankedLinkage:
             kept[link] = unit(getattr(self, link).angle)
         return -kept[link] if reverse else kept[link]
 
-    def link_point(self, origin: Motion, link: str, distance, offset_deg, reverse: bool = False) -> Motion:
-        """A point of the link named ``link``: ``distance`` from ``origin`` (a point of
-        it), ``offset_deg`` counter-clockwise from its line (from the other end with
-        ``reverse``: inclination + 180 deg, the same rates)."""
-        return rigid_point(origin, getattr(self, link), distance, offset_deg, self.unit_vector(link, reverse))
+    def body_point(self, body: str, distance, offset_deg) -> Motion:
+        """The motion of a point of ``body`` (a key of ``FRAMES``): ``distance`` from its
+        reference joint, ``offset_deg`` counter-clockwise from its reference line."""
+        origin, link, reverse = self.FRAMES[body]
+        start = fixed_point(0j) if origin is None else getattr(self, origin)
+        return rigid_point(start, getattr(self, link), distance, offset_deg, self.unit_vector(link, reverse))
 
-    def load_direction(self, link: str, distance, offset_deg, reverse: bool = False) -> np.ndarray:
+    def body_position(self, body: str, distance, offset_deg) -> np.ndarray:
+        """The position alone of :meth:`body_point` (no rates computed)."""
+        origin, link, reverse = self.FRAMES[body]
+        start = 0j if origin is None else getattr(self, origin).pos
+        return start + arm(distance, offset_deg, self.unit_vector(link, reverse))
+
+    def load_direction(self, body: str, distance, offset_deg) -> np.ndarray:
         """The direction of the perpendicular point load at (``distance``, ``offset_deg``)
-        of the link named ``link`` (:func:`perpendicular_direction`)."""
+        of ``body`` (:func:`perpendicular_direction`)."""
+        _, link, reverse = self.FRAMES[body]
         return perpendicular_direction(self.unit_vector(link, reverse), offset_deg, distance)
 
     def crank_point(self, distance, offset_deg) -> Motion:
         """A point of the crank: ``distance`` from Ao, ``offset_deg`` from Ao->A."""
-        return self.link_point(fixed_point(0j), "crank", distance, offset_deg)
+        return self.body_point("crank", distance, offset_deg)

@@ -17,11 +17,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from yaseer.linkages.errors import AssemblyError
-from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, point_loads
+from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, loads_at_point, rigid_body
 from yaseer.linkages.registry import lookup, register
-from yaseer.linkages.planar import CrankedLinkage, Motion, Rotation, Stretch, driven_crank, dot, fixed_point
-from yaseer.linkages.planar import solve_two_directions, still, unit
-from yaseer.linkages.planar import unit_degrees
+from yaseer.linkages.planar import CrankedLinkage, Motion, Rotation, Stretch, driven_crank, dot
+from yaseer.linkages.planar import solve_two_directions, still, unit, unit_degrees
 
 # Loads of Program 1, by name (contract element in brackets):
 # crank_fx, crank_fy [F(0), F(1)] force components on the crank at its point;
@@ -53,9 +52,11 @@ class SliderCrank(CrankedLinkage):
     axis: np.ndarray
     moving: bool
 
+    FRAMES = {"crank": (None, "crank", False), "rod": ("pin_b", "rod", True)}
+
     def rod_point(self, distance, offset_deg) -> Motion:
         """A point of the rod: ``distance`` from the piston pin B, ``offset_deg`` from B->A."""
-        return self.link_point(self.pin_b, "rod", distance, offset_deg, reverse=True)
+        return self.body_point("rod", distance, offset_deg)
 
     def forces(
         self,
@@ -77,13 +78,8 @@ class SliderCrank(CrankedLinkage):
         ``rod_on_piston`` at B (complex), ``wall_on_piston`` along u(phi + 90 deg).
         """
         loads = loads or {}
-        crank_g = self.crank_point(crank.distance, crank.offset_deg)
-        rod_g = self.rod_point(rod.distance, rod.offset_deg)
-        bodies = [
-            Body("crank", crank.mass, crank.inertia, crank_g, self.crank.alpha),
-            Body("rod", rod.mass, rod.inertia, rod_g, self.rod.alpha),
-            Body("piston", piston_mass, 0.0, self.pin_b, 0.0, particle=True),
-        ]
+        bodies = [rigid_body(self, "crank", crank), rigid_body(self, "rod", rod),
+                  Body("piston", piston_mass, 0.0, self.pin_b, 0.0, particle=True)]
         axis = unit(self.axis)
         joints = [
             Joint("ground_on_crank", None, "crank", "pin", point=0j),
@@ -91,14 +87,8 @@ class SliderCrank(CrankedLinkage):
             Joint("rod_on_piston", "rod", "piston", "pin", point=self.pin_b.pos),
             Joint("wall_on_piston", None, "piston", "slide", point=self.pin_b.pos, direction=1j * axis),
         ]
-        crank_p = self.crank_point(*crank_point).pos
-        rod_p = self.rod_point(*rod_point).pos
-        catalogue = {
-            **point_loads("crank", crank_p, self.load_direction("crank", *crank_point)),
-            "crank_torque": Load("crank"),
-            **point_loads("rod", rod_p, self.load_direction("rod", *rod_point, reverse=True)),
-            "piston": Load("piston", -axis, self.pin_b.pos),
-        }
+        catalogue = {**loads_at_point(self, "crank", crank_point), "crank_torque": Load("crank"),
+                     **loads_at_point(self, "rod", rod_point), "piston": Load("piston", -axis, self.pin_b.pos)}
         return analyse(bodies, joints, catalogue, loads, unknown, gravity)
 
 
