@@ -25,6 +25,7 @@ def flatten(lines: list) -> list:
 
 
 def _jump_targets(stmt) -> list:
+    """The line numbers a statement (or its IF branches) may jump to."""
     if isinstance(stmt, (ast.Goto, ast.Gosub)):
         return [stmt.target]
     if isinstance(stmt, ast.OnJump):
@@ -148,6 +149,7 @@ def _close(open_loops: list, var):
 
 
 def plan(flat: list, entry_lines=()) -> Plan:
+    """Decide the blocks of an area (see :class:`Plan`)."""
     n = len(flat)
     statements = [s for _, s in flat]
     fine = any(isinstance(s, ast.Resume) and s.mode != "line"

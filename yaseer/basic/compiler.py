@@ -396,6 +396,7 @@ class AreaCompiler:
             block.code.insert(mark, (self.indent, "#FLUSH#"))
 
     def assign(self, target, value_code: str, value_kind: str, scope, check: bool) -> None:
+        """Store ``value_code`` in a variable or element; ``check`` adds the Overflow test."""
         if ast.expr_type(target) != value_kind:
             raise _type_mismatch()
         if isinstance(target, ast.Var):
@@ -422,6 +423,7 @@ class AreaCompiler:
         pass
 
     def print_items(self, items, scope) -> tuple[list, bool]:
+        """The Python parts of PRINT items (values, _COMMA, _Tab, _Spc) and whether a newline ends it."""
         parts = []
         for item in items:
             if item == ",":
@@ -687,9 +689,8 @@ class AreaCompiler:
             self.emit(f"while {test}:")
             return n, var, step_value, mode
         body = self.entry_block.get(self.index + 1) if self.depth == 0 else None
-        if self.depth == 0:
-            skip_index = self.plan.for_next.get(self.index)
-        else:
+        skip_index = self.plan.for_next.get(self.index) if self.depth == 0 else None
+        if skip_index is None:
             skip_index = self.plan.branch_for_next.get(id(stmt))
         block, indent = self.cur, self.indent
         self.emit(f"if _v{n} <= _l{n} if _s{n} >= 0.0 else _v{n} >= _l{n}:")
@@ -858,6 +859,7 @@ class AreaCompiler:
 
     # -- the whole area
     def compile(self) -> CompiledArea:
+        """Generate every block of the area (DATA and DEF FN collected first)."""
         for i, (number, stmt) in enumerate(self.flat):
             for s in ([] if isinstance(stmt, BasicError) else walk_statements(stmt)):
                 if isinstance(s, ast.Data):

@@ -289,6 +289,7 @@ class Machine:
         return compiled
 
     def _compile(self, area, program: dict, direct: bool = False, entry_lines=()) -> CompiledArea:
+        """Parse, compile and exec one area's program (line -> text); returns the CompiledArea."""
         lines = [_parse_cached(number, text) for number, text in sorted(program.items())]
         compiled = compile_area(lines, area if isinstance(area, int) else 0, direct=direct,
                                 entry_lines=entry_lines)
@@ -324,6 +325,7 @@ class Machine:
                 f"    raise _err('Out of memory', {OUT_OF_MEMORY})\n")
 
     def _namespace(self, area, rt: _AreaRuntime) -> dict:
+        """The globals the generated code of ``area`` runs with: the machine's state and helpers."""
         ns = {
             "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range, "type": type, "int": int,
                              "BaseException": BaseException},
@@ -431,11 +433,13 @@ class Machine:
         raise BasicError("Out of memory", OUT_OF_MEMORY)
 
     def gosub(self, return_block: int) -> None:
+        """GOSUB: remember the block to come back to (the generated code inlines this)."""
         if len(self.stack) >= MAX_STACK:
             raise BasicError("Out of memory", OUT_OF_MEMORY)
         self.stack.append(return_block)
 
     def gosub_return(self) -> int:
+        """RETURN: the block to go back to (-2 ends a BASIC area); FOR loops opened since the GOSUB close."""
         stack = self.stack
         while stack:
             top = stack[-1]
@@ -447,6 +451,7 @@ class Machine:
         raise BasicError("RETURN without GOSUB", RETURN_WITHOUT_GOSUB)
 
     def for_push(self, key: str, limit: float, step: float, body: int) -> None:
+        """FOR (through the stack): open a loop over ``key`` whose body starts at block ``body``."""
         stack = self.stack
         for k in range(len(stack) - 1, -1, -1):
             frame = stack[k]
@@ -460,6 +465,7 @@ class Machine:
         stack.append(ForFrame(key, limit, step, body))
 
     def next_frame(self, key: str) -> ForFrame:
+        """NEXT ``key``: its loop's frame, closing the loops opened inside it."""
         stack = self.stack
         while stack:
             top = stack[-1]
@@ -491,6 +497,7 @@ class Machine:
         return k if k <= count else 0
 
     def user_function(self, name: str, nargs: int):
+        """FN ``name``: the compiled function DEF FN made, called with ``nargs`` arguments."""
         entry = self.fns.get(name)
         if entry is None:
             raise BasicError("Undefined user function", UNDEFINED_USER_FUNCTION)
@@ -517,6 +524,7 @@ class Machine:
             hook(self, n)
 
     def _call_basic_area(self, n: int) -> None:
+        """Run BASIC program area ``n`` until its RETURN (its own line numbers, shared variables)."""
         if n not in self.programs:
             raise BasicError(f"Undefined program area {n}", UNDEFINED_PROGRAM_AREA)
         if self.area_depth >= MAX_AREA_DEPTH:
@@ -533,6 +541,7 @@ class Machine:
 
     # ------------------------------------------------------------ errors
     def resume(self, next_statement: bool) -> int:
+        """RESUME / RESUME NEXT: the block of the failed statement, or of the one after it."""
         if not self.in_handler:
             raise BasicError("RESUME without error", RESUME_WITHOUT_ERROR)
         area, block = self.error_point
@@ -543,6 +552,7 @@ class Machine:
         return block
 
     def resume_at(self, block: int) -> int:
+        """RESUME n: leave the error handler and go to ``block``."""
         if not self.in_handler:
             raise BasicError("RESUME without error", RESUME_WITHOUT_ERROR)
         self.in_handler = False
