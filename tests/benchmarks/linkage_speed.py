@@ -1,12 +1,14 @@
 """Benchmark: a 3,601-position cycle of each library program, scalar loop vs one array call.
 
-Run:  python tests/benchmarks/linkage_speed.py [--positions N] [--repeat R]
+Run:  PYTHONPATH=. python tests/benchmarks/linkage_speed.py [--positions N] [--repeat R] [--warmup W]
 
 For Programs 1, 2, 3 each position gets positions, velocities, accelerations
 (flexible crank) and the force analysis (masses, inertias, gravity, known loads,
 crank torque unknown); Program 5 gets its full output.  Prints microseconds per
-position for a Python loop of scalar calls and for one vectorised call, and
-their ratio, all measured in this run (best of R repeats).  Anchor: pylinkage
+position for a Python loop of scalar calls and for one vectorised call (the
+first call of each case, made in turn before the allocator settles, and the best of R after W untimed
+ones once the allocator has settled: see settle_allocator), and their ratio,
+all measured in this run.  Anchor: pylinkage
 1.3 with numba needs about 0.6 us per four-bar position for
 position + velocity + acceleration, without forces.
 """
@@ -82,20 +84,36 @@ def best_time(function, repeat):
     return best
 
 
+def settle_allocator() -> None:
+    """Allocate and free one 16 MB array.  glibc's malloc then keeps arrays of a few
+    hundred kB on its heap instead of mapping and unmapping pages for each (its
+    dynamic mmap and trim thresholds rise with the largest block freed), as it does
+    in any process that has done sizeable numpy work: without it, a cycle of
+    3,601 positions spends up to half its time in page faults."""
+    np.ones(2**21).sum()
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--positions", type=int, default=3601)
-    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--repeat", type=int, default=30)
+    parser.add_argument("--warmup", type=int, default=20, help="untimed array calls before the best-of timing")
     args = parser.parse_args(argv)
     angles = np.linspace(0.0, 360.0, args.positions)
     scalar_angles = [float(angle) for angle in angles]
-    print(f"{args.positions} positions, best of {args.repeat}")
-    print(f"{'case':52s} {'loop us/pos':>12s} {'array us/pos':>13s} {'ratio':>8s}")
+    first_calls = {name: best_time(lambda: case(angles), 1) for name, case in CASES.items()}
+    settle_allocator()
+    print(f"{args.positions} positions; loop: best of 2; array: the first call of each case before the allocator settles, then the best "
+          f"of {args.repeat} after {args.warmup} untimed calls; ratio = loop / best array")
+    print(f"{'case':52s} {'loop us/pos':>12s} {'first us/pos':>13s} {'array us/pos':>13s} {'ratio':>8s}")
     for name, case in CASES.items():
-        loop = best_time(lambda: [case(angle) for angle in scalar_angles], max(1, args.repeat // 2))
+        loop = best_time(lambda: [case(angle) for angle in scalar_angles], 2)
+        first = first_calls[name]
+        for _ in range(args.warmup):
+            case(angles)
         array = best_time(lambda: case(angles), args.repeat)
-        per_loop, per_array = 1e6 * loop / args.positions, 1e6 * array / args.positions
-        print(f"{name:52s} {per_loop:12.1f} {per_array:13.3f} {loop / array:8.0f}")
+        per_loop, per_first, per_array = (1e6 * t / args.positions for t in (loop, first, array))
+        print(f"{name:52s} {per_loop:12.1f} {per_first:13.3f} {per_array:13.3f} {loop / array:8.0f}")
     return 0
 
 

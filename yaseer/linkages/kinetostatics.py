@@ -17,6 +17,7 @@ receives +value, the upstream body -value.  Forces are complex numbers
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 
 import numpy as np
@@ -81,7 +82,8 @@ class Joint:
 
 
 class _Plan:
-    """How the d'Alembert system of a linkage is reduced, from its structure alone.
+    """How the d'Alembert system of a linkage is reduced, from its structure alone
+    (names only, so one plan serves every call on the same linkage: see :func:`_plan`).
 
     Every pin reaction enters the force equations of the bodies it joins with a
     coefficient of exactly +1 or -1, so it can be eliminated exactly: peeling the
@@ -91,44 +93,54 @@ class _Plan:
     ``reduced`` unknowns (slides, couples, pins left over, the unknown load) are then
     fixed by the moment equations (and the force equations of bodies without a
     matched pin): a k x k system, k <= 3 for Programs 1-3.
+
+    ``bodies``: (name, particle) each; ``joints``: (name, upstream, downstream, kind)
+    each; ``unknown``: (key, is a couple) of the unknown load.
     """
 
-    def __init__(self, bodies: list[Body], joints: list[Joint], unknown_load: Load):
-        pins = [joint for joint in joints if joint.kind == "pin"]
-        touching = {body.name: [pin for pin in pins if body.name in (pin.upstream, pin.downstream)] for body in bodies}
-        open_pins = {id(pin) for pin in pins}
-        self.matched: dict[str, Joint] = {}  # body name -> the pin its force balance gives
-        self.order: list[Body] = []
-        waiting = list(bodies)
+    def __init__(self, bodies: tuple, joints: tuple, unknown: tuple[str, bool]):
+        pins = [name for name, _, _, kind in joints if kind == "pin"]
+        touching = {body: [name for name, up, down, kind in joints if kind == "pin" and body in (up, down)]
+                    for body, _ in bodies}
+        open_pins = set(pins)
+        self.pins = set(pins)
+        self.matched: dict[str, str] = {}  # body name -> the pin its force balance gives
+        self.order: list[str] = []
+        waiting = [body for body, _ in bodies]
         while waiting:
-            still_open = {body.name: [pin for pin in touching[body.name] if id(pin) in open_pins] for body in waiting}
-            single = [body for body in waiting if len(still_open[body.name]) <= 1]
+            still_open = {body: [pin for pin in touching[body] if pin in open_pins] for body in waiting}
+            single = [body for body in waiting if len(still_open[body]) <= 1]
             if not single:
-                open_pins.discard(id([pin for pin in pins if id(pin) in open_pins][-1]))  # stays unknown
+                open_pins.discard([pin for pin in pins if pin in open_pins][-1])  # stays unknown
                 continue
             body = single[0]
             waiting.remove(body)
             self.order.append(body)
-            if still_open[body.name]:
-                self.matched[body.name] = still_open[body.name][0]
-                open_pins.discard(id(still_open[body.name][0]))
-        matched = {id(pin) for pin in self.matched.values()}
-        self.index: dict[int, int] = {}  # first column of each reduced unknown (a pin: x, then y)
+            if still_open[body]:
+                self.matched[body] = still_open[body][0]
+                open_pins.discard(still_open[body][0])
+        self.index: dict[str, int] = {}  # first column of each reduced unknown (a pin: x, then y)
         self.couples: list[bool] = []  # per column: is the unknown a couple (N m) rather than a force (N)?
-        for item in [joint for joint in joints if id(joint) not in matched] + [unknown_load]:
-            self.index[id(item)] = len(self.couples)
-            pin = isinstance(item, Joint) and item.kind == "pin"
-            couple = item.kind == "couple" if isinstance(item, Joint) else item.direction is None
-            self.couples += [False, False] if pin else [couple]
-        size = self.size = len(self.couples)
-        equations = sum(0 if body.particle else 1 for body in bodies)
-        equations += sum(2 for body in bodies if body.name not in self.matched)
-        if equations != size:
-            raise ValueError(f"{size} reduced unknowns for {equations} equations")
+        reduced = [(name, kind) for name, _, _, kind in joints if name not in self.matched.values()]
+        for key, kind in reduced + [(unknown[0], "couple" if unknown[1] else "force")]:
+            self.index[key] = len(self.couples)
+            self.couples += [False, False] if kind == "pin" else [kind == "couple"]
+        self.size = len(self.couples)
+        equations = sum(0 if particle else 1 for _, particle in bodies)
+        equations += sum(2 for body, _ in bodies if body not in self.matched)
+        if equations != self.size:
+            raise ValueError(f"{self.size} reduced unknowns for {equations} equations")
 
 
-def _actions(bodies: list[Body], joints: list[Joint], unknown_load: Load) -> dict[str, list[tuple]]:
-    """The unknowns acting on each body: (joint or load, sign, force direction, point).
+@functools.lru_cache(maxsize=64)
+def _plan(bodies: tuple, joints: tuple, unknown: tuple[str, bool]) -> _Plan:
+    """The (cached) :class:`_Plan` of a structure."""
+    return _Plan(bodies, joints, unknown)
+
+
+def _actions(bodies: list[Body], joints: list[Joint], unknown_key: str, unknown_load: Load) -> dict[str, list[tuple]]:
+    """The unknowns acting on each body: (key, sign, force direction, point), the key
+    a joint's name or ``unknown_key`` for the unknown load.
 
     A pin's direction is 1 (its form is already x + i y); a couple has direction and
     point None.  The downstream body of a joint receives +value, the upstream -value.
@@ -137,10 +149,10 @@ def _actions(bodies: list[Body], joints: list[Joint], unknown_load: Load) -> dic
     for joint in joints:
         direction = {"pin": 1.0, "slide": joint.direction, "couple": None}[joint.kind]
         point = None if joint.kind == "couple" else joint.point
-        actions[joint.downstream].append((joint, 1.0, direction, point))
+        actions[joint.downstream].append((joint.name, 1.0, direction, point))
         if joint.upstream is not None:
-            actions[joint.upstream].append((joint, -1.0, direction, point))
-    actions[unknown_load.body].append((unknown_load, 1.0, unknown_load.direction, unknown_load.point))
+            actions[joint.upstream].append((joint.name, -1.0, direction, point))
+    actions[unknown_load.body].append((unknown_key, 1.0, unknown_load.direction, unknown_load.point))
     return actions
 
 
@@ -182,7 +194,18 @@ def _combined(*terms: tuple[float, dict]) -> dict:
 
 def _moment_of(arm, form: dict) -> dict:
     """The moment form of a force form acting at ``arm`` from the mass centre."""
-    return {key: cross(arm, np.asarray(value)) for key, value in form.items()}
+    return {key: _cross_with(arm, value) for key, value in form.items()}
+
+
+def _cross_with(arm, value):
+    """cross(arm, value), with one product fewer when ``value`` is a plain number on
+    an axis (a pin's x or y coefficient, +-1 or +-1j)."""
+    if isinstance(value, (float, complex)):
+        if value.imag == 0:
+            return -arm.imag * value.real
+        if value.real == 0:
+            return arm.real * value.imag
+    return cross(arm, np.asarray(value))
 
 
 def solve_kinetostatics(
@@ -208,48 +231,53 @@ def solve_kinetostatics(
     """
     if unknown not in loads:
         raise UnknownLoadError(f"unknown load {unknown!r} (known: {', '.join(loads)})")
-    plan = _Plan(bodies, joints, loads[unknown])
+    unknown_key = "load " + unknown  # joint names and load names may not clash
+    plan = _plan(tuple((body.name, body.particle) for body in bodies),
+                 tuple((joint.name, joint.upstream, joint.downstream, joint.kind) for joint in joints),
+                 (unknown_key, loads[unknown].direction is None))
     force_target, moment_target = _targets(bodies, loads, values, unknown, gravity)
-    actions = _actions(bodies, joints, loads[unknown])
-    pin_forms: dict[int, dict] = {}
+    actions = _actions(bodies, joints, unknown_key, loads[unknown])
+    pin_forms: dict[str, dict] = {}
 
-    def form(item, direction) -> dict:
-        """The form of the action of ``item`` (a joint or the unknown load), sign +."""
-        if id(item) in pin_forms:
-            return pin_forms[id(item)]
-        column = plan.index[id(item)]
-        if isinstance(item, Joint) and item.kind == "pin":
+    def form(key, direction) -> dict:
+        """The form of the action of ``key`` (a joint or the unknown load), sign +."""
+        if key in pin_forms:
+            return pin_forms[key]
+        column = plan.index[key]
+        if key in plan.pins:
             return {column: 1.0, column + 1: 1j}
         return {column: 1.0 if direction is None else direction}
 
-    for body in plan.order:  # each matched pin from its body's force balance
-        pin = plan.matched.get(body.name)
+    by_name = {body.name: body for body in bodies}
+    for name in plan.order:  # each matched pin from its body's force balance
+        pin = plan.matched.get(name)
         if pin is not None:
-            others = [(-sign, form(item, d)) for item, sign, d, point in actions[body.name]
-                      if item is not pin and point is not None]
-            sign = 1.0 if pin.downstream == body.name else -1.0
-            pin_forms[id(pin)] = _combined(*((sign * f, terms) for f, terms in others),
-                                           (sign, {CONSTANT: force_target[body.name]}))
-    rows, right = [], []
+            others = [(-sign, form(key, d)) for key, sign, d, point in actions[name] if key != pin and point is not None]
+            sign = 1.0 if next(j for j in joints if j.name == pin).downstream == name else -1.0
+            pin_forms[pin] = _combined(*((sign * f, terms) for f, terms in others), (sign, {CONSTANT: force_target[name]}))
+    matrix_rows, right = [], []
     for body in bodies:
         if body.name not in plan.matched:
-            total = _combined(*((sign, form(item, d)) for item, sign, d, point in actions[body.name]
-                                if point is not None))
+            total = _combined(*((sign, form(key, d)) for key, sign, d, point in actions[body.name] if point is not None))
             remainder = force_target[body.name] - total.get(CONSTANT, 0.0)
-            rows += [[np.real(total.get(j, 0.0)) for j in range(plan.size)],
-                     [np.imag(total.get(j, 0.0)) for j in range(plan.size)]]
+            matrix_rows += [[np.real(total.get(j, 0.0)) for j in range(plan.size)],
+                            [np.imag(total.get(j, 0.0)) for j in range(plan.size)]]
             right += [np.real(remainder), np.imag(remainder)]
         if not body.particle:
-            centre = body.centre.pos
-            total = _combined(*((sign, form(item, d) if point is None else
-                                 _moment_of(np.asarray(point) - centre, form(item, d)))
-                                for item, sign, d, point in actions[body.name]))
-            rows.append([np.real(total.get(j, 0.0)) for j in range(plan.size)])
+            centre = by_name[body.name].centre.pos
+            total = _combined(*((sign, form(key, d) if point is None else
+                                 _moment_of(np.asarray(point) - centre, form(key, d)))
+                                for key, sign, d, point in actions[body.name]))
+            matrix_rows.append([np.real(total.get(j, 0.0)) for j in range(plan.size)])
             right.append(moment_target[body.name] - total.get(CONSTANT, 0.0))
-    matrix = np.array([[np.broadcast_to(entry, shape) for entry in row] for row in rows], dtype=float)
-    solution = _solve_reduced(matrix, np.array([np.broadcast_to(entry, shape) for entry in right], dtype=float),
-                              plan.couples)
-    return _reactions(plan, joints, pin_forms, solution), solution[plan.index[id(loads[unknown])]]
+    matrix = np.empty((plan.size, plan.size) + shape)
+    rhs = np.empty((plan.size,) + shape)
+    for i, row in enumerate(matrix_rows):
+        rhs[i] = right[i]
+        for j, entry in enumerate(row):
+            matrix[i, j] = entry
+    solution = _solve_reduced(matrix, rhs, plan.couples)
+    return _reactions(plan, joints, pin_forms, solution), solution[plan.index[unknown_key]]
 
 
 def _solve_reduced(matrix: np.ndarray, rhs: np.ndarray, couples: list[bool]) -> np.ndarray:
@@ -281,7 +309,7 @@ def _solve_reduced(matrix: np.ndarray, rhs: np.ndarray, couples: list[bool]) -> 
     row_scale = np.max(np.abs(scaled), axis=1)
     row_scale[row_scale == 0] = 1.0
     scaled /= row_scale[:, None]
-    rows = [[scaled[i, j] for j in range(size)] for i in range(size)]
+    rows = scaled.tolist() if scaled.ndim == 2 else [list(row) for row in scaled]  # one position: Python floats
     cofactors = [[_cofactor(rows, i, j) for j in range(size)] for i in range(size)]
     determinant = sum(rows[0][j] * cofactors[0][j] for j in range(size))
     if not np.all(np.abs(determinant) > SINGULAR_TOLERANCE):
@@ -290,7 +318,7 @@ def _solve_reduced(matrix: np.ndarray, rhs: np.ndarray, couples: list[bool]) -> 
     def adjugate_solve(right):
         return [sum(cofactors[i][j] * right[i] for i in range(size)) / determinant for j in range(size)]
 
-    right = rhs / row_scale
+    right = (rhs / row_scale).tolist() if rhs.ndim == 1 else list(rhs / row_scale)
     solution = adjugate_solve(right)
     residual = [right[i] - sum(rows[i][j] * solution[j] for j in range(size)) for i in range(size)]
     solution = np.array([x + dx for x, dx in zip(solution, adjugate_solve(residual))]) / column_scale
@@ -310,6 +338,8 @@ def _determinant(rows: list[list]):
     along the first row: k! products, meant for k <= 3)."""
     if len(rows) == 1:
         return rows[0][0]
+    if len(rows) == 2:
+        return rows[0][0] * rows[1][1] - rows[0][1] * rows[1][0]
     return sum(rows[0][j] * _cofactor(rows, 0, j) for j in range(len(rows)))
 
 
@@ -318,15 +348,15 @@ def _reactions(plan: _Plan, joints: list[Joint], pin_forms: dict, solution: np.n
     solution, eliminated pins evaluated from their forms."""
     reactions = {}
     for joint in joints:
-        if id(joint) in pin_forms:
-            terms = pin_forms[id(joint)]
+        if joint.name in pin_forms:
+            terms = pin_forms[joint.name]
             reactions[joint.name] = sum((value * (1.0 if key == CONSTANT else solution[key])
                                          for key, value in terms.items()), np.zeros(solution.shape[1:], complex))
         elif joint.kind == "pin":
-            column = plan.index[id(joint)]
+            column = plan.index[joint.name]
             reactions[joint.name] = solution[column] + 1j * solution[column + 1]
         else:
-            reactions[joint.name] = solution[plan.index[id(joint)]]
+            reactions[joint.name] = solution[plan.index[joint.name]]
     return reactions
 
 
@@ -369,8 +399,9 @@ class ForceResult:
 
 
 def analysis_shape(*arrays) -> tuple[int, ...]:
-    """The broadcast shape of every array taking part in a force analysis."""
-    return np.broadcast_shapes(*(np.shape(array) for array in arrays))
+    """The broadcast shape of every array taking part in a force analysis (numbers,
+    numpy scalars and 0-d arrays are shape ())."""
+    return np.broadcast_shapes(*(array.shape for array in arrays if isinstance(array, np.ndarray)))
 
 
 def analyse(bodies: list[Body], joints: list[Joint], loads: dict[str, Load], values: dict, unknown: str,
