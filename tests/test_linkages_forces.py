@@ -435,3 +435,14 @@ def test_the_listing_gets_the_contracts_singular_force_error_when_nothing_needs_
     captured = capsys.readouterr()
     assert status == 1 and captured.out == ""
     assert captured.err.strip() == "Force system is singular (PROG 1) in 20"
+
+
+@pytest.mark.parametrize("scale", [1e-6, 1.0, 1e6])
+def test_crank_torque_unknown_is_regular_in_any_unit_of_length(scale):
+    # A couple unknown next to force unknowns: the singularity test must not depend
+    # on the unit of length.  Static balance by virtual work: U = P ds/dtheta.
+    a, b, theta, piston = 0.1 * scale, 0.3 * scale, 30.0, 5.0
+    result = slider_crank(0.0, a, b, theta).forces(unknown="crank_torque", loads=dict(piston=piston))
+    sin, cos = np.sin(np.radians(theta)), np.cos(np.radians(theta))
+    ds_dtheta = -a * sin - a**2 * sin * cos / np.sqrt(b**2 - a**2 * sin**2)
+    assert result.value == pytest.approx(piston * ds_dtheta, rel=1e-12)
