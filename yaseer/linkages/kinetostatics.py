@@ -25,9 +25,10 @@ import numpy as np
 from yaseer.linkages.errors import SingularForceError, UnknownLoadError
 from yaseer.linkages.planar import Motion, cross
 
-# Singularity test: with every column and then every row of the reduced system
-# scaled to a largest entry of 1, a determinant at most this small means the
-# matrix is singular or nearly so (its condition number is then about 1e9 or more).
+# Singularity test: with the couple columns of the reduced system multiplied by
+# the largest moment arm and then every row scaled to a largest entry of 1, a
+# determinant at most this small means the matrix is singular or nearly so (its
+# condition number is then about 1e9 or more), whatever the loads.
 SINGULAR_TOLERANCE = 1e-9
 
 
@@ -99,26 +100,10 @@ class _Plan:
     """
 
     def __init__(self, bodies: tuple, joints: tuple, unknown: tuple[str, bool]):
-        pins = [name for name, _, _, kind in joints if kind == "pin"]
-        touching = {body: [name for name, up, down, kind in joints if kind == "pin" and body in (up, down)]
-                    for body, _ in bodies}
-        open_pins = set(pins)
-        self.pins = set(pins)
-        self.matched: dict[str, str] = {}  # body name -> the pin its force balance gives
-        self.order: list[str] = []
-        waiting = [body for body, _ in bodies]
-        while waiting:
-            still_open = {body: [pin for pin in touching[body] if pin in open_pins] for body in waiting}
-            single = [body for body in waiting if len(still_open[body]) <= 1]
-            if not single:
-                open_pins.discard([pin for pin in pins if pin in open_pins][-1])  # stays unknown
-                continue
-            body = single[0]
-            waiting.remove(body)
-            self.order.append(body)
-            if still_open[body]:
-                self.matched[body] = still_open[body][0]
-                open_pins.discard(still_open[body][0])
+        self.pins = {name for name, _, _, kind in joints if kind == "pin"}
+        self.order, self.matched = _peel([body for body, _ in bodies], joints)  # matched: body -> pin
+        downstream = {name: down for name, _, down, _ in joints}
+        self.pin_signs = {body: 1.0 if downstream[pin] == body else -1.0 for body, pin in self.matched.items()}
         self.index: dict[str, int] = {}  # first column of each reduced unknown (a pin: x, then y)
         self.couples: list[bool] = []  # per column: is the unknown a couple (N m) rather than a force (N)?
         reduced = [(name, kind) for name, _, _, kind in joints if name not in self.matched.values()]
@@ -130,6 +115,29 @@ class _Plan:
         equations += sum(2 for body, _ in bodies if body not in self.matched)
         if equations != self.size:
             raise ValueError(f"{self.size} reduced unknowns for {equations} equations")
+
+
+def _peel(bodies: list[str], joints: tuple) -> tuple[list[str], dict[str, str]]:
+    """The order in which the bodies give their pins, and the pin each gives: the
+    first body with at most one pin still open goes next and takes it; when every
+    waiting body has two or more, the last open pin in joint order is left unknown."""
+    pins = [name for name, _, _, kind in joints if kind == "pin"]
+    touching = {body: [name for name, up, down, kind in joints if kind == "pin" and body in (up, down)]
+                for body in bodies}
+    open_pins, order, matched, waiting = set(pins), [], {}, list(bodies)
+    while waiting:
+        still_open = {body: [pin for pin in touching[body] if pin in open_pins] for body in waiting}
+        single = [body for body in waiting if len(still_open[body]) <= 1]
+        if not single:
+            open_pins.discard([pin for pin in pins if pin in open_pins][-1])
+            continue
+        body = single[0]
+        waiting.remove(body)
+        order.append(body)
+        if still_open[body]:
+            matched[body] = still_open[body][0]
+            open_pins.discard(still_open[body][0])
+    return order, matched
 
 
 @functools.lru_cache(maxsize=64)
@@ -231,53 +239,76 @@ def solve_kinetostatics(
     """
     if unknown not in loads:
         raise UnknownLoadError(f"unknown load {unknown!r} (known: {', '.join(loads)})")
-    unknown_key = "load " + unknown  # joint names and load names may not clash
+    unknown_key = "load " + unknown  # kept apart from a joint of the same name
     plan = _plan(tuple((body.name, body.particle) for body in bodies),
                  tuple((joint.name, joint.upstream, joint.downstream, joint.kind) for joint in joints),
                  (unknown_key, loads[unknown].direction is None))
-    force_target, moment_target = _targets(bodies, loads, values, unknown, gravity)
-    actions = _actions(bodies, joints, unknown_key, loads[unknown])
-    pin_forms: dict[str, dict] = {}
+    reduction = _Reduction(plan, _actions(bodies, joints, unknown_key, loads[unknown]),
+                           *_targets(bodies, loads, values, unknown, gravity))
+    reduction.eliminate_pins()
+    matrix, rhs = reduction.equations(bodies, shape)
+    solution = _solve_reduced(matrix, rhs, plan.couples)
+    return _reactions(plan, joints, reduction.pin_forms, solution), solution[plan.index[unknown_key]]
 
-    def form(key, direction) -> dict:
+
+class _Reduction:
+    """The pin reactions of one call eliminated as forms, and the k x k system left."""
+
+    def __init__(self, plan: _Plan, actions: dict, force_target: dict, moment_target: dict):
+        self.plan, self.actions = plan, actions
+        self.force_target, self.moment_target = force_target, moment_target
+        self.pin_forms: dict[str, dict] = {}  # matched pin name -> its reaction as a form
+
+    def form(self, key: str, direction) -> dict:
         """The form of the action of ``key`` (a joint or the unknown load), sign +."""
-        if key in pin_forms:
-            return pin_forms[key]
-        column = plan.index[key]
-        if key in plan.pins:
+        if key in self.pin_forms:
+            return self.pin_forms[key]
+        column = self.plan.index[key]
+        if key in self.plan.pins:
             return {column: 1.0, column + 1: 1j}
         return {column: 1.0 if direction is None else direction}
 
-    by_name = {body.name: body for body in bodies}
-    for name in plan.order:  # each matched pin from its body's force balance
-        pin = plan.matched.get(name)
-        if pin is not None:
-            others = [(-sign, form(key, d)) for key, sign, d, point in actions[name] if key != pin and point is not None]
-            sign = 1.0 if next(j for j in joints if j.name == pin).downstream == name else -1.0
-            pin_forms[pin] = _combined(*((sign * f, terms) for f, terms in others), (sign, {CONSTANT: force_target[name]}))
-    matrix_rows, right = [], []
-    for body in bodies:
-        if body.name not in plan.matched:
-            total = _combined(*((sign, form(key, d)) for key, sign, d, point in actions[body.name] if point is not None))
-            remainder = force_target[body.name] - total.get(CONSTANT, 0.0)
-            matrix_rows += [[np.real(total.get(j, 0.0)) for j in range(plan.size)],
-                            [np.imag(total.get(j, 0.0)) for j in range(plan.size)]]
-            right += [np.real(remainder), np.imag(remainder)]
-        if not body.particle:
-            centre = by_name[body.name].centre.pos
-            total = _combined(*((sign, form(key, d) if point is None else
-                                 _moment_of(np.asarray(point) - centre, form(key, d)))
-                                for key, sign, d, point in actions[body.name]))
-            matrix_rows.append([np.real(total.get(j, 0.0)) for j in range(plan.size)])
-            right.append(moment_target[body.name] - total.get(CONSTANT, 0.0))
-    matrix = np.empty((plan.size, plan.size) + shape)
-    rhs = np.empty((plan.size,) + shape)
-    for i, row in enumerate(matrix_rows):
-        rhs[i] = right[i]
-        for j, entry in enumerate(row):
-            matrix[i, j] = entry
-    solution = _solve_reduced(matrix, rhs, plan.couples)
-    return _reactions(plan, joints, pin_forms, solution), solution[plan.index[unknown_key]]
+    def eliminate_pins(self) -> None:
+        """Each matched pin from its body's force balance, bodies in the plan's order:
+        sign P + (the other forces) = target, sign +1 on the pin's downstream body."""
+        for body in self.plan.order:
+            pin = self.plan.matched.get(body)
+            if pin is None:
+                continue
+            sign = self.plan.pin_signs[body]
+            others = [(-sign * s, self.form(key, d)) for key, s, d, point in self.actions[body]
+                      if key != pin and point is not None]
+            self.pin_forms[pin] = _combined(*others, (sign, {CONSTANT: self.force_target[body]}))
+
+    def equations(self, bodies: list[Body], shape: tuple[int, ...]) -> tuple[np.ndarray, np.ndarray]:
+        """The reduced system (k, k, *shape), (k, *shape): each body's moment balance
+        about its mass centre, and the force balance of a body without a matched pin."""
+        rows, right = [], []
+        for body in bodies:
+            if body.name not in self.plan.matched:
+                total = _combined(*((s, self.form(key, d)) for key, s, d, point in self.actions[body.name]
+                                    if point is not None))
+                remainder = self.force_target[body.name] - total.get(CONSTANT, 0.0)
+                rows += [self._coefficients(total, np.real), self._coefficients(total, np.imag)]
+                right += [np.real(remainder), np.imag(remainder)]
+            if not body.particle:
+                centre = body.centre.pos
+                total = _combined(*((s, self.form(key, d) if point is None else
+                                     _moment_of(np.asarray(point) - centre, self.form(key, d)))
+                                    for key, s, d, point in self.actions[body.name]))
+                rows.append(self._coefficients(total, np.real))
+                right.append(self.moment_target[body.name] - total.get(CONSTANT, 0.0))
+        matrix = np.empty((self.plan.size, self.plan.size) + shape)
+        rhs = np.empty((self.plan.size,) + shape)
+        for i, row in enumerate(rows):
+            rhs[i] = right[i]
+            for j, entry in enumerate(row):
+                matrix[i, j] = entry
+        return matrix, rhs
+
+    def _coefficients(self, form: dict, part) -> list:
+        """``part`` (np.real or np.imag) of the form's coefficient on each reduced unknown."""
+        return [part(form.get(column, 0.0)) for column in range(self.plan.size)]
 
 
 def _solve_reduced(matrix: np.ndarray, rhs: np.ndarray, couples: list[bool]) -> np.ndarray:
