@@ -430,9 +430,10 @@ class ForceResult:
 
 
 def analysis_shape(*arrays) -> tuple[int, ...]:
-    """The broadcast shape of every array taking part in a force analysis (numbers,
-    numpy scalars and 0-d arrays are shape ())."""
-    return np.broadcast_shapes(*(array.shape for array in arrays if isinstance(array, np.ndarray)))
+    """The broadcast shape of every array (or list) taking part in a force analysis;
+    plain and numpy numbers are skipped (shape ()) without asking numpy."""
+    return np.broadcast_shapes(*(np.shape(array) for array in arrays
+                                 if not isinstance(array, (int, float, complex, np.generic))))
 
 
 def analyse(bodies: list[Body], joints: list[Joint], loads: dict[str, Load], values: dict, unknown: str,
