@@ -11,8 +11,8 @@ from test_basic_helpers import error_of
     ("10 B=0^-1", "Division by zero in 10"),
     ("10 B=5 MOD 0", "Division by zero in 10"),
     ("30 L(21)=1", "Subscript out of range in 30"),
-    ("30 L(-1)=1", "Subscript out of range in 30"),
-    ("30 I=-3: L(I)=1", "Subscript out of range in 30"),
+    ("30 L(-1)=1", "Illegal function call in 30"),  # negative: as GW-BASIC
+    ("30 I=-3: L(I)=1", "Illegal function call in 30"),
     ("10 FOR I=1 TO 2\n20 NEXT I\n60 NEXT I", "NEXT without FOR in 60"),
     ("10 FOR I=1 TO 2: NEXT J", "NEXT without FOR in 10"),
     ("20 RETURN", "RETURN without GOSUB in 20"),
