@@ -110,16 +110,16 @@ def output_progress(stream: IO[str], description: str = "running", file: IO[str]
     """A program's output stream that counts its lines on a bar, when that cannot mix with it.
 
     When ``stream`` is a terminal the program's output is the progress, so
-    ``stream`` itself is given back and no bar is drawn; otherwise (output to
-    a file or a pipe) a bar counting the lines written appears on ``file``
-    (stderr) after ``delay`` seconds, if that is a terminal.  Usage::
+    ``stream`` itself is given back and no bar is drawn; so it is when ``file``
+    (stderr) is not a terminal.  Otherwise (output to a file or a pipe) a bar
+    counting the lines written appears on ``file`` after ``delay`` seconds.  Usage::
 
         with output_progress(sys.stdout) as out:
             machine = Machine(screen=out)
             machine.run()
     """
-    if _is_terminal(stream):
-        yield stream
+    if _is_terminal(stream) or not _is_terminal(sys.stderr if file is None else file):
+        yield stream  # no bar could be shown: do not even import tqdm
         return
     with bar(None, description, "line", file=file, delay=delay, refresh_seconds=refresh_seconds) as progress:
         yield CountingStream(stream, progress)

@@ -43,9 +43,8 @@ def _read(path: str) -> str:
 
 
 def main(args: argparse.Namespace) -> int:
-    from yaseer import binding
-    from yaseer.basic.errors import BasicError
     from yaseer.basic.machine import Machine
+    from yaseer.progress import output_progress
 
     printer = input_stream = None
     try:
@@ -58,8 +57,18 @@ def main(args: argparse.Namespace) -> int:
     except OSError as exc:
         print(f"yaseer run: {exc.filename}: {exc.strerror}", file=sys.stderr)
         return 1
-    machine = Machine(printer=printer, output_format=args.format, angle=args.angle,
-                      input_stream=input_stream)
+    # A line counter on stderr for a long run whose output goes to a file or pipe.
+    with output_progress(sys.stdout) as screen:
+        return _run(Machine(screen=screen, printer=printer, output_format=args.format,
+                            angle=args.angle, input_stream=input_stream),
+                    source, areas, args, printer, input_stream)
+
+
+def _run(machine, source: str, areas: dict[int, str], args: argparse.Namespace, printer, input_stream) -> int:
+    """Load, bind and run; the one error line and exit status."""
+    from yaseer import binding
+    from yaseer.basic.errors import BasicError
+
     try:
         machine.load(source)
         binding.install(machine, dict(args.method) or None)
