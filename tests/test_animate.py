@@ -11,6 +11,7 @@ import io
 import math
 import os
 import re
+import sys
 
 import pytest
 
@@ -227,6 +228,7 @@ def test_mp4_without_ffmpeg_says_so(tmp_path, monkeypatch):
     import yaseer.animation as animation
 
     monkeypatch.setattr(animation.shutil, "which", lambda name: None)
+    monkeypatch.setitem(sys.modules, "imageio_ffmpeg", None)  # and no wheel-shipped binary
     frames, _ = run_cycle([0.0, 90.0])
     with pytest.raises(AnimationError, match="needs ffmpeg, which is not installed"):
         render(frames, tmp_path / "cycle.mp4")
@@ -252,6 +254,22 @@ def test_mp4_frames_are_piped_to_ffmpeg_as_raw_rgb(tmp_path, monkeypatch):
     assert width % 2 == 0 and height % 2 == 0
     assert arguments.endswith(f"BYTES={3 * width * height * 3}")
     assert "-r 5" in arguments and "-pix_fmt rgb24" in arguments
+
+
+def test_mp4_is_a_real_h264_video_with_one_frame_per_printed_row(tmp_path):
+    """Through the real ffmpeg (PATH or the imageio-ffmpeg wheel), read back by ffmpeg itself."""
+    import subprocess
+
+    import yaseer.animation as animation
+
+    frames, _ = run_cycle([0.0, 90.0, 180.0, 270.0])
+    out = tmp_path / "cycle.mp4"
+    assert render(frames, out, fps=4) == 4
+    probe = subprocess.run([animation.ffmpeg_program(), "-i", str(out), "-map", "0:v", "-f", "null", "-"],
+                           capture_output=True, text=True)
+    assert probe.returncode == 0, probe.stderr
+    assert "h264" in probe.stderr
+    assert re.search(r"frame=\s*4\b", probe.stderr), probe.stderr[-300:]
 
 
 def test_a_long_render_shows_progress_on_the_given_stream(tmp_path, monkeypatch):

@@ -682,7 +682,7 @@ def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0
     scene = build_scene(frames)
     if suffix == ".png" and not 0 <= frame_number < len(scene.frames):
         raise AnimationError(f"Frame {frame_number} does not exist: the run has {len(scene.frames)}")
-    if suffix == ".mp4" and shutil.which("ffmpeg") is None:
+    if suffix == ".mp4" and ffmpeg_program() is None:
         raise AnimationError("Writing .mp4 needs ffmpeg, which is not installed here; use .gif or .html")
     painter = _Painter(scene, title)
     try:
@@ -750,13 +750,28 @@ def write_html(images: list, out: Path, fps: float) -> None:
                                     interval=round(1000.0 / fps)), encoding="utf-8")
 
 
+def ffmpeg_program() -> str | None:
+    """The ffmpeg to run: one on PATH, else the binary the imageio-ffmpeg wheel ships, else None."""
+    found = shutil.which("ffmpeg")
+    if found is not None:
+        return found
+    try:
+        import imageio_ffmpeg
+    except ImportError:
+        return None
+    try:
+        return imageio_ffmpeg.get_ffmpeg_exe()
+    except RuntimeError:  # the wheel has no binary for this platform
+        return None
+
+
 def write_mp4(images: list, out: Path, fps: float) -> None:
     """H.264 through the ffmpeg program: raw RGB frames piped to it."""
     import subprocess
 
     width, height = images[0].size
     width, height = width - width % 2, height - height % 2  # yuv420p wants even sizes
-    command = ["ffmpeg", "-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "rgb24",
+    command = [ffmpeg_program() or "ffmpeg", "-y", "-loglevel", "error", "-f", "rawvideo", "-pix_fmt", "rgb24",
                "-s", f"{width}x{height}", "-r", f"{fps}", "-i", "-", "-pix_fmt", "yuv420p", str(out)]
     data = b"".join(image.crop((0, 0, width, height)).tobytes() for image in images)
     result = subprocess.run(command, input=data, capture_output=True)

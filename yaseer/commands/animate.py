@@ -17,7 +17,7 @@ from pathlib import Path
 def add_arguments(parser) -> None:
     """FILE, --out, --fps, --frame, --title, --max-frames, --angle, --method N=NAME."""
     parser.add_argument("file", help="the calling listing (.bas)")
-    parser.add_argument("--out", help="FILE.gif (default), .html, .mp4 (needs ffmpeg) or .png (one frame)")
+    parser.add_argument("--out", help="FILE.gif (default), .html, .mp4 (H.264 via ffmpeg) or .png (one frame)")
     parser.add_argument("--fps", type=float, default=6.0, help="frames per second (default 6)")
     parser.add_argument("--frame", type=int, default=0, help="with --out FILE.png: which frame (from 0)")
     parser.add_argument("--title", default=None, help="a title over every frame (default: the file name)")
