@@ -412,20 +412,26 @@ def test_csv_row_of_a_statement_printed_in_parts():
     assert run_rows('10 L(1)=2: PRINT "a"; L(1); SQR(L(1)^2)') == [["a", "2.0", "2.0"]]
 
 
-def test_break_of_a_jump_loop_names_the_line():
+def _interrupted_run(program: str, after_seconds: float = 0.2) -> tuple[Machine, BasicError]:
+    """Run ``program`` and send this process SIGINT (Ctrl-C) after ``after_seconds``."""
     import signal
 
     machine = Machine(screen=io.StringIO())
-    machine.load("10 X=X+1\n20 GOTO 10\n")
+    machine.load(program)
     previous = signal.signal(signal.SIGALRM, lambda *_: signal.raise_signal(signal.SIGINT))
-    signal.setitimer(signal.ITIMER_REAL, 0.2)
+    signal.setitimer(signal.ITIMER_REAL, after_seconds)
     try:
         with pytest.raises(BasicError) as info:
             machine.run()
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
-    assert str(info.value) in ("Break in 10", "Break in 20")
+    return machine, info.value
+
+
+def test_break_of_a_jump_loop_names_the_line():
+    machine, error = _interrupted_run("10 X=X+1\n20 GOTO 10\n")
+    assert str(error) in ("Break in 10", "Break in 20")
     assert machine.scalar("X") > 0
 
 
@@ -528,17 +534,6 @@ def test_zero_trip_loop_finds_its_next_inside_an_if_branch():
 
 
 def test_break_inside_a_long_native_loop_keeps_the_variable():
-    import signal
-
-    machine = Machine(screen=io.StringIO())
-    machine.load("10 FOR I=1 TO 1E12: NEXT\n20 PRINT I")
-    previous = signal.signal(signal.SIGALRM, lambda *_: signal.raise_signal(signal.SIGINT))
-    signal.setitimer(signal.ITIMER_REAL, 0.2)
-    try:
-        with pytest.raises(BasicError) as info:
-            machine.run()
-    finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
-    assert str(info.value) == "Break in 10"
+    machine, error = _interrupted_run("10 FOR I=1 TO 1E12: NEXT\n20 PRINT I")
+    assert str(error) == "Break in 10"
     assert 1 < machine.scalar("I") < 1e12 and machine.scalar("I") == int(machine.scalar("I"))
