@@ -2,6 +2,7 @@
 
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -98,14 +99,7 @@ def test_garbage_gives_a_basic_error(tmp_path, capsys, junk):
     assert err.endswith("in 10\n") and "Traceback" not in err
 
 
-PAPER_PROGRAM_5 = """1 REM Motion of a virtual link
-10 X=X(10): Y=Y(10): T=ATN(Y/X): IF X<0 THEN T=T+180
-20 L=X/COST: IF T<0 THEN T=T+360
-30 IF T-360>0 THEN T=T-360
-40 D(6)=V(17)*COST+V(18)*SINT: D(5)=(V(18)-D(6)*SINT)/L/COST
-50 E(5)=(A(50)*COST-A(49)*SINT-2*D(6)*D(5))/L
-60 E(6)=(A(50)-2*D(6)*D(5)*COST+L*D(5)^2*SINT-E(5)*COST)/SINT: RETURN
-"""
+PAPER_PROGRAM_5 = Path(__file__).resolve().parents[1] / "programs" / "prog5.bas"  # as printed
 
 # Shaped like the paper's Example 1: the universal line and line 20 wrapped, a FOR
 # over QQ from .1 in steps of 15, a virtual link through GOSUB PROG 5.
@@ -123,7 +117,7 @@ def test_listing_shaped_program_with_the_papers_program_5(tmp_path, capsys):
     import math
 
     listing = write(tmp_path, "example.bas", LISTING)
-    area = write(tmp_path, "prog5.bas", PAPER_PROGRAM_5)
+    area = str(PAPER_PROGRAM_5)
     assert main(["run", listing, "--prog", f"5={area}", "--format", "csv"]) == 0
     rows = [[float(x) for x in line.split(",")] for line in capsys.readouterr().out.splitlines()]
     qq, expected = 0.1, []
