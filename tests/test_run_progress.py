@@ -11,8 +11,9 @@ import pexpect
 
 ROOT = Path(__file__).resolve().parents[1]
 
-# about 45 million loop passes: several seconds, far over the one-second delay
-SLOW = "10 FOR K = 1 TO 30\n20 FOR J = 1 TO 1500000: A = A + 1: NEXT J\n30 PRINT K\n40 NEXT K\n"
+# about 150 million loop passes: seconds on any machine (45 million took 0.9 s here), far over the
+# one-second delay
+SLOW = "10 FOR K = 1 TO 30\n20 FOR J = 1 TO 5000000: A = A + 1: NEXT J\n30 PRINT K\n40 NEXT K\n"
 FAST = "10 PRINT 1\n20 PRINT 2\n"
 
 
