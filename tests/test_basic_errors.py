@@ -44,7 +44,7 @@ from test_basic_helpers import error_of
     ("10 DIM M(5)\n20 DIM M(5)", "Duplicate definition in 20"),
     ("10 INPUT A", "Input past end in 10"),
     ("10 X=VAL(\"1E999\")", "Overflow in 10"),
-    ("10 PRINT TAB(-1)", "Illegal function call in 10"),
+    ("10 PRINT TAB(256)", "Illegal function call in 10"),
     ("10 A$=MID$(\"abc\", 0)", "Illegal function call in 10"),
     ("10 X=ASC(\"\")", "Illegal function call in 10"),
     ("10 CONT", "Syntax error in 10"),

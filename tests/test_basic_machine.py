@@ -221,6 +221,38 @@ def test_print_zones_semicolons_tab_spc():
     assert out == "A" + " " * 13 + "BC\n" + "    X  Y\nPQ\n"
 
 
+# PC-BASIC 2.0.8 prints these (issue 11, both dialects):
+#   10 PRINT "A";TAB(0);"B"  ->  A / B            (TAB below 1 is column 1, here on a new line)
+#   PRINT "XYZ";CHR$(13);"Q";TAB(3);"R"  ->  XYZ / Q R   (CR ends the line, the column is 0)
+#   PRINT "AB";TAB(10) then PRINT "C"  ->  "AB       C"  (TAB or SPC at the end keeps the line open)
+
+
+def test_tab_below_one_is_column_one():
+    assert run_text('10 PRINT "A";TAB(0);"B": PRINT TAB(-7);"C": PRINT "D";TAB(-1);"E"') == "A\nB\nC\nD\nE\n"
+
+
+def test_carriage_return_ends_the_line():
+    assert run_text('10 PRINT "XYZ";CHR$(13);"Q";TAB(3);"R"') == "XYZ\nQ R\n"
+
+
+def test_print_ending_in_tab_or_spc_keeps_the_line_open():
+    assert run_text('10 PRINT "AB";TAB(10)\n20 PRINT "C": PRINT "AB";SPC(3)\n30 PRINT "E"') == "AB       C\nAB   E\n"
+
+
+def test_empty_input_answer_is_zero_or_empty_string():
+    machine = Machine(screen=io.StringIO(), input_stream=io.StringIO("\n\n"))
+    machine.load('10 INPUT N: INPUT A$: PRINT N; "[" A$ "]"')
+    machine.run()
+    assert machine.screen.stream.getvalue().splitlines() == ["? ", "? ", " 0 []"]
+
+
+def test_empty_input_answer_for_two_variables_asks_again():
+    machine = Machine(screen=io.StringIO(), input_stream=io.StringIO("\n3,\n"))
+    machine.load("10 INPUT C, D: PRINT C; D")
+    machine.run()
+    assert machine.screen.stream.getvalue().splitlines() == ["? ", "?Redo from start", "? 3,", " 3  0 "]
+
+
 def test_lprint_goes_to_the_printer_stream():
     screen, printer = io.StringIO(), io.StringIO()
     machine = Machine(screen=screen, printer=printer)

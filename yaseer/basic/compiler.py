@@ -436,7 +436,8 @@ class AreaCompiler:
                 parts.append(f"_Spc({self.numeric(item.count, scope)})")
             else:
                 parts.append(self.expr(item, scope)[0])
-        newline = not items or items[-1] not in (",", ";")
+        # a PRINT ending in a separator, TAB(n) or SPC(n) keeps the line open
+        newline = not items or not (items[-1] in (",", ";") or isinstance(items[-1], (ast.Tab, ast.Spc)))
         return parts, newline
 
     def stmt_Print(self, stmt, scope):

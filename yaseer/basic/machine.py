@@ -117,8 +117,11 @@ class OutputStream:
         self.column = 0
 
     def write(self, text: str) -> None:
+        """Write ``text``; a carriage return (``CHR$(13)``) ends the line as on the screen."""
         if not text:
             return
+        if "\r" in text:
+            text = text.replace("\r", "\n")
         self.stream.write(text)
         newline = text.rfind("\n")
         self.column = len(text) - newline - 1 if newline >= 0 else self.column + len(text)
@@ -730,8 +733,9 @@ class Machine:
             elif item is COMMA:
                 stream.write(" " * (PRINT_ZONE - stream.column % PRINT_ZONE))
             elif kind is Tab:
-                target = runtime.cint(item.column) - 1
-                if target < 0 or target > 255:
+                column = runtime.cint(item.column)
+                target = max(column, 1) - 1  # TAB(0), TAB(-5): column 1
+                if column > 255:
                     raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
                 if stream.column > target:
                     stream.write("\n")
@@ -833,7 +837,7 @@ def _as_number(value):
 def _parse_input(text: str, kinds: str):
     """The values of one INPUT line for targets of ``kinds`` ("n"/"s"), or None to redo."""
     reader = csv.reader([text], skipinitialspace=True)
-    fields = next(reader, [])
+    fields = next(reader, None) or [""]  # an empty answer is one empty value: 0 or ""
     if len(fields) != len(kinds):
         return None
     values = []
