@@ -253,15 +253,18 @@ def using_statement(fmt: str, values: list[float | str]) -> str:
 # Running yaseer in-process, comparing outputs
 # ---------------------------------------------------------------------------
 
-def run_yaseer(source: str, angle: str = "rad") -> str:
-    """yaseer's screen output for ``source``, then its error line (as PC-BASIC shows it)."""
+def run_yaseer(source: str, angle: str | None = "rad", dialect: str = "casio") -> str:
+    """yaseer's screen output for ``source``, then its error line (as PC-BASIC shows it).
+
+    ``dialect`` "casio" or "gw"; ``angle`` None takes the dialect's own unit.
+    """
     import io
 
     from yaseer.basic.errors import BasicError
     from yaseer.basic.machine import Machine
 
     screen = io.StringIO()
-    machine = Machine(screen=screen, angle=angle)
+    machine = Machine(screen=screen, angle=angle, dialect=dialect)
     try:
         machine.load(source)
         outcome = machine.run()

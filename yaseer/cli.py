@@ -40,9 +40,14 @@ def main(argv: list[str] | None = None) -> int:
             continue
         available[name] = module
         module.add_arguments(sub.add_parser(name, help=help_text, description=help_text))
-    if not argv and "interactive" in _interactive_available():
+    interactive = "interactive" in _interactive_available()
+    if interactive:  # options before any command are the interactive session's (--dialect)
+        _load("interactive").add_arguments(parser)
+    if not argv and interactive:
         return _load("interactive").main(None)
     args = parser.parse_args(argv)
+    if args.command is None and interactive:
+        return _load("interactive").main(args)
     if args.command is None:
         parser.print_help()
         return 2

@@ -416,18 +416,22 @@ class Session:
 # --- the BASIC machine, as the session and the animation use it ---------------------
 
 
-def create_machine(screen, printer, methods: dict[int, str] | None = None, install=None, angle: str = "deg"):
+def create_machine(screen, printer, methods: dict[int, str] | None = None, install=None,
+                   angle: str | None = None, dialect: str = "casio"):
     """A BASIC machine writing PRINT to ``screen`` and LPRINT to ``printer``, library bound.
 
     ``install(machine, methods)`` binds the library programs (default
     ``yaseer.binding.install``; the animation passes a recording one);
-    ``angle`` ("deg" or "rad") is the unit of SIN, COS, TAN and ATN at start.
+    ``angle`` ("deg" or "rad") is the unit of SIN, COS, TAN and ATN at start
+    (default: the dialect's); ``dialect`` is "casio" or "gw" (see
+    ``yaseer.basic.dialect``): the library is bound only in a dialect with program areas.
     """
     from yaseer import binding
     from yaseer.basic.machine import Machine
 
-    machine = Machine(screen=screen, printer=printer, angle=angle)
-    (install or binding.install)(machine, methods)
+    machine = Machine(screen=screen, printer=printer, angle=angle, dialect=dialect)
+    if machine.dialect.program_areas:
+        (install or binding.install)(machine, methods)
     return machine
 
 
@@ -457,15 +461,16 @@ class MachineEngine:
     does Ctrl-C (the machine places it); CONT resumes after a STOP.
     """
 
-    def __init__(self, write: Callable[[str], object]) -> None:
+    def __init__(self, write: Callable[[str], object], dialect: str = "casio") -> None:
         self._screen = _Screen(write)
+        self._dialect = dialect
         self._machine = None  # made on first use: the prompt comes up without waiting for it
 
     @property
     def machine(self):
         """The machine holding the variables (created when first needed)."""
         if self._machine is None:
-            self._machine = create_machine(self._screen, self._screen)
+            self._machine = create_machine(self._screen, self._screen, dialect=self._dialect)
         return self._machine
 
     def reset(self) -> None:

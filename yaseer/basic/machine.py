@@ -27,7 +27,7 @@ import sys
 from functools import lru_cache
 from typing import Callable, TextIO
 
-from yaseer.basic import formatting, runtime
+from yaseer.basic import dialect as dialects, formatting, runtime
 from yaseer.basic.compiler import CompiledArea, compile_area
 from yaseer.basic.errors import (
     BasicError, BREAK, CANT_CONTINUE, DIVISION_BY_ZERO, DUPLICATE_DEFINITION,
@@ -38,12 +38,6 @@ from yaseer.basic.errors import (
 from yaseer.basic.parser import parse_line
 from yaseer.basic.scanner import split_lines
 
-# The paper's universal line 2: these arrays exist with these sizes from the start.
-AL_YASEER_DIMENSIONS = {
-    "F": 46, "M": 11, "R": 19, "H": 24, "A": 53, "L": 20, "T": 25, "W": 10, "Z": 5, "C": 14,
-    "U": 4, "D": 6, "E": 6, "X": 11, "Y": 11, "V": 21, "Q": 4, "N": 3, "I": 11, "P": 4,
-}
-DEFAULT_DIMENSION = 10  # an array used without DIM: subscripts 0..10
 
 # Resource limits (each exceeded limit is "Out of memory in N").
 from yaseer.basic.compiler import MAX_STACK  # GOSUB returns + open FOR loops together  # noqa: E402
@@ -207,14 +201,18 @@ class Machine:
     """A pocket-computer BASIC machine (see the module docstring)."""
 
     def __init__(self, screen: TextIO | None = None, printer: TextIO | None = None,
-                 output_format: str = "text", angle: str = "deg", input_stream: TextIO | None = None):
+                 output_format: str = "text", angle: str | None = None, input_stream: TextIO | None = None,
+                 dialect: "str | dialects.Dialect" = "casio"):
+        # The dialect (scanner rules, number model, print rules, error policy, start-up
+        # state: see dialect.py); ``angle`` overrides its start-up unit ("deg"/"rad").
+        self.dialect = dialects.get_dialect(dialect)
         self.screen = OutputStream(screen if screen is not None else sys.stdout)
         self.printer = OutputStream(printer if printer is not None else self.screen.stream)
         if printer is None:
             self.printer = self.screen
         self.streams = (self.screen, self.printer)
         self.csv = output_format == "csv"
-        self.default_angle = angle.upper()[:3]
+        self.default_angle = (angle or self.dialect.angle).upper()[:3]
         self.input_stream = input_stream
         self.programs: dict[int, dict[int, str]] = {}
         self.python_areas: dict[int, Callable] = {}
@@ -389,8 +387,7 @@ class Machine:
         found = self.arrays.get(name)
         if found is not None:
             return found
-        size = AL_YASEER_DIMENSIONS.get(name, DEFAULT_DIMENSION) if ndim == 1 else DEFAULT_DIMENSION
-        dims = (size,) * ndim
+        dims = (self.dialect.implicit_size(name, ndim),) * ndim
         self._reserve(name, dims)
         created = _new_array(dims, "" if name.endswith("$") else 0.0)
         self.arrays[name] = created

@@ -23,7 +23,10 @@ Reader = Callable[[str, str], str]  # (prompt, text put up for editing) -> the l
 
 
 def add_arguments(parser) -> None:
-    """``yaseer interactive`` takes no arguments (``yaseer`` alone starts it)."""
+    """``yaseer`` alone (or ``yaseer --dialect gw``) starts the session: ``--dialect``."""
+    from yaseer.commands.run import add_dialect_argument
+
+    add_dialect_argument(parser)
 
 
 def main(args=None) -> int:
@@ -31,7 +34,8 @@ def main(args=None) -> int:
     from yaseer.session import MachineEngine, Session
 
     write = _writer(sys.stdout)
-    session = Session(write=write, engine=MachineEngine(write))
+    dialect = getattr(args, "dialect", None) or "casio"
+    session = Session(write=write, engine=MachineEngine(write, dialect=dialect))
     read = prompt_toolkit_reader() if _is_terminal() else plain_reader(sys.stdin, write)
     write(BANNER)
     return run_loop(session, read, write)

@@ -24,6 +24,12 @@ def _method(text: str) -> tuple[int, str]:
     return int(number), name
 
 
+def add_dialect_argument(parser: argparse.ArgumentParser) -> None:
+    """``--dialect casio|gw`` (shared by ``run`` and the interactive session)."""
+    parser.add_argument("--dialect", choices=("casio", "gw"), default="casio",
+                        help="casio: the paper's pocket computer (default); gw: GW-BASIC 3.23")
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("file", help="the BASIC listing (area 0)")
     parser.add_argument("--format", choices=("text", "csv"), default="text",
@@ -31,7 +37,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--printer", metavar="FILE", help="write LPRINT output to FILE (default: standard output)")
     parser.add_argument("--prog", metavar="N=FILE", type=_area_file, action="append", default=[],
                         help="load a BASIC file into program area N (shares the variables)")
-    parser.add_argument("--angle", choices=("deg", "rad"), default="deg", help="unit of SIN COS TAN ATN")
+    add_dialect_argument(parser)
+    parser.add_argument("--angle", choices=("deg", "rad"), default=None,
+                        help="unit of SIN COS TAN ATN at start (default: the dialect's: casio deg, gw rad)")
     parser.add_argument("--input", metavar="FILE", help="read INPUT lines from FILE instead of standard input")
     parser.add_argument("--method", metavar="N=NAME", type=_method, action="append", default=[],
                         help="the method library program N uses (passed to yaseer.binding.install)")
@@ -60,7 +68,7 @@ def main(args: argparse.Namespace) -> int:
     # A line counter on stderr for a long run whose output goes to a file or pipe.
     with output_progress(sys.stdout) as screen:
         return _run(Machine(screen=screen, printer=printer, output_format=args.format,
-                            angle=args.angle, input_stream=input_stream),
+                            angle=args.angle, input_stream=input_stream, dialect=args.dialect),
                     source, areas, args, printer, input_stream)
 
 

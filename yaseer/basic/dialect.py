@@ -1,0 +1,129 @@
+"""The BASIC dialect a machine speaks: one small frozen object of data.
+
+A :class:`Dialect` says how the scanner reads names, which number model the
+compiler and runtime use, how PRINT shows numbers and wraps lines, what an
+arithmetic error does at run time, and what the machine holds when a program
+starts.  The scanner, compiler, runtime and machine consult its fields; no
+code asks "which dialect is this?".
+
+Two dialects exist:
+
+* :data:`CASIO` (``--dialect casio``, the default): the paper's pocket
+  computer (Casio FX-850P family), exactly as yaseer has always run it.
+* :data:`GW` (``--dialect gw``): GW-BASIC 3.23 as PC-BASIC 2.0.8 reproduces
+  it; where the two disagree, Microsoft's GW-BASIC assembly source decides
+  (see docs/compatibility.md).
+
+Field names are stable: other modules build on them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+# The paper's universal line 2: these arrays exist with these sizes from the start
+# (one dimension, subscripts 0..size).
+AL_YASEER_DIMENSIONS = (
+    ("F", 46), ("M", 11), ("R", 19), ("H", 24), ("A", 53), ("L", 20), ("T", 25), ("W", 10),
+    ("Z", 5), ("C", 14), ("U", 4), ("D", 6), ("E", 6), ("X", 11), ("Y", 11), ("V", 21),
+    ("Q", 4), ("N", 3), ("I", 11), ("P", 4),
+)
+
+
+@dataclass(frozen=True)
+class Dialect:
+    """Everything that differs between the BASICs yaseer runs (all plain data).
+
+    Scanner rules
+        ``keyword_first``: True reads keywords wherever they start inside a run
+        of letters (``COST`` is ``COS T``, ``FORI=1TO3`` is ``FOR I = 1 TO 3``),
+        as the pocket computers' tokenisers do; False reads a name whole, as
+        GW-BASIC does (``COST`` is a variable; a keyword counts only when the
+        run of letters does not continue it into a longer name).
+        ``pi_keyword``: True makes ``PI`` the constant pi (a Casio keyword);
+        False leaves it an ordinary variable name (GW-BASIC has no PI).
+
+    Number model
+        ``typed_numbers``: False is the pocket computer's one numeric type
+        (every number a Python float, i.e. a double, shown to ``print_digits``);
+        True is GW-BASIC's typed model: ``%`` 16-bit integers, ``!`` single
+        precision (the default type of a name without suffix), ``#`` double
+        precision, ``$`` strings, with DEFINT/DEFSNG/DEFDBL/DEFSTR, literal
+        suffixes and ``&H``/``&O`` literals.
+
+    Print rules
+        ``print_digits``: significant digits PRINT and STR$ show for the
+        default numeric type (10 on the 10-digit Casio display; 7 for
+        GW-BASIC's single precision; GW doubles show 16).
+        ``width``: the screen width in columns at which PRINT wraps lines
+        (``None``: never wrap, the Casio behaviour as yaseer runs it; 80 for
+        GW-BASIC, changed with ``WIDTH n``).
+        ``zone``: columns per ``,`` print zone (14 in both).
+
+    Run-time error policy
+        ``on_division_by_zero`` and ``on_overflow``: ``"stop"`` ends the run
+        with the error (Casio); ``"continue"`` prints GW-BASIC's message and
+        goes on with the signed largest value, unless ON ERROR traps it.
+
+    Start-up environment
+        ``angle``: ``"DEG"`` or ``"RAD"``, the unit of SIN COS TAN ATN at RUN.
+        ``implicit_arrays``: ``(name, size)`` pairs of one-dimensional arrays
+        that exist with those sizes before any DIM (the Al-Yaseer arrays in
+        Casio; none in GW).
+        ``default_dimension``: the largest subscript of an array used
+        without DIM (10 in both: subscripts 0..10).
+        ``program_areas``: True when ``GOSUB PROG n`` is a statement (the
+        library programs are bound at start); False in GW-BASIC, where PROG
+        is no word: ``GOSUB PROG n`` is then a syntax error unless program
+        areas are given explicitly (``--prog``).
+    """
+
+    name: str
+    keyword_first: bool
+    pi_keyword: bool
+    typed_numbers: bool
+    print_digits: int
+    width: int | None
+    zone: int
+    on_division_by_zero: str
+    on_overflow: str
+    angle: str
+    implicit_arrays: tuple[tuple[str, int], ...]
+    default_dimension: int
+    program_areas: bool
+
+    def implicit_size(self, name: str, ndim: int) -> int:
+        """The largest subscript of array ``name`` with ``ndim`` dimensions used without DIM."""
+        if ndim == 1:
+            for array, size in self.implicit_arrays:
+                if array == name:
+                    return size
+        return self.default_dimension
+
+
+CASIO = Dialect(
+    name="casio", keyword_first=True, pi_keyword=True, typed_numbers=False, print_digits=10,
+    width=None, zone=14, on_division_by_zero="stop", on_overflow="stop", angle="DEG",
+    implicit_arrays=AL_YASEER_DIMENSIONS, default_dimension=10, program_areas=True,
+)
+
+GW = Dialect(
+    name="gw", keyword_first=False, pi_keyword=False, typed_numbers=True, print_digits=7,
+    width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
+    implicit_arrays=(), default_dimension=10, program_areas=False,
+)
+
+DIALECTS = {d.name: d for d in (CASIO, GW)}
+
+
+def get_dialect(name: "str | Dialect") -> Dialect:
+    """The dialect called ``name`` ("casio" or "gw", any case); a Dialect passes through.
+
+    Raises ``ValueError`` naming the choices for any other name.
+    """
+    if isinstance(name, Dialect):
+        return name
+    try:
+        return DIALECTS[name.lower()]
+    except KeyError:
+        raise ValueError(f"unknown dialect {name!r} (choose from {', '.join(DIALECTS)})") from None
