@@ -12,16 +12,19 @@ written, so a failing call leaves the machine untouched.
 
 Errors become BASIC run-time errors naming the program; the machine adds the
 calling line (``Mechanism cannot be assembled (PROG 2) in 4040``).
+
+:func:`install` imports nothing of :mod:`yaseer.linkages`: a listing that never
+calls ``GOSUB PROG n`` starts without it, and the first call imports it.
 """
 
 from __future__ import annotations
 
+import contextlib
+import functools
 import math
 import sys
 from typing import Callable
 from weakref import WeakKeyDictionary
-
-import numpy as np
 
 from yaseer.basic.errors import (
     DIVISION_BY_ZERO,
@@ -31,20 +34,6 @@ from yaseer.basic.errors import (
     TYPE_MISMATCH,
     BasicError,
 )
-from yaseer.linkages import (
-    AssemblyError,
-    LockedError,
-    MassProps,
-    MethodDivisionByZero,
-    SingularForceError,
-    fourbar,
-    inverted_slider_crank,
-    slider_crank,
-    virtual_link,
-)
-from yaseer.linkages.fourbar import CROSSED, UNCROSSED
-from yaseer.linkages.registry import method_names
-from yaseer.linkages.tracking import BranchTracker, Geometry
 
 LINKAGES = {1: "slider_crank", 2: "fourbar", 3: "inverted_slider_crank", 5: "virtual_link"}
 
@@ -74,6 +63,14 @@ REACTIONS = {
         "follower_on_block": (("N", 3),), "follower_on_block_couple": (("U", 4),),
         "ground_on_follower": (("F", 16), ("F", 17))},
 }
+
+
+@functools.cache
+def _linkages():
+    """The :mod:`yaseer.linkages` package, imported at the first ``GOSUB PROG n``."""
+    import yaseer.linkages
+
+    return yaseer.linkages
 
 
 class _Frame:
@@ -127,6 +124,8 @@ class _Frame:
 
 def _translate(error: Exception, frame: _Frame) -> BasicError:
     """The BASIC run-time error for a linkage exception."""
+    from yaseer.linkages.errors import AssemblyError, LockedError, MethodDivisionByZero, SingularForceError
+
     if isinstance(error, AssemblyError):
         return frame.error("Mechanism cannot be assembled")
     if isinstance(error, LockedError):
@@ -172,14 +171,14 @@ def _forces_wanted(frame: _Frame) -> bool:
     return frame.get("Z", frame.area) == 2
 
 
-def _mass(frame: _Frame, mass: int, inertia: Element, distance: Element, offset: Element) -> MassProps:
-    return MassProps(frame.get("M", mass), frame.get(*inertia), frame.get(*distance), frame.get(*offset))
+def _mass(frame: _Frame, mass: int, inertia: Element, distance: Element, offset: Element):
+    return _linkages().MassProps(frame.get("M", mass), frame.get(*inertia), frame.get(*distance), frame.get(*offset))
 
 
 def program_1(frame: _Frame, method: str | None) -> None:
     """Slider-crank AoAB (contract, Program 1)."""
     g = frame.get
-    kin = slider_crank(g("L", 1), g("L", 2), g("L", 3), g("T", 2), g("W", 2), g("A", 2),
+    kin = _linkages().slider_crank(g("L", 1), g("L", 2), g("L", 3), g("T", 2), g("W", 2), g("A", 2),
                        crank_length_rate=g("D", 0), crank_length_accel=g("E", 0), axis_deg=g("T", 4), method=method)
     frame.put(("T", 3), kin.rod.degrees)
     frame.put(("W", 3), kin.rod.omega)
@@ -207,19 +206,21 @@ def program_1(frame: _Frame, method: str | None) -> None:
 
 def _branch(l10: float) -> int:
     """L(10) = 1: crossed; anything else but TRACKING uncrossed."""
-    return CROSSED if l10 == 1 else UNCROSSED
+    return _linkages().CROSSED if l10 == 1 else _linkages().UNCROSSED
 
 
 TRACKING = -1  # L(10) = -1: continuous branch tracking (yaseer.linkages.tracking)
-_trackers: "WeakKeyDictionary[object, BranchTracker]" = WeakKeyDictionary()
+_trackers: WeakKeyDictionary = WeakKeyDictionary()  # machine -> tracking.BranchTracker
 
 
 def _tracked_fourbar(frame: _Frame):
     """Program 2 kinematics following the motion across change points and toggles
     (one tracker per machine, starting uncrossed); each branch switch is reported
     on standard error as ``PROG 2: branch switch at crank angle ...``."""
+    from yaseer.linkages.tracking import BranchTracker, Geometry
+
     g = frame.get
-    tracker = _trackers.setdefault(frame.machine, BranchTracker(UNCROSSED))
+    tracker = _trackers.get(frame.machine) or _trackers.setdefault(frame.machine, BranchTracker(_linkages().UNCROSSED))
     geometry = Geometry(g("L", 11), g("T", 11), g("L", 12), g("L", 13), g("L", 14))
     kin, switch = tracker.step(geometry, g("T", 12), g("W", 5), g("A", 5),
                                crank_length_rate=g("D", 2), crank_length_accel=g("E", 2))
@@ -234,7 +235,7 @@ def program_2(frame: _Frame, method: str | None) -> None:
     if g("L", 10) == TRACKING:
         kin = _tracked_fourbar(frame)
     else:
-        kin = fourbar(g("L", 11), g("T", 11), g("L", 12), g("L", 13), g("L", 14), g("T", 12), g("W", 5),
+        kin = _linkages().fourbar(g("L", 11), g("T", 11), g("L", 12), g("L", 13), g("L", 14), g("T", 12), g("W", 5),
                       g("A", 5), crank_length_rate=g("D", 2), crank_length_accel=g("E", 2),
                       branch=_branch(g("L", 10)), method=method)
     for (angle, rate, accel), link in (((("T", 13), ("W", 6), ("A", 6)), kin.coupler),
@@ -266,7 +267,7 @@ def program_2(frame: _Frame, method: str | None) -> None:
 def program_3(frame: _Frame, method: str | None) -> None:
     """First inversion of the slider-crank, FISC (contract, Program 3)."""
     g = frame.get
-    kin = inverted_slider_crank(g("L", 6), g("T", 6), g("L", 7), g("T", 7), g("W", 0), g("A", 0),
+    kin = _linkages().inverted_slider_crank(g("L", 6), g("T", 6), g("L", 7), g("T", 7), g("W", 0), g("A", 0),
                                 crank_length_rate=g("D", 3), crank_length_accel=g("E", 3), method=method)
     for element, value in ((("L", 5), kin.follower_length.value), (("D", 4), kin.follower_length.rate),
                            (("E", 4), kin.follower_length.accel), (("T", 9), kin.follower.degrees),
@@ -294,7 +295,7 @@ def program_5(frame: _Frame, method: str | None) -> None:
     """Motion of a virtual link (contract, Program 5)."""
     g = frame.get
     x, y = g("X", 10), g("Y", 10)
-    link = virtual_link(x, y, g("V", 17), g("V", 18), g("A", 49), g("A", 50), method=method)
+    link = _linkages().virtual_link(x, y, g("V", 17), g("V", 18), g("A", 49), g("A", 50), method=method)
     frame.put_scalar("T", link.angle_deg)
     frame.put_scalar("L", link.length)
     frame.put_scalar("X", x)
@@ -308,6 +309,13 @@ def program_5(frame: _Frame, method: str | None) -> None:
 PROGRAMS: dict[int, Callable[[_Frame, str | None], None]] = {1: program_1, 2: program_2, 3: program_3, 5: program_5}
 
 
+def _quiet_numpy():
+    """numpy's floating-point warnings silenced while numpy is in use (non-finite
+    results are caught by :meth:`_Frame.commit`); nothing to silence otherwise."""
+    numpy = sys.modules.get("numpy")
+    return numpy.errstate(all="ignore") if numpy is not None else contextlib.nullcontext()
+
+
 def make_area(number: int, method: str | None = None) -> Callable[[object], None]:
     """The program area ``number`` as a callable ``area(machine) -> None``."""
     program = PROGRAMS[number]
@@ -315,7 +323,7 @@ def make_area(number: int, method: str | None = None) -> Callable[[object], None
     def area(machine) -> None:
         frame = _Frame(machine, number)
         try:
-            with np.errstate(all="ignore"):
+            with _quiet_numpy():
                 program(frame, method)
         except BasicError:
             raise
@@ -339,6 +347,8 @@ def check_methods(methods: dict[int, str] | None) -> dict[int, str]:
         if number not in LINKAGES:
             raise BasicError(f"No library program {number} to choose a method for (programs: 1, 2, 3, 5)",
                              ILLEGAL_FUNCTION_CALL)
+        from yaseer.linkages.registry import method_names
+
         known = method_names(LINKAGES[number])
         if name not in known:
             raise BasicError(f"Unknown method {name!r} for PROG {number} (known: {', '.join(known)})",

@@ -22,11 +22,10 @@ from __future__ import annotations
 
 from yaseer.basic import syntax_tree as ast
 from yaseer.basic.blocks import flatten, nodes, plan, splits, walk_statements
+from yaseer.basic.compiled import MAX_STACK, CompiledArea  # noqa: F401  (re-exported)
 from yaseer.basic.errors import (
     BasicError, FOR_WITHOUT_NEXT, OUT_OF_MEMORY, SYNTAX_ERROR, TYPE_MISMATCH, UNDEFINED_LINE,
 )
-
-MAX_STACK = 10_000  # GOSUB returns + open FOR loops (machine.MAX_STACK)
 
 _PY_RELATIONS = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
 
@@ -62,29 +61,6 @@ def local_name(name: str) -> str:
 
 def array_local(name: str) -> str:
     return "b_" + name[:-1] if name.endswith("$") else "a_" + name
-
-
-# ------------------------------------------------------------------ the result
-
-
-class CompiledArea:
-    """The compiled form of one program area.
-
-    ``source`` the generated Python text; ``pieces`` [(first BASIC line or None,
-    source of one function)]; ``line_blocks`` BASIC line -> block starting there;
-    ``block_next`` block -> block of the statement after it (RESUME NEXT);
-    ``data`` [(DATA item text, line)]; ``data_lines`` line -> index of its first
-    item; ``scalars`` every scalar name used; ``blocks`` the block functions
-    (filled in by the machine after it executes the source).
-    """
-
-    def __init__(self, source, pieces, block_count, line_blocks, block_next, data, data_lines,
-                 scalars, first_line=None):
-        self.source, self.pieces, self.block_count = source, pieces, block_count
-        self.line_blocks, self.block_next = line_blocks, block_next
-        self.data, self.data_lines, self.scalars = data, data_lines, scalars
-        self.first_line = first_line
-        self.blocks: list = []
 
 
 class _Block:

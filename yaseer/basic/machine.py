@@ -27,20 +27,18 @@ import sys
 from functools import lru_cache
 from typing import Callable, TextIO
 
-from yaseer.basic import dialect as dialects, formatting, runtime
-from yaseer.basic.compiler import CompiledArea, compile_area
+from yaseer.basic import dialect as dialects, formatting, program_cache, runtime
+from yaseer.basic.compiled import MAX_STACK, CompiledArea  # MAX_STACK: GOSUB returns + open FOR loops together
 from yaseer.basic.errors import (
     BasicError, BREAK, CANT_CONTINUE, DIVISION_BY_ZERO, DUPLICATE_DEFINITION,
     ILLEGAL_FUNCTION_CALL, NEXT_WITHOUT_FOR, OUT_OF_DATA, OUT_OF_MEMORY, OVERFLOW,
     RESUME_WITHOUT_ERROR, RETURN_WITHOUT_GOSUB, SUBSCRIPT_OUT_OF_RANGE, SYNTAX_ERROR,
     UNDEFINED_PROGRAM_AREA, UNDEFINED_USER_FUNCTION,
 )
-from yaseer.basic.parser import parse_line
 from yaseer.basic.scanner import split_lines
 
 
 # Resource limits (each exceeded limit is "Out of memory in N").
-from yaseer.basic.compiler import MAX_STACK  # GOSUB returns + open FOR loops together  # noqa: E402
 MAX_AREA_DEPTH = 100  # GOSUB PROG nesting
 MAX_ARRAY_ELEMENTS = 2_000_000  # per array
 MAX_TOTAL_ELEMENTS = 8_000_000  # all arrays together (about 64 MB)
@@ -147,6 +145,8 @@ def to_basic_error(exc: BaseException) -> BasicError:
 
 @lru_cache(maxsize=4096)
 def _parse_cached(number: int, text: str):
+    from yaseer.basic.parser import parse_line  # here: a program read from the cache needs no parser
+
     return parse_line(number, text)
 
 
@@ -290,14 +290,28 @@ class Machine:
         return compiled
 
     def _compile(self, area, program: dict, direct: bool = False, entry_lines=()) -> CompiledArea:
-        """Parse, compile and exec one area's program (line -> text); returns the CompiledArea."""
-        lines = [_parse_cached(number, text) for number, text in sorted(program.items())]
-        compiled = compile_area(lines, area if isinstance(area, int) else 0, direct=direct,
-                                entry_lines=entry_lines)
+        """Parse, compile and exec one area's program (line -> text); returns the CompiledArea.
+
+        A program area (not a direct statement) is looked up first in the on-disk
+        cache of compiled programs (:mod:`yaseer.basic.program_cache`) and stored
+        there after a compile."""
+        entry = None if direct else program_cache.key(area, program, entry_lines, self.dialect)
+        cached = program_cache.load(entry) if entry else None
+        if cached is not None:
+            compiled, codes = cached
+        else:
+            from yaseer.basic.compiler import compile_area
+
+            lines = [_parse_cached(number, text) for number, text in sorted(program.items())]
+            compiled = compile_area(lines, area if isinstance(area, int) else 0, direct=direct,
+                                    entry_lines=entry_lines)
+            codes = [None] * len(compiled.pieces)
         runtime_state = _AreaRuntime(self, area, compiled)
         namespace = self._namespace(area, runtime_state)
-        for first_line, text in compiled.pieces:
-            self._exec_piece(text, first_line, area, namespace)
+        codes = [self._exec_piece(text, first_line, area, namespace, code)
+                 for (first_line, text), code in zip(compiled.pieces, codes)]
+        if entry and cached is None:
+            program_cache.store(entry, compiled, codes)
         compiled.blocks = [namespace[f"_b{b}"] for b in range(compiled.block_count)]
         for name in compiled.scalars:
             self.scalars.setdefault(name, "" if name.endswith("$") else 0.0)
@@ -307,16 +321,22 @@ class Machine:
             self.namespaces[area] = namespace
         return compiled
 
-    def _exec_piece(self, text: str, first_line, area, namespace: dict) -> None:
-        """Compile one generated function; one too complex for Python becomes an error."""
+    def _exec_piece(self, text: str, first_line, area, namespace: dict, code=None):
+        """Compile (unless ``code`` is given) and run one generated function
+        definition; one too complex for Python becomes an error.  Returns its code
+        object (None for such a function)."""
         try:
-            exec(compile(text, f"<BASIC area {area}>", "exec"), namespace)
+            if code is None:
+                code = compile(text, f"<BASIC area {area}>", "exec")
+            exec(code, namespace)
+            return code
         except SyntaxError as exc:
             if "too many" not in str(exc) and "nested" not in str(exc):
                 raise BasicError(f"Internal error (generated code: {exc})", INTERNAL_ERROR) from None
-            exec(self._stub(text, first_line), namespace)
         except (RecursionError, MemoryError):
-            exec(self._stub(text, first_line), namespace)
+            pass
+        exec(self._stub(text, first_line), namespace)
+        return None
 
     @staticmethod
     def _stub(text: str, first_line) -> str:

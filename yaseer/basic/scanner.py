@@ -17,8 +17,6 @@ from __future__ import annotations
 
 import re
 
-from lark import Token
-
 from yaseer.basic.errors import BasicError, OVERFLOW, SYNTAX_ERROR
 
 # Statement and operator keywords: each is its own terminal type.
@@ -129,6 +127,8 @@ def tokenize(text: str) -> list[Token]:
 
     Raises ``BasicError("Syntax error")`` for a character no token can start with.
     """
+    from lark import Token  # here, not at the top: loading a listing (split_lines) needs no lark
+
     upper = _upper_outside_strings(text)
     tokens: list[Token] = []
     i = 0

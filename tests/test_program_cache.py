@@ -1,0 +1,133 @@
+"""The on-disk cache of compiled programs (yaseer.basic.program_cache): a warm
+run gives the same output without importing the parser; the key changes with
+the program, the area and the compiler's sources; bad entries are ignored; it
+can be switched off; it never lives in the checkout; concurrent runs are safe."""
+
+from __future__ import annotations
+
+import io
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from yaseer.basic import program_cache
+from yaseer.basic.dialect import CASIO, GW
+from yaseer.basic.machine import Machine
+
+ROOT = Path(__file__).resolve().parents[1]
+LISTING = "10 FOR I=1 TO 3: PRINT I*I;: NEXT\n20 GOSUB 100: PRINT \"END\"\n30 END\n100 PRINT \"SUB\";: RETURN\n"
+EXPECTED = " 1  4  9 SUBEND\n"  # as GW-BASIC prints it
+
+
+def run(text: str = LISTING) -> str:
+    screen = io.StringIO()
+    machine = Machine(screen=screen)
+    machine.load(text)
+    machine.run()
+    return screen.getvalue()
+
+
+@pytest.fixture
+def cache(tmp_path, monkeypatch) -> Path:
+    monkeypatch.setenv("YASEER_CACHE_DIR", str(tmp_path / "cache"))
+    return tmp_path / "cache"
+
+
+def entries(directory: Path) -> list[Path]:
+    return sorted(directory.glob("*.bin")) if directory.exists() else []
+
+
+def test_a_warm_run_reads_the_entry_and_prints_the_same(cache, monkeypatch):
+    assert run() == EXPECTED
+    assert len(entries(cache)) == 1
+    calls = []
+    monkeypatch.setattr("yaseer.basic.compiler.compile_area", lambda *a, **k: calls.append(a))
+    assert run() == EXPECTED
+    assert calls == []  # compiled program taken from the cache
+
+
+def test_a_warm_process_imports_neither_parser_nor_lark(cache):
+    listing = cache.parent / "prog.bas"
+    listing.write_text(LISTING)
+    probe = ("import sys, runpy; sys.argv = ['yaseer', 'run', sys.argv[1]]\n"
+             "try:\n    runpy.run_module('yaseer', run_name='__main__')\nexcept SystemExit:\n    pass\n"
+             "print(sorted(m for m in ('lark', 'yaseer.basic.parser', 'yaseer.basic.compiler', 'numpy')"
+             " if m in sys.modules))")
+    env = dict(os.environ, YASEER_CACHE_DIR=str(cache))
+    cold = subprocess.run([sys.executable, "-c", probe, str(listing)], capture_output=True, text=True, env=env)
+    warm = subprocess.run([sys.executable, "-c", probe, str(listing)], capture_output=True, text=True, env=env)
+    assert cold.stdout.startswith(EXPECTED) and warm.stdout.startswith(EXPECTED)
+    assert "yaseer.basic.parser" in cold.stdout.splitlines()[-1]
+    assert warm.stdout.splitlines()[-1] == "[]"
+
+
+def test_the_key_follows_program_area_entries_and_sources(cache, monkeypatch, tmp_path):
+    program = {10: "PRINT 1"}
+    base = program_cache.key(0, program)
+    assert base == program_cache.key(0, dict(program))
+    assert base != program_cache.key(0, {10: "PRINT 2"})
+    assert base != program_cache.key(0, {11: "PRINT 1"})
+    assert base != program_cache.key(1, program)
+    assert base != program_cache.key(0, program, entry_lines=(10,))
+    assert program_cache.key(0, program, dialect=CASIO) != program_cache.key(0, program, dialect=GW)
+    sources = tmp_path / "basic"
+    sources.mkdir()
+    for path in program_cache._SOURCES.iterdir():
+        if path.suffix in (".py", ".lark"):
+            (sources / path.name).write_bytes(path.read_bytes())
+    monkeypatch.setattr(program_cache, "_SOURCES", sources)
+    monkeypatch.setattr(program_cache, "_fingerprint", None)
+    assert program_cache.key(0, program) == base  # the same sources: the same key
+    (sources / "grammar.lark").write_text((sources / "grammar.lark").read_text() + "\n// edited\n")
+    monkeypatch.setattr(program_cache, "_fingerprint", None)
+    assert program_cache.key(0, program) != base  # an edited grammar invalidates every entry
+
+
+@pytest.mark.parametrize("damage", [b"", b"not marshal data", b"\x00" * 40])
+def test_a_damaged_entry_is_ignored_and_replaced(cache, damage):
+    assert run() == EXPECTED
+    (entry,) = entries(cache)
+    entry.write_bytes(damage)
+    assert program_cache.load(entry.stem) is None
+    assert run() == EXPECTED
+    assert program_cache.load(entry.stem) is not None  # rewritten
+
+
+def test_an_entry_under_another_name_is_not_taken(cache):
+    assert run() == EXPECTED
+    (entry,) = entries(cache)
+    other = "f" * len(entry.stem)
+    (cache / f"{other}.bin").write_bytes(entry.read_bytes())
+    assert program_cache.load(other) is None  # it carries its own key
+
+
+def test_an_empty_cache_dir_switches_the_cache_off(tmp_path, monkeypatch):
+    monkeypatch.setenv("YASEER_CACHE_DIR", "")
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    assert program_cache.key(0, {10: "PRINT 1"}) is None
+    assert run() == EXPECTED
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_the_default_place_is_the_user_cache_not_the_checkout(tmp_path, monkeypatch):
+    monkeypatch.delenv("YASEER_CACHE_DIR", raising=False)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
+    assert program_cache.cache_dir() == tmp_path / "yaseer" / "compiled"
+    monkeypatch.delenv("XDG_CACHE_HOME")
+    assert ROOT not in program_cache.cache_dir().parents
+    assert program_cache.cache_dir() == Path.home() / ".cache" / "yaseer" / "compiled"
+
+
+def test_concurrent_first_runs_all_print_right_and_leave_one_entry(cache, tmp_path):
+    listing = tmp_path / "prog.bas"
+    listing.write_text(LISTING)
+    env = dict(os.environ, YASEER_CACHE_DIR=str(cache))
+    processes = [subprocess.Popen([sys.executable, "-m", "yaseer", "run", str(listing)], stdout=subprocess.PIPE,
+                                  text=True, env=env, cwd=str(ROOT)) for _ in range(6)]
+    outputs = [process.communicate(timeout=120)[0] for process in processes]
+    assert outputs == [EXPECTED] * 6
+    assert len(entries(cache)) == 1
+    assert [path.name for path in cache.iterdir() if not path.name.endswith(".bin")] == []  # no temporary left

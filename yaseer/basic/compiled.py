@@ -1,0 +1,41 @@
+"""The compiled form of one program area (what ``compiler.compile_area`` returns).
+
+Kept apart from the compiler so that a program read back from the on-disk cache
+(:mod:`yaseer.basic.program_cache`) needs neither the parser nor the compiler.
+"""
+
+from __future__ import annotations
+
+MAX_STACK = 10_000  # GOSUB returns + open FOR loops (machine.MAX_STACK)
+
+
+class CompiledArea:
+    """The compiled form of one program area.
+
+    ``source`` the generated Python text; ``pieces`` [(first BASIC line or None,
+    source of one function)]; ``line_blocks`` BASIC line -> block starting there;
+    ``block_next`` block -> block of the statement after it (RESUME NEXT);
+    ``data`` [(DATA item text, line)]; ``data_lines`` line -> index of its first
+    item; ``scalars`` every scalar name used; ``blocks`` the block functions
+    (filled in by the machine after it executes the source).
+    """
+
+    FIELDS = ("source", "pieces", "block_count", "line_blocks", "block_next", "data", "data_lines",
+              "scalars", "first_line")
+
+    def __init__(self, source, pieces, block_count, line_blocks, block_next, data, data_lines,
+                 scalars, first_line=None):
+        self.source, self.pieces, self.block_count = source, pieces, block_count
+        self.line_blocks, self.block_next = line_blocks, block_next
+        self.data, self.data_lines, self.scalars = data, data_lines, scalars
+        self.first_line = first_line
+        self.blocks: list = []
+
+    def as_plain(self) -> tuple:
+        """The fields as plain Python data (what ``marshal`` can store)."""
+        return tuple(getattr(self, name) for name in self.FIELDS)
+
+    @classmethod
+    def from_plain(cls, fields: tuple) -> "CompiledArea":
+        """The inverse of :meth:`as_plain`."""
+        return cls(*fields)

@@ -1,0 +1,104 @@
+"""An on-disk cache of compiled program areas, so a listing run again starts
+without parsing or compiling it (and without importing lark).
+
+Key: a BLAKE2 hash of the area's lines and every other input of the compile
+(area number, extra entry lines, the machine's dialect), of yaseer's version, of the Python that
+runs it (bytecode is version-specific), and of the text of every source file
+that turns text into compiled code (``yaseer/basic/*.py`` and ``grammar.lark``),
+so editing the grammar or the compiler invalidates every entry.  Value: the
+:class:`~yaseer.basic.compiled.CompiledArea` fields and the code object of each
+generated function, stored with :mod:`marshal`.
+
+Where: ``$YASEER_CACHE_DIR`` if set (empty: no cache), else
+``$XDG_CACHE_HOME/yaseer/compiled`` (default ``~/.cache/yaseer/compiled``);
+never inside the checkout.  Safe under concurrent runs: an entry is written to
+a temporary file in the same directory and renamed into place (atomic), and an
+entry that cannot be read or does not carry its own key is ignored.  Any
+OSError (read-only home, full disk) just means no cache.
+"""
+
+from __future__ import annotations
+
+import marshal
+import os
+import sys
+from pathlib import Path
+
+try:  # the built-in module: hashlib would load OpenSSL (~10 ms of start-up)
+    from _blake2 import blake2b
+except ImportError:  # pragma: no cover - other Pythons
+    from hashlib import blake2b
+
+import yaseer
+from yaseer.basic.compiled import CompiledArea
+
+FORMAT = 1  # bump when the stored layout changes
+_SOURCES = Path(__file__).resolve().parent  # yaseer/basic: scanner, grammar, parser, compiler, ...
+
+
+def cache_dir() -> Path | None:
+    """The directory of the cache, or None when it is switched off."""
+    configured = os.environ.get("YASEER_CACHE_DIR")
+    if configured is not None:
+        return Path(configured) if configured else None
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "yaseer" / "compiled"
+
+
+_fingerprint: bytes | None = None
+
+
+def toolchain_fingerprint() -> bytes:
+    """The hash of yaseer's version, the Python, and the compiler's source files."""
+    global _fingerprint
+    if _fingerprint is None:
+        digest = blake2b(f"{FORMAT} {yaseer.__version__} {sys.version} {sys.implementation.cache_tag}".encode())
+        for path in sorted(_SOURCES.iterdir()):
+            if path.suffix in (".py", ".lark"):
+                digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
+        _fingerprint = digest.digest()
+    return _fingerprint
+
+
+def key(area, program: dict[int, str], entry_lines=(), dialect=None) -> str | None:
+    """The cache key of compiling ``program`` (line -> text) as ``area`` in
+    ``dialect`` (its repr: every field); None when the cache is switched off or
+    its sources cannot be read."""
+    if cache_dir() is None:
+        return None
+    try:
+        digest = blake2b(toolchain_fingerprint())
+    except OSError:
+        return None
+    digest.update(repr((area, sorted(entry_lines), dialect)).encode())
+    for number, text in sorted(program.items()):
+        digest.update(f"{number}\0{text}\0".encode("utf-8", "surrogatepass"))
+    return digest.hexdigest()
+
+
+def load(entry: str) -> tuple[CompiledArea, list] | None:
+    """The compiled area and its code objects stored under ``entry``, or None."""
+    try:
+        data = (cache_dir() / f"{entry}.bin").read_bytes()
+        stored_key, fields, codes = marshal.loads(data)
+    except (OSError, EOFError, ValueError, TypeError):
+        return None
+    if stored_key != entry or len(codes) != len(fields[1]):
+        return None
+    return CompiledArea.from_plain(fields), codes
+
+
+def store(entry: str, compiled: CompiledArea, codes: list) -> None:
+    """Keep ``compiled`` and its code objects (None for a piece that could not be
+    compiled) under ``entry``; failures are ignored."""
+    directory = cache_dir()
+    temporary = directory / f".{entry}.{os.getpid()}.tmp"
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+        temporary.write_bytes(marshal.dumps((entry, compiled.as_plain(), codes)))
+        os.replace(temporary, directory / f"{entry}.bin")
+    except (OSError, ValueError):
+        try:
+            temporary.unlink()
+        except OSError:
+            pass
