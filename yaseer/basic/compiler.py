@@ -173,6 +173,17 @@ def _print_chunks(parts: list) -> list:
     return chunks
 
 
+def _seed_kind(node) -> str:
+    """The BASIC type RANDOMIZE sees its argument stored as: "%" for an integer variable
+    or an unsigned integer literal up to 32767, "#" for a double variable, else "!"
+    (PC-BASIC 2.0.8 treats ``-1`` and ``0-1`` as single here)."""
+    if isinstance(node, ast.Num):
+        return "%" if node.value == int(node.value) and 0 <= node.value <= 32767 else "!"
+    if isinstance(node, (ast.Var, ast.Elem)) and node.name[-1:] in ("%", "#"):
+        return node.name[-1]
+    return "!"
+
+
 def _simple_operand(code: str) -> bool:
     return code.replace("_", "a").replace("[", "").replace("]", "").isalnum()
 
@@ -563,7 +574,7 @@ class AreaCompiler:
 
     def stmt_Randomize(self, stmt, scope):
         seed = "None" if stmt.seed is None else self.numeric(stmt.seed, scope)
-        self.emit(f"_randomize({seed})")
+        self.emit(f"_randomize({seed}, {_seed_kind(stmt.seed)!r})")
 
     def stmt_Angle(self, stmt, scope):
         self.emit(f"_M.set_angle({stmt.mode!r})")

@@ -21,6 +21,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from yaseer.basic.randomness import GwRandom, RepeatableRandom
+
 # The paper's universal line 2: these arrays exist with these sizes from the start
 # (one dimension, subscripts 0..size).
 AL_YASEER_DIMENSIONS = (
@@ -60,6 +62,10 @@ class Dialect:
         GW-BASIC, changed with ``WIDTH n``).
         ``zone``: columns per ``,`` print zone (14 in both).
 
+        ``random``: the class of RND's generator (yaseer/basic/randomness.py):
+        ``RepeatableRandom`` (Python's, seed 0 at RUN) or ``GwRandom``
+        (GW-BASIC's own 24-bit sequence, as PC-BASIC reproduces it).
+
     Run-time error policy
         ``on_division_by_zero`` and ``on_overflow``: ``"stop"`` ends the run
         with the error (Casio); ``"continue"`` prints GW-BASIC's message and
@@ -91,6 +97,7 @@ class Dialect:
     implicit_arrays: tuple[tuple[str, int], ...]
     default_dimension: int
     program_areas: bool
+    random: type = RepeatableRandom
 
     def implicit_size(self, name: str, ndim: int) -> int:
         """The largest subscript of array ``name`` with ``ndim`` dimensions used without DIM."""
@@ -110,7 +117,7 @@ CASIO = Dialect(
 GW = Dialect(
     name="gw", keyword_first=False, pi_keyword=False, typed_numbers=True, print_digits=7,
     width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
-    implicit_arrays=(), default_dimension=10, program_areas=False,
+    implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

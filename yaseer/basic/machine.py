@@ -21,7 +21,6 @@ from __future__ import annotations
 import contextlib
 import csv
 import math
-import random
 import signal
 import sys
 from functools import lru_cache
@@ -235,8 +234,7 @@ class Machine:
         self.area_depth = 0
         self.frame_body = 0
         self.angle = self.default_angle
-        self.random = random.Random(0)
-        self.last_random = 0.0
+        self.random = self.dialect.random()
         self._extra_entries: set[int] = set()
         self.array_elements = 0  # elements in all arrays (MAX_TOTAL_ELEMENTS)
         self.pending_row: list = []  # csv values of a PRINT statement printed in parts
@@ -623,7 +621,7 @@ class Machine:
         self.cont_point = None
         self.area_depth = 0
         self.set_angle(self.default_angle)
-        self.random = random.Random(0)
+        self.random.reset()
 
     def run(self, line: int | None = None) -> str:
         """RUN (from ``line``): returns "end" or "stop"; raises BasicError on an error."""
@@ -806,14 +804,11 @@ class Machine:
 
     def rnd(self, x: float = 1.0) -> float:
         """RND(x): x > 0 the next number, 0 the last again, x < 0 reseeds with x first."""
-        if x < 0:
-            self.random.seed(x)
-        if x != 0:
-            self.last_random = self.random.random()
-        return self.last_random
+        return self.random.rnd(x)
 
-    def randomize(self, seed) -> None:
-        self.random.seed(seed)
+    def randomize(self, seed, kind: str = "!") -> None:
+        """RANDOMIZE seed; ``kind`` is the seed's type ("%", "!", "#", see yaseer.basic.randomness)."""
+        self.random.randomize(seed, kind)
 
     def end_line(self) -> None:
         """Finish a partly printed screen line (before an error message, as MS-BASIC does)."""
