@@ -74,3 +74,21 @@ def test_repeatable_generator_restarts_at_reset():
     assert [r.rnd() for _ in range(3)] == first
     assert r.rnd(0) == first[-1]  # RND(0) repeats the last number
     assert r.rnd() != first[-1]
+
+
+def _gw_screen(program: str, answers: str = "") -> str:
+    import io
+
+    from yaseer.basic.machine import Machine
+
+    screen = io.StringIO()
+    machine = Machine(screen=screen, dialect="gw", input_stream=io.StringIO(answers))
+    machine.load(program)
+    machine.run()
+    return screen.getvalue()
+
+
+def test_gw_machine_uses_gw_sequence_and_randomize_alone_asks():
+    assert _gw_screen("10 PRINT RND * 16777216") == _gw_screen("10 PRINT 2035917")
+    asked = _gw_screen("10 RANDOMIZE: PRINT RND * 16777216", "5\n")
+    assert asked == "Random number seed (-32768 to 32767)? 5\n" + _gw_screen("10 PRINT 593500")

@@ -807,7 +807,15 @@ class Machine:
         return self.random.rnd(x)
 
     def randomize(self, seed, kind: str = "!") -> None:
-        """RANDOMIZE seed; ``kind`` is the seed's type ("%", "!", "#", see yaseer.basic.randomness)."""
+        """RANDOMIZE seed; ``kind`` is the seed's type ("%", "!", "#", see yaseer.basic.randomness).
+
+        Without a seed a generator with a ``seed_prompt`` (GW-BASIC's) asks for one
+        on the screen and reads it as INPUT does, rounded to an integer.
+        """
+        if seed is None and self.random.seed_prompt is not None:
+            seed, kind = runtime.cint(self.input_values(self.random.seed_prompt, False, "n")[0]), "%"
+            if not -32768 <= seed <= 32767:
+                runtime.overflow()
         self.random.randomize(seed, kind)
 
     def end_line(self) -> None:

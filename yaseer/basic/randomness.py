@@ -30,6 +30,8 @@ _RESEED_STRIDE = 0x43FD00  # RANDOMIZE n moves the state by n times this
 class RepeatableRandom:
     """The Casio dialect's RND: Mersenne Twister, seed 0 at RUN (no Casio sequence is documented)."""
 
+    seed_prompt = None  # RANDOMIZE alone seeds from the system
+
     def __init__(self) -> None:
         self.reset()
 
@@ -51,6 +53,9 @@ class RepeatableRandom:
 
 class GwRandom:
     """GW-BASIC's RND (see the module docstring); ``state`` is the 24-bit state."""
+
+    # RANDOMIZE alone asks for the seed (an integer) with this prompt
+    seed_prompt = "Random number seed (-32768 to 32767)? "
 
     def __init__(self) -> None:
         self.reset()
