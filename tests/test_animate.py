@@ -15,11 +15,10 @@ import sys
 
 import pytest
 
+from yaseer.api import _Output
 from yaseer.animation import (
     AnimationError,
-    AreaInterceptor,
     Frame,
-    LineTap,
     Recorder,
     build_scene,
     distance,
@@ -35,6 +34,7 @@ class StandInMachine:
         self.arrays = {}
         self.scalars = {}
         self.areas = {}
+        self.area_hooks = []
 
     def array(self, name):
         return self.arrays.setdefault(name, [0.0] * 60)
@@ -50,6 +50,8 @@ class StandInMachine:
 
     def gosub_prog(self, number):
         self.areas[number](self)
+        for hook in self.area_hooks:
+            hook(self, number)
 
 
 def slider_crank_area(machine):
@@ -79,9 +81,10 @@ def run_cycle(angles, e=2.0, a=3.0, b=8.0, print_heading=True, calls_per_line=1,
     """A 'listing': heading, then per angle PROG 1 (and PROG 5 on the rod point) and one printed line."""
     recorder = Recorder()
     machine = StandInMachine()
-    install_stand_ins(AreaInterceptor(machine, recorder))
+    install_stand_ins(machine)
+    machine.area_hooks.append(recorder.hook)
     machine.array("R")[4], machine.array("H")[4] = rod_point
-    tap = LineTap(recorder.line_printed)
+    tap = _Output(None, keep=True, on_line=recorder.line_printed)
     if print_heading:
         tap.write("  QQ      X(2)\n")
     L, T, X, Y = (machine.array(n) for n in "LTXY")
@@ -100,7 +103,7 @@ def test_each_printed_line_closes_a_frame_and_headings_are_not_frames():
     frames, tap = run_cycle([10.0, 40.0, 70.0])
     assert [f.crank_angle for f in frames] == [10.0, 40.0, 70.0]
     assert frames[1].printed == "  40.0 " + f"{3 * math.cos(math.radians(40)) + math.sqrt(64 - (3 * math.sin(math.radians(40)) + 2) ** 2):8.3f}"
-    assert tap.lines[0] == "  QQ      X(2)"
+    assert tap.text.splitlines()[0] == "  QQ      X(2)"
 
 
 def test_recorded_joints_satisfy_the_linkage_constraints():
@@ -124,7 +127,8 @@ def test_repeated_calls_with_the_same_geometry_are_drawn_once():
 def test_virtual_link_is_dashed_and_a_crank_on_it_is_too():
     recorder = Recorder()
     machine = StandInMachine()
-    install_stand_ins(AreaInterceptor(machine, recorder))
+    install_stand_ins(machine)
+    machine.area_hooks.append(recorder.hook)
     L, T, X, Y = (machine.array(n) for n in "LTXY")
     X[10], Y[10] = 3.0, 4.0
     machine.gosub_prog(5)
@@ -143,7 +147,8 @@ def test_virtual_link_is_dashed_and_a_crank_on_it_is_too():
 def test_lines_without_new_calls_join_the_frame_and_trailing_calls_make_a_last_frame():
     recorder = Recorder()
     machine = StandInMachine()
-    install_stand_ins(AreaInterceptor(machine, recorder))
+    install_stand_ins(machine)
+    machine.area_hooks.append(recorder.hook)
     machine.array("L")[2:4] = [3.0, 8.0]
     machine.gosub_prog(1)
     recorder.line_printed("first")
@@ -284,9 +289,9 @@ def test_a_long_render_shows_progress_on_the_given_stream(tmp_path, monkeypatch)
     assert "3/3" in stream.getvalue()
 
 
-def test_linetap_hands_on_lines_and_a_last_partial_line():
+def test_the_output_stream_hands_on_lines_and_a_last_partial_line():
     seen = []
-    tap = LineTap(seen.append)
+    tap = _Output(None, keep=False, on_line=seen.append)
     tap.write("a\nb")
     tap.write("c\n\n")
     tap.write("end")

@@ -16,7 +16,7 @@ import pytest
 
 from test_animate import StandInMachine
 from yaseer import binding
-from yaseer.animation import AreaInterceptor, Recorder, distance, polar
+from yaseer.animation import Recorder, distance, polar
 
 ANGLES = [0.1 + 15.0 * k for k in range(24)]
 
@@ -25,7 +25,8 @@ def recorded(setup, area, angles=ANGLES):
     """Call ``area`` once per crank angle after ``setup(machine, angle)``; one frame each."""
     recorder = Recorder()
     machine = StandInMachine()
-    binding.install(AreaInterceptor(machine, recorder))
+    binding.install(machine)
+    machine.area_hooks.append(recorder.hook)
     for angle in angles:
         setup(machine, angle)
         machine.gosub_prog(area)

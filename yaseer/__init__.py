@@ -4,6 +4,26 @@ Flow: source text -> tokens (``basic.scanner``) -> AST (``basic.parser``) ->
 compiled program (``basic.compiler``) -> machine state (``basic.machine``) -> output.
 The numerics live in ``linkages`` and know nothing of BASIC; ``binding`` maps
 ``GOSUB PROG n`` to them.
+
+From Python: ``yaseer.run(listing, ...)`` (see ``yaseer.api``); in Jupyter:
+``%load_ext yaseer`` then ``%%basic`` (see ``yaseer.jupyter``).  Importing this
+package imports nothing else: ``run`` and ``Result`` are loaded on first use.
 """
 
 __version__ = "0.1.0"
+__all__ = ["run", "Result", "load_ipython_extension"]
+
+
+def __getattr__(name: str):
+    if name in ("run", "Result"):
+        from yaseer import api
+
+        return getattr(api, name)
+    raise AttributeError(f"module 'yaseer' has no attribute {name!r}")
+
+
+def load_ipython_extension(ipython) -> None:
+    """``%load_ext yaseer``: register the ``%basic`` / ``%%basic`` magics."""
+    from yaseer.jupyter import load_ipython_extension as load
+
+    load(ipython)

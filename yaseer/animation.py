@@ -1,7 +1,6 @@
 """Animating a listing's mechanism from the positions its programs computed.
 
-Recording: :class:`Recorder` wraps the Python program areas that
-``yaseer.binding.install`` registers.  After each ``GOSUB PROG n`` it reads
+Recording: :class:`Recorder` is a machine area hook.  After each ``GOSUB PROG n`` it reads
 back, from the machine's arrays, the joints that program's inputs and outputs
 imply — lengths and angles it was given or computed, never a second solve —
 as a :class:`Snapshot`.  A :class:`Frame` is everything recorded between two
@@ -227,24 +226,20 @@ SNAPSHOTS: dict[int, Callable[[object], Snapshot]] = {
 
 
 class Recorder:
-    """Collects frames during a run: wrap the areas, then feed it the printed lines."""
+    """Collects frames during a run: register :meth:`hook` in ``machine.area_hooks``, feed it printed lines."""
 
     def __init__(self) -> None:
         self.frames: list[Frame] = []
         self._pending: list[Snapshot] = []
 
-    def wrap(self, area_number: int, area):
-        """The area, recording a snapshot after each call (unknown areas unchanged)."""
+    def hook(self, machine, area_number: int) -> None:
+        """After ``GOSUB PROG n`` returned: record the geometry of program n (other areas: nothing).
+
+        A call that fails raises before the hooks run, so it records nothing.
+        """
         reader = SNAPSHOTS.get(area_number)
-        if reader is None or not callable(area):
-            return area
-
-        def recorded(machine) -> None:
-            area(machine)
+        if reader is not None:
             self._pending.append(reader(machine))
-
-        recorded.__doc__ = getattr(area, "__doc__", None)
-        return recorded
 
     def line_printed(self, text: str) -> None:
         """A line was printed: it closes the frame of the calls since the last one.
@@ -266,62 +261,35 @@ class Recorder:
         return [prepare_frame(frame) for frame in self.frames]
 
 
-class AreaInterceptor:
-    """Stands in for the machine during ``binding.install``: areas set through it are wrapped."""
-
-    def __init__(self, machine, recorder: Recorder) -> None:
-        self._machine = machine
-        self._recorder = recorder
-
-    def set_area(self, number: int, area) -> None:
-        """Register ``area`` in the real machine, wrapped by the recorder."""
-        self._machine.set_area(number, self._recorder.wrap(number, area))
-
-    def __getattr__(self, name: str):
-        return getattr(self._machine, name)
-
-
-class LineTap:
-    """A text stream that hands each completed line to ``on_line`` (and keeps it)."""
-
-    def __init__(self, on_line: Callable[[str], None]) -> None:
-        self._on_line = on_line
-        self._partial = ""
-        self.lines: list[str] = []
-
-    def write(self, text: str) -> int:
-        """Take text; every newline completes a line."""
-        self._partial += text
-        while "\n" in self._partial:
-            line, self._partial = self._partial.split("\n", 1)
-            self.lines.append(line)
-            self._on_line(line)
-        return len(text)
-
-    def flush(self) -> None:
-        """Nothing to flush: lines are handed on as they complete."""
-
-    def close_line(self) -> None:
-        """Hand on a last line that has no newline."""
-        if self._partial:
-            self.write("\n")
-
-    def isatty(self) -> bool:
-        """Not a terminal."""
-        return False
-
-
 @dataclass
 class Recording:
     """The frames of one run and the BASIC error that stopped it (None: it ran to its end)."""
 
     frames: list[Frame]
     error: Exception | None = None
+    title: str = ""
 
 
-def record_run(text: str, methods: dict[int, str] | None = None, progress_file=None,
-               angle: str = "deg") -> Recording:
-    """Run the listing ``text`` once, recording its frames (see :class:`Recorder`).
+class _LineCounter:
+    """A text stream that only counts lines into a progress bar."""
+
+    def __init__(self, progress) -> None:
+        self._progress = progress
+
+    def write(self, text: str) -> int:
+        self._progress.update(text.count("\n"))
+        return len(text)
+
+    def flush(self) -> None:
+        """Nothing is kept."""
+
+    def isatty(self) -> bool:
+        return False
+
+
+def record_run(listing, methods: dict[int, str] | None = None, progress_file=None,
+               angle: str | None = None) -> Recording:
+    """Run ``listing`` (a path or the program text) once through :func:`yaseer.run`, keeping its frames.
 
     PRINT and LPRINT output both close frames.  A BASIC error (syntax, run
     time, a mechanism that cannot be assembled) ends the run: the frames
@@ -330,33 +298,12 @@ def record_run(text: str, methods: dict[int, str] | None = None, progress_file=N
     lines appears on stderr if the run takes more than a second.  ``angle``
     is the unit of the trigonometric functions, as ``yaseer run --angle``.
     """
-    from yaseer.basic.errors import BasicError
+    from yaseer.api import run
     from yaseer.progress import bar
-    from yaseer.session import create_machine
 
-    recorder = Recorder()
-    error = None
     with bar(None, "running", "line", file=progress_file) as progress:
-
-        def on_line(line: str) -> None:
-            recorder.line_printed(line)
-            progress.update(1)
-
-        tap = LineTap(on_line)
-
-        def install(machine, chosen):
-            from yaseer import binding
-
-            binding.install(AreaInterceptor(machine, recorder), chosen)
-
-        try:
-            machine = create_machine(tap, tap, methods, install, angle)
-            machine.load(text)
-            machine.run()
-        except BasicError as stopped:
-            error = stopped
-        tap.close_line()
-    return Recording(recorder.finish(), error)
+        result = run(listing, method=methods, angle=angle, screen=_LineCounter(progress))
+    return Recording(result.frames, result.exception, result.title)
 
 
 def record_listing(text: str, methods: dict[int, str] | None = None, progress_file=None) -> list[Frame]:
@@ -694,6 +641,33 @@ def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0
         painter.close()
     WRITERS[suffix](images, out, fps)
     return len(images)
+
+
+def player(frames: Sequence[Frame], title: str = "", fps: float = 6.0, max_frames: int = MAX_FRAMES):
+    """A matplotlib ``FuncAnimation`` of the frames (``.to_jshtml()`` for a notebook, ``.save()`` for a file).
+
+    Its figure is a free-standing ``matplotlib.figure.Figure`` (not pyplot's), so
+    a notebook does not also show it as a still.
+    """
+    from matplotlib.animation import FuncAnimation
+    from matplotlib.figure import Figure
+
+    scene = build_scene(frames)
+    width, height, bottom, top = _figure_layout(scene)
+    figure = Figure(figsize=(width, height), dpi=90)
+    figure.subplots_adjust(left=0.1, right=0.97, top=1.0 - top / height, bottom=bottom / height)
+    ax = figure.add_subplot()
+    draw_background(ax, scene)
+    shown: list = []
+
+    def update(number: int) -> list:
+        for artist in shown:
+            artist.remove()
+        shown[:] = draw_moving(ax, scene, number, title)
+        return shown
+
+    return FuncAnimation(figure, update, frames=frames_to_paint(len(scene.frames), max_frames),
+                         interval=1000.0 / fps, blit=False)
 
 
 def _paint_all(painter: _Painter, numbers: list[int], progress_file) -> list:

@@ -32,6 +32,8 @@ UNDEFINED_USER_FUNCTION = 18
 NO_RESUME = 19
 RESUME_WITHOUT_ERROR = 20
 FOR_WITHOUT_NEXT = 26
+FILE_NOT_FOUND = 53
+DEVICE_IO_ERROR = 57
 UNDEFINED_PROGRAM_AREA = 252  # yaseer's own: GOSUB PROG n with nothing in area n
 BREAK = 253  # yaseer's own: Ctrl-C (not trappable)
 

@@ -241,6 +241,11 @@ class Machine:
         # Called as hook(machine, n) after every GOSUB PROG n returns (e.g. to record a
         # mechanism's positions for an animation); machine.line is the calling line.
         self.area_hooks: list[Callable] = []
+        # Called as hook(device, values) when a printed line ends (device 0 PRINT, 1 LPRINT;
+        # values: the numbers (float) and strings the line printed, in order). Only
+        # collected while a hook is registered (yaseer.api keeps the printed rows).
+        self.line_hooks: list[Callable] = []
+        self._line_values: tuple[list, list] = ([], [])
 
     # ------------------------------------------------------------ programs
     def load(self, text: str, area: int = 0) -> None:
@@ -721,6 +726,9 @@ class Machine:
         collect the values of the whole statement).
         """
         stream = self.streams[device]
+        if self.line_hooks:
+            self._note_values(device, [_printed_value(v) for v in items if not isinstance(v, (Tab, Spc))
+                                       and v is not COMMA], newline)
         if self.csv:
             for v in items:
                 if type(v) is not float and type(v) is not str:
@@ -770,6 +778,8 @@ class Machine:
         for v in values:
             if type(v) is float and v - v:
                 runtime.overflow()
+        if self.line_hooks:
+            self._note_values(device, values, newline)
         if self.csv:
             if newline is not False or values:
                 self._csv_row(stream, [repr(v) if type(v) is float else v for v in values])
@@ -777,6 +787,16 @@ class Machine:
         stream.write(formatting.using(fmt, values))
         if newline:
             stream.write("\n")
+
+    def _note_values(self, device: int, values: list, newline) -> None:
+        """Collect a printed line's values; at its end hand them to the line hooks."""
+        line = self._line_values[device]
+        line.extend(values)
+        if newline:
+            printed = line.copy()
+            line.clear()
+            for hook in self.line_hooks:
+                hook(device, printed)
 
     def _csv_row(self, stream: OutputStream, values: list) -> None:
         writer = csv.writer(stream.stream, lineterminator="\n")
@@ -845,6 +865,11 @@ def _interrupt_handler(handler):
     finally:
         if installed:
             signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
+def _printed_value(value):
+    """A printed item as a line hook sees it: str stays, any number becomes a float."""
+    return value if type(value) is str else float(value)
 
 
 def _as_number(value):

@@ -20,7 +20,8 @@ def add_arguments(parser) -> None:
     parser.add_argument("--out", help="FILE.gif (default), .html, .mp4 (H.264 via ffmpeg) or .png (one frame)")
     parser.add_argument("--fps", type=float, default=6.0, help="frames per second (default 6)")
     parser.add_argument("--frame", type=int, default=0, help="with --out FILE.png: which frame (from 0)")
-    parser.add_argument("--title", default=None, help="a title over every frame (default: the file name)")
+    parser.add_argument("--title", default=None,
+                        help="a title over every frame (default: the paper's title, or the listing's first REM)")
     parser.add_argument("--max-frames", type=int, default=360,
                         help="show at most this many evenly spaced frames of a long run (default 360)")
     parser.add_argument("--angle", choices=("deg", "rad"), default="deg",
@@ -42,11 +43,10 @@ def main(args) -> int:
     out = Path(args.out) if args.out else Path(listing.stem + ".gif")
     try:
         methods = parse_methods(args.method)
-        text = listing.read_text(encoding="utf-8", errors="replace")
-        recording = record_run(text, methods, angle=args.angle)
+        recording = record_run(listing, methods, angle=args.angle)
         if recording.error is not None and not recording.frames:
             raise recording.error
-        count = render(recording.frames, out, title=args.title if args.title is not None else listing.name,
+        count = render(recording.frames, out, title=args.title if args.title is not None else recording.title,
                        fps=args.fps, frame_number=args.frame, max_frames=args.max_frames)
     except FileNotFoundError as error:
         print(f"File not found: {error.filename or listing}", file=sys.stderr)

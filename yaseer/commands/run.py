@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from pathlib import Path
 
 
 def _area_file(text: str) -> tuple[int, str]:
@@ -45,61 +46,32 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="the method library program N uses (passed to yaseer.binding.install)")
 
 
-def _read(path: str) -> str:
-    with open(path, encoding="utf-8", errors="replace") as handle:
-        return handle.read()
-
-
 def main(args: argparse.Namespace) -> int:
-    from yaseer.basic.machine import Machine
+    """Run through :func:`yaseer.run`, streaming the output; the one error line and the exit status."""
+    from yaseer.api import run
     from yaseer.progress import output_progress
 
-    printer = input_stream = None
     try:
-        source = _read(args.file)
-        areas = {n: _read(path) for n, path in args.prog}
-        if args.printer:
-            printer = open(args.printer, "w", encoding="utf-8")
-        if args.input:
-            input_stream = open(args.input, encoding="utf-8")
+        printer = open(args.printer, "w", encoding="utf-8") if args.printer else None
     except OSError as exc:
         print(f"yaseer run: {exc.filename}: {exc.strerror}", file=sys.stderr)
         return 1
-    # A line counter on stderr for a long run whose output goes to a file or pipe.
-    with output_progress(sys.stdout) as screen:
-        return _run(Machine(screen=screen, printer=printer, output_format=args.format,
-                            angle=args.angle, input_stream=input_stream, dialect=args.dialect),
-                    source, areas, args, printer, input_stream)
-
-
-def _run(machine, source: str, areas: dict[int, str], args: argparse.Namespace, printer, input_stream) -> int:
-    """Load, bind and run; the one error line and exit status."""
-    from yaseer import binding
-    from yaseer.basic.errors import BasicError
-
     try:
-        machine.load(source)
-        binding.install(machine, dict(args.method) or None)
-        for n, text in areas.items():
-            machine.set_area(n, text)
-        outcome = machine.run()
-    except BasicError as err:
-        machine.end_line()
-        machine.flush()
-        print(str(err), file=sys.stderr)
-        return 1
+        # A line counter on stderr for a long run whose output goes to a file or pipe.
+        with output_progress(sys.stdout) as screen:
+            result = run(args.file, method=dict(args.method), prog=dict(args.prog),
+                         input=Path(args.input) if args.input else sys.stdin, angle=args.angle,
+                         dialect=args.dialect, screen=screen, printer=printer, output_format=args.format, keep=False)
     except BrokenPipeError:  # the reader went away (e.g. `| head`): stop quietly
         import os
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
-    except KeyboardInterrupt:
-        machine.flush()
-        print(f"Break in {machine.line}" if machine.line is not None else "Break", file=sys.stderr)
-        return 1
     finally:
-        for handle in (printer, input_stream):
-            if handle is not None:
-                handle.close()
-    if outcome == "stop":
-        print(f"Break in {machine.line}", file=sys.stderr)
+        if printer is not None:
+            printer.close()
+    if result.error is not None:
+        print(result.error, file=sys.stderr)
+        return 1
+    if result.status == "stop":
+        print(f"Break in {result.line}", file=sys.stderr)
     return 0

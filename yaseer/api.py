@@ -1,0 +1,278 @@
+"""``yaseer.run``: run a BASIC listing from Python and get its screen, rows, error and frames.
+
+    >>> import yaseer
+    >>> result = yaseer.run("listings/example1.bas", method={5: "paper"})
+    >>> result.text          # the screen, as printed
+    >>> result.rows          # the printed rows: a 2-D array (names: result.rows.names)
+    >>> result.error         # None, or the one error line ("Division by zero in 20")
+    >>> result.frames        # the mechanism's positions, one frame per printed line
+    >>> result.plot()        # a matplotlib Figure of the printed columns
+    >>> result.animate()     # a matplotlib animation of the mechanism
+
+This is the one way a listing runs: ``yaseer run``, ``plot``, ``animate``, ``report``
+and the Jupyter magic all call :func:`run`.  Importing this module imports neither
+numpy nor matplotlib; ``rows``, ``plot()`` and ``animate()`` import them when used.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import IO, Mapping, Union
+
+Listing = Union[str, "os.PathLike[str]"]
+
+_LINE_NUMBER = re.compile(r"\s*\d")
+
+
+class _Output:
+    """The machine's output stream: forwards to ``stream`` (if any), keeps the text, reports lines.
+
+    ``on_line(text)`` is called with every completed line (the animation's frames
+    close on printed lines).
+    """
+
+    def __init__(self, stream: IO[str] | None, keep: bool, on_line=None) -> None:
+        self._stream = stream
+        self._parts: list[str] | None = [] if keep else None
+        self._on_line = on_line
+        self._partial = ""
+
+    def write(self, text: str) -> int:
+        if self._stream is not None:
+            self._stream.write(text)
+        if self._parts is not None:
+            self._parts.append(text)
+        if self._on_line is not None:
+            self._partial += text
+            while "\n" in self._partial:
+                line, self._partial = self._partial.split("\n", 1)
+                self._on_line(line)
+        return len(text)
+
+    def close_line(self) -> None:
+        """Report a last line that has no newline."""
+        if self._on_line is not None and self._partial:
+            self._on_line(self._partial)
+            self._partial = ""
+
+    def flush(self) -> None:
+        if self._stream is not None:
+            self._stream.flush()
+
+    def isatty(self) -> bool:
+        return bool(self._stream is not None and self._stream.isatty())
+
+    @property
+    def text(self) -> str:
+        return "".join(self._parts or ())
+
+
+@dataclass
+class Result:
+    """What one run of a listing gave.
+
+    ``text``: the screen as printed (PRINT, and LPRINT unless a printer stream
+    was given).  ``error``: the one BASIC error line that stopped the run, or
+    None.  ``status``: ``"end"``, ``"stop"`` (STOP), or ``"error"`` (``Break``
+    after Ctrl-C is an error line too).  ``frames``: the recorded positions of
+    the mechanism, one :class:`yaseer.animation.Frame` per printed line after a
+    library call.  ``name``: the listing's file stem (None for program text).
+    """
+
+    listing: str
+    name: str | None = None
+    text: str = ""
+    error: str | None = None
+    status: str = "end"
+    line: int | None = None  # the BASIC line the run stopped in (STOP, an error), else None
+    exception: Exception | None = None
+    frames: list = field(default_factory=list)
+    lines: list = field(default_factory=list, repr=False)  # values printed per line (yaseer.table)
+    _rows: object = field(default=None, repr=False)
+
+    @property
+    def rows(self):
+        """The printed rows: a 2-D float array (``.names``: the header's column names or None),
+        or a list of such arrays when the rows have several shapes."""
+        if self._rows is None:
+            from yaseer.table import as_arrays
+
+            self._rows = as_arrays(self._named_groups())
+        return self._rows
+
+    @property
+    def columns(self) -> tuple[str, ...] | None:
+        """The column names of the main table (the shape with most rows), or None."""
+        group = self._main_group()
+        return group.names if group is not None else None
+
+    @property
+    def title(self) -> str:
+        """The paper's title for its examples, else the listing's first REM, else its name."""
+        from yaseer.describe import listing_title
+
+        return listing_title(self.listing, self.name)
+
+    def _named_groups(self):
+        from yaseer.describe import column_names
+        from yaseer.table import group_rows
+
+        groups = group_rows(self.lines)
+        for group in groups:
+            group.names = column_names(self.name, group.width, group.names)
+        return groups
+
+    def _main_group(self):
+        groups = self._named_groups()
+        return max(groups, key=lambda g: len(g.rows)) if groups else None
+
+    def plot(self):
+        """A matplotlib Figure: each printed column against the first (the main table)."""
+        from yaseer import plotting
+
+        group = self._main_group()
+        if group is None or len(group.rows) < 2 or group.width < 2:
+            raise ValueError("the listing printed no table of at least two rows and two columns to plot")
+        spec = plotting.spec_for(self.name, self.listing, group.width, self.title, group.names)
+        return plotting.build_figure(group.rows, spec)
+
+    def animate(self, **options):
+        """A matplotlib ``FuncAnimation`` of the mechanism (options as :func:`yaseer.animation.player`)."""
+        from yaseer.animation import player
+
+        options.setdefault("title", self.title)
+        return player(self.frames, **options)
+
+    def _repr_pretty_(self, printer, cycle) -> None:  # IPython shows the screen, then the error
+        printer.text(self.text + (self.error + "\n" if self.error else ""))
+
+
+def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, str] | None = None,
+        prog: Mapping[int, Listing] | None = None, input=None, angle: str | None = None,
+        raise_errors: bool = False, screen: IO[str] | None = None, printer: IO[str] | None = None,
+        output_format: str = "text", keep: bool = True) -> Result:
+    """Run ``listing`` (a path, or the program text) once on a fresh machine.
+
+    ``method``: the method of library program n (``{2: "newton"}``); ``prog``:
+    program area n loaded from a path or text (``{5: "programs/prog5.bas"}``);
+    ``input``: what INPUT reads (text, a path-like, or an open file, each
+    echoed on the screen; ``sys.stdin``: typed at the keyboard; default nothing:
+    ``Input past end``); ``angle``: ``"deg"`` or ``"rad"``, the unit of
+    SIN COS TAN ATN.  A BASIC error (and a missing file) is ``result.error``,
+    one line; with ``raise_errors`` it is raised.
+
+    For the command line: ``screen`` / ``printer`` also receive PRINT / LPRINT
+    output as it is printed (a printer takes LPRINT off the screen and out of
+    ``text``), ``output_format="csv"`` prints full-precision rows, and
+    ``keep=False`` keeps neither text, rows nor frames (a long streamed run).
+    """
+    from yaseer.basic.errors import BasicError
+
+    result = Result(listing="")
+    opened: list[IO[str]] = []
+    try:
+        result.listing, result.name = _source(listing)
+        areas = {int(n): _source(text)[0] for n, text in (prog or {}).items()}
+        input_stream = _input_stream(input, opened)
+    except BasicError as error:
+        return _failed(result, error, raise_errors)
+    execute(result, areas, dict(method or {}), input_stream, angle, dialect or "casio", screen, printer,
+            output_format, keep)
+    for handle in opened:
+        handle.close()
+    if result.exception is not None and raise_errors:
+        raise result.exception
+    return result
+
+
+def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str | None, dialect: str,
+            screen, printer, output_format: str, keep: bool) -> None:
+    """Load, bind and run ``result.listing``; fill in ``result`` (text, rows, frames, error, status)."""
+    from yaseer import binding
+    from yaseer.animation import Recorder
+    from yaseer.basic.errors import BasicError
+    from yaseer.basic.machine import Machine
+
+    recorder = Recorder() if keep else None
+    on_line = recorder.line_printed if recorder is not None else None
+    out = _Output(screen, keep, on_line)
+    paper = _Output(printer, False, on_line) if printer is not None else None
+    machine = Machine(screen=out, printer=paper, output_format=output_format, angle=angle,
+                      input_stream=input_stream, dialect=dialect)
+    if keep:
+        machine.area_hooks.append(recorder.hook)
+        machine.line_hooks.append(lambda device, values: result.lines.append(values))
+    try:
+        machine.load(result.listing)
+        if machine.dialect.program_areas:
+            binding.install(machine, methods or None)
+        for number, text in areas.items():
+            machine.set_area(number, text)
+        result.status = machine.run()
+        if result.status == "stop":
+            result.line = machine.line
+    except BasicError as error:
+        machine.end_line()
+        result.status, result.error, result.exception = "error", str(error), error
+        result.line = error.line
+    finally:
+        machine.flush()
+        for stream in (out, paper):
+            if stream is not None:
+                stream.close_line()
+    result.text = out.text
+    if recorder is not None:
+        result.frames = recorder.finish()
+
+
+def _failed(result: Result, error, raise_errors: bool) -> Result:
+    if raise_errors:
+        raise error
+    result.status, result.error, result.exception = "error", str(error), error
+    return result
+
+
+def _source(listing: Listing) -> tuple[str, str | None]:
+    """(program text, file stem or None): a path-like, or a one-line str that is no BASIC line, is a file."""
+    from yaseer.basic.errors import DEVICE_IO_ERROR, FILE_NOT_FOUND, BasicError
+
+    if isinstance(listing, str) and not os.path.isfile(listing) \
+            and ("\n" in listing or not listing.strip() or _LINE_NUMBER.match(listing)):
+        return listing, None
+    if not isinstance(listing, (str, os.PathLike)):
+        raise TypeError(f"a listing is a path or the program text, not {type(listing).__name__}")
+    path = Path(listing)
+    try:
+        return path.read_text(encoding="utf-8", errors="replace"), path.stem
+    except FileNotFoundError:
+        raise BasicError(f"File not found: {path}", FILE_NOT_FOUND) from None
+    except OSError as error:
+        raise BasicError(f"Cannot read {path}: {error.strerror or error}", DEVICE_IO_ERROR) from None
+
+
+def _input_stream(source, opened: list):
+    """What INPUT reads: an open stream as given; text or a path-like opened here (and noted)."""
+    import io
+
+    from yaseer.basic.errors import FILE_NOT_FOUND, BasicError
+
+    if source is None:
+        return io.StringIO("")
+    if source is sys.stdin:
+        return None  # the machine reads the keyboard itself (and does not echo what was typed)
+    if hasattr(source, "readline"):
+        return source
+    if isinstance(source, os.PathLike):
+        try:
+            handle = open(source, encoding="utf-8")
+        except OSError as error:
+            raise BasicError(f"Cannot read {source}: {error.strerror or error}", FILE_NOT_FOUND) from None
+        opened.append(handle)
+        return handle
+    if isinstance(source, str):
+        return io.StringIO(source if source.endswith("\n") or not source else source + "\n")
+    raise TypeError(f"input is text, a path or an open file, not {type(source).__name__}")
