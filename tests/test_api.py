@@ -130,3 +130,25 @@ def test_importing_yaseer_and_reaching_run_imports_no_numpy_or_matplotlib():
     code = "import sys, yaseer; yaseer.run; print(sorted(m for m in ('numpy', 'matplotlib') if m in sys.modules))"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
+
+
+def test_running_a_basic_only_program_imports_no_numpy_until_rows_are_asked_for():
+    code = ("import sys, yaseer\nr = yaseer.run('10 PRINT 2+2')\nbefore = 'numpy' in sys.modules\n"
+            "r.rows\nprint(r.text.strip(), before, 'numpy' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.split() == ["4", "False", "True"]
+
+
+def test_yaseer_run_of_a_basic_only_program_imports_no_numpy(tmp_path):
+    listing = tmp_path / "a.bas"
+    listing.write_text("10 PRINT 2+2\n")
+    code = ("import sys\nfrom yaseer.cli import main\nstatus = main(['run', sys.argv[1]])\n"
+            "print(status, 'numpy' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code, str(listing)], capture_output=True, text=True,
+                         check=True).stdout
+    assert out.split() == ["4", "0", "False"]
+
+
+def test_the_gw_dialect_has_no_library_and_starts_in_radians():
+    assert yaseer.run("10 PRINT ATN(1)*4", dialect="gw").rows[0][0] == pytest.approx(math.pi, rel=1e-6)
+    assert yaseer.run("10 GOSUB PROG 1", dialect="gw").error is not None
