@@ -2,7 +2,7 @@
 
 Each example mutates one seed program (the paper's calling listings in
 listings/ and, as printed, in listings/paper/, PROG 5 as printed in programs/, the Rugg/Feldman and Ahl
-benchmarks in tests/corpus/fuzz_seeds/) by deleting characters, swapping
+benchmarks in tests/benchmarks/classic/) by deleting characters, swapping
 tokens, planting huge numbers, nesting deeply, dropping lines or inserting
 binary junk, inserting state-upsetting statements or garbling a PRINT USING format,
 then runs it with the library programs bound.  Every run must
@@ -32,7 +32,7 @@ from yaseer.basic.errors import BasicError
 from yaseer.basic.machine import INTERNAL_ERROR, Machine
 
 ROOT = Path(__file__).resolve().parent.parent
-SEED_FILES = sorted(ROOT.glob("listings/*.bas")) + sorted((ROOT / "tests/corpus/fuzz_seeds").glob("*.bas"))
+SEED_FILES = sorted(ROOT.glob("listings/*.bas")) + sorted((ROOT / "tests/benchmarks/classic").glob("*.bas"))
 AS_PRINTED = sorted(ROOT.glob("listings/paper/*.bas"))  # the paper's text, misprints and all
 PROG5 = (ROOT / "programs/prog5.bas").read_text()
 SEEDS = [path.read_text(errors="replace") for path in SEED_FILES + AS_PRINTED]

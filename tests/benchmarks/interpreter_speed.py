@@ -5,9 +5,12 @@
 1. The tight loop ``10 FOR I=1 TO 100000: A=A+1: NEXT``: yaseer (load + compile +
    run, in process) against the same loop in plain Python (a function with
    float locals, ``while`` and ``for range`` forms), and against bwbasic.
-2. Rugg/Feldman BM1-BM8 and Ahl (../shared/bench/classic): each loop count is
-   scaled so that bwbasic needs about ``--target`` seconds, then yaseer runs the
-   same scaled program.  Reported: seconds and the ratio bwbasic / yaseer, both
+2. Rugg/Feldman BM1-BM8 and Ahl (the workloads of tests/benchmarks/classic/, see
+   classic_workloads.py; ``--extra DIR`` adds other copies, e.g. a directory of
+   ``bmN.bas`` + ``bw_bmN.bas``, skipped with one line when DIR is absent): each
+   loop count is scaled so that bwbasic needs about ``--target`` seconds, then
+   yaseer runs the same scaled program.  Without bwbasic on PATH this part is
+   skipped with one line.  Reported: seconds and the ratio bwbasic / yaseer, both
    in process (yaseer's compile + run) and as whole processes (``python -m
    yaseer run``, which adds Python's start-up).
 3. Start-up: whole process to the first byte of output of a paper listing (wall time).
@@ -22,7 +25,6 @@ from __future__ import annotations
 import argparse
 import io
 import os
-import re
 import resource
 import shutil
 import subprocess
@@ -32,18 +34,17 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-CLASSIC = Path(os.environ.get("YASEER_CLASSIC", ROOT.parent / "shared" / "bench" / "classic"))
-if not CLASSIC.exists():
-    CLASSIC = Path("/work/shared/bench/classic")
+# Optional other copies of the classic programs (not part of the repository).
+EXTRA_CLASSIC = Path(os.environ.get("YASEER_CLASSIC", ROOT.parent / "shared" / "bench" / "classic"))
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+from classic_workloads import from_directory, in_repo, scaled  # noqa: E402
 from yaseer.basic.machine import Machine  # noqa: E402
 
 TIGHT_LOOP = "10 FOR I=1 TO {n}: A=A+1: NEXT\n"
 TIGHT_LOOP_BW = "10 FOR I=1 TO {n}\n20 A=A+1\n30 NEXT I\n40 SYSTEM\n"
-# How each classic program's loop count is written (the number gets scaled).
 MAX_SCALE = 20_000
-LOOP_COUNT = re.compile(r"(FOR K=1 TO |IF K<|FOR N=1 TO )(\d+)")
 
 
 def cpu_seconds() -> float:
@@ -113,10 +114,6 @@ def yaseer_process_time(text: str, repeat: int) -> float:
         os.unlink(handle.name)
 
 
-def scaled(text: str, factor: float) -> str:
-    return LOOP_COUNT.sub(lambda m: m.group(1) + str(max(1, round(int(m.group(2)) * factor))), text)
-
-
 def installed_env() -> dict:
     """The environment of an installed yaseer: bytecode cached (pip compiles it on install)."""
     env = dict(os.environ)
@@ -141,6 +138,9 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--target", type=float, default=1.0, help="seconds bwbasic should need per program")
     parser.add_argument("--repeat", type=int, default=3, help="best of N runs")
+    parser.add_argument("--extra", type=Path, default=EXTRA_CLASSIC,
+                        help="a directory of other copies of the classic programs (NAME.bas + bw_NAME.bas); "
+                             "default $YASEER_CLASSIC or ../shared/bench/classic beside the checkout")
     args = parser.parse_args()
     have_bwbasic = shutil.which("bwbasic") is not None
 
@@ -160,12 +160,13 @@ def main() -> int:
         print(f"\nclassic benchmarks, loop counts scaled so that bwbasic needs ~{args.target:g} s")
         print(f"{'program':8} {'scale':>6} {'bwbasic s':>10} {'yaseer s':>9} {'x faster':>9} "
               f"{'process s':>10} {'x (process)':>11}")
-        pairs = [(f"bm{k}", f"bm{k}.bas", f"bw_bm{k}.bas") for k in range(1, 9)]
-        # bwbasic needs FOR and NEXT on lines of their own: its Ahl is the split form
-        pairs += [("ahl", "ahl.bas", "bw_ahl_split.bas"), ("ahl_split", "ahl_split.bas", "bw_ahl_split.bas")]
-        for name, ms_file, bw_file in pairs:
-            ms_text = (CLASSIC / ms_file).read_text()
-            bw_text = (CLASSIC / bw_file).read_text()
+        workloads = [(w.name, w.text, w.bwbasic) for w in in_repo()]
+        if args.extra.is_dir():
+            workloads += [(w.name + "*", w.text, w.bwbasic) for w in from_directory(args.extra)]
+            print(f"(* the copies in {args.extra})")
+        else:
+            print(f"extra classic copies: {args.extra} not found, skipped")
+        for name, ms_text, bw_text in workloads:
             base = bwbasic_time(bw_text, 1)
             factor = min(MAX_SCALE, max(1.0, args.target / max(base, 1e-2)))
             for _ in range(3):  # refine: bwbasic's start-up makes the first estimate low
@@ -179,7 +180,7 @@ def main() -> int:
             t_p = yaseer_process_time(program, args.repeat)
             print(f"{name:8} {factor:6.0f} {t_bw:10.3f} {t_y:9.4f} {t_bw / t_y:9.1f} {t_p:10.3f} {t_bw / t_p:11.1f}")
     else:
-        print("bwbasic not found: classic comparisons skipped")
+        print("bwbasic not found on PATH: the classic comparisons are skipped")
 
     listing = ROOT / "listings" / "example1.bas"
     if listing.exists():
