@@ -157,15 +157,15 @@ def main() -> int:
         print(f"tight loop, {big} passes: bwbasic {t_bw:.3f} s, yaseer {t_y:.3f} s: {t_bw / t_y:.0f}x faster")
 
     if have_bwbasic:
-        print(f"\nclassic benchmarks, loop counts scaled so that bwbasic needs ~{args.target:g} s")
-        print(f"{'program':8} {'scale':>6} {'bwbasic s':>10} {'yaseer s':>9} {'x faster':>9} "
-              f"{'process s':>10} {'x (process)':>11}")
         workloads = [(w.name, w.text, w.bwbasic) for w in in_repo()]
         if args.extra.is_dir():
             workloads += [(w.name + "*", w.text, w.bwbasic) for w in from_directory(args.extra)]
             print(f"(* the copies in {args.extra})")
         else:
             print(f"extra classic copies: {args.extra} not found, skipped")
+        print(f"\nclassic benchmarks, loop counts scaled so that bwbasic needs ~{args.target:g} s")
+        print(f"{'program':8} {'scale':>6} {'bwbasic s':>10} {'yaseer s':>9} {'x faster':>9} "
+              f"{'process s':>10} {'x (process)':>11}")
         for name, ms_text, bw_text in workloads:
             base = bwbasic_time(bw_text, 1)
             factor = min(MAX_SCALE, max(1.0, args.target / max(base, 1e-2)))
