@@ -101,18 +101,21 @@ def test_command_errors_are_one_line(tmp_path, monkeypatch, capsys):
     (tmp_path / "none.bas").write_text("10 PRINT 1\n")
     (tmp_path / "apart.bas").write_text("10 L(2) = 1: L(3) = 9: L(1) = 20: GOSUB PROG 1\n")
     cases = {
-        ("missing.bas",): "File not found: missing.bas\n",
+        ("missing.bas",): "yaseer animate: missing.bas: No such file or directory\n",
         ("bad.bas",): "Syntax error in 20\n",
         ("none.bas",): "Nothing to animate: the listing called no library program before printing\n",
         ("apart.bas",): "cannot be assembled (PROG 1) in 10\n",
         ("none.bas", "--out", "x.avi"): "Unknown animation format '.avi': use .gif, .mp4, .html, .png\n",
-        ("none.bas", "--method", "2"): "--method wants N=NAME, not '2'\n",
     }
     for args, message in cases.items():
         assert main(["animate", *args]) == 1
         shown = capsys.readouterr()
         assert shown.err.endswith(message), (args, shown.err)
         assert shown.out == ""
+    assert main(["animate", "none.bas", "--frame", "2"]) == 2  # a usage error
+    assert capsys.readouterr().err == "yaseer animate: --frame chooses the frame of a .png; none.gif is a whole animation\n"
+    assert main(["animate", "none.bas", "--method", "2"]) == 2
+    assert capsys.readouterr().err.endswith("argument --method: expected N=NAME, got '2'\n")
 
 
 def test_example_3_slotted_follower_keeps_one_length_through_the_cycle():

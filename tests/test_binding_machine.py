@@ -84,7 +84,7 @@ def test_method_option_selects_the_papers_virtual_link(tmp_path, capsys):
     status, rows, err = run(tmp_path, capsys, listing, "--method", "5=paper")
     assert status == 1 and err == "Division by zero (PROG 5) in 10"
     status, rows, err = run(tmp_path, capsys, listing, "--method", "5=nonesuch")
-    assert status == 1 and "Unknown method 'nonesuch' for PROG 5" in err
+    assert status == 2 and "unknown method 'nonesuch' for PROG 5 (known: polar, paper)" in err
 
 
 def test_forces_only_when_z_is_2(tmp_path, capsys):

@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-import argparse
 from pathlib import Path
 
 import pytest
 
+from yaseer.cli import main as cli_main
 from yaseer.commands import diff
 
 
@@ -15,9 +15,7 @@ def _run_cli(tmp_path: Path, program_csv: str, table_text: str, *extra: str) -> 
     table = tmp_path / "table.txt"
     program.write_text(program_csv)
     table.write_text(table_text)
-    parser = argparse.ArgumentParser()
-    diff.add_arguments(parser)
-    return diff.main(parser.parse_args([str(program), str(table), *extra])), ""
+    return cli_main(["diff", str(program), str(table), *extra]), ""
 
 
 def test_printed_columns_with_header_place_blank_cells_by_alignment():
@@ -102,11 +100,9 @@ def test_cli_exit_status_and_verdict_line(tmp_path, capsys):
 def test_cli_unreadable_table_is_a_clear_error(tmp_path, capsys):
     program = tmp_path / "out.csv"
     program.write_text("0,1\n")
-    parser = argparse.ArgumentParser()
-    diff.add_arguments(parser)
-    status = diff.main(parser.parse_args([str(program), str(tmp_path / "nope.txt")]))
-    assert status == 2
-    assert "Cannot read table" in capsys.readouterr().err
+    status = cli_main(["diff", str(program), str(tmp_path / "nope.txt")])
+    assert status == 1
+    assert capsys.readouterr().err == f"yaseer diff: {tmp_path / 'nope.txt'}: No such file or directory\n"
 
 
 @pytest.mark.parametrize("text", ["1.5", "-.25", "+3", "1e3", "1.0D2"])
@@ -119,10 +115,8 @@ def test_cli_listing_error_is_reported_as_the_basic_error(tmp_path, capsys):
     listing.write_text("10 PRINT 1\n20 PRINT 1/0\n")
     table = tmp_path / "t.csv"
     table.write_text("x\n1\n")
-    parser = argparse.ArgumentParser()
-    diff.add_arguments(parser)
-    assert diff.main(parser.parse_args([str(listing), str(table)])) == 2
-    assert capsys.readouterr().err.strip() == f"{listing}: Division by zero in 20"
+    assert cli_main(["diff", str(listing), str(table)]) == 1
+    assert capsys.readouterr().err == f"yaseer diff: {listing}: Division by zero in 20\n"
 
 
 def test_cli_ambiguous_printed_row_names_the_line(tmp_path, capsys):
@@ -130,13 +124,11 @@ def test_cli_ambiguous_printed_row_names_the_line(tmp_path, capsys):
     table.write_text("# comment\n       A       B       C\n    1.00    2.00    3.00\n 1.00 2.00\n 4.0 5.0 6.0 7.0\n")
     program = tmp_path / "out.csv"
     program.write_text("1,2\n")
-    parser = argparse.ArgumentParser()
-    diff.add_arguments(parser)
-    assert diff.main(parser.parse_args([str(program), str(table)])) == 2
-    assert "line 4: two cells under column 1" in capsys.readouterr().err
+    assert cli_main(["diff", str(program), str(table)]) == 1
+    assert capsys.readouterr().err == f"yaseer diff: bad table {table}: line 4: two cells under column 1\n"
     table.write_text("       A       B\n    1.00    2.00\n    1.00 2.00 3.00\n")
-    assert diff.main(parser.parse_args([str(program), str(table)])) == 2
-    assert "line 3: 3 cells for 2 columns" in capsys.readouterr().err
+    assert cli_main(["diff", str(program), str(table)]) == 1
+    assert capsys.readouterr().err == f"yaseer diff: bad table {table}: line 3: 3 cells for 2 columns\n"
 
 
 def test_full_rows_are_read_in_order_even_under_a_loosely_aligned_header():

@@ -114,5 +114,6 @@ def test_plot_command_reports_an_unwritable_output_directory(tmp_path):
     occupied.write_text("a file, not a directory")
     result = _yaseer_plot("listings/example2.bas", "--out", str(occupied))
     assert result.returncode == 1
-    assert result.stderr.startswith(f"Cannot write the plot into {occupied}")
+    assert result.stderr == (f"yaseer plot: --out {occupied}: is a file; --out names a directory here "
+                             "(several files are written)\n")
     assert "Traceback" not in result.stderr

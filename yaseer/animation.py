@@ -288,7 +288,7 @@ class _LineCounter:
 
 
 def record_run(listing, methods: dict[int, str] | None = None, progress_file=None,
-               angle: str | None = None) -> Recording:
+               angle: str | None = None, **run_options) -> Recording:
     """Run ``listing`` (a path or the program text) once through :func:`yaseer.run`, keeping its frames.
 
     PRINT and LPRINT output both close frames.  A BASIC error (syntax, run
@@ -296,13 +296,15 @@ def record_run(listing, methods: dict[int, str] | None = None, progress_file=Non
     recorded before it are kept with the error, so the animation can show the
     mechanism up to where the method broke.  A progress counter of printed
     lines appears on stderr if the run takes more than a second.  ``angle``
-    is the unit of the trigonometric functions, as ``yaseer run --angle``.
+    is the unit of the trigonometric functions, as ``yaseer run --angle``;
+    ``run_options`` are further :func:`yaseer.run` arguments (``prog``,
+    ``input``, ``dialect``).
     """
     from yaseer.api import run
     from yaseer.progress import bar
 
     with bar(None, "running", "line", file=progress_file) as progress:
-        result = run(listing, method=methods, angle=angle, screen=_LineCounter(progress))
+        result = run(listing, method=methods, angle=angle, screen=_LineCounter(progress), **run_options)
     return Recording(result.frames, result.exception, result.title)
 
 

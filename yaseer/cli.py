@@ -1,62 +1,147 @@
 """The ``yaseer`` command line: a thin dispatcher over ``yaseer.commands.*``.
 
 Each sub-command lives in its own module (``yaseer/commands/<name>.py``) with
-``add_arguments(parser)`` and ``main(args) -> int``; modules are imported only
-when their command runs, so start-up stays small.
+``add_arguments(parser)`` and ``main(args) -> int``.  Only the module of the
+command being run is imported (the others' sub-parsers are left empty, their
+one-line help is kept here), so start-up stays small.
+
+Exit statuses, the same in every command: 0 success, 1 an error (one line on
+standard error, never a traceback), 2 a usage error (the sub-command's usage
+line first), 130 after Ctrl-C.  A reader that goes away (``yaseer run x | head``)
+stops the command quietly with status 0.
 """
 
 from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 
+from yaseer import __version__
+
 COMMANDS = {
-    "run": "run a BASIC listing",
-    "plot": "run a listing and plot its printed columns",
-    "bench": "time against accuracy, for every method and way of running",
-    "stability": "sweep each method across the places where methods fail",
-    "diff": "run a listing and diff its rows against a paper's table",
+    "run": "run a BASIC listing and print what it prints",
+    "diff": "run a listing and set its rows beside a table typed from a paper",
+    "plot": "run a listing and draw each printed column against the first",
+    "animate": "run a listing and animate its mechanism (GIF, MP4, HTML or one PNG frame)",
+    "bench": "time against accuracy for every method and way of running",
+    "stability": "sweep each method towards the places where methods fail",
     "centrode": "the change-point four-bar's space centrode (seed 004)",
-    "animate": "animate the mechanism of a listing",
 }
+
+DESCRIPTION = """\
+yaseer emulates the 1980s pocket computer on which the Al-Yaseer mechanism-analysis
+package ran: BASIC listings calling the library programs with GOSUB PROG 1, 2, 3 and 5
+(slider-crank, four-bar, inverted slider-crank, virtual link).
+
+Type `yaseer` alone to open the interactive pocket-computer session (numbered lines,
+LIST, RUN, CONT, EDIT, SAVE, LOAD, PROG n; HELP lists its commands); `yaseer --dialect gw`
+opens it as GW-BASIC."""
+
+EPILOG = """\
+`yaseer COMMAND --help` describes a command and its options.
+Exit status: 0 success, 1 an error (one line on standard error), 2 a wrong command
+line, 130 interrupted by Ctrl-C."""
 
 
 def _load(name: str):
     return importlib.import_module(f"yaseer.commands.{name}")
 
 
-def main(argv: list[str] | None = None) -> int:
-    argv = sys.argv[1:] if argv is None else argv
-    parser = argparse.ArgumentParser(prog="yaseer", description=__doc__.splitlines()[0])
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
-    available = {}
+def build_parser(command: str | None = None) -> tuple[argparse.ArgumentParser, argparse.ArgumentParser | None]:
+    """The ``yaseer`` parser and ``command``'s sub-parser, the only one given its arguments (its module imported)."""
+    parser = argparse.ArgumentParser(prog="yaseer", description=DESCRIPTION, epilog=EPILOG,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--version", action="version", version=f"yaseer {__version__}")
+    _load("interactive").add_arguments(parser)  # options before any command are the session's (--dialect)
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", title="commands")
+    chosen = None
     for name, help_text in COMMANDS.items():
-        try:
-            module = _load(name)
-        except ModuleNotFoundError as exc:
-            if exc.name != f"yaseer.commands.{name}":
-                raise
-            continue
-        available[name] = module
-        module.add_arguments(sub.add_parser(name, help=help_text, description=help_text))
-    interactive = "interactive" in _interactive_available()
-    if interactive:  # options before any command are the interactive session's (--dialect)
-        _load("interactive").add_arguments(parser)
-    if not argv and interactive:
-        return _load("interactive").main(None)
-    args = parser.parse_args(argv)
-    if args.command is None and interactive:
-        return _load("interactive").main(args)
-    if args.command is None:
-        parser.print_help()
-        return 2
-    return available[args.command].main(args)
+        command_parser = sub.add_parser(name, help=help_text, description=help_text,
+                                        formatter_class=argparse.RawDescriptionHelpFormatter)
+        if name == command:
+            _load(name).add_arguments(command_parser)
+            chosen = command_parser
+    return parser, chosen
 
 
-def _interactive_available() -> set[str]:
+def main(argv: list[str] | None = None) -> int:
+    """Parse ``argv`` (default ``sys.argv[1:]``), run the command; the exit status."""
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if sys.stdout is None:  # started with standard output closed (`yaseer run x >&-`)
+        if sys.stderr is not None:
+            print("yaseer: standard output is closed", file=sys.stderr)
+        return 1
+    if not argv:
+        return guarded("session", lambda: _load("interactive").main(None))
+    command = argv[0] if argv[0] in COMMANDS else None
+    parser, command_parser = build_parser(command)
     try:
-        _load("interactive")
-    except ModuleNotFoundError:
-        return set()
-    return {"interactive"}
+        if command_parser is None:  # the session's options (--dialect gw), --help, --version, or not a command
+            args = parser.parse_args(argv)
+            return guarded("session", lambda: _load("interactive").main(args))
+        # The sub-parser itself, so a wrong option prints that command's usage.
+        args = command_parser.parse_args(argv[1:])
+    except SystemExit as exit_:  # --help, --version (0) or a usage error (2, usage already printed)
+        return exit_.code if isinstance(exit_.code, int) else 2
+    args.command = command
+    return guarded(command, lambda: _load(command).main(args))
+
+
+def guarded(command: str, call) -> int:
+    """``call()``'s status, with every escaping error made one line on stderr and its status.
+
+    The one place that turns :class:`~yaseer.commands.options.CommandError` and
+    ``OSError`` into status 1 (a ``UsageError`` into 2), Ctrl-C into 130 and a
+    closed pipe into a quiet 0.
+    """
+    from yaseer.commands.options import CommandError, UsageError
+    from yaseer.commands.output import NamedStream
+
+    stdout = sys.stdout
+    sys.stdout = NamedStream(stdout, "standard output")
+    try:
+        status = call()
+        sys.stdout.flush()
+        return status
+    except KeyboardInterrupt:
+        _report(f"yaseer {command}: interrupted (Ctrl-C)")
+        return 130
+    except BrokenPipeError:  # the reader went away (`| head`): stop quietly
+        _silence(stdout)
+        return 0
+    except CommandError as error:
+        _report(f"yaseer {command}: {error}")
+        return 2 if isinstance(error, UsageError) else 1
+    except OSError as error:
+        _report(f"yaseer {command}: {describe(error)}")
+        if getattr(error, "filename", None) == "standard output":
+            _silence(stdout)
+        return 1
+    finally:
+        sys.stdout = stdout
+
+
+def describe(error: OSError) -> str:
+    """``OSError`` as ``FILE: reason`` (the file it names, then the system's words)."""
+    reason = error.strerror or str(error)
+    if error.filename is not None and error.filename2 is not None:
+        return f"{error.filename} -> {error.filename2}: {reason}"
+    return f"{error.filename}: {reason}" if error.filename is not None else reason
+
+
+def _report(line: str) -> None:
+    if sys.stderr is not None:
+        try:
+            print(line, file=sys.stderr, flush=True)
+        except OSError:
+            pass
+
+
+def _silence(stream) -> None:
+    """Point ``stream``'s descriptor at /dev/null so the interpreter's last flush cannot fail."""
+    try:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), stream.fileno())
+    except (OSError, ValueError, AttributeError):
+        pass

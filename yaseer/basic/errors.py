@@ -66,3 +66,11 @@ class BasicError(Exception):
         if self.area:
             text += f" (PROG {self.area})"
         return text
+
+
+class OutputError(OSError):
+    """Writing a run's screen or printer stream failed (a full disk, a closed file).
+
+    Not a BASIC error: the machine lets it through and the run stops; its
+    ``filename`` names the stream (``standard output``, the ``--printer`` file).
+    """

@@ -29,7 +29,7 @@ from typing import Callable, TextIO
 from yaseer.basic import dialect as dialects, formatting, program_cache, runtime
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # MAX_STACK: GOSUB returns + open FOR loops together
 from yaseer.basic.errors import (
-    BasicError, BREAK, CANT_CONTINUE, DIVISION_BY_ZERO, DUPLICATE_DEFINITION,
+    BasicError, OutputError, BREAK, CANT_CONTINUE, DIVISION_BY_ZERO, DUPLICATE_DEFINITION,
     ILLEGAL_FUNCTION_CALL, NEXT_WITHOUT_FOR, OUT_OF_DATA, OUT_OF_MEMORY, OVERFLOW,
     RESUME_WITHOUT_ERROR, RETURN_WITHOUT_GOSUB, SUBSCRIPT_OUT_OF_RANGE, SYNTAX_ERROR,
     UNDEFINED_PROGRAM_AREA, UNDEFINED_USER_FUNCTION,
@@ -606,7 +606,7 @@ class Machine:
                 while b >= 0:
                     b = blocks[b]()
                 return
-            except (ProgramEnd, ProgramStop, DirectJump, BrokenPipeError):
+            except (ProgramEnd, ProgramStop, DirectJump, BrokenPipeError, OutputError):
                 raise
             except BaseException as exc:  # noqa: BLE001 - every error becomes a BASIC error
                 err = to_basic_error(exc)

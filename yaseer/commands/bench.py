@@ -10,11 +10,14 @@ as markdown) and the chart ``bench.png`` /
 from __future__ import annotations
 
 import sys
-from pathlib import Path
+
 
 
 def add_arguments(parser) -> None:
-    parser.add_argument("--out", default="bench-out", help="folder for the CSV files and the chart (created)")
+    parser.epilog = "Exit status: 0 done, 1 an error (one line on standard error), 2 a wrong command line, 130 Ctrl-C."
+    parser.add_argument("--out", default="bench-out", metavar="DIR",
+                        help="directory for the CSV files, bench_results.md and the chart (created; "
+                             "default: bench-out in the current directory)")
     parser.add_argument("--quick", action="store_true", help="the listings' own coarse grids, one repeat")
     parser.add_argument("--no-listing", action="store_true", help="skip the interpreter way")
     parser.add_argument("--no-chart", action="store_true", help="write the CSV files only")
@@ -22,10 +25,11 @@ def add_arguments(parser) -> None:
 
 
 def main(args) -> int:
+    from yaseer.commands.options import CommandError
+    from yaseer.commands.output import output_directory
     from yaseer.evaluation import benchmark as bench
 
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = output_directory(args.out)
     ways = tuple(w for w in bench.WAYS if not (args.no_listing and w == "listing"))
     repeat = 1 if args.quick else 3
     if "listing" in ways and not bench.interpreter_available():
@@ -33,8 +37,7 @@ def main(args) -> int:
     rows = bench.bench_rows(quick=args.quick, ways=ways, repeat=repeat, pattern=args.case)
     newton = bench.newton_rows(quick=args.quick, repeat=repeat, pattern=args.case)
     if not rows:
-        print(f"no case matches {args.case!r}", file=sys.stderr)
-        return 2
+        raise CommandError(f"--case {args.case}: no case matches")
     summary = bench.aggregate(rows)
     newton_curve = bench.newton_summary(newton)
     laziness = bench.laziness_rows(positions=361 if args.quick else 3601, repeat=repeat)

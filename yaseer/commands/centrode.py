@@ -9,15 +9,16 @@ asymptotes there, and draws the paper's Fig. 5 (PNG and SVG in DIR).
 from __future__ import annotations
 
 import math
-import sys
 from pathlib import Path
 
 WINDOW = (-3.2, 3.6, -2.4, 2.4)  # x min, x max, y min, y max (m) of the figure
 
 
 def add_arguments(parser) -> None:
-    parser.add_argument("--out", type=Path, default=Path("."), help="directory for centrode.png and centrode.svg")
-    parser.add_argument("--step", type=float, default=0.05, help="crank angle step in degrees (default 0.05)")
+    parser.epilog = "Exit status: 0 done, 1 an error (one line on standard error), 2 a wrong command line, 130 Ctrl-C."
+    parser.add_argument("--out", default=".", metavar="DIR",
+                        help="directory for centrode.png and centrode.svg (created; default: the current directory)")
+    parser.add_argument("--step", type=_positive, default=0.05, help="crank angle step in degrees (default 0.05)")
     parser.add_argument("--no-plot", action="store_true", help="print the numbers only")
 
 
@@ -105,17 +106,25 @@ def draw(out: Path, step_deg: float = 0.05) -> list[Path]:
     return paths
 
 
+def _positive(text: str) -> float:
+    import argparse
+
+    try:
+        value = float(text)
+    except ValueError:
+        value = 0.0
+    if not value > 0:
+        raise argparse.ArgumentTypeError(f"a positive number of degrees, not {text!r}")
+    return value
+
+
 def main(args) -> int:
-    if not args.step > 0:
-        print("--step must be positive", file=sys.stderr)
-        return 2
+    from yaseer.commands.output import output_directory
+
+    out = None if args.no_plot else output_directory(args.out)
     for line in report_lines(args.step):
         print(line)
-    if not args.no_plot:
-        try:
-            paths = draw(args.out, args.step)
-        except OSError as exc:
-            print(f"Cannot write to {args.out}: {exc.strerror}", file=sys.stderr)
-            return 2
+    if out is not None:
+        paths = draw(out, args.step)
         print("wrote " + ", ".join(str(p) for p in paths))
     return 0

@@ -289,21 +289,33 @@ def _align(rows: list[list[str]]) -> list[str]:
 # ---------------------------------------------------------------- running
 
 
-def program_rows(path: Path) -> list[list[float]]:
+def program_rows(path: Path, run_options: list[str] | None = None) -> list[list[float]]:
     """The numeric rows a listing prints (its ``--format csv`` output).
 
+    ``run_options`` are further ``yaseer run`` arguments (``--prog``, ``--method`` ...).
     Raises :class:`TableError` with the run's own error message if it fails.
     """
     if path.suffix.lower() == ".csv":
-        text = path.read_text()
+        text = read_table_text(path)
     else:
-        done = subprocess.run([sys.executable, "-m", "yaseer", "run", str(path), "--format", "csv"],
-                              capture_output=True, text=True)
+        done = subprocess.run([sys.executable, "-m", "yaseer", "run", str(path), "--format", "csv",
+                               *(run_options or [])], capture_output=True, text=True)
         if done.returncode != 0:
             message = (done.stderr.strip() or done.stdout.strip()).splitlines()
             raise TableError(f"{path}: " + (message[-1] if message else f"exit status {done.returncode}"))
         text = done.stdout
     return csv_number_rows(text)
+
+
+def read_table_text(path: Path) -> str:
+    """The text of a typed table: UTF-8, or Latin-1 if it is not UTF-8; binary data is a TableError."""
+    data = path.read_bytes()
+    if b"\0" in data:
+        raise TableError("not a text table (it holds binary data)")
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError:
+        return data.decode("latin-1")
 
 
 def csv_number_rows(text: str) -> list[list[float]]:
@@ -320,33 +332,43 @@ def csv_number_rows(text: str) -> list[list[float]]:
 
 
 def add_arguments(parser) -> None:
+    from yaseer.commands.options import add_run_options
+
+    parser.epilog = ("Exit status: 0 every compared cell agrees, 1 cells differ or rows are missing (the last line "
+                     "says which) or an error (one line on standard error, nothing on standard output), "
+                     "2 a wrong command line, 130 Ctrl-C.  Nothing is written to files.")
     parser.add_argument("file", type=Path, help="BASIC listing to run (or a .csv of its rows)")
-    parser.add_argument("table", type=Path, help="table typed from a paper (CSV or printed columns)")
-    parser.add_argument("--tol", type=float, default=None,
+    parser.add_argument("table", type=Path, help="table typed from a paper (CSV or printed columns; UTF-8 or Latin-1)")
+    parser.add_argument("--tol", type=_tolerance, default=None,
                         help="absolute tolerance (default: half a unit of each printed cell's last digit)")
     parser.add_argument("--extra", action="store_true", help="also list the program rows the table does not have")
+    add_run_options(parser)
+
+
+def _tolerance(text: str) -> float:
+    import argparse
+
+    try:
+        value = float(text)
+    except ValueError:
+        value = -1.0
+    if not value >= 0:
+        raise argparse.ArgumentTypeError(f"a non-negative number, not {text!r}")
+    return value
 
 
 def main(args) -> int:
+    from yaseer.commands.options import CommandError, run_argv, run_settings
+
+    run_settings(args)  # the area files are checked here, before the run
     try:
-        table = parse_table(args.table.read_text())
-    except OSError as exc:
-        print(f"Cannot read table {args.table}: {exc.strerror}", file=sys.stderr)
-        return 2
+        table = parse_table(read_table_text(args.table))
     except TableError as exc:
-        print(f"Bad table {args.table}: {exc}", file=sys.stderr)
-        return 2
+        raise CommandError(f"bad table {args.table}: {exc}") from None
     try:
-        rows = program_rows(args.file)
-    except OSError as exc:
-        print(f"Cannot read {args.file}: {exc.strerror}", file=sys.stderr)
-        return 2
+        rows = program_rows(args.file, run_argv(args))
     except TableError as exc:
-        print(str(exc), file=sys.stderr)
-        return 2
-    if args.tol is not None and not args.tol >= 0:
-        print("--tol must be a non-negative number", file=sys.stderr)
-        return 2
+        raise CommandError(str(exc)) from None
     verdict = compare(rows, table, args.tol, args.extra)
     for line in verdict.lines:
         print(line)

@@ -24,7 +24,7 @@ Reader = Callable[[str, str], str]  # (prompt, text put up for editing) -> the l
 
 def add_arguments(parser) -> None:
     """``yaseer`` alone (or ``yaseer --dialect gw``) starts the session: ``--dialect``."""
-    from yaseer.commands.run import add_dialect_argument
+    from yaseer.commands.options import add_dialect_argument
 
     add_dialect_argument(parser)
 

@@ -8,19 +8,20 @@ silent wrong numbers, what happened at the singular configuration) and writes
 
 from __future__ import annotations
 
-from pathlib import Path
-
 
 def add_arguments(parser) -> None:
-    parser.add_argument("--out", default="stability-out", help="folder for the CSV files and the chart (created)")
+    parser.epilog = "Exit status: 0 done, 1 an error (one line on standard error), 2 a wrong command line, 130 Ctrl-C."
+    parser.add_argument("--out", default="stability-out", metavar="DIR",
+                        help="directory for the CSV files, stability_table.md and the chart (created; "
+                             "default: stability-out in the current directory)")
     parser.add_argument("--no-chart", action="store_true", help="write the CSV files only")
 
 
 def main(args) -> int:
+    from yaseer.commands.output import output_directory
     from yaseer.evaluation import stability
 
-    out = Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    out = output_directory(args.out)
     points = stability.sweep_points()
     summary = stability.summarise(points)
     print(stability.format_table(summary))
