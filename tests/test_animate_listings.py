@@ -101,7 +101,7 @@ def test_command_errors_are_one_line(tmp_path, monkeypatch, capsys):
     (tmp_path / "none.bas").write_text("10 PRINT 1\n")
     (tmp_path / "apart.bas").write_text("10 L(2) = 1: L(3) = 9: L(1) = 20: GOSUB PROG 1\n")
     cases = {
-        ("missing.bas",): "yaseer animate: missing.bas: No such file or directory\n",
+        ("missing.bas",): "File not found: missing.bas\n",
         ("bad.bas",): "Syntax error in 20\n",
         ("none.bas",): "Nothing to animate: the listing called no library program before printing\n",
         ("apart.bas",): "cannot be assembled (PROG 1) in 10\n",
