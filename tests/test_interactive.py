@@ -196,7 +196,7 @@ def test_a_run_time_error_names_its_line_and_the_program_stays(terminal):
     terminal.type("10 X = 0")
     terminal.type("50 PRINT 1 / X")
     assert terminal.type("RUN") == "Division by zero in 50\n"
-    assert terminal.type("LIST") == "10 X = 0\n50 PRINT 1 / X\n"
+    assert terminal.type("LIST") == "10 X=0\n50 PRINT 1/X\n"  # listed as the machine lists
     terminal.close()
 
 

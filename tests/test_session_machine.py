@@ -103,4 +103,4 @@ def test_run_file_loads_it_into_prog_0_and_runs_it(session, tmp_path):
     (tmp_path / "two.bas").write_text("10 PRINT 1 + 1\n")
     after(session, "PROG 3")
     assert after(session, 'RUN "two"') == " 2 \n"
-    assert after(session, "PROG 0", "LIST") == "10 PRINT 1 + 1\n"
+    assert after(session, "PROG 0", "LIST") == "10 PRINT 1+1\n"

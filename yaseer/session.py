@@ -10,12 +10,21 @@ What the user can type:
 
 - ``10 PRINT X`` stores line 10 in the program area being edited; ``10`` alone
   deletes it.
-- ``LIST [range]``, ``DELETE range``, ``RENUM [new[,old[,step]]]``, ``EDIT n``,
-  ``NEW``, ``RUN [line]``, ``CONT``, ``LOAD "file"``, ``SAVE "file"``,
-  ``PROG n`` (switch the area being edited, 0-9; 0 is the main listing),
-  ``SYSTEM`` / ``BYE`` (leave).  A range is ``n``, ``n-m``, ``n-`` or ``-m``.
+- ``LIST [range]`` (lines as the pocket computer lists them: keywords in
+  capitals and spaced, see ``scanner.detokenize``), ``LLIST [range]`` (the
+  same to the printer), ``DELETE range``, ``RENUM [new[,old[,step]]]``,
+  ``EDIT n``, ``AUTO [start][,step]``, ``NEW``, ``RUN [line]``, ``CONT``,
+  ``LOAD "file"``, ``SAVE "file"``, ``PROG n`` (switch the area being edited,
+  0-9; 0 is the main listing), ``SYSTEM`` / ``BYE`` (leave).  A range is
+  ``n``, ``n-m``, ``n-`` or ``-m``.
 - Anything else is a direct-mode statement run at once against the same
-  variables: ``PRINT 2*3``, ``GOSUB PROG 5``, ``X(10)=3``.
+  variables: ``PRINT 2*3``, ``GOSUB PROG 5``, ``X(10)=3``, ``TRON``, ``CLS``.
+
+AUTO offers line numbers as the prompt (``30 ``, or ``30*`` when line 30
+exists, as GW-BASIC marks it); what is typed becomes that line.  Enter alone
+after ``30*`` keeps line 30 and offers the next number (GW-BASIC); Enter alone
+after a free number, or Ctrl-C (:meth:`Session.interrupt`), ends AUTO.  A
+``Syntax error in 20`` from a run puts line 20 up for editing, as GW-BASIC does.
 
 Areas 1, 2, 3 and 5 hold the library programs (Python) until lines are typed
 or loaded into them; then the typed BASIC program replaces the library program
@@ -30,6 +39,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
+from yaseer.basic.scanner import detokenize
 from yaseer.basic.errors import (
     BREAK,
     CANT_CONTINUE,
@@ -202,6 +212,9 @@ HELP_TEXT = """\
 10 PRINT X          store line 10 (10 alone deletes it)
 LIST [a-b]          show lines            DELETE a-b   remove lines
 EDIT n              edit line n           RENUM [new[,old[,step]]]
+AUTO [n][,step]     number lines for you (Enter on a free number or Ctrl-C ends)
+LLIST [a-b]         list to the printer   TRON, TROFF  trace lines run as [n]
+CLS                 clear the screen
 RUN [n] | RUN "f"   run PROG 0            CONT         go on after STOP
 NEW                 erase this area       PROG n       edit area n (0-9)
 LOAD "f" | SAVE "f" read / write a .bas   FILES        list the .bas files here
@@ -210,7 +223,7 @@ SYSTEM, BYE, Ctrl-D leave                 Ctrl-C       break a running program
 """
 
 _COMMAND = re.compile(
-    r"\s*(LIST|DELETE|RENUM|EDIT|NEW|RUN|CONT|LOAD|SAVE|PROG|FILES|HELP|SYSTEM|BYE)(?![A-Z$(=])(.*)$",
+    r"\s*(LLIST|LIST|DELETE|RENUM|EDIT|AUTO|NEW|RUN|CONT|LOAD|SAVE|PROG|FILES|HELP|SYSTEM|BYE)(?![A-Z$(=])(.*)$",
     re.I | re.S,
 )
 
@@ -223,7 +236,8 @@ class Session:
     newlines).  ``engine`` runs BASIC: :class:`MachineEngine`, or anything
     with ``run(programs, start)``, ``cont()``, ``direct(statement, programs)``
     and ``reset()`` that reports errors, STOP and breaks as BasicError.
-    ``directory`` is where LOAD and SAVE look.
+    ``directory`` is where LOAD and SAVE look; ``printer`` receives LLIST
+    (default: ``write``, the screen).
     """
 
     write: Callable[[str], object]
@@ -233,7 +247,23 @@ class Session:
     area: int = 0
     edit_text: str | None = None  # a line EDIT put up for the next input
     finished: bool = False
+    printer: Callable[[str], object] | None = None
+    auto: tuple[int, int] | None = None  # AUTO: (number offered next, step)
+    _auto_step: int = 10
     _can_continue: bool = False
+
+    @property
+    def prompt(self) -> str:
+        """What the next line is typed after: ``P0> `` or, in AUTO, the line number offered."""
+        if self.auto is not None:
+            number = self.auto[0]
+            return f"{number}{'*' if number in self.program else ' '}"
+        return f"P{self.area}> "
+
+    def interrupt(self) -> None:
+        """Ctrl-C at the prompt: the typed line is dropped and AUTO ends."""
+        self.auto = None
+        self.edit_text = None
 
     # -- entry point --
 
@@ -250,6 +280,9 @@ class Session:
             self.write(f"Internal error ({type(error).__name__}: {error})\n")
 
     def _dispatch(self, text: str) -> None:
+        if self.auto is not None:
+            self._auto_line(text)
+            return
         if not text.strip():
             return
         numbered = split_numbered(text)
@@ -278,16 +311,48 @@ class Session:
             self.program.pop(number, None)
         self._can_continue = False
 
+    def _auto_line(self, text: str) -> None:
+        """A line typed after an AUTO number (see the module docstring)."""
+        number, step = self.auto
+        if not text.strip() and number not in self.program:
+            self.auto = None
+            return
+        if text.strip():
+            self.store_line(number, text)
+        following = number + step
+        self.auto = (following, step) if following <= MAX_LINE_NUMBER else None
+
+    def listed(self, number: int) -> str:
+        """Line ``number`` of the current area as LIST shows it (``20 FOR J=1 TO 3``)."""
+        return f"{number} {detokenize(self.program[number])}"
+
     # -- commands --
 
-    def command_list(self, argument: str) -> None:
-        """LIST [range]: show the stored lines of the current area."""
+    def command_list(self, argument: str, write: Callable[[str], object] | None = None) -> None:
+        """LIST [range]: show the stored lines of the current area as the machine lists them."""
+        write = write or self.write
         first, last = parse_range(argument)
         if not self.program and self.area in LIBRARY_AREAS:
-            self.write(f"PROG {self.area}: library program (Python)\n")
+            write(f"PROG {self.area}: library program (Python)\n")
             return
         for number in lines_in_range(self.program, first, last):
-            self.write(f"{number} {self.program[number]}\n")
+            write(self.listed(number) + "\n")
+
+    def command_llist(self, argument: str) -> None:
+        """LLIST [range]: LIST to the printer."""
+        self.command_list(argument, self.printer or self.write)
+
+    def command_auto(self, argument: str) -> None:
+        """AUTO [start][,[step]]: offer line numbers from ``start`` (10) by ``step`` (10, or the last one)."""
+        match = re.fullmatch(r"(\d*)\s*(?:,\s*(\d*))?", argument)
+        if not match:
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        start = int(match.group(1)) if match.group(1) else 10
+        step = int(match.group(2)) if match.group(2) else (self._auto_step if "," in argument else 10)
+        if start > MAX_LINE_NUMBER or step <= 0:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self._auto_step = step
+        self.auto = (start, step)
 
     def command_delete(self, argument: str) -> None:
         """DELETE range: remove lines; a single missing line is an error."""
@@ -320,7 +385,7 @@ class Session:
         number = int(argument)
         if number not in self.program:
             raise BasicError("Undefined line number", UNDEFINED_LINE)
-        self.edit_text = f"{number} {self.program[number]}"
+        self.edit_text = self.listed(number)
 
     def command_new(self, argument: str) -> None:
         """NEW: erase the current area's program (and the variables if it is PROG 0)."""
@@ -408,6 +473,8 @@ class Session:
             if in_program:
                 self._can_continue = error.code == BREAK and error.line is not None
             self.write(f"{error}\n")
+            if error.code == SYNTAX_ERROR and error.area == self.area and error.line in self.program:
+                self.edit_text = self.listed(error.line)  # GW-BASIC offers the line for editing
             return
         if in_program:
             self._can_continue = False
@@ -456,21 +523,28 @@ class _Screen:
 class MachineEngine:
     """The session's view of the BASIC machine: run typed areas, continue, direct mode.
 
-    PRINT and LPRINT both show on the session's screen.  STOP comes back as a
-    ``Break`` BasicError placed at the STOP's line (as MS-BASIC shows it), so
-    does Ctrl-C (the machine places it); CONT resumes after a STOP.
+    PRINT shows on the session's screen, LPRINT on ``printer`` (default: the
+    screen too).  STOP comes back as a ``Break`` BasicError placed at the STOP's
+    line (as MS-BASIC shows it), so does Ctrl-C (the machine places it); CONT
+    resumes after either.  ``clear_screen`` is called for CLS (None: CLS does
+    nothing, e.g. on a pipe).  TRON stays on across RUN; NEW turns it off.
     """
 
-    def __init__(self, write: Callable[[str], object], dialect: str = "casio") -> None:
+    def __init__(self, write: Callable[[str], object], dialect: str = "casio",
+                 printer: Callable[[str], object] | None = None,
+                 clear_screen: Callable[[], object] | None = None) -> None:
         self._screen = _Screen(write)
         self._dialect = dialect
+        self._printer = _Screen(printer) if printer is not None else self._screen
+        self._clear_screen = clear_screen
         self._machine = None  # made on first use: the prompt comes up without waiting for it
 
     @property
     def machine(self):
         """The machine holding the variables (created when first needed)."""
         if self._machine is None:
-            self._machine = create_machine(self._screen, self._screen, dialect=self._dialect)
+            self._machine = create_machine(self._screen, self._printer, dialect=self._dialect)
+            self._machine.on_clear_screen = self._clear_screen
         return self._machine
 
     def reset(self) -> None:
@@ -479,7 +553,9 @@ class MachineEngine:
 
     def run(self, areas: dict[int, Program], start: int | None) -> None:
         """RUN: a fresh machine with the typed areas' programs, from ``start`` or the top."""
+        tracing = self._machine is not None and self._machine.tracing
         self.reset()
+        self.machine.set_trace(tracing)
         self.sync(areas)
         self._finish(self._guard(lambda: self.machine.run(start)))
 

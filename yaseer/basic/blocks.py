@@ -71,7 +71,7 @@ def nodes(value):
 def splits(stmt) -> bool:
     """True when code after ``stmt`` must be enterable from outside (a return point)."""
     for s in walk_statements(stmt):
-        if isinstance(s, (ast.Gosub, ast.Stop, ast.For)):
+        if isinstance(s, (ast.Gosub, ast.Stop, ast.For, ast.Trace)):
             return True
         if isinstance(s, ast.OnJump) and s.gosub:
             return True
@@ -80,7 +80,7 @@ def splits(stmt) -> bool:
 
 _NATIVE_BODY = (
     ast.Let, ast.Print, ast.GosubProg, ast.Rem, ast.Data, ast.Read, ast.Dim, ast.Angle,
-    ast.Randomize, ast.DefFn, ast.Input, ast.Clear, ast.Restore, ast.End, ast.OnError,
+    ast.Randomize, ast.DefFn, ast.Input, ast.Clear, ast.Restore, ast.End, ast.OnError, ast.Cls,
 )
 
 

@@ -16,6 +16,13 @@ RESUME NEXT - at every statement.  Each block is generated as Python source:
   is ``while True: b = blocks[b]()``.
 
 The variable ``_ln`` tracks the BASIC line for error messages.
+
+With ``trace`` (TRON), the first statement of every line is preceded by
+``_tr(n)``, which prints ``[n]``: a line is traced when execution reaches its
+start (falling in from the line before, or by a jump), not when a NEXT or
+RETURN comes back into its middle, as GW-BASIC traces.  The traced variant has
+the same blocks as the plain one, so the machine can swap one for the other
+while a program runs; the plain variant carries no cost for tracing.
 """
 
 from __future__ import annotations
@@ -191,9 +198,10 @@ def _simple_operand(code: str) -> bool:
 class AreaCompiler:
     """Compiles the lines of one program area (see the module docstring)."""
 
-    def __init__(self, lines: list, area: int = 0, direct: bool = False, entry_lines=()):
+    def __init__(self, lines: list, area: int = 0, direct: bool = False, entry_lines=(), trace: bool = False):
         self.area = area
         self.direct = direct
+        self.trace = trace and not direct
         self.flat = flatten(lines)
         self.plan = plan(self.flat, entry_lines)
         self.line_first = {}
@@ -523,6 +531,16 @@ class AreaCompiler:
         ret = self.continuation()
         block.code.append((indent, f"_stop({ret})"))
 
+    def stmt_Trace(self, stmt, scope):
+        """TRON / TROFF: the machine swaps in the other variant; the next block is its."""
+        block, indent = self.cur, self.indent
+        ret = self.continuation()
+        block.code.append((indent, f"_M.set_trace({stmt.on})"))
+        block.code.append((indent, f"return {ret}"))
+
+    def stmt_Cls(self, stmt, scope):
+        self.emit("_M.clear_screen()")
+
     def stmt_Dim(self, stmt, scope):
         for name, sizes in stmt.arrays:
             codes = ", ".join(self.numeric(s, scope) for s in sizes)
@@ -789,11 +807,18 @@ class AreaCompiler:
                         min(e for e in self.plan.entries if e > i))
             if number != self.line:
                 self.set_line(number)
+            self.trace_line(i)
             if i in self.plan.native:
                 i = self.native_loop(i)
                 continue
             self.statement(stmt)
             i += 1
+
+    def trace_line(self, i: int) -> None:
+        """TRON: print ``[n]`` where statement ``i`` starts its line ``n``."""
+        number = self.flat[i][0]
+        if self.trace and self.line_first[number] == i:
+            self.emit(f"_tr({number})")
 
     def native_loop(self, i: int) -> int:
         """Emit FOR at ``i`` ... its NEXT as a Python while loop; the index after NEXT."""
@@ -819,6 +844,7 @@ class AreaCompiler:
             self.set_line(self.flat[i][0])
         body_mark = len(self.cur.code)
         self.walk(i + 1, j)
+        self.trace_line(j)  # a NEXT that starts its line
         if len(self.cur.code) == body_mark:
             self.emit("pass")  # an empty body (a delay loop)
         if counting:
@@ -942,10 +968,12 @@ def split_data(text: str) -> list[str]:
     return items
 
 
-def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=()) -> CompiledArea:
+def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=(),
+                 trace: bool = False) -> CompiledArea:
     """Compile an area's parsed lines (``syntax_tree.Line`` in line order).
 
     ``entry_lines`` are lines that must start a block although no jump names
-    them (RUN n, or a GOTO typed in direct mode).
+    them (RUN n, or a GOTO typed in direct mode); ``trace`` compiles the TRON
+    variant (see the module docstring).
     """
-    return AreaCompiler(lines, area, direct, entry_lines).compile()
+    return AreaCompiler(lines, area, direct, entry_lines, trace).compile()

@@ -246,6 +246,9 @@ class Machine:
         # collected while a hook is registered (yaseer.api keeps the printed rows).
         self.line_hooks: list[Callable] = []
         self._line_values: tuple[list, list] = ([], [])
+        self.tracing = False  # TRON: lines run are shown as [n]
+        # CLS: called to clear the screen (the session clears a terminal); None: nothing to clear
+        self.on_clear_screen: Callable[[], object] | None = None
 
     # ------------------------------------------------------------ programs
     def load(self, text: str, area: int = 0) -> None:
@@ -297,8 +300,8 @@ class Machine:
 
         A program area (not a direct statement) is looked up first in the on-disk
         cache of compiled programs (:mod:`yaseer.basic.program_cache`) and stored
-        there after a compile."""
-        entry = None if direct else program_cache.key(area, program, entry_lines, self.dialect)
+        there after a compile (not the TRON variant, see ``set_trace``)."""
+        entry = None if direct or self.tracing else program_cache.key(area, program, entry_lines, self.dialect)
         cached = program_cache.load(entry) if entry else None
         if cached is not None:
             compiled, codes = cached
@@ -307,7 +310,7 @@ class Machine:
 
             lines = [_parse_cached(number, text) for number, text in sorted(program.items())]
             compiled = compile_area(lines, area if isinstance(area, int) else 0, direct=direct,
-                                    entry_lines=entry_lines)
+                                    entry_lines=entry_lines, trace=self.tracing)
             codes = [None] * len(compiled.pieces)
         runtime_state = _AreaRuntime(self, area, compiled)
         namespace = self._namespace(area, runtime_state)
@@ -372,7 +375,7 @@ class Machine:
             "_mod": runtime.modulo, "_and": runtime.logical_and, "_or": runtime.logical_or,
             "_not": runtime.logical_not, "_frange": runtime.float_range,
             "_fcount": runtime.pass_counter, "_fvalue": runtime.counted_value,
-            "_fafter": runtime.counted_final,
+            "_fafter": runtime.counted_final, "_tr": self.trace_line,
         }
         ns.update(self._trig_functions())
         self.namespaces[area] = ns
@@ -383,6 +386,36 @@ class Machine:
             return {"_sin": math.sin, "_cos": math.cos, "_tan": math.tan, "_atn": math.atan}
         return {"_sin": runtime.sin_degrees, "_cos": runtime.cos_degrees,
                 "_tan": runtime.tan_degrees, "_atn": runtime.atn_degrees}
+
+    def set_trace(self, on: bool) -> None:
+        """TRON / TROFF: swap every compiled area's blocks for its traced (or plain) variant.
+
+        The variants have the same blocks, so a running program goes on in the
+        new variant from its next block (TRON and TROFF end their block).
+        """
+        if on == self.tracing:
+            return
+        self.tracing = on
+        from yaseer.basic.compiler import compile_area
+
+        for area, compiled in list(self.compiled.items()):
+            extra = tuple(self._extra_entries) if area == 0 else ()
+            lines = [_parse_cached(number, text) for number, text in sorted(self.programs.get(area, {}).items())]
+            variant = compile_area(lines, area, entry_lines=extra, trace=on)
+            namespace = self.namespaces[area]
+            for first_line, text in variant.pieces:
+                self._exec_piece(text, first_line, area, namespace)
+            compiled.blocks[:] = [namespace[f"_b{b}"] for b in range(variant.block_count)]
+
+    def trace_line(self, number: int) -> None:
+        """TRON's ``[n]`` as line ``n`` starts (on the screen, like PRINT without a newline)."""
+        self.screen.write(f"[{number}]")
+
+    def clear_screen(self) -> None:
+        """CLS: clear the screen if the screen can be cleared; the next PRINT starts at column 1."""
+        if self.on_clear_screen is not None:
+            self.on_clear_screen()
+        self.screen.column = 0
 
     def set_angle(self, mode: str) -> None:
         """DEG or RAD: the unit SIN, COS, TAN take and ATN returns."""

@@ -248,6 +248,12 @@ class _ToAst(Transformer):
     def angle_stmt(self, c):
         return ast.Angle(c[0].type)
 
+    def trace_stmt(self, c):
+        return ast.Trace(c[0].type == "TRON")
+
+    def cls_stmt(self, c):
+        return ast.Cls()
+
     # -- expressions
     def binop(self, c):
         left, op, right = c

@@ -24,7 +24,7 @@ STATEMENT_KEYWORDS = (
     "LET", "PRINT", "LPRINT", "USING", "FOR", "TO", "STEP", "NEXT", "GOTO", "GOSUB",
     "PROG", "RETURN", "IF", "THEN", "ELSE", "ON", "END", "STOP", "DIM", "CLEAR",
     "READ", "RESTORE", "INPUT", "DEF", "FN", "ERROR", "RESUME", "RANDOMIZE", "DEG",
-    "RAD", "AND", "OR", "NOT", "MOD", "TAB", "SPC",
+    "RAD", "AND", "OR", "NOT", "MOD", "TAB", "SPC", "TRON", "TROFF", "CLS",
 )
 # Functions of one argument (parentheses optional: ``COS T``).
 UNARY_FUNCTIONS = (
@@ -122,62 +122,131 @@ def _scan_number(upper: str, i: int) -> tuple[float, int]:
     return value, match.end()
 
 
-def tokenize(text: str) -> list[Token]:
-    """The tokens of one line's statements (the text after its line number).
+def _lexemes(text: str):
+    """``(token type, value, start, end)`` for each token of one line, in order.
 
-    Raises ``BasicError("Syntax error")`` for a character no token can start with.
+    ``start:end`` is the token's span in ``text``.  A remark (``REM`` or ``'``)
+    is the last lexeme: type ``REMARK``, value the text after it.  Raises
+    ``BasicError("Syntax error")`` at a character no token can start with.
     """
     from lark import Token  # here, not at the top: loading a listing (split_lines) needs no lark
 
     upper = _upper_outside_strings(text)
-    tokens: list[Token] = []
     i = 0
     n = len(text)
     while i < n:
         ch = upper[i]
+        start = i
         if ch in " \t\r\n":
             i += 1
-        elif ch == '"':
+            continue
+        if ch == '"':
             value, i = _scan_string(text, i)
-            tokens.append(Token("STRING", value))
+            yield "STRING", value, start, i
         elif ch == "'":
-            if not tokens:  # a line that is only a remark
-                tokens.append(Token("REMARK", text[i + 1:]))
-            break  # after a statement the remark is simply dropped (no colon needed)
+            yield "REMARK", text[i + 1:], start, n
+            return
         elif ch.isdigit() or (ch == "." and i + 1 < n and upper[i + 1].isdigit()):
             value, i = _scan_number(upper, i)
-            tokens.append(Token("NUMBER", value))
+            yield "NUMBER", value, start, i
         elif ch.isascii() and ch.isalpha():
             word = keyword_at(upper, i)
             if word == COMMENT_KEYWORD:
-                tokens.append(Token("REMARK", text[i + len(word):]))
-                break
+                yield "REMARK", text[i + len(word):], start, n
+                return
             if word == DATA_KEYWORD:
                 raw, i = _scan_data(text, i + len(word))
-                tokens.append(Token("DATA_TEXT", raw))
+                yield "DATA_TEXT", raw, start, i
             elif word is not None:
-                tokens.append(Token(_KEYWORD_TYPES[word], word))
                 i += len(word)
+                yield _KEYWORD_TYPES[word], word, start, i
             else:
                 kind, name, i = _scan_name(upper, i)
-                tokens.append(Token(kind, name))
+                yield kind, name, start, i
         elif ch in "<>=":
             pair = upper[i:i + 2]
-            if pair in _RELATIONS:
-                tokens.append(Token(_RELATIONS[pair], pair))
-                i += 2
-            else:
-                tokens.append(Token(_RELATIONS[ch], ch))
-                i += 1
+            symbol = pair if pair in _RELATIONS else ch
+            i += len(symbol)
+            yield _RELATIONS[symbol], symbol, start, i
         elif ch in _OPERATORS:
-            tokens.append(Token(_OPERATORS[ch], ch))
             i += 1
+            yield _OPERATORS[ch], ch, start, i
         elif ch == "?":
-            tokens.append(Token("PRINT", "PRINT"))
             i += 1
+            yield "PRINT", "PRINT", start, i
         else:
             raise _syntax_error()
+
+
+def tokenize(text: str) -> list[Token]:
+    """The tokens of one line's statements (the text after its line number).
+
+    A ``'`` remark after a statement is dropped (no colon is needed before it).
+    Raises ``BasicError("Syntax error")`` for a character no token can start with.
+    """
+    tokens: list[Token] = []
+    for kind, value, start, _ in _lexemes(text):
+        if kind == "REMARK" and tokens and text[start] == "'":
+            break
+        tokens.append(Token(kind, value))
     return tokens
+
+
+# Lexemes listed as words: a space separates two of them (``FOR J``, ``1 TO``, ``COS T``).
+_WORDS = {"NAME", "STRNAME", "NUMBER", "STRING", "SYSVAR", "_RPAR"}
+# Keywords followed by ``(`` without a space: functions and TAB/SPC.
+_FUNCTION_TYPES = {"FUNC", "FUNCN", "TAB", "SPC"}
+_TIGHT_AFTER = {"_COLON", "SEMI", "COMMA", "_RPAR"}
+
+
+def detokenize(text: str) -> str:
+    """A line's statements as the pocket computer lists them (LIST).
+
+    Keywords are found as the scanner finds them and shown in capitals, with a
+    space between a keyword and a neighbouring word (name, number, string, or
+    another keyword), none around operators and separators; names in
+    capitals; numbers, strings, remarks and DATA as typed.  Typed
+    ``L=X/COST`` lists as ``L=X/COS T``, ``forj=1to3:printj;:nextj`` as
+    ``FOR J=1 TO 3:PRINT J;:NEXT J``.  A line the scanner cannot read is
+    returned as typed.
+    """
+    try:
+        lexemes = list(_lexemes(text))
+    except BasicError:
+        return text.strip()
+    out: list[str] = []
+    previous = None  # type of the lexeme before
+    for kind, value, start, end in lexemes:
+        if kind == "REMARK":
+            piece = text[start:end] if text[start] == "'" else "REM" + value
+        elif kind == "DATA_TEXT":
+            piece = "DATA " + value.lstrip()
+        elif kind in ("NAME", "STRNAME"):
+            piece = value
+        elif kind in ("NUMBER", "STRING") or kind in _OPERATORS.values() or kind in _RELATIONS.values():
+            piece = text[start:end].upper() if kind == "NUMBER" else text[start:end]
+        else:
+            piece = value  # a keyword
+        if previous is not None and _spaced(previous, kind):
+            out.append(" ")
+        out.append(piece)
+        previous = kind
+    return "".join(out)
+
+
+def _is_keyword(kind: str) -> bool:
+    return kind in _KEYWORD_TYPES.values() and kind not in ("REMARK", "DATA_TEXT", "SYSVAR")
+
+
+def _spaced(left: str, right: str) -> bool:
+    """Is there a space between lexemes of types ``left`` and ``right`` in a listing?"""
+    if right in _TIGHT_AFTER or left == "FN":
+        return False
+    if _is_keyword(left):
+        return not (left in _FUNCTION_TYPES and right == "_LPAR")
+    if _is_keyword(right) or right in ("REMARK", "DATA_TEXT"):
+        return left in _WORDS or _is_keyword(left)
+    return left in _WORDS and right in _WORDS and left != "_RPAR"
 
 
 def _upper_outside_strings(text: str) -> str:

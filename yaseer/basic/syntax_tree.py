@@ -285,6 +285,16 @@ class Angle:
 
 
 @_node
+class Trace:
+    on: bool  # TRON (True) or TROFF
+
+
+@_node
+class Cls:
+    pass
+
+
+@_node
 class If:
     condition: object
     then: object  # int line number or list of statements

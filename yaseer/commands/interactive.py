@@ -45,8 +45,9 @@ def run_loop(session, read: Reader, write: Callable[[str], object]) -> int:
     """Prompt, read, handle, until the session finishes or input ends."""
     while not session.finished:
         try:
-            text = read(f"P{session.area}> ", session.edit_text or "")
-        except KeyboardInterrupt:  # Ctrl-C at the prompt: forget the line
+            text = read(session.prompt, session.edit_text or "")
+        except KeyboardInterrupt:  # Ctrl-C at the prompt: forget the line (and leave AUTO)
+            session.interrupt()
             write("\n")
             continue
         except EOFError:
