@@ -104,3 +104,46 @@ def test_unnumbered_physical_lines_continue_the_previous_line():
 def test_text_before_the_first_line_number_is_an_error():
     with pytest.raises(BasicError, match="Syntax error"):
         split_lines("PRINT 1\n10 END\n")
+
+
+# --- LIST: a line as the pocket computer lists it ----------------------------------
+
+from pathlib import Path  # noqa: E402
+
+from yaseer.basic.scanner import detokenize  # noqa: E402
+
+REPO = Path(__file__).resolve().parents[1]
+
+
+@pytest.mark.parametrize("typed, listed", [
+    ("L=X/COST", "L=X/COS T"),  # the issue's two examples
+    ("forj=1to3:printj;:nextj", "FOR J=1 TO 3:PRINT J;:NEXT J"),
+    ("IFX<0THEN100ELSE200", "IF X<0 THEN 100 ELSE 200"),
+    ("GOSUBPROG1", "GOSUB PROG 1"),
+    ('?"A";x', 'PRINT "A";X'),  # ? is PRINT
+    ("FOR I=10 TO 1 STEP -1", "FOR I=10 TO 1 STEP -1"),
+    ("printtab(5);sin(x);erl", "PRINT TAB(5);SIN(X);ERL"),
+    ("DEF FNA(X)=X*2", "DEF FNA(X)=X*2"),
+    ("x=1e3 ' Keep This", "X=1E3 ' Keep This"),  # numbers and remarks as typed
+    ("rem Keep  This", "REM Keep  This"),
+    ('data 1, "Two" ,3', 'DATA 1, "Two" ,3'),
+    ("PRINT X@", "PRINT X@"),  # a line the scanner cannot read is listed as typed
+])
+def test_detokenize_lists_keywords_in_capitals_and_spaced(typed, listed):
+    assert detokenize(typed) == listed
+
+
+def _all_listing_lines():
+    for path in sorted((REPO / "listings").glob("*.bas")) + [REPO / "programs" / "prog5.bas"]:
+        for number, text, _ in split_lines(path.read_text()):
+            yield pytest.param(text, id=f"{path.stem}:{number}")
+
+
+@pytest.mark.parametrize("text", list(_all_listing_lines()))
+def test_a_listed_line_reads_back_as_the_same_tokens(text):
+    """LIST then typing the listed line back in changes nothing (every listing line)."""
+    try:
+        expected = kinds(text)
+    except BasicError:
+        pytest.skip("the line does not scan")
+    assert kinds(detokenize(text)) == expected

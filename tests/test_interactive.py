@@ -32,9 +32,9 @@ def plain(text: str) -> str:
 class Terminal:
     """``python -m yaseer`` on a pseudo-terminal."""
 
-    def __init__(self, cwd: Path):
+    def __init__(self, cwd: Path, args=()):
         env = dict(os.environ, PROMPT_TOOLKIT_NO_CPR="1", TERM="xterm", PYTHONPATH=str(REPO))
-        self.child = pexpect.spawn(sys.executable, ["-m", "yaseer"], cwd=str(cwd), env=env,
+        self.child = pexpect.spawn(sys.executable, ["-m", "yaseer", *args], cwd=str(cwd), env=env,
                                    encoding="utf-8", timeout=20, dimensions=(40, 120))
         self.banner = self.wait()
 

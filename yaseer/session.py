@@ -588,9 +588,13 @@ class MachineEngine:
         if outcome == "stop":
             raise BasicError("Break", BREAK, line=self.machine.line)
 
-    @staticmethod
-    def _guard(action: Callable[[], str]) -> str:
+    def _guard(self, action: Callable[[], str]) -> str:
+        """Run ``action``; a line left open (``PRINT 1;``, TRON's ``[30]``) is ended
+        before the prompt or the error message, as MS-BASIC does."""
         try:
             return action()
         except KeyboardInterrupt:  # between the machine's own checks
             raise BasicError("Break", BREAK) from None
+        finally:
+            if self._machine is not None:
+                self._machine.end_line()

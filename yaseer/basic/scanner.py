@@ -129,8 +129,6 @@ def _lexemes(text: str):
     is the last lexeme: type ``REMARK``, value the text after it.  Raises
     ``BasicError("Syntax error")`` at a character no token can start with.
     """
-    from lark import Token  # here, not at the top: loading a listing (split_lines) needs no lark
-
     upper = _upper_outside_strings(text)
     i = 0
     n = len(text)
@@ -178,13 +176,15 @@ def _lexemes(text: str):
             raise _syntax_error()
 
 
-def tokenize(text: str) -> list[Token]:
+def tokenize(text: str) -> list:
     """The tokens of one line's statements (the text after its line number).
 
     A ``'`` remark after a statement is dropped (no colon is needed before it).
     Raises ``BasicError("Syntax error")`` for a character no token can start with.
     """
-    tokens: list[Token] = []
+    from lark import Token  # here, not at the top: loading a listing (split_lines) needs no lark
+
+    tokens: list = []  # lark Tokens
     for kind, value, start, _ in _lexemes(text):
         if kind == "REMARK" and tokens and text[start] == "'":
             break

@@ -15,18 +15,24 @@ from typing import Callable
 
 BANNER = (
     "yaseer - the Al-Yaseer pocket computer. PROG 1, 2, 3 and 5 hold the library programs.\n"
-    "Type numbered lines to store them; LIST, RUN, CONT, NEW, DELETE, RENUM, EDIT, LOAD, SAVE, PROG n;\n"
+    "Type numbered lines to store them (AUTO numbers them); LIST, RUN, CONT, NEW, DELETE, RENUM, EDIT,\n"
+    "LOAD, SAVE, PROG n, TRON; "
     "HELP lists the commands; SYSTEM (or Ctrl-D) leaves.\n"
 )
 
 Reader = Callable[[str, str], str]  # (prompt, text put up for editing) -> the line typed
 
 
+CLEAR_SCREEN = "\x1b[H\x1b[2J"  # CLS on a terminal: cursor home, erase the screen
+
+
 def add_arguments(parser) -> None:
-    """``yaseer`` alone (or ``yaseer --dialect gw``) starts the session: ``--dialect``."""
+    """``yaseer`` alone (or ``yaseer --dialect gw``) starts the session: ``--dialect``, ``--printer``."""
     from yaseer.commands.options import add_dialect_argument
 
     add_dialect_argument(parser)
+    parser.add_argument("--printer", metavar="FILE",
+                        help="the session's printer: LPRINT and LLIST append to FILE (default: the screen)")
 
 
 def main(args=None) -> int:
@@ -35,10 +41,28 @@ def main(args=None) -> int:
 
     write = _writer(sys.stdout)
     dialect = getattr(args, "dialect", None) or "casio"
-    session = Session(write=write, engine=MachineEngine(write, dialect=dialect))
-    read = prompt_toolkit_reader() if _is_terminal() else plain_reader(sys.stdin, write)
+    printer = _printer(getattr(args, "printer", None))
+    if printer is None and getattr(args, "printer", None):
+        return 1
+    terminal = _is_terminal()
+    engine = MachineEngine(write, dialect=dialect, printer=printer,
+                           clear_screen=(lambda: write(CLEAR_SCREEN)) if terminal else None)
+    session = Session(write=write, engine=engine, printer=printer)
+    read = prompt_toolkit_reader() if terminal else plain_reader(sys.stdin, write)
     write(BANNER)
     return run_loop(session, read, write)
+
+
+def _printer(path: str | None) -> Callable[[str], None] | None:
+    """A writer appending to ``path`` (flushed at every write), or None (no path, or it cannot be opened)."""
+    if not path:
+        return None
+    try:
+        stream = open(path, "a", encoding="utf-8")  # noqa: SIM115 - open for the whole session
+    except OSError as error:
+        print(f"Cannot open the printer file {path}: {error.strerror}", file=sys.stderr)
+        return None
+    return _writer(stream)
 
 
 def run_loop(session, read: Reader, write: Callable[[str], object]) -> int:

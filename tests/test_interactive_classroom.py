@@ -1,0 +1,140 @@
+"""The session's classroom commands typed on a real pseudo-terminal (pexpect), as a user types them.
+
+AUTO, LIST of crunched lines, TRON/TROFF, CLS, LLIST, a syntax error put up
+for editing, CONT after Ctrl-C.  The GW-BASIC behaviour each one copies is
+stated where it is asserted (PC-BASIC 2.0.8 gave the traces; its AUTO prompt
+is the number followed by ``*`` for a line that exists, a space otherwise).
+"""
+
+from __future__ import annotations
+
+import re
+
+import pexpect
+import pytest
+
+from test_interactive import PROMPT, Terminal, plain
+
+# AUTO's prompt: the offered line number and "*" (the line exists) or " " (drawn as a cursor move).
+AUTO_PROMPT = re.compile(r"\x1b\[\?2004h(?:\x1b\[[0-9;?]*[A-Za-z])*(\d+)(\*?)(?=\x1b)")
+
+
+@pytest.fixture
+def terminal(tmp_path):
+    term = Terminal(tmp_path)
+    yield term
+    if term.child.isalive():
+        term.child.terminate(force=True)
+
+
+def auto_prompt(terminal, keys: str) -> tuple[int, str]:
+    """Send ``keys``; the AUTO number offered next and its mark."""
+    terminal.child.send(keys)
+    terminal.child.expect(AUTO_PROMPT)
+    return int(terminal.child.match.group(1)), terminal.child.match.group(2) or " "
+
+
+def test_auto_offers_numbers_marks_existing_lines_and_ends(terminal):
+    terminal.type("20 PRINT 20")
+    assert auto_prompt(terminal, "AUTO 10,10\r") == (10, " ")
+    assert auto_prompt(terminal, "PRINT 10\r") == (20, "*")  # line 20 exists: GW marks it *
+    assert auto_prompt(terminal, "\r") == (30, " ")  # Enter after * keeps line 20
+    assert auto_prompt(terminal, "PRINT 30\r") == (40, " ")
+    terminal.keys("\r")  # Enter on a free number ends AUTO: the P0> prompt is back
+    assert terminal.type("LIST") == "10 PRINT 10\n20 PRINT 20\n30 PRINT 30\n"
+    assert auto_prompt(terminal, "AUTO 100,5\r") == (100, " ")
+    assert auto_prompt(terminal, "X=1\r") == (105, " ")
+    terminal.child.send("Y=2")
+    terminal.keys("\x03")  # Ctrl-C ends AUTO; the line being typed is not stored (GW-BASIC)
+    assert terminal.type("LIST 100-") == "100 X=1\n"
+    assert auto_prompt(terminal, "AUTO\r") == (10, "*")  # AUTO alone: from 10 by 10
+    terminal.keys("\x03")
+    terminal.close()
+
+
+def test_list_shows_crunched_lines_as_the_pocket_computer_lists_them(terminal):
+    terminal.type("10 L=X/COST")
+    terminal.type("20 forj=1to3:printj;:nextj")
+    terminal.type('30 ifx<0then100else print"cost";x')
+    assert terminal.type("LIST") == (
+        "10 L=X/COS T\n"
+        "20 FOR J=1 TO 3:PRINT J;:NEXT J\n"
+        '30 IF X<0 THEN 100 ELSE PRINT "cost";X\n'
+    )
+    assert terminal.type("RUN 20") == " 1  2  3 cost 0 \n"
+    terminal.close()
+
+
+def test_tron_traces_lines_as_gw_basic_in_programs_and_direct_mode(terminal):
+    for line in ("10 FOR I=1 TO 2", "20 PRINT I", "30 NEXT I", "40 GOSUB 60: PRINT \"B\"", "50 END",
+                 "60 PRINT \"S\": RETURN"):
+        terminal.type(line)
+    terminal.type("TRON")
+    # PC-BASIC 2.0.8 prints exactly this for the same program after TRON
+    assert terminal.type("RUN") == "[10][20] 1 \n[30][20] 2 \n[30][40][60]S\nB\n[50]\n"
+    assert terminal.type("GOTO 60") == "[60]S\nRETURN without GOSUB in 60\n"
+    terminal.type("TROFF")
+    assert terminal.type("RUN") == " 1 \n 2 \nS\nB\n"
+    terminal.type("5 TRON")  # as a statement: the lines after it are traced
+    terminal.type("45 TROFF")
+    assert terminal.type("RUN") == "[10][20] 1 \n[30][20] 2 \n[30][40][60]S\nB\n[45]\n"
+    terminal.close()
+
+
+def test_cls_clears_the_terminal(terminal):
+    terminal.type("PRINT 1")
+    terminal.child.send("CLS\r")
+    terminal.child.expect_exact("\x1b[H\x1b[2J")
+    terminal.wait()
+    assert terminal.type('10 CLS: PRINT "TOP"') == ""
+    terminal.child.send("RUN\r")
+    terminal.child.expect_exact("\x1b[H\x1b[2J")
+    assert plain(terminal.wait()).endswith("TOP\n")
+    terminal.close()
+
+
+def test_llist_and_lprint_go_to_the_printer_file(tmp_path):
+    terminal = Terminal(tmp_path, args=("--printer", "printer.txt"))
+    try:
+        terminal.type("10 lprint\"paper\";2*3")
+        assert terminal.type("LLIST") == ""
+        assert terminal.type("RUN") == ""
+        assert (tmp_path / "printer.txt").read_text() == '10 LPRINT "paper";2*3\npaper 6 \n'
+        assert terminal.type("LIST") == '10 LPRINT "paper";2*3\n'
+        terminal.close()
+    finally:
+        if terminal.child.isalive():
+            terminal.child.terminate(force=True)
+
+
+def test_a_syntax_error_in_run_puts_the_line_up_for_editing(terminal):
+    terminal.type("10 PRINT 1")
+    terminal.type("20 PRINT (")
+    terminal.type("30 PRINT 3")
+    assert terminal.type("RUN") == " 1 \nSyntax error in 20\n"
+    # GW-BASIC shows line 20 for editing: it is under the cursor; finish it and Enter
+    terminal.child.expect_exact("20 PRINT (")
+    terminal.keys("\x05" + "2)\r")
+    assert terminal.type("LIST 20") == "20 PRINT (2)\n"
+    assert terminal.type("RUN") == " 1 \n 2 \n 3 \n"
+    terminal.close()
+
+
+def test_a_partly_printed_line_is_ended_before_the_prompt(terminal):
+    assert terminal.type("PRINT 1;") == " 1 \n"
+    terminal.close()
+
+
+def test_classroom_commands_from_a_pipe(tmp_path):
+    import os
+    import subprocess
+    import sys
+
+    from test_interactive import REPO
+
+    typed = "AUTO 10,5\nprint 1\nprint 2\n\nCLS\nLIST\nTRON\nRUN\n"
+    result = subprocess.run([sys.executable, "-m", "yaseer"], input=typed, capture_output=True, text=True,
+                            cwd=tmp_path, env=dict(os.environ, PYTHONPATH=str(REPO)), timeout=60)
+    assert result.returncode == 0
+    assert "\x1b" not in result.stdout  # CLS clears nothing on a pipe
+    assert "P0> 10 15 20 P0> P0> 10 PRINT 1\n15 PRINT 2\nP0> P0> [10] 1 \n[15] 2 \n" in result.stdout
