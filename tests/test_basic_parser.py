@@ -1,6 +1,9 @@
 """The LALR grammar: statement and expression shapes."""
 
+import pytest
+
 from yaseer.basic import syntax_tree as ast
+from yaseer.basic.dialect import GW
 from yaseer.basic.parser import parse_line, parse_statements
 
 
@@ -61,8 +64,36 @@ def test_for_with_negative_step():
 
 
 def test_syntax_error_is_kept_on_the_line():
-    line = parse_line(5070, "PRINT 1: U(2): X=1")
+    line = parse_line(5070, "U(2): X=1")
     assert line.statements == [] and str(line.error.at(5070)) == "Syntax error in 5070"
+
+
+def test_statements_before_a_bad_one_are_kept_in_gw():
+    """GW-BASIC finds a bad token when it gets there: the statements before it run."""
+    line = parse_line(5070, "PRINT 1: U(2): X=1", GW)
+    assert line.error is None and line.statements[0] == ast.Print(False, [ast.Num(1.0)])
+    assert str(line.statements[1]) == "Syntax error"
+
+
+def test_error_after_then_belongs_to_the_branch():
+    (stmt,) = parse_line(10, "IF A THEN PRINT 1: X", GW).statements
+    assert stmt.then[0] == ast.Print(False, [ast.Num(1.0)]) and str(stmt.then[1]) == "Syntax error"
+
+
+@pytest.mark.parametrize("text, message", [
+    ("X =", "Missing operand"), ("PRINT 1 +", "Missing operand"), ("FOR I = 1 TO", "Missing operand"),
+    ("X = (", "Missing operand"), ("GOTO", "Syntax error"), ("PRINT (1", "Syntax error"),
+    ("X = Y + * 2", "Syntax error"), ("PRINT HEX$(10)", "Unsupported word HEX$"),
+])
+def test_kind_of_grammar_error_in_gw(text, message):
+    """As PC-BASIC 2.0.8 reports each (an operand expected where the statement ends)."""
+    assert str(parse_line(10, text, GW).error) == message
+
+
+def test_casio_reports_the_whole_line():
+    assert str(parse_line(10, "X =").error) == "Syntax error"
+    assert parse_line(10, "PRINT 1: X").statements == []
+    assert str(parse_line(10, "PRINT SPACE$(5)").error) == "Unsupported word SPACE$"
 
 
 def test_line_number_must_be_whole():

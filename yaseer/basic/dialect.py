@@ -66,6 +66,14 @@ class Dialect:
         ``RepeatableRandom`` (Python's, seed 0 at RUN) or ``GwRandom``
         (GW-BASIC's own 24-bit sequence, as PC-BASIC reproduces it).
 
+    Syntax errors
+        ``errors_when_reached``: True (GW-BASIC) runs a line statement by
+        statement up to a bad one, which is the error when execution reaches
+        it (``10 PRINT 50: X`` prints 50, then ``Syntax error in 10``), and an
+        expression cut short by the end of its statement is ``Missing
+        operand``; False (Casio, as yaseer always ran the listings) makes a bad
+        line a ``Syntax error`` before any of it runs.
+
     Run-time error policy
         ``on_division_by_zero`` and ``on_overflow``: ``"stop"`` ends the run
         with the error (Casio); ``"continue"`` prints GW-BASIC's message and
@@ -98,6 +106,7 @@ class Dialect:
     default_dimension: int
     program_areas: bool
     random: type = RepeatableRandom
+    errors_when_reached: bool = False
 
     def implicit_size(self, name: str, ndim: int) -> int:
         """The largest subscript of array ``name`` with ``ndim`` dimensions used without DIM."""
@@ -118,6 +127,7 @@ GW = Dialect(
     name="gw", keyword_first=False, pi_keyword=False, typed_numbers=True, print_digits=7,
     width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
     implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,
+    errors_when_reached=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -143,10 +143,10 @@ def to_basic_error(exc: BaseException) -> BasicError:
 
 
 @lru_cache(maxsize=4096)
-def _parse_cached(number: int, text: str):
+def _parse_cached(number: int, text: str, dialect):
     from yaseer.basic.parser import parse_line  # here: a program read from the cache needs no parser
 
-    return parse_line(number, text)
+    return parse_line(number, text, dialect)
 
 
 def _new_array(dims: tuple, fill):
@@ -308,7 +308,7 @@ class Machine:
         else:
             from yaseer.basic.compiler import compile_area
 
-            lines = [_parse_cached(number, text) for number, text in sorted(program.items())]
+            lines = [_parse_cached(number, text, self.dialect) for number, text in sorted(program.items())]
             compiled = compile_area(lines, area if isinstance(area, int) else 0, direct=direct,
                                     entry_lines=entry_lines, trace=self.tracing)
             codes = [None] * len(compiled.pieces)

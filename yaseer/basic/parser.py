@@ -36,7 +36,9 @@ from lark.exceptions import LarkError, UnexpectedInput  # noqa: E402
 from lark.lexer import Lexer  # noqa: E402
 
 from yaseer.basic import syntax_tree as ast
-from yaseer.basic.errors import BasicError, SYNTAX_ERROR
+from yaseer.basic.dialect import CASIO, Dialect
+from yaseer.basic.errors import BasicError, MISSING_OPERAND, SYNTAX_ERROR
+from yaseer.basic.reserved import UNSUPPORTED, mark_unsupported, unsupported_message
 from yaseer.basic.scanner import tokenize
 
 GRAMMAR_PATH = Path(__file__).with_name("grammar.lark")
@@ -296,22 +298,85 @@ def _parser() -> Lark:
         return Lark(grammar, **options)
 
 
-def parse_statements(text: str) -> list:
+def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
     """The statements of one line's text; raises ``BasicError`` (Syntax error)."""
-    tokens = tokenize(text)
+    tokens = mark_unsupported(tokenize(text))
     if not tokens:
         return []
     _check_nesting(tokens)
     try:
-        statements = _parser().parse(tokens)
+        return _parser().parse(tokens)
     except BasicError:
         raise
     except (UnexpectedInput, LarkError) as exc:
         inner = getattr(exc, "orig_exc", None)
         if isinstance(inner, BasicError):
             raise inner from None
-        raise BasicError("Syntax error", SYNTAX_ERROR) from None
-    return statements
+        raise _grammar_error(exc, dialect) from None
+
+
+# Terminals that can start an operand: an expression expected here and the
+# statement ended instead is GW-BASIC's "Missing operand" (``X =``, ``PRINT 1 +``).
+_OPERAND_STARTS = frozenset(("NAME", "STRNAME", "_LPAR"))
+_STATEMENT_ENDS = frozenset(("$END", "_COLON", "ELSE"))
+
+
+def _grammar_error(exc, dialect: Dialect) -> BasicError:
+    """The BASIC error for a token list the grammar refuses (``Missing operand`` only
+    where the dialect reports errors when reached, as GW-BASIC)."""
+    token = getattr(exc, "token", None)
+    kind = getattr(token, "type", "$END")
+    if kind == UNSUPPORTED:
+        return BasicError(unsupported_message(token.value), SYNTAX_ERROR)
+    expected = set(getattr(exc, "expected", ()) or ())
+    if dialect.errors_when_reached and kind in _STATEMENT_ENDS and expected & _OPERAND_STARTS:
+        return BasicError("Missing operand", MISSING_OPERAND)
+    return BasicError("Syntax error", SYNTAX_ERROR)
+
+
+def _statements_before_error(tokens: list) -> list:
+    """The statements of the longest run of whole statements at the start of a bad line.
+
+    GW-BASIC runs a line statement by statement and finds a bad token only when it
+    gets there, so the statements before it run first (``10 PRINT 50: X`` prints 50).
+    """
+    colons = [k for k, t in enumerate(tokens) if t.type == "_COLON"]
+    best: list = []
+    for k in colons:
+        try:
+            best = _parser().parse(tokens[:k])
+        except (BasicError, UnexpectedInput, LarkError):
+            break
+    return best
+
+
+def _place_error(statements: list, err: BasicError) -> list:
+    """``statements`` followed by ``err`` (raised when reached); after an IF whose last
+    branch runs to the end of the line the error belongs to that branch."""
+    if statements and isinstance(statements[-1], ast.If):
+        last = statements[-1]
+        for field in ("otherwise", "then"):
+            branch = getattr(last, field)
+            if isinstance(branch, list) and branch:
+                setattr(last, field, _place_error(list(branch), err))
+                return statements
+            if branch is not None:  # a line number: the rest of the line never runs
+                last.unreachable = list(last.unreachable) + [err]
+                return statements
+    return statements + [err]
+
+
+def _recover(text: str, err: BasicError):
+    """The statements of a bad line up to its first bad statement, then ``err``; None
+    when the first statement is already bad (the whole line is the error)."""
+    try:
+        tokens = mark_unsupported(tokenize(text))
+    except BasicError:
+        return None
+    good = _statements_before_error(tokens)
+    if not good:
+        return None
+    return _place_error(good, err)
 
 
 MAX_NESTING = 60  # IFs in one line, or parentheses inside each other
@@ -334,12 +399,16 @@ def _check_nesting(tokens: list) -> None:
         raise BasicError("Out of memory", OUT_OF_MEMORY)
 
 
-def parse_line(number: int, text: str) -> ast.Line:
-    """Parse one numbered line; a syntax error is stored in ``Line.error``."""
+def parse_line(number: int, text: str, dialect: Dialect = CASIO) -> ast.Line:
+    """Parse one numbered line; a syntax error is stored in ``Line.error`` or, where the
+    dialect finds errors when execution reaches them, after the statements before it."""
     try:
-        statements = parse_statements(text)
+        statements = parse_statements(text, dialect)
     except BasicError as err:
-        return ast.Line(number, [], text, error=err)
+        statements = _recover(text, err) if dialect.errors_when_reached else None
+        if statements is None:
+            return ast.Line(number, [], text, error=err)
+        return ast.Line(number, statements, text)
     except RecursionError:
         from yaseer.basic.errors import OUT_OF_MEMORY
         return ast.Line(number, [], text, error=BasicError("Out of memory", OUT_OF_MEMORY))

@@ -1,0 +1,57 @@
+"""GW-BASIC's reserved words are never variables (yaseer/basic/reserved.py).
+
+The table is checked against PC-BASIC 2.0.8's own keyword table (an independent
+list of GW-BASIC's tokens); a word not implemented stops its statement with
+``Unsupported word X in N`` in both dialects instead of reading an array.
+"""
+
+from __future__ import annotations
+
+import io
+
+import pytest
+
+from yaseer.basic.errors import BasicError
+from yaseer.basic.machine import Machine
+from yaseer.basic.reserved import GW_RESERVED_WORDS
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+
+
+def test_table_holds_every_word_pcbasic_tokenises():
+    from pcbasic.basic.base import tokens as tk
+
+    theirs = {w.decode().rstrip("(") for w in tk.TokenKeywordDict("advanced").to_token}
+    words = {w for w in theirs if w[:1].isalpha()}
+    assert words - GW_RESERVED_WORDS == set()
+    # ours adds only the $ forms, which GW-BASIC reads as a keyword followed by "$"
+    assert GW_RESERVED_WORDS - words == {"ENVIRON$", "ERDEV$", "INPUT$", "IOCTL$", "VARPTR$"}
+
+
+def outcome(program: str, dialect: str) -> tuple[str, str]:
+    screen = io.StringIO()
+    machine = Machine(screen=screen, dialect=dialect, input_stream=io.StringIO(""))
+    machine.load(program)
+    try:
+        machine.run()
+    except BasicError as err:
+        return screen.getvalue(), str(err)
+    return screen.getvalue(), ""
+
+
+@pytest.mark.parametrize("dialect", ["casio", "gw"])
+@pytest.mark.parametrize("program, word", [
+    ("10 PRINT HEX$(10)", "HEX$"), ("10 PRINT SPACE$(5)", "SPACE$"), ("10 PRINT STRING$(7)", "STRING$"),
+    ("10 PRINT OCT$(8)", "OCT$"), ("10 X = TIMER", "TIMER"), ("10 LOCATE 1, 1", "LOCATE"),
+    ("10 DIM KEY(3)", "KEY"),
+])
+def test_unimplemented_word_stops_with_its_name(program, word, dialect):
+    assert outcome(program, dialect) == ("", f"Unsupported word {word} in 10")
+
+
+def test_gw_runs_the_statements_before_it():
+    assert outcome('10 PRINT 50: PRINT HEX$(10)', "gw") == (" 50 \n", "Unsupported word HEX$ in 10")
+
+
+def test_names_that_only_contain_a_reserved_word_are_names():
+    assert outcome("10 XTIMER = 2: HEXA = 3: PRINT XTIMER + HEXA", "casio") == (" 5 \n", "")
