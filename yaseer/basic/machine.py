@@ -400,7 +400,7 @@ class Machine:
 
         for area, compiled in list(self.compiled.items()):
             extra = tuple(self._extra_entries) if area == 0 else ()
-            lines = [_parse_cached(number, text) for number, text in sorted(self.programs.get(area, {}).items())]
+            lines = [_parse_cached(number, text, self.dialect) for number, text in sorted(self.programs.get(area, {}).items())]
             variant = compile_area(lines, area, entry_lines=extra, trace=on)
             namespace = self.namespaces[area]
             for first_line, text in variant.pieces:
