@@ -194,14 +194,16 @@ def test_a_drawn_frame_has_bars_joints_blocks_and_caption():
     circles = [p for p in ax.patches if isinstance(p, Circle)]
     polygons = [p for p in ax.patches if isinstance(p, Polygon)]
     dashed = [line for line in ax.lines if line.get_linestyle() == "--"]
-    texts = [t.get_text() for t in ax.texts]
+    letters = {t.get_text() for t in ax.texts}
+    texts = [t.get_text() for t in figure.texts]
     plt.close(figure)
     # joints A, B and the pivot Ao (twice: PROG 1's and PROG 5's ground)
     assert len(circles) == 4
     assert len(polygons) == 3  # a block and two ground triangles
     assert len(dashed) == 1  # the virtual link of PROG 5
-    assert any("crank angle 60.0" in text for text in texts)
-    assert any(text.startswith("  60.0") for text in texts)  # the printed row
+    assert letters == {"Ao", "A", "B"}  # the contract's names of Program 1's joints
+    assert "60.0\N{DEGREE SIGN}" in texts  # the crank angle
+    assert any(text.startswith("60.0 ") for text in texts)  # the printed row (no column names known)
 
 
 def test_render_gif_html_and_png(tmp_path):
@@ -232,7 +234,7 @@ def test_render_gif_html_and_png(tmp_path):
 def test_mp4_without_ffmpeg_says_so(tmp_path, monkeypatch):
     import yaseer.animation as animation
 
-    monkeypatch.setattr(animation.shutil, "which", lambda name: None)
+    monkeypatch.setattr(animation.encode.shutil, "which", lambda name: None)
     monkeypatch.setitem(sys.modules, "imageio_ffmpeg", None)  # and no wheel-shipped binary
     frames, _ = run_cycle([0.0, 90.0])
     with pytest.raises(AnimationError, match="needs ffmpeg, which is not installed"):

@@ -140,12 +140,19 @@ class Result:
         spec = plotting.spec_for(self.name, self.listing, group.width, self.title, group.names)
         return plotting.build_figure(group.rows, spec)
 
-    def animate(self, **options):
-        """A matplotlib ``FuncAnimation`` of the mechanism (options as :func:`yaseer.animation.player`)."""
-        from yaseer.animation import player
+    def look(self, size: tuple[int, int] | None = None, title: str | None = None):
+        """How this run's frames look (:class:`yaseer.animation.Look`): title, column names, unit, size."""
+        from yaseer.animation.draw import DEFAULT_SIZE, Look
+        from yaseer.describe import length_unit
 
-        options.setdefault("title", self.title)
-        return player(self.frames, **options)
+        return Look(title=self.title if title is None else title, names=self.columns,
+                    unit=length_unit(self.name), size=size or DEFAULT_SIZE)
+
+    def animate(self, size: tuple[int, int] | None = None, fps: float = 6.0, max_frames: int | None = None):
+        """A matplotlib ``FuncAnimation`` of the mechanism, ``size`` pixels (default 1280 x 720)."""
+        from yaseer.animation import MAX_FRAMES, player
+
+        return player(self.frames, self.look(size), fps=fps, max_frames=max_frames or MAX_FRAMES)
 
     def _repr_pretty_(self, printer, cycle) -> None:  # IPython shows the screen, then the error
         printer.text(self.text + (self.error + "\n" if self.error else ""))

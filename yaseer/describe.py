@@ -161,3 +161,12 @@ def column_names(name: str | None, width: int, header: Sequence[str] | None) -> 
     if known is not None and len(known.columns) == width - 1:
         return tuple(q.axis_label() for q in (known.x, *known.columns))
     return tuple(header) if header is not None else None
+
+
+# The length unit each paper example works in (docs: Examples 1 and 4 mm, 3 cm, 2 and 5 m).
+LENGTH_UNITS = {"example1": "mm", "example2": "m", "example3": "cm", "example4": "mm", "example5": "m"}
+
+
+def length_unit(name: str | None) -> str:
+    """The unit of the mechanism's lengths where it is known (the paper's examples), else ""."""
+    return LENGTH_UNITS.get((name or "").lower(), "")

@@ -65,10 +65,7 @@ def spec_for(name: str | None, listing_text: str, n_columns: int, title: str | N
 
 def build_figure(rows: Sequence[Sequence[float]], spec: FigureSpec):
     """A matplotlib Figure: one panel per printed quantity against the first column."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    from matplotlib.figure import Figure
+    from matplotlib.figure import Figure  # free-standing: no pyplot, the user's backend untouched
 
     x = [row[0] for row in rows]
     figure = Figure(figsize=(7.5, 1.0 + 2.1 * len(spec.columns)), layout="constrained")

@@ -15,7 +15,7 @@ from pathlib import Path
 
 
 def add_arguments(parser) -> None:
-    """FILE, --out, --fps, --frame, --title, --max-frames and the run options of ``yaseer run``."""
+    """FILE, --out, --fps, --size, --frame, --title, --max-frames and the run options of ``yaseer run``."""
     from yaseer.commands.options import add_run_options
 
     parser.epilog = ("Exit status: 0 written, 1 an error (one line on standard error; a run that fails part-way "
@@ -26,6 +26,8 @@ def add_arguments(parser) -> None:
                         help="the file to write (its directory is created): .gif, .html, .mp4 (H.264 via ffmpeg) "
                              "or .png (one frame); default: <stem>.gif in the current directory")
     parser.add_argument("--fps", type=float, default=6.0, help="frames per second (default 6)")
+    parser.add_argument("--size", type=_size, default=(1280, 720), metavar="WxH",
+                        help="frame size in pixels (default 1280x720, for a projector)")
     parser.add_argument("--frame", type=int, default=None,
                         help="with --out FILE.png: which frame to draw (from 0; default 0); refused otherwise")
     parser.add_argument("--title", default=None,
@@ -33,6 +35,16 @@ def add_arguments(parser) -> None:
     parser.add_argument("--max-frames", type=int, default=360,
                         help="show at most this many evenly spaced frames of a long run (default 360)")
     add_run_options(parser)
+
+
+def _size(text: str) -> tuple[int, int]:
+    """``"1280x720"`` -> (1280, 720)."""
+    import argparse
+
+    width, _, height = text.lower().partition("x")
+    if not (width.strip().isdigit() and height.strip().isdigit()):
+        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT in pixels, got {text!r}")
+    return int(width), int(height)
 
 
 def main(args) -> int:
@@ -53,23 +65,22 @@ def main(args) -> int:
     settings = run_settings(args)
     options = settings.run_arguments()
     try:
-        recording = record_run(listing, options.pop("method"), angle=options.pop("angle"), **options)
+        result = record_run(listing, options.pop("method"), angle=options.pop("angle"), **options)
     finally:
         settings.close()
-    if getattr(recording.error, "code", None) == BREAK:  # Ctrl-C: nothing is drawn (status 130)
+    if getattr(result.exception, "code", None) == BREAK:  # Ctrl-C: nothing is drawn (status 130)
         raise KeyboardInterrupt
-    if recording.error is not None and not recording.frames:
-        print(recording.error, file=sys.stderr)
+    if result.error is not None and not result.frames:
+        print(result.error, file=sys.stderr)
         return 1
     try:
-        count = render(recording.frames, output_file(out),
-                       title=args.title if args.title is not None else recording.title,
+        count = render(result.frames, output_file(out), look=result.look(args.size, args.title),
                        fps=args.fps, frame_number=args.frame or 0, max_frames=args.max_frames)
     except AnimationError as error:
         print(error, file=sys.stderr)
         return 1
     print(f"{out}: {count} frame{'s' if count != 1 else ''}")
-    if recording.error is not None:
-        print(f"{recording.error} (the animation stops there)", file=sys.stderr)
+    if result.error is not None:
+        print(f"{result.error} (the animation stops there)", file=sys.stderr)
         return 1
     return 0

@@ -1,0 +1,124 @@
+"""The Jupyter magics: ``%load_ext yaseer``, then ``%%basic`` (a cell of BASIC) or ``%basic FILE``.
+
+    %%basic [--dialect casio|gw] [--method N=NAME] [--prog N=FILE] [--angle deg|rad]
+            [--input TEXT] [--plot] [--animate] [--fps F] [-o NAME]
+    10 FOR QQ = 0 TO 90 STEP 30: X(10) = COS(QQ): Y(10) = SIN(QQ): GOSUB PROG 5
+    20 PRINT QQ; T; L: NEXT QQ
+
+The cell runs through :func:`yaseer.run`.  Its screen is the cell's output as
+printed; an error is one red line (no traceback); ``--plot`` shows
+``result.plot()`` inline, ``--animate`` the mechanism as a self-contained HTML
+player.  The :class:`yaseer.api.Result` is stored in the notebook as ``_basic``
+(or the name given with ``-o``) for the next cells: ``_basic.rows``,
+``_basic.error``...  Needs IPython (``pip install 'yaseer[jupyter]'``).
+"""
+
+from __future__ import annotations
+
+import html
+
+from IPython.core.magic import Magics, line_cell_magic, magics_class
+from IPython.core.magic_arguments import argument, magic_arguments, parse_argstring
+
+
+def _pair(text: str) -> tuple[int, str]:
+    number, _, value = text.partition("=")
+    if not number.strip().isdigit() or not value:
+        raise ValueError(f"expected N=VALUE, got {text!r}")
+    return int(number), value
+
+
+@magics_class
+class BasicMagics(Magics):
+    """``%basic`` and ``%%basic``."""
+
+    @magic_arguments()
+    @argument("file", nargs="?", help="a listing to run (line magic); a cell runs its own text")
+    @argument("--dialect", default=None, help="casio (default) or gw")
+    @argument("--method", action="append", default=[], metavar="N=NAME", help="method of library program N")
+    @argument("--prog", action="append", default=[], metavar="N=FILE", help="load program area N from FILE")
+    @argument("--angle", choices=("deg", "rad"), default=None, help="unit of SIN COS TAN ATN at start")
+    @argument("--input", default=None, help="what INPUT reads (lines separated by \\n)")
+    @argument("--plot", action="store_true", help="plot the printed columns")
+    @argument("--animate", action="store_true", help="animate the mechanism")
+    @argument("--fps", type=float, default=6.0, help="frames per second of the animation")
+    @argument("-o", "--output", default="_basic", help="the name the result is stored under (default _basic)")
+    @line_cell_magic
+    def basic(self, line: str, cell: str | None = None):
+        """Run BASIC: the cell's text, or the file named on the line."""
+        from IPython.core.error import UsageError
+
+        try:
+            args = parse_argstring(self.basic, line)
+            methods = dict(_pair(text) for text in args.method)
+            areas = dict(_pair(text) for text in args.prog)
+        except ValueError as error:
+            raise UsageError(str(error)) from None
+        if cell is None and not args.file:
+            raise UsageError("%basic FILE runs a listing; %%basic runs the cell's BASIC")
+        if cell is not None and args.file:
+            raise UsageError("%%basic runs the cell; name no file on its line")
+        result = run_magic(cell if cell is not None else args.file, args, methods, areas, self.shell)
+        show(result, plot=args.plot, animate=args.animate, fps=args.fps)
+
+
+def run_magic(listing: str, args, methods: dict, areas: dict, shell):
+    """Run, store the result in the user's namespace, and return it."""
+    from pathlib import Path
+
+    from yaseer.api import run
+
+    source = listing if "\n" in listing or not listing.strip() else Path(listing)
+    try:
+        result = run(source, dialect=args.dialect, method=methods, prog=areas, angle=args.angle,
+                     input=args.input.replace("\\n", "\n") if args.input else None)
+    except ValueError as error:  # an unknown dialect
+        from IPython.core.error import UsageError
+
+        raise UsageError(str(error)) from None
+    if shell is not None:
+        shell.user_ns[args.output] = result
+    return result
+
+
+def show(result, plot: bool = False, animate: bool = False, fps: float = 6.0) -> None:
+    """The screen as printed, an error as one red line, then the plot and the player if asked for."""
+    from IPython.display import HTML, Image, display
+
+    if result.text:
+        print(result.text, end="" if result.text.endswith("\n") else "\n")
+    if result.error is not None:
+        _red_line(result.error)
+    if plot:
+        try:
+            display(Image(_png(result.plot())))
+        except ValueError as error:
+            _red_line(str(error))
+    if animate:
+        from yaseer.animation import AnimationError, html_player
+
+        try:
+            display(HTML(html_player(result.frames, result.look(), fps=fps)))
+        except AnimationError as error:
+            _red_line(str(error))
+
+
+def _red_line(text: str) -> None:
+    """One line in red (HTML), plain text for other front ends."""
+    from IPython.display import display
+
+    display({"text/plain": text, "text/html": f'<pre style="color:#c00000;margin:0">{html.escape(text)}</pre>'},
+            raw=True)
+
+
+def _png(figure) -> bytes:
+    import io
+
+    buffer = io.BytesIO()
+    figure.savefig(buffer, format="png", dpi=100)
+    return buffer.getvalue()
+
+
+def load_ipython_extension(ipython) -> None:
+    """Register the magics (``%load_ext yaseer``)."""
+    ipython.register_magics(BasicMagics)
