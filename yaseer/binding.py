@@ -134,7 +134,9 @@ def _translate(error: Exception, frame: _Frame) -> BasicError:
         return frame.error("Force system is singular")
     if isinstance(error, MethodDivisionByZero):
         return frame.error("Division by zero", DIVISION_BY_ZERO)
-    if isinstance(error, OverflowError):
+    if isinstance(error, (OverflowError, ZeroDivisionError)) or str(error) == "math domain error":
+        # Python's float errors of a one-position call: the same error as the inf or
+        # NaN numpy gives for many positions (Frame.commit)
         return frame.error("Overflow", OVERFLOW)
     if isinstance(error, TypeError):  # e.g. an input array the listing made two-dimensional
         return frame.error("Type mismatch", TYPE_MISMATCH)

@@ -16,10 +16,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
-
 from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.kinetostatics import ForceResult, Joint, Load, MassProps, analyse, loads_at_point, rigid_body
+from yaseer.linkages.numerics import math_for
 from yaseer.linkages.registry import lookup, register
 from yaseer.linkages.planar import CrankedLinkage, Motion, Rotation, Stretch, driven_crank, fixed_point
 from yaseer.linkages.planar import solve_two_directions, still, unit_degrees
@@ -130,28 +129,30 @@ def fourbar_closed(
     length is <= 0, or A falls on Bo), LockedError at a toggle (coupler and
     follower in line) when rates are asked.
     """
-    b = np.asarray(coupler_length, dtype=float)
-    c = np.asarray(follower_length, dtype=float)
+    xp = math_for(ground_length, ground_angle_deg, crank_length, coupler_length, follower_length, crank_angle_deg,
+                  omega, alpha, crank_length_rate, crank_length_accel, branch)
+    b = xp.float(coupler_length)
+    c = xp.float(follower_length)
     crank, length, pin_a, moving = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate,
                                                 crank_length_accel)
-    pivot = fixed_point(np.asarray(ground_length, dtype=float) * unit_degrees(ground_angle_deg))
-    if np.any(b <= 0) or np.any(c <= 0):
+    pivot = fixed_point(xp.float(ground_length) * unit_degrees(ground_angle_deg, xp), xp)
+    if xp.any(b <= 0) or xp.any(c <= 0):
         raise AssemblyError("coupler or follower of zero length")
     diagonal = pivot.pos - pin_a.pos
-    span = np.abs(diagonal)
-    if np.any(span == 0):
+    span = abs(diagonal)
+    if xp.any(span == 0):
         raise AssemblyError("the crank pin falls on the follower pivot")
     along = (b**2 - c**2 + span**2) / (2 * span)
     height_squared = b**2 - along**2
-    if np.any(height_squared < 0):
+    if xp.any(height_squared < 0):
         raise AssemblyError("the coupler and follower cannot meet")
-    side = np.where(np.asarray(branch) == CROSSED, -1.0, 1.0)
-    b_pos = pin_a.pos + (along + 1j * side * np.sqrt(height_squared)) * diagonal / span
+    side = xp.where(xp.float(branch) == CROSSED, -1.0, 1.0)
+    b_pos = pin_a.pos + (along + 1j * side * xp.sqrt(height_squared)) * diagonal / span
     coupler_vec = b_pos - pin_a.pos
     follower_vec = pivot.pos - b_pos  # B -> Bo
-    coupler_angle, follower_angle = np.angle(coupler_vec), np.angle(follower_vec)
+    coupler_angle, follower_angle = xp.angle(coupler_vec), xp.angle(follower_vec)
     if not moving:
-        zero = np.zeros_like(span)
+        zero = xp.zeros_like(span)
         return FourBar(crank, length, Rotation(coupler_angle, zero, zero), Rotation(follower_angle, zero, zero),
                        pin_a, still(Motion(b_pos, b_pos, b_pos)), pivot, False)
     (w3, a3), (w4, a4), b_motion = loop_rates(pin_a, coupler_vec, follower_vec)

@@ -12,10 +12,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
-
 from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, loads_at_point, rigid_body
+from yaseer.linkages.numerics import math_for
 from yaseer.linkages.registry import lookup, register
 from yaseer.linkages.virtual_link import cos_sin_degrees, divide_as_printed
 from yaseer.linkages.planar import CrankedLinkage, DrivenCrank, Motion, Rotation, Stretch, driven_crank, fixed_point
@@ -104,7 +103,7 @@ def _fisc_method(name: str, *, default: bool = False):
             crank = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel)
             pivot, follower_angle, l5, rates = solve(crank, crank_angle_deg, ground_length, ground_angle_deg)
             if not crank.moving:
-                zero = np.zeros_like(l5)
+                zero = math_for(l5).zeros_like(l5)
                 return InvertedSliderCrank(crank.rotation, crank.length, Rotation(follower_angle, zero, zero),
                                            Stretch(l5, zero, zero), crank.pin, pivot, False)
             (w4, a4), (l5_dot, l5_ddot) = rates()
@@ -131,10 +130,11 @@ def inverted_slider_crank_closed(crank: DrivenCrank, crank_angle_deg, ground_len
     where the crank pin A falls on Bo (L5 = 0).
     """
     pin_a = crank.pin
-    pivot = fixed_point(-np.asarray(ground_length, dtype=float) * unit_degrees(ground_angle_deg))
+    xp = math_for(pin_a.pos, ground_length, ground_angle_deg)
+    pivot = fixed_point(-xp.float(ground_length) * unit_degrees(ground_angle_deg, xp), xp)
     radius = pin_a.pos - pivot.pos
-    l5 = np.abs(radius)
-    if np.any(l5 == 0):
+    l5 = abs(radius)
+    if xp.any(l5 == 0):
         raise AssemblyError("the crank pin falls on the follower pivot (zero-length follower)")
 
     def rates():
@@ -145,7 +145,7 @@ def inverted_slider_crank_closed(crank: DrivenCrank, crank_angle_deg, ground_len
         l5_ddot, a4 = solve_two_directions(rhs, u, 1j * radius)
         return (w4, a4), (l5_dot, l5_ddot)
 
-    return pivot, np.angle(radius), l5, rates
+    return pivot, xp.angle(radius), l5, rates
 
 
 @_fisc_method("paper")
@@ -159,19 +159,20 @@ def inverted_slider_crank_paper(crank: DrivenCrank, crank_angle_deg, ground_leng
     same style.  They divide by den and cos T9, so they break where the follower is
     vertical (T9 = 90, 270 deg): MethodDivisionByZero there, lost digits near it.
     """
-    l6, l7 = np.asarray(ground_length, float), crank.length.value
+    xp = math_for(crank.length.value, crank_angle_deg, ground_length, ground_angle_deg)
+    l6, l7 = xp.float(ground_length), crank.length.value
     d3, e3 = crank.length.rate, crank.length.accel
     w0, a0 = crank.rotation.omega, crank.rotation.alpha
     c6, s6 = cos_sin_degrees(ground_angle_deg)
     c7, s7 = cos_sin_degrees(crank_angle_deg)
     numerator, denominator = l6 * s6 + l7 * s7, l6 * c6 + l7 * c7
-    t9 = np.degrees(np.arctan(divide_as_printed(numerator, denominator, "L(6) cos T(6) + L(7) cos T(7)")))  # (7)
-    t9 = np.where(denominator < 0, t9 + 180.0, t9)
+    t9 = xp.degrees(xp.arctan(divide_as_printed(numerator, denominator, "L(6) cos T(6) + L(7) cos T(7)")))  # (7)
+    t9 = xp.where(denominator < 0, t9 + 180.0, t9)
     c9, s9 = cos_sin_degrees(t9)
     l5 = divide_as_printed(denominator, c9, "COS T(9)")  # (8)
 
     def rates():
-        c79, s79 = cos_sin_degrees(np.asarray(crank_angle_deg, float) - t9)  # cos, sin (T7 - T9)
+        c79, s79 = cos_sin_degrees(xp.float(crank_angle_deg) - t9)  # cos, sin (T7 - T9)
         w4 = (l7 * w0 * c79 + d3 * s79) / l5  # (9)
         d4 = divide_as_printed(d3 * c7 - l7 * w0 * s7 + l5 * w4 * s9, c9, "COS T(9)")  # (10)
         a4 = (l7 * w0**2 * -s79 + l7 * a0 * c79 + 2 * d3 * w0 * c79 - e3 * -s79 - 2 * d4 * w4) / l5  # (11)
@@ -179,4 +180,4 @@ def inverted_slider_crank_paper(crank: DrivenCrank, crank_angle_deg, ground_leng
         e4 = divide_as_printed(x_accel + 2 * d4 * w4 * s9 + l5 * a4 * s9 + l5 * w4**2 * c9, c9, "COS T(9)")
         return (w4, a4), (d4, e4)
 
-    return fixed_point(-l6 * (c6 + 1j * s6)), np.radians(t9), l5, rates
+    return fixed_point(-l6 * (c6 + 1j * s6)), xp.radians(t9), l5, rates

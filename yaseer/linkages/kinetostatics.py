@@ -7,7 +7,8 @@ direction; a couple) and one selected load; everything else is known.  One
 linear system per position, the same for Programs 1-3; the pin reactions are
 eliminated exactly from the force equations (their coefficients are +-1) and
 the small system left (k <= 3 unknowns) is solved at all positions at once
-with its adjugate and one step of refinement.
+with its adjugate and one step of refinement.  The same code solves one
+position in Python numbers and many in numpy arrays (:mod:`numerics`).
 
 Sign conventions: a joint's unknown is the action of its ``upstream`` body on
 its ``downstream`` body (``upstream=None`` is the ground); the downstream body
@@ -20,9 +21,8 @@ from __future__ import annotations
 import functools
 from dataclasses import dataclass
 
-import numpy as np
-
 from yaseer.linkages.errors import SingularForceError, UnknownLoadError
+from yaseer.linkages.numerics import SCALAR, math_for
 from yaseer.linkages.planar import Motion, cross
 
 # Singularity test: with the couple columns of the reduced system multiplied by
@@ -38,10 +38,10 @@ class Body:
     motion of the mass centre and the angular acceleration (rad/s**2)."""
 
     name: str
-    mass: np.ndarray | float
-    inertia: np.ndarray | float
+    mass: numpy.ndarray | float
+    inertia: numpy.ndarray | float
     centre: Motion
-    alpha: np.ndarray | float
+    alpha: numpy.ndarray | float
     particle: bool = False
 
 
@@ -51,8 +51,8 @@ class Load:
     at ``point``, or (``direction is None``) a couple."""
 
     body: str
-    direction: np.ndarray | complex | None = None
-    point: np.ndarray | complex | None = None
+    direction: numpy.ndarray | complex | None = None
+    point: numpy.ndarray | complex | None = None
 
 
 def point_loads(body: str, point, perpendicular) -> dict[str, "Load"]:
@@ -78,8 +78,8 @@ class Joint:
     upstream: str | None
     downstream: str
     kind: str
-    point: np.ndarray | complex | None = None
-    direction: np.ndarray | complex | None = None
+    point: numpy.ndarray | complex | None = None
+    direction: numpy.ndarray | complex | None = None
 
 
 class _Plan:
@@ -164,7 +164,7 @@ def _actions(bodies: list[Body], joints: list[Joint], unknown_key: str, unknown_
     return actions
 
 
-def _targets(bodies: list[Body], loads: dict[str, Load], values: dict, unknown: str, gravity):
+def _targets(bodies: list[Body], loads: dict[str, Load], values: dict, unknown: str, gravity, xp):
     """What the unknowns must supply to each body: the force m a_G + m G (upward)
     minus the known loads (complex), and the moment I alpha minus theirs about G."""
     by_name = {body.name: body for body in bodies}
@@ -172,14 +172,14 @@ def _targets(bodies: list[Body], loads: dict[str, Load], values: dict, unknown: 
     moment = {body.name: body.inertia * body.alpha for body in bodies}
     for name, load in loads.items():
         value = values.get(name, 0.0)
-        if name == unknown or not np.any(value):
+        if name == unknown or not xp.any(value):
             continue
         if load.direction is None:
             moment[load.body] = moment[load.body] - value
             continue
-        direction = np.asarray(load.direction, dtype=complex)
+        direction = xp.complex(load.direction)
         force[load.body] = force[load.body] - value * direction
-        arm = np.asarray(load.point, dtype=complex) - by_name[load.body].centre.pos
+        arm = xp.complex(load.point) - by_name[load.body].centre.pos
         moment[load.body] = moment[load.body] - value * cross(arm, direction)
     return force, moment
 
@@ -213,19 +213,21 @@ def _cross_with(arm, value):
             return -arm.imag * value.real
         if value.real == 0:
             return arm.real * value.imag
-    return cross(arm, np.asarray(value))
+    return cross(arm, value)
 
 
 def solve_kinetostatics(
     bodies: list[Body],
     joints: list[Joint],
     loads: dict[str, Load],
-    values: dict[str, np.ndarray | float],
+    values: dict,
     unknown: str,
     gravity: float,
     shape: tuple[int, ...],
-) -> tuple[dict[str, np.ndarray], np.ndarray]:
-    """Solve the kinetostatics of ``bodies`` at every position of ``shape``.
+    xp=SCALAR,
+) -> tuple[dict, object]:
+    """Solve the kinetostatics of ``bodies`` at every position of ``shape``
+    (``xp``: the :mod:`numerics` namespace, Python numbers for shape ()).
 
     ``loads`` names every load the linkage knows; ``values`` gives the known ones
     (missing names are 0); ``unknown`` names the one solved for.  Returns the
@@ -244,11 +246,15 @@ def solve_kinetostatics(
                  tuple((joint.name, joint.upstream, joint.downstream, joint.kind) for joint in joints),
                  (unknown_key, loads[unknown].direction is None))
     reduction = _Reduction(plan, _actions(bodies, joints, unknown_key, loads[unknown]),
-                           *_targets(bodies, loads, values, unknown, gravity))
+                           *_targets(bodies, loads, values, unknown, gravity, xp))
     reduction.eliminate_pins()
-    matrix, rhs = reduction.equations(bodies, shape)
-    solution = _solve_reduced(matrix, rhs, plan.couples)
-    return _reactions(plan, joints, reduction.pin_forms, solution), solution[plan.index[unknown_key]]
+    rows, rhs = reduction.equations(bodies)
+    solution = _solve_reduced(rows, rhs, plan.couples, xp)
+    if not xp.scalar:  # every unknown over every position, also where its equations do not vary
+        import numpy as np
+
+        solution = [np.broadcast_to(x, shape).copy() for x in solution]
+    return _reactions(plan, joints, reduction.pin_forms, solution, xp, shape), solution[plan.index[unknown_key]]
 
 
 class _Reduction:
@@ -280,40 +286,52 @@ class _Reduction:
                       if key != pin and point is not None]
             self.pin_forms[pin] = _combined(*others, (sign, {CONSTANT: self.force_target[body]}))
 
-    def equations(self, bodies: list[Body], shape: tuple[int, ...]) -> tuple[np.ndarray, np.ndarray]:
-        """The reduced system (k, k, *shape), (k, *shape): each body's moment balance
-        about its mass centre, and the force balance of a body without a matched pin."""
+    def equations(self, bodies: list[Body]) -> tuple[list[list], list]:
+        """The reduced system as k rows of k coefficients and k right-hand sides (each a
+        number or an array over the positions): each body's moment balance about its
+        mass centre, and the force balance of a body without a matched pin."""
         rows, right = [], []
         for body in bodies:
             if body.name not in self.plan.matched:
                 total = _combined(*((s, self.form(key, d)) for key, s, d, point in self.actions[body.name]
                                     if point is not None))
                 remainder = self.force_target[body.name] - total.get(CONSTANT, 0.0)
-                rows += [self._coefficients(total, np.real), self._coefficients(total, np.imag)]
-                right += [np.real(remainder), np.imag(remainder)]
+                rows += [self._coefficients(total, _real), self._coefficients(total, _imag)]
+                right += [remainder.real, remainder.imag]
             if not body.particle:
                 centre = body.centre.pos
                 total = _combined(*((s, self.form(key, d) if point is None else
-                                     _moment_of(np.asarray(point) - centre, self.form(key, d)))
+                                     _moment_of(point - centre, self.form(key, d)))
                                     for key, s, d, point in self.actions[body.name]))
-                rows.append(self._coefficients(total, np.real))
-                right.append(self.moment_target[body.name] - total.get(CONSTANT, 0.0))
-        matrix = np.empty((self.plan.size, self.plan.size) + shape)
-        rhs = np.empty((self.plan.size,) + shape)
-        for i, row in enumerate(rows):
-            rhs[i] = right[i]
-            for j, entry in enumerate(row):
-                matrix[i, j] = entry
-        return matrix, rhs
+                rows.append(self._coefficients(total, _real))
+                right.append(_real(self.moment_target[body.name] - total.get(CONSTANT, 0.0)))
+        return rows, right
 
     def _coefficients(self, form: dict, part) -> list:
-        """``part`` (np.real or np.imag) of the form's coefficient on each reduced unknown."""
+        """``part`` (:func:`_real` or :func:`_imag`) of the form's coefficient on each reduced unknown."""
         return [part(form.get(column, 0.0)) for column in range(self.plan.size)]
 
 
-def _solve_reduced(matrix: np.ndarray, rhs: np.ndarray, couples: list[bool]) -> np.ndarray:
-    """Solve the k x k systems ``matrix`` (k, k, *shape) x = ``rhs`` (k, *shape) at
-    every position, vectorised over the positions.
+def _real(value):
+    """The real part of a number or an array (a float's is itself)."""
+    return value.real
+
+
+def _imag(value):
+    return value.imag
+
+
+def _largest(values: list, xp):
+    """The elementwise largest of ``values`` (numbers or arrays)."""
+    largest = values[0]
+    for value in values[1:]:
+        largest = xp.maximum(largest, value)
+    return largest
+
+
+def _solve_reduced(rows: list[list], rhs: list, couples: list[bool], xp=SCALAR) -> list:
+    """Solve the k x k systems ``rows`` x = ``rhs`` (k rows of k entries, k entries;
+    each entry a number or an array over the positions) at every position.
 
     Scaling: the columns of couple unknowns (``couples``) are multiplied by the
     largest moment arm of the force columns (a couple counts as that force at that
@@ -321,39 +339,38 @@ def _solve_reduced(matrix: np.ndarray, rhs: np.ndarray, couples: list[bool]) -> 
     scaled to a largest entry of 1.
     (Scaling each column to 1 instead would hide an unknown that has almost no
     effect, such as a piston force a hair from dead centre.)  The scaled system is
-    solved with its adjugate (cofactors; k <= 3 here, so a handful of array
-    products) and one step of iterative refinement, which brings the error to
-    that of a pivoted elimination.  Singular (:class:`SingularForceError`) where
-    the determinant of the scaled matrix is at most SINGULAR_TOLERANCE: the
-    unknowns cannot balance every load, and for the loads they can balance they
-    are not unique, so it is an error even when nothing needs balancing.
-    Non-finite coefficients are an OverflowError.
+    solved with its adjugate (cofactors; k <= 3 here, so a handful of products)
+    and one step of iterative refinement, which brings the error to that of a
+    pivoted elimination.  Singular (:class:`SingularForceError`) where the
+    determinant of the scaled matrix is at most SINGULAR_TOLERANCE: the unknowns
+    cannot balance every load, and for the loads they can balance they are not
+    unique, so it is an error even when nothing needs balancing.  Non-finite
+    coefficients are an OverflowError.
     """
-    if not (np.all(np.isfinite(matrix)) and np.all(np.isfinite(rhs))):
+    if not all(xp.all(xp.isfinite(entry)) for entry in [*rhs, *(entry for row in rows for entry in row)]):
         raise OverflowError("the force system overflows (non-finite coefficients)")
-    size = matrix.shape[0]
+    size = len(rows)
     forces = [column for column in range(size) if not couples[column]]
-    arm = np.max(np.abs(matrix[:, forces]), axis=(0, 1)) if forces else np.ones(matrix.shape[2:])
-    arm = np.where(arm == 0, 1.0, arm)
-    column_scale = np.array([1.0 / arm if couple else np.ones_like(arm) for couple in couples])
-    scaled = matrix / column_scale
-    row_scale = np.max(np.abs(scaled), axis=1)
-    row_scale[row_scale == 0] = 1.0
-    scaled /= row_scale[:, None]
-    rows = scaled.tolist() if scaled.ndim == 2 else [list(row) for row in scaled]  # one position: Python floats
+    arm = _largest([abs(row[column]) for row in rows for column in forces], xp) if forces else 1.0
+    arm = xp.where(arm == 0, 1.0, arm)
+    column_scale = [1.0 / arm if couple else 1.0 for couple in couples]
+    rows = [[entry / scale for entry, scale in zip(row, column_scale)] for row in rows]
+    row_scale = [_largest([abs(entry) for entry in row], xp) for row in rows]
+    row_scale = [xp.where(scale == 0, 1.0, scale) for scale in row_scale]
+    rows = [[entry / scale for entry in row] for row, scale in zip(rows, row_scale)]
     cofactors = [[_cofactor(rows, i, j) for j in range(size)] for i in range(size)]
     determinant = sum(rows[0][j] * cofactors[0][j] for j in range(size))
-    if not np.all(np.abs(determinant) > SINGULAR_TOLERANCE):
+    if not xp.all(abs(determinant) > SINGULAR_TOLERANCE):
         raise SingularForceError("the selected unknown cannot balance the loads")
 
     def adjugate_solve(right):
         return [sum(cofactors[i][j] * right[i] for i in range(size)) / determinant for j in range(size)]
 
-    right = (rhs / row_scale).tolist() if rhs.ndim == 1 else list(rhs / row_scale)
+    right = [value / scale for value, scale in zip(rhs, row_scale)]
     solution = adjugate_solve(right)
     residual = [right[i] - sum(rows[i][j] * solution[j] for j in range(size)) for i in range(size)]
-    solution = np.array([x + dx for x, dx in zip(solution, adjugate_solve(residual))]) / column_scale
-    if not np.all(np.isfinite(solution)):
+    solution = [(x + dx) / scale for x, dx, scale in zip(solution, adjugate_solve(residual), column_scale)]
+    if not all(xp.all(xp.isfinite(x)) for x in solution):
         raise OverflowError("the force system overflows (non-finite reactions)")
     return solution
 
@@ -374,15 +391,16 @@ def _determinant(rows: list[list]):
     return sum(rows[0][j] * _cofactor(rows, 0, j) for j in range(len(rows)))
 
 
-def _reactions(plan: _Plan, joints: list[Joint], pin_forms: dict, solution: np.ndarray) -> dict[str, np.ndarray]:
+def _reactions(plan: _Plan, joints: list[Joint], pin_forms: dict, solution: list, xp=SCALAR, shape=()) -> dict:
     """Joint reactions by name (pins complex): reduced unknowns read off the
     solution, eliminated pins evaluated from their forms."""
     reactions = {}
     for joint in joints:
         if joint.name in pin_forms:
             terms = pin_forms[joint.name]
+            zero = 0j if xp.scalar else xp.zeros_like(solution[0], dtype=complex)
             reactions[joint.name] = sum((value * (1.0 if key == CONSTANT else solution[key])
-                                         for key, value in terms.items()), np.zeros(solution.shape[1:], complex))
+                                         for key, value in terms.items()), zero)
         elif joint.kind == "pin":
             column = plan.index[joint.name]
             reactions[joint.name] = solution[column] + 1j * solution[column + 1]
@@ -397,10 +415,10 @@ class MassProps:
     lies: ``distance`` from the link's reference joint at ``offset_deg`` degrees
     counter-clockwise from the link's reference line."""
 
-    mass: np.ndarray | float = 0.0
-    inertia: np.ndarray | float = 0.0
-    distance: np.ndarray | float = 0.0
-    offset_deg: np.ndarray | float = 0.0
+    mass: numpy.ndarray | float = 0.0
+    inertia: numpy.ndarray | float = 0.0
+    distance: numpy.ndarray | float = 0.0
+    offset_deg: numpy.ndarray | float = 0.0
 
 
 def rigid_body(linkage, body: str, props: MassProps) -> Body:
@@ -425,25 +443,31 @@ class ForceResult:
     joint reactions by name (pins complex ``Fx + 1j*Fy``, slides and couples real)."""
 
     unknown: str
-    value: np.ndarray
-    reactions: dict[str, np.ndarray]
+    value: numpy.ndarray
+    reactions: dict[str, numpy.ndarray]
 
 
 def analysis_shape(*arrays) -> tuple[int, ...]:
     """The broadcast shape of every array (or list) taking part in a force analysis;
-    plain and numpy numbers are skipped (shape ()) without asking numpy."""
-    return np.broadcast_shapes(*(np.shape(array) for array in arrays
-                                 if not isinstance(array, (int, float, complex, np.generic))))
+    plain numbers are skipped (shape ()) without asking numpy."""
+    arrays = [array for array in arrays if not isinstance(array, (int, float, complex))]
+    if not arrays:
+        return ()
+    import numpy as np
+
+    return np.broadcast_shapes(*(np.shape(array) for array in arrays))
 
 
 def analyse(bodies: list[Body], joints: list[Joint], loads: dict[str, Load], values: dict, unknown: str,
             gravity) -> ForceResult:
     """:func:`solve_kinetostatics` over the common shape of everything given."""
-    shape = analysis_shape(
+    items = (
         gravity, *values.values(),
         *(item for body in bodies for item in (body.mass, body.inertia, body.centre.pos, body.alpha)),
         *(item for joint in joints for item in (joint.point, joint.direction) if item is not None),
         *(item for load in loads.values() for item in (load.point, load.direction) if item is not None),
     )
-    reactions, value = solve_kinetostatics(bodies, joints, loads, values, unknown, gravity, shape)
+    xp = math_for(*items)
+    shape = () if xp.scalar else analysis_shape(*items)
+    reactions, value = solve_kinetostatics(bodies, joints, loads, values, unknown, gravity, shape, xp)
     return ForceResult(unknown, value, reactions)

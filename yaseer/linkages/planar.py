@@ -1,7 +1,8 @@
 """Planar vector helpers shared by every linkage.
 
-Points and vectors of the plane are complex numbers ``x + 1j*y`` (numpy complex
-arrays for a whole cycle at once): a rotation by 90 degrees counter-clockwise is a
+Points and vectors of the plane are complex numbers ``x + 1j*y`` (Python complex
+numbers for one position, numpy complex arrays for a whole cycle at once: every
+formula is written once against :mod:`yaseer.linkages.numerics`): a rotation by 90 degrees counter-clockwise is a
 multiplication by ``1j`` and ``u(t) = exp(1j*t)`` is the unit vector at angle ``t``.
 Angles inside this package are radians unless a name says ``_deg``; angular rates
 are rad/s and rad/s**2, counter-clockwise positive.
@@ -9,75 +10,85 @@ are rad/s and rad/s**2, counter-clockwise positive.
 
 from __future__ import annotations
 
+import math
 from typing import ClassVar, NamedTuple
 
-import numpy as np
-
 from yaseer.linkages.errors import LockedError
+from yaseer.linkages.numerics import SCALAR, math_for
+
+# A value of this module: a Python number for one position, a numpy array for many.
+Values = "float | complex | numpy.ndarray"
 
 
-def unit(angle: np.ndarray | float) -> np.ndarray:
+def unit(angle, xp=None):
     """The unit vector u(angle), angle in radians, as a complex number."""
-    return np.exp(1j * np.asarray(angle, dtype=float))
+    return (xp or math_for(angle)).unit(angle)
 
 
-_AXES = np.array([complex(1.0, 0.0), complex(0.0, 1.0), complex(-1.0, 0.0), complex(0.0, -1.0)])  # u(0, 90, 180, 270)
 _QUADRANTS = {0.0: complex(1.0, 0.0), 90.0: complex(0.0, 1.0), 180.0: complex(-1.0, 0.0), 270.0: complex(0.0, -1.0)}
 
 
-def unit_degrees(angle_deg: np.ndarray | float) -> np.ndarray:
+def unit_degrees(angle_deg, xp=None):
     """The unit vector u(angle) for an angle in degrees, exact at multiples of 90
     (cos 90 = 0, as a pocket computer in degree mode gives it), so dead centres and
     vertical axes given as 90, 180, 270 are exact."""
+    xp = xp or math_for(angle_deg)
+    if xp is SCALAR:
+        exact = _QUADRANTS.get(float(angle_deg) % 360.0)
+        return exact if exact is not None else xp.unit(math.radians(angle_deg))
+    import numpy as np
+
     angle = np.asarray(angle_deg, dtype=float)
-    if angle.ndim == 0:  # one position (a GOSUB PROG call): a dictionary is faster than np.select
-        exact = _QUADRANTS.get(float(angle) % 360.0)
-        return np.complex128(exact) if exact is not None else np.exp(1j * np.radians(angle))
     turn = np.mod(angle, 360.0)
     vector = np.exp(1j * np.radians(angle))
     on_axis = (np.mod(turn, 90.0) == 0.0) & (turn < 360.0)  # mod gives 360.0 for -1e-17
     if np.any(on_axis):
-        vector[on_axis] = _AXES[(turn[on_axis] // 90.0).astype(int)]
+        axes = np.array(list(_QUADRANTS.values()))  # u(0, 90, 180, 270)
+        if vector.ndim == 0:
+            return axes[int(turn // 90.0)]
+        vector[on_axis] = axes[(turn[on_axis] // 90.0).astype(int)]
     return vector
 
 
-def cross(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+def cross(p, q):
     """The z component of p x q (positive when q is counter-clockwise of p)."""
     return p.real * q.imag - p.imag * q.real
 
 
-def dot(p: np.ndarray, q: np.ndarray) -> np.ndarray:
+def dot(p, q):
     """The scalar product p . q."""
     return p.real * q.real + p.imag * q.imag
 
 
-def normalize_degrees(angle_deg: np.ndarray | float) -> np.ndarray:
+def normalize_degrees(angle_deg):
     """An angle in degrees brought into the half-open range (-180, 180]."""
-    return 180.0 - np.mod(180.0 - np.asarray(angle_deg, dtype=float), 360.0)
+    return 180.0 - (180.0 - math_for(angle_deg).float(angle_deg)) % 360.0
 
 
-def direction_degrees(vector: np.ndarray) -> np.ndarray:
+def direction_degrees(vector):
     """The inclination of ``vector`` in degrees, in (-180, 180]."""
-    return normalize_degrees(np.degrees(np.angle(vector)))
+    xp = math_for(vector)
+    return normalize_degrees(xp.degrees(xp.angle(vector)))
 
 
 def any_nonzero(*values) -> bool:
     """True when any element of any of ``values`` is non-zero (a motion is asked for)."""
-    return any(np.any(np.asarray(value) != 0) for value in values)
+    xp = math_for(*values)
+    return any(xp.any(xp.float(value) != 0) for value in values)
 
 
 # |sin| of the angle between two directions below which they count as parallel.
 PARALLEL_TOLERANCE = 1e-12
 
 
-def solve_two_directions(rhs: np.ndarray, first: np.ndarray, second: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def solve_two_directions(rhs, first, second, xp=None):
     """Real x1, x2 with ``x1*first + x2*second == rhs`` (all complex vectors).
 
     Raises :class:`LockedError` where ``first`` and ``second`` are parallel: the
     loop has no unique rate there (a toggle or branch point).
     """
     determinant = cross(first, second)
-    if np.any(np.abs(determinant) <= PARALLEL_TOLERANCE * np.abs(first) * np.abs(second)):
+    if (xp or math_for(determinant)).any(abs(determinant) <= PARALLEL_TOLERANCE * abs(first) * abs(second)):
         raise LockedError("the velocity directions are parallel (toggle or branch point)")
     return cross(rhs, second) / determinant, cross(first, rhs) / determinant
 
@@ -86,44 +97,46 @@ class Motion(NamedTuple):
     """Position (length units), velocity (per s) and acceleration (per s**2) of a point,
     each a complex array ``x + 1j*y`` in the frame of the crank pivot Ao."""
 
-    pos: np.ndarray
-    vel: np.ndarray
-    acc: np.ndarray
+    pos: Values
+    vel: Values
+    acc: Values
 
 
 class Rotation(NamedTuple):
     """Inclination (radians, not normalised), angular velocity (rad/s) and angular
     acceleration (rad/s**2) of a link, counter-clockwise positive."""
 
-    angle: np.ndarray
-    omega: np.ndarray
-    alpha: np.ndarray
+    angle: Values
+    omega: Values
+    alpha: Values
 
     @property
-    def degrees(self) -> np.ndarray:
+    def degrees(self):
         """The inclination in degrees, in (-180, 180]."""
-        return normalize_degrees(np.degrees(self.angle))
+        return normalize_degrees(math_for(self.angle).degrees(self.angle))
 
 
 class Stretch(NamedTuple):
     """A length (length units) and its first and second time derivatives."""
 
-    value: np.ndarray
-    rate: np.ndarray
-    accel: np.ndarray
+    value: Values
+    rate: Values
+    accel: Values
 
 
-def fixed_point(position: np.ndarray | complex) -> Motion:
+def fixed_point(position, xp=None) -> Motion:
     """A point of the ground: it neither moves nor accelerates."""
-    pos = np.asarray(position, dtype=complex)
-    zero = np.zeros_like(pos)
+    xp = xp or math_for(position)
+    pos = xp.complex(position)
+    zero = xp.zeros_like(pos)
     return Motion(pos, zero, zero)
 
 
-def arm(distance, offset_deg, direction) -> np.ndarray:
+def arm(distance, offset_deg, direction, xp=None):
     """The vector ``distance`` long at ``offset_deg`` degrees counter-clockwise from
     the unit vector ``direction``."""
-    return np.asarray(distance, dtype=float) * direction * unit(np.radians(offset_deg))
+    xp = xp or math_for(distance, offset_deg, direction)
+    return xp.float(distance) * direction * xp.unit(xp.radians(offset_deg))
 
 
 def rigid_point(origin: Motion, link: Rotation, distance, offset_deg, direction=None) -> Motion:
@@ -141,7 +154,7 @@ def rigid_point(origin: Motion, link: Rotation, distance, offset_deg, direction=
     return Motion(pos, vel, acc)
 
 
-def crank_pin(length: Stretch, crank: Rotation, direction: np.ndarray | None = None) -> Motion:
+def crank_pin(length: Stretch, crank: Rotation, direction=None) -> Motion:
     """The pin at the end of a flexible crank pivoted at the origin.
 
     pos = a u, vel = (a' + i a w) u, acc = (a'' - a w**2 + i (a alpha + 2 a' w)) u,
@@ -158,11 +171,11 @@ def crank_pin(length: Stretch, crank: Rotation, direction: np.ndarray | None = N
 
 def still(motion: Motion) -> Motion:
     """``motion`` with its velocity and acceleration set exactly to zero."""
-    zero = np.zeros_like(motion.pos)
+    zero = math_for(motion.pos).zeros_like(motion.pos)
     return Motion(motion.pos, zero, zero)
 
 
-def perpendicular_direction(reference_direction, offset_deg, distance) -> np.ndarray:
+def perpendicular_direction(reference_direction, offset_deg, distance):
     """The direction of a perpendicular point load (Shared rules of the contract).
 
     The load acts at the point ``distance`` from the link's reference joint at
@@ -171,8 +184,9 @@ def perpendicular_direction(reference_direction, offset_deg, distance) -> np.nda
     u(reference + H + 90 deg), reversed when ``distance`` is negative (the point
     then lies the other way); at distance 0 it is u(reference + H + 90 deg).
     """
-    sign = np.where(np.asarray(distance) < 0, -1.0, 1.0)
-    return sign * reference_direction * unit(np.radians(offset_deg) + np.pi / 2)
+    xp = math_for(reference_direction, offset_deg, distance)
+    sign = xp.where(xp.float(distance) < 0, -1.0, 1.0)
+    return sign * reference_direction * xp.unit(xp.radians(offset_deg) + xp.pi / 2)
 
 
 class DrivenCrank(NamedTuple):
@@ -195,11 +209,11 @@ def driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate,
     a pocket computer in degree mode gives it); the alternative methods pass False
     and take cos and sin of the angle in radians, as their sources do.
     """
-    length = Stretch(*(np.asarray(v, dtype=float) for v in (crank_length, crank_length_rate, crank_length_accel)))
-    rotation = Rotation(np.radians(np.asarray(crank_angle_deg, dtype=float)), np.asarray(omega, float),
-                        np.asarray(alpha, float))
+    xp = math_for(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel)
+    length = Stretch(xp.float(crank_length), xp.float(crank_length_rate), xp.float(crank_length_accel))
+    rotation = Rotation(xp.radians(xp.float(crank_angle_deg)), xp.float(omega), xp.float(alpha))
     moving = any_nonzero(omega, alpha, crank_length_rate, crank_length_accel)
-    pin = crank_pin(length, rotation, unit_degrees(crank_angle_deg) if exact_degrees else None)
+    pin = crank_pin(length, rotation, unit_degrees(crank_angle_deg, xp) if exact_degrees else None)
     return DrivenCrank(rotation, length, pin if moving else still(pin), moving)
 
 
@@ -216,7 +230,7 @@ class CrankedLinkage:
     crank: Rotation
     FRAMES: ClassVar[dict[str, tuple[str | None, str, bool]]] = {"crank": (None, "crank", False)}
 
-    def unit_vector(self, link: str, reverse: bool = False) -> np.ndarray:
+    def unit_vector(self, link: str, reverse: bool = False):
         """u(inclination) of the link named ``link`` (``-u`` with ``reverse``: its line
         measured from the other end), computed once per result and kept."""
         kept = self.__dict__.setdefault("_unit_vectors", {})  # the dataclass is frozen; its __dict__ is not
@@ -228,16 +242,16 @@ class CrankedLinkage:
         """The motion of a point of ``body`` (a key of ``FRAMES``): ``distance`` from its
         reference joint, ``offset_deg`` counter-clockwise from its reference line."""
         origin, link, reverse = self.FRAMES[body]
-        start = fixed_point(0j) if origin is None else getattr(self, origin)
+        start = fixed_point(0j, SCALAR) if origin is None else getattr(self, origin)
         return rigid_point(start, getattr(self, link), distance, offset_deg, self.unit_vector(link, reverse))
 
-    def body_position(self, body: str, distance, offset_deg) -> np.ndarray:
+    def body_position(self, body: str, distance, offset_deg):
         """The position alone of :meth:`body_point` (no rates computed)."""
         origin, link, reverse = self.FRAMES[body]
         start = 0j if origin is None else getattr(self, origin).pos
         return start + arm(distance, offset_deg, self.unit_vector(link, reverse))
 
-    def load_direction(self, body: str, distance, offset_deg) -> np.ndarray:
+    def load_direction(self, body: str, distance, offset_deg):
         """The direction of the perpendicular point load at (``distance``, ``offset_deg``)
         of ``body`` (:func:`perpendicular_direction`)."""
         _, link, reverse = self.FRAMES[body]

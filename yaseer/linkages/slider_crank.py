@@ -14,13 +14,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-import numpy as np
-
 from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, loads_at_point, rigid_body
+from yaseer.linkages.numerics import math_for
 from yaseer.linkages.registry import lookup, register
 from yaseer.linkages.planar import CrankedLinkage, Motion, Rotation, Stretch, driven_crank, dot
-from yaseer.linkages.planar import solve_two_directions, still, unit, unit_degrees
+from yaseer.linkages.planar import Values, solve_two_directions, still, unit, unit_degrees
 
 # Loads of Program 1, by name (contract element in brackets):
 # crank_fx, crank_fy [F(0), F(1)] force components on the crank at its point;
@@ -49,7 +48,7 @@ class SliderCrank(CrankedLinkage):
     pin_a: Motion
     pin_b: Motion
     travel: Stretch
-    axis: np.ndarray
+    axis: Values
     moving: bool
 
     FRAMES = {"crank": (None, "crank", False), "rod": ("pin_b", "rod", True)}
@@ -120,24 +119,26 @@ def slider_crank_closed(
     length/s**2.  Raises AssemblyError for a rod of length <= 0 or where b < |e + A.u(phi+90)|,
     LockedError where the rod is perpendicular to the axis and rates are asked.
     """
-    e = np.asarray(eccentricity, dtype=float)
-    b = np.asarray(rod_length, dtype=float)
+    xp = math_for(eccentricity, crank_length, rod_length, crank_angle_deg, omega, alpha, crank_length_rate,
+                  crank_length_accel, axis_deg)
+    e = xp.float(eccentricity)
+    b = xp.float(rod_length)
     crank, length, pin_a, moving = driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate,
                                                 crank_length_accel)
-    phi = np.radians(np.asarray(axis_deg, dtype=float))
-    n = unit_degrees(axis_deg)
-    if np.any(b <= 0):
+    phi = xp.radians(xp.float(axis_deg))
+    n = unit_degrees(axis_deg, xp)
+    if xp.any(b <= 0):
         raise AssemblyError("connecting rod of zero length")
     across = -(e + dot(pin_a.pos, 1j * n))  # component of A->B along u(phi + 90)
     discriminant = b**2 - across**2
-    if np.any(discriminant < 0):
+    if xp.any(discriminant < 0):
         raise AssemblyError("the rod cannot reach the cylinder axis")
-    along = np.sqrt(discriminant)
+    along = xp.sqrt(discriminant)
     s = dot(pin_a.pos, n) + along
     b_pos = -e * 1j * n + s * n
-    rod_angle = np.angle(n * (along + 1j * across))
+    rod_angle = xp.angle(n * (along + 1j * across))
     if not moving:
-        zero = np.zeros_like(s)
+        zero = xp.zeros_like(s)
         return SliderCrank(crank, length, Rotation(rod_angle, zero, zero), pin_a, still(Motion(b_pos, b_pos, b_pos)),
                            Stretch(s, zero, zero), phi, False)
     rod_vec = b_pos - pin_a.pos

@@ -21,10 +21,9 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
-import numpy as np
-
 from yaseer.linkages.errors import AssemblyError, MethodDivisionByZero
-from yaseer.linkages.planar import dot
+from yaseer.linkages.numerics import math_for
+from yaseer.linkages.planar import Values, dot
 from yaseer.linkages.registry import lookup, register
 
 
@@ -32,12 +31,12 @@ class VirtualLink(NamedTuple):
     """Inclination T (degrees, [0, 360)), length L, dT/dt, d2T/dt2 (rad/s, rad/s**2),
     dL/dt, d2L/dt2 (length/s, length/s**2); floats or arrays."""
 
-    angle_deg: np.ndarray
-    length: np.ndarray
-    angle_rate: np.ndarray
-    angle_accel: np.ndarray
-    length_rate: np.ndarray
-    length_accel: np.ndarray
+    angle_deg: Values
+    length: Values
+    angle_rate: Values
+    angle_accel: Values
+    length_rate: Values
+    length_accel: Values
 
 
 def virtual_link(x, y, vx=0.0, vy=0.0, ax=0.0, ay=0.0, *, method: str | None = None) -> VirtualLink:
@@ -45,20 +44,21 @@ def virtual_link(x, y, vx=0.0, vy=0.0, ax=0.0, ay=0.0, *, method: str | None = N
     return lookup("virtual_link", method)(x, y, vx, vy, ax, ay)
 
 
-def _wrap_360(angle_deg: np.ndarray) -> np.ndarray:
+def _wrap_360(angle_deg, xp):
     """An angle in degrees brought into [0, 360)."""
-    wrapped = np.mod(angle_deg, 360.0)
-    return np.where(wrapped >= 360.0, wrapped - 360.0, wrapped)
+    wrapped = angle_deg % 360.0
+    return xp.where(wrapped >= 360.0, wrapped - 360.0, wrapped)
 
 
 @register("virtual_link", "polar", default=True)
 def virtual_link_polar(x, y, vx=0.0, vy=0.0, ax=0.0, ay=0.0) -> VirtualLink:
     """Polar components of the velocity and acceleration vectors (no cos T, sin T divisions)."""
-    position = np.asarray(x, dtype=float) + 1j * np.asarray(y, dtype=float)
-    velocity = np.asarray(vx, dtype=float) + 1j * np.asarray(vy, dtype=float)
-    acceleration = np.asarray(ax, dtype=float) + 1j * np.asarray(ay, dtype=float)
-    length = np.abs(position)
-    if np.any(length == 0):
+    xp = math_for(x, y, vx, vy, ax, ay)
+    position = xp.float(x) + 1j * xp.float(y)
+    velocity = xp.float(vx) + 1j * xp.float(vy)
+    acceleration = xp.float(ax) + 1j * xp.float(ay)
+    length = abs(position)
+    if xp.any(length == 0):
         raise AssemblyError("virtual link of zero length")
     radial = position / length
     tangential = 1j * radial
@@ -66,24 +66,26 @@ def virtual_link_polar(x, y, vx=0.0, vy=0.0, ax=0.0, ay=0.0) -> VirtualLink:
     angle_rate = dot(velocity, tangential) / length
     length_accel = dot(acceleration, radial) + length * angle_rate**2
     angle_accel = (dot(acceleration, tangential) - 2 * length_rate * angle_rate) / length
-    angle = _wrap_360(np.degrees(np.angle(position)))
+    angle = _wrap_360(xp.degrees(xp.angle(position)), xp)
     return VirtualLink(angle, length, angle_rate, angle_accel, length_rate, length_accel)
 
 
-def cos_sin_degrees(angle_deg) -> tuple[np.ndarray, np.ndarray]:
+def cos_sin_degrees(angle_deg) -> tuple:
     """cos and sin of an angle in degrees, exactly 0 at odd/even multiples of 90
     (as a pocket computer in degree mode gives them)."""
-    angle = np.asarray(angle_deg, dtype=float)
-    turn = np.mod(angle, 360.0)
-    cos = np.where((turn == 90.0) | (turn == 270.0), 0.0, np.cos(np.radians(angle)))
-    sin = np.where((turn == 0.0) | (turn == 180.0), 0.0, np.sin(np.radians(angle)))
+    xp = math_for(angle_deg)
+    angle = xp.float(angle_deg)
+    turn = angle % 360.0
+    cos = xp.where((turn == 90.0) | (turn == 270.0), 0.0, xp.cos(xp.radians(angle)))
+    sin = xp.where((turn == 0.0) | (turn == 180.0), 0.0, xp.sin(xp.radians(angle)))
     return cos, sin
 
 
 def divide_as_printed(numerator, denominator, what: str):
     """numerator / denominator, raising MethodDivisionByZero where the denominator is 0."""
-    denominator = np.asarray(denominator, dtype=float)
-    if np.any(denominator == 0):
+    xp = math_for(denominator)
+    denominator = xp.float(denominator)
+    if xp.any(denominator == 0):
         raise MethodDivisionByZero(f"division by zero ({what} = 0)")
     return numerator / denominator
 
@@ -91,13 +93,14 @@ def divide_as_printed(numerator, denominator, what: str):
 @register("virtual_link", "paper")
 def virtual_link_paper(x, y, vx=0.0, vy=0.0, ax=0.0, ay=0.0) -> VirtualLink:
     """The paper's equations (1)-(4) with the listing's T and L (lines 10-30)."""
-    x, y, vx, vy, ax, ay = (np.asarray(v, dtype=float) for v in (x, y, vx, vy, ax, ay))
-    angle = np.degrees(np.arctan(divide_as_printed(y, x, "X")))
-    angle = np.where(x < 0, angle + 180.0, angle)
+    xp = math_for(x, y, vx, vy, ax, ay)
+    x, y, vx, vy, ax, ay = (xp.float(v) for v in (x, y, vx, vy, ax, ay))
+    angle = xp.degrees(xp.arctan(divide_as_printed(y, x, "X")))
+    angle = xp.where(x < 0, angle + 180.0, angle)
     cos, sin = cos_sin_degrees(angle)
     length = divide_as_printed(x, cos, "COS T")
-    angle = np.where(angle < 0, angle + 360.0, angle)
-    angle = np.where(angle - 360.0 > 0, angle - 360.0, angle)
+    angle = xp.where(angle < 0, angle + 360.0, angle)
+    angle = xp.where(angle - 360.0 > 0, angle - 360.0, angle)
     length_rate = vx * cos + vy * sin  # (1)
     angle_rate = divide_as_printed(divide_as_printed(vy - length_rate * sin, length, "L"), cos, "COS T")  # (2)
     angle_accel = (ay * cos - ax * sin - 2 * length_rate * angle_rate) / length  # (3)
