@@ -90,6 +90,11 @@ class _Frame:
     def scalar(self, name: str) -> float:
         return float(self.machine.scalar(name))
 
+    def choice(self, name: str, index: int) -> float:
+        """An input that selects what the program does (``Z(n)``, ``Q(n)``, ``L(10)``):
+        a plain number, also while a call is recorded."""
+        return self.get(name, index)
+
     def put(self, element: Element, value) -> None:
         self._elements[element] = float(value)
 
@@ -100,26 +105,140 @@ class _Frame:
                   acceleration: tuple[Element, Element]) -> None:
         """Write a point's x, y components of position, velocity and acceleration."""
         for (x_element, y_element), vector in zip((position, velocity, acceleration), motion):
-            self.put(x_element, complex(vector).real)
-            self.put(y_element, complex(vector).imag)
+            self.put(x_element, vector.real)
+            self.put(y_element, vector.imag)
 
     def commit(self) -> None:
         """Check every output, then write them all."""
-        values = list(self._elements.values()) + list(self._scalars.values())
-        if not all(math.isfinite(value) for value in values):
+        isfinite = math.isfinite
+        if not (all(map(isfinite, self._elements.values())) and all(map(isfinite, self._scalars.values()))):
             raise self.error("Overflow", OVERFLOW)
-        arrays = {name: self.machine.array(name) for name, _ in self._elements}
-        if any(index >= len(arrays[name]) or index < 0 for name, index in self._elements):
+        array = self.machine.array
+        arrays = {name: array(name) for name in {name for name, _ in self._elements}}
+        targets = [(arrays[name], index) for name, index in self._elements]
+        if any(index >= len(values) or index < 0 for values, index in targets):
             raise self.error("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
-        if any(isinstance(arrays[name][index], (list, str)) for name, index in self._elements):
+        if any(isinstance(values[index], (list, str)) for values, index in targets):
             raise self.error("Type mismatch", TYPE_MISMATCH)  # a 2-D (or string) array where a number goes
-        for (name, index), value in self._elements.items():
-            arrays[name][index] = value
+        for (values, index), value in zip(targets, self._elements.values()):
+            values[index] = value
         for name, value in self._scalars.items():
             self.machine.set_scalar(name, value)
 
     def error(self, message: str, code: int = ILLEGAL_FUNCTION_CALL) -> BasicError:
         return BasicError(f"{message} (PROG {self.area})", code)
+
+
+class _RecordingFrame(_Frame):
+    """A call that is also recorded (:mod:`yaseer.linkages.tracing`): inputs are
+    traced numbers read by recorded lines, outputs are kept as they come."""
+
+    def __init__(self, machine, area: int, recorder):
+        super().__init__(machine, area)
+        self.recorder = recorder
+        self._arrays: set[str] = set()
+
+    def get(self, name: str, index: int):
+        value = super().get(name, index)
+        array = f"_a_{name}"
+        if name not in self._arrays:
+            self._arrays.add(name)
+            self.recorder.lines.append(f"{array} = _M.array({name!r})")
+        return self.recorder.emit(value, f"float({array}[{index}]) if {index} < len({array}) else 0.0")
+
+    def scalar(self, name: str):
+        return self.recorder.emit(super().scalar(name), f"float(_M.scalar({name!r}))")
+
+    def choice(self, name: str, index: int) -> float:
+        traced = self.get(name, index)
+        bool(traced == traced.value)  # a guard: the recording holds for this value only
+        return traced.value
+
+    def put(self, element: Element, value) -> None:
+        self._elements[element] = value
+
+    def put_scalar(self, name: str, value) -> None:
+        self._scalars[name] = value
+
+    def recorded(self):
+        """The compiled recording of this call: ``run(machine)`` computes the outputs
+        from the machine's inputs and commits them as :meth:`_Frame.commit` does
+        (Retrace where the inputs take another path)."""
+        recorder, area = self.recorder, self.area
+        outputs = list(self._elements.values()) + list(self._scalars.values())
+        finite = " and ".join(f"_isfinite({recorder.operand(value)})" for value in outputs) or "True"
+        lines = [f"if not ({finite}): raise _error('Overflow', {OVERFLOW})"]
+        largest: dict[str, int] = {}
+        for name, index in self._elements:
+            largest[name] = max(index, largest.get(name, -1))
+            if name not in self._arrays:
+                self._arrays.add(name)
+                lines.append(f"_a_{name} = _M.array({name!r})")
+        if largest:  # an array's elements are all numbers, all strings or all rows: one look each
+            lines += [f"if {' or '.join(f'len(_a_{n}) <= {i}' for n, i in largest.items())}: "
+                      f"raise _error('Subscript out of range', {SUBSCRIPT_OUT_OF_RANGE})",
+                      f"if {' or '.join(f'isinstance(_a_{n}[{i}], (list, str))' for n, i in largest.items())}: "
+                      f"raise _error('Type mismatch', {TYPE_MISMATCH})"]
+        for (name, index), value in self._elements.items():
+            lines.append(f"_a_{name}[{index}] = {_as_float(recorder, value)}")
+        for name, value in self._scalars.items():
+            lines.append(f"_M.set_scalar({name!r}, {_as_float(recorder, value)})")
+        recorder.names.update(_isfinite=math.isfinite,
+                              _error=lambda message, code: BasicError(f"{message} (PROG {area})", code))
+        return recorder.compile(lines, f"PROG {area}")
+
+    def plain(self) -> _Frame:
+        """This call's outputs as a plain frame (concrete numbers)."""
+        frame = _Frame(self.machine, self.area)
+        for element, value in self._elements.items():
+            frame.put(element, getattr(value, "value", value))
+        for name, value in self._scalars.items():
+            frame.put_scalar(name, getattr(value, "value", value))
+        return frame
+
+
+def _as_float(recorder, value) -> str:
+    """The recorded text of output ``value`` as a float (as :meth:`_Frame.put` stores it)."""
+    text = recorder.operand(value)
+    return text if isinstance(getattr(value, "value", value), float) else f"float({text})"
+
+
+MAX_RECORDINGS = 16  # variants kept per program and method (forces or not, Q(n), ...)
+_recordings: dict[tuple, list] = {}  # (program, method) -> compiled recordings run(machine)
+_calls: dict[tuple, int] = {}
+
+
+def _call_program(machine, number: int, method: str | None) -> _Frame | None:
+    """Run program ``number`` on ``machine``'s inputs; returns the frame to commit
+    (None: a recording ran and committed its outputs).
+
+    From the second call of a program on, each call is recorded once per path
+    it takes (:mod:`yaseer.linkages.tracing`) and later calls on the same path run
+    the recording: the same operations on the same values, without the objects
+    around them.  A path that cannot be recorded (branch tracking, another
+    method) runs the plain code."""
+    key = (number, method)
+    from yaseer.linkages.tracing import NotTraceable, Recorder, Retrace
+
+    recordings = _recordings.setdefault(key, [])
+    for recording in recordings:
+        try:
+            return recording(machine)
+        except Retrace:
+            continue
+    _calls[key] = calls = _calls.get(key, 0) + 1
+    if method is None and calls > 1 and len(recordings) < MAX_RECORDINGS:
+        frame = _RecordingFrame(machine, number, Recorder())
+        try:
+            PROGRAMS[number](frame, method)
+        except NotTraceable:
+            pass
+        else:
+            recordings.append(frame.recorded())
+            return frame.plain()
+    frame = _Frame(machine, number)
+    PROGRAMS[number](frame, method)
+    return frame
 
 
 def _translate(error: Exception, frame: _Frame) -> BasicError:
@@ -146,7 +265,7 @@ def _translate(error: Exception, frame: _Frame) -> BasicError:
 def _selected_unknown(frame: _Frame) -> str:
     """The load named by Q(n), or the BASIC error for a Q(n) outside the allowed set."""
     choices = UNKNOWNS[frame.area]
-    q = frame.get("Q", frame.area)
+    q = frame.choice("Q", frame.area)
     if q not in choices:
         allowed = " or ".join(str(choice) for choice in choices)
         raise frame.error(f"Q({frame.area}) = {q:g} is not {allowed}")
@@ -161,7 +280,7 @@ def _put_forces(frame: _Frame, result) -> None:
     """Write the solved unknown and every reaction of the program."""
     frame.put(LOADS[frame.area][result.unknown], result.value)
     for name, elements in REACTIONS[frame.area].items():
-        value = complex(result.reactions[name])
+        value = result.reactions[name]  # complex for a pin
         if len(elements) == 2:
             frame.put(elements[0], value.real)
             frame.put(elements[1], value.imag)
@@ -170,7 +289,7 @@ def _put_forces(frame: _Frame, result) -> None:
 
 
 def _forces_wanted(frame: _Frame) -> bool:
-    return frame.get("Z", frame.area) == 2
+    return frame.choice("Z", frame.area) == 2
 
 
 def _mass(frame: _Frame, mass: int, inertia: Element, distance: Element, offset: Element):
@@ -188,8 +307,8 @@ def program_1(frame: _Frame, method: str | None) -> None:
     frame.put_point(kin.crank_point(g("R", 1), g("H", 1)), (("X", 1), ("Y", 1)), (("V", 1), ("V", 2)),
                     (("A", 33), ("A", 34)))
     centre = kin.crank_point(g("R", 2), g("H", 2))
-    frame.put(("A", 10), complex(centre.acc).real)
-    frame.put(("A", 11), complex(centre.acc).imag)
+    frame.put(("A", 10), centre.acc.real)
+    frame.put(("A", 11), centre.acc.imag)
     frame.put_point(kin.rod_point(g("R", 4), g("H", 4)), (("X", 2), ("Y", 2)), (("V", 3), ("V", 4)),
                     (("A", 35), ("A", 36)))
     if _forces_wanted(frame):
@@ -221,6 +340,10 @@ def _tracked_fourbar(frame: _Frame):
     on standard error as ``PROG 2: branch switch at crank angle ...``."""
     from yaseer.linkages.tracking import BranchTracker, Geometry
 
+    if isinstance(frame, _RecordingFrame):  # the tracker keeps state between calls: never recorded
+        from yaseer.linkages.tracing import NotTraceable
+
+        raise NotTraceable("branch tracking")
     g = frame.get
     tracker = _trackers.get(frame.machine) or _trackers.setdefault(frame.machine, BranchTracker(_linkages().UNCROSSED))
     geometry = Geometry(g("L", 11), g("T", 11), g("L", 12), g("L", 13), g("L", 14))
@@ -234,12 +357,13 @@ def _tracked_fourbar(frame: _Frame):
 def program_2(frame: _Frame, method: str | None) -> None:
     """Four-bar AoABBo (contract, Program 2)."""
     g = frame.get
-    if g("L", 10) == TRACKING:
+    branch = frame.choice("L", 10)
+    if branch == TRACKING:
         kin = _tracked_fourbar(frame)
     else:
         kin = _linkages().fourbar(g("L", 11), g("T", 11), g("L", 12), g("L", 13), g("L", 14), g("T", 12), g("W", 5),
                       g("A", 5), crank_length_rate=g("D", 2), crank_length_accel=g("E", 2),
-                      branch=_branch(g("L", 10)), method=method)
+                      branch=_branch(branch), method=method)
     for (angle, rate, accel), link in (((("T", 13), ("W", 6), ("A", 6)), kin.coupler),
                                        ((("T", 14), ("W", 7), ("A", 7)), kin.follower)):
         frame.put(angle, link.degrees)
@@ -323,15 +447,15 @@ def make_area(number: int, method: str | None = None) -> Callable[[object], None
     program = PROGRAMS[number]
 
     def area(machine) -> None:
-        frame = _Frame(machine, number)
         try:
             with _quiet_numpy():
-                program(frame, method)
+                frame = _call_program(machine, number, method)
         except BasicError:
             raise
         except (ArithmeticError, ValueError, TypeError) as error:
-            raise _translate(error, frame) from error
-        frame.commit()
+            raise _translate(error, _Frame(machine, number)) from error
+        if frame is not None:
+            frame.commit()
 
     area.__name__ = f"prog_{number}"
     area.__doc__ = program.__doc__

@@ -16,6 +16,7 @@ the same BASIC error.
 from __future__ import annotations
 
 import cmath
+import functools
 import math
 from types import SimpleNamespace
 
@@ -46,19 +47,24 @@ def _imag(value) -> float:
     return value.imag
 
 
-def _angle(value) -> float:
-    return math.atan2(value.imag, value.real)
+_angle = cmath.phase  # atan2(imag, real)
+_unit = functools.partial(cmath.rect, 1.0)  # u(angle) = cos(angle) + i sin(angle)
 
 
-def _unit(angle) -> complex:
-    return complex(math.cos(angle), math.sin(angle))
+QUADRANTS = {0.0: complex(1.0, 0.0), 90.0: complex(0.0, 1.0), 180.0: complex(-1.0, 0.0), 270.0: complex(0.0, -1.0)}
+
+
+def _unit_degrees(angle_deg) -> complex:
+    """u(angle) for an angle in degrees, exact at multiples of 90 (see planar.unit_degrees)."""
+    exact = QUADRANTS.get(angle_deg % 360.0)
+    return exact if exact is not None else _unit(math.radians(angle_deg))
 
 
 #: One position: Python numbers (``float``, ``complex``), ``math`` and ``cmath``.
 SCALAR = SimpleNamespace(
     scalar=True, pi=math.pi,
     float=float, complex=complex, sqrt=math.sqrt, cos=math.cos, sin=math.sin, arctan=math.atan,
-    radians=math.radians, degrees=math.degrees, angle=_angle, unit=_unit, exp=cmath.exp,
+    radians=math.radians, degrees=math.degrees, angle=_angle, unit=_unit, unit_degrees=_unit_degrees, exp=cmath.exp,
     where=_where, any=bool, all=bool, isfinite=_isfinite, real=_real, imag=_imag,
     zeros_like=_zeros_like, ones_like=_ones_like, maximum=max,
 )
@@ -86,8 +92,9 @@ def array_math() -> SimpleNamespace:
 
 def math_for(*values) -> SimpleNamespace:
     """:data:`SCALAR` when every value is a Python number (numpy's float64 is
-    one), else the numpy namespace (:func:`array_math`)."""
+    one); the namespace a value's type names (``math_namespace``: a recording,
+    :mod:`tracing`); else the numpy namespace (:func:`array_math`)."""
     for value in values:
         if not isinstance(value, _NUMBERS):
-            return array_math()
+            return getattr(type(value), "math_namespace", None) or array_math()
     return SCALAR

@@ -10,11 +10,10 @@ are rad/s and rad/s**2, counter-clockwise positive.
 
 from __future__ import annotations
 
-import math
 from typing import ClassVar, NamedTuple
 
 from yaseer.linkages.errors import LockedError
-from yaseer.linkages.numerics import SCALAR, math_for
+from yaseer.linkages.numerics import QUADRANTS, SCALAR, math_for
 
 # A value of this module: a Python number for one position, a numpy array for many.
 Values = "float | complex | numpy.ndarray"
@@ -25,17 +24,13 @@ def unit(angle, xp=None):
     return (xp or math_for(angle)).unit(angle)
 
 
-_QUADRANTS = {0.0: complex(1.0, 0.0), 90.0: complex(0.0, 1.0), 180.0: complex(-1.0, 0.0), 270.0: complex(0.0, -1.0)}
-
-
 def unit_degrees(angle_deg, xp=None):
     """The unit vector u(angle) for an angle in degrees, exact at multiples of 90
     (cos 90 = 0, as a pocket computer in degree mode gives it), so dead centres and
     vertical axes given as 90, 180, 270 are exact."""
     xp = xp or math_for(angle_deg)
-    if xp is SCALAR:
-        exact = _QUADRANTS.get(float(angle_deg) % 360.0)
-        return exact if exact is not None else xp.unit(math.radians(angle_deg))
+    if xp.scalar:
+        return xp.unit_degrees(xp.float(angle_deg))
     import numpy as np
 
     angle = np.asarray(angle_deg, dtype=float)
@@ -43,7 +38,7 @@ def unit_degrees(angle_deg, xp=None):
     vector = np.exp(1j * np.radians(angle))
     on_axis = (np.mod(turn, 90.0) == 0.0) & (turn < 360.0)  # mod gives 360.0 for -1e-17
     if np.any(on_axis):
-        axes = np.array(list(_QUADRANTS.values()))  # u(0, 90, 180, 270)
+        axes = np.array(list(QUADRANTS.values()))  # u(0, 90, 180, 270)
         if vector.ndim == 0:
             return axes[int(turn // 90.0)]
         vector[on_axis] = axes[(turn[on_axis] // 90.0).astype(int)]

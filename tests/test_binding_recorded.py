@@ -1,0 +1,137 @@
+"""Recorded GOSUB PROG calls (yaseer.linkages.tracing, yaseer.binding): from the
+second call on, a program runs as a compiled recording of its scalar code.  The
+recording must give the outputs and errors of the plain scalar code (the
+recording switched off) on every path: forces or not, each Q(n), each branch,
+assembly failures, overflow, and inputs that move from one path to another."""
+
+from __future__ import annotations
+
+import io
+import random
+import sys
+from pathlib import Path
+
+import pytest
+
+from yaseer import binding
+from yaseer.basic.errors import BasicError
+from yaseer.basic.machine import Machine
+from yaseer.linkages.tracing import NotTraceable, Recorder
+
+sys.path.insert(0, str(Path(__file__).resolve().parent / "benchmarks"))
+from percall import CRANK, INPUTS  # noqa: E402  (the benchmark's inputs of each program)
+
+WRITTEN = ("T", "W", "A", "X", "Y", "V", "F", "U", "N", "L", "D", "E", "P")
+
+
+def machine(number: int, z: float, q: float, branch: float = 0.0) -> Machine:
+    m = Machine(screen=io.StringIO())
+    binding.install(m)
+    for name, elements in INPUTS[number].items():
+        for index, value in elements.items():
+            m.array(name)[index] = float(value)
+    m.array("Z")[number] = z
+    m.array("Q")[number] = q
+    m.array("L")[10] = branch if number == 2 else m.array("L")[10]
+    m.set_scalar("G", 9.81)
+    return m
+
+
+def outcome(m: Machine, number: int):
+    """Every array the programs write and the scalars, or the error line."""
+    try:
+        m.python_areas[number](m)
+    except BasicError as err:
+        return str(err)
+    return {name: list(m.array(name)) for name in WRITTEN}, dict(m.scalars)
+
+
+def both_ways(number, z, q, angles, branch=0.0, scale=1.0):
+    """The outcomes with recordings (fresh) and with the plain code, call by call."""
+    results = []
+    for recording in (True, False):
+        binding._recordings.clear()
+        binding._calls.clear()
+        saved = binding.MAX_RECORDINGS
+        binding.MAX_RECORDINGS = saved if recording else 0
+        try:
+            m = machine(number, z, q, branch)
+            name, index = CRANK[number]
+            row = []
+            for angle in angles:
+                m.array(name)[index] = angle
+                m.array("L")[12 if number == 2 else 2] *= scale
+                row.append(outcome(m, number))
+            results.append(row)
+            assert bool(binding._recordings.get((number, None))) == recording  # recorded calls ran
+
+        finally:
+            binding.MAX_RECORDINGS = saved
+    return results
+
+
+ANGLES = [0.0, 37.5, 90.0, 123.4, 180.0, 270.0, 301.0, 359.9, 45.0, 0.0]
+
+
+@pytest.mark.parametrize("number,q", [(1, 1), (1, 2), (1, 3), (1, 4), (2, 1), (2, 2), (2, 3), (2, 4), (3, 1), (3, 3)])
+@pytest.mark.parametrize("z", [0.0, 2.0])
+def test_recorded_calls_equal_the_plain_code(number, q, z):
+    recorded, plain = both_ways(number, z, q, ANGLES)
+    assert recorded == plain
+
+
+@pytest.mark.parametrize("branch", [0.0, 1.0])
+def test_branches_and_a_mechanism_that_stops_assembling(branch):
+    # the crank grows every call until the four-bar cannot close: the same error both ways
+    recorded, plain = both_ways(2, 2.0, 1, [10.0 * k for k in range(12)], branch=branch, scale=1.6)
+    assert recorded == plain
+    assert any(isinstance(item, str) and "cannot be assembled (PROG 2)" in item for item in recorded)
+
+
+def test_inputs_that_change_path_between_calls_are_recorded_again():
+    binding._recordings.clear()
+    binding._calls.clear()
+    m = machine(2, 0.0, 1)
+    plain = machine(2, 0.0, 1)
+    saved = binding.MAX_RECORDINGS
+    rng = random.Random(7)
+    for call in range(40):
+        z = rng.choice([0.0, 2.0])
+        q = rng.choice([1, 2, 3, 4])
+        still = rng.random() < 0.3  # no crank rate: a static call
+        for target in (m, plain):
+            target.array("Z")[2], target.array("Q")[2] = z, q
+            target.array("T")[12] = rng.uniform(0, 360) if target is m else m.array("T")[12]
+            target.array("W")[5] = 0.0 if still else 4.0
+            target.array("A")[5] = 0.0 if still else -1.0
+            target.array("D")[2] = 0.0 if still else 0.1
+            target.array("E")[2] = 0.0 if still else 0.2
+        first = outcome(m, 2)
+        binding.MAX_RECORDINGS = 0
+        try:
+            second = outcome(plain, 2)
+        finally:
+            binding.MAX_RECORDINGS = saved
+        assert first == second
+    assert len(binding._recordings[(2, None)]) > 2  # several paths were recorded
+
+
+def test_overflow_in_a_recorded_call_is_the_basic_error():
+    binding._recordings.clear()
+    binding._calls.clear()
+    m = machine(2, 2.0, 1)
+    for _ in range(3):
+        outcome(m, 2)
+    m.array("M")[7] = 1e308  # coupler mass: forces overflow
+    m.array("W")[5] = 1e200
+    assert outcome(m, 2) == "Overflow (PROG 2)"
+
+
+def test_a_traced_value_never_becomes_a_plain_number():
+    recorder = Recorder()
+    traced = recorder.emit(2.5, "2.5")
+    with pytest.raises(NotTraceable):
+        float(traced)
+    with pytest.raises(TypeError):
+        {traced: 1}
+    assert (traced * 2).value == 5.0
