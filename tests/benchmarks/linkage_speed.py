@@ -4,18 +4,25 @@ Run:  PYTHONPATH=. python tests/benchmarks/linkage_speed.py [--positions N] [--r
 
 For Programs 1, 2, 3 each position gets positions, velocities, accelerations
 (flexible crank) and the force analysis (masses, inertias, gravity, known loads,
-crank torque unknown); Program 5 gets its full output.  Prints microseconds per
-position for a Python loop of scalar calls and for one vectorised call (the
-first call of each case, made in turn before the allocator settles, and the best of R after W untimed
-ones once the allocator has settled: see settle_allocator), and their ratio,
-all measured in this run.  Anchor: pylinkage
-1.3 with numba needs about 0.6 us per four-bar position for
-position + velocity + acceleration, without forces.
+crank torque unknown); Program 5 gets its full output.  Prints CPU microseconds
+per position (CPU time: the machine is shared) for a Python loop of scalar calls
+and for one vectorised call (the first call of each case, made in turn before
+the allocator settles, and the best of R after W untimed ones once the allocator
+has settled: see settle_allocator), and their ratio, all measured in this run.
+
+Reference measured in the same run when installed: pylinkage 1.3 (with numba when
+installed), the same four-bar's positions, velocities and accelerations
+(``Linkage.step_fast_with_kinematics``), no forces.  Goals (issue 15): four-bar
+positions, velocities, accelerations at most 0.3 us per position, with forces at
+most 0.5 us, over 3,601 positions.  Numbers for more positions, in chunks, and
+the peak memory: array_scaling.py.  Where OPENBLAS_CORETYPE is set, unset it for
+this command alone (README, speed section).
 """
 
 from __future__ import annotations
 
 import argparse
+import math
 import time
 
 import numpy as np
@@ -78,10 +85,36 @@ CASES = {
 def best_time(function, repeat):
     best = float("inf")
     for _ in range(repeat):
-        start = time.perf_counter()
+        start = time.process_time()
         function()
-        best = min(best, time.perf_counter() - start)
+        best = min(best, time.process_time() - start)
     return best
+
+
+GOALS = {"PROG 2 four-bar, pos+vel+acc+forces": 0.5, "PROG 2 four-bar, pos+vel+acc only": 0.3}
+
+
+def pylinkage_fourbar(positions: int):
+    """The same four-bar in pylinkage (positions, velocities, accelerations over
+    ``positions`` crank steps), or the reason it cannot be measured."""
+    try:
+        import pylinkage
+        from pylinkage import Crank, Ground, Linkage, RRRDyad
+    except ImportError:
+        return "pylinkage not installed: reference skipped"
+    try:
+        import numba  # noqa: F401
+        accelerated = "with numba"
+    except ImportError:
+        accelerated = "without numba"
+    ground = Ground(0.0, 0.0, name="Ao")
+    pivot = Ground(1.2 * math.cos(math.radians(20.0)), 1.2 * math.sin(math.radians(20.0)), name="Bo")
+    crank = Crank(ground, 0.3, angular_velocity=2 * math.pi / positions, name="A")
+    joint = RRRDyad(crank.output, pivot, 1.0, 0.8, name="B")
+    linkage = Linkage([ground, pivot, crank, joint], name="four-bar")
+    linkage.set_input_velocity(crank, 4.0, -1.0)
+    label = f"pylinkage {getattr(pylinkage, '__version__', '?')} ({accelerated}), pos+vel+acc"
+    return label, lambda: linkage.step_fast_with_kinematics(iterations=positions)
 
 
 def settle_allocator() -> None:
@@ -104,8 +137,9 @@ def main(argv=None) -> int:
     first_calls = {name: best_time(lambda: case(angles), 1) for name, case in CASES.items()}
     settle_allocator()
     print(f"{args.positions} positions; loop: best of 2; array: the first call of each case before the allocator settles, then the best "
-          f"of {args.repeat} after {args.warmup} untimed calls; ratio = loop / best array")
-    print(f"{'case':52s} {'loop us/pos':>12s} {'first us/pos':>13s} {'array us/pos':>13s} {'ratio':>8s}")
+          f"of {args.repeat} after {args.warmup} untimed calls; ratio = loop / best array; CPU time")
+    print(f"{'case':52s} {'loop us/pos':>12s} {'first us/pos':>13s} {'array us/pos':>13s} {'ratio':>8s}  goal")
+    arrays = {}
     for name, case in CASES.items():
         loop = best_time(lambda: [case(angle) for angle in scalar_angles], 2)
         first = first_calls[name]
@@ -113,7 +147,21 @@ def main(argv=None) -> int:
             case(angles)
         array = best_time(lambda: case(angles), args.repeat)
         per_loop, per_first, per_array = (1e6 * t / args.positions for t in (loop, first, array))
-        print(f"{name:52s} {per_loop:12.1f} {per_first:13.3f} {per_array:13.3f} {loop / array:8.0f}")
+        arrays[name] = per_array
+        goal = GOALS.get(name)
+        verdict = "" if goal is None else f"<= {goal:g} us: {'met' if per_array <= goal else 'NOT met'}"
+        print(f"{name:52s} {per_loop:12.1f} {per_first:13.3f} {per_array:13.3f} {loop / array:8.0f}  {verdict}")
+    reference = pylinkage_fourbar(args.positions)
+    if isinstance(reference, str):
+        print(reference)
+        return 0
+    label, run = reference
+    for _ in range(3):
+        run()  # numba compiles on the first call
+    per_reference = 1e6 * best_time(run, args.repeat) / args.positions
+    print(f"{label:52s} {'':12s} {'':13s} {per_reference:13.3f}")
+    for name in GOALS:
+        print(f"  {name}: {per_reference / arrays[name]:.2f}x pylinkage's speed (pylinkage computes no forces)")
     return 0
 
 
