@@ -138,3 +138,25 @@ def test_classroom_commands_from_a_pipe(tmp_path):
     assert result.returncode == 0
     assert "\x1b" not in result.stdout  # CLS clears nothing on a pipe
     assert "P0> 10 15 20 P0> P0> 10 PRINT 1\n15 PRINT 2\nP0> P0> [10] 1 \n[15] 2 \n" in result.stdout
+
+
+def test_cont_after_ctrl_c_goes_on_exactly_where_the_run_was_broken(terminal):
+    """GW-BASIC resumes after Ctrl-C; the result is the unbroken run's (closed forms below)."""
+    terminal.type('10 PRINT "GO": FOR I=1 TO 1000000: S=S+I MOD 7: NEXT I')
+    terminal.type('15 PRINT "HALF"')
+    terminal.type("20 N=N+1: IF N<300000 THEN 20")
+    terminal.type("30 PRINT S;I;N")
+    terminal.child.send("RUN\r")
+    terminal.child.expect("GO")
+    terminal.child.sendintr()  # inside the FOR loop of line 10 (compiled as a native loop)
+    assert plain(terminal.wait()).endswith("Break in 10\n")
+    assert 1 <= float(terminal.type("PRINT I")) < 1000000
+    terminal.child.send("CONT\r")
+    terminal.child.expect("HALF")
+    terminal.child.sendintr()  # inside line 20, a block that jumps back to itself
+    assert plain(terminal.wait()).endswith("Break in 20\n")
+    assert 0 <= float(terminal.type("PRINT N")) < 300000
+    total = sum(i % 7 for i in range(1, 1000001))
+    assert terminal.type("CONT") == f" {total}  1000001  300000 \n"
+    assert terminal.type("CONT") == "Can't continue\n"  # the run has ended
+    terminal.close()

@@ -215,7 +215,7 @@ EDIT n              edit line n           RENUM [new[,old[,step]]]
 AUTO [n][,step]     number lines for you (Enter on a free number or Ctrl-C ends)
 LLIST [a-b]         list to the printer   TRON, TROFF  trace lines run as [n]
 CLS                 clear the screen
-RUN [n] | RUN "f"   run PROG 0            CONT         go on after STOP
+RUN [n] | RUN "f"   run PROG 0            CONT         go on after STOP or Ctrl-C
 NEW                 erase this area       PROG n       edit area n (0-9)
 LOAD "f" | SAVE "f" read / write a .bas   FILES        list the .bas files here
 PRINT 2*3, GOSUB PROG 5, ...              run at once (direct mode)
@@ -545,6 +545,7 @@ class MachineEngine:
         if self._machine is None:
             self._machine = create_machine(self._screen, self._printer, dialect=self._dialect)
             self._machine.on_clear_screen = self._clear_screen
+            self._machine.resumable_breaks = True  # Ctrl-C, then CONT goes on exactly
         return self._machine
 
     def reset(self) -> None:

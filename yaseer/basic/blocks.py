@@ -148,8 +148,9 @@ def _close(open_loops: list, var):
     return None
 
 
-def plan(flat: list, entry_lines=()) -> Plan:
-    """Decide the blocks of an area (see :class:`Plan`)."""
+def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
+    """Decide the blocks of an area (see :class:`Plan`); the FORs at ``dynamic_loops``
+    (statement indices) are never native."""
     n = len(flat)
     statements = [s for _, s in flat]
     fine = any(isinstance(s, ast.Resume) and s.mode != "line"
@@ -184,7 +185,7 @@ def plan(flat: list, entry_lines=()) -> Plan:
                     body_ok = False
                     break
                 k += 1
-            if body_ok and not any(f < t <= j for t in targets):
+            if body_ok and f not in dynamic_loops and not any(f < t <= j for t in targets):
                 native[f] = j
     entries = {0, n} | targets
     for i, stmt in enumerate(statements):

@@ -18,17 +18,30 @@ class CompiledArea:
     ``data`` [(DATA item text, line)]; ``data_lines`` line -> index of its first
     item; ``scalars`` every scalar name used; ``blocks`` the block functions
     (filled in by the machine after it executes the source).
+
+    Where Ctrl-C may stop a run so that CONT resumes it exactly:
+    ``index_blocks`` statement index -> the block starting there;
+    ``break_points`` block -> {line of its Python function: (BASIC line,
+    loops)}: the ``continue`` of a block looping to its own start (loops
+    ``()``: resume the block) and the top of each pass of a native FOR loop
+    (loops: ``(FOR index, FOR-stack key, temporary number, mode, Python local
+    of the variable or None)`` for each native loop open there, outermost
+    first); ``dynamic_loops`` the FOR indices this compile was told to run
+    through the FOR stack.
     """
 
     FIELDS = ("source", "pieces", "block_count", "line_blocks", "block_next", "data", "data_lines",
-              "scalars", "first_line")
+              "scalars", "first_line", "index_blocks", "break_points", "dynamic_loops")
 
     def __init__(self, source, pieces, block_count, line_blocks, block_next, data, data_lines,
-                 scalars, first_line=None):
+                 scalars, first_line=None, index_blocks=None, break_points=None, dynamic_loops=()):
         self.source, self.pieces, self.block_count = source, pieces, block_count
         self.line_blocks, self.block_next = line_blocks, block_next
         self.data, self.data_lines, self.scalars = data, data_lines, scalars
         self.first_line = first_line
+        self.index_blocks = index_blocks or {}
+        self.break_points = break_points or {}
+        self.dynamic_loops = dynamic_loops
         self.blocks: list = []
 
     def as_plain(self) -> tuple:

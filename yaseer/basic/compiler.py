@@ -198,12 +198,14 @@ def _simple_operand(code: str) -> bool:
 class AreaCompiler:
     """Compiles the lines of one program area (see the module docstring)."""
 
-    def __init__(self, lines: list, area: int = 0, direct: bool = False, entry_lines=(), trace: bool = False):
+    def __init__(self, lines: list, area: int = 0, direct: bool = False, entry_lines=(), trace: bool = False,
+                 dynamic_loops=()):
         self.area = area
         self.direct = direct
         self.trace = trace and not direct
+        self.dynamic_loops = set(dynamic_loops)
         self.flat = flatten(lines)
-        self.plan = plan(self.flat, entry_lines)
+        self.plan = plan(self.flat, entry_lines, self.dynamic_loops)
         self.line_first = {}
         for i, (number, _) in enumerate(self.flat):
             self.line_first.setdefault(number, i)
@@ -223,6 +225,9 @@ class AreaCompiler:
         self.data_lines: dict = {}
         self.scope = _BlockScope(self)
         self.counting_vars: set[str] = set()  # native loop variables that stay >= 0
+        self.open_loops: list[tuple] = []  # the native loops around the code being emitted
+        self.break_infos: list[tuple] = []  # #BREAK#k markers: (BASIC line, open loops)
+        self.break_points: dict[int, dict] = {}  # block -> {Python line: (BASIC line, open loops)}
         self.fn_params: dict[str, list] = {}  # DEF FN name -> parameter names
 
     # -- emission primitives
@@ -646,13 +651,18 @@ class AreaCompiler:
         self.indent -= 1
 
     # -- FOR / NEXT
+    @staticmethod
+    def loop_key(var) -> str:
+        """The FOR-stack key of a control variable: ``I``, or ``A()`` for an element."""
+        return var.name if isinstance(var, ast.Var) else var.name + "()"
+
     def loop_var(self, var, scope) -> tuple[str, str]:
         """(Python target for the control variable, FOR-stack key)."""
         if ast.expr_type(var) != "n":
             raise _type_mismatch()
         if isinstance(var, ast.Var):
-            return scope.scalar(var.name, write=True), var.name
-        return self.element(var, scope), var.name + "()"
+            return scope.scalar(var.name, write=True), self.loop_key(var)
+        return self.element(var, scope), self.loop_key(var)
 
     def stmt_For(self, stmt, scope, native_next: int | None = None):
         start = self.numeric(stmt.start, scope)
@@ -837,14 +847,18 @@ class AreaCompiler:
         if counting:
             self.counting_vars.add(stmt.var.name)
         self.indent += 1
-        if j == i + 1 or all(self.flat[k][0] == self.flat[i][0] for k in range(i, j + 1)):
-            self.line = self.flat[i][0]  # an empty or one-line loop: _ln is already right
-        else:
-            self.line = None
-            self.set_line(self.flat[i][0])
+        # The top of a pass is where a Ctrl-C may stop the loop so that CONT resumes it:
+        # its line is the atomic ``_ln = n`` (nothing in it can be interrupted half-way).
+        self.open_loops.append((i, self.loop_key(stmt.var), n, mode,
+                                local_name(stmt.var.name) if isinstance(stmt.var, ast.Var) else None))
+        self.emit(f"#BREAK#{len(self.break_infos)}")
+        self.break_infos.append((self.flat[i + 1][0], tuple(self.open_loops)))
+        self.line = None
+        self.set_line(self.flat[i][0])
         body_mark = len(self.cur.code)
         self.walk(i + 1, j)
         self.trace_line(j)  # a NEXT that starts its line
+        self.open_loops.pop()
         if len(self.cur.code) == body_mark:
             self.emit("pass")  # an empty body (a delay loop)
         if counting:
@@ -900,10 +914,19 @@ class AreaCompiler:
             source=source, pieces=pieces, block_count=len(self.blocks), line_blocks=line_blocks,
             block_next=self.block_next, data=self.data, data_lines=self.data_lines,
             scalars=set(self.scalars), first_line=self.flat[0][0] if self.flat else None,
+            index_blocks=dict(self.entry_block), break_points=self.break_points,
+            dynamic_loops=tuple(sorted(self.dynamic_loops)),
         )
 
     def block_source(self, block: _Block) -> str:
-        """The Python text of one block function."""
+        """The Python text of one block function.
+
+        Its break points (see :class:`CompiledArea`) go to ``self.break_points``:
+        the ``continue`` lines of a block that loops back to its own start, and the
+        line marked ``#BREAK#k`` at the top of each native loop's pass.
+        """
+        points: dict[int, tuple] = {}
+        pending = None  # a #BREAK# marker waiting for the line it marks
         names = sorted(block.scalars)
         written = [n for n in names if block.scalars[n]]
         load = "; ".join(f"{local_name(n)} = _S[{n!r}]" for n in names)
@@ -937,11 +960,17 @@ class AreaCompiler:
                 if name in block.arrays:
                     out.append(pad + f"{array_local(name)} = _A[{name!r}]")  # just dimensioned
                 continue
-            if self_loop:
-                if text == loop_back:
-                    text = "continue"
-                elif text.endswith(": " + loop_back):
-                    text = text[: -len(loop_back)] + "continue"
+            if text.startswith("#BREAK#"):
+                pending = self.break_infos[int(text[7:])]
+                continue
+            if self_loop and (text == loop_back or text.endswith(": " + loop_back)):
+                if text != loop_back:  # "if c: return b": the continue on a line of its own
+                    out.append(pad + text[: -len(loop_back) - 1])
+                    pad += "    "
+                points[len(out) + 1] = (block.first_line, ())  # (lines count from 1: def is 1)
+                text = "continue"
+            if pending is not None:
+                points[len(out) + 1], pending = pending, None
             out.append(pad + text)
         if not block.code:
             out.append("    " * (1 + base) + "pass")
@@ -949,6 +978,8 @@ class AreaCompiler:
         if store:
             out.append("        " + store)
         out.append("        _M.line = _ln")
+        if points:
+            self.break_points[block.number] = points
         return "\n".join(out) + "\n"
 
 
@@ -969,11 +1000,13 @@ def split_data(text: str) -> list[str]:
 
 
 def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=(),
-                 trace: bool = False) -> CompiledArea:
+                 trace: bool = False, dynamic_loops=()) -> CompiledArea:
     """Compile an area's parsed lines (``syntax_tree.Line`` in line order).
 
     ``entry_lines`` are lines that must start a block although no jump names
     them (RUN n, or a GOTO typed in direct mode); ``trace`` compiles the TRON
-    variant (see the module docstring).
+    variant (see the module docstring); ``dynamic_loops`` are the statement
+    indices of FOR loops to run through the FOR stack even where they could be
+    native (CONT resumes a native loop broken by Ctrl-C that way).
     """
-    return AreaCompiler(lines, area, direct, entry_lines, trace).compile()
+    return AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops).compile()

@@ -59,6 +59,20 @@ class ProgramStop(BaseException):
         self.area, self.block, self.line = area, block, line
 
 
+class BreakPoint(ProgramStop):
+    """Ctrl-C landed where CONT can resume (see ``Machine.resumable_breaks``).
+
+    ``block`` of ``area`` is where to go on; ``loops`` the native FOR loops that
+    were open there, outermost first, as ``(FOR index, FOR-stack key, value,
+    limit, step)`` (value None for an array element, which holds its own);
+    ``depth`` the GOSUB PROG nesting it happened at (only 0 is resumable).
+    """
+
+    def __init__(self, area: int, block: int, line, loops: tuple = (), depth: int = 0):
+        super().__init__(area, block, line)
+        self.loops, self.depth = loops, depth
+
+
 class DirectJump(BaseException):
     """GOTO/THEN n typed in direct mode: continue the program at line n."""
 
@@ -247,6 +261,11 @@ class Machine:
         self.line_hooks: list[Callable] = []
         self._line_values: tuple[list, list] = ([], [])
         self.tracing = False  # TRON: lines run are shown as [n]
+        # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
+        # ``yaseer run`` stops at once): see _on_interrupt.
+        self.resumable_breaks = False
+        self._break_armed = None  # (compiled area, its real blocks) while a Ctrl-C waits to land
+        self._reading_input = False
         # CLS: called to clear the screen (the session clears a terminal); None: nothing to clear
         self.on_clear_screen: Callable[[], object] | None = None
 
@@ -295,13 +314,15 @@ class Machine:
             compiled = self._compile(area, self.programs.get(area, {}), entry_lines=extra)
         return compiled
 
-    def _compile(self, area, program: dict, direct: bool = False, entry_lines=()) -> CompiledArea:
+    def _compile(self, area, program: dict, direct: bool = False, entry_lines=(), dynamic_loops=()) -> CompiledArea:
         """Parse, compile and exec one area's program (line -> text); returns the CompiledArea.
 
         A program area (not a direct statement) is looked up first in the on-disk
         cache of compiled programs (:mod:`yaseer.basic.program_cache`) and stored
-        there after a compile (not the TRON variant, see ``set_trace``)."""
-        entry = None if direct or self.tracing else program_cache.key(area, program, entry_lines, self.dialect)
+        there after a compile (not the TRON variant, see ``set_trace``, nor one with
+        ``dynamic_loops``, see ``cont``)."""
+        plain = not (direct or self.tracing or dynamic_loops)
+        entry = program_cache.key(area, program, entry_lines, self.dialect) if plain else None
         cached = program_cache.load(entry) if entry else None
         if cached is not None:
             compiled, codes = cached
@@ -310,7 +331,7 @@ class Machine:
 
             lines = [_parse_cached(number, text, self.dialect) for number, text in sorted(program.items())]
             compiled = compile_area(lines, area if isinstance(area, int) else 0, direct=direct,
-                                    entry_lines=entry_lines, trace=self.tracing)
+                                    entry_lines=entry_lines, trace=self.tracing, dynamic_loops=dynamic_loops)
             codes = [None] * len(compiled.pieces)
         runtime_state = _AreaRuntime(self, area, compiled)
         namespace = self._namespace(area, runtime_state)
@@ -401,11 +422,13 @@ class Machine:
         for area, compiled in list(self.compiled.items()):
             extra = tuple(self._extra_entries) if area == 0 else ()
             lines = [_parse_cached(number, text, self.dialect) for number, text in sorted(self.programs.get(area, {}).items())]
-            variant = compile_area(lines, area, entry_lines=extra, trace=on)
+            variant = compile_area(lines, area, entry_lines=extra, trace=on, dynamic_loops=compiled.dynamic_loops)
             namespace = self.namespaces[area]
             for first_line, text in variant.pieces:
                 self._exec_piece(text, first_line, area, namespace)
-            compiled.blocks[:] = [namespace[f"_b{b}"] for b in range(variant.block_count)]
+            armed = self._break_armed
+            blocks = armed[1] if armed is not None and armed[0] is compiled else compiled.blocks
+            blocks[:] = [namespace[f"_b{b}"] for b in range(variant.block_count)]
 
     def trace_line(self, number: int) -> None:
         """TRON's ``[n]`` as line ``n`` starts (on the screen, like PRINT without a newline)."""
@@ -663,6 +686,8 @@ class Machine:
 
     def run(self, line: int | None = None) -> str:
         """RUN (from ``line``): returns "end" or "stop"; raises BasicError on an error."""
+        if self.compiled.get(0) is not None and self.compiled[0].dynamic_loops:
+            self._invalidate(0)  # the variant CONT made after a Ctrl-C: back to native loops
         compiled = self._compiled(0)
         for area in self.programs:
             self._compiled(area)
@@ -684,11 +709,18 @@ class Machine:
         return block
 
     def _on_interrupt(self, signum, frame) -> None:
-        """SIGINT while running: note the BASIC line and the block's variables, then break.
+        """SIGINT while running: arm a resumable break, or note the line and variables and break.
+
+        With ``resumable_breaks`` the first Ctrl-C lets the run go on to the next
+        point where CONT can resume it exactly (:meth:`_arm_break`); a second
+        Ctrl-C before it lands, or one while INPUT waits for a line, breaks at once.
 
         (A ``continue`` back-edge in Python 3.11 lets KeyboardInterrupt bypass the
         block's ``finally``, so the line and the locals are read from the frame here.)
         """
+        if self.resumable_breaks and self._break_armed is None and not self._reading_input:
+            if self._arm_break(frame):
+                return
         while frame is not None:
             if frame.f_globals.get("_M") is self and "_ln" in frame.f_locals:
                 self.line = frame.f_locals["_ln"]
@@ -701,16 +733,80 @@ class Machine:
             frame = frame.f_back
         raise KeyboardInterrupt
 
+    def _arm_break(self, frame) -> bool:
+        """Make the run stop at the next point CONT can resume from exactly; False if none.
+
+        Those points are: the start of any block of area 0 (every block function is
+        swapped for a stub that raises :class:`BreakPoint`, until the break lands),
+        and, inside the block running now, its compiled break points (the top of a
+        native loop's pass, the back-jump of a block looping to itself), reached
+        through a line trace on that frame alone.  Their lines hold nothing that
+        can be interrupted half-way, so no statement is ever run twice or skipped.
+        """
+        compiled = self.compiled.get(0)
+        if compiled is None or not compiled.blocks:
+            return False
+        self._break_armed = (compiled, list(compiled.blocks))
+        prelude = len(compiled.pieces) - compiled.block_count
+        compiled.blocks[:] = [self._break_stub(b, compiled.pieces[prelude + b][0])
+                              for b in range(compiled.block_count)]
+        namespace = self.namespaces.get(0)
+        while frame is not None:
+            if frame.f_globals is namespace and frame.f_code.co_name.startswith("_b"):
+                block = int(frame.f_code.co_name[2:])
+                points = compiled.break_points.get(block)
+                if points and sys.gettrace() is None:
+                    frame.f_trace = self._break_tracer(block, points)
+                    frame.f_trace_lines = True
+                    sys.settrace(_no_call_trace)  # line events reach f_trace only while tracing is on
+                break
+            frame = frame.f_back
+        return True
+
+    def _break_stub(self, block: int, line):
+        def stub():
+            raise BreakPoint(0, block, self.line if line is None else line, (), self.area_depth)
+        return stub
+
+    def _break_tracer(self, block: int, points: dict):
+        def trace(frame, event, arg):
+            if event == "line":
+                point = points.get(frame.f_lineno)
+                if point is not None:
+                    line, loops = point
+                    raise BreakPoint(0, block, line, _loop_states(frame.f_locals, loops), self.area_depth)
+            return trace
+        return trace
+
+    def _disarm_break(self) -> None:
+        """Put the real blocks back and stop the line trace (the break landed, or the run ended)."""
+        if self._break_armed is not None:
+            compiled, blocks = self._break_armed
+            compiled.blocks[:] = blocks
+            self._break_armed = None
+            if sys.gettrace() is _no_call_trace:
+                sys.settrace(None)
+
     def _execute(self, area: int, block: int) -> str:
         self.cont_point = None
-        with _interrupt_handler(self._on_interrupt):
-            return self._execute_loop(area, block)
+        try:
+            with _interrupt_handler(self._on_interrupt):
+                return self._execute_loop(area, block)
+        finally:
+            self._disarm_break()
 
     def _execute_loop(self, area: int, block: int) -> str:
         try:
             self._run_area(area, self._compiled(area), block)
         except ProgramEnd:
             return "end"
+        except BreakPoint as stop:
+            self._disarm_break()
+            if stop.area == 0 and stop.depth == 0:
+                self.cont_point = (0, stop.block, stop.loops)
+            self.area_depth = 0
+            self.line = stop.line
+            raise BasicError("Break", BREAK).at(stop.line) from None
         except ProgramStop as stop:
             if stop.area == 0 and self.area_depth == 0:
                 self.cont_point = (stop.area, stop.block)
@@ -723,11 +819,48 @@ class Machine:
         return "end"
 
     def cont(self) -> str:
-        """CONT after STOP."""
+        """CONT after STOP, or after a Ctrl-C that landed at a resumable point."""
         if self.cont_point is None:
             raise BasicError("Can't continue", CANT_CONTINUE)
-        area, block = self.cont_point
+        area, block, *loops = self.cont_point
+        if loops and loops[0]:
+            block = self._resume_loops(loops[0])
         return self._execute(area, block)
+
+    def _resume_loops(self, loops: tuple) -> int:
+        """Reopen native loops broken at the top of a pass; the block to go on at.
+
+        Area 0 is compiled again with those loops run through the FOR stack (every
+        block of the old compile keeps an equivalent: the stack's return blocks are
+        renumbered), their frames are pushed with the values they had, and the run
+        goes on at the innermost loop's body, exactly where the pass would have begun.
+        """
+        old, old_runtime = self._compiled(0), self.runtimes.get(0)
+        forced = tuple(sorted(set(old.dynamic_loops) | {loop[0] for loop in loops}))
+        new = self._compile(0, self.programs.get(0, {}), entry_lines=tuple(self._extra_entries),
+                            dynamic_loops=forced)
+        if old_runtime is not None:
+            self.runtimes[0].data_index = old_runtime.data_index
+        self._renumber_blocks(_block_mapping(old, new))
+        body = 0
+        for index, key, value, limit, step in loops:
+            body = new.index_blocks[index + 1]
+            if value is not None:
+                self.scalars[key] = value
+            self.stack.append(ForFrame(key, limit, step, body))
+        return body
+
+    def _renumber_blocks(self, mapping: dict) -> None:
+        """Area 0's block numbers held by the machine (GOSUB returns, FOR bodies, the error handler)."""
+        for k, item in enumerate(self.stack):
+            if type(item) is int:
+                self.stack[k] = mapping.get(item, item)
+            elif type(item) is ForFrame:
+                item.body = mapping.get(item.body, item.body)
+        for name in ("on_error", "error_point"):
+            point = getattr(self, name)
+            if point is not None and point[0] == 0:
+                setattr(self, name, (0, mapping.get(point[1], point[1])))
 
     def execute_direct(self, text: str) -> str:
         """Run statements typed without a line number against the same variables."""
@@ -843,7 +976,11 @@ class Machine:
             self.screen.write(text)
             self.screen.flush()
             stream = self.input_stream if self.input_stream is not None else sys.stdin
-            line = stream.readline()
+            self._reading_input = True  # a Ctrl-C now breaks at once
+            try:
+                line = stream.readline()
+            finally:
+                self._reading_input = False
             if not line:
                 raise BasicError("Input past end", INPUT_PAST_END)
             if self.input_stream is not None:
@@ -882,6 +1019,40 @@ class Machine:
                 stream.flush()
             except (OSError, ValueError):
                 pass
+
+
+def _no_call_trace(frame, event, arg):
+    """The thread's trace function while a break is armed: no other frame is traced."""
+    return None
+
+
+def _loop_states(local: dict, loops: tuple) -> tuple:
+    """``(FOR index, key, value, limit, step)`` of each native loop open in a block's frame.
+
+    ``loops`` are the compiler's descriptions (see ``CompiledArea.break_points``);
+    ``local`` the frame's locals at the top of a pass.
+    """
+    states = []
+    for index, key, n, mode, name in loops:
+        limit, step = local[f"_l{n}"], local[f"_s{n}"]
+        if mode == "count":
+            value = runtime.counted_value(local[f"_it{n}"], local[f"_v{n}"], step, local[f"_i{n}"])
+        else:
+            value = local[name] if name else None
+        states.append((index, key, value, limit, step))
+    return tuple(states)
+
+
+def _block_mapping(old: CompiledArea, new: CompiledArea) -> dict:
+    """Old block number -> new, for two compiles of one program that differ only in loops
+    made dynamic (which adds block entries and no other blocks)."""
+    old_entries, new_entries = len(old.index_blocks), len(new.index_blocks)
+    if old.block_count - old_entries != new.block_count - new_entries:
+        raise BasicError("Can't continue", CANT_CONTINUE)
+    mapping = {block: new.index_blocks[index] for index, block in old.index_blocks.items()}
+    for block in range(old_entries, old.block_count):
+        mapping[block] = block - old_entries + new_entries
+    return mapping
 
 
 @contextlib.contextmanager
