@@ -53,7 +53,7 @@ def make_figure(scene: Scene, look: Look):
     axes = figure.add_axes((0.08, 0.1, PANEL_LEFT - 0.1, top - 0.1))
     if look.title:  # 22 pt at 720 pixels high, smaller if a long title would not fit the width
         figure.text(0.5, 1.0 - 0.025, look.title, ha="center", va="top", weight="bold",
-                    fontsize=min(22 * s, 1.05 * width / max(len(look.title), 1)))
+                    fontsize=min(22 * s, 0.95 * width / max(len(look.title), 1)))
     draw_background(axes, scene, look)
     return figure, axes
 
@@ -110,7 +110,7 @@ def draw_moving(ax, scene: Scene, number: int, look: Look | str | None = None, a
         if position is not None:
             artists += ax.plot(*position, marker="o", markersize=9 * s, color=colour, zorder=6)
     outline = [patheffects.withStroke(linewidth=4 * s, foreground="white")]
-    lettered = _lettered(scene, frame)
+    lettered = lettered_joints(scene, frame)
     for (position, name), (dx, dy) in zip(lettered, _label_offsets(scene, [p for p, _ in lettered])):
         artists.append(ax.annotate(name, position, xytext=(dx * 16 * s, dy * 16 * s), textcoords="offset points",
                                    fontsize=19 * s, weight="bold", color="#1f3a93", zorder=7, ha="center",
@@ -127,7 +127,7 @@ def draw_frame(ax, scene: Scene, number: int, title: str = "") -> None:
     draw_moving(ax, scene, number, title)
 
 
-def _lettered(scene: Scene, frame: Frame) -> list[tuple[Point, str]]:
+def lettered_joints(scene: Scene, frame: Frame) -> list[tuple[Point, str]]:
     """Each lettered joint of ``frame`` once: (position, letter), with the letters of the first frame."""
     span = max(scene.bounds[1] - scene.bounds[0], scene.bounds[3] - scene.bounds[2])
     letters = scene.letters if scene.letters is not None else letter_joints(frame.snapshots, span)

@@ -25,11 +25,16 @@ LETTERS = "ABCDEFGHIJKLMNPQRSTUVWXYZ"  # no O: "Oo" would read as a pivot's suff
 
 @dataclass(frozen=True)
 class Joint:
-    """A named point of one call: ``role`` in the contract ("Ao", "A", "B", "Bo", "P1"...)."""
+    """A named point of one call: ``role`` in the contract ("Ao", "A", "B", "Bo", "P1"...).
+
+    ``partner``: for a fixed pivot, the role of the moving joint its link reaches
+    (the follower's other end), whose letter it takes with ``o`` when it is new.
+    """
 
     role: str
     position: Point
     fixed: bool
+    partner: str | None = None
 
 
 def joints(snapshot: Snapshot) -> list[Joint]:
@@ -39,9 +44,10 @@ def joints(snapshot: Snapshot) -> list[Joint]:
     if snapshot.area == 1:
         found += [Joint("A", bars[0].end, False), Joint("B", bars[1].end, False)]
     elif snapshot.area == 2:
-        found += [Joint("A", bars[0].end, False), Joint("B", bars[1].end, False), Joint("Bo", bars[2].end, True)]
+        found += [Joint("A", bars[0].end, False), Joint("B", bars[1].end, False),
+                  Joint("Bo", bars[2].end, True, partner="B")]
     elif snapshot.area == 3:
-        found += [Joint("A", bars[0].end, False), Joint("Bo", bars[1].start, True)]
+        found += [Joint("A", bars[0].end, False), Joint("Bo", bars[1].start, True, partner="A")]
     elif snapshot.area == 5:
         found += [Joint("tip", bars[0].end, False)]
     found += [Joint(f"P{k}", point.position, False) for k, point in enumerate(snapshot.points)
@@ -50,32 +56,37 @@ def joints(snapshot: Snapshot) -> list[Joint]:
 
 
 def letter_joints(snapshots: tuple[Snapshot, ...], scale: float) -> dict[tuple[int, str], str]:
-    """(call index, role) -> letter for the calls of one frame; points within 1e-9 ``scale`` share one."""
+    """(call index, role) -> letter for the calls of one frame; points within 1e-9 ``scale`` share one.
+
+    Within a call the moving joints and points are lettered first, then the
+    fixed pivots: a new pivot whose partner was lettered anew takes the
+    partner's letter and ``o`` (the output member CCoD of Example 3).
+    """
     tiny = 1e-9 * max(scale, 1e-300)
     named: list[tuple[Point, str]] = []
     letters: dict[tuple[int, str], str] = {}
     used: set[str] = set()
     for index, snapshot in enumerate(snapshots):
-        for joint in joints(snapshot):
+        for joint in sorted(joints(snapshot), key=lambda j: j.fixed and j.partner is not None):
             name = next((n for p, n in named if distance(p, joint.position) <= tiny), None)
             if name is None:
-                if joint.role.startswith("P") or joint.role == "tip":
-                    if snapshot.area == 5:
-                        continue  # a virtual link's tip is named by the joint it reaches, if any
-                    name = _next_letter(used, joint.fixed)
-                elif joint.role not in used:
-                    name = joint.role
-                else:
-                    name = _next_letter(used, joint.fixed)
+                if snapshot.area == 5:
+                    continue  # a virtual link's tip is named by the joint it reaches, if any
+                partner = letters.get((index, joint.partner or ""))
+                name = _new_name(joint, partner if partner != joint.partner else None, used)
                 used.add(name)
                 named.append((joint.position, name))
             letters[(index, joint.role)] = name
     return letters
 
 
-def _next_letter(used: set[str], fixed: bool) -> str:
+def _new_name(joint: Joint, partner: str | None, used: set[str]) -> str:
+    """A renamed partner's letter with ``o``, else the contract's name if free, else the next free letter."""
+    if partner is not None and len(partner) == 1 and partner + "o" not in used:
+        return partner + "o"
+    if not joint.role.startswith("P") and joint.role not in used:
+        return joint.role
     for letter in LETTERS:
-        name = letter + "o" if fixed else letter
         if letter not in used and letter + "o" not in used:
-            return name
+            return letter + "o" if joint.fixed else letter
     return "?"

@@ -1,0 +1,115 @@
+"""Animation frames for a projector: size, the paper's joint letters, units, named values, title, stills.
+
+References: the paper's names (Example 1's "piston D", Example 3's "output member CCoD" and
+"point D"), whose printed coordinates (the golden rows: Y(2) of piston D, X(7) of point D)
+must be where the letters sit; the golden screens for the values shown.
+"""
+
+import base64
+import io
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import yaseer
+from yaseer.animation import Look, build_scene, render
+from yaseer.animation.draw import Painter, lettered_joints, make_figure
+
+ROOT = Path(__file__).resolve().parents[1]
+LISTINGS = ROOT / "listings"
+
+
+def letters(result):
+    scene = build_scene(result.frames)
+    return scene, [dict((name, position) for position, name in lettered_joints(scene, frame))
+                   for frame in scene.frames]
+
+
+def test_example_1_letters_its_second_piston_d_where_the_listing_says_piston_d_is():
+    result = yaseer.run(LISTINGS / "example1.bas")
+    _, per_frame = letters(result)
+    assert set(per_frame[0]) == {"Ao", "A", "B", "C", "D"}
+    assert [frame["D"][1] for frame in per_frame] == pytest.approx(list(result.rows[:, 1]), rel=1e-9)
+    assert all(frame["Ao"] == (0.0, 0.0) for frame in per_frame)
+
+
+def test_example_3_letters_the_output_member_ccod_as_the_paper_does():
+    result = yaseer.run(LISTINGS / "example3.bas")
+    _, per_frame = letters(result)
+    assert {"C", "Co", "D"} <= set(per_frame[0])
+    assert [frame["D"][0] for frame in per_frame] == pytest.approx(list(result.rows[:, 4]), rel=1e-9)  # X(7)
+    assert len({frame["Co"] for frame in per_frame}) == 1  # a fixed pivot
+
+
+def test_a_frame_shows_title_unit_and_each_printed_value_under_its_name():
+    result = yaseer.run(LISTINGS / "example1.bas")
+    scene = build_scene(result.frames)
+    figure, ax = make_figure(scene, result.look())
+    from yaseer.animation import draw_moving
+
+    draw_moving(ax, scene, 0, result.look())
+    texts = [t.get_text() for t in figure.texts]
+    assert texts[0] == "Example 1: kinematics of piston D (paper Fig. 7)"
+    assert ax.get_xlabel() == "x (mm)" and ax.get_ylabel() == "y (mm)"
+    first = (ROOT / "tests" / "golden" / "example1.txt").read_text().split()[:4]  # 0.10 117.97 982.34 30137.30
+    assert "0.1\N{DEGREE SIGN}" in texts
+    for name, value in zip(result.rows.names[1:], first[1:]):
+        label = next(i for i, text in enumerate(texts) if text.replace("\n", " ") == name)
+        assert texts[label + 1] == value  # the value right under its name
+
+
+def test_a_listing_without_a_known_unit_or_paper_title_uses_its_first_rem():
+    result = yaseer.run(LISTINGS / "fortran_fourbar.bas")
+    look = result.look()
+    assert look.title.startswith("SEED 003: OKE, SHOGBAMOWO AND OKUNLOLA") and look.unit == ""
+    assert look.names == ("THET", "PHI", "BETA", "VELC", "VELB", "ACCC", "ACCB")
+
+
+def test_default_size_is_1280x720_and_a_still_is_the_players_frame_pixel_for_pixel(tmp_path):
+    from PIL import Image, ImageChops
+
+    result = yaseer.run(LISTINGS / "example4.bas")
+    still, page = tmp_path / "still.png", tmp_path / "film.html"
+    render(result.frames, still, frame_number=3, look=result.look())
+    render(result.frames, page, fps=12.5, look=result.look())
+    with Image.open(still) as image:
+        assert image.size == (1280, 720)
+        frames = re.findall(r'"data:image/png;base64,([^"]+)"', page.read_text())[1:]  # [0]: the <img> shown first
+        with Image.open(io.BytesIO(base64.b64decode(frames[3]))) as played:
+            assert ImageChops.difference(image.convert("RGB"), played.convert("RGB")).getbbox() is None
+        assert len(image.convert("RGB").getcolors(1 << 16)) > 20  # drawn, not blank
+    assert "setInterval(() => show((current + 1) % frames.length), 80)" in page.read_text()  # --fps 12.5
+
+
+def test_size_scales_the_frame(tmp_path):
+    from PIL import Image
+
+    result = yaseer.run(LISTINGS / "example2.bas")
+    image = Painter(build_scene(result.frames), result.look((1920, 1080))).image(0)
+    assert image.size == (1920, 1080)
+    with pytest.raises(Exception, match="frame size must be from 160x120"):
+        render(result.frames, tmp_path / "x.png", look=Look(size=(100, 50)))
+
+
+def run_cli(*args, cwd):
+    env = dict(os.environ, PYTHONPATH=str(ROOT))
+    return subprocess.run([sys.executable, "-m", "yaseer", "animate", *args], capture_output=True, text=True,
+                          cwd=cwd, env=env, timeout=120)
+
+
+def test_the_command_takes_size_and_refuses_a_bad_one(tmp_path):
+    from PIL import Image
+
+    done = run_cli(str(LISTINGS / "example5.bas"), "--out", "s.png", "--frame", "2", "--size", "800x450",
+                   cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    with Image.open(tmp_path / "s.png") as image:
+        assert image.size == (800, 450)
+    bad = run_cli(str(LISTINGS / "example5.bas"), "--out", "s.png", "--size", "wide", cwd=tmp_path)
+    assert bad.returncode == 2 and "WIDTHxHEIGHT" in bad.stderr and "Traceback" not in bad.stderr
+    small = run_cli(str(LISTINGS / "example5.bas"), "--out", "s.png", "--size", "20x20", cwd=tmp_path)
+    assert small.returncode == 1 and small.stderr.strip().endswith("not 20x20")
