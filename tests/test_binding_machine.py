@@ -117,3 +117,16 @@ def test_a_two_dimensional_output_array_is_a_basic_error(tmp_path, capsys):
 def test_overflowing_inputs_are_an_overflow_error(tmp_path, capsys, inputs):
     status, rows, err = run(tmp_path, capsys, f"10 {inputs}: GOSUB PROG 1\n")
     assert status == 1 and err == "Overflow (PROG 1) in 10"
+
+
+def test_an_overflow_in_the_first_library_call_is_one_line_without_numpy_warnings(tmp_path):
+    """A fresh process: numpy is imported by the first GOSUB PROG, whose warnings are silenced too."""
+    import subprocess
+    import sys
+
+    path = tmp_path / "listing.bas"
+    path.write_text("10 X(10) = 1E-300: V(18) = 1E300\n20 GOSUB PROG 5\n")
+    done = subprocess.run([sys.executable, "-m", "yaseer", "run", str(path)], capture_output=True, text=True,
+                          timeout=60)
+    assert done.returncode == 1
+    assert done.stderr.splitlines() == ["Overflow (PROG 5) in 20"]

@@ -51,3 +51,17 @@ def test_a_fixed_assembly_stops_at_the_change_point(tmp_path):
     assert "branch switch" not in done.stderr
     assert done.stderr.strip().splitlines()[-1] == "Mechanism locks: rates undefined at a toggle position (PROG 2) in 30"
     assert len(done.stdout.split()) == 12  # 0 .. 165 deg printed
+
+
+def test_a_failing_call_does_not_move_the_track_on(tmp_path):
+    """A call that fails after its kinematics (a bad Q(2), trapped by ON ERROR) writes nothing and
+    leaves the track as it was: the motion goes on on the branch it was on (crossed after 195 deg)."""
+    trapped = SEED004_LISTING.replace(
+        "10 DIM", "5 ON ERROR GOTO 100\n10 DIM").replace(
+        "50 NEXT QQ\n",
+        "45 IF QQ = 300 THEN T(12) = 0: Z(2) = 2: Q(2) = 7: GOSUB PROG 2\n"
+        "47 Z(2) = 0\n50 NEXT QQ\n60 END\n100 RESUME 47\n")
+    plain, failed = _run(tmp_path, SEED004_LISTING), _run(tmp_path, trapped)
+    assert plain.returncode == failed.returncode == 0, failed.stderr
+    assert failed.stdout == plain.stdout
+    assert failed.stderr == plain.stderr

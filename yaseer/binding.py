@@ -5,7 +5,7 @@
 its inputs from the machine's arrays and scalars (elements never set, or beyond
 an array's dimension, read as 0 like unset BASIC variables), calls
 :mod:`yaseer.linkages`, and writes exactly the outputs of
-``shared/spec/programs.md``: positions always, velocities and accelerations
+the contract (docs/contract.md): positions always, velocities and accelerations
 (0 for a static call), forces only when ``Z(n) = 2``.  All outputs are computed
 and checked (finite, inside the arrays' dimensions) before the first is
 written, so a failing call leaves the machine untouched.
@@ -81,6 +81,7 @@ class _Frame:
         self.area = area
         self._elements: dict[Element, float] = {}
         self._scalars: dict[str, float] = {}
+        self._after_commit: list[Callable[[], None]] = []
 
     def get(self, name: str, index: int) -> float:
         """Array element ``name(index)`` (0 when beyond the array's dimension)."""
@@ -108,8 +109,12 @@ class _Frame:
             self.put(x_element, vector.real)
             self.put(y_element, vector.imag)
 
+    def after_commit(self, action: Callable[[], None]) -> None:
+        """Run ``action`` once the outputs are written (not at all when the call fails)."""
+        self._after_commit.append(action)
+
     def commit(self) -> None:
-        """Check every output, then write them all."""
+        """Check every output, then write them all (and run the :meth:`after_commit` actions)."""
         isfinite = math.isfinite
         if not (all(map(isfinite, self._elements.values())) and all(map(isfinite, self._scalars.values()))):
             raise self.error("Overflow", OVERFLOW)
@@ -124,6 +129,8 @@ class _Frame:
             values[index] = value
         for name, value in self._scalars.items():
             self.machine.set_scalar(name, value)
+        for action in self._after_commit:
+            action()
 
     def error(self, message: str, code: int = ILLEGAL_FUNCTION_CALL) -> BasicError:
         return BasicError(f"{message} (PROG {self.area})", code)
@@ -337,7 +344,9 @@ _trackers: WeakKeyDictionary = WeakKeyDictionary()  # machine -> tracking.Branch
 def _tracked_fourbar(frame: _Frame):
     """Program 2 kinematics following the motion across change points and toggles
     (one tracker per machine, starting uncrossed); each branch switch is reported
-    on standard error as ``PROG 2: branch switch at crank angle ...``."""
+    on standard error as ``PROG 2: branch switch at crank angle ...``.  The track
+    moves on only when the call succeeds: a failing call (an error after the
+    kinematics, trapped by ON ERROR) leaves it, like every element, as it was."""
     from yaseer.linkages.tracking import BranchTracker, Geometry
 
     if isinstance(frame, _RecordingFrame):  # the tracker keeps state between calls: never recorded
@@ -347,10 +356,11 @@ def _tracked_fourbar(frame: _Frame):
     g = frame.get
     tracker = _trackers.get(frame.machine) or _trackers.setdefault(frame.machine, BranchTracker(_linkages().UNCROSSED))
     geometry = Geometry(g("L", 11), g("T", 11), g("L", 12), g("L", 13), g("L", 14))
-    kin, switch = tracker.step(geometry, g("T", 12), g("W", 5), g("A", 5),
+    kin, switch = tracker.step(geometry, g("T", 12), g("W", 5), g("A", 5), defer=True,
                                crank_length_rate=g("D", 2), crank_length_accel=g("E", 2))
+    frame.after_commit(tracker.accept)
     if switch is not None:
-        print(f"PROG 2: {switch.describe()}", file=sys.stderr)
+        frame.after_commit(lambda: print(f"PROG 2: {switch.describe()}", file=sys.stderr))
     return kin
 
 
