@@ -1,6 +1,6 @@
 """Al-Yaseer's basic linkages in the contract's conventions, as real bodies and joints.
 
-Independent references for Programs 1, 2 and 3 (shared/spec/programs.md): each
+Independent references for Programs 1, 2 and 3 (docs/contract.md): each
 linkage is built from bodies, pins and sliders and solved by
 :mod:`yaseer.reference.solver`; nothing here uses yaseer.linkages.  Each
 function takes crank angles (degrees; solved one by one by Newton from a rough

@@ -2,7 +2,7 @@
 
 Each mechanism of section 4 of the paper (seed 000; its figures are lost) is
 rebuilt from the dimensions of its calling listing and the contract
-(``shared/spec/programs.md``) as rigid bodies, pins, sliders and a crank drive,
+(docs/contract.md) as rigid bodies, pins, sliders and a crank drive,
 and solved by :mod:`yaseer.reference.solver` -- not through virtual links, not
 through yaseer.linkages.  docs/reference.md gives every body, joint and the
 listing line each dimension comes from.

@@ -3,7 +3,7 @@
 Each ``programN(values, thetas)`` takes the contract's inputs by name (``"L(1)"``,
 ``"M(3)"``, ``"Q(1)"``, ``"G"``, ...; missing ones are 0, as BASIC variables are), builds
 the basic linkage from bodies and joints with its masses, inertias, mass centres and
-known loads (shared/spec/programs.md), solves it with :mod:`yaseer.reference.solver`
+known loads (docs/contract.md), solves it with :mod:`yaseer.reference.solver`
 and returns the contract's outputs by name, one value per crank angle.  The unknown
 load that Q(n) selects is found with the Lagrange multipliers: the crank's drive only
 prescribes the motion, its torque is held at zero and the unknown takes its place
