@@ -569,3 +569,49 @@ def test_break_inside_a_long_native_loop_keeps_the_variable():
     machine, error = _interrupted_run("10 FOR I=1 TO 1E12: NEXT\n20 PRINT I")
     assert str(error) == "Break in 10"
     assert 1 < machine.scalar("I") < 1e12 and machine.scalar("I") == int(machine.scalar("I"))
+
+
+# ---------------------------------------------------------------- GW-BASIC's screen width
+# Rows as PC-BASIC 2.0.8 shows them (its logical lines cut into 80-column rows):
+#   PRINT 70 A's;"BCDEFGHIJK"   -> fits exactly: the full row is followed by an empty one
+#   PRINT 70 A's;"BCDEFGHIJKL"  -> the string does not fit: it starts the next row
+#   PRINT 75 A's;12345          -> the number (" 12345 ") starts the next row
+#   PRINT 56 A's,"B"            -> from the last zone (column 57) the comma starts a new row
+
+
+def gw_text(program: str) -> str:
+    return run_text(program, dialect="gw")
+
+
+def test_gw_item_that_does_not_fit_starts_a_new_row():
+    a70 = '"' + "A" * 70 + '"'
+    assert gw_text(f'10 PRINT {a70};"BCDEFGHIJK"') == "A" * 70 + "BCDEFGHIJK\n\n"
+    assert gw_text(f'10 PRINT {a70};"BCDEFGHIJKL"') == "A" * 70 + "\nBCDEFGHIJKL\n"
+    assert gw_text('10 PRINT "' + "A" * 75 + '";12345') == "A" * 75 + "\n 12345 \n"
+
+
+def test_gw_long_string_wraps_and_comma_at_the_last_zone_starts_a_row():
+    assert gw_text('10 PRINT "' + "A" * 100 + '"') == "A" * 80 + "\n" + "A" * 20 + "\n"
+    assert gw_text('10 PRINT "' + "A" * 56 + '","B"') == "A" * 56 + "\nB\n"
+    assert gw_text("10 PRINT 1,2,3,4,5,6") == "".join(f" {k}            " for k in range(1, 5)) + " 5 \n 6 \n"
+
+
+def test_gw_tab_and_spc_count_modulo_the_width():
+    assert gw_text('10 PRINT TAB(90);"B": PRINT "A";SPC(85);"B"') == " " * 9 + "B\nA     B\n"
+
+
+def test_width_40_and_bad_widths():
+    assert gw_text('10 WIDTH 40: PRINT 1,2,3,4') == " 1             2 \n 3             4 \n"
+    assert error_of("10 WIDTH 50", dialect="gw") == "Illegal function call in 10"
+
+
+def test_gw_number_before_comma_drops_its_blank_at_a_zone_end():
+    """GW-BASIC's source (GIO86.ASM, MODCOM): a number a comma follows that ends one
+    column before a zone loses its trailing blank; PC-BASIC 2.0.8 keeps it and prints
+    "ABCD 12345678" + 15 blanks + "5"."""
+    assert gw_text('10 PRINT "ABCD";12345678,5') == "ABCD 12345678 " + " 5 \n"
+    assert run_text('10 PRINT "ABCD";12345678,5') == "ABCD 12345678" + " " * 15 + " 5 \n"
+
+
+def test_casio_never_wraps():
+    assert run_text('10 PRINT "' + "A" * 100 + '";12345') == "A" * 100 + " 12345 \n"

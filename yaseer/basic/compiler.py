@@ -172,7 +172,7 @@ def _print_chunks(parts: list) -> list:
     chunks, current = [], []
     for part in parts:
         current.append(part)
-        if part != "_COMMA" and not part.startswith(("_Tab(", "_Spc(")):
+        if part not in ("_COMMA", "_NUMCOMMA") and not part.startswith(("_Tab(", "_Spc(")):
             chunks.append(current)
             current = []
     if current or not chunks:
@@ -425,7 +425,7 @@ class AreaCompiler:
     def print_items(self, items, scope) -> tuple[list, bool]:
         """The Python parts of PRINT items (values, _COMMA, _Tab, _Spc) and whether a newline ends it."""
         parts = []
-        for item in items:
+        for k, item in enumerate(items):
             if item == ",":
                 parts.append("_COMMA")
             elif item == ";":
@@ -435,7 +435,10 @@ class AreaCompiler:
             elif isinstance(item, ast.Spc):
                 parts.append(f"_Spc({self.numeric(item.count, scope)})")
             else:
-                parts.append(self.expr(item, scope)[0])
+                code, kind = self.expr(item, scope)
+                if kind != "s" and items[k + 1:k + 2] == [","]:
+                    parts.append("_NUMCOMMA")  # a number a comma follows (see Machine._blank_before_comma)
+                parts.append(code)
         # a PRINT ending in a separator, TAB(n) or SPC(n) keeps the line open
         newline = not items or not (items[-1] in (",", ";") or isinstance(items[-1], (ast.Tab, ast.Spc)))
         return parts, newline
@@ -454,7 +457,7 @@ class AreaCompiler:
                 self.emit(f"_pr({device}, {values}, {newline and last}, {last})")
             return
         fmt = self.string(stmt.using, scope)
-        parts = [p for p in parts if p != "_COMMA" and not p.startswith(("_Tab(", "_Spc("))]
+        parts = [p for p in parts if p not in ("_COMMA", "_NUMCOMMA") and not p.startswith(("_Tab(", "_Spc("))]
         if safe:
             values = "(" + "".join(p + ", " for p in parts) + ")"
             self.emit(f"_pru({device}, {fmt}, {values}, {newline})")
@@ -545,6 +548,9 @@ class AreaCompiler:
 
     def stmt_Cls(self, stmt, scope):
         self.emit("_M.clear_screen()")
+
+    def stmt_Width(self, stmt, scope):
+        self.emit(f"_M.set_width({self.numeric(stmt.columns, scope)})")
 
     def stmt_Dim(self, stmt, scope):
         for name, sizes in stmt.arrays:

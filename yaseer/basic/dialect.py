@@ -61,6 +61,10 @@ class Dialect:
         (``None``: never wrap, the Casio behaviour as yaseer runs it; 80 for
         GW-BASIC, changed with ``WIDTH n``).
         ``zone``: columns per ``,`` print zone (14 in both).
+        ``comma_trims_number``: True drops the trailing blank of a number a
+        ``,`` follows when the number ends one column before a zone (GW-BASIC's
+        source, GIO86.ASM ``MODCOM``), so the comma moves one column instead of
+        a whole zone.
 
         ``random``: the class of RND's generator (yaseer/basic/randomness.py):
         ``RepeatableRandom`` (Python's, seed 0 at RUN) or ``GwRandom``
@@ -107,6 +111,7 @@ class Dialect:
     program_areas: bool
     random: type = RepeatableRandom
     errors_when_reached: bool = False
+    comma_trims_number: bool = False
 
     def implicit_size(self, name: str, ndim: int) -> int:
         """The largest subscript of array ``name`` with ``ndim`` dimensions used without DIM."""
@@ -127,7 +132,7 @@ GW = Dialect(
     name="gw", keyword_first=False, pi_keyword=False, typed_numbers=True, print_digits=7,
     width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
     implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,
-    errors_when_reached=True,
+    errors_when_reached=True, comma_trims_number=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -35,6 +35,7 @@ from yaseer.basic.errors import (
     UNDEFINED_PROGRAM_AREA, UNDEFINED_USER_FUNCTION,
 )
 from yaseer.basic.scanner import split_lines
+from yaseer.basic.screen import SCREEN_WIDTHS, OutputStream
 
 
 # Resource limits (each exceeded limit is "Out of memory in N").
@@ -44,7 +45,6 @@ MAX_TOTAL_ELEMENTS = 8_000_000  # all arrays together (about 64 MB)
 INPUT_PAST_END = 62
 INTERNAL_ERROR = 51
 
-PRINT_ZONE = 14  # columns per comma zone (MS-BASIC)
 
 
 class ProgramEnd(BaseException):
@@ -110,29 +110,9 @@ class Spc:
 
 
 COMMA = object()
+NUMBER_THEN_COMMA = object()  # marks a PRINT number a comma follows (GW's blank rule)
 
 END = ProgramEnd()
-
-
-class OutputStream:
-    """A text stream that knows its column (for TAB and the comma zones)."""
-
-    def __init__(self, stream: TextIO):
-        self.stream = stream
-        self.column = 0
-
-    def write(self, text: str) -> None:
-        """Write ``text``; a carriage return (``CHR$(13)``) ends the line as on the screen."""
-        if not text:
-            return
-        if "\r" in text:
-            text = text.replace("\r", "\n")
-        self.stream.write(text)
-        newline = text.rfind("\n")
-        self.column = len(text) - newline - 1 if newline >= 0 else self.column + len(text)
-
-    def flush(self) -> None:
-        self.stream.flush()
 
 
 def to_basic_error(exc: BaseException) -> BasicError:
@@ -219,7 +199,7 @@ class Machine:
         # The dialect (scanner rules, number model, print rules, error policy, start-up
         # state: see dialect.py); ``angle`` overrides its start-up unit ("deg"/"rad").
         self.dialect = dialects.get_dialect(dialect)
-        self.screen = OutputStream(screen if screen is not None else sys.stdout)
+        self.screen = OutputStream(screen if screen is not None else sys.stdout, self.dialect.width)
         self.printer = OutputStream(printer if printer is not None else self.screen.stream)
         if printer is None:
             self.printer = self.screen
@@ -379,7 +359,7 @@ class Machine:
                              "BaseException": BaseException},
             "_M": self, "_S": self.scalars, "_A": self.arrays, "_arr": self.array_nd, "_ix": runtime.subscript,
             "_ovf": runtime.overflow, "_err": BasicError, "_END": END, "_DirectJump": DirectJump,
-            "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_Tab": Tab, "_Spc": Spc,
+            "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
             "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,
             "_oom": self._out_of_memory, "_call": self.call_area,
             "_on": self.on_index, "_for": self.for_push, "_next": self.next_frame,
@@ -439,6 +419,14 @@ class Machine:
         if self.on_clear_screen is not None:
             self.on_clear_screen()
         self.screen.column = 0
+
+    def set_width(self, columns) -> None:
+        """WIDTH n: the screen's width, 40 or 80 columns as GW-BASIC's text screen has
+        (any other n is Illegal function call); PRINT wraps there from now on."""
+        n = runtime.cint(columns)
+        if n not in SCREEN_WIDTHS:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self.screen.width = n
 
     def set_angle(self, mode: str) -> None:
         """DEG or RAD: the unit SIN, COS, TAN take and ATN returns."""
@@ -909,6 +897,7 @@ class Machine:
                 self._csv_row(stream, self.pending_row)
                 self.pending_row = []
             return
+        comma_follows = False
         for item in items:
             kind = type(item)
             if kind is not float and kind is not str and isinstance(item, (int, float)):
@@ -916,26 +905,39 @@ class Machine:
             if kind is float:
                 if item - item:
                     runtime.overflow()
-                stream.write(formatting.number_to_text(item))
+                text = formatting.number_to_text(item)
+                if comma_follows:
+                    text = self._blank_before_comma(stream, text)
+                    comma_follows = False
+                stream.item(text)
             elif kind is str:
-                stream.write(item)
+                stream.item(item)
             elif item is COMMA:
-                stream.write(" " * (PRINT_ZONE - stream.column % PRINT_ZONE))
+                stream.comma(self.dialect.zone)
+            elif item is NUMBER_THEN_COMMA:
+                comma_follows = self.dialect.comma_trims_number
             elif kind is Tab:
                 column = runtime.cint(item.column)
-                target = max(column, 1) - 1  # TAB(0), TAB(-5): column 1
-                if column > 255:
+                if column > 255 and stream.width is None:
                     raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-                if stream.column > target:
-                    stream.write("\n")
-                stream.write(" " * (target - stream.column))
+                stream.tab(column)
             elif kind is Spc:
                 count = runtime.cint(item.count)
-                if count < 0 or count > 255:
+                if (count < 0 or count > 255) and stream.width is None:
                     raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-                stream.write(" " * count)
+                stream.spc(count)
         if newline:
             stream.write("\n")
+
+    def _blank_before_comma(self, stream: OutputStream, text: str) -> str:
+        """A number a comma follows loses its trailing blank when it would end just
+        before a zone (so the comma moves one column, not a whole zone): GW-BASIC's
+        PRINT code, GIO86.ASM ``MODCOM``; PC-BASIC 2.0.8 keeps the blank."""
+        zone, width = self.dialect.zone, stream.width
+        end = stream.column + len(text) - 1  # the column after the number without its blank
+        if width is not None and width >= zone and end >= zone * (width // zone - 1):
+            return text
+        return text[:-1] if (end + 1) % zone == 0 else text
 
     def print_using(self, device: int, fmt: str, values: tuple, newline: bool) -> None:
         """PRINT USING fmt; values (the format rules live in ``formatting.using``)."""
@@ -1011,7 +1013,7 @@ class Machine:
     def end_line(self) -> None:
         """Finish a partly printed screen line (before an error message, as MS-BASIC does)."""
         if not self.csv and self.screen.column:
-            self.screen.write("\n")
+            self.screen.new_row()
 
     def flush(self) -> None:
         for stream in self.streams:

@@ -256,6 +256,9 @@ class _ToAst(Transformer):
     def cls_stmt(self, c):
         return ast.Cls()
 
+    def width_stmt(self, c):
+        return ast.Width(c[1])
+
     # -- expressions
     def binop(self, c):
         left, op, right = c

@@ -24,7 +24,7 @@ STATEMENT_KEYWORDS = (
     "LET", "PRINT", "LPRINT", "USING", "FOR", "TO", "STEP", "NEXT", "GOTO", "GOSUB",
     "PROG", "RETURN", "IF", "THEN", "ELSE", "ON", "END", "STOP", "DIM", "CLEAR",
     "READ", "RESTORE", "INPUT", "DEF", "FN", "ERROR", "RESUME", "RANDOMIZE", "DEG",
-    "RAD", "AND", "OR", "NOT", "MOD", "TAB", "SPC", "TRON", "TROFF", "CLS",
+    "RAD", "AND", "OR", "NOT", "MOD", "TAB", "SPC", "TRON", "TROFF", "CLS", "WIDTH",
 )
 # Functions of one argument (parentheses optional: ``COS T``).
 UNARY_FUNCTIONS = (

@@ -295,6 +295,12 @@ class Cls:
 
 
 @_node
+class Width:
+    """``WIDTH n``: the screen's width in columns (PRINT wraps there)."""
+    columns: object
+
+
+@_node
 class If:
     condition: object
     then: object  # int line number or list of statements
