@@ -882,7 +882,7 @@ class Machine:
         stream = self.streams[device]
         if self.line_hooks:
             self._note_values(device, [_printed_value(v) for v in items if not isinstance(v, (Tab, Spc))
-                                       and v is not COMMA], newline)
+                                       and v is not COMMA and v is not NUMBER_THEN_COMMA], newline)
         if self.csv:
             for v in items:
                 if type(v) is not float and type(v) is not str:
