@@ -36,6 +36,7 @@ pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASI
 
 CORPUS = Path(__file__).parent / "corpus"
 CORPUS_CASES = sorted(CORPUS.glob("*.bas"))
+GW_CORPUS_CASES = sorted((CORPUS / "gw").glob("*.bas"))  # run with --dialect gw (GW-BASIC's own rules)
 
 
 def program_count() -> int:
@@ -188,17 +189,23 @@ def test_corpus_program_matches_recorded_pcbasic_output(case):
     assert run_yaseer(case.read_text()) == expected
 
 
+@pytest.mark.parametrize("case", GW_CORPUS_CASES, ids=[case.stem for case in GW_CORPUS_CASES])
+def test_gw_corpus_program_matches_recorded_pcbasic_output(case):
+    expected = case.with_suffix(".expected").read_text()
+    assert run_yaseer(case.read_text(), angle=None, dialect="gw") == expected
+
+
 def test_corpus_expectations_are_pcbasic_output(pc):
     """The recorded outputs are really PC-BASIC's (not edited by hand)."""
-    assert CORPUS_CASES, "the corpus is empty"
-    for case in CORPUS_CASES:
+    assert CORPUS_CASES and GW_CORPUS_CASES, "the corpus is empty"
+    for case in CORPUS_CASES + GW_CORPUS_CASES:
         assert pc.program(case.read_text()) == case.with_suffix(".expected").read_text(), case.name
 
 
 def record() -> None:
     """Write NAME.expected for every corpus program that lacks one, from PC-BASIC."""
     session = PcBasic()
-    for case in CORPUS_CASES:
+    for case in CORPUS_CASES + GW_CORPUS_CASES:
         target = case.with_suffix(".expected")
         if not target.exists():
             target.write_text(session.program(case.read_text()))

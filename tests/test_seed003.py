@@ -301,3 +301,15 @@ def test_printed_velb_sign_is_wrong_in_every_upper_row_and_right_in_every_lower_
     for k, (printed, ref, _) in enumerate(_rows_with_reference()):
         same_sign = printed["velb"] * ref["velb"] > 0
         assert same_sign == (k % 2 == 1)
+
+
+def test_printed_formulas_stop_with_the_untrapped_error_instead_of_losing_rows():
+    """With the formulas as printed, a position that cannot be assembled gives NaN (Overflow),
+    which the listing's handler (ERR = 5 only) does not trap: its ON ERROR GOTO 0 stops the run
+    with that error and status 1, after the rows up to 90 degrees (GW-BASIC's rule, issue 12)."""
+    done = subprocess.run([sys.executable, "-m", "yaseer", "run", str(LISTING), "--method", "2=half-angle-printed"],
+                          capture_output=True, text=True)
+    assert done.returncode == 1
+    assert done.stderr.strip().splitlines()[-1] == "Overflow (PROG 2) in 170"
+    thetas = [line.split()[0] for line in done.stdout.splitlines()[1:] if len(line.split()) == 7]
+    assert thetas == ["0.00", "30.00", "60.00", "90.00"]

@@ -12,10 +12,12 @@ from yaseer.basic import syntax_tree as ast
 from yaseer.basic.errors import BasicError
 
 def flatten(lines: list) -> list:
-    """[(line number, statement)] in program order; a line with no statement gets a Rem."""
+    """[(line number, statement)] in program order; a line with no statement gets a Rem.
+
+    A statement that does not parse is its ``BasicError`` (see ``Line.error``)."""
     flat = []
     for line in lines:
-        if line.error is not None:
+        if line.error is not None and not line.statements:
             flat.append((line.number, line.error))
             continue
         statements = line.statements or [ast.Rem()]
@@ -56,6 +58,19 @@ def walk_statements(stmt):
                     yield from walk_statements(s)
 
 
+def data_statements(stmt):
+    """The DATA statements of ``stmt`` that READ sees: GW-BASIC looks for DATA at the
+    start of a statement after a colon, so a DATA right after THEN or ELSE is not one."""
+    if isinstance(stmt, ast.Data):
+        yield stmt
+    elif isinstance(stmt, ast.If):
+        for branch in (stmt.then, stmt.otherwise, stmt.unreachable):
+            if isinstance(branch, list):
+                for k, s in enumerate(branch):
+                    if not (k == 0 and branch is not stmt.unreachable and isinstance(s, ast.Data)):
+                        yield from data_statements(s)
+
+
 def nodes(value):
     """Every syntax-tree node in ``value`` (a node, list or tuple), depth first."""
     stack = [value]
@@ -81,6 +96,7 @@ def splits(stmt) -> bool:
 _NATIVE_BODY = (
     ast.Let, ast.Print, ast.GosubProg, ast.Rem, ast.Data, ast.Read, ast.Dim, ast.Angle,
     ast.Randomize, ast.DefFn, ast.Input, ast.Clear, ast.Restore, ast.End, ast.OnError, ast.Cls,
+    ast.Error,
 )
 
 
@@ -189,10 +205,10 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
                 native[f] = j
     entries = {0, n} | targets
     for i, stmt in enumerate(statements):
+        if fine:
+            entries.add(i)  # a line that does not parse too: RESUME NEXT goes on after it
         if isinstance(stmt, BasicError):
             continue
-        if fine:
-            entries.add(i)
         if isinstance(stmt, ast.For) and i not in native:
             entries.add(i + 1)
             if i in for_next:

@@ -28,7 +28,7 @@ while a program runs; the plain variant carries no cost for tracing.
 from __future__ import annotations
 
 from yaseer.basic import syntax_tree as ast
-from yaseer.basic.blocks import flatten, nodes, plan, splits, walk_statements
+from yaseer.basic.blocks import data_statements, flatten, nodes, plan, splits, walk_statements
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # noqa: F401  (re-exported)
 from yaseer.basic.errors import (
     BasicError, FOR_WITHOUT_NEXT, OUT_OF_MEMORY, SYNTAX_ERROR, TYPE_MISMATCH, UNDEFINED_LINE,
@@ -523,7 +523,7 @@ class AreaCompiler:
 
     def stmt_OnError(self, stmt, scope):
         if stmt.target == 0:
-            self.emit("_M.on_error = None")
+            self.emit("_error_off()")
             return
         block = self.block_of_line(stmt.target)
         if block is None:
@@ -600,6 +600,9 @@ class AreaCompiler:
             self.emit(f"return _resume_at({block})")
         else:
             self.emit(f"return _resume({stmt.mode == 'next'})")
+
+    def stmt_Error(self, stmt, scope):
+        self.emit(f"_error({self.numeric(stmt.code, scope)})")
 
     def stmt_Randomize(self, stmt, scope):
         seed = "None" if stmt.seed is None else self.numeric(stmt.seed, scope)
@@ -895,10 +898,9 @@ class AreaCompiler:
     def compile(self) -> CompiledArea:
         """Generate every block of the area (DATA and DEF FN collected first)."""
         for i, (number, stmt) in enumerate(self.flat):
-            for s in ([] if isinstance(stmt, BasicError) else walk_statements(stmt)):
-                if isinstance(s, ast.Data):
-                    self.data_lines.setdefault(number, len(self.data))
-                    self.data.extend((item, number) for item in split_data(s.text))
+            for s in ([] if isinstance(stmt, BasicError) else data_statements(stmt)):
+                self.data_lines.setdefault(number, len(self.data))
+                self.data.extend((item, number) for item in split_data(s.text))
         for _, stmt in self.flat:
             for s in ([] if isinstance(stmt, BasicError) else walk_statements(stmt)):
                 if isinstance(s, ast.DefFn):

@@ -33,10 +33,44 @@ NO_RESUME = 19
 RESUME_WITHOUT_ERROR = 20
 MISSING_OPERAND = 22
 FOR_WITHOUT_NEXT = 26
+WHILE_WITHOUT_WEND = 29
+WEND_WITHOUT_WHILE = 30
+BAD_FILE_NUMBER = 52
 FILE_NOT_FOUND = 53
+BAD_FILE_MODE = 54
+FILE_ALREADY_OPEN = 55
 DEVICE_IO_ERROR = 57
+FILE_ALREADY_EXISTS = 58
+INPUT_PAST_END = 62
+BAD_FILE_NAME = 64
+PATH_FILE_ACCESS_ERROR = 75
 UNDEFINED_PROGRAM_AREA = 252  # yaseer's own: GOSUB PROG n with nothing in area n
 BREAK = 253  # yaseer's own: Ctrl-C (not trappable)
+
+
+# GW-BASIC's message for each error code (checked against PC-BASIC 2.0.8's ERROR n);
+# a code in 1..255 that is not listed is "Unprintable error".
+MESSAGES = {
+    1: "NEXT without FOR", 2: "Syntax error", 3: "RETURN without GOSUB", 4: "Out of DATA",
+    5: "Illegal function call", 6: "Overflow", 7: "Out of memory", 8: "Undefined line number",
+    9: "Subscript out of range", 10: "Duplicate Definition", 11: "Division by zero",
+    12: "Illegal direct", 13: "Type mismatch", 14: "Out of string space", 15: "String too long",
+    16: "String formula too complex", 17: "Can't continue", 18: "Undefined user function",
+    19: "No RESUME", 20: "RESUME without error", 22: "Missing operand", 23: "Line buffer overflow",
+    24: "Device Timeout", 25: "Device Fault", 26: "FOR without NEXT", 27: "Out of paper",
+    29: "WHILE without WEND", 30: "WEND without WHILE", 50: "FIELD overflow", 51: "Internal error",
+    52: "Bad file number", 53: "File not found", 54: "Bad file mode", 55: "File already open",
+    57: "Device I/O error", 58: "File already exists", 61: "Disk full", 62: "Input past end",
+    63: "Bad record number", 64: "Bad file name", 66: "Direct statement in file",
+    67: "Too many files", 68: "Device Unavailable", 69: "Communication buffer overflow",
+    70: "Permission Denied", 71: "Disk not Ready", 72: "Disk media error", 73: "Advanced Feature",
+    74: "Rename across disks", 75: "Path/File access error", 76: "Path not found", 77: "Deadlock",
+}
+
+
+def error_message(code: int) -> str:
+    """The message GW-BASIC prints for error ``code`` (1..255)."""
+    return MESSAGES.get(code, "Unprintable error")
 
 
 class BasicError(Exception):
@@ -46,12 +80,19 @@ class BasicError(Exception):
     machine has placed it); ``area`` is the program area (0 is the listing).
     """
 
+    trappable = True  # ON ERROR GOTO may catch it (not RESUME without error, not Break)
+
     def __init__(self, message: str, code: int, line: int | None = None, area: int = 0):
         super().__init__(message)
         self.message = message
         self.code = code
         self.line = line
         self.area = area
+
+    @classmethod
+    def of_code(cls, code: int) -> "BasicError":
+        """The error GW-BASIC raises for code ``code`` (``ERROR n``)."""
+        return cls(error_message(code), code)
 
     def at(self, line: int | None, area: int = 0) -> "BasicError":
         """Place the error at ``line`` of ``area`` unless it is placed already."""

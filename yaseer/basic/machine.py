@@ -177,10 +177,18 @@ class _AreaRuntime:
         return value
 
     def read_string(self) -> str:
-        text, _ = self.read_item()
-        if len(text) >= 2 and text[0] == '"':
-            return text[1:-1] if text.endswith('"') else text[1:]
-        return text
+        """The next DATA item as a string: a quoted item is the text between its quotes
+        (an unclosed quote runs to the end); anything after the closing quote is a
+        Syntax error in the DATA line (GW-BASIC)."""
+        text, line = self.read_item()
+        if not text.startswith('"'):
+            return text
+        end = text.find('"', 1)
+        if end < 0:
+            return text[1:]
+        if text[end + 1:].strip():
+            raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number)
+        return text[1:end]
 
     def restore(self, line) -> None:
         if line is None:
@@ -221,6 +229,7 @@ class Machine:
         self.line = None
         self.on_error = None
         self.in_handler = False
+        self.pending_error = None  # the error a handler is running for
         self.err = 0.0
         self.erl = 0.0
         self.error_point = None
@@ -367,6 +376,7 @@ class Machine:
             "_dim": self.dim, "_clear": self.clear, "_read_n": rt.read_number,
             "_read_s": rt.read_string, "_restore": rt.restore, "_input": self.input_values,
             "_fn": self.user_function, "_resume": self.resume, "_resume_at": self.resume_at,
+            "_error_off": self.error_trapping_off, "_error": self.raise_error,
             "_randomize": self.randomize, "_rnd": self.rnd,
             "_sqrt": math.sqrt, "_floor": runtime.floor, "_fix": runtime.fix, "_sgn": runtime.sign,
             "_exp": math.exp, "_log": math.log, "_len": lambda s: float(len(s)),
@@ -610,7 +620,7 @@ class Machine:
     def resume(self, next_statement: bool) -> int:
         """RESUME / RESUME NEXT: the block of the failed statement, or of the one after it."""
         if not self.in_handler:
-            raise BasicError("RESUME without error", RESUME_WITHOUT_ERROR)
+            raise _resume_without_error()
         area, block = self.error_point
         self.in_handler = False
         self.err = 0.0
@@ -621,14 +631,28 @@ class Machine:
     def resume_at(self, block: int) -> int:
         """RESUME n: leave the error handler and go to ``block``."""
         if not self.in_handler:
-            raise BasicError("RESUME without error", RESUME_WITHOUT_ERROR)
+            raise _resume_without_error()
         self.in_handler = False
         self.err = 0.0
         return block
 
+    def error_trapping_off(self) -> None:
+        """ON ERROR GOTO 0: no more trapping; inside a handler the pending error stops the run."""
+        self.on_error = None
+        if self.in_handler:
+            raise self.pending_error
+
+    @staticmethod
+    def raise_error(code: float) -> None:
+        """ERROR n: raise error n (1..255; anything else is Illegal function call)."""
+        n = runtime.cint(code)
+        if not 1 <= n <= 255:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        raise BasicError.of_code(n)
+
     def _trap(self, err: BasicError, area: int, block: int) -> int | None:
         """The handler block for ``err`` if ON ERROR GOTO of this area catches it."""
-        if self.on_error is None or self.in_handler or err.code == BREAK:
+        if self.on_error is None or self.in_handler or err.code == BREAK or not err.trappable:
             return None
         handler_area, handler_block = self.on_error
         if handler_area != area:
@@ -637,6 +661,7 @@ class Machine:
         self.erl = float(err.line or 0)
         self.pending_row = []
         self.in_handler = True
+        self.pending_error = err
         self.error_point = (area, block)
         return handler_block
 
@@ -1076,6 +1101,13 @@ def _interrupt_handler(handler):
 def _printed_value(value):
     """A printed item as a line hook sees it: str stays, any number becomes a float."""
     return value if type(value) is str else float(value)
+
+
+def _resume_without_error() -> BasicError:
+    """RESUME outside an error handler: it stops the run even under ON ERROR GOTO (GW-BASIC)."""
+    err = BasicError("RESUME without error", RESUME_WITHOUT_ERROR)
+    err.trappable = False
+    return err
 
 
 def _as_number(value):

@@ -244,6 +244,9 @@ class _ToAst(Transformer):
         target = _line_number(c[1])
         return ast.Resume("retry") if target == 0 else ast.Resume("line", target)
 
+    def error_stmt(self, c):
+        return ast.Error(c[1])
+
     def randomize_stmt(self, c):
         return ast.Randomize(c[1] if len(c) > 1 else None)
 
@@ -337,20 +340,46 @@ def _grammar_error(exc, dialect: Dialect) -> BasicError:
     return BasicError("Syntax error", SYNTAX_ERROR)
 
 
-def _statements_before_error(tokens: list) -> list:
-    """The statements of the longest run of whole statements at the start of a bad line.
+def _statements_before_error(tokens: list) -> tuple[list, int]:
+    """The statements of the longest run of whole statements at the start of a bad line,
+    and the index of the token where the bad statement starts.
 
     GW-BASIC runs a line statement by statement and finds a bad token only when it
     gets there, so the statements before it run first (``10 PRINT 50: X`` prints 50).
     """
     colons = [k for k, t in enumerate(tokens) if t.type == "_COLON"]
     best: list = []
+    bad_start = 0
     for k in colons:
         try:
             best = _parser().parse(tokens[:k])
         except (BasicError, UnexpectedInput, LarkError):
             break
-    return best
+        bad_start = k + 1
+    return best, bad_start
+
+
+def _statements_after_error(tokens: list, bad_start: int, dialect: Dialect) -> list:
+    """The statements after the bad one (from the colon that ends it), each bad one
+    again its error: ``RESUME NEXT`` goes on with them (GW-BASIC).  None follow a bad
+    statement that holds an IF (the rest of the line is its branch)."""
+    for k in range(bad_start, len(tokens)):
+        kind = tokens[k].type
+        if kind == "IF":
+            return []
+        if kind == "_COLON":
+            rest = tokens[k + 1:]
+            if not rest:
+                return []
+            try:
+                return _parser().parse(rest)
+            except (UnexpectedInput, LarkError) as exc:
+                inner = getattr(exc, "orig_exc", None)
+                err = inner if isinstance(inner, BasicError) else _grammar_error(exc, dialect)
+            except BasicError as exc:
+                err = exc
+            return _recover_tokens(rest, err, dialect) or [err]
+    return []
 
 
 def _place_error(statements: list, err: BasicError) -> list:
@@ -369,17 +398,22 @@ def _place_error(statements: list, err: BasicError) -> list:
     return statements + [err]
 
 
-def _recover(text: str, err: BasicError):
-    """The statements of a bad line up to its first bad statement, then ``err``; None
-    when the first statement is already bad (the whole line is the error)."""
+def _recover(text: str, err: BasicError, dialect: Dialect):
+    """The statements of a bad line with ``err`` in place of its first bad statement
+    (see :func:`_recover_tokens`); None when the line cannot even be scanned."""
     try:
         tokens = mark_unsupported(tokenize(text))
     except BasicError:
         return None
-    good = _statements_before_error(tokens)
-    if not good:
-        return None
-    return _place_error(good, err)
+    return _recover_tokens(tokens, err, dialect)
+
+
+def _recover_tokens(tokens: list, err: BasicError, dialect: Dialect) -> list:
+    """The statements before the first bad one, ``err``, then the statements after it."""
+    good, bad_start = _statements_before_error(tokens)
+    if good and isinstance(good[-1], ast.If):
+        return _place_error(good, err)
+    return good + [err] + _statements_after_error(tokens, bad_start, dialect)
 
 
 MAX_NESTING = 60  # IFs in one line, or parentheses inside each other
@@ -408,8 +442,8 @@ def parse_line(number: int, text: str, dialect: Dialect = CASIO) -> ast.Line:
     try:
         statements = parse_statements(text, dialect)
     except BasicError as err:
-        statements = _recover(text, err) if dialect.errors_when_reached else None
-        if statements is None:
+        statements = _recover(text, err, dialect) if dialect.errors_when_reached else None
+        if statements is None or statements == [err]:
             return ast.Line(number, [], text, error=err)
         return ast.Line(number, statements, text)
     except RecursionError:

@@ -275,6 +275,12 @@ class Resume:
 
 
 @_node
+class Error:
+    """ERROR n: raise error code n."""
+    code: object
+
+
+@_node
 class Randomize:
     seed: object = None
 
@@ -314,4 +320,5 @@ class Line:
     number: int
     statements: list = _LIST
     text: str = ""
-    error: object = None  # a BasicError when the line does not parse
+    error: object = None  # a BasicError when the line does not parse; ``statements``
+    # then holds the statements that do, and the BasicError of each one that does not
