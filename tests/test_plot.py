@@ -117,3 +117,77 @@ def test_plot_command_reports_an_unwritable_output_directory(tmp_path):
     assert result.stderr == (f"yaseer plot: --out {occupied}: is a file; --out names a directory here "
                              "(several files are written)\n")
     assert "Traceback" not in result.stderr
+
+
+# ---------------------------------------------------------------- rows of several kinds
+
+
+def _printed_table(listing: str) -> list[list[float]]:
+    """The numbers of each line of the listing's text output (the faithful screen, another path than the rows)."""
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-m", "yaseer", "run", listing], cwd=ROOT, capture_output=True, text=True,
+                          check=True)
+    rows = []
+    for line in done.stdout.splitlines():
+        try:
+            rows.append([float(word) for word in line.split()])
+        except ValueError:
+            continue
+    return rows
+
+
+def test_the_lower_branch_of_seed_003_is_a_second_series_under_its_own_columns():
+    from yaseer import run
+    from yaseer.series import plot_tables
+
+    tables = plot_tables(run(ROOT / "listings" / "fortran_fourbar.bas").lines)
+    assert len(tables) == 1
+    (main,) = tables
+    assert main.names == ("THET", "PHI", "BETA", "VELC", "VELB", "ACCC", "ACCB")
+    upper, lower = main.series
+    printed = _printed_table("listings/fortran_fourbar.bas")
+    assert [r for r in printed if len(r) == 7] == [pytest.approx(r, abs=0.006) for r in upper.rows]
+    assert [r for r in printed if len(r) == 6] == [pytest.approx(r[1:], abs=0.006) for r in lower.rows]
+    assert [r[0] for r in lower.rows] == [r[0] for r in upper.rows]  # each under the angle printed above it
+
+
+def test_a_labelled_row_is_a_table_of_its_own_named_by_its_label():
+    from yaseer import run
+    from yaseer.series import plot_tables
+
+    main, backsolve = plot_tables(run(ROOT / "listings" / "tk_slider_crank.bas").lines)
+    assert main.width == 6 and len(main.series) == 1 and len(main.series[0].rows) == 50
+    assert backsolve.label == "BACKSOLVE THETA, OMEGA, ALPHA:"
+    assert backsolve.names == ("BACKSOLVE THETA", "OMEGA", "ALPHA")
+    assert backsolve.series[0].rows == [pytest.approx([-30.0, -15.0, -10.0], abs=0.6)]  # it recovers the crank's
+
+
+def test_a_line_breaks_where_the_crank_angle_steps_back_or_jumps_a_gap():
+    from yaseer.series import broken
+
+    xs, ys = broken([0, 30, 60, 90, 270, 300, 0, 30], [1, 2, 3, 4, 5, 6, 7, 8])
+    gaps = [i for i, x in enumerate(xs) if math.isnan(x)]
+    assert gaps == [4, 7]
+    assert [x for x in xs if not math.isnan(x)] == [0, 30, 60, 90, 270, 300, 0, 30]
+    assert math.isnan(ys[4]) and math.isnan(ys[7])
+
+
+def test_plot_of_seed_003_draws_both_branches_broken_at_the_unassembled_angles(tmp_path):
+    import yaseer
+
+    figure = yaseer.run(ROOT / "listings" / "fortran_fourbar.bas").plot(subtitle="--method 2=newton")
+    assert [ax.get_ylabel() for ax in figure.axes] == ["PHI", "BETA", "VELC", "VELB", "ACCC", "ACCB"]
+    upper, lower = figure.axes[0].get_lines()
+    for line in (upper, lower):
+        xs = list(line.get_xdata())
+        assert [x for x in xs if x == x] == [0, 30, 60, 90, 270, 300, 330]
+        assert math.isnan(xs[4])  # no line across 120-240, where the linkage cannot be assembled
+    assert "--method 2=newton" in figure._suptitle.get_text()
+
+
+def test_plot_names_the_methods_in_the_title(tmp_path):
+    result = _yaseer_plot("listings/example4.bas", "--out", str(tmp_path), "--method", "2=newton")
+    assert result.returncode == 0, result.stderr
+    assert "-method 2=newton -->" in (tmp_path / "example4.svg").read_text()  # (SVG comments cannot hold "--")

@@ -132,3 +132,21 @@ def test_listing_shaped_program_with_the_papers_program_5(tmp_path, capsys):
     assert len(rows) == len(expected) == 25
     for row, want in zip(rows, expected):
         assert row == pytest.approx(want, rel=1e-9, abs=1e-9)
+
+
+def test_a_csv_row_is_a_printed_line(tmp_path):
+    """Values printed by several PRINT statements on one screen line are one CSV row (one length per kind)."""
+    import csv
+    import subprocess
+    import sys
+
+    listing = tmp_path / "parts.bas"
+    listing.write_text("10 FOR I = 1 TO 3\n20 PRINT I;\n30 IF I > 1 THEN PRINT I * 2;\n40 PRINT I * 3\n50 NEXT\n"
+                       "60 PRINT 7, 8,\n70 PRINT 9;\n")
+    text = subprocess.run([sys.executable, "-m", "yaseer", "run", str(listing)], capture_output=True, text=True,
+                          check=True).stdout
+    rows = subprocess.run([sys.executable, "-m", "yaseer", "run", str(listing), "--format", "csv"],
+                          capture_output=True, text=True, check=True).stdout
+    screen = [[float(word) for word in line.split()] for line in text.splitlines()]
+    assert [[float(v) for v in row] for row in csv.reader(rows.splitlines())] == screen
+    assert [len(row) for row in screen] == [2, 3, 3, 3]

@@ -130,15 +130,22 @@ class Result:
         groups = self._named_groups()
         return max(groups, key=lambda g: len(g.rows)) if groups else None
 
-    def plot(self):
-        """A matplotlib Figure: each printed column against the first (the main table)."""
-        from yaseer import plotting
+    def plot(self, subtitle: str = ""):
+        """A matplotlib Figure: each printed column against the first (see :mod:`yaseer.series`).
 
-        group = self._main_group()
-        if group is None or len(group.rows) < 2 or group.width < 2:
+        The main table's rows, rows continuing them (a second branch) as a second
+        series, and any other kind of row in panels of its own; ``subtitle`` goes
+        under the title (the command names the methods chosen there).
+        """
+        from yaseer import plotting
+        from yaseer.series import plot_tables
+
+        tables = plot_tables(self.lines)
+        main = tables[0] if tables else None
+        if main is None or main.width < 2 or sum(len(s.rows) for s in main.series) < 2:
             raise ValueError("the listing printed no table of at least two rows and two columns to plot")
-        spec = plotting.spec_for(self.name, self.listing, group.width, self.title, group.names)
-        return plotting.build_figure(group.rows, spec)
+        spec = plotting.spec_for(self.name, self.listing, main.width, self.title, main.names)
+        return plotting.draw_tables(tables, spec, subtitle)
 
     def look(self, size: tuple[int, int] | None = None, title: str | None = None):
         """How this run's frames look (:class:`yaseer.animation.Look`): title, column names, unit, size."""

@@ -63,22 +63,62 @@ def spec_for(name: str | None, listing_text: str, n_columns: int, title: str | N
     return FigureSpec(title or name or "listing", Quantity(names[0]), tuple(Quantity(e) for e in names[1:]))
 
 
-def build_figure(rows: Sequence[Sequence[float]], spec: FigureSpec):
-    """A matplotlib Figure: one panel per printed quantity against the first column."""
+def build_figure(rows: Sequence[Sequence[float]], spec: FigureSpec, subtitle: str = ""):
+    """A matplotlib Figure: one panel per printed quantity against the first column (one series)."""
+    from yaseer.series import PlotTable, Series
+
+    return draw_tables([PlotTable(len(spec.columns) + 1, series=[Series("", [list(r) for r in rows])])], spec,
+                       subtitle)
+
+
+def draw_tables(tables: Sequence, spec: FigureSpec, subtitle: str = ""):
+    """A matplotlib Figure of :func:`yaseer.series.plot_tables`' tables.
+
+    The main table (the first) is labelled by ``spec``; each of its series is a
+    line in every panel (a legend names them when there are several); every other
+    table gets panels of its own below, labelled by its printed label and names.
+    A line breaks where the crank angle steps back or jumps a gap
+    (:func:`yaseer.series.broken`).  ``subtitle`` (e.g. the methods chosen) goes
+    under the title.
+    """
     from matplotlib.figure import Figure  # free-standing: no pyplot, the user's backend untouched
 
-    x = [row[0] for row in rows]
-    figure = Figure(figsize=(7.5, 1.0 + 2.1 * len(spec.columns)), layout="constrained")
-    axes = figure.subplots(len(spec.columns), 1, sharex=True, squeeze=False)[:, 0]
-    for index, (ax, quantity) in enumerate(zip(axes, spec.columns), start=1):
-        ax.plot(x, [row[index] for row in rows], marker="o", markersize=3.5, linewidth=1.3)
+    from yaseer.series import broken
+
+    panels = [(tables[0], index, spec.x, quantity) for index, quantity in enumerate(spec.columns, start=1)]
+    for table in tables[1:]:
+        x, quantities = _other_quantities(table)
+        panels += [(table, index, x, quantity) for index, quantity in enumerate(quantities, start=1)]
+    figure = Figure(figsize=(7.5, 1.0 + 2.1 * len(panels)), layout="constrained")
+    axes = figure.subplots(len(panels), 1, squeeze=False)[:, 0]
+    main_axes = [ax for ax, panel in zip(axes, panels) if panel[0] is tables[0]]
+    for ax in main_axes[1:]:
+        ax.sharex(main_axes[0])
+    for position, (ax, (table, index, x, quantity)) in enumerate(zip(axes, panels)):
+        for series in table.series:
+            xs, ys = broken([row[0] for row in series.rows], [row[index] for row in series.rows])
+            ax.plot(xs, ys, marker="o", markersize=3.5, linewidth=1.3, label=series.name or f"rows of {table.width}")
         ax.set_ylabel(_wrap(quantity.axis_label()), fontsize=9)
         ax.grid(True, linewidth=0.4, alpha=0.6)
-    axes[-1].set_xlabel(spec.x.axis_label())
-    if spec.x.unit == DEG and min(x) >= -1 and max(x) <= 361:
-        axes[-1].set_xticks(range(0, 361, 60))
-    figure.suptitle(spec.title, fontsize=11)
+        last_of_table = position + 1 == len(panels) or panels[position + 1][0] is not table
+        if last_of_table:
+            ax.set_xlabel(x.axis_label())
+        else:
+            ax.tick_params(labelbottom=False)
+        if table is tables[0] and position == 0 and len(table.series) > 1:
+            ax.legend(fontsize=7, loc="best")
+    xs = [row[0] for series in tables[0].series for row in series.rows]
+    if xs and spec.x.unit == DEG and min(xs) >= -1 and max(xs) <= 361:
+        main_axes[-1].set_xticks(range(0, 361, 60))
+    figure.suptitle(spec.title + (f"\n{subtitle}" if subtitle else ""), fontsize=11)
     return figure
+
+
+def _other_quantities(table) -> tuple[Quantity, list[Quantity]]:
+    """The abscissa and panel quantities of a table other than the main one (its label and names)."""
+    names = list(table.names) if table.names else [f"column {k + 1}" for k in range(table.width)]
+    prefix = f"{table.label}: " if table.label and not table.names else ""
+    return Quantity(prefix + names[0]), [Quantity(prefix + name) for name in names[1:]]
 
 
 def _wrap(label: str, width: int = 24) -> str:

@@ -240,7 +240,6 @@ class Machine:
         self.random = self.dialect.random()
         self._extra_entries: set[int] = set()
         self.array_elements = 0  # elements in all arrays (MAX_TOTAL_ELEMENTS)
-        self.pending_row: list = []  # csv values of a PRINT statement printed in parts
         # Called as hook(machine, n) after every GOSUB PROG n returns (e.g. to record a
         # mechanism's positions for an animation); machine.line is the calling line.
         self.area_hooks: list[Callable] = []
@@ -659,7 +658,8 @@ class Machine:
             return None
         self.err = float(err.code)
         self.erl = float(err.line or 0)
-        self.pending_row = []
+        for stream in self.streams:
+            stream.row = []
         self.in_handler = True
         self.pending_error = err
         self.error_point = (area, block)
@@ -828,6 +828,8 @@ class Machine:
         except KeyboardInterrupt:
             raise BasicError("Break", BREAK).at(self.line) from None
         finally:
+            if self.csv:  # a last line left open (PRINT A;) is still a row
+                self.end_line()
             self.flush()
         return "end"
 
@@ -895,14 +897,17 @@ class Machine:
         except DirectJump as jump:
             return self._execute(0, self._line_block(jump.line))
         finally:
+            if self.csv:  # a last line left open (PRINT A;) is still a row
+                self.end_line()
             self.flush()
 
     # ------------------------------------------------------------ I/O
     def print_items(self, device: int, items: tuple, newline: bool, end: bool = True) -> None:
         """PRINT / LPRINT: values, comma zones, TAB and SPC; ``newline`` ends the line.
 
-        A statement may print in several calls; ``end`` marks its last (csv rows
-        collect the values of the whole statement).
+        A statement may print in several calls; ``end`` marks its last.  In csv
+        output a row is a printed line: the values of every PRINT up to the one
+        that ends the line (so rows of one kind have one length).
         """
         stream = self.streams[device]
         if self.line_hooks:
@@ -915,12 +920,11 @@ class Machine:
                 if type(v) is float:
                     if v - v:
                         runtime.overflow()
-                    self.pending_row.append(repr(v))
+                    stream.row.append(repr(v))
                 elif type(v) is str:
-                    self.pending_row.append(v)
-            if end:
-                self._csv_row(stream, self.pending_row)
-                self.pending_row = []
+                    stream.row.append(v)
+            if end and newline:
+                self._csv_row(stream)
             return
         comma_follows = False
         for item in items:
@@ -974,8 +978,9 @@ class Machine:
         if self.line_hooks:
             self._note_values(device, values, newline)
         if self.csv:
-            if newline is not False or values:
-                self._csv_row(stream, [repr(v) if type(v) is float else v for v in values])
+            stream.row.extend(repr(v) if type(v) is float else v for v in values)
+            if newline:
+                self._csv_row(stream)
             return
         stream.write(formatting.using(fmt, values))
         if newline:
@@ -991,9 +996,11 @@ class Machine:
             for hook in self.line_hooks:
                 hook(device, printed)
 
-    def _csv_row(self, stream: OutputStream, values: list) -> None:
+    def _csv_row(self, stream: OutputStream) -> None:
+        """Write the csv row of the line ``stream`` was printing (its values so far)."""
         writer = csv.writer(stream.stream, lineterminator="\n")
-        writer.writerow(values)
+        writer.writerow(stream.row)
+        stream.row = []
         stream.column = 0
 
     def input_values(self, prompt, question_mark: bool, kinds: str) -> list:
@@ -1036,8 +1043,12 @@ class Machine:
         self.random.randomize(seed, kind)
 
     def end_line(self) -> None:
-        """Finish a partly printed screen line (before an error message, as MS-BASIC does)."""
-        if not self.csv and self.screen.column:
+        """Finish a partly printed line (before an error message, as MS-BASIC does; csv: its row)."""
+        if self.csv:
+            for stream in dict.fromkeys(self.streams):
+                if stream.row:
+                    self._csv_row(stream)
+        elif self.screen.column:
             self.screen.new_row()
 
     def flush(self) -> None:

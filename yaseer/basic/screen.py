@@ -34,6 +34,7 @@ class OutputStream:
         self.stream = stream
         self.column = 0
         self.width = width
+        self.row: list = []  # csv output: the values of the line being printed
 
     def write(self, text: str) -> None:
         """Write ``text``; a carriage return (``CHR$(13)``) ends the line as on the screen."""

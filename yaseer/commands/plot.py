@@ -4,6 +4,11 @@ The listing runs through :func:`yaseer.run` as ``yaseer run`` runs it (the same 
 options: ``--prog``, ``--method``, ``--dialect``, ``--angle``, ``--input``), its rows
 kept at full precision; each printed column is then drawn against the first (the
 crank angle), one panel per quantity, as the paper's Figs. 7, 9, 10, 12 and 14 do.
+Rows of other kinds are separate series (:mod:`yaseer.series`: a second branch
+printed under the first, a labelled row in panels of its own); a line breaks where
+the crank angle jumps a gap or starts again.  Panels are labelled by the paper's
+meanings for its examples, else the listing's printed header, else its PRINT
+expressions; the title names the ``--method``/``--prog`` variant drawn.
 Writes ``<stem>.png`` and ``<stem>.svg`` into DIR.
 """
 
@@ -40,10 +45,19 @@ def main(args) -> int:
     if result.error is not None:
         return report(result)
     try:
-        figure = result.plot()
+        figure = result.plot(subtitle=variant(args))
     except ValueError:
         raise CommandError(f"{listing}: printed no table of at least two rows and two columns to plot") from None
     paths = plotting.save_figure(figure, output_directory(args.out), listing.stem)
     for path in paths:
         print(path)
     return 0
+
+
+def variant(args) -> str:
+    """The run options that change what is drawn (``--method 2=newton, --prog 5=prog5.bas``), for the title."""
+    chosen = [f"--method {n}={name}" for n, name in args.method]
+    chosen += [f"--prog {n}={Path(path).name}" for n, path in args.prog]
+    chosen += [f"--{option} {getattr(args, option)}" for option in ("dialect", "angle")
+               if getattr(args, option) not in (None, "casio")]
+    return ", ".join(chosen)
