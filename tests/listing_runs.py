@@ -63,3 +63,14 @@ def golden_csv(n: int) -> np.ndarray:
 def column_scale(table: np.ndarray) -> np.ndarray:
     """Each column's largest magnitude: the yardstick for differences within that column."""
     return np.abs(table).max(axis=0)
+
+
+def screen_numbers(listing: str) -> list[list[float]]:
+    """The numbers on each all-numeric line of ``yaseer run LISTING``'s faithful text output."""
+    rows = []
+    for line in run_yaseer(str(listing)).stdout.splitlines():
+        try:
+            rows.append([float(word) for word in line.split()])
+        except ValueError:
+            continue
+    return rows

@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from listing_runs import screen_numbers
 
 from yaseer.cli import main as cli_main
 from yaseer.commands import diff
@@ -94,7 +95,7 @@ def test_cli_exit_status_and_verdict_line(tmp_path, capsys):
     assert capsys.readouterr().out.strip().splitlines()[-1].startswith("AGREE: 2 rows matched")
     status, _ = _run_cli(tmp_path, "0,1.0\n30,2.5\n", "t,v\n0,1.00\n30,2.00\n")
     last = capsys.readouterr().out.strip().splitlines()[-1]
-    assert status == 1 and last.startswith("DIFFER: 2 rows matched, 1 of 4 cells differ")
+    assert status == 1 and last.startswith("DIFFER: 2 rows matched, 1 of 4 compared cells differ")
 
 
 def test_cli_unreadable_table_is_a_clear_error(tmp_path, capsys):
@@ -134,3 +135,64 @@ def test_cli_ambiguous_printed_row_names_the_line(tmp_path, capsys):
 def test_full_rows_are_read_in_order_even_under_a_loosely_aligned_header():
     table = diff.parse_table("THET PHI BETA\n0.00 -114.62 -65.38\n30.00 -144.88 -82.70\n")
     assert [[c.value for c in row] for row in table.rows] == [[0.0, -114.62, -65.38], [30.0, -144.88, -82.70]]
+
+
+# ---------------------------------------------------------------- what was compared, ragged rows, errata
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_program_columns_the_table_lacks_are_shown_and_counted_as_not_compared(tmp_path, capsys):
+    status, _ = _run_cli(tmp_path, "0,1.0,5.0\n30,2.0,6.0\n", "t,v\n0,1.00\n30,2.00\n")
+    out = capsys.readouterr().out.splitlines()
+    assert status == 0
+    assert out[0].split() == ["t", "v", "(no", "column)"]
+    assert out[1].split() == ["0", "1.00", "(5.00)"] and out[2].split() == ["30", "2.00", "(6.00)"]
+    assert out[-1].startswith("AGREE: 2 rows matched, 0 of 4 compared cells differ beyond half a printed digit; "
+                              "2 program values not compared")
+
+
+def test_a_blank_table_cell_is_not_compared_and_marked(tmp_path, capsys):
+    status, _ = _run_cli(tmp_path, "0,1.0,5.0\n", "t,v,w\n0,1.00,\n")
+    out = capsys.readouterr().out.splitlines()
+    assert out[1].split() == ["0", "1.00", "(5.00)"]
+    assert "0 of 2 compared cells differ" in out[-1] and "1 program values not compared" in out[-1]
+
+
+def test_ragged_rows_fill_the_last_columns_under_the_row_before_and_the_header_names_them():
+    listing = ROOT / "listings" / "fortran_fourbar.bas"
+    names, rows = diff.program_rows(listing)
+    assert names == ("THET", "PHI", "BETA", "VELC", "VELB", "ACCC", "ACCB")
+    screen = screen_numbers(listing)
+    assert len(rows) == len(screen) == 14
+    for row, printed in zip(rows, screen):
+        assert len(row) == 7
+        assert row[-len(printed):] == pytest.approx(printed, abs=0.006)  # a 6-value row: the last 6 columns
+    assert [row[0] for row in rows[1::2]] == [row[0] for row in rows[0::2]]  # branch 2 under branch 1's angle
+
+
+def test_the_listings_header_names_the_columns_of_an_unnamed_table(tmp_path):
+    import subprocess
+    import sys
+
+    table = tmp_path / "t.csv"
+    table.write_text("0,-114.62\n,114.62\n")
+    done = subprocess.run([sys.executable, "-m", "yaseer", "diff", str(ROOT / "listings" / "fortran_fourbar.bas"),
+                           str(table)], capture_output=True, text=True)
+    lines = done.stdout.splitlines()
+    assert lines[0].split() == ["THET", "PHI", "BETA", "VELC", "VELB", "ACCC", "ACCB"]
+    assert lines[2].split()[:2] == ["0", "114.62"]  # the lower branch's PHI, not shifted
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_the_errata_file_explains_the_differing_printed_columns_of_seed_003():
+    import subprocess
+    import sys
+
+    done = subprocess.run([sys.executable, "-m", "yaseer", "diff", str(ROOT / "listings" / "fortran_fourbar.bas"),
+                           str(ROOT / "yaseer" / "data" / "seed003_printed.txt"), "--tol", "0.1"],
+                          capture_output=True, text=True)
+    why = [line for line in done.stdout.splitlines() if line.startswith("why ")]
+    assert len(why) == 1 and why[0].startswith("why ACCC: the printed program computes C2 with VEL")
+    flagged = {line.split()[5] for line in done.stdout.splitlines() if "!" in line}  # the ACCC cells only
+    assert all("|" in cell for cell in flagged)

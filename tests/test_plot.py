@@ -7,6 +7,7 @@ import re
 from pathlib import Path
 
 import pytest
+from listing_runs import screen_numbers
 
 from yaseer import plotting
 
@@ -122,22 +123,6 @@ def test_plot_command_reports_an_unwritable_output_directory(tmp_path):
 # ---------------------------------------------------------------- rows of several kinds
 
 
-def _printed_table(listing: str) -> list[list[float]]:
-    """The numbers of each line of the listing's text output (the faithful screen, another path than the rows)."""
-    import subprocess
-    import sys
-
-    done = subprocess.run([sys.executable, "-m", "yaseer", "run", listing], cwd=ROOT, capture_output=True, text=True,
-                          check=True)
-    rows = []
-    for line in done.stdout.splitlines():
-        try:
-            rows.append([float(word) for word in line.split()])
-        except ValueError:
-            continue
-    return rows
-
-
 def test_the_lower_branch_of_seed_003_is_a_second_series_under_its_own_columns():
     from yaseer import run
     from yaseer.series import plot_tables
@@ -147,7 +132,7 @@ def test_the_lower_branch_of_seed_003_is_a_second_series_under_its_own_columns()
     (main,) = tables
     assert main.names == ("THET", "PHI", "BETA", "VELC", "VELB", "ACCC", "ACCB")
     upper, lower = main.series
-    printed = _printed_table("listings/fortran_fourbar.bas")
+    printed = screen_numbers("listings/fortran_fourbar.bas")
     assert [r for r in printed if len(r) == 7] == [pytest.approx(r, abs=0.006) for r in upper.rows]
     assert [r for r in printed if len(r) == 6] == [pytest.approx(r[1:], abs=0.006) for r in lower.rows]
     assert [r[0] for r in lower.rows] == [r[0] for r in upper.rows]  # each under the angle printed above it

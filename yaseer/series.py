@@ -57,20 +57,31 @@ class PlotTable:
         return self.series[-1]
 
 
-def plot_tables(lines: Sequence[Sequence[object]]) -> list[PlotTable]:
-    """The main table first, then one table per other kind of row (see the module docstring)."""
+@dataclass
+class PrintedRow:
+    """One printed line classified: ``kind`` is ``"row"`` (the main table), ``"continuation"``
+    or ``"other"``; ``values`` is a full main-table row for the first two (NaN where the
+    line printed nothing), the printed numbers otherwise; ``label`` any text before them."""
+
+    kind: str
+    values: list[float]
+    label: str = ""
+
+
+def classify(lines: Sequence[Sequence[object]]) -> tuple[int, tuple[str, ...] | None, list[PrintedRow]]:
+    """(main width, the main table's header names or None, the printed rows in order) - see the module docstring."""
     rows = [line for line in lines if line and all(type(v) is float for v in line)]
     if not rows:
-        return []
+        return 0, None, []
     width = Counter(len(row) for row in rows).most_common(1)[0][0]
-    main = PlotTable(width)
-    others: dict[tuple[str, int], PlotTable] = {}
+    names: tuple[str, ...] | None = None
     header: tuple[str, ...] | None = None
     previous: list[float] | None = None  # the last row, if the line before was a row
+    printed: list[PrintedRow] = []
     for line in lines:
-        names = header_names(line)
-        if names is not None:
-            header, previous = names, None
+        found = header_names(line)
+        if found is not None:
+            header, previous = found, None
             continue
         numbers = [v for v in line if type(v) is float]
         label = " ".join(str(v).strip() for v in line if type(v) is str).strip()
@@ -78,20 +89,37 @@ def plot_tables(lines: Sequence[Sequence[object]]) -> list[PlotTable]:
             previous = None  # text after numbers, or no numbers: not a row
             continue
         if not label and len(numbers) == width:
-            if main.names is None and header is not None and len(header) == width:
-                main.names = header
-            main.series_named("").rows.append(numbers)
+            if names is None and header is not None and len(header) == width:
+                names = header
+            printed.append(PrintedRow("row", numbers))
             previous = numbers
         elif not label and len(numbers) < width and previous is not None:
-            full = [previous[0]] + [math.nan] * (width - 1 - len(numbers)) + numbers
-            main.series_named(f"rows of {len(numbers)} after a row (the last {len(numbers)} columns)").rows.append(full)
-            previous = full
+            previous = [previous[0]] + [math.nan] * (width - 1 - len(numbers)) + numbers
+            printed.append(PrintedRow("continuation", previous))
         else:
-            table = others.get((label, len(numbers)))
-            if table is None:
-                table = others[(label, len(numbers))] = PlotTable(len(numbers), label, _label_names(label, len(numbers)))
-            table.series_named(label).rows.append(numbers)
+            printed.append(PrintedRow("other", numbers, label))
             previous = None
+    return width, names, printed
+
+
+def plot_tables(lines: Sequence[Sequence[object]]) -> list[PlotTable]:
+    """The main table first, then one table per other kind of row (see the module docstring)."""
+    width, names, printed = classify(lines)
+    if not printed:
+        return []
+    main = PlotTable(width, names=names)
+    others: dict[tuple[str, int], PlotTable] = {}
+    for row in printed:
+        if row.kind == "row":
+            main.series_named("").rows.append(row.values)
+        elif row.kind == "continuation":
+            count = sum(1 for v in row.values[1:] if not math.isnan(v))
+            main.series_named(f"rows of {count} after a row (the last {count} columns)").rows.append(row.values)
+        else:
+            key = (row.label, len(row.values))
+            if key not in others:
+                others[key] = PlotTable(len(row.values), row.label, _label_names(row.label, len(row.values)))
+            others[key].series_named(row.label).rows.append(row.values)
     return [main, *others.values()]
 
 

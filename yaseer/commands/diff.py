@@ -1,8 +1,13 @@
 """``yaseer diff FILE TABLE [--tol X]``: a listing's rows beside a table typed from a paper.
 
-FILE is a BASIC listing, run through ``yaseer run FILE --format csv`` (one CSV row
-per PRINT); a FILE ending in ``.csv`` is taken as such output already (so two
-tables can be compared).  TABLE is typed from a paper, either
+FILE is a BASIC listing, run through :func:`yaseer.run` with the run options of
+``yaseer run``; its printed rows are read as :mod:`yaseer.series` reads them for a
+plot: the rows of the most common length are the table, a text line naming its
+columns just before is its header, a shorter row printed right after a row (the
+lower branch of ``listings/fortran_fourbar.bas``) fills the *last* columns and
+takes the crank angle of the row before, and other lines (a labelled row) are
+not compared.  A FILE ending in ``.csv`` is taken as a listing's ``--format csv``
+output already (so two tables can be compared).  TABLE is typed from a paper, either
 
 * CSV (a line with a comma makes the file CSV): an empty field is a blank cell, or
 * whitespace-separated columns as printed: a header line of names, then rows.
@@ -18,11 +23,15 @@ previous row's key.  Rows are matched on the first column: the n-th table row
 with key k goes with the n-th program row with key k.  Every compared cell that
 differs by more than the tolerance is marked; blank cells are not compared; an
 overflow cell agrees when the program's value, printed with that column's
-decimals, would not fit in as many characters as there are asterisks.  The
+decimals, would not fit in as many characters as there are asterisks.  A program
+value with no table cell to compare with (a blank cell, or a column the table
+does not have) is shown in parentheses and counted as not compared.  The
 default tolerance of a cell is half a unit of its last printed digit; ``--tol``
-gives one absolute tolerance instead.  The last line is the verdict; the exit
-status is 0 when everything agrees, 1 when cells differ or rows are missing, 2
-when the listing or the table cannot be read.
+gives one absolute tolerance instead.  When ``yaseer/data/errata.csv`` knows why
+a differing column of TABLE differs, a ``why COLUMN:`` line says so.  The last
+line is the verdict; the exit status is 0 when every compared cell agrees, 1
+when cells differ or rows are missing, and 1 with one error line when the
+listing or the table cannot be read.
 """
 
 from __future__ import annotations
@@ -34,7 +43,9 @@ import subprocess
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Sequence
 
+ERRATA = Path(__file__).resolve().parent.parent / "data" / "errata.csv"  # why a paper's column differs
 OVERFLOW_CHAR = "*"
 _TOKEN = re.compile(r"\*+|[^\s*]+")
 _NUMBER = re.compile(r"^[-+]?(\d+\.?\d*|\.\d+)([eEdD][-+]?\d+)?$")
@@ -169,11 +180,15 @@ def parse_table(text: str) -> Table:
 
 @dataclass
 class Verdict:
+    names: list[str] = field(default_factory=list)  # the column names shown (table's, else the listing's)
+
     """The outcome of a comparison, with the rendered report ``lines``."""
 
     matched_rows: int = 0
     compared_cells: int = 0
     differing_cells: int = 0
+    uncompared_cells: int = 0  # program values with no table cell (shown in parentheses)
+    differing_columns: list[int] = field(default_factory=list)  # in order of first difference
     missing_rows: int = 0
     extra_rows: int = 0
     lines: list[str] = field(default_factory=list)
@@ -185,7 +200,8 @@ class Verdict:
     def summary(self, tol_text: str) -> str:
         word = "AGREE" if self.agrees else "DIFFER"
         return (f"{word}: {self.matched_rows} rows matched, {self.differing_cells} of "
-                f"{self.compared_cells} cells differ beyond {tol_text}; "
+                f"{self.compared_cells} compared cells differ beyond {tol_text}; "
+                f"{self.uncompared_cells} program values not compared (in parentheses: no table cell); "
                 f"{self.missing_rows} table rows missing from the program, "
                 f"{self.extra_rows} program rows not in the table")
 
@@ -236,16 +252,25 @@ def _fmt(value: float | None, decimals: int) -> str:
     return "" if value is None else f"{value:.{decimals}f}"
 
 
-def compare(program: list[list[float]], table: Table, tol: float | None = None, show_extra: bool = False) -> Verdict:
+def compare(program: list[list[float]], table: Table, tol: float | None = None, show_extra: bool = False,
+            program_names: Sequence[str] | None = None) -> Verdict:
     """Set the program's rows beside the table's; mark each cell beyond tolerance.
 
-    A differing cell is shown as ``program|printed!``; program rows the table does
-    not have are counted, and listed only with ``show_extra``.
+    A differing cell is shown as ``program|printed!``, a program value with no
+    table cell as ``(value)``; program rows the table does not have are counted,
+    and listed only with ``show_extra``.  The header is the table's names, else
+    ``program_names`` (the listing's printed header).  A NaN program value is a
+    cell the program did not print.
     """
     verdict = Verdict()
     width = max([len(table.names)] + [len(r) for r in table.rows] + [len(r) for r in program] + [1])
     decimals = [column_decimals(table, j) for j in range(width)]
-    rendered: list[list[str]] = [table.names + [""] * (width - len(table.names))] if table.names else []
+    names = list(table.names or program_names or [])
+    if names and len(names) < width and len(names) == len(table.names):
+        names += [f"({program_names[j]})" if program_names and j < len(program_names) else "(no column)"
+                  for j in range(len(names), width)]
+    verdict.names = names
+    rendered: list[list[str]] = [names + [""] * (width - len(names))] if names else []
     for printed, values in _pair_rows(program, table, tol):
         if printed is None:
             verdict.extra_rows += 1
@@ -266,9 +291,12 @@ def _render_row(printed: list[Cell], values: list[float], tol, decimals, verdict
     texts = []
     for j in range(max(len(printed), len(values))):
         cell = printed[j] if j < len(printed) else BLANK
-        value = values[j] if j < len(values) else None
+        value = values[j] if j < len(values) and values[j] == values[j] else None  # NaN: not printed
         shown = _fmt(value, decimals[j])
         if cell.blank or (cell.value is None and not cell.overflow):
+            if j and value is not None:  # the key column is what the rows were matched on
+                verdict.uncompared_cells += 1
+                shown = f"({shown})"
             texts.append(shown)
             continue
         verdict.compared_cells += 1
@@ -276,6 +304,8 @@ def _render_row(printed: list[Cell], values: list[float], tol, decimals, verdict
             texts.append(shown)
         else:
             verdict.differing_cells += 1
+            if j not in verdict.differing_columns:
+                verdict.differing_columns.append(j)
             texts.append(f"{shown or '(none)'}|{cell.text}!")
     return texts
 
@@ -289,22 +319,22 @@ def _align(rows: list[list[str]]) -> list[str]:
 # ---------------------------------------------------------------- running
 
 
-def program_rows(path: Path, run_options: list[str] | None = None) -> list[list[float]]:
-    """The numeric rows a listing prints (its ``--format csv`` output).
+def program_rows(path: Path, run_arguments: dict | None = None) -> tuple[tuple[str, ...] | None, list[list[float]]]:
+    """(the listing's header names or None, its rows in print order) - see the module docstring.
 
-    ``run_options`` are further ``yaseer run`` arguments (``--prog``, ``--method`` ...).
-    Raises :class:`TableError` with the run's own error message if it fails.
+    ``run_arguments`` are :func:`yaseer.run`'s (``method``, ``prog`` ...).
+    Raises :class:`TableError` with the run's own error line if it fails.
     """
     if path.suffix.lower() == ".csv":
-        text = read_table_text(path)
-    else:
-        done = subprocess.run([sys.executable, "-m", "yaseer", "run", str(path), "--format", "csv",
-                               *(run_options or [])], capture_output=True, text=True)
-        if done.returncode != 0:
-            message = (done.stderr.strip() or done.stdout.strip()).splitlines()
-            raise TableError(f"{path}: " + (message[-1] if message else f"exit status {done.returncode}"))
-        text = done.stdout
-    return csv_number_rows(text)
+        return None, csv_number_rows(read_table_text(path))
+    from yaseer.api import run
+    from yaseer.series import classify
+
+    result = run(path, **(run_arguments or {}))
+    if result.error is not None:
+        raise TableError(f"{path}: {result.error}") from result.exception
+    _, names, printed = classify(result.lines)
+    return names, [row.values for row in printed if row.kind != "other"]
 
 
 def read_table_text(path: Path) -> str:
@@ -358,20 +388,42 @@ def _tolerance(text: str) -> float:
 
 
 def main(args) -> int:
-    from yaseer.commands.options import CommandError, run_argv, run_settings
+    from yaseer.basic.errors import BREAK
+    from yaseer.commands.options import CommandError, run_settings
 
-    run_settings(args)  # the area files are checked here, before the run
     try:
         table = parse_table(read_table_text(args.table))
     except TableError as exc:
         raise CommandError(f"bad table {args.table}: {exc}") from None
+    settings = run_settings(args)
     try:
-        rows = program_rows(args.file, run_argv(args))
+        names, rows = program_rows(args.file, settings.run_arguments())
     except TableError as exc:
+        if getattr(exc.__cause__, "code", None) == BREAK:
+            raise KeyboardInterrupt from None
         raise CommandError(str(exc)) from None
-    verdict = compare(rows, table, args.tol, args.extra)
+    finally:
+        settings.close()
+    verdict = compare(rows, table, args.tol, args.extra, names)
     for line in verdict.lines:
+        print(line)
+    for line in errata_lines(args.table, verdict):
         print(line)
     tol_text = f"tol {args.tol:g}" if args.tol is not None else "half a printed digit"
     print(verdict.summary(tol_text))
     return 0 if verdict.agrees else 1
+
+
+def errata_lines(table_path: Path, verdict: Verdict) -> list[str]:
+    """``why COLUMN: reason`` for each differing column that ``yaseer/data/errata.csv`` explains for this table."""
+    known = {}
+    with open(ERRATA, encoding="utf-8") as handle:
+        for entry in csv.DictReader(line for line in handle if not line.startswith("#")):
+            known[(entry["table"], entry["column"])] = entry["reason"]
+    lines = []
+    for column in verdict.differing_columns:
+        name = verdict.names[column] if column < len(verdict.names) else f"column {column + 1}"
+        reason = known.get((Path(table_path).name, name))
+        if reason:
+            lines.append(f"why {name}: {reason}")
+    return lines

@@ -137,18 +137,6 @@ def run_settings(args: argparse.Namespace) -> RunSettings:
                        input=open(args.input, encoding="utf-8", errors="replace") if args.input else None)
 
 
-def run_argv(args: argparse.Namespace) -> list[str]:
-    """The run options of ``args`` as ``yaseer run`` arguments, to pass to a child process."""
-    argv = ["--dialect", args.dialect] + (["--angle", args.angle] if args.angle else [])
-    for n, path in args.prog:
-        argv += ["--prog", f"{n}={path}"]
-    for n, name in args.method:
-        argv += ["--method", f"{n}={name}"]
-    if args.input:
-        argv += ["--input", args.input]
-    return argv
-
-
 _STRINGS = re.compile(r'"[^"]*("|$)')
 
 
