@@ -67,8 +67,24 @@ def build_parser(command: str | None = None) -> tuple[argparse.ArgumentParser, a
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Parse ``argv`` (default ``sys.argv[1:]``), run the command; the exit status."""
-    argv = sys.argv[1:] if argv is None else list(argv)
+    """Parse ``argv`` (default ``sys.argv[1:]``), run the command; the exit status.
+
+    Called without ``argv`` (the ``yaseer`` program itself), a run stopped by
+    Ctrl-C ends the process at once with status 130: an interrupt that landed in
+    the middle of an import can leave a half-made module that makes the
+    interpreter's own shutdown end the process by SIGINT instead.
+    """
+    if argv is None:
+        status = main(sys.argv[1:])
+        if status == 130:
+            for stream in (sys.stdout, sys.stderr):
+                try:
+                    stream.flush()
+                except (AttributeError, OSError, ValueError):
+                    pass
+            os._exit(130)
+        return status
+    argv = list(argv)
     if sys.stdout is None:  # started with standard output closed (`yaseer run x >&-`)
         if sys.stderr is not None:
             print("yaseer: standard output is closed", file=sys.stderr)
