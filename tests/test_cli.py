@@ -19,8 +19,8 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
-COMMANDS = ("run", "diff", "plot", "animate", "bench", "stability", "centrode")
-RUNNING_COMMANDS = ("run", "diff", "plot", "animate")  # the commands that take the run options
+COMMANDS = ("run", "diff", "plot", "animate", "bench", "stability", "centrode", "report")
+RUNNING_COMMANDS = ("run", "diff", "plot", "animate", "report")  # the commands that take the run options
 
 
 def yaseer(*args: str, cwd: Path | None = None, **options) -> subprocess.CompletedProcess:
@@ -77,7 +77,7 @@ def test_method_help_lists_every_programs_methods_from_the_registry():
 
 @pytest.mark.parametrize("command", COMMANDS)
 def test_an_unknown_option_prints_that_commands_usage(command, listing, tmp_path):
-    operands = {"run": [str(listing)], "plot": [str(listing)], "animate": [str(listing)],
+    operands = {"run": [str(listing)], "plot": [str(listing)], "animate": [str(listing)], "report": [str(listing)],
                 "diff": [str(listing), str(tmp_path / "t.csv")]}.get(command, [])
     done = yaseer(command, *operands, "--no-such-option")
     assert done.returncode == 2

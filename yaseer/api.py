@@ -101,7 +101,7 @@ class Result:
         if self._rows is None:
             from yaseer.table import as_arrays
 
-            self._rows = as_arrays(self._named_groups())
+            self._rows = as_arrays(self.row_groups())
         return self._rows
 
     @property
@@ -117,7 +117,8 @@ class Result:
 
         return listing_title(self.listing, self.name)
 
-    def _named_groups(self):
+    def row_groups(self):
+        """The printed rows by shape (:class:`yaseer.table.RowGroup`), each with its column names."""
         from yaseer.describe import column_names
         from yaseer.table import group_rows
 
@@ -127,7 +128,7 @@ class Result:
         return groups
 
     def _main_group(self):
-        groups = self._named_groups()
+        groups = self.row_groups()
         return max(groups, key=lambda g: len(g.rows)) if groups else None
 
     def plot(self, subtitle: str = ""):

@@ -28,6 +28,7 @@ COMMANDS = {
     "bench": "time against accuracy for every method and way of running",
     "stability": "sweep each method towards the places where methods fail",
     "centrode": "the change-point four-bar's space centrode (seed 004)",
+    "report": "run a listing and write a one-page HTML handout (listing, output, plots, animation, errata)",
 }
 
 DESCRIPTION = """\
