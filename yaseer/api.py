@@ -208,11 +208,14 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
             screen, printer, output_format: str, keep: bool) -> None:
     """Load, bind and run ``result.listing``; fill in ``result`` (text, rows, frames, error, status)."""
     from yaseer import binding
-    from yaseer.animation import Recorder
     from yaseer.basic.errors import BasicError
     from yaseer.basic.machine import Machine
 
-    recorder = Recorder() if keep else None
+    recorder = None
+    if keep:  # the animation package (and its drawing code) only when frames are kept: start-up
+        from yaseer.animation import Recorder
+
+        recorder = Recorder()
     on_line = recorder.line_printed if recorder is not None else None
     out = _Output(screen, keep, on_line)
     paper = _Output(printer, False, on_line) if printer is not None else None
