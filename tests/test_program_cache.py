@@ -5,6 +5,7 @@ can be switched off; it never lives in the checkout; concurrent runs are safe.""
 
 from __future__ import annotations
 
+import ast
 import io
 import os
 import subprocess
@@ -49,19 +50,36 @@ def test_a_warm_run_reads_the_entry_and_prints_the_same(cache, monkeypatch):
     assert calls == []  # compiled program taken from the cache
 
 
+HEAVY = ("lark", "yaseer.basic.parser", "yaseer.basic.compiler", "numpy", "yaseer.linkages", "yaseer.animation")
+
+
+def imported_by_run(listing: Path, cache: Path) -> tuple[str, list[str]]:
+    """The output of ``yaseer run LISTING`` in a fresh process, and which HEAVY modules it imported."""
+    probe = ("import sys, runpy; sys.argv = ['yaseer', 'run', sys.argv[1]]\n"
+             "try:\n    runpy.run_module('yaseer', run_name='__main__')\nexcept SystemExit:\n    pass\n"
+             f"print(sorted(m for m in {HEAVY!r} if m in sys.modules))")
+    env = dict(os.environ, YASEER_CACHE_DIR=str(cache))
+    done = subprocess.run([sys.executable, "-c", probe, str(listing)], capture_output=True, text=True, env=env)
+    *output, modules = done.stdout.splitlines()
+    return "\n".join(output) + "\n", ast.literal_eval(modules)
+
+
 def test_a_warm_process_imports_neither_parser_nor_lark(cache):
     listing = cache.parent / "prog.bas"
     listing.write_text(LISTING)
-    probe = ("import sys, runpy; sys.argv = ['yaseer', 'run', sys.argv[1]]\n"
-             "try:\n    runpy.run_module('yaseer', run_name='__main__')\nexcept SystemExit:\n    pass\n"
-             "print(sorted(m for m in ('lark', 'yaseer.basic.parser', 'yaseer.basic.compiler', 'numpy')"
-             " if m in sys.modules))")
-    env = dict(os.environ, YASEER_CACHE_DIR=str(cache))
-    cold = subprocess.run([sys.executable, "-c", probe, str(listing)], capture_output=True, text=True, env=env)
-    warm = subprocess.run([sys.executable, "-c", probe, str(listing)], capture_output=True, text=True, env=env)
-    assert cold.stdout.startswith(EXPECTED) and warm.stdout.startswith(EXPECTED)
-    assert "yaseer.basic.parser" in cold.stdout.splitlines()[-1]
-    assert warm.stdout.splitlines()[-1] == "[]"
+    cold_output, cold = imported_by_run(listing, cache)
+    warm_output, warm = imported_by_run(listing, cache)
+    assert cold_output == warm_output == EXPECTED
+    assert "yaseer.basic.parser" in cold and "lark" in cold
+    assert warm == []
+
+
+def test_a_listing_calling_the_programs_runs_without_numpy(cache):
+    listing = ROOT / "listings" / "example1.bas"
+    imported_by_run(listing, cache)
+    output, warm = imported_by_run(listing, cache)
+    assert output == (ROOT / "tests" / "golden" / "example1.txt").read_text()
+    assert warm == ["yaseer.linkages"]  # the programs' formulas, on Python floats
 
 
 def test_the_key_follows_program_area_entries_and_sources(cache, monkeypatch, tmp_path):
