@@ -1,0 +1,178 @@
+"""``--dialect gw`` at run time against PC-BASIC 2.0.8: PRINT layout at 80 (and 40)
+columns, RND/RANDOMIZE sequences, and syntax errors found where execution reaches
+them.  Generated and seeded (``YASEER_DIFF_SEED``, ``YASEER_DIFF_CASES``), many
+programs through one PC-BASIC session.
+
+PC-BASIC's captured text holds logical lines (a row that wraps on its screen is not
+broken in the text); yaseer writes one line per screen row, so PC-BASIC's lines are
+cut into rows of the screen width before comparing (:func:`screen_rows`).
+
+Kept differences, where GW-BASIC's source decides (docs/compatibility.md), are not
+generated: ``TAB`` of a negative number (column 1 in GIO86.ASM ``TABER``; PC-BASIC
+wraps it modulo the width) and a number directly followed by ``,`` (GIO86.ASM
+``MODCOM`` may drop its blank; PC-BASIC never does).  Programs these tests once
+failed on are kept in tests/corpus/gw/ with PC-BASIC's rows.
+"""
+
+from __future__ import annotations
+
+import random
+from pathlib import Path
+
+import pytest
+
+from test_differential_support import PcBasic, base_seed, case_count, run_yaseer
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+
+CORPUS = Path(__file__).parent / "corpus" / "gw"
+CORPUS_CASES = sorted(CORPUS.glob("*.bas"))
+
+
+@pytest.fixture(scope="module")
+def pc():
+    session = PcBasic()
+    yield session
+    session.close()
+
+
+def screen_rows(text: str, width: int = 80) -> str:
+    """PC-BASIC's logical lines cut into screen rows of ``width`` columns."""
+    rows = []
+    for line in text.split("\n"):
+        rows += [line[i:i + width] for i in range(0, len(line), width)] or [""]
+    return "\n".join(rows)
+
+
+def gw(source: str) -> str:
+    return run_yaseer(source, angle=None, dialect="gw")
+
+
+def differing(pc, programs: list[str], width_of=lambda source: 80) -> list[tuple[str, str, str]]:
+    out = []
+    for source in programs:
+        theirs, ours = screen_rows(pc.program(source), width_of(source)), gw(source)
+        if theirs != ours:
+            out.append((source, theirs, ours))
+    return out
+
+
+# ---------------------------------------------------------------- PRINT layout
+
+def print_item(rng: random.Random) -> tuple[str, bool]:
+    """One PRINT item and whether it is a number (a number is never followed by a comma)."""
+    kind = rng.random()
+    if kind < 0.35:
+        length = rng.choice([rng.randint(0, 12), rng.randint(0, 90)])
+        return '"' + "".join(rng.choice("ABXYZ.-") for _ in range(length)) + '"', False
+    if kind < 0.65:
+        return str(rng.choice([rng.randint(0, 9), rng.randint(-999, 999), rng.randint(-999999, 999999)])), True
+    if kind < 0.82:
+        return f"TAB({rng.choice([rng.randint(1, 90), rng.randint(1, 250)])})", False
+    return f"SPC({rng.choice([rng.randint(0, 20), rng.randint(0, 200)])})", False
+
+
+def print_statement(rng: random.Random) -> str:
+    parts = []
+    for _ in range(rng.randint(1, 7)):
+        item, number = print_item(rng)
+        parts.append(item)
+        separator = rng.choice([";", ";", ","]) if not number else rng.choice([";", ";,"])
+        parts.append(separator)
+    if rng.random() < 0.6:
+        parts.pop()  # end without a separator: the line ends
+    return "PRINT " + "".join(parts)
+
+
+def layout_program(rng: random.Random) -> str:
+    lines = ["WIDTH 40" if rng.random() < 0.2 else "WIDTH 80"]  # PC-BASIC keeps WIDTH from run to run
+    lines += [print_statement(rng) for _ in range(rng.randint(1, 4))]
+    lines.append('PRINT "."')
+    return "\n".join(f"{10 * (k + 1)} {text}" for k, text in enumerate(lines)) + "\n"
+
+
+def test_generated_print_layout_matches_pcbasic(pc):
+    rng = random.Random(base_seed() + 11)
+    programs = [layout_program(rng) for _ in range(case_count(150))]
+    found = differing(pc, programs, lambda source: 40 if "WIDTH 40" in source else 80)
+    assert not found, f"{len(found)} of {len(programs)} differ; first:\n" + "\n---\n".join(found[0])
+
+
+# ---------------------------------------------------------------- RND and RANDOMIZE
+
+def rnd_program(rng: random.Random) -> str:
+    lines = []
+    for _ in range(rng.randint(2, 8)):
+        kind = rng.random()
+        if kind < 0.45:
+            argument = rng.choice(["", "(1)", "(7.5)", "(0)"])
+            lines.append(f"PRINT INT(RND{argument} * 4096)")  # 12 bits: exact in single precision
+        elif kind < 0.6:
+            lines.append(f"PRINT INT(RND(-{rng.choice([1, 2, 3, 0.5, 7, 100, 12345, 0.1, 3.75])}) * 4096)")
+        elif kind < 0.8:
+            lines.append(f"RANDOMIZE {rng.choice([rng.randint(0, 32767), rng.randint(-32768, -1), rng.randint(32768, 99999)])}")
+        else:
+            lines.append(f"X = {rng.randint(-500, 500) / 4}: RANDOMIZE X")
+    return "\n".join(f"{10 * (k + 1)} {text}" for k, text in enumerate(lines)) + "\n"
+
+
+def test_generated_rnd_sequences_match_pcbasic(pc):
+    rng = random.Random(base_seed() + 12)
+    programs = [rnd_program(rng) for _ in range(case_count(150))]
+    found = differing(pc, programs)
+    assert not found, f"{len(found)} of {len(programs)} differ; first:\n" + "\n---\n".join(found[0])
+
+
+# ---------------------------------------------------------------- errors where execution reaches them
+
+GOOD = ["PRINT {k}", "A = {k}: PRINT A", "PRINT {k};", "IF {k} > 2 THEN PRINT {k}"]
+BAD = ["X =", "PRINT 1 +", "Y = 2 * (", "FOR I = 1 TO", "X = 5 Y", "PRINT (1", "Y = Y + * 2",
+       "GOTO", ")", "X = -", "PRINT 1 2 +"]
+
+
+def error_program(rng: random.Random) -> str:
+    statements = [rng.choice(GOOD).format(k=rng.randint(0, 5)) for _ in range(rng.randint(0, 3))]
+    bad = rng.choice(BAD)
+    if rng.random() < 0.3:
+        bad = f"IF {rng.randint(0, 5)} > 2 THEN PRINT 9: {bad}"
+    statements.append(bad)
+    if rng.random() < 0.3:
+        statements.append("PRINT 99")
+    return f"10 PRINT \"START\"\n20 {': '.join(statements)}\n30 PRINT \"NEXT LINE\"\n"
+
+
+def test_generated_errors_where_execution_reaches_them_match_pcbasic(pc):
+    rng = random.Random(base_seed() + 13)
+    programs = [error_program(rng) for _ in range(case_count(100))]
+    found = differing(pc, programs)
+    assert not found, f"{len(found)} of {len(programs)} differ; first:\n" + "\n---\n".join(found[0])
+
+
+# ---------------------------------------------------------------- the corpus
+
+@pytest.mark.parametrize("case", CORPUS_CASES, ids=[case.stem for case in CORPUS_CASES])
+def test_gw_corpus_program_matches_recorded_pcbasic_rows(case):
+    assert gw(case.read_text()) == case.with_suffix(".expected").read_text()
+
+
+def test_gw_corpus_expectations_are_pcbasic_rows(pc):
+    assert CORPUS_CASES, "the gw corpus is empty"
+    for case in CORPUS_CASES:
+        assert screen_rows(pc.program(case.read_text())) == case.with_suffix(".expected").read_text(), case.name
+
+
+def record() -> None:
+    """Write NAME.expected (PC-BASIC's rows) for every gw corpus program that lacks one."""
+    session = PcBasic()
+    for case in CORPUS_CASES:
+        target = case.with_suffix(".expected")
+        if not target.exists():
+            target.write_text(screen_rows(session.program(case.read_text())))
+            print("recorded", target)
+
+
+if __name__ == "__main__":  # python tests/test_differential_gw_runtime.py --record
+    import sys
+
+    if "--record" in sys.argv:
+        record()
