@@ -11,22 +11,19 @@ Kept differences, where GW-BASIC's source decides (docs/compatibility.md), are n
 generated: ``TAB`` of a negative number (column 1 in GIO86.ASM ``TABER``; PC-BASIC
 wraps it modulo the width) and a number directly followed by ``,`` (GIO86.ASM
 ``MODCOM`` may drop its blank; PC-BASIC never does).  Programs these tests once
-failed on are kept in tests/corpus/gw/ with PC-BASIC's rows.
+failed on are kept in tests/corpus/gw/ with PC-BASIC's rows (run by
+tests/test_differential_programs.py).
 """
 
 from __future__ import annotations
 
 import random
-from pathlib import Path
-
 import pytest
 
-from test_differential_support import PcBasic, base_seed, case_count, run_yaseer
+from test_differential_support import PcBasic, base_seed, case_count, run_yaseer, screen_rows
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 
-CORPUS = Path(__file__).parent / "corpus" / "gw"
-CORPUS_CASES = sorted(CORPUS.glob("*.bas"))
 
 
 @pytest.fixture(scope="module")
@@ -34,14 +31,6 @@ def pc():
     session = PcBasic()
     yield session
     session.close()
-
-
-def screen_rows(text: str, width: int = 80) -> str:
-    """PC-BASIC's logical lines cut into screen rows of ``width`` columns."""
-    rows = []
-    for line in text.split("\n"):
-        rows += [line[i:i + width] for i in range(0, len(line), width)] or [""]
-    return "\n".join(rows)
 
 
 def gw(source: str) -> str:
@@ -146,33 +135,3 @@ def test_generated_errors_where_execution_reaches_them_match_pcbasic(pc):
     programs = [error_program(rng) for _ in range(case_count(100))]
     found = differing(pc, programs)
     assert not found, f"{len(found)} of {len(programs)} differ; first:\n" + "\n---\n".join(found[0])
-
-
-# ---------------------------------------------------------------- the corpus
-
-@pytest.mark.parametrize("case", CORPUS_CASES, ids=[case.stem for case in CORPUS_CASES])
-def test_gw_corpus_program_matches_recorded_pcbasic_rows(case):
-    assert gw(case.read_text()) == case.with_suffix(".expected").read_text()
-
-
-def test_gw_corpus_expectations_are_pcbasic_rows(pc):
-    assert CORPUS_CASES, "the gw corpus is empty"
-    for case in CORPUS_CASES:
-        assert screen_rows(pc.program(case.read_text())) == case.with_suffix(".expected").read_text(), case.name
-
-
-def record() -> None:
-    """Write NAME.expected (PC-BASIC's rows) for every gw corpus program that lacks one."""
-    session = PcBasic()
-    for case in CORPUS_CASES:
-        target = case.with_suffix(".expected")
-        if not target.exists():
-            target.write_text(screen_rows(session.program(case.read_text())))
-            print("recorded", target)
-
-
-if __name__ == "__main__":  # python tests/test_differential_gw_runtime.py --record
-    import sys
-
-    if "--record" in sys.argv:
-        record()

@@ -78,6 +78,18 @@ class PcBasic:
         self._session.close()
 
 
+def screen_rows(text: str, width: int = 80) -> str:
+    """PC-BASIC's captured lines cut into screen rows of ``width`` columns.
+
+    PC-BASIC's text holds logical lines (a row that wraps on its screen is not broken
+    in the text); yaseer's gw screen writes one line per row.
+    """
+    rows = []
+    for line in text.split("\n"):
+        rows += [line[i:i + width] for i in range(0, len(line), width)] or [""]
+    return "\n".join(rows)
+
+
 def clean_output(text: str) -> str:
     """PC-BASIC screen text as plain lines: ``\\n`` line ends, no cursor NBSP after errors."""
     return text.replace("\r\n", "\n").replace("\xa0", "")
