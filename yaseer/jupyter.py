@@ -16,6 +16,7 @@ player.  The :class:`yaseer.api.Result` is stored in the notebook as ``_basic``
 from __future__ import annotations
 
 import html
+from pathlib import Path
 
 from IPython.core.magic import Magics, line_cell_magic, magics_class
 from IPython.core.magic_arguments import argument, magic_arguments, parse_argstring
@@ -58,19 +59,19 @@ class BasicMagics(Magics):
             raise UsageError("%basic FILE runs a listing; %%basic runs the cell's BASIC")
         if cell is not None and args.file:
             raise UsageError("%%basic runs the cell; name no file on its line")
-        result = run_magic(cell if cell is not None else args.file, args, methods, areas, self.shell)
+        listing = cell if cell is not None else Path(args.file)
+        result = run_magic(listing, args, methods, areas, self.shell)
         show(result, plot=args.plot, animate=args.animate, fps=args.fps)
 
 
-def run_magic(listing: str, args, methods: dict, areas: dict, shell):
-    """Run, store the result in the user's namespace, and return it."""
-    from pathlib import Path
-
+def run_magic(listing, args, methods: dict, areas: dict, shell):
+    """Run ``listing`` (the cell's text, or a Path), store the result in the user's namespace, return it."""
     from yaseer.api import run
 
-    source = listing if "\n" in listing or not listing.strip() else Path(listing)
+    if isinstance(listing, str) and "\n" not in listing:
+        listing += "\n"  # a one-line cell is program text, never a file name
     try:
-        result = run(source, dialect=args.dialect, method=methods, prog=areas, angle=args.angle,
+        result = run(listing, dialect=args.dialect, method=methods, prog=areas, angle=args.angle,
                      input=args.input.replace("\\n", "\n") if args.input else None)
     except ValueError as error:  # an unknown dialect
         from IPython.core.error import UsageError

@@ -1,0 +1,54 @@
+"""The ``%basic`` / ``%%basic`` magics in an in-process IPython shell: options, errors, the stored result.
+
+(The notebook test runs them through a real kernel; these cover the option handling.)
+"""
+
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("IPython", reason="the magics need yaseer[jupyter] (IPython)")
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(scope="module")
+def shell():
+    from IPython.testing.globalipapp import start_ipython
+
+    ip = start_ipython()
+    ip.run_line_magic("load_ext", "yaseer")
+    return ip
+
+
+def test_a_cell_runs_and_its_result_is_kept_under_the_name_given(shell, capsys):
+    shell.run_cell_magic("basic", "-o lesson --input 6\\n7", "10 INPUT A\n20 INPUT B\n30 PRINT A * B\n")
+    assert shell.user_ns["lesson"].rows.tolist() == [[42.0]]
+    assert capsys.readouterr().out == "? 6\n? 7\n 42 \n"
+
+
+def test_a_file_with_a_method_and_the_default_name(shell):
+    shell.run_line_magic("basic", f"{ROOT / 'listings' / 'example1.bas'} --method 5=paper")
+    result = shell.user_ns["_basic"]
+    assert result.error is None and result.rows.shape == (25, 4)
+
+
+@pytest.mark.parametrize("line, cell, says", [
+    ("", None, "%basic FILE runs a listing"),
+    ("x.bas", "10 PRINT 1", "name no file"),
+    ("--method 2", "10 PRINT 1", "expected N=VALUE"),
+    ("--dialect pascal", "10 PRINT 1", "unknown dialect 'pascal'"),
+])
+def test_wrong_options_are_one_usage_error(shell, line, cell, says):
+    from IPython.core.error import UsageError
+
+    with pytest.raises(UsageError, match=says):
+        if cell is None:
+            shell.run_line_magic("basic", line)
+        else:
+            shell.run_cell_magic("basic", line, cell)
+
+
+def test_an_unknown_method_is_the_red_error_line_not_an_exception(shell, capsys):
+    shell.run_cell_magic("basic", "--method 2=bogus", "10 PRINT 1\n")
+    assert shell.user_ns["_basic"].error.startswith("Unknown method 'bogus' for PROG 2")
