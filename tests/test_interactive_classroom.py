@@ -160,3 +160,35 @@ def test_cont_after_ctrl_c_goes_on_exactly_where_the_run_was_broken(terminal):
     assert terminal.type("CONT") == f" {total}  1000001  300000 \n"
     assert terminal.type("CONT") == "Can't continue\n"  # the run has ended
     terminal.close()
+
+
+
+def test_width_32_folds_what_the_screen_shows_as_the_fx850p_display(tmp_path):
+    terminal = Terminal(tmp_path, args=("--width", "32"))
+    try:
+        letters = "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
+        assert terminal.type(f'PRINT "{letters}"') == letters[:32] + "\n" + letters[32:] + "\n"
+        terminal.type("10 FOR I=1 TO 12: PRINT I;: NEXT I: PRINT")
+        row = "".join(f" {i} " for i in range(1, 13))  # printed by twelve PRINTs, folded as one row
+        assert terminal.type("RUN") == row[:32] + "\n" + row[32:] + "\n"
+        terminal.type('20 PRINT "A LINE THAT IS LONGER THAN THE SCREEN"')
+        listed = '20 PRINT "A LINE THAT IS LONGER THAN THE SCREEN"'
+        assert terminal.type("LIST 20") == listed[:32] + "\n" + listed[32:] + "\n"
+        assert terminal.type("PRINT 2") == " 2 \n"  # a typed line starts a new row
+        terminal.close()
+    finally:
+        if terminal.child.isalive():
+            terminal.child.terminate(force=True)
+
+
+def test_width_is_checked(tmp_path):
+    import os
+    import subprocess
+    import sys
+
+    from test_interactive import REPO
+
+    result = subprocess.run([sys.executable, "-m", "yaseer", "--width", "3"], input="", capture_output=True,
+                            text=True, cwd=tmp_path, env=dict(os.environ, PYTHONPATH=str(REPO)), timeout=60)
+    assert result.returncode == 2
+    assert "from 16 to 255" in result.stderr and "Traceback" not in result.stderr

@@ -502,6 +502,39 @@ def create_machine(screen, printer, methods: dict[int, str] | None = None, insta
     return machine
 
 
+class FoldedScreen:
+    """A screen ``width`` columns wide in front of a ``write`` callable (``--width``).
+
+    Text that reaches the right edge goes on at the start of the next row, one
+    character at a time, as on a pocket computer's display (the FX-850P shows 32
+    columns): a character written when the row is full first starts a new row.
+    Everything shown goes through it: program output, listings, messages.
+    ``column`` is the column (0-based) the next character goes to; the terminal
+    front end calls :meth:`line_typed` when the user ends a line with Enter.
+    """
+
+    def __init__(self, write: Callable[[str], object], width: int) -> None:
+        self._write, self.width, self.column = write, width, 0
+
+    def __call__(self, text: str) -> None:
+        out, column = [], self.column
+        for ch in text:
+            if ch == "\n":
+                column = 0
+            else:
+                if column >= self.width:
+                    out.append("\n")
+                    column = 0
+                column += 1
+            out.append(ch)
+        self.column = column
+        self._write("".join(out))
+
+    def line_typed(self) -> None:
+        """The user typed a line and Enter: the cursor is at the start of a row."""
+        self.column = 0
+
+
 class _Screen:
     """A text stream that forwards to a ``write`` callable."""
 

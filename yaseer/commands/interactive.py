@@ -33,13 +33,27 @@ def add_arguments(parser) -> None:
     add_dialect_argument(parser)
     parser.add_argument("--printer", metavar="FILE",
                         help="the session's printer: LPRINT and LLIST append to FILE (default: the screen)")
+    parser.add_argument("--width", type=_width, metavar="N",
+                        help="a screen N columns wide (16-255): longer lines go on on the next row, "
+                             "as on the pocket computer's display (the FX-850P's: 32)")
+
+
+def _width(text: str) -> int:
+    import argparse
+
+    if not text.isdigit() or not 16 <= int(text) <= 255:
+        raise argparse.ArgumentTypeError(f"the width is a whole number of columns from 16 to 255, not {text!r}")
+    return int(text)
 
 
 def main(args=None) -> int:
     """Run the session on this terminal until SYSTEM or end of input."""
-    from yaseer.session import MachineEngine, Session
+    from yaseer.session import FoldedScreen, MachineEngine, Session
 
     write = _writer(sys.stdout)
+    width = getattr(args, "width", None)
+    if width:
+        write = FoldedScreen(write, width)
     dialect = getattr(args, "dialect", None) or "casio"
     printer = _printer(getattr(args, "printer", None))
     if printer is None and getattr(args, "printer", None):
@@ -50,7 +64,8 @@ def main(args=None) -> int:
     session = Session(write=write, engine=engine, printer=printer)
     read = prompt_toolkit_reader() if terminal else plain_reader(sys.stdin, write)
     write(BANNER)
-    return run_loop(session, read, write)
+    # on a terminal Enter starts a new row; from a pipe nothing is echoed and output goes on after the prompt
+    return run_loop(session, read, write, line_typed=getattr(write, "line_typed", None) if terminal else None)
 
 
 def _printer(path: str | None) -> Callable[[str], None] | None:
@@ -65,11 +80,15 @@ def _printer(path: str | None) -> Callable[[str], None] | None:
     return _writer(stream)
 
 
-def run_loop(session, read: Reader, write: Callable[[str], object]) -> int:
-    """Prompt, read, handle, until the session finishes or input ends."""
+def run_loop(session, read: Reader, write: Callable[[str], object],
+             line_typed: Callable[[], object] | None = None) -> int:
+    """Prompt, read, handle, until the session finishes or input ends; ``line_typed`` is
+    told when a line was read (the cursor is then at the start of a row)."""
     while not session.finished:
         try:
             text = read(session.prompt, session.edit_text or "")
+            if line_typed is not None:
+                line_typed()
         except KeyboardInterrupt:  # Ctrl-C at the prompt: forget the line (and leave AUTO)
             session.interrupt()
             write("\n")
@@ -107,7 +126,10 @@ def prompt_toolkit_reader() -> Reader:
     prompt_session = PromptSession(history=InMemoryHistory())
 
     def read(prompt: str, default: str) -> str:
-        return prompt_session.prompt(prompt, default=default)
+        # Ctrl-C typed at the prompt is a key (the terminal is in raw mode); prompt_toolkit's
+        # own SIGINT handler is not wanted: a Ctrl-C pressed just after Enter would reach it
+        # after the line was accepted and print a traceback instead of breaking the program.
+        return prompt_session.prompt(prompt, default=default, handle_sigint=False)
 
     return read
 
