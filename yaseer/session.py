@@ -514,25 +514,20 @@ class FoldedScreen:
     """
 
     def __init__(self, write: Callable[[str], object], width: int) -> None:
-        self._write, self.width, self.column = write, width, 0
+        from yaseer.basic.screen import OutputStream
+
+        self._screen = OutputStream(_Screen(write), width)  # the machine's screen folding, at ``width``
+
+    @property
+    def column(self) -> int:
+        return self._screen.column
 
     def __call__(self, text: str) -> None:
-        out, column = [], self.column
-        for ch in text:
-            if ch == "\n":
-                column = 0
-            else:
-                if column >= self.width:
-                    out.append("\n")
-                    column = 0
-                column += 1
-            out.append(ch)
-        self.column = column
-        self._write("".join(out))
+        self._screen.write(text)
 
     def line_typed(self) -> None:
         """The user typed a line and Enter: the cursor is at the start of a row."""
-        self.column = 0
+        self._screen.column = 0
 
 
 class _Screen:
