@@ -85,11 +85,13 @@ def test_negative_step_and_no_name_next():
 
 
 def test_loop_test_comes_before_the_first_pass():
-    # a loop that never runs leaves its variable one STEP past the start (as GW-BASIC)
-    assert values("10 FOR I=5 TO 1: PRINT I: NEXT I: PRINT I") == [[6.0]]
-    assert values("10 FOR J=3 TO -.5 STEP 1.5: PRINT J: NEXT: PRINT J") == [[4.5]]
+    # a loop that never runs leaves its variable at the start value: GW-BASIC's source
+    # (FOR hands over to NEXTS in NEXT86.ASM with NXTFLG = 0, which stores the start
+    # value before the exit test); PC-BASIC 2.0.8 gives start + STEP (6, 4.5)
+    assert values("10 FOR I=5 TO 1: PRINT I: NEXT I: PRINT I") == [[5.0]]
+    assert values("10 FOR J=3 TO -.5 STEP 1.5: PRINT J: NEXT: PRINT J") == [[3.0]]
     # the same through the FOR stack (a GOSUB in the body)
-    assert values("10 FOR I=5 TO 1: GOSUB 50: NEXT I\n20 PRINT I: END\n50 PRINT 99: RETURN") == [[6.0]]
+    assert values("10 FOR I=5 TO 1: GOSUB 50: NEXT I\n20 PRINT I: END\n50 PRINT 99: RETURN") == [[5.0]]
 
 
 def test_next_j_i_closes_two_loops():
@@ -482,7 +484,7 @@ def test_empty_loops():
 
 def test_zero_trip_loop_started_in_an_if_branch_skips_to_its_next():
     program = "10 IF 1 THEN FOR I=5 TO 1: PRINT 99\n20 PRINT 1\n30 NEXT I\n40 PRINT I"
-    assert values(program) == [[6.0]]
+    assert values(program) == [[5.0]]  # the start value (GW-BASIC's source; PC-BASIC: 6)
 
 
 def test_string_arrays_and_string_comparison():
@@ -559,10 +561,10 @@ def test_zero_trip_loop_finds_its_next_inside_an_if_branch():
     program = '10 FOR N=0 TO 4 STEP -1: IF 0 THEN 20 ELSE PRINT 9: NEXT N\n20 PRINT "x"'
     assert run_rows(program) == [["x"]]
     program = "10 IF 0 THEN A=1 ELSE PRINT 1: FOR N=3 TO 1 STEP 2: NEXT N\n20 PRINT N"
-    assert values(program) == [[1.0], [5.0]]
+    assert values(program) == [[1.0], [3.0]]  # the start value (GW-BASIC's source; PC-BASIC: 5)
     # even a NEXT after "THEN n:", which can never run, ends the scan
     program = '10 FOR J=3 TO 2: PRINT 1\n20 IF 1 THEN 30: NEXT J\n30 PRINT "y"; J'
-    assert run_rows(program) == [["y", "4.0"]]
+    assert run_rows(program) == [["y", "3.0"]]  # the start value (PC-BASIC: 4)
 
 
 def test_break_inside_a_long_native_loop_keeps_the_variable():

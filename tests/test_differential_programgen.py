@@ -31,7 +31,9 @@ SCALARS = "ABCDEFGHJKMNPQRSUVWXYZ"
 
 # Constructs where yaseer is known to differ from GW-BASIC (docs/differential-findings.md);
 # switch one on to reproduce its finding.
-ZERO_TRIP_LOOPS = True  # F2: the control variable after a loop that runs zero times
+# F2: after a loop that runs zero times the variable holds its start value (GW-BASIC's
+# source, NEXT86.ASM); PC-BASIC 2.0.8 gives start + STEP: a known, deliberate difference.
+ZERO_TRIP_LOOPS = False
 ERR_AFTER_RESUME = True  # F11: ERR is not reset to 0 by RESUME
 LONG_LINE = 60  # programs whose PC-BASIC output has a line this long are drawn again (80-column wrap)  # no I (loops), no L, O, T (keyword starts look-alikes)
 

@@ -219,14 +219,19 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
     on_line = recorder.line_printed if recorder is not None else None
     out = _Output(screen, keep, on_line)
     paper = _Output(printer, False, on_line) if printer is not None else None
+    from yaseer.basic.dialect import get_dialect
+
+    library = get_dialect(dialect).program_areas  # the library programs are bound in casio only
+    # gw has no program areas (PROG is no word) unless areas are given (--prog)
+    chosen = get_dialect(dialect).with_program_areas() if areas else dialect
     machine = Machine(screen=out, printer=paper, output_format=output_format, angle=angle,
-                      input_stream=input_stream, dialect=dialect)
+                      input_stream=input_stream, dialect=chosen)
     if keep:
         machine.area_hooks.append(recorder.hook)
         machine.line_hooks.append(lambda device, values: result.lines.append(values))
     try:
         machine.load(result.listing)
-        if machine.dialect.program_areas:
+        if library:
             binding.install(machine, methods or None)
         for number, text in areas.items():
             machine.set_area(number, text)

@@ -96,7 +96,7 @@ def splits(stmt) -> bool:
 _NATIVE_BODY = (
     ast.Let, ast.Print, ast.GosubProg, ast.Rem, ast.Data, ast.Read, ast.Dim, ast.Angle,
     ast.Randomize, ast.DefFn, ast.Input, ast.Clear, ast.Restore, ast.End, ast.OnError, ast.Cls,
-    ast.Error,
+    ast.Error, ast.DefType,
 )
 
 

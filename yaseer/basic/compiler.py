@@ -27,8 +27,12 @@ while a program runs; the plain variant carries no cost for tracing.
 
 from __future__ import annotations
 
+import math
+
 from yaseer.basic import syntax_tree as ast
 from yaseer.basic.blocks import data_statements, flatten, nodes, plan, splits, walk_statements
+from yaseer.basic.dialect import CASIO
+from yaseer.basic.number_models import NUMERIC, array_local, local_name, number_model
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # noqa: F401  (re-exported)
 from yaseer.basic.errors import (
     BasicError, FOR_WITHOUT_NEXT, OUT_OF_MEMORY, SYNTAX_ERROR, TYPE_MISMATCH, UNDEFINED_LINE,
@@ -44,6 +48,7 @@ _FUNCTIONS = {
     "EXP": ("n", "n", "_exp"), "LOG": ("n", "n", "_log"), "RND": ("n", "n", "_rnd"),
     "LEN": ("s", "n", "_len"), "STR$": ("n", "s", "_strs"), "VAL": ("s", "n", "_val"),
     "CHR$": ("n", "s", "_chr"), "ASC": ("s", "n", "_asc"),
+    "CINT": ("n", "n", "_cint"), "CSNG": ("n", "n", "_csng"), "CDBL": ("n", "n", "_cdbl"),
     "LEFT$": ("sn", "s", "_left"), "RIGHT$": ("sn", "s", "_right"), "MID$": ("sn", "s", "_mid"),
 }
 _OPTIONAL_LAST_ARGUMENT = {"RND": "n", "MID$": "n"}
@@ -61,13 +66,6 @@ def _type_mismatch() -> CompileError:
     return CompileError("Type mismatch", TYPE_MISMATCH)
 
 
-def local_name(name: str) -> str:
-    """The Python local for scalar ``name``: ``n_QQ`` for QQ, ``s_A`` for A$."""
-    return "s_" + name[:-1] if name.endswith("$") else "n_" + name
-
-
-def array_local(name: str) -> str:
-    return "b_" + name[:-1] if name.endswith("$") else "a_" + name
 
 
 class _Block:
@@ -88,12 +86,14 @@ class _BlockScope:
 
     def scalar(self, name: str, write: bool = False) -> str:
         block = self.compiler.cur
+        name = self.compiler.numbers.name(name)
         self.compiler.scalars.add(name)
         block.scalars[name] = block.scalars.get(name, False) or write
         return local_name(name)
 
     def array(self, name: str, ndim: int) -> str:
         block = self.compiler.cur
+        name = self.compiler.numbers.name(name)
         block.arrays.setdefault(name, ndim)
         return array_local(name)
 
@@ -103,17 +103,18 @@ class _FnScope:
 
     def __init__(self, compiler: "AreaCompiler", params: list):
         self.compiler = compiler
-        self.params = set(params)
+        self.params = {compiler.numbers.name(p) for p in params}
         self.uses_fn = False
 
     def scalar(self, name: str, write: bool = False) -> str:
+        name = self.compiler.numbers.name(name)
         if name in self.params:
-            return "p_" + name.replace("$", "_s")
+            return "p" + local_name(name)
         self.compiler.scalars.add(name)
         return f"_S[{name!r}]"
 
     def array(self, name: str, ndim: int) -> str:
-        return f"_arr({name!r}, {ndim})"
+        return f"_arr({self.compiler.numbers.name(name)!r}, {ndim})"
 
 
 def _is_relation(node) -> bool:
@@ -199,8 +200,9 @@ class AreaCompiler:
     """Compiles the lines of one program area (see the module docstring)."""
 
     def __init__(self, lines: list, area: int = 0, direct: bool = False, entry_lines=(), trace: bool = False,
-                 dynamic_loops=()):
+                 dynamic_loops=(), dialect=CASIO):
         self.area = area
+        self.numbers = number_model(dialect)
         self.direct = direct
         self.trace = trace and not direct
         self.dynamic_loops = set(dynamic_loops)
@@ -262,10 +264,20 @@ class AreaCompiler:
         return method(node, scope)
 
     def numeric(self, node, scope) -> str:
+        return self.typed(node, scope)[0]
+
+    def typed(self, node, scope) -> tuple[str, str]:
+        """(code, numeric type) of a numeric expression; a string is Type mismatch."""
         code, kind = self.expr(node, scope)
-        if kind != "n":
+        if kind not in NUMERIC:
             raise _type_mismatch()
-        return code
+        return code, kind
+
+    def kind_of(self, node) -> str:
+        """The type of a variable, array element or FN reference (``"s"`` or numeric)."""
+        if isinstance(node, (ast.Var, ast.Elem, ast.FnCall)):
+            return self.numbers.kind(node.name)
+        return ast.expr_type(node)
 
     def string(self, node, scope) -> str:
         code, kind = self.expr(node, scope)
@@ -274,16 +286,16 @@ class AreaCompiler:
         return code
 
     def expr_Num(self, node, scope):
-        return repr(node.value), "n"
+        return self.numbers.literal(node.value, node.kind)
 
     def expr_Str(self, node, scope):
         return repr(node.value), "s"
 
     def expr_Var(self, node, scope):
-        return scope.scalar(node.name), ast.expr_type(node)
+        return scope.scalar(node.name), self.kind_of(node)
 
     def expr_Elem(self, node, scope):
-        return self.element(node, scope), ast.expr_type(node)
+        return self.element(node, scope), self.kind_of(node)
 
     def element(self, node, scope) -> str:
         code = scope.array(node.name, len(node.indices))
@@ -297,35 +309,35 @@ class AreaCompiler:
         return code
 
     def expr_Unary(self, node, scope):
-        operand = self.numeric(node.operand, scope)
+        operand, kind = self.typed(node.operand, scope)
         if node.op == "NOT":
-            return f"_not({operand})", "n"
-        return (f"(-{operand})" if node.op == "-" else operand), "n"
+            return self.numbers.logical_not(operand)
+        return self.numbers.negate(operand, kind) if node.op == "-" else (operand, kind)
 
     def expr_Binary(self, node, scope):
         op = node.op
         left, lkind = self.expr(node.left, scope)
         right, rkind = self.expr(node.right, scope)
         if op in _PY_RELATIONS:
-            if lkind != rkind:
+            if (lkind == "s") != (rkind == "s"):
                 raise _type_mismatch()
-            return f"(-1.0 if {left} {_PY_RELATIONS[op]} {right} else 0.0)", "n"
+            return self.numbers.truth(f"{left} {_PY_RELATIONS[op]} {right}")
         if op == "+" and lkind == "s" and rkind == "s":
             return f"_cat({left}, {right})", "s"
-        if lkind != "n" or rkind != "n":
+        if lkind not in NUMERIC or rkind not in NUMERIC:
             raise _type_mismatch()
         if op in ("+", "-", "*", "/"):
             # a left-leaning chain (A+B+C...) stays flat: Python groups + - and * / the same way
             group = ("+", "-") if op in ("+", "-") else ("*", "/")
             if isinstance(node.left, ast.Binary) and node.left.op in group and left.startswith("("):
                 left = left[1:-1]
-            return f"({left} {op} {right})", "n"
+            return self.numbers.arithmetic(op, left, lkind, right, rkind)
         if op == "^":
+            if self.numbers.typed:
+                return self.numbers.power(left, lkind, right, rkind)
             if isinstance(node.right, ast.Num) and node.right.value == 2.0 and _simple_operand(left):
                 return f"({left} * {left})", "n"
-            return f"_pow({left}, {right})", "n"
-        helper = {"\\": "_idiv", "MOD": "_mod", "AND": "_and", "OR": "_or"}[op]
-        return f"{helper}({left}, {right})", "n"
+        return self.numbers.helper(op, left, right)
 
     def expr_Call(self, node, scope):
         argtypes, result, helper = _FUNCTIONS[node.name]
@@ -334,34 +346,44 @@ class AreaCompiler:
         expected = argtypes + (optional or "")
         if not (len(argtypes) <= len(args) <= len(expected)):
             if node.name == "RND" and not args:
-                return "_rnd(1.0)", "n"
+                return self.numbers.call("RND", "_rnd", ["1.0"], [self.numbers.widest], "n")
             raise _syntax_error()
-        codes = []
+        codes, kinds = [], []
         for arg, kind in zip(args, expected):
-            codes.append(self.string(arg, scope) if kind == "s" else self.numeric(arg, scope))
-        return f"{helper}({', '.join(codes)})", result
+            code, kind = (self.string(arg, scope), "s") if kind == "s" else self.typed(arg, scope)
+            codes.append(self.numbers.printable(code, kind) if node.name == "STR$" else code)
+            kinds.append(kind)
+        return self.numbers.call(node.name, helper, codes, kinds, result)
 
     def expr_FnCall(self, node, scope):
-        params = self.fn_params.get(node.name)
+        params = self.fn_params.get(self.numbers.name(node.name))
         if params is not None:  # a DEF FN of this area: check the call against it
             if len(params) != len(node.args):
                 raise _syntax_error()
             for param, arg in zip(params, node.args):
-                if ast.expr_type(arg) != ast.expr_type(ast.Var(param)):
+                if (ast.expr_type(arg) == "s") != (self.numbers.kind(param) == "s"):
                     raise _type_mismatch()
         scope.uses_fn = True
-        args = ", ".join(self.expr(a, scope)[0] for a in node.args)
-        return f"_fn({node.name!r}, {len(node.args)})({args})", ast.expr_type(node)
+        args = []
+        for k, arg in enumerate(node.args):
+            code, kind = self.expr(arg, scope)
+            if params is not None and kind in NUMERIC:
+                code = self.numbers.convert(code, kind, self.numbers.kind(params[k]))
+            args.append(code)
+        name = self.numbers.name(node.name)
+        return f"_fn({name!r}, {len(node.args)})({', '.join(args)})", self.kind_of(node)
 
     def expr_SysVar(self, node, scope):
-        return ("_M.err" if node.name == "ERR" else "_M.erl"), "n"
+        if node.name == "PI":
+            return repr(math.pi), "n"
+        return ("_M.err" if node.name == "ERR" else "_M.erl"), self.numbers.integer
 
     def condition(self, node, scope) -> str:
         """A Python boolean expression for an IF condition."""
         if isinstance(node, ast.Binary) and node.op in _PY_RELATIONS:
             left, lkind = self.expr(node.left, scope)
             right, rkind = self.expr(node.right, scope)
-            if lkind != rkind:
+            if (lkind == "s") != (rkind == "s"):
                 raise _type_mismatch()
             return f"{left} {_PY_RELATIONS[node.op]} {right}"
         if isinstance(node, ast.Binary) and node.op in ("AND", "OR") and _is_relation(node):
@@ -369,7 +391,7 @@ class AreaCompiler:
             return f"({self.condition(node.left, scope)}) {word} ({self.condition(node.right, scope)})"
         if isinstance(node, ast.Unary) and node.op == "NOT" and _is_relation(node.operand):
             return f"not ({self.condition(node.operand, scope)})"
-        return f"{self.numeric(node, scope)} != 0.0"
+        return f"{self.numeric(node, scope)} != 0"
 
     # -- statements
     def statement(self, stmt) -> None:
@@ -396,9 +418,14 @@ class AreaCompiler:
             block.code.insert(mark, (self.indent, "#FLUSH#"))
 
     def assign(self, target, value_code: str, value_kind: str, scope, check: bool) -> None:
-        """Store ``value_code`` in a variable or element; ``check`` adds the Overflow test."""
-        if ast.expr_type(target) != value_kind:
+        """Store ``value_code`` in a variable or element; ``check`` adds the Overflow test.
+
+        A number is converted to the target's numeric type (GW-BASIC's types)."""
+        target_kind = self.kind_of(target)
+        if (target_kind == "s") != (value_kind == "s"):
             raise _type_mismatch()
+        if value_kind != "s":
+            value_code = self.numbers.convert(value_code, value_kind, target_kind)
         if isinstance(target, ast.Var):
             name = scope.scalar(target.name, write=True)
             self.emit(f"{name} = {value_code}")
@@ -414,7 +441,8 @@ class AreaCompiler:
 
     def stmt_Let(self, stmt, scope):
         code, kind = self.expr(stmt.value, scope)
-        self.assign(stmt.target, code, kind, scope, kind == "n" and _may_overflow(stmt.value))
+        check = kind != "s" and _may_overflow(stmt.value) and self.kind_of(stmt.target) != "%"
+        self.assign(stmt.target, code, kind, scope, check)
 
     def stmt_Rem(self, stmt, scope):
         pass
@@ -438,7 +466,7 @@ class AreaCompiler:
                 code, kind = self.expr(item, scope)
                 if kind != "s" and items[k + 1:k + 2] == [","]:
                     parts.append("_NUMCOMMA")  # a number a comma follows (see Machine._blank_before_comma)
-                parts.append(code)
+                parts.append(self.numbers.printable(code, kind))
         # a PRINT ending in a separator, TAB(n) or SPC(n) keeps the line open
         newline = not items or not (items[-1] in (",", ";") or isinstance(items[-1], (ast.Tab, ast.Spc)))
         return parts, newline
@@ -554,6 +582,7 @@ class AreaCompiler:
 
     def stmt_Dim(self, stmt, scope):
         for name, sizes in stmt.arrays:
+            name = self.numbers.name(name)
             codes = ", ".join(self.numeric(s, scope) for s in sizes)
             self.emit(f"_dim({name!r}, ({codes},))")
             self.emit(f"#ARRAY#{name}")
@@ -564,7 +593,7 @@ class AreaCompiler:
 
     def stmt_Read(self, stmt, scope):
         for target in stmt.targets:
-            kind = ast.expr_type(target)
+            kind = "s" if self.kind_of(target) == "s" else self.numbers.widest
             self.assign(target, "_read_s()" if kind == "s" else "_read_n()", kind, scope, False)
 
     def stmt_Restore(self, stmt, scope):
@@ -574,22 +603,29 @@ class AreaCompiler:
         self.emit(f"_restore({stmt.target!r})")
 
     def stmt_Input(self, stmt, scope):
-        kinds = "".join(ast.expr_type(t) for t in stmt.targets)
+        kinds = "".join("s" if self.kind_of(t) == "s" else "n" for t in stmt.targets)
         values = self.new_temp()
         self.emit(f"{values} = _input({stmt.prompt!r}, {stmt.question_mark}, {kinds!r})")
         for n, target in enumerate(stmt.targets):
-            self.assign(target, f"{values}[{n}]", kinds[n], scope, False)
+            self.assign(target, f"{values}[{n}]", "s" if kinds[n] == "s" else self.numbers.widest,
+                        scope, False)
 
     def stmt_DefFn(self, stmt, scope):
         fn_scope = _FnScope(self, stmt.params)
         body, kind = self.expr(stmt.body, fn_scope)
-        if kind != ast.expr_type(ast.Var(stmt.name)):
+        fn_kind = self.numbers.kind(stmt.name)
+        if (kind == "s") != (fn_kind == "s"):
             raise _type_mismatch()
+        if kind != "s":
+            body = self.numbers.convert(body, kind, fn_kind)
         self.fn_count += 1
         fname = f"_fn_{self.fn_count}"
-        params = ", ".join("p_" + p.replace("$", "_s") for p in stmt.params)
+        params = ", ".join("p" + local_name(self.numbers.name(p)) for p in stmt.params)
         self.prelude.append(f"def {fname}({params}):\n    return {body}\n")
-        self.emit(f"_M.fns[{stmt.name!r}] = ({fname}, {len(stmt.params)})")
+        self.emit(f"_M.fns[{self.numbers.name(stmt.name)!r}] = ({fname}, {len(stmt.params)})")
+
+    def stmt_DefType(self, stmt, scope):
+        pass  # applied to the whole program before compiling (number_models.TypedNumbers)
 
     def stmt_Resume(self, stmt, scope):
         if stmt.mode == "line":
@@ -660,23 +696,33 @@ class AreaCompiler:
         self.indent -= 1
 
     # -- FOR / NEXT
-    @staticmethod
-    def loop_key(var) -> str:
-        """The FOR-stack key of a control variable: ``I``, or ``A()`` for an element."""
-        return var.name if isinstance(var, ast.Var) else var.name + "()"
+    def loop_key(self, var) -> str:
+        """The FOR-stack key of a control variable: ``I``, or ``A()`` for an element
+        (gw: with its type character, ``I!``)."""
+        name = self.numbers.name(var.name)
+        return name if isinstance(var, ast.Var) else name + "()"
 
     def loop_var(self, var, scope) -> tuple[str, str]:
         """(Python target for the control variable, FOR-stack key)."""
-        if ast.expr_type(var) != "n":
+        if self.kind_of(var) == "s":
             raise _type_mismatch()
         if isinstance(var, ast.Var):
             return scope.scalar(var.name, write=True), self.loop_key(var)
         return self.element(var, scope), self.loop_key(var)
 
+    def stepping(self, var_node, var: str, step: str) -> str:
+        """The code of ``var + step`` for a FOR variable (rounded to its type)."""
+        return self.numbers.loop_helpers(self.kind_of(var_node))[1].format(var=var, step=step)
+
     def stmt_For(self, stmt, scope, native_next: int | None = None):
-        start = self.numeric(stmt.start, scope)
-        limit = self.numeric(stmt.stop, scope)
-        step = "1.0" if stmt.step is None else self.numeric(stmt.step, scope)
+        kind = self.kind_of(stmt.var)
+        if kind == "s":
+            raise _type_mismatch()
+        convert = self.numbers.convert
+        start = convert(*self.typed(stmt.start, scope), kind)
+        limit = convert(*self.typed(stmt.stop, scope), kind)
+        one = self.numbers.one()
+        step = one if stmt.step is None else convert(*self.typed(stmt.step, scope), kind)
         var, key = self.loop_var(stmt.var, scope)
         n = self.new_temp()
         self.emit(f"_v{n} = {start}; _l{n} = {limit}; _s{n} = {step}")
@@ -693,7 +739,7 @@ class AreaCompiler:
                 test = f"{var} >= _l{n}"
             else:
                 test = f"({var} <= _l{n} if _s{n} >= 0.0 else {var} >= _l{n})"
-            mode = self.loop_mode(stmt)
+            mode = self.loop_mode(stmt) if self.numbers.may_iterate(stmt, kind) else "while"
             if mode == "count":
                 # the body neither reads nor changes the variable: count the passes
                 self.emit(f"if {test}:")
@@ -707,7 +753,7 @@ class AreaCompiler:
                 # the body never changes the variable: iterate over its values
                 self.emit(f"if {test}:")
                 self.indent += 1
-                self.emit(f"for {var} in _frange(_v{n}, _l{n}, _s{n}):")
+                self.emit(f"for {var} in {self.numbers.loop_helpers(kind)[0]}(_v{n}, _l{n}, _s{n}):")
                 return n, var, step_value, mode
             self.emit(f"if {test}:")
             self.indent += 1
@@ -726,8 +772,8 @@ class AreaCompiler:
             self.cur = None
         block.code.append((indent + 1, f"_for({key!r}, _l{n}, _s{n}, {body_block})"))
         block.code.append((indent + 1, f"return {body_block}"))
-        # a loop that never runs leaves its variable one STEP past the start (GW-BASIC)
-        block.code.append((indent, f"{var} = _v{n} + _s{n}"))
+        # a loop that never runs leaves its variable at the start value (GW-BASIC's
+        # source: FOR hands over to NEXTS in NEXT86.ASM with NXTFLG = 0; see compatibility.md)
         if skip_index is None:
             block.code.append((indent, f"raise _err('FOR without NEXT', {FOR_WITHOUT_NEXT})"))
         else:
@@ -745,7 +791,7 @@ class AreaCompiler:
             return
         target, key = self.loop_var(var, scope)
         self.emit(f"_f = _next({key!r})")
-        self.emit(f"{target} = {target} + _f.step")
+        self.emit(f"{target} = {self.stepping(var, target, '_f.step')}")
         self.emit(f"if {target} <= _f.limit if _f.step >= 0.0 else {target} >= _f.limit: return _f.body")
         self.emit("_pop()")
 
@@ -873,7 +919,8 @@ class AreaCompiler:
         if counting:
             self.counting_vars.discard(stmt.var.name)
         self.index = j  # (stepping cannot fail, so NEXT's line needs no marker in the loop)
-        increment = repr(step_value) if step_value is not None else f"_s{n}"
+        increment = repr(step_value) if step_value is not None and not self.numbers.typed else f"_s{n}"
+        increment = self.stepping(stmt.var, var, increment)
         if mode == "count":
             self.indent -= 2
             self.emit("except BaseException:")
@@ -882,21 +929,21 @@ class AreaCompiler:
             self.emit(f"{var} = _fafter(_it{n}, _v{n}, _s{n})")
         elif mode == "values":
             self.indent -= 1
-            self.emit(f"{var} = {var} + {increment}")
+            self.emit(f"{var} = {increment}")
         else:
-            self.emit(f"{var} = {var} + {increment}")
+            self.emit(f"{var} = {increment}")
             self.indent -= 1
         self.indent -= 1
-        # a loop that never runs leaves its variable one STEP past the start (GW-BASIC)
-        self.emit("else:")
-        self.emit(f"    {var} = {var} + {increment}")
+        # a loop that never runs leaves its variable at the start value (see stmt_For)
         self.line = None
         self.set_line(self.flat[j][0])
         return j + 1
 
     # -- the whole area
     def compile(self) -> CompiledArea:
-        """Generate every block of the area (DATA and DEF FN collected first)."""
+        """Generate every block of the area (DEF types, DATA and DEF FN collected first)."""
+        self.numbers.set_types(s for _, stmt in self.flat if not isinstance(stmt, BasicError)
+                               for s in walk_statements(stmt) if isinstance(s, ast.DefType))
         for i, (number, stmt) in enumerate(self.flat):
             for s in ([] if isinstance(stmt, BasicError) else data_statements(stmt)):
                 self.data_lines.setdefault(number, len(self.data))
@@ -904,7 +951,7 @@ class AreaCompiler:
         for _, stmt in self.flat:
             for s in ([] if isinstance(stmt, BasicError) else walk_statements(stmt)):
                 if isinstance(s, ast.DefFn):
-                    self.fn_params.setdefault(s.name, s.params)
+                    self.fn_params.setdefault(self.numbers.name(s.name), s.params)
         self.walk(0, len(self.flat))
         end = self.entry_block[len(self.flat)]
         if self.cur is not None:
@@ -1008,8 +1055,8 @@ def split_data(text: str) -> list[str]:
 
 
 def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=(),
-                 trace: bool = False, dynamic_loops=()) -> CompiledArea:
-    """Compile an area's parsed lines (``syntax_tree.Line`` in line order).
+                 trace: bool = False, dynamic_loops=(), dialect=CASIO) -> CompiledArea:
+    """Compile an area's parsed lines (``syntax_tree.Line`` in line order) for ``dialect``.
 
     ``entry_lines`` are lines that must start a block although no jump names
     them (RUN n, or a GOTO typed in direct mode); ``trace`` compiles the TRON
@@ -1017,4 +1064,4 @@ def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=(
     indices of FOR loops to run through the FOR stack even where they could be
     native (CONT resumes a native loop broken by Ctrl-C that way).
     """
-    return AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops).compile()
+    return AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect).compile()

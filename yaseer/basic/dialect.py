@@ -19,7 +19,7 @@ Field names are stable: other modules build on them.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from yaseer.basic.randomness import GwRandom, RepeatableRandom
 
@@ -44,6 +44,10 @@ class Dialect:
         run of letters does not continue it into a longer name).
         ``pi_keyword``: True makes ``PI`` the constant pi (a Casio keyword);
         False leaves it an ordinary variable name (GW-BASIC has no PI).
+        ``own_words``: keywords only this dialect reserves, on top of the
+        common ones in scanner.py (Casio: ``DEG RAD``; GW: ``DEFINT DEFSNG
+        DEFDBL DEFSTR XOR EQV IMP``).  ``PI`` and ``PROG`` are reserved by
+        ``pi_keyword`` and ``program_areas``.
 
     Number model
         ``typed_numbers``: False is the pocket computer's one numeric type
@@ -99,6 +103,7 @@ class Dialect:
     name: str
     keyword_first: bool
     pi_keyword: bool
+    own_words: tuple[str, ...]
     typed_numbers: bool
     print_digits: int
     width: int | None
@@ -113,6 +118,10 @@ class Dialect:
     errors_when_reached: bool = False
     comma_trims_number: bool = False
 
+    def with_program_areas(self) -> "Dialect":
+        """This dialect with ``GOSUB PROG n`` (``--prog`` gives areas in gw too)."""
+        return self if self.program_areas else replace(self, program_areas=True)
+
     def implicit_size(self, name: str, ndim: int) -> int:
         """The largest subscript of array ``name`` with ``ndim`` dimensions used without DIM."""
         if ndim == 1:
@@ -123,13 +132,15 @@ class Dialect:
 
 
 CASIO = Dialect(
-    name="casio", keyword_first=True, pi_keyword=True, typed_numbers=False, print_digits=10,
+    name="casio", keyword_first=True, pi_keyword=True, own_words=("DEG", "RAD"), typed_numbers=False,
+    print_digits=10,
     width=None, zone=14, on_division_by_zero="stop", on_overflow="stop", angle="DEG",
     implicit_arrays=AL_YASEER_DIMENSIONS, default_dimension=10, program_areas=True,
 )
 
 GW = Dialect(
-    name="gw", keyword_first=False, pi_keyword=False, typed_numbers=True, print_digits=7,
+    name="gw", keyword_first=False, pi_keyword=False,
+    own_words=("DEFINT", "DEFSNG", "DEFDBL", "DEFSTR", "XOR", "EQV", "IMP"), typed_numbers=True, print_digits=7,
     width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
     implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,
     errors_when_reached=True, comma_trims_number=True,

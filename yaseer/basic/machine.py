@@ -26,7 +26,8 @@ import sys
 from functools import lru_cache
 from typing import Callable, TextIO
 
-from yaseer.basic import dialect as dialects, formatting, program_cache, runtime
+from yaseer.basic import dialect as dialects, formatting, numbers, program_cache, runtime
+from yaseer.basic.number_models import initial_value
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # MAX_STACK: GOSUB returns + open FOR loops together
 from yaseer.basic.errors import (
     BasicError, OutputError, BREAK, CANT_CONTINUE, DIVISION_BY_ZERO, DUPLICATE_DEFINITION,
@@ -207,6 +208,9 @@ class Machine:
         # The dialect (scanner rules, number model, print rules, error policy, start-up
         # state: see dialect.py); ``angle`` overrides its start-up unit ("deg"/"rad").
         self.dialect = dialects.get_dialect(dialect)
+        # how PRINT shows a number: typed (GW: integers, 7-digit singles, 16-digit D doubles) or not
+        self._printed_number, self._number_text = (
+            (_same, numbers.number_to_text) if self.dialect.typed_numbers else (_as_number, formatting.number_to_text))
         self.screen = OutputStream(screen if screen is not None else sys.stdout, self.dialect.width)
         self.printer = OutputStream(printer if printer is not None else self.screen.stream)
         if printer is None:
@@ -319,7 +323,8 @@ class Machine:
 
             lines = [_parse_cached(number, text, self.dialect) for number, text in sorted(program.items())]
             compiled = compile_area(lines, area if isinstance(area, int) else 0, direct=direct,
-                                    entry_lines=entry_lines, trace=self.tracing, dynamic_loops=dynamic_loops)
+                                    entry_lines=entry_lines, trace=self.tracing, dynamic_loops=dynamic_loops,
+                                    dialect=self.dialect)
             codes = [None] * len(compiled.pieces)
         runtime_state = _AreaRuntime(self, area, compiled)
         namespace = self._namespace(area, runtime_state)
@@ -329,7 +334,7 @@ class Machine:
             program_cache.store(entry, compiled, codes)
         compiled.blocks = [namespace[f"_b{b}"] for b in range(compiled.block_count)]
         for name in compiled.scalars:
-            self.scalars.setdefault(name, "" if name.endswith("$") else 0.0)
+            self.scalars.setdefault(name, initial_value(name))
         if not direct:
             self.compiled[area] = compiled
             self.runtimes[area] = runtime_state
@@ -385,8 +390,11 @@ class Machine:
             "_mod": runtime.modulo, "_and": runtime.logical_and, "_or": runtime.logical_or,
             "_not": runtime.logical_not, "_frange": runtime.float_range,
             "_fcount": runtime.pass_counter, "_fvalue": runtime.counted_value,
-            "_fafter": runtime.counted_final, "_tr": self.trace_line,
+            "_fafter": runtime.counted_final, "_tr": self.trace_line, "_cint": lambda x: float(runtime.cint(x)),
+            "_csng": float, "_cdbl": float,
         }
+        if self.dialect.typed_numbers:
+            ns.update(numbers.RUNTIME)
         ns.update(self._trig_functions())
         self.namespaces[area] = ns
         return ns
@@ -410,8 +418,10 @@ class Machine:
 
         for area, compiled in list(self.compiled.items()):
             extra = tuple(self._extra_entries) if area == 0 else ()
-            lines = [_parse_cached(number, text, self.dialect) for number, text in sorted(self.programs.get(area, {}).items())]
-            variant = compile_area(lines, area, entry_lines=extra, trace=on, dynamic_loops=compiled.dynamic_loops)
+            lines = [_parse_cached(number, text, self.dialect)
+                     for number, text in sorted(self.programs.get(area, {}).items())]
+            variant = compile_area(lines, area, entry_lines=extra, trace=on, dynamic_loops=compiled.dynamic_loops,
+                                   dialect=self.dialect)
             namespace = self.namespaces[area]
             for first_line, text in variant.pieces:
                 self._exec_piece(text, first_line, area, namespace)
@@ -448,7 +458,7 @@ class Machine:
     def scalar(self, name: str):
         """The value of scalar ``name`` (0.0, or "" for a string, if unset)."""
         name = name.upper()
-        return self.scalars.get(name, "" if name.endswith("$") else 0.0)
+        return self.scalars.get(name, initial_value(name))
 
     def set_scalar(self, name: str, value) -> None:
         name = name.upper()
@@ -465,7 +475,7 @@ class Machine:
             return found
         dims = (self.dialect.implicit_size(name, ndim),) * ndim
         self._reserve(name, dims)
-        created = _new_array(dims, "" if name.endswith("$") else 0.0)
+        created = _new_array(dims, initial_value(name))
         self.arrays[name] = created
         self.array_dims[name] = dims
         return created
@@ -487,14 +497,14 @@ class Machine:
         if any(d < 0 for d in dims):
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         self._reserve(name, dims)
-        self.arrays[name] = _new_array(dims, "" if name.endswith("$") else 0.0)
+        self.arrays[name] = _new_array(dims, initial_value(name))
         self.array_dims[name] = dims
         self.explicit_arrays.add(name)
 
     def clear(self) -> None:
         """CLEAR: every variable to 0 or "", arrays back to their implicit state, no FN."""
         for name in self.scalars:
-            self.scalars[name] = "" if name.endswith("$") else 0.0
+            self.scalars[name] = initial_value(name)
         self.arrays.clear()
         self.array_dims.clear()
         self.array_elements = 0
@@ -930,11 +940,12 @@ class Machine:
         for item in items:
             kind = type(item)
             if kind is not float and kind is not str and isinstance(item, (int, float)):
-                item, kind = _as_number(item), float  # e.g. a numpy float a Python area stored
+                # casio: e.g. a numpy float a Python area stored; gw: an integer or a double
+                item, kind = self._printed_number(item), float
             if kind is float:
                 if item - item:
                     runtime.overflow()
-                text = formatting.number_to_text(item)
+                text = self._number_text(item)
                 if comma_follows:
                     text = self._blank_before_comma(stream, text)
                     comma_follows = False
@@ -1119,6 +1130,10 @@ def _resume_without_error() -> BasicError:
     err = BasicError("RESUME without error", RESUME_WITHOUT_ERROR)
     err.trappable = False
     return err
+
+
+def _same(value):
+    return value
 
 
 def _as_number(value):

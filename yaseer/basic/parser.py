@@ -57,8 +57,14 @@ class _TokenListLexer(Lexer):
         return iter(tokens)
 
 
-def _line_number(token: Token) -> int:
+def _number_value(token: Token):
+    """A NUMBER token's value (typed scanners give ``(value, type)``)."""
     value = token.value
+    return value[0] if type(value) is tuple else value
+
+
+def _line_number(token: Token) -> int:
+    value = _number_value(token)
     if value != int(value) or value < 0:
         raise BasicError("Syntax error", SYNTAX_ERROR)
     return int(value)
@@ -66,7 +72,7 @@ def _line_number(token: Token) -> int:
 
 _OPERATOR_NAMES = {
     "PLUS": "+", "MINUS": "-", "STAR": "*", "SLASH": "/", "BSLASH": "\\", "CARET": "^",
-    "MOD": "MOD", "AND": "AND", "OR": "OR",
+    "MOD": "MOD", "AND": "AND", "OR": "OR", "XOR": "XOR", "EQV": "EQV", "IMP": "IMP",
     "EQ": "=", "LT": "<", "GT": ">", "LE": "<=", "GE": ">=", "NE": "<>",
 }
 
@@ -262,6 +268,15 @@ class _ToAst(Transformer):
     def width_stmt(self, c):
         return ast.Width(c[1])
 
+    def deftype_stmt(self, c):
+        return ast.DefType(c[0].value[3:], _values(c)[1:])
+
+    def letters(self, c):
+        first, last = c[0].value, c[-1].value
+        if len(first) != 1 or len(last) != 1 or not first.isalpha() or not last.isalpha() or last < first:
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return first + last
+
     # -- expressions
     def binop(self, c):
         left, op, right = c
@@ -282,7 +297,10 @@ class _ToAst(Transformer):
         return ast.FnCall(c[1].value, args)
 
     def number(self, c):
-        return ast.Num(c[0].value)
+        value = c[0].value
+        if type(value) is tuple:
+            return ast.Num(value[0], value[1])
+        return ast.Num(value)
 
     def string(self, c):
         return ast.Str(c[0].value)
@@ -305,8 +323,8 @@ def _parser() -> Lark:
 
 
 def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
-    """The statements of one line's text; raises ``BasicError`` (Syntax error)."""
-    tokens = mark_unsupported(tokenize(text))
+    """The statements of one line's text as ``dialect`` reads it; raises ``BasicError`` (Syntax error)."""
+    tokens = mark_unsupported(tokenize(text, dialect))
     if not tokens:
         return []
     _check_nesting(tokens)

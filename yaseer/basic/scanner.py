@@ -1,10 +1,15 @@
-"""Source text -> tokens, the way the pocket computers' tokenisers read a line.
+"""Source text -> tokens, the way the dialect's tokeniser reads a line.
 
-Keywords are recognised first, wherever they start inside a run of letters:
+Casio (``Dialect.keyword_first``): keywords are recognised first, wherever they start inside a run of letters:
 ``COST`` is ``COS T``, ``GOSUBPROG1`` is ``GOSUB PROG 1``, ``IFX<0THEN`` is
 ``IF X < 0 THEN``.  A variable name is a letter followed by letters and digits
 up to the next place where a keyword starts; a trailing ``$`` makes it a
 string variable.  Case does not matter outside string literals.
+
+GW-BASIC reads a run of name characters as one word (``COST`` is a variable,
+``FORI=1TO3`` a syntax error) and, with ``Dialect.typed_numbers``, number
+literals carry their type (``(value, "%" | "!" | "#")``; see
+:func:`_scan_typed_number`); names keep their type character (``A%``, ``B#``).
 
 The scanner also splits a listing into lines: a physical line that does not
 begin with a line number continues the previous line (the paper wraps long
@@ -15,21 +20,23 @@ Token types are the terminal names declared in ``grammar.lark``.
 
 from __future__ import annotations
 
+import functools
 import re
 
+from yaseer.basic.dialect import CASIO, Dialect
 from yaseer.basic.errors import BasicError, OVERFLOW, SYNTAX_ERROR
 
-# Statement and operator keywords: each is its own terminal type.
+# Statement and operator keywords every dialect reserves: each is its own terminal type.
 STATEMENT_KEYWORDS = (
     "LET", "PRINT", "LPRINT", "USING", "FOR", "TO", "STEP", "NEXT", "GOTO", "GOSUB",
-    "PROG", "RETURN", "IF", "THEN", "ELSE", "ON", "END", "STOP", "DIM", "CLEAR",
-    "READ", "RESTORE", "INPUT", "DEF", "FN", "ERROR", "RESUME", "RANDOMIZE", "DEG",
-    "RAD", "AND", "OR", "NOT", "MOD", "TAB", "SPC", "TRON", "TROFF", "CLS", "WIDTH",
+    "RETURN", "IF", "THEN", "ELSE", "ON", "END", "STOP", "DIM", "CLEAR",
+    "READ", "RESTORE", "INPUT", "DEF", "FN", "ERROR", "RESUME", "RANDOMIZE",
+    "AND", "OR", "NOT", "MOD", "TAB", "SPC", "TRON", "TROFF", "CLS", "WIDTH",
 )
 # Functions of one argument (parentheses optional: ``COS T``).
 UNARY_FUNCTIONS = (
     "SIN", "COS", "TAN", "ATN", "SQR", "ABS", "INT", "FIX", "SGN", "EXP", "LOG", "RND",
-    "LEN", "STR$", "VAL", "CHR$", "ASC",
+    "LEN", "STR$", "VAL", "CHR$", "ASC", "CINT", "CSNG", "CDBL",
 )
 # Functions that need a parenthesised argument list.
 LIST_FUNCTIONS = ("LEFT$", "RIGHT$", "MID$")
@@ -37,25 +44,56 @@ LIST_FUNCTIONS = ("LEFT$", "RIGHT$", "MID$")
 SYSTEM_VARIABLES = ("ERR", "ERL")
 COMMENT_KEYWORD = "REM"
 DATA_KEYWORD = "DATA"
+# Words some dialects reserve (Dialect.own_words, pi_keyword, program_areas) -> token type.
+DIALECT_WORDS = {
+    "PROG": "PROG", "DEG": "DEG", "RAD": "RAD", "PI": "SYSVAR", "XOR": "XOR", "EQV": "EQV",
+    "IMP": "IMP", "DEFINT": "DEFTYPE", "DEFSNG": "DEFTYPE", "DEFDBL": "DEFTYPE", "DEFSTR": "DEFTYPE",
+}
+# GW-BASIC reads these keywords even when name characters follow (``FNA``, ``TAB(``).
+_GW_PREFIX_KEYWORDS = ("FN",)
 
-_KEYWORD_TYPES: dict[str, str] = {}
+_COMMON_TYPES: dict[str, str] = {}
 for _word in STATEMENT_KEYWORDS:
-    _KEYWORD_TYPES[_word] = _word
+    _COMMON_TYPES[_word] = _word
 for _word in UNARY_FUNCTIONS:
-    _KEYWORD_TYPES[_word] = "FUNC"
+    _COMMON_TYPES[_word] = "FUNC"
 for _word in LIST_FUNCTIONS:
-    _KEYWORD_TYPES[_word] = "FUNCN"
+    _COMMON_TYPES[_word] = "FUNCN"
 for _word in SYSTEM_VARIABLES:
-    _KEYWORD_TYPES[_word] = "SYSVAR"
-_KEYWORD_TYPES[COMMENT_KEYWORD] = "REMARK"
-_KEYWORD_TYPES[DATA_KEYWORD] = "DATA_TEXT"
+    _COMMON_TYPES[_word] = "SYSVAR"
+_COMMON_TYPES[COMMENT_KEYWORD] = "REMARK"
+_COMMON_TYPES[DATA_KEYWORD] = "DATA_TEXT"
+_KEYWORD_TYPES = {**_COMMON_TYPES, **DIALECT_WORDS}  # every word some dialect reserves
 
-# Longest keywords first, so that INPUT wins over INT and ERROR over ERR.
-_KEYWORDS_BY_LENGTH = sorted(_KEYWORD_TYPES, key=len, reverse=True)
-_KEYWORDS_BY_LETTER: dict[str, tuple[str, ...]] = {}
-for _word in _KEYWORDS_BY_LENGTH:
-    _KEYWORDS_BY_LETTER.setdefault(_word[0], ())
-    _KEYWORDS_BY_LETTER[_word[0]] += (_word,)
+
+class _Keywords:
+    """One dialect's keyword table: word -> token type, and the words by first letter
+    (longest first, so that INPUT wins over INT and ERROR over ERR)."""
+
+    def __init__(self, dialect: Dialect):
+        words = dict(_COMMON_TYPES)
+        own = list(dialect.own_words)
+        own += ["PI"] if dialect.pi_keyword else []
+        own += ["PROG"] if dialect.program_areas else []
+        for word in own:
+            words[word] = DIALECT_WORDS[word]
+        self.types = words
+        self.by_letter: dict[str, tuple[str, ...]] = {}
+        for word in sorted(words, key=len, reverse=True):
+            self.by_letter[word[0]] = self.by_letter.get(word[0], ()) + (word,)
+
+    def at(self, upper: str, i: int) -> str | None:
+        """The longest keyword that starts at position ``i`` of the upper-cased text."""
+        for word in self.by_letter.get(upper[i], ()):
+            if upper.startswith(word, i):
+                return word
+        return None
+
+
+@functools.lru_cache(maxsize=None)
+def _keywords(dialect: Dialect) -> _Keywords:
+    return _Keywords(dialect)
+
 
 _OPERATORS = {
     "+": "PLUS", "-": "MINUS", "*": "STAR", "/": "SLASH", "\\": "BSLASH", "^": "CARET",
@@ -68,12 +106,9 @@ _RELATIONS = {
 _NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)(E[+-]?\d+)?")
 _LINE_NUMBER = re.compile(r"\s*(\d+)(?=[\sA-Za-z'?]|$)\s?")
 
-def keyword_at(upper: str, i: int) -> str | None:
-    """The longest keyword that starts at position ``i`` of the upper-cased text."""
-    for word in _KEYWORDS_BY_LETTER.get(upper[i], ()):
-        if upper.startswith(word, i):
-            return word
-    return None
+def keyword_at(upper: str, i: int, dialect: Dialect = CASIO) -> str | None:
+    """The longest keyword of ``dialect`` that starts at position ``i`` of the upper-cased text."""
+    return _keywords(dialect).at(upper, i)
 
 
 def _syntax_error() -> BasicError:
@@ -102,14 +137,52 @@ def _scan_data(text: str, i: int) -> tuple[str, int]:
     return text[i:j], j
 
 
-def _scan_name(upper: str, i: int) -> tuple[str, str, int]:
-    """A variable name from ``i``: letters/digits until a keyword starts; ``$`` ends it."""
+def _scan_word(upper: str, i: int, keywords: _Keywords) -> tuple[str, str, int]:
+    """Keyword-first (the pocket computers): a keyword wherever one starts; otherwise a
+    name of letters and digits up to the next place a keyword starts; ``$`` ends it.
+
+    Returns ``(token type, value, end)``.
+    """
+    word = keywords.at(upper, i)
+    if word is not None:
+        return keywords.types[word], word, i + len(word)
     j = i + 1
-    while j < len(upper) and upper[j].isalnum() and upper[j].isascii() and keyword_at(upper, j) is None:
+    while j < len(upper) and upper[j].isalnum() and upper[j].isascii() and keywords.at(upper, j) is None:
         j += 1
     if j < len(upper) and upper[j] == "$":
         return "STRNAME", upper[i:j + 1], j + 1
     return "NAME", upper[i:j], j
+
+
+_NAME_CHARS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789.")
+
+
+def _scan_word_whole(upper: str, i: int, keywords: _Keywords) -> tuple[str, str, int]:
+    """GW-BASIC: letters, digits and ``.`` are read as one word; the word is a keyword
+    when the characters read so far spell one and no name character follows (``FN``
+    excepted: ``FNA`` is ``FN A``), so ``COST`` and ``FORI`` are names; a name may end
+    in a type character ``% ! # $``.  (PC-BASIC 2.0.8's tokeniser, checked on it.)
+    """
+    n = len(upper)
+    j = i
+    while j < n:
+        ch = upper[j]
+        j += 1
+        word = upper[i:j]
+        if word == "GO" and (upper.startswith(" SUB", j) or (upper.startswith(" TO", j) and (
+                j + 3 >= n or upper[j + 3] not in _NAME_CHARS))):
+            word = "GOSUB" if upper[j + 1] == "S" else "GOTO"
+            return word, word, j + len(word) - 1
+        kind = keywords.types.get(word)
+        if kind is not None and (word in _GW_PREFIX_KEYWORDS or j >= n or upper[j] not in _NAME_CHARS):
+            return kind, word, j
+        if ch not in _NAME_CHARS:
+            j -= 1
+            break
+    name = upper[i:j]
+    if j < n and upper[j] in "%!#$":
+        return ("STRNAME" if upper[j] == "$" else "NAME"), name + upper[j], j + 1
+    return "NAME", name, j
 
 
 def _scan_number(upper: str, i: int) -> tuple[float, int]:
@@ -122,13 +195,60 @@ def _scan_number(upper: str, i: int) -> tuple[float, int]:
     return value, match.end()
 
 
-def _lexemes(text: str):
-    """``(token type, value, start, end)`` for each token of one line, in order.
+_TYPED_NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)(?:([ED])([+-]?\d*))?([%!#]?)")
+_RADIX_NUMBER = re.compile(r"&(H[0-9A-F]*|O?[0-7]*)")
+SINGLE_DIGITS = 7  # a literal with more significant digits is double precision (GW-BASIC)
+
+
+def _scan_typed_number(upper: str, i: int) -> tuple[tuple, int]:
+    """A GW-BASIC number literal: ``((value, type), end)`` with type ``%``, ``!`` or ``#``.
+
+    Without a suffix a whole number below 32768 is an integer, a ``D`` exponent or
+    more than 7 digits makes a double, anything else is single precision.
+    ``&H1F`` / ``&O17`` / ``&17`` are 16-bit integers (``&HFFFF`` is -1).
+    """
+    from yaseer.basic.numbers import to_single
+
+    if upper[i] == "&":
+        match = _RADIX_NUMBER.match(upper, i)
+        digits = match.group(1)
+        hexadecimal = digits.startswith("H")
+        digits = digits[1:] if digits[:1] in ("H", "O") else digits
+        value = int(digits, 16 if hexadecimal else 8) if digits else 0
+        if value > 0xFFFF:
+            raise BasicError("Overflow", OVERFLOW)
+        return (value - 0x10000 if value >= 0x8000 else value, "%"), match.end()
+    match = _TYPED_NUMBER.match(upper, i)
+    if match is None:
+        raise _syntax_error()
+    mantissa, letter, exponent, suffix = match.groups()
+    value = float(mantissa + ("E" + (exponent if exponent.strip("+-") else "0") if letter else ""))
+    if value == float("inf"):
+        raise BasicError("Overflow", OVERFLOW)
+    plain = letter is None and "." not in mantissa
+    if suffix == "%" or (not suffix and plain and value < 32768):
+        if not value.is_integer() and suffix == "%":
+            return (to_single(value), "!"), match.end()
+        if value >= 32768:
+            raise _syntax_error()
+        return (int(value), "%"), match.end()
+    digits = len(mantissa.replace(".", "").lstrip("0").rstrip("0") if "." in mantissa else mantissa.lstrip("0"))
+    if suffix == "#" or (not suffix and (letter == "D" or digits > SINGLE_DIGITS)):
+        return (value, "#"), match.end()
+    return (to_single(value), "!"), match.end()
+
+
+def _lexemes(text: str, dialect: Dialect = CASIO):
+    """``(token type, value, start, end)`` for each token of one line, in order, as
+    ``dialect`` reads it (see ``Dialect.keyword_first`` and ``Dialect.typed_numbers``).
 
     ``start:end`` is the token's span in ``text``.  A remark (``REM`` or ``'``)
     is the last lexeme: type ``REMARK``, value the text after it.  Raises
     ``BasicError("Syntax error")`` at a character no token can start with.
     """
+    keywords = _keywords(dialect)
+    scan_word = _scan_word if dialect.keyword_first else _scan_word_whole
+    typed = dialect.typed_numbers
     upper = _upper_outside_strings(text)
     i = 0
     n = len(text)
@@ -144,23 +264,20 @@ def _lexemes(text: str):
         elif ch == "'":
             yield "REMARK", text[i + 1:], start, n
             return
-        elif ch.isdigit() or (ch == "." and i + 1 < n and upper[i + 1].isdigit()):
-            value, i = _scan_number(upper, i)
+        elif ch.isdigit() or (ch == "." and i + 1 < n and upper[i + 1].isdigit()) or (ch == "&" and typed):
+            value, i = _scan_typed_number(upper, i) if typed else _scan_number(upper, i)
             yield "NUMBER", value, start, i
         elif ch.isascii() and ch.isalpha():
-            word = keyword_at(upper, i)
-            if word == COMMENT_KEYWORD:
-                yield "REMARK", text[i + len(word):], start, n
+            kind, word, end = scan_word(upper, i, keywords)
+            if kind == "REMARK":
+                yield "REMARK", text[end:], start, n
                 return
-            if word == DATA_KEYWORD:
-                raw, i = _scan_data(text, i + len(word))
+            if kind == "DATA_TEXT":
+                raw, i = _scan_data(text, end)
                 yield "DATA_TEXT", raw, start, i
-            elif word is not None:
-                i += len(word)
-                yield _KEYWORD_TYPES[word], word, start, i
             else:
-                kind, name, i = _scan_name(upper, i)
-                yield kind, name, start, i
+                i = end
+                yield kind, word, start, i
         elif ch in "<>=":
             pair = upper[i:i + 2]
             symbol = pair if pair in _RELATIONS else ch
@@ -176,8 +293,8 @@ def _lexemes(text: str):
             raise _syntax_error()
 
 
-def tokenize(text: str) -> list:
-    """The tokens of one line's statements (the text after its line number).
+def tokenize(text: str, dialect: Dialect = CASIO) -> list:
+    """The tokens of one line's statements (the text after its line number), as ``dialect`` reads them.
 
     A ``'`` remark after a statement is dropped (no colon is needed before it).
     Raises ``BasicError("Syntax error")`` for a character no token can start with.
@@ -185,7 +302,7 @@ def tokenize(text: str) -> list:
     from lark import Token  # here, not at the top: loading a listing (split_lines) needs no lark
 
     tokens: list = []  # lark Tokens
-    for kind, value, start, _ in _lexemes(text):
+    for kind, value, start, _ in _lexemes(text, dialect):
         if kind == "REMARK" and tokens and text[start] == "'":
             break
         tokens.append(Token(kind, value))
@@ -199,7 +316,7 @@ _FUNCTION_TYPES = {"FUNC", "FUNCN", "TAB", "SPC"}
 _TIGHT_AFTER = {"_COLON", "SEMI", "COMMA", "_RPAR"}
 
 
-def detokenize(text: str) -> str:
+def detokenize(text: str, dialect: Dialect = CASIO) -> str:
     """A line's statements as the pocket computer lists them (LIST).
 
     Keywords are found as the scanner finds them and shown in capitals, with a
@@ -211,7 +328,7 @@ def detokenize(text: str) -> str:
     returned as typed.
     """
     try:
-        lexemes = list(_lexemes(text))
+        lexemes = list(_lexemes(text, dialect))
     except BasicError:
         return text.strip()
     out: list[str] = []

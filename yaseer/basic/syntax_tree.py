@@ -72,6 +72,7 @@ _LIST = object()  # default: a fresh empty list
 @_node
 class Num:
     value: float
+    kind: str = ""  # GW-BASIC literal type "%", "!" or "#"; "" in the untyped (casio) model
 
 
 @_node
@@ -304,6 +305,12 @@ class Cls:
 class Width:
     """``WIDTH n``: the screen's width in columns (PRINT wraps there)."""
     columns: object
+
+
+@_node
+class DefType:
+    kind: str  # "INT", "SNG", "DBL" or "STR" (DEFINT ...)
+    ranges: list  # "AZ": first and last letter of each range
 
 
 @_node

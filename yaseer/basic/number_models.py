@@ -1,0 +1,244 @@
+"""How the compiler writes numbers: the dialect's number model, at compile time.
+
+The compiler asks its model for the Python code of literals, arithmetic,
+conversions and function results, and for the static type of every numeric
+expression; :func:`number_model` picks the model from ``Dialect.typed_numbers``.
+
+* :class:`PlainNumbers` (casio): one numeric type ``"n"``, a Python float;
+  the code is what yaseer has always generated.
+* :class:`TypedNumbers` (gw): types ``"%"`` (16-bit integer), ``"!"``
+  (single, the default), ``"#"`` (double); ``"s"`` is a string in both.  A name
+  without a type character gets its letter's type from DEFINT/DEFSNG/DEFDBL/
+  DEFSTR (collected from the whole program before compiling, in program order:
+  yaseer treats them as declarations, where GW-BASIC runs them as statements).
+  Run-time helpers are in :mod:`yaseer.basic.numbers`.
+"""
+
+from __future__ import annotations
+
+NUMERIC = frozenset("n%!#")
+_RANK = {"%": 0, "!": 1, "#": 2}
+
+
+def local_name(name: str) -> str:
+    """The Python local of scalar ``name``: ``n_QQ`` for QQ or QQ!, ``s_A`` for A$,
+    ``i_A`` for A%, ``d_A`` for A# (a ``.`` in a GW name becomes ``_``)."""
+    prefix = {"$": "s_", "%": "i_", "#": "d_", "!": "n_"}.get(name[-1])
+    if prefix is None:
+        return "n_" + name.replace(".", "_")
+    return prefix + name[:-1].replace(".", "_")
+
+
+def array_local(name: str) -> str:
+    """The Python local holding array ``name`` (``a_``, ``b_`` for strings, ``ai_``, ``ad_``)."""
+    prefix = {"$": "b_", "%": "ai_", "#": "ad_", "!": "a_"}.get(name[-1])
+    if prefix is None:
+        return "a_" + name.replace(".", "_")
+    return prefix + name[:-1].replace(".", "_")
+
+
+def initial_value(name: str):
+    """A variable's value before it is assigned: "" for strings, 0 for ``%``, else 0.0."""
+    last = name[-1]
+    if last == "$":
+        return ""
+    return 0 if last == "%" else 0.0
+
+
+class PlainNumbers:
+    """The pocket computer's numbers: every value a double, type ``"n"``."""
+
+    typed = False
+    widest = "n"  # the type of a number read by READ or INPUT (converted to the target's)
+    integer = "n"  # the type of ERR, ERL
+
+    def set_types(self, statements) -> None:
+        """No DEF types in this model."""
+
+    def name(self, name: str) -> str:
+        return name
+
+    def kind(self, name: str) -> str:
+        return "s" if name.endswith("$") else "n"
+
+    def literal(self, value, kind: str) -> tuple[str, str]:
+        return repr(float(value)), "n"
+
+    def arithmetic(self, op: str, left: str, lkind: str, right: str, rkind: str) -> tuple[str, str]:
+        """``+ - * /`` (plain Python operators on floats)."""
+        return f"({left} {op} {right})", "n"
+
+    def helper(self, op: str, left: str, right: str) -> tuple[str, str]:
+        """``^ \\ MOD AND OR XOR EQV IMP`` through the runtime helpers."""
+        names = {"^": "_pow", "\\": "_idiv", "MOD": "_mod", "AND": "_and", "OR": "_or",
+                 "XOR": "_xor", "EQV": "_eqv", "IMP": "_imp"}
+        return f"{names[op]}({left}, {right})", "n"
+
+    def negate(self, operand: str, kind: str) -> tuple[str, str]:
+        return f"(-{operand})", "n"
+
+    def logical_not(self, operand: str) -> tuple[str, str]:
+        return f"_not({operand})", "n"
+
+    def truth(self, condition: str) -> tuple[str, str]:
+        """-1 or 0 from a Python boolean."""
+        return f"(-1.0 if {condition} else 0.0)", "n"
+
+    def convert(self, code: str, source: str, target: str) -> str:
+        return code
+
+    def call(self, name: str, helper: str, codes: list[str], kinds: list[str], result: str) -> tuple[str, str]:
+        """A built-in function call: ``helper`` (its runtime callable) applied to ``codes``
+        (arguments of types ``kinds``); ``result`` is "s" or "n" from the function table."""
+        return f"{helper}({', '.join(codes)})", result
+
+    def printable(self, code: str, kind: str) -> str:
+        return code
+
+    def one(self) -> str:
+        return "1.0"
+
+    def loop_helpers(self, kind: str) -> tuple[str, str]:
+        """(values helper, increment template) of a FOR loop over a variable of ``kind``."""
+        return "_frange", "{var} + {step}"
+
+    def may_iterate(self, stmt, kind: str) -> bool:
+        """May a native loop iterate (count or values mode) rather than add the step itself?"""
+        return True
+
+
+class TypedNumbers(PlainNumbers):
+    """GW-BASIC's typed numbers (see the module docstring)."""
+
+    typed = True
+    widest = "#"
+    integer = "%"
+    _SUFFIX = {"INT": "%", "SNG": "!", "DBL": "#", "STR": "$"}
+    # result types of the built-in functions: None keeps the argument's type
+    _RESULTS = {
+        "SIN": "!", "COS": "!", "TAN": "!", "ATN": "!", "SQR": "!", "EXP": "!", "LOG": "!",
+        "RND": "!", "VAL": "#", "ABS": None, "INT": None, "FIX": None, "SGN": "%", "LEN": "%",
+        "ASC": "%", "CINT": "%", "CSNG": "!", "CDBL": "#",
+    }
+
+    def __init__(self):
+        self.letters: dict[str, str] = {}
+
+    def set_types(self, statements) -> None:
+        """Apply the program's DEFINT/DEFSNG/DEFDBL/DEFSTR statements (in order)."""
+        for stmt in statements:
+            for first, last in stmt.ranges:
+                for code in range(ord(first), ord(last) + 1):
+                    self.letters[chr(code)] = self._SUFFIX[stmt.kind]
+
+    def name(self, name: str) -> str:
+        if name[-1] in "$%!#":
+            return name
+        return name + self.letters.get(name[0], "!")
+
+    def kind(self, name: str) -> str:
+        last = self.name(name)[-1]
+        return "s" if last == "$" else last
+
+    def literal(self, value, kind: str) -> tuple[str, str]:
+        if kind == "%":
+            return repr(int(value)), "%"
+        return repr(float(value)), kind or "#"
+
+    def arithmetic(self, op: str, left: str, lkind: str, right: str, rkind: str) -> tuple[str, str]:
+        kind = lkind if _RANK[lkind] >= _RANK[rkind] else rkind
+        if op == "/":
+            if kind == "#":
+                return f"({left} / {right})", "#"
+            return f"_sg({left} / {right})", "!"
+        if kind == "%":
+            return f"_ia({left} {op} {right})", "%"
+        if kind == "!":
+            return f"_sg({left} {op} {right})", "!"
+        return f"({left} {op} {right})", "#"
+
+    def helper(self, op: str, left: str, right: str) -> tuple[str, str]:
+        if op == "^":
+            return f"_sg(_pow({left}, {right}))", "!"
+        names = {"\\": "_idiv", "MOD": "_mod", "AND": "_and", "OR": "_or", "XOR": "_xor",
+                 "EQV": "_eqv", "IMP": "_imp"}
+        return f"{names[op]}({left}, {right})", "%"
+
+    def power(self, left: str, lkind: str, right: str, rkind: str) -> tuple[str, str]:
+        """``^``: double when either side is double, else single."""
+        if "#" in (lkind, rkind):
+            return f"_pow({left}, {right})", "#"
+        return f"_sg(_pow({left}, {right}))", "!"
+
+    def negate(self, operand: str, kind: str) -> tuple[str, str]:
+        if kind == "%":
+            return f"_ia(-{operand})", "%"
+        return f"(-{operand})", kind
+
+    def logical_not(self, operand: str) -> tuple[str, str]:
+        return f"_not({operand})", "%"
+
+    def truth(self, condition: str) -> tuple[str, str]:
+        return f"(-1 if {condition} else 0)", "%"
+
+    def convert(self, code: str, source: str, target: str) -> str:
+        """``code`` (of type ``source``) as a value of type ``target``.
+
+        To ``%``: CINT with the 16-bit check, unless ``code`` is an integer variable or
+        literal (an integer expression may have overflowed into single precision)."""
+        if target == "%":
+            if source == "%" and (code.startswith("i_") and code[2:].isidentifier() or _is_int_literal(code)):
+                return code
+            if code.startswith("_ia(") and code.endswith(")"):
+                code = code[4:-1]  # to_int checks the 16-bit range itself
+            return f"_ci({code})"
+        if source == target or target == "#" or source == "%":
+            return code
+        return f"_sg({code})"
+
+    def call(self, name: str, helper: str, codes: list[str], kinds: list[str], result: str) -> tuple[str, str]:
+        code = f"{helper}({', '.join(codes)})"
+        if result == "s":
+            return code, "s"
+        kind = self._RESULTS.get(name, "!")
+        if kind is None:  # ABS INT FIX keep the argument's type
+            kind = kinds[0]
+            if kind == "%":
+                return (f"_ia({code})" if name == "ABS" else codes[0]), "%"
+            return code, kind
+        if kind == "!":
+            return f"_sg({code})", "!"
+        return code, kind
+
+    def printable(self, code: str, kind: str) -> str:
+        return f"_dbl({code})" if kind == "#" else code
+
+    def one(self) -> str:
+        return "1"
+
+    def loop_helpers(self, kind: str) -> tuple[str, str]:
+        if kind == "%":
+            return "_irange", "_ci({var} + {step})"
+        if kind == "!":
+            return "_frange", "_sg({var} + {step})"
+        return "_frange", "{var} + {step}"
+
+    def may_iterate(self, stmt, kind: str) -> bool:
+        """Single-precision loops iterate only over whole numbers (exact in single
+        precision); any other must round each ``+ STEP``, so it adds the step itself."""
+        if kind != "!":
+            return True
+        from yaseer.basic import syntax_tree as ast
+
+        def whole(node) -> bool:
+            return node is None or (isinstance(node, ast.Num) and float(node.value).is_integer())
+        return whole(stmt.start) and whole(stmt.step)
+
+
+def _is_int_literal(code: str) -> bool:
+    return code.lstrip("-").isdigit()
+
+
+def number_model(dialect) -> PlainNumbers:
+    """A fresh model for compiling one area in ``dialect``."""
+    return TypedNumbers() if dialect.typed_numbers else PlainNumbers()

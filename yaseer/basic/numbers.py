@@ -1,0 +1,214 @@
+"""GW-BASIC's number model at run time: 16-bit integers, single and double precision.
+
+The compiled code of a typed dialect (``Dialect.typed_numbers``) calls these.
+A value's Python type carries its BASIC type where the printed text depends on it:
+
+* ``%`` integer: a Python ``int`` in -32768..32767.  ``+ - *`` of two integers
+  that leave that range give a single-precision result (GW-BASIC does the same:
+  ``PRINT 200*200`` shows 40000); storing a value outside it in an integer
+  variable, or using it where an integer is needed (``\\``, ``MOD``, ``AND``
+  ...), is ``Overflow``.
+* ``!`` single precision: a Python ``float`` holding a value exactly
+  representable in IEEE single precision; every single-precision result is
+  rounded to it (:func:`to_single`).  GW-BASIC's Microsoft Binary Format has the
+  same 24-bit mantissa; its range ends at 1.7E+38 (IEEE's at 3.4E+38: yaseer
+  reports Overflow only beyond that).
+* ``#`` double precision: a Python ``float`` (53-bit mantissa; MBF doubles have
+  56, so the 16th digit may differ).  Wrapped in :class:`Double` only on its
+  way to PRINT or STR$, so that it shows 16 digits and ``D`` exponents.
+
+Rounding to an integer (CINT, assignment to ``%``) is half away from zero, as
+GW-BASIC (checked with PC-BASIC: ``CINT(2.5)`` is 3, ``CINT(-2.5)`` is -3).
+"""
+
+from __future__ import annotations
+
+import math
+from array import array
+from decimal import ROUND_HALF_UP, Decimal
+
+from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
+
+INT_MIN, INT_MAX = -32768, 32767
+SINGLE_DIGITS = 7  # significant digits PRINT shows of a single-precision number
+DOUBLE_DIGITS = 16  # ... of a double-precision number
+
+_cell = array("f", [0.0])
+_store = _cell.__setitem__
+
+
+def to_single(x) -> float:
+    """``x`` rounded to the nearest IEEE single-precision value (as a Python float).
+
+    Beyond the single range the result is infinite; the compiled code's overflow
+    checks (``x - x``) turn that into ``Overflow``.
+    """
+    _store(0, x)
+    return _cell[0]
+
+
+def _overflow() -> BasicError:
+    return BasicError("Overflow", OVERFLOW)
+
+
+def int_result(x):
+    """The result of ``+ - *`` (or unary minus, ABS) on integers: ``x`` itself when it
+    fits in 16 bits, else ``x`` as single precision."""
+    if INT_MIN <= x <= INT_MAX:
+        return x
+    return to_single(x)
+
+
+def to_int(x) -> int:
+    """CINT: ``x`` rounded half away from zero; ``Overflow`` outside -32768..32767."""
+    if type(x) is int:
+        if INT_MIN <= x <= INT_MAX:
+            return x
+        raise _overflow()
+    if x != x:
+        raise _overflow()
+    r = int(x + 0.5) if x >= 0 else -int(-x + 0.5)
+    if INT_MIN <= r <= INT_MAX:
+        return r
+    raise _overflow()
+
+
+def int_divide(a, b) -> int:
+    """``a \\ b``: both rounded to integers, the quotient truncated toward zero."""
+    x, y = to_int(a), to_int(b)
+    if y == 0:
+        raise BasicError("Division by zero", DIVISION_BY_ZERO)
+    q = abs(x) // abs(y)
+    return int_result(q if (x >= 0) == (y >= 0) else -q)
+
+
+def int_modulo(a, b) -> int:
+    """``a MOD b``: both rounded to integers; the remainder has the sign of ``a``."""
+    x, y = to_int(a), to_int(b)
+    if y == 0:
+        raise BasicError("Division by zero", DIVISION_BY_ZERO)
+    return int(math.fmod(x, y))
+
+
+def logical_and(a, b) -> int:
+    return to_int(a) & to_int(b)
+
+
+def logical_or(a, b) -> int:
+    return to_int(a) | to_int(b)
+
+
+def logical_xor(a, b) -> int:
+    return to_int(a) ^ to_int(b)
+
+
+def logical_eqv(a, b) -> int:
+    return ~(to_int(a) ^ to_int(b))
+
+
+def logical_imp(a, b) -> int:
+    return ~to_int(a) | to_int(b)
+
+
+def logical_not(a) -> int:
+    return ~to_int(a)
+
+
+def int_range(start: int, limit, step: int):
+    """The values of an integer FOR variable (the first pass is known to run)."""
+    if step > 0:
+        return range(start, math.floor(limit) + 1, step)
+    return range(start, math.ceil(limit) - 1, step)
+
+
+def sign(x) -> int:
+    return 1 if x > 0 else (-1 if x < 0 else 0)
+
+
+class Double(float):
+    """A double-precision value on its way to PRINT or STR$ (shows 16 digits, ``D``)."""
+
+    __slots__ = ()
+
+
+def _single_digits(x: float) -> tuple[str, int]:
+    """``abs(x)`` (single precision) to 7 significant digits as GW-BASIC finds them:
+    the value is scaled by a power of ten into 999999.9 .. 9999999 *in single
+    precision* and then rounded half up to an integer (so ``1/3``, stored as
+    0.333333343..., scales to 3333333.5 and shows as ``.3333334``, as PC-BASIC
+    shows it).  Returns (digit string without trailing zeros, exponent of the first digit).
+    """
+    x = abs(x)
+    e = math.floor(math.log10(x))
+    y = to_single(x * 10.0 ** (SINGLE_DIGITS - 1 - e))
+    if y > 9999999:
+        e += 1
+        y = to_single(x * 10.0 ** (SINGLE_DIGITS - 1 - e))
+    elif y < 999999.9:
+        e -= 1
+        y = to_single(x * 10.0 ** (SINGLE_DIGITS - 1 - e))
+    n = int(y + 0.5)
+    if n >= 10 ** SINGLE_DIGITS:
+        n //= 10
+        e += 1
+    return str(n).rstrip("0") or "0", e
+
+
+def _double_digits(x: float) -> tuple[str, int]:
+    """``abs(x)`` rounded half up to 16 significant digits (from its exact binary value)."""
+    exact = Decimal(abs(x))
+    e = exact.adjusted()
+    n = int((exact.scaleb(DOUBLE_DIGITS - 1 - e)).to_integral_value(rounding=ROUND_HALF_UP))
+    if n >= 10 ** DOUBLE_DIGITS:
+        n //= 10
+        e += 1
+    return str(n).rstrip("0") or "0", e
+
+
+def unsigned_text(x, digits: int, marker: str) -> str:
+    """``abs(x)`` as GW-BASIC's PRINT shows a number with ``digits`` (7 or 16) significant digits.
+
+    Fixed notation unless the number needs more than ``digits`` places before the
+    point or more than ``digits + 1`` after it; E (D for doubles) notation is
+    ``1.5E+12``.  No leading zero: ``.5``.
+    """
+    if x == 0:
+        return "0"
+    d, e = _single_digits(x) if digits == SINGLE_DIGITS else _double_digits(x)
+    if e >= digits or len(d) - e > digits + 1:
+        mantissa = d[0] + ("." + d[1:] if len(d) > 1 else "")
+        return f"{mantissa}{marker}{'-' if e < 0 else '+'}{abs(e):02d}"
+    point = e + 1
+    if point >= len(d):
+        return d + "0" * (point - len(d))
+    if point > 0:
+        return d[:point] + "." + d[point:]
+    return "." + "0" * (-point) + d
+
+
+def str_dollar(x) -> str:
+    """STR$ of a typed value: sign or space, then the digits of its type."""
+    if type(x) is int:
+        return str(x) if x < 0 else " " + str(x)
+    if not math.isfinite(x):
+        raise _overflow()
+    sign_text = "-" if x < 0 else " "
+    if type(x) is Double:
+        return sign_text + unsigned_text(x, DOUBLE_DIGITS, "D")
+    return sign_text + unsigned_text(x, SINGLE_DIGITS, "E")
+
+
+def number_to_text(x) -> str:
+    """How PRINT shows a typed number: STR$ form plus a trailing space."""
+    return str_dollar(x) + " "
+
+
+# The names the typed compiled code calls (merged into the machine's namespace over
+# the plain ones; see number_models.TypedNumbers for which code uses which).
+RUNTIME = {
+    "_sg": to_single, "_ia": int_result, "_ci": to_int, "_dbl": Double, "_irange": int_range,
+    "_idiv": int_divide, "_mod": int_modulo, "_and": logical_and, "_or": logical_or,
+    "_xor": logical_xor, "_eqv": logical_eqv, "_imp": logical_imp, "_not": logical_not,
+    "_sgn": sign, "_len": len, "_strs": str_dollar,
+    "_cint": to_int, "_csng": to_single, "_cdbl": float,
+}
