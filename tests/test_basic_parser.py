@@ -71,13 +71,13 @@ def test_syntax_error_is_kept_on_the_line():
 def test_statements_before_a_bad_one_are_kept_in_gw():
     """GW-BASIC finds a bad token when it gets there: the statements before it run."""
     line = parse_line(5070, "PRINT 1: U(2): X=1", GW)
-    assert line.error is None and line.statements[0] == ast.Print(False, [ast.Num(1.0)])
+    assert line.error is None and line.statements[0] == ast.Print(False, [ast.Num(1, "%")])
     assert str(line.statements[1]) == "Syntax error"
 
 
 def test_error_after_then_belongs_to_the_branch():
     (stmt,) = parse_line(10, "IF A THEN PRINT 1: X", GW).statements
-    assert stmt.then[0] == ast.Print(False, [ast.Num(1.0)]) and str(stmt.then[1]) == "Syntax error"
+    assert stmt.then[0] == ast.Print(False, [ast.Num(1, "%")]) and str(stmt.then[1]) == "Syntax error"
 
 
 @pytest.mark.parametrize("text, message", [

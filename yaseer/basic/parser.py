@@ -420,7 +420,7 @@ def _recover(text: str, err: BasicError, dialect: Dialect):
     """The statements of a bad line with ``err`` in place of its first bad statement
     (see :func:`_recover_tokens`); None when the line cannot even be scanned."""
     try:
-        tokens = mark_unsupported(tokenize(text))
+        tokens = mark_unsupported(tokenize(text, dialect))
     except BasicError:
         return None
     return _recover_tokens(tokens, err, dialect)
