@@ -137,6 +137,12 @@ def test_the_default_place_is_the_user_cache_not_the_checkout(tmp_path, monkeypa
     monkeypatch.delenv("XDG_CACHE_HOME")
     assert ROOT not in program_cache.cache_dir().parents
     assert program_cache.cache_dir() == Path.home() / ".cache" / "yaseer" / "compiled"
+    monkeypatch.setenv("XDG_CACHE_HOME", "relative/dir")  # not absolute: ignored, as XDG says
+    assert program_cache.cache_dir() == Path.home() / ".cache" / "yaseer" / "compiled"
+    monkeypatch.setenv("HOME", "")
+    monkeypatch.setattr("os.path.expanduser", lambda path: path)  # no home directory at all
+    assert program_cache.cache_dir() is None
+    assert program_cache.key(0, {10: "PRINT 1"}) is None
 
 
 def test_concurrent_first_runs_all_print_right_and_leave_one_entry(cache, tmp_path):

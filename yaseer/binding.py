@@ -158,6 +158,10 @@ class _RecordingFrame(_Frame):
 
     def choice(self, name: str, index: int) -> float:
         traced = self.get(name, index)
+        if traced.value != traced.value:  # NaN equals nothing: no guard could pin it
+            from yaseer.linkages.tracing import NotTraceable
+
+            raise NotTraceable(f"{name}({index}) is NaN")
         bool(traced == traced.value)  # a guard: the recording holds for this value only
         return traced.value
 

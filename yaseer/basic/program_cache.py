@@ -10,8 +10,9 @@ so editing the grammar or the compiler invalidates every entry.  Value: the
 generated function, stored with :mod:`marshal`.
 
 Where: ``$YASEER_CACHE_DIR`` if set (empty: no cache), else
-``$XDG_CACHE_HOME/yaseer/compiled`` (default ``~/.cache/yaseer/compiled``);
-never inside the checkout.  Safe under concurrent runs: an entry is written to
+``$XDG_CACHE_HOME/yaseer/compiled`` (an absolute XDG_CACHE_HOME; default
+``~/.cache/yaseer/compiled``; no cache without a home directory); never inside
+the checkout.  Safe under concurrent runs: an entry is written to
 a temporary file in the same directory and renamed into place (atomic), and an
 entry that cannot be read or does not carry its own key is ignored.  Any
 OSError (read-only home, full disk) just means no cache.
@@ -41,7 +42,12 @@ def cache_dir() -> Path | None:
     configured = os.environ.get("YASEER_CACHE_DIR")
     if configured is not None:
         return Path(configured) if configured else None
-    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    base = os.environ.get("XDG_CACHE_HOME", "")
+    if not os.path.isabs(base):  # unset or relative (the XDG rule: ignore it)
+        home = os.path.expanduser("~")
+        if not os.path.isabs(home):  # no home directory: no cache (never one in the current directory)
+            return None
+        base = os.path.join(home, ".cache")
     return Path(base) / "yaseer" / "compiled"
 
 
