@@ -272,3 +272,15 @@ def test_ctrl_c_during_a_long_command(command, tmp_path):
     out = tmp_path / "out"
     done = _interrupted([command, "--out", str(out)], lambda child: out.exists(), tmp_path)
     assert one_error_line(done, 130) == f"yaseer {command}: interrupted (Ctrl-C)"
+
+
+def test_the_readmes_commands_write_only_where_they_say():
+    """A README command that writes files names the place (--out); run and diff write nothing."""
+    import re
+
+    writers = ("plot", "animate", "bench", "stability", "centrode")
+    commands = re.findall(r"(?:^|\$ |bin/)yaseer (\w+)([^\n`#]*)", (ROOT / "README.md").read_text(), re.MULTILINE)
+    shown = [(name, rest) for name, rest in commands if name in writers and not rest.strip().startswith("[")]
+    assert {name for name, _ in shown} >= {"plot", "bench", "stability"}
+    for name, rest in shown:
+        assert "--out" in rest, f"yaseer {name}{rest}"

@@ -93,17 +93,22 @@ def main(argv: list[str] | None = None) -> int:
     if not argv:
         return guarded("session", lambda: _load("interactive").main(None))
     command = argv[0] if argv[0] in COMMANDS else None
+    return guarded(command or "session", lambda: _dispatch(argv, command))
+
+
+def _dispatch(argv: list[str], command: str | None) -> int:
+    """Parse ``argv`` (only ``command``'s module imported) and run it; a usage error is status 2."""
     parser, command_parser = build_parser(command)
     try:
         if command_parser is None:  # the session's options (--dialect gw), --help, --version, or not a command
             args = parser.parse_args(argv)
-            return guarded("session", lambda: _load("interactive").main(args))
+            return _load("interactive").main(args)
         # The sub-parser itself, so a wrong option prints that command's usage.
         args = command_parser.parse_args(argv[1:])
     except SystemExit as exit_:  # --help, --version (0) or a usage error (2, usage already printed)
         return exit_.code if isinstance(exit_.code, int) else 2
     args.command = command
-    return guarded(command, lambda: _load(command).main(args))
+    return _load(command).main(args)
 
 
 def guarded(command: str, call) -> int:

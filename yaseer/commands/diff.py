@@ -330,9 +330,12 @@ def program_rows(path: Path, run_arguments: dict | None = None) -> tuple[tuple[s
     from yaseer.api import run
     from yaseer.series import classify
 
+    from yaseer.basic.errors import FILE_NOT_FOUND
+
     result = run(path, **(run_arguments or {}))
-    if result.error is not None:
-        raise TableError(f"{path}: {result.error}") from result.exception
+    if result.error is not None:  # the listing's own error line, naming the listing unless it does already
+        named = getattr(result.exception, "code", None) == FILE_NOT_FOUND
+        raise TableError(result.error if named else f"{path}: {result.error}") from result.exception
     _, names, printed = classify(result.lines)
     return names, [row.values for row in printed if row.kind != "other"]
 
