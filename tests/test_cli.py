@@ -77,7 +77,7 @@ def test_method_help_lists_every_programs_methods_from_the_registry():
 
 @pytest.mark.parametrize("command", COMMANDS)
 def test_an_unknown_option_prints_that_commands_usage(command, listing, tmp_path):
-    operands = {"run": [str(listing)], "plot": [str(listing)], "animate": [str(listing)], "report": [str(listing)],
+    operands = {"run": [str(listing)], "plot": [str(listing)], "animate": [str(listing)], "report": [str(listing)], "report": [str(listing)],
                 "diff": [str(listing), str(tmp_path / "t.csv")]}.get(command, [])
     done = yaseer(command, *operands, "--no-such-option")
     assert done.returncode == 2
@@ -278,7 +278,7 @@ def test_the_readmes_commands_write_only_where_they_say():
     """A README command that writes files names the place (--out); run and diff write nothing."""
     import re
 
-    writers = ("plot", "animate", "bench", "stability", "centrode")
+    writers = ("plot", "animate", "report", "bench", "stability", "centrode")
     commands = re.findall(r"(?:^|\$ |bin/)yaseer (\w+)([^\n`#]*)", (ROOT / "README.md").read_text(), re.MULTILINE)
     shown = [(name, rest) for name, rest in commands if name in writers and not rest.strip().startswith("[")]
     assert {name for name, _ in shown} >= {"plot", "bench", "stability"}
