@@ -113,3 +113,17 @@ def test_the_command_takes_size_and_refuses_a_bad_one(tmp_path):
     assert bad.returncode == 2 and "WIDTHxHEIGHT" in bad.stderr and "Traceback" not in bad.stderr
     small = run_cli(str(LISTINGS / "example5.bas"), "--out", "s.png", "--size", "20x20", cwd=tmp_path)
     assert small.returncode == 1 and small.stderr.strip().endswith("not 20x20")
+
+
+def test_unnamed_columns_are_shown_under_the_expressions_of_the_last_print():
+    result = yaseer.run("10 FOR Q = 0 TO 90 STEP 45: X(10) = COS(Q): Y(10) = SIN(Q): GOSUB PROG 5\n"
+                        "20 PRINT Q; T; L * 2: NEXT Q\n")
+    assert result.columns is None  # no header printed
+    assert result.look().names == ("Q", "T", "L * 2")
+    scene = build_scene(result.frames)
+    figure, ax = make_figure(scene, result.look())
+    from yaseer.animation import draw_moving
+
+    draw_moving(ax, scene, 1, result.look())
+    texts = [t.get_text() for t in figure.texts]
+    assert texts[texts.index("T") + 1] == "45" and texts[texts.index("L * 2") + 1] == "2"

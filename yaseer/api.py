@@ -149,11 +149,20 @@ class Result:
         return plotting.draw_tables(tables, spec, subtitle)
 
     def look(self, size: tuple[int, int] | None = None, title: str | None = None):
-        """How this run's frames look (:class:`yaseer.animation.Look`): title, column names, unit, size."""
-        from yaseer.animation.draw import DEFAULT_SIZE, Look
-        from yaseer.describe import length_unit
+        """How this run's frames look (:class:`yaseer.animation.Look`): title, column names, unit, size.
 
-        return Look(title=self.title if title is None else title, names=self.columns,
+        The columns are named as in :attr:`columns`, else by the expressions of
+        the listing's last PRINT when they are as many as the main table's.
+        """
+        from yaseer.animation.draw import DEFAULT_SIZE, Look
+        from yaseer.describe import length_unit, printed_expressions
+
+        names = self.columns
+        group = self._main_group()
+        if names is None and group is not None:  # else the expressions of the last PRINT, if they fit
+            expressions = printed_expressions(self.listing)
+            names = tuple(expressions) if len(expressions) == group.width else None
+        return Look(title=self.title if title is None else title, names=names,
                     unit=length_unit(self.name), size=size or DEFAULT_SIZE)
 
     def animate(self, size: tuple[int, int] | None = None, fps: float = 6.0, max_frames: int | None = None):

@@ -187,10 +187,10 @@ def _panel(figure, frame: Frame, look: Look) -> list:
             y -= 0.075 * fit
     elif frame.printed.strip():
         artists.append(figure.text(x, y, "printed", fontsize=15 * s, color="0.35", va="top"))
-        lines = frame.printed.splitlines()[:8]
-        artists.append(figure.text(x, y - 0.045, "\n".join(line.strip() for line in lines),
-                                   fontsize=max(9.0, 16 * s * min(1.0, 30 / max(len(l) for l in lines))),
-                                   family="monospace", va="top"))
+        lines = [wrapped for line in frame.printed.splitlines()
+                 for wrapped in textwrap.wrap(" ".join(line.split()), 24) or [""]][:12]
+        artists.append(figure.text(x, y - 0.045, "\n".join(lines), fontsize=16 * s, family="monospace",
+                                   va="top"))
     return artists
 
 
