@@ -38,6 +38,7 @@ def test_a_file_with_a_method_and_the_default_name(shell):
     ("x.bas", "10 PRINT 1", "name no file"),
     ("--method 2", "10 PRINT 1", "expected N=VALUE"),
     ("--dialect pascal", "10 PRINT 1", "unknown dialect 'pascal'"),
+    ("--size big", "10 PRINT 1", "expected WIDTHxHEIGHT"),
 ])
 def test_wrong_options_are_one_usage_error(shell, line, cell, says):
     from IPython.core.error import UsageError

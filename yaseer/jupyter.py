@@ -1,7 +1,7 @@
 """The Jupyter magics: ``%load_ext yaseer``, then ``%%basic`` (a cell of BASIC) or ``%basic FILE``.
 
     %%basic [--dialect casio|gw] [--method N=NAME] [--prog N=FILE] [--angle deg|rad]
-            [--input TEXT] [--plot] [--animate] [--fps F] [-o NAME]
+            [--input TEXT] [--plot] [--animate] [--fps F] [--size WxH] [--max-frames N] [-o NAME]
     10 FOR QQ = 0 TO 90 STEP 30: X(10) = COS(QQ): Y(10) = SIN(QQ): GOSUB PROG 5
     20 PRINT QQ; T; L: NEXT QQ
 
@@ -43,16 +43,21 @@ class BasicMagics(Magics):
     @argument("--plot", action="store_true", help="plot the printed columns")
     @argument("--animate", action="store_true", help="animate the mechanism")
     @argument("--fps", type=float, default=6.0, help="frames per second of the animation")
+    @argument("--size", default="960x540", help="frame size of the animation, WxH pixels (default 960x540)")
+    @argument("--max-frames", type=int, default=120, help="at most this many frames in the player (default 120)")
     @argument("-o", "--output", default="_basic", help="the name the result is stored under (default _basic)")
     @line_cell_magic
     def basic(self, line: str, cell: str | None = None):
         """Run BASIC: the cell's text, or the file named on the line."""
         from IPython.core.error import UsageError
 
+        from yaseer.animation.draw import parse_size
+
         try:
             args = parse_argstring(self.basic, line)
             methods = dict(_pair(text) for text in args.method)
             areas = dict(_pair(text) for text in args.prog)
+            size = parse_size(args.size)
         except ValueError as error:
             raise UsageError(str(error)) from None
         if cell is None and not args.file:
@@ -61,7 +66,7 @@ class BasicMagics(Magics):
             raise UsageError("%%basic runs the cell; name no file on its line")
         listing = cell if cell is not None else Path(args.file)
         result = run_magic(listing, args, methods, areas, self.shell)
-        show(result, plot=args.plot, animate=args.animate, fps=args.fps)
+        show(result, plot=args.plot, animate=args.animate, fps=args.fps, size=size, max_frames=args.max_frames)
 
 
 def run_magic(listing, args, methods: dict, areas: dict, shell):
@@ -82,7 +87,8 @@ def run_magic(listing, args, methods: dict, areas: dict, shell):
     return result
 
 
-def show(result, plot: bool = False, animate: bool = False, fps: float = 6.0) -> None:
+def show(result, plot: bool = False, animate: bool = False, fps: float = 6.0, size=(960, 540),
+         max_frames: int = 120) -> None:
     """The screen as printed, an error as one red line, then the plot and the player if asked for."""
     from IPython.display import HTML, Image, display
 
@@ -99,7 +105,7 @@ def show(result, plot: bool = False, animate: bool = False, fps: float = 6.0) ->
         from yaseer.animation import AnimationError, html_player
 
         try:
-            display(HTML(html_player(result.frames, result.look(), fps=fps)))
+            display(HTML(html_player(result.frames, result.look(size), fps=fps, max_frames=max_frames)))
         except AnimationError as error:
             _red_line(str(error))
 

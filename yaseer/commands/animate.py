@@ -38,13 +38,15 @@ def add_arguments(parser) -> None:
 
 
 def _size(text: str) -> tuple[int, int]:
-    """``"1280x720"`` -> (1280, 720)."""
+    """``--size 1280x720`` -> (1280, 720); a usage error naming what was given otherwise."""
     import argparse
 
-    width, _, height = text.lower().partition("x")
-    if not (width.strip().isdigit() and height.strip().isdigit()):
-        raise argparse.ArgumentTypeError(f"expected WIDTHxHEIGHT in pixels, got {text!r}")
-    return int(width), int(height)
+    from yaseer.animation.draw import parse_size
+
+    try:
+        return parse_size(text)
+    except ValueError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
 
 
 def main(args) -> int:
