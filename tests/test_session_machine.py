@@ -104,3 +104,30 @@ def test_run_file_loads_it_into_prog_0_and_runs_it(session, tmp_path):
     after(session, "PROG 3")
     assert after(session, 'RUN "two"') == " 2 \n"
     assert after(session, "PROG 0", "LIST") == "10 PRINT 1+1\n"
+
+
+def test_tron_stays_on_across_run_and_new_turns_it_off(session):
+    after(session, "10 PRINT 1", "TRON")
+    assert after(session, "RUN") == "[10] 1 \n"
+    assert after(session, "RUN") == "[10] 1 \n"  # RUN makes a fresh machine; the trace stays (GW-BASIC)
+    after(session, "NEW", "10 PRINT 2")
+    assert after(session, "RUN") == " 2 \n"  # NEW turns it off (GW-BASIC, PC-BASIC's new_)
+
+
+def test_llist_without_a_printer_lists_on_the_screen(session):
+    after(session, "10 x=1:?x")
+    assert after(session, "LLIST") == "10 X=1:PRINT X\n"
+
+
+def test_auto_step_defaults_and_the_last_step(session):
+    after(session, "AUTO 100,5", "A=1", "", "AUTO 200,", "B=2", "")
+    assert after(session, "LIST") == "100 A=1\n200 B=2\n"
+    assert session.prompt == "P0> "
+    after(session, "AUTO 200,")
+    assert session.prompt == "200*"
+    after(session, "")  # Enter on a line that exists keeps it and offers the next
+    assert session.prompt == "205 "
+    assert after(session, "AUTO X") == ""  # in AUTO what is typed is line 205's text
+    assert after(session, "") == "" and session.prompt == "P0> "  # Enter on free 210 ends AUTO
+    assert after(session, "LIST 205") == "205 AU TO X\n"  # keyword-first: TO inside AUTO
+    assert after(session, "AUTO X") == "Syntax error\n"
