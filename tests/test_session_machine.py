@@ -131,3 +131,34 @@ def test_auto_step_defaults_and_the_last_step(session):
     assert after(session, "") == "" and session.prompt == "P0> "  # Enter on free 210 ends AUTO
     assert after(session, "LIST 205") == "205 AU TO X\n"  # keyword-first: TO inside AUTO
     assert after(session, "AUTO X") == "Syntax error\n"
+
+
+def test_auto_offers_the_numbers_and_marks_pcbasic_offers(session):
+    """The same keys typed into PC-BASIC 2.0.8's interactive loop: the offered numbers and marks
+    (``20*`` for a line that exists; Enter after it keeps the line) and the program they leave."""
+    import io
+    import re
+
+    import pcbasic
+
+    typed = ["20 PRINT 20", "AUTO 10,10", "PRINT 10", "", "PRINT 30"]
+    keys = "".join(line + "\r" for line in typed) + "\x03LIST\rSYSTEM\r"
+    screen = io.BytesIO()
+    with pcbasic.Session(input_streams=io.BytesIO(keys.encode()), output_streams=screen) as pc:
+        with pytest.raises(BaseException):  # SYSTEM leaves its loop by an exception
+            pc.interact()
+    rows = screen.getvalue().decode("latin-1").replace("\r\n", "\n").split("\n")
+    start = rows.index("AUTO 10,10") + 1
+    end = rows.index("LIST")
+    theirs_offered = [re.match(r"(\d+)([ *])", row).groups() for row in rows[start:end] if row[:1].isdigit()]
+    theirs_listing = rows[end + 1:rows.index("SYSTEM") - 1]
+
+    offered = []
+    for line in typed:
+        if session.auto is not None:
+            offered.append((session.prompt[:-1], session.prompt[-1]))
+        after(session, line)
+    offered.append((session.prompt[:-1], session.prompt[-1]))
+    session.interrupt()  # Ctrl-C
+    assert offered == theirs_offered == [("10", " "), ("20", "*"), ("30", " "), ("40", " ")]
+    assert after(session, "LIST").splitlines() == theirs_listing
