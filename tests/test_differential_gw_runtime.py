@@ -135,3 +135,38 @@ def test_generated_errors_where_execution_reaches_them_match_pcbasic(pc):
     programs = [error_program(rng) for _ in range(case_count(100))]
     found = differing(pc, programs)
     assert not found, f"{len(found)} of {len(programs)} differ; first:\n" + "\n---\n".join(found[0])
+
+
+# ---------------------------------------------------------------- FOR bound to its NEXT
+
+def loop_program(rng: random.Random) -> str:
+    """Nested loops whose NEXTs may name the wrong variable, be missing, or be jumped to."""
+    names = rng.sample("IJK", rng.randint(1, 3))
+    lines, opened = [], []
+    for name in names:
+        lines.append(f"FOR {name} = 1 TO {rng.randint(0, 2)}")
+        opened.append(name)
+        if rng.random() < 0.5:
+            lines.append(f"PRINT {name};")
+    while opened:
+        name = opened.pop()
+        kind = rng.random()
+        if kind < 0.6:
+            lines.append(f"NEXT {name}")
+        elif kind < 0.75:
+            lines.append("NEXT")
+        elif kind < 0.9:
+            lines.append(f"NEXT {rng.choice('IJK')}")
+        # else: no NEXT for this loop
+    if rng.random() < 0.3 and len(lines) > 2:
+        at = rng.randint(1, len(lines) - 1)
+        lines.insert(at, f"IF I = 1 THEN {10 * (len(lines) + 1)}")
+    lines.append('PRINT "END"')
+    return "\n".join(f"{10 * (k + 1)} {text}" for k, text in enumerate(lines)) + "\n"
+
+
+def test_generated_for_next_binding_matches_pcbasic(pc):
+    rng = random.Random(base_seed() + 14)
+    programs = [loop_program(rng) for _ in range(case_count(150))]
+    found = differing(pc, programs)
+    assert not found, f"{len(found)} of {len(programs)} differ; first:\n" + "\n---\n".join(found[0])

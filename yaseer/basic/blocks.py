@@ -164,6 +164,29 @@ def _close(open_loops: list, var):
     return None
 
 
+def scan_for_next(statements: list, start: int):
+    """GW-BASIC's FOR: the NEXT it finds scanning forward from statement ``start``,
+    counting the FORs and NEXTs met on the way (names ignored, IF branches included).
+
+    Returns ``(index of the statement holding it, the NEXT)``, or None when the
+    program has none (``FOR without NEXT``).  PC-BASIC 2.0.8 binds the loop to that
+    NEXT when the FOR runs; a NEXT naming another variable is ``NEXT without FOR``.
+    """
+    depth = 0
+    for k in range(start, len(statements)):
+        stmt = statements[k]
+        if isinstance(stmt, BasicError):
+            continue
+        for inner in walk_statements(stmt):
+            if isinstance(inner, ast.For):
+                depth += 1
+            elif isinstance(inner, ast.Next):
+                if depth == 0:
+                    return k, inner
+                depth -= 1
+    return None
+
+
 def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
     """Decide the blocks of an area (see :class:`Plan`); the FORs at ``dynamic_loops``
     (statement indices) are never native."""
@@ -201,7 +224,9 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
                     body_ok = False
                     break
                 k += 1
-            if body_ok and f not in dynamic_loops and not any(f < t <= j for t in targets):
+            bound = scan_for_next(statements, f + 1)
+            same_pair = bound is not None and bound[0] == j  # GW-BASIC's FOR binds the same NEXT
+            if body_ok and same_pair and f not in dynamic_loops and not any(f < t <= j for t in targets):
                 native[f] = j
     entries = {0, n} | targets
     for i, stmt in enumerate(statements):
@@ -213,6 +238,9 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
             entries.add(i + 1)
             if i in for_next:
                 entries.add(for_next[i] + 1)
+            bound = scan_for_next(statements, i + 1)
+            if bound is not None:
+                entries.add(bound[0] + 1)  # where GW-BASIC goes when the loop runs zero times
         elif not isinstance(stmt, ast.For) and splits(stmt):
             entries.add(i + 1)
     # dynamic loops' NEXTs are not consumed; natives' are

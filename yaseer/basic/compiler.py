@@ -30,7 +30,7 @@ from __future__ import annotations
 import math
 
 from yaseer.basic import syntax_tree as ast
-from yaseer.basic.blocks import data_statements, flatten, nodes, plan, splits, walk_statements
+from yaseer.basic.blocks import data_statements, flatten, nodes, plan, scan_for_next, splits, walk_statements
 from yaseer.basic.dialect import CASIO
 from yaseer.basic.number_models import NUMERIC, array_local, local_name, number_model
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # noqa: F401  (re-exported)
@@ -770,15 +770,33 @@ class AreaCompiler:
         else:
             body_block = body
             self.cur = None
-        block.code.append((indent + 1, f"_for({key!r}, _l{n}, _s{n}, {body_block})"))
+        block.code.append((indent + 1, f"_for({key!r}, _l{n}, _s{n}, {body_block}, {self.bound_next(stmt)!r})"))
         block.code.append((indent + 1, f"return {body_block}"))
         # a loop that never runs leaves its variable at the start value (GW-BASIC's
         # source: FOR hands over to NEXTS in NEXT86.ASM with NXTFLG = 0; see compatibility.md)
+        bound = self.bound_next(stmt)
+        if bound:  # GW-BASIC: no NEXT, or one naming another loop, is an error; else go on after it
+            block.code.append((indent, f"_M.bound_next({bound!r})"))
+            block.code.append((indent, f"if _M.dialect.for_binds_next: return {self.entry_block[bound[0] + 1]}"))
+        elif bound is None:
+            block.code.append((indent, "_M.bound_next(None)"))
         if skip_index is None:
             block.code.append((indent, f"raise _err('FOR without NEXT', {FOR_WITHOUT_NEXT})"))
         else:
             block.code.append((indent, f"return {self.entry_block[skip_index + 1]}"))
         return None
+
+    def bound_next(self, stmt):
+        """What GW-BASIC's FOR finds scanning for its NEXT (``Machine.for_push``):
+        ``(statement index, line, names this loop?)``, None for no NEXT; False for a
+        FOR inside an IF branch (not bound)."""
+        if self.depth != 0:
+            return False
+        found = scan_for_next([s for _, s in self.flat], self.index + 1)
+        if found is None:
+            return None
+        k, next_stmt = found
+        return (k, self.flat[k][0], next_stmt.var is None or next_stmt.var == stmt.var)
 
     def stmt_Next(self, stmt, scope):
         var = stmt.var
@@ -790,7 +808,7 @@ class AreaCompiler:
             self.emit("#RELOAD#")
             return
         target, key = self.loop_var(var, scope)
-        self.emit(f"_f = _next({key!r})")
+        self.emit(f"_f = _next({key!r}, {self.index})")
         self.emit(f"{target} = {self.stepping(var, target, '_f.step')}")
         self.emit(f"if {target} <= _f.limit if _f.step >= 0.0 else {target} >= _f.limit: return _f.body")
         self.emit("_pop()")

@@ -82,6 +82,14 @@ class Dialect:
         operand``; False (Casio, as yaseer always ran the listings) makes a bad
         line a ``Syntax error`` before any of it runs.
 
+    FOR and NEXT
+        ``for_binds_next``: True (GW-BASIC, as PC-BASIC 2.0.8 runs it) binds a
+        FOR, when it runs, to the NEXT it finds scanning forward (FORs and NEXTs
+        met on the way counted): none is ``FOR without NEXT``, one naming another
+        variable ``NEXT without FOR``, and any other NEXT of the variable is
+        ``NEXT without FOR``; False (Casio, classic Microsoft BASIC) lets any NEXT
+        of the variable continue the loop.
+
     Run-time error policy
         ``on_division_by_zero`` and ``on_overflow``: ``"stop"`` ends the run
         with the error (Casio); ``"continue"`` prints GW-BASIC's message and
@@ -117,6 +125,7 @@ class Dialect:
     random: type = RepeatableRandom
     errors_when_reached: bool = False
     comma_trims_number: bool = False
+    for_binds_next: bool = False
 
     def with_program_areas(self) -> "Dialect":
         """This dialect with ``GOSUB PROG n`` (``--prog`` gives areas in gw too)."""
@@ -143,7 +152,7 @@ GW = Dialect(
     own_words=("DEFINT", "DEFSNG", "DEFDBL", "DEFSTR", "XOR", "EQV", "IMP"), typed_numbers=True, print_digits=7,
     width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
     implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,
-    errors_when_reached=True, comma_trims_number=True,
+    errors_when_reached=True, comma_trims_number=True, for_binds_next=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

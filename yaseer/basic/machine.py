@@ -30,7 +30,7 @@ from yaseer.basic import dialect as dialects, formatting, numbers, program_cache
 from yaseer.basic.number_models import initial_value
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # MAX_STACK: GOSUB returns + open FOR loops together
 from yaseer.basic.errors import (
-    BasicError, OutputError, BREAK, CANT_CONTINUE, DIVISION_BY_ZERO, DUPLICATE_DEFINITION,
+    BasicError, OutputError, BREAK, CANT_CONTINUE, DIVISION_BY_ZERO, DUPLICATE_DEFINITION, FOR_WITHOUT_NEXT,
     ILLEGAL_FUNCTION_CALL, NEXT_WITHOUT_FOR, OUT_OF_DATA, OUT_OF_MEMORY, OVERFLOW,
     RESUME_WITHOUT_ERROR, RETURN_WITHOUT_GOSUB, SUBSCRIPT_OUT_OF_RANGE, SYNTAX_ERROR,
     UNDEFINED_PROGRAM_AREA, UNDEFINED_USER_FUNCTION,
@@ -90,10 +90,14 @@ AREA_MARK = _AreaReturn()
 
 
 class ForFrame:
-    __slots__ = ("key", "limit", "step", "body")
+    """An open FOR loop; ``next_id`` is the NEXT statement it is bound to (GW-BASIC),
+    or None where any NEXT of its variable continues it."""
 
-    def __init__(self, key, limit, step, body):
+    __slots__ = ("key", "limit", "step", "body", "next_id")
+
+    def __init__(self, key, limit, step, body, next_id=None):
         self.key, self.limit, self.step, self.body = key, limit, step, body
+        self.next_id = next_id
 
 
 class Tab:
@@ -536,8 +540,16 @@ class Machine:
                 return top
         raise BasicError("RETURN without GOSUB", RETURN_WITHOUT_GOSUB)
 
-    def for_push(self, key: str, limit: float, step: float, body: int) -> None:
-        """FOR (through the stack): open a loop over ``key`` whose body starts at block ``body``."""
+    def for_push(self, key: str, limit: float, step: float, body: int, bound=False) -> None:
+        """FOR (through the stack): open a loop over ``key`` whose body starts at block ``body``.
+
+        ``bound`` is what GW-BASIC's FOR finds scanning for its NEXT (see
+        ``blocks.scan_for_next``): ``(NEXT id, its line, names this loop?)`` or None
+        for no NEXT.  In a dialect with ``Dialect.for_binds_next`` the loop is bound
+        to that NEXT, and no NEXT (``FOR without NEXT``) or one naming another
+        variable (``NEXT without FOR`` in its line) is an error now.
+        """
+        next_id = self.bound_next(bound)
         stack = self.stack
         for k in range(len(stack) - 1, -1, -1):
             frame = stack[k]
@@ -548,16 +560,31 @@ class Machine:
                 break
         if len(stack) >= MAX_STACK:
             raise BasicError("Out of memory", OUT_OF_MEMORY)
-        stack.append(ForFrame(key, limit, step, body))
+        stack.append(ForFrame(key, limit, step, body, next_id))
 
-    def next_frame(self, key: str) -> ForFrame:
-        """NEXT ``key``: its loop's frame, closing the loops opened inside it."""
+    def bound_next(self, bound):
+        """The NEXT a FOR is bound to (None: not bound), raising GW-BASIC's errors for
+        what its scan found (see :meth:`for_push`); also run by a FOR that loops zero times."""
+        if not self.dialect.for_binds_next or bound is False:
+            return None
+        if bound is None:
+            raise BasicError("FOR without NEXT", FOR_WITHOUT_NEXT)
+        next_id, next_line, names_this = bound
+        if not names_this:
+            raise BasicError("NEXT without FOR", NEXT_WITHOUT_FOR).at(next_line)
+        return next_id
+
+    def next_frame(self, key: str, next_id=None) -> ForFrame:
+        """NEXT ``key``: its loop's frame, closing the loops opened inside it; a loop
+        bound to another NEXT (GW-BASIC) is ``NEXT without FOR``."""
         stack = self.stack
         while stack:
             top = stack[-1]
             if type(top) is not ForFrame:
                 break
             if top.key == key:
+                if top.next_id is not None and next_id is not None and top.next_id != next_id:
+                    break
                 return top
             stack.pop()
         raise BasicError("NEXT without FOR", NEXT_WITHOUT_FOR)
