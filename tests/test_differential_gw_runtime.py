@@ -37,9 +37,18 @@ def gw(source: str) -> str:
     return run_yaseer(source, angle=None, dialect="gw")
 
 
+def assert_generated_match(pc, generate, seed: int, count: int, width_of=lambda source: 80) -> None:
+    """``count`` programs from ``generate(rng)`` print the same screen rows in both."""
+    rng = random.Random(base_seed() + seed)
+    programs = [generate(rng) for _ in range(case_count(count))]
+    found = differing(pc, programs, width_of)
+    assert not found, f"{len(found)} of {len(programs)} differ; first:\n" + "\n---\n".join(found[0])
+
+
 def differing(pc, programs: list[str], width_of=lambda source: 80) -> list[tuple[str, str, str]]:
     out = []
     for source in programs:
+        pc.statement("WIDTH 80")  # PC-BASIC keeps a WIDTH from one run to the next
         theirs, ours = screen_rows(pc.program(source), width_of(source)), gw(source)
         if theirs != ours:
             out.append((source, theirs, ours))
@@ -81,10 +90,7 @@ def layout_program(rng: random.Random) -> str:
 
 
 def test_generated_print_layout_matches_pcbasic(pc):
-    rng = random.Random(base_seed() + 11)
-    programs = [layout_program(rng) for _ in range(case_count(150))]
-    found = differing(pc, programs, lambda source: 40 if "WIDTH 40" in source else 80)
-    assert not found, f"{len(found)} of {len(programs)} differ; first:\n" + "\n---\n".join(found[0])
+    assert_generated_match(pc, layout_program, 11, 150, lambda source: 40 if "WIDTH 40" in source else 80)
 
 
 # ---------------------------------------------------------------- RND and RANDOMIZE
@@ -106,10 +112,7 @@ def rnd_program(rng: random.Random) -> str:
 
 
 def test_generated_rnd_sequences_match_pcbasic(pc):
-    rng = random.Random(base_seed() + 12)
-    programs = [rnd_program(rng) for _ in range(case_count(150))]
-    found = differing(pc, programs)
-    assert not found, f"{len(found)} of {len(programs)} differ; first:\n" + "\n---\n".join(found[0])
+    assert_generated_match(pc, rnd_program, 12, 150)
 
 
 # ---------------------------------------------------------------- errors where execution reaches them
@@ -131,10 +134,7 @@ def error_program(rng: random.Random) -> str:
 
 
 def test_generated_errors_where_execution_reaches_them_match_pcbasic(pc):
-    rng = random.Random(base_seed() + 13)
-    programs = [error_program(rng) for _ in range(case_count(100))]
-    found = differing(pc, programs)
-    assert not found, f"{len(found)} of {len(programs)} differ; first:\n" + "\n---\n".join(found[0])
+    assert_generated_match(pc, error_program, 13, 100)
 
 
 # ---------------------------------------------------------------- FOR bound to its NEXT
@@ -166,7 +166,4 @@ def loop_program(rng: random.Random) -> str:
 
 
 def test_generated_for_next_binding_matches_pcbasic(pc):
-    rng = random.Random(base_seed() + 14)
-    programs = [loop_program(rng) for _ in range(case_count(150))]
-    found = differing(pc, programs)
-    assert not found, f"{len(found)} of {len(programs)} differ; first:\n" + "\n---\n".join(found[0])
+    assert_generated_match(pc, loop_program, 14, 150)
