@@ -240,7 +240,7 @@ def test_ctrl_c_in_run_is_break_in_the_line_running(tmp_path):
     assert line in ("Break in 10", "Break in 20", "Break in 30")
 
 
-@pytest.mark.parametrize("command", ["diff", "plot", "animate"])
+@pytest.mark.parametrize("command", ["diff", "plot", "animate", "report"])
 def test_ctrl_c_while_a_listing_waits_for_input(command, tmp_path):
     """The listing reads INPUT from a FIFO: once the FIFO is opened the run has started; nothing is written."""
     listing = tmp_path / "ask.bas"
@@ -256,7 +256,8 @@ def test_ctrl_c_while_a_listing_waits_for_input(command, tmp_path):
             return False
         return True
 
-    extra = {"diff": ["t.csv"], "plot": ["--out", "pictures"], "animate": ["--out", "a.gif"]}[command]
+    extra = {"diff": ["t.csv"], "plot": ["--out", "pictures"], "animate": ["--out", "a.gif"],
+             "report": ["--out", "page.html"]}[command]
     (tmp_path / "t.csv").write_text("1,2\n")
     try:
         done = _interrupted([command, str(listing), *extra, "--input", str(fifo)], started, tmp_path)

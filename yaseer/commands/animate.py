@@ -56,9 +56,9 @@ def main(args) -> int:
     error (the error line goes to stderr and the status is 1).
     """
     from yaseer.animation import AnimationError, record_run, render
-    from yaseer.basic.errors import BREAK
     from yaseer.commands.options import UsageError, run_settings
     from yaseer.commands.output import output_file
+    from yaseer.commands.run import raise_if_interrupted
 
     listing = Path(args.file)
     out = Path(args.out) if args.out else Path(listing.stem + ".gif")
@@ -70,8 +70,7 @@ def main(args) -> int:
         result = record_run(listing, options.pop("method"), angle=options.pop("angle"), **options)
     finally:
         settings.close()
-    if getattr(result.exception, "code", None) == BREAK:  # Ctrl-C: nothing is drawn (status 130)
-        raise KeyboardInterrupt
+    raise_if_interrupted(result.exception)  # Ctrl-C: nothing is drawn
     if result.error is not None and not result.frames:
         print(result.error, file=sys.stderr)
         return 1

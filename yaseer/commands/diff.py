@@ -391,8 +391,8 @@ def _tolerance(text: str) -> float:
 
 
 def main(args) -> int:
-    from yaseer.basic.errors import BREAK
     from yaseer.commands.options import CommandError, run_settings
+    from yaseer.commands.run import raise_if_interrupted
 
     try:
         table = parse_table(read_table_text(args.table))
@@ -402,8 +402,7 @@ def main(args) -> int:
     try:
         names, rows = program_rows(args.file, settings.run_arguments())
     except TableError as exc:
-        if getattr(exc.__cause__, "code", None) == BREAK:
-            raise KeyboardInterrupt from None
+        raise_if_interrupted(exc.__cause__)
         raise CommandError(str(exc)) from None
     finally:
         settings.close()

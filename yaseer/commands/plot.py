@@ -34,7 +34,7 @@ def main(args) -> int:
     from yaseer.api import run
     from yaseer.commands.options import CommandError, run_settings
     from yaseer.commands.output import output_directory
-    from yaseer.commands.run import report
+    from yaseer.commands.run import raise_if_interrupted, report
 
     listing = Path(args.file)
     settings = run_settings(args)
@@ -42,6 +42,7 @@ def main(args) -> int:
         result = run(listing, **settings.run_arguments())
     finally:
         settings.close()
+    raise_if_interrupted(result.exception)
     if result.error is not None:
         return report(result)
     try:

@@ -33,7 +33,7 @@ def main(args) -> int:
     from yaseer.basic.errors import FILE_NOT_FOUND
     from yaseer.commands.options import run_settings
     from yaseer.commands.output import output_file
-    from yaseer.commands.run import report
+    from yaseer.commands.run import raise_if_interrupted, report
     from yaseer.report import build_page
 
     listing = Path(args.file)
@@ -43,6 +43,7 @@ def main(args) -> int:
         result = run(listing, **settings.run_arguments())
     finally:
         settings.close()
+    raise_if_interrupted(result.exception)  # Ctrl-C: no page
     if getattr(result.exception, "code", None) == FILE_NOT_FOUND:  # no listing, no page
         return report(result)
     printed_program_5 = any(Path(path).name == "prog5.bas" for n, path in args.prog if n == 5)

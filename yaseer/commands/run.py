@@ -24,7 +24,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.epilog = EPILOG
     parser.add_argument("file", help="the BASIC listing (program area 0); - for standard input")
     parser.add_argument("--format", choices=("text", "csv"), default="text",
-                        help="text (default): the faithful output; csv: one row of full-precision values per PRINT")
+                        help="text (default): the faithful output; csv: one row of full-precision values per printed line")
     parser.add_argument("--printer", metavar="FILE",
                         help="write LPRINT output to FILE (replaced; default: standard output)")
     add_run_options(parser)
@@ -65,3 +65,12 @@ def report(result) -> int:
     if result.status == "stop":
         print(f"Break in {result.line}", file=sys.stderr)
     return 0
+
+
+def raise_if_interrupted(error) -> None:
+    """Ctrl-C during the run (the BASIC error ``Break``) stops a command that is not ``run``
+    as Ctrl-C anywhere else does: nothing written, one line, status 130 (see ``yaseer.cli``)."""
+    from yaseer.basic.errors import BREAK
+
+    if getattr(error, "code", None) == BREAK:
+        raise KeyboardInterrupt
