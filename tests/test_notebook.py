@@ -114,3 +114,16 @@ def test_the_centre_reaches_the_papers_change_point_positions(cells):
         for angle in angles:
             x, y = by_angle[angle]
             assert x == pytest.approx(ac, abs=2e-3) and abs(y) < 0.05
+
+
+def golden_columns(n):
+    return [[float(v) for v in line.split()] for line in (GOLDEN / f"example{n}.txt").read_text().splitlines()]
+
+
+@pytest.mark.parametrize("tag, n, column", [("example3-fastest", 3, 2), ("example5-peak", 5, 1)])
+def test_the_extreme_values_the_notebook_reports(cells, tag, n, column):
+    (shown,) = data(cells[tag], "text/plain")
+    angle, value = (float(v) for v in shown.strip("()").split(","))
+    rows = golden_columns(n)
+    peak = max(rows, key=lambda row: abs(row[column]))
+    assert angle == pytest.approx(peak[0], abs=0.005) and value == pytest.approx(peak[column], abs=0.005)

@@ -186,7 +186,9 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
     ``input``: what INPUT reads (text, a path-like, or an open file, each
     echoed on the screen; ``sys.stdin``: typed at the keyboard; default nothing:
     ``Input past end``); ``angle``: ``"deg"`` or ``"rad"``, the unit of
-    SIN COS TAN ATN.  A BASIC error (and a missing file) is ``result.error``,
+    SIN COS TAN ATN at start (default: the dialect's); ``dialect``: ``"casio"``
+    (the default, the paper's pocket computer) or ``"gw"`` (GW-BASIC 3.23).
+    A BASIC error (and a missing file) is ``result.error``,
     one line; with ``raise_errors`` it is raised.
 
     For the command line: ``screen`` / ``printer`` also receive PRINT / LPRINT
