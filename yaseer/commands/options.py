@@ -1,10 +1,10 @@
-"""The options shared by every command that runs a listing: ``run``, ``diff``, ``plot``, ``animate``.
+"""The options shared by every command that runs a listing: ``run``, ``diff``, ``plot``, ``animate``, ``report``.
 
 :func:`add_run_options` adds them to a sub-command's parser (one place, so the
 commands cannot drift apart); :func:`run_settings` turns the parsed options into
 the plain values a run needs (area texts read and checked, methods checked,
-the INPUT file opened).  A new run option (``--dialect``, ``--files``) is added
-here once and every command takes it.
+the INPUT file opened, :meth:`RunSettings.run_arguments` for :func:`yaseer.run`).
+A new run option (``--files``) is added here once and every command takes it.
 
 A wrong option value (``--prog 12=x.bas``, ``--method 5=fast``) is a usage error
 (exit status 2, the sub-command's usage line); an area file that cannot be read,
@@ -95,7 +95,7 @@ def add_dialect_argument(parser) -> None:
 
 def add_run_options(parser: argparse.ArgumentParser) -> None:
     """--prog N=FILE, --method N=NAME, --dialect, --angle deg|rad, --input FILE (as ``yaseer run``)."""
-    group = parser.add_argument_group("running the listing (the same in run, diff, plot and animate)")
+    group = parser.add_argument_group("running the listing (the same in run, diff, plot, animate and report)")
     group.add_argument("--prog", metavar="N=FILE", type=area_file, action="append", default=[],
                        help="load a BASIC subroutine into program area N (1-9) instead of the library program; "
                             "it shares the listing's variables and must end in RETURN; may be repeated")
