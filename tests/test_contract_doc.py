@@ -13,7 +13,10 @@ and a call with forces for every Q(n), and:
   the one the doc's Q(n) table names;
 * the array sizes the doc lists are the machine's, and every element fits;
 * every row of the error table is what the binding raises (message and ERR);
-* the later calls, which run a compiled recording of the first, write the same.
+* the later calls, which run a compiled recording of the first, write the same;
+* the "Points on a link" table: the reference joint and line of each link, checked
+  through the positions the binding writes (and the doc's directions of T(3), T(13),
+  T(14), T(9) and L(5) with them).
 """
 
 from __future__ import annotations
@@ -313,3 +316,67 @@ def test_no_document_points_outside_the_repository():
     for path in [root / "README.md", *sorted((root / "docs").glob("*.md")), *sorted((root / "yaseer").rglob("*.py"))]:
         text = path.read_text()
         assert "shared/spec" not in text and "../shared" not in text and "/work/" not in text, path
+
+
+# Where each link's point elements are (the doc's "Points on a link" table is checked
+# against these): (R, H) inputs and the (X, Y) outputs of its point of interest.
+POINT_ELEMENTS = {
+    (1, "crank"): (("R", 1), ("H", 1), ("X", 1), ("Y", 1)),
+    (1, "connecting rod"): (("R", 4), ("H", 4), ("X", 2), ("Y", 2)),
+    (2, "crank"): (("R", 9), ("H", 9), ("X", 3), ("Y", 3)),
+    (2, "coupler"): (("R", 11), ("H", 11), ("X", 4), ("Y", 4)),
+    (2, "follower"): (("R", 13), ("H", 13), ("X", 5), ("Y", 5)),
+    (3, "crank"): (("R", 0), ("H", 23), ("X", 6), ("Y", 6)),
+    (3, "follower"): (("R", 7), ("H", 6), ("X", 7), ("Y", 7)),
+}
+
+
+def joints(program: int, m: FakeMachine) -> dict[str, complex]:
+    """The joints of a program after a call, from its inputs and the doc's angle outputs:
+    T(3) is A->B, T(13) A->B, T(14) B->Bo, T(9) Bo->A, L(5) = |Bo->A|."""
+    import cmath
+    import math
+
+    a, t = m.array("L"), m.array("T")
+
+    def u(degrees):
+        return cmath.exp(1j * math.radians(degrees))
+
+    if program == 1:
+        pin_a = a[2] * u(t[2])
+        return {"Ao": 0j, "A": pin_a, "B": pin_a + a[3] * u(t[3])}
+    if program == 2:
+        pin_a, pivot = a[12] * u(t[12]), a[11] * u(t[11])
+        pin_b = pin_a + a[13] * u(t[13])
+        assert abs(pin_b - (pivot - a[14] * u(t[14]))) < 1e-9  # T(14) is B->Bo: the loop closes
+        return {"Ao": 0j, "A": pin_a, "B": pin_b, "Bo": pivot}
+    pin_a, pivot = a[7] * u(t[7]), -a[6] * u(t[6])
+    assert abs(pivot + a[5] * u(t[9]) - pin_a) < 1e-9  # L(5), T(9): the vector Bo->A
+    return {"Ao": 0j, "A": pin_a, "Bo": pivot}
+
+
+def test_points_on_a_link_are_measured_as_the_doc_says():
+    """For each row of the doc's table: R = 0 is the reference joint, R = the joint-to-joint
+    length with H = 0 is the other joint, and H = 90 turns counter-clockwise from that line."""
+    rows = TABLES["Conventions every program follows"]
+    assert {(int(row[0]), row[1]) for row in rows} == set(POINT_ELEMENTS)
+    for program_text, link, joint_text, line_text in rows:
+        program = int(program_text)
+        start, end = joint_text.split()[0], line_text.split("→")[1]
+        assert line_text.split("→")[0] == start, line_text
+        r, h, x, y = POINT_ELEMENTS[(program, link)]
+
+        def point(distance, angle):
+            m = machine_with(program, z=0)
+            m.set(**{r[0]: {r[1]: distance}})
+            m.set(**{h[0]: {h[1]: angle}})
+            m.call(program)
+            return complex(m.array(x[0])[x[1]], m.array(y[0])[y[1]]), joints(program, m)
+
+        at_start, places = point(0.0, 30.0)
+        assert abs(at_start - places[start]) < 1e-9, (program, link)
+        length = abs(places[end] - places[start])
+        at_end, _ = point(length, 0.0)
+        assert abs(at_end - places[end]) < 1e-9, (program, link)
+        turned, _ = point(length, 90.0)
+        assert abs(turned - (places[start] + 1j * (places[end] - places[start]))) < 1e-9, (program, link)
