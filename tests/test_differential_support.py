@@ -290,6 +290,24 @@ def run_yaseer(source: str, angle: str | None = "rad", dialect: str = "casio") -
     return screen.getvalue()
 
 
+def run_direct(text: str, dialect: str = "gw") -> str:
+    """yaseer's output for one statement typed in direct mode, then its error line if it fails
+    (as PC-BASIC shows a direct statement)."""
+    import io
+
+    from yaseer.basic.errors import BasicError
+    from yaseer.basic.machine import Machine
+
+    screen = io.StringIO()
+    machine = Machine(screen=screen, dialect=dialect)
+    try:
+        machine.execute_direct(text)
+    except BasicError as err:
+        machine.end_line()
+        return screen.getvalue() + str(err) + "\n"
+    return screen.getvalue()
+
+
 NUMBER = re.compile(r"-?(?:\d+\.?\d*|\.\d+)(?:[ED][-+]\d+)?")  # D: GW-BASIC's double exponent
 
 

@@ -3,11 +3,9 @@ parse errors (Syntax error or Missing operand) of statements typed in direct mod
 
 from __future__ import annotations
 
-import io
-
 import pytest
 
-from test_differential_support import PcBasic
+from test_differential_support import PcBasic, run_direct as direct
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 
@@ -17,21 +15,6 @@ def pc():
     session = PcBasic()
     yield session
     session.close()
-
-
-def direct(text: str) -> str:
-    """What yaseer prints for one statement typed in direct mode (its error line if it fails)."""
-    from yaseer.basic.errors import BasicError
-    from yaseer.basic.machine import Machine
-
-    screen = io.StringIO()
-    machine = Machine(screen=screen, dialect="gw")
-    try:
-        machine.execute_direct(text)
-    except BasicError as err:
-        machine.end_line()
-        return screen.getvalue() + str(err) + "\n"
-    return screen.getvalue()
 
 
 def test_error_statement_raises_every_code_with_gw_basics_message(pc):

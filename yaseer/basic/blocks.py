@@ -28,7 +28,7 @@ def flatten(lines: list) -> list:
 
 def _jump_targets(stmt) -> list:
     """The line numbers a statement (or its IF branches) may jump to."""
-    if isinstance(stmt, (ast.Goto, ast.Gosub)):
+    if isinstance(stmt, (ast.Goto, ast.Gosub, ast.ReturnTo)):
         return [stmt.target]
     if isinstance(stmt, ast.OnJump):
         return list(stmt.targets)
@@ -86,7 +86,7 @@ def nodes(value):
 def splits(stmt) -> bool:
     """True when code after ``stmt`` must be enterable from outside (a return point)."""
     for s in walk_statements(stmt):
-        if isinstance(s, (ast.Gosub, ast.Stop, ast.For, ast.Trace)):
+        if isinstance(s, (ast.Gosub, ast.Stop, ast.For, ast.Trace, ast.Erase, ast.OptionBase)):
             return True
         if isinstance(s, ast.OnJump) and s.gosub:
             return True
@@ -246,7 +246,28 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
     # dynamic loops' NEXTs are not consumed; natives' are
     dynamic_for_next = {f: j for f, j in for_next.items() if f not in native}
     branch_for_next = _branch_loops(statements, entries, for_next)  # adds the entries it needs
-    return Plan(sorted(entries), native, dynamic_for_next, next_for, fine, branch_for_next)
+    result = Plan(sorted(entries), native, dynamic_for_next, next_for, fine, branch_for_next)
+    _plan_while_loops(statements, result)
+    return result
+
+
+def _plan_while_loops(statements: list, result: Plan) -> None:
+    """Match top-level WHILE and WEND by nesting (GW-BASIC scans the program the same
+    way): the WHILE starts a block (WEND jumps back to it), so does the statement after
+    its WEND (where a false condition goes).  Also notes whether OPTION BASE is used."""
+    result.while_wend, result.wend_while = {}, {}
+    open_loops: list[int] = []
+    extra = set()
+    for i, stmt in enumerate(statements):
+        if isinstance(stmt, ast.While):
+            open_loops.append(i)
+        elif isinstance(stmt, ast.Wend) and open_loops:
+            start = open_loops.pop()
+            result.while_wend[start], result.wend_while[i] = i, start
+            extra.update((start, i + 1))
+    result.entries = sorted(set(result.entries) | extra)
+    result.option_base = any(isinstance(s, ast.OptionBase) for stmt in statements
+                             if not isinstance(stmt, BasicError) for s in walk_statements(stmt))
 
 
 def _branch_loops(statements: list, entries: set, for_next: dict) -> dict:

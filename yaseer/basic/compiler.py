@@ -36,22 +36,50 @@ from yaseer.basic.number_models import NUMERIC, array_local, local_name, number_
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # noqa: F401  (re-exported)
 from yaseer.basic.errors import (
     BasicError, FOR_WITHOUT_NEXT, OUT_OF_MEMORY, SYNTAX_ERROR, TYPE_MISMATCH, UNDEFINED_LINE,
+    WEND_WITHOUT_WHILE, WHILE_WITHOUT_WEND,
 )
 
 _PY_RELATIONS = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
 
-# name -> (argument types, result type, Python callable name in the namespace)
+# name -> (argument kinds of each accepted form, result type, Python callable in the
+# namespace); a kind is "n" number, "s" string, "x" either (FRE).
 _FUNCTIONS = {
-    "SIN": ("n", "n", "_sin"), "COS": ("n", "n", "_cos"), "TAN": ("n", "n", "_tan"),
-    "ATN": ("n", "n", "_atn"), "SQR": ("n", "n", "_sqrt"), "ABS": ("n", "n", "abs"),
-    "INT": ("n", "n", "_floor"), "FIX": ("n", "n", "_fix"), "SGN": ("n", "n", "_sgn"),
-    "EXP": ("n", "n", "_exp"), "LOG": ("n", "n", "_log"), "RND": ("n", "n", "_rnd"),
-    "LEN": ("s", "n", "_len"), "STR$": ("n", "s", "_strs"), "VAL": ("s", "n", "_val"),
-    "CHR$": ("n", "s", "_chr"), "ASC": ("s", "n", "_asc"),
-    "CINT": ("n", "n", "_cint"), "CSNG": ("n", "n", "_csng"), "CDBL": ("n", "n", "_cdbl"),
-    "LEFT$": ("sn", "s", "_left"), "RIGHT$": ("sn", "s", "_right"), "MID$": ("sn", "s", "_mid"),
+    "SIN": (("n",), "n", "_sin"), "COS": (("n",), "n", "_cos"), "TAN": (("n",), "n", "_tan"),
+    "ATN": (("n",), "n", "_atn"), "SQR": (("n",), "n", "_sqrt"), "ABS": (("n",), "n", "abs"),
+    "INT": (("n",), "n", "_floor"), "FIX": (("n",), "n", "_fix"), "SGN": (("n",), "n", "_sgn"),
+    "EXP": (("n",), "n", "_exp"), "LOG": (("n",), "n", "_log"), "RND": (("", "n"), "n", "_rnd"),
+    "LEN": (("s",), "n", "_len"), "STR$": (("n",), "s", "_strs"), "VAL": (("s",), "n", "_val"),
+    "CHR$": (("n",), "s", "_chr"), "ASC": (("s",), "n", "_asc"),
+    "CINT": (("n",), "n", "_cint"), "CSNG": (("n",), "n", "_csng"), "CDBL": (("n",), "n", "_cdbl"),
+    "LEFT$": (("sn",), "s", "_left"), "RIGHT$": (("sn",), "s", "_right"),
+    "MID$": (("sn", "snn"), "s", "_mid"),
+    # GW-BASIC's (issue 12)
+    "INSTR": (("ss", "nss"), "n", "_instr"), "STRING$": (("nn", "ns"), "s", "_string"),
+    "SPACE$": (("n",), "s", "_space"), "HEX$": (("n",), "s", "_hex"), "OCT$": (("n",), "s", "_oct"),
+    "MKI$": (("n",), "s", "_mki"), "MKS$": (("n",), "s", "_mks"), "MKD$": (("n",), "s", "_mkd"),
+    "CVI": (("s",), "n", "_cvi"), "CVS": (("s",), "n", "_cvs"), "CVD": (("s",), "n", "_cvd"),
+    "FRE": (("x",), "n", "_fre"), "POS": (("n",), "n", "_pos"), "LPOS": (("n",), "n", "_lpos"),
+    "EOF": (("n",), "n", "_eof"), "LOF": (("n",), "n", "_lof"), "LOC": (("n",), "n", "_loc"),
+    "INPUT$": (("n", "nn"), "s", "_input_chars"),
 }
-_OPTIONAL_LAST_ARGUMENT = {"RND": "n", "MID$": "n"}
+
+# Values without arguments: name -> (Python expression, "s" or None for the integer type).
+_SYSTEM_VARIABLES = {
+    "ERR": ("_M.err", None), "ERL": ("_M.erl", None), "TIMER": ("_timer()", "n"),
+    "DATE$": ("_date()", "s"), "TIME$": ("_time()", "s"),
+}
+
+
+def _call_form(forms: tuple, kinds: list) -> str:
+    """The form of a function that takes arguments of ``kinds`` ("s"/"n"): wrong count
+    Syntax error, wrong types Type mismatch."""
+    same_length = [form for form in forms if len(form) == len(kinds)]
+    if not same_length:
+        raise _syntax_error()
+    for form in same_length:
+        if all(want in ("x", kind) for want, kind in zip(form, kinds)):
+            return form
+    raise _type_mismatch()
 
 
 class CompileError(BasicError):
@@ -231,6 +259,8 @@ class AreaCompiler:
         self.break_infos: list[tuple] = []  # #BREAK#k markers: (BASIC line, open loops)
         self.break_points: dict[int, dict] = {}  # block -> {Python line: (BASIC line, open loops)}
         self.fn_params: dict[str, list] = {}  # DEF FN name -> parameter names
+        # under OPTION BASE 1 a constant subscript 0 must go through the check
+        self.lowest_fast_subscript = 1 if self.plan.option_base else 0
 
     # -- emission primitives
     def emit(self, text: str) -> None:
@@ -300,9 +330,11 @@ class AreaCompiler:
     def element(self, node, scope) -> str:
         code = scope.array(node.name, len(node.indices))
         for index in node.indices:
-            if isinstance(index, ast.Num) and index.value >= 0 and index.value == int(index.value):
+            if isinstance(index, ast.Num) and index.value >= self.lowest_fast_subscript \
+                    and index.value == int(index.value):
                 code += f"[{int(index.value)}]"
-            elif isinstance(index, ast.Var) and index.name in self.counting_vars and isinstance(scope, _BlockScope):
+            elif isinstance(index, ast.Var) and index.name in self.counting_vars and isinstance(scope, _BlockScope) \
+                    and not self.plan.option_base:
                 code += f"[int({scope.scalar(index.name)} + 0.5)]"  # a loop variable known to be >= 0
             else:
                 code += f"[_ix({self.numeric(index, scope)})]"
@@ -340,17 +372,17 @@ class AreaCompiler:
         return self.numbers.helper(op, left, right)
 
     def expr_Call(self, node, scope):
-        argtypes, result, helper = _FUNCTIONS[node.name]
+        forms, result, helper = _FUNCTIONS[node.name]
         args = list(node.args)
-        optional = _OPTIONAL_LAST_ARGUMENT.get(node.name)
-        expected = argtypes + (optional or "")
-        if not (len(argtypes) <= len(args) <= len(expected)):
-            if node.name == "RND" and not args:
-                return self.numbers.call("RND", "_rnd", ["1.0"], [self.numbers.widest], "n")
-            raise _syntax_error()
+        if node.name == "RND" and not args:
+            return self.numbers.call("RND", "_rnd", ["1.0"], [self.numbers.widest], "n")
+        form = _call_form(forms, [ast.expr_type(arg) for arg in args])
         codes, kinds = [], []
-        for arg, kind in zip(args, expected):
-            code, kind = (self.string(arg, scope), "s") if kind == "s" else self.typed(arg, scope)
+        for arg, want in zip(args, form):
+            if want == "s" or (want == "x" and ast.expr_type(arg) == "s"):
+                code, kind = self.string(arg, scope), "s"
+            else:
+                code, kind = self.typed(arg, scope)
             codes.append(self.numbers.printable(code, kind) if node.name == "STR$" else code)
             kinds.append(kind)
         return self.numbers.call(node.name, helper, codes, kinds, result)
@@ -376,7 +408,8 @@ class AreaCompiler:
     def expr_SysVar(self, node, scope):
         if node.name == "PI":
             return repr(math.pi), "n"
-        return ("_M.err" if node.name == "ERR" else "_M.erl"), self.numbers.integer
+        code, kind = _SYSTEM_VARIABLES[node.name]
+        return code, kind or self.numbers.integer
 
     def condition(self, node, scope) -> str:
         """A Python boolean expression for an IF condition."""
@@ -588,8 +621,70 @@ class AreaCompiler:
             self.emit(f"#ARRAY#{name}")
 
     def stmt_Clear(self, stmt, scope):
+        if stmt.args:
+            sizes = ", ".join("None" if a is None else self.numeric(a, scope) for a in stmt.args)
+            self.emit(f"_clear_args({sizes})")
         self.emit("_clear()")
         self.emit("#RELOAD#")
+
+    # -- GW-BASIC's statements (issue 12)
+    def stmt_While(self, stmt, scope):
+        wend = self.plan.while_wend.get(self.index) if self.depth == 0 else None
+        if wend is None:
+            raise CompileError("WHILE without WEND", WHILE_WITHOUT_WEND)
+        self.emit(f"if not ({self.condition(stmt.condition, scope)}): return {self.entry_block[wend + 1]}")
+
+    def stmt_Wend(self, stmt, scope):
+        start = self.plan.wend_while.get(self.index) if self.depth == 0 else None
+        if start is None:
+            raise CompileError("WEND without WHILE", WEND_WITHOUT_WHILE)
+        self.emit(f"return {self.entry_block[start]}")
+
+    def stmt_Swap(self, stmt, scope):
+        first, kind = self.expr(stmt.first, scope)
+        second, other = self.expr(stmt.second, scope)
+        if kind != other:
+            raise _type_mismatch()
+        t = self.new_temp()
+        self.emit(f"{t} = {first}")
+        self.assign(stmt.first, second, kind, scope, False)
+        self.assign(stmt.second, t, kind, scope, False)
+
+    def stmt_MidAssign(self, stmt, scope):
+        target = self.string(stmt.target, scope)
+        count = "None" if stmt.count is None else self.numeric(stmt.count, scope)
+        code = f"_midset({target}, {self.numeric(stmt.start, scope)}, {count}, {self.string(stmt.value, scope)})"
+        self.assign(stmt.target, code, "s", scope, False)
+
+    def stmt_Erase(self, stmt, scope):
+        for name in stmt.names:
+            self.emit(f"_erase({self.numbers.name(name)!r})")
+
+    def stmt_OptionBase(self, stmt, scope):
+        self.emit(f"_option_base({stmt.base})")
+
+    def stmt_LineInput(self, stmt, scope):
+        self.assign(stmt.target, f"_line_input({stmt.prompt!r})", "s", scope, False)
+
+    def stmt_Write(self, stmt, scope):
+        self.emit(f"_write(0, ({self.written_items(stmt.items, scope)}))")
+
+    def written_items(self, items, scope) -> str:
+        """WRITE's items as Python text pieces: strings in quotes, numbers as STR$ gives
+        them without the blank (the caller joins them with commas)."""
+        pieces = []
+        for item in items:
+            code, kind = self.expr(item, scope)
+            if kind == "s":
+                pieces.append(f"'\"' + {code} + '\"'")
+            else:
+                pieces.append(f"_strs({self.numbers.printable(code, kind)}).strip()")
+        return "".join(piece + ", " for piece in pieces)
+
+    def stmt_ReturnTo(self, stmt, scope):
+        jump = self.jump(stmt.target)
+        self.emit("_return()")
+        self.emit(jump)
 
     def stmt_Read(self, stmt, scope):
         for target in stmt.targets:

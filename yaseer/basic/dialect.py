@@ -45,7 +45,7 @@ class Dialect:
         ``pi_keyword``: True makes ``PI`` the constant pi (a Casio keyword);
         False leaves it an ordinary variable name (GW-BASIC has no PI).
         ``own_words``: keywords only this dialect reserves, on top of the
-        common ones in scanner.py (Casio: ``DEG RAD``; GW: ``DEFINT DEFSNG
+        common ones in scanner.py (Casio: ``DEG RAD XOR EQV IMP``; GW: ``DEFINT DEFSNG
         DEFDBL DEFSTR XOR EQV IMP``).  ``PI`` and ``PROG`` are reserved by
         ``pi_keyword`` and ``program_areas``.
 
@@ -141,7 +141,8 @@ class Dialect:
 
 
 CASIO = Dialect(
-    name="casio", keyword_first=True, pi_keyword=True, own_words=("DEG", "RAD"), typed_numbers=False,
+    name="casio", keyword_first=True, pi_keyword=True, own_words=("DEG", "RAD", "XOR", "EQV", "IMP"),
+    typed_numbers=False,
     print_digits=10,
     width=None, zone=14, on_division_by_zero="stop", on_overflow="stop", angle="DEG",
     implicit_arrays=AL_YASEER_DIMENSIONS, default_dimension=10, program_areas=True,

@@ -26,7 +26,7 @@ import sys
 from functools import lru_cache
 from typing import Callable, TextIO
 
-from yaseer.basic import dialect as dialects, formatting, numbers, program_cache, runtime
+from yaseer.basic import dialect as dialects, formatting, gwfunctions, numbers, program_cache, runtime
 from yaseer.basic.number_models import initial_value
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # MAX_STACK: GOSUB returns + open FOR loops together
 from yaseer.basic.errors import (
@@ -174,11 +174,11 @@ class _AreaRuntime:
     def read_number(self) -> float:
         text, line = self.read_item()
         try:
-            value = float(text) if text else 0.0
-        except ValueError:
-            raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number) from None
-        if value - value:
-            raise BasicError("Overflow", OVERFLOW).at(line, self.number)
+            value = gwfunctions.number_field(text)
+        except BasicError as err:
+            raise err.at(line, self.number) from None
+        if value is None:
+            raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number)
         return value
 
     def read_string(self) -> str:
@@ -257,6 +257,7 @@ class Machine:
         self.line_hooks: list[Callable] = []
         self._line_values: tuple[list, list] = ([], [])
         self.tracing = False  # TRON: lines run are shown as [n]
+        self.subscript_base = 0  # OPTION BASE
         # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
         # ``yaseer run`` stops at once): see _on_interrupt.
         self.resumable_breaks = False
@@ -388,7 +389,7 @@ class Machine:
             "_randomize": self.randomize, "_rnd": self.rnd,
             "_sqrt": math.sqrt, "_floor": runtime.floor, "_fix": runtime.fix, "_sgn": runtime.sign,
             "_exp": math.exp, "_log": math.log, "_len": lambda s: float(len(s)),
-            "_strs": formatting.str_dollar, "_val": runtime.val, "_chr": runtime.chr_dollar,
+            "_strs": formatting.str_dollar, "_val": gwfunctions.val, "_chr": runtime.chr_dollar,
             "_asc": runtime.asc, "_left": runtime.left, "_right": runtime.right, "_mid": runtime.mid,
             "_cat": runtime.concat, "_pow": runtime.power, "_idiv": runtime.int_divide,
             "_mod": runtime.modulo, "_and": runtime.logical_and, "_or": runtime.logical_or,
@@ -397,11 +398,27 @@ class Machine:
             "_fafter": runtime.counted_final, "_tr": self.trace_line, "_cint": lambda x: float(runtime.cint(x)),
             "_csng": float, "_cdbl": float,
         }
+        ns.update(self._gw_functions())
         if self.dialect.typed_numbers:
             ns.update(numbers.RUNTIME)
         ns.update(self._trig_functions())
         self.namespaces[area] = ns
         return ns
+
+    def _gw_functions(self) -> dict:
+        """The namespace entries of GW-BASIC's statements and functions (issue 12)."""
+        g = gwfunctions
+        return {
+            "_instr": g.instr, "_string": g.string_dollar, "_space": g.space_dollar,
+            "_hex": g.hex_dollar, "_oct": g.oct_dollar, "_mki": g.mki, "_mks": g.mks, "_mkd": g.mkd,
+            "_cvi": g.cvi, "_cvs": g.cvs, "_cvd": g.cvd, "_timer": g.timer, "_date": g.date_dollar,
+            "_time": g.time_dollar, "_xor": g.logical_xor, "_eqv": g.logical_eqv,
+            "_imp": g.logical_imp, "_midset": g.mid_assign, "_fre": self.free_memory,
+            "_pos": lambda _: float(self.screen.column + 1),
+            "_lpos": lambda _: float(self.printer.column + 1),
+            "_erase": self.erase, "_option_base": self.option_base, "_line_input": self.line_input,
+            "_write": self.write_values, "_clear_args": _check_clear_arguments,
+        }
 
     def _trig_functions(self) -> dict:
         if self.angle == "RAD":
@@ -504,6 +521,31 @@ class Machine:
         self.arrays[name] = _new_array(dims, initial_value(name))
         self.array_dims[name] = dims
         self.explicit_arrays.add(name)
+
+    def erase(self, name: str) -> None:
+        """ERASE name: forget the array (a later DIM may size it again); not there: Illegal function call."""
+        dims = self.array_dims.get(name)
+        if name not in self.arrays or dims is None:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self.array_elements -= math.prod(d + 1 for d in dims)
+        del self.arrays[name], self.array_dims[name]
+        self.explicit_arrays.discard(name)
+
+    def option_base(self, base: int) -> None:
+        """OPTION BASE 0 or 1: the lowest subscript; once an array exists: Duplicate Definition."""
+        if self.arrays:
+            raise BasicError("Duplicate Definition", DUPLICATE_DEFINITION)
+        self.set_subscript_base(base)
+
+    def set_subscript_base(self, base: int) -> None:
+        self.subscript_base = base
+        check = runtime.subscript if base == 0 else runtime.subscript_from_one
+        for ns in list(self.namespaces.values()):
+            ns["_ix"] = check
+
+    def free_memory(self, _any) -> float:
+        """FRE(x): bytes left in the array budget (8 bytes an element), whatever x is."""
+        return float(8 * (MAX_TOTAL_ELEMENTS - self.array_elements))
 
     def clear(self) -> None:
         """CLEAR: every variable to 0 or "", arrays back to their implicit state, no FN."""
@@ -732,6 +774,7 @@ class Machine:
         self.cont_point = None
         self.area_depth = 0
         self.set_angle(self.default_angle)
+        self.set_subscript_base(0)
         self.random.reset()
 
     def run(self, line: int | None = None) -> str:
@@ -1044,25 +1087,39 @@ class Machine:
     def input_values(self, prompt, question_mark: bool, kinds: str) -> list:
         """INPUT: prompt, read one line, split at commas; wrong values ask again."""
         while True:
-            text = (prompt or "") + ("? " if question_mark or prompt is None else "")
-            self.screen.write(text)
-            self.screen.flush()
-            stream = self.input_stream if self.input_stream is not None else sys.stdin
-            self._reading_input = True  # a Ctrl-C now breaks at once
-            try:
-                line = stream.readline()
-            finally:
-                self._reading_input = False
-            if not line:
-                raise BasicError("Input past end", INPUT_PAST_END)
-            if self.input_stream is not None:
-                self.screen.write(line if line.endswith("\n") else line + "\n")
-            else:
-                self.screen.column = 0
-            values = _parse_input(line.rstrip("\r\n"), kinds)
+            line = self._read_line((prompt or "") + ("? " if question_mark or prompt is None else ""))
+            values = _parse_input(line, kinds)
             if values is not None:
                 return values
             self.screen.write("?Redo from start\n")
+
+    def line_input(self, prompt) -> str:
+        """LINE INPUT ["prompt";] a$: the whole line, commas and quotes included."""
+        return self._read_line(prompt or "")
+
+    def _read_line(self, prompt: str) -> str:
+        """Show ``prompt``, read one line of input (without its line end); the end of
+        the input is ``Input past end``."""
+        self.screen.write(prompt)
+        self.screen.flush()
+        stream = self.input_stream if self.input_stream is not None else sys.stdin
+        self._reading_input = True  # a Ctrl-C now breaks at once
+        try:
+            line = stream.readline()
+        finally:
+            self._reading_input = False
+        if not line:
+            raise BasicError("Input past end", INPUT_PAST_END)
+        if self.input_stream is not None:
+            self.screen.write(line if line.endswith("\n") else line + "\n")
+        else:
+            self.screen.column = 0
+        return line.rstrip("\r\n")
+
+    def write_values(self, device: int, pieces: tuple) -> None:
+        """WRITE: the items (already as text: strings quoted, numbers without blanks)
+        separated by commas, then the line end."""
+        self.print_items(device, (",".join(pieces),), True)
 
     def rnd(self, x: float = 1.0) -> float:
         """RND(x): x > 0 the next number, 0 the last again, x < 0 reseeds with x first."""
@@ -1163,6 +1220,12 @@ def _same(value):
     return value
 
 
+def _check_clear_arguments(*sizes) -> None:
+    """CLEAR n, m, k: the memory sizes are not used; a negative first one is Illegal function call."""
+    if sizes and sizes[0] is not None and sizes[0] < 0:
+        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+
+
 def _as_number(value):
     """A number some Python area stored (int, numpy float) as a Python float; else as is."""
     if isinstance(value, (int, float)) and not isinstance(value, bool):
@@ -1182,10 +1245,10 @@ def _parse_input(text: str, kinds: str):
             values.append(field_text)
             continue
         try:
-            value = float(field_text.strip() or "0")
-        except ValueError:
+            value = gwfunctions.number_field(field_text)
+        except BasicError:  # beyond the double range
             return None
-        if value - value:
+        if value is None:
             return None
         values.append(value)
     return values

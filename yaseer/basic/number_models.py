@@ -118,7 +118,7 @@ class TypedNumbers(PlainNumbers):
     _RESULTS = {
         "SIN": "!", "COS": "!", "TAN": "!", "ATN": "!", "SQR": "!", "EXP": "!", "LOG": "!",
         "RND": "!", "VAL": "#", "ABS": None, "INT": None, "FIX": None, "SGN": "%", "LEN": "%",
-        "ASC": "%", "CINT": "%", "CSNG": "!", "CDBL": "#",
+        "ASC": "%", "CINT": "%", "CSNG": "!", "CDBL": "#", "CVD": "#",
     }
 
     def __init__(self):

@@ -212,8 +212,49 @@ class _ToAst(Transformer):
     def dim_item(self, c):
         return (c[0].value, tuple(c[1]))
 
+    def dim_scalar(self, c):
+        return (c[0].value, (ast.Num(10.0),))  # GW-BASIC: DIM A is DIM A(10)
+
     def clear_stmt(self, c):
-        return ast.Clear()
+        return ast.Clear([x for x in c[1:] if not isinstance(x, Token)])
+
+    # -- GW-BASIC statements (issue 12)
+    def while_stmt(self, c):
+        return ast.While(c[1])
+
+    def wend_stmt(self, c):
+        return ast.Wend()
+
+    def swap_stmt(self, c):
+        return ast.Swap(c[1], c[3])
+
+    def mid_stmt(self, c):
+        if c[0].value != "MID$":
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        v = _values(c)
+        count = v[3] if len(v) > 4 else None
+        return ast.MidAssign(v[1], v[2], count, v[-1])
+
+    def erase_stmt(self, c):
+        return ast.Erase([t.value for t in _values(c)[1:]])
+
+    def option_base(self, c):
+        base = _line_number(c[2])
+        if c[1].value != "BASE" or base not in (0, 1):
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return ast.OptionBase(base)
+
+    def line_input(self, c):
+        prompt, rest = None, c[2:]
+        if isinstance(rest[0], Token) and rest[0].type == "STRING":
+            prompt, rest = rest[0].value, rest[2:]
+        return ast.LineInput(prompt, rest[0])
+
+    def write_stmt(self, c):
+        return ast.Write(_values(c)[1:])
+
+    def return_line(self, c):
+        return ast.ReturnTo(_line_number(c[1]))
 
     def data_stmt(self, c):
         return ast.Data(c[0].value)
@@ -289,6 +330,8 @@ class _ToAst(Transformer):
         name = c[0].value
         if len(c) == 1:
             return ast.Call(name, ())
+        if len(c) > 2:  # INPUT$(n, #f)
+            return ast.Call(name, (c[1], c[4]))
         arg = c[1]
         return ast.Call(name, tuple(arg) if isinstance(arg, list) else (arg,))
 

@@ -38,6 +38,14 @@ def subscript(x: float) -> int:
     return int(x + 0.5)
 
 
+def subscript_from_one(x: float) -> int:
+    """An array subscript under OPTION BASE 1: 0 is ``Subscript out of range``."""
+    k = subscript(x)
+    if k == 0:
+        raise IndexError("subscript 0 under OPTION BASE 1")
+    return k
+
+
 def cint(x: float) -> int:
     """Round to an integer for the logical operators, ON and CHR$ (half away from zero)."""
     return int(x + 0.5) if x >= 0 else -int(-x + 0.5)
@@ -254,21 +262,3 @@ def asc(s: str) -> float:
     if not s:
         raise illegal_function_call()
     return float(ord(s[0]))
-
-
-def val(s: str) -> float:
-    """VAL: the number at the start of s (blanks ignored), 0 if there is none."""
-    text = s.replace(" ", "").upper()
-    best = 0.0
-    for end in range(len(text), 0, -1):
-        try:
-            best = float(text[:end])
-        except ValueError:
-            continue
-        if "N" in text[:end] or "I" in text[:end]:  # no NAN/INF spellings
-            best = 0.0
-            continue
-        break
-    if best - best:
-        overflow()
-    return best

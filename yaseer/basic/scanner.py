@@ -25,6 +25,7 @@ import re
 
 from yaseer.basic.dialect import CASIO, Dialect
 from yaseer.basic.errors import BasicError, OVERFLOW, SYNTAX_ERROR
+from yaseer.basic.reserved import GW_RESERVED_WORDS
 
 # Statement and operator keywords every dialect reserves: each is its own terminal type.
 STATEMENT_KEYWORDS = (
@@ -33,15 +34,23 @@ STATEMENT_KEYWORDS = (
     "READ", "RESTORE", "INPUT", "DEF", "FN", "ERROR", "RESUME", "RANDOMIZE",
     "AND", "OR", "NOT", "MOD", "TAB", "SPC", "TRON", "TROFF", "CLS", "WIDTH",
 )
+# GW-BASIC's statements (issue 12), in both dialects.
+GW_STATEMENT_KEYWORDS = (
+    "WHILE", "WEND", "SWAP", "ERASE", "OPTION", "LINE", "WRITE", "OPEN", "CLOSE", "KILL",
+    "FILES", "APPEND",
+)
+RENAME_KEYWORD = "NAME"  # NAME old AS new (token RENAME: NAME is the variables' terminal)
 # Functions of one argument (parentheses optional: ``COS T``).
 UNARY_FUNCTIONS = (
     "SIN", "COS", "TAN", "ATN", "SQR", "ABS", "INT", "FIX", "SGN", "EXP", "LOG", "RND",
     "LEN", "STR$", "VAL", "CHR$", "ASC", "CINT", "CSNG", "CDBL",
+    "SPACE$", "HEX$", "OCT$", "MKI$", "MKS$", "MKD$", "CVI", "CVS", "CVD", "FRE", "POS",
+    "LPOS", "EOF", "LOF", "LOC",
 )
 # Functions that need a parenthesised argument list.
-LIST_FUNCTIONS = ("LEFT$", "RIGHT$", "MID$")
+LIST_FUNCTIONS = ("LEFT$", "RIGHT$", "MID$", "INSTR", "STRING$", "INPUT$")
 # Values without arguments.
-SYSTEM_VARIABLES = ("ERR", "ERL")
+SYSTEM_VARIABLES = ("ERR", "ERL", "TIMER", "DATE$", "TIME$")
 COMMENT_KEYWORD = "REM"
 DATA_KEYWORD = "DATA"
 # Words some dialects reserve (Dialect.own_words, pi_keyword, program_areas) -> token type.
@@ -53,8 +62,9 @@ DIALECT_WORDS = {
 _GW_PREFIX_KEYWORDS = ("FN",)
 
 _COMMON_TYPES: dict[str, str] = {}
-for _word in STATEMENT_KEYWORDS:
+for _word in STATEMENT_KEYWORDS + GW_STATEMENT_KEYWORDS:
     _COMMON_TYPES[_word] = _word
+_COMMON_TYPES[RENAME_KEYWORD] = "RENAME"
 for _word in UNARY_FUNCTIONS:
     _COMMON_TYPES[_word] = "FUNC"
 for _word in LIST_FUNCTIONS:
@@ -83,11 +93,26 @@ class _Keywords:
             self.by_letter[word[0]] = self.by_letter.get(word[0], ()) + (word,)
 
     def at(self, upper: str, i: int) -> str | None:
-        """The longest keyword that starts at position ``i`` of the upper-cased text."""
+        """The longest keyword that starts at position ``i`` of the upper-cased text
+        (none where a longer reserved word begins with it: see ``_LONGER_RESERVED``)."""
         for word in self.by_letter.get(upper[i], ()):
             if upper.startswith(word, i):
+                if any(upper.startswith(longer, i) for longer in _LONGER_RESERVED.get(word, ())):
+                    return None
                 return word
         return None
+
+
+# Keyword-first reading must not split a longer GW-BASIC reserved word that begins with
+# one of issue 12's keywords (LOCATE is not LOC ATE, LOCK not LOC K): it stays one name,
+# which the parser reports as an unsupported word.
+_ADDED_KEYWORDS = set(GW_STATEMENT_KEYWORDS) | {RENAME_KEYWORD} | {
+    "SPACE$", "HEX$", "OCT$", "MKI$", "MKS$", "MKD$", "CVI", "CVS", "CVD", "FRE", "POS", "LPOS",
+    "EOF", "LOF", "LOC", "INSTR", "STRING$", "INPUT$", "TIMER", "DATE$", "TIME$"}
+_LONGER_RESERVED = {
+    word: tuple(r for r in GW_RESERVED_WORDS if r.startswith(word) and r != word and r not in _KEYWORD_TYPES)
+    for word in _ADDED_KEYWORDS
+}
 
 
 @functools.lru_cache(maxsize=None)
@@ -97,7 +122,7 @@ def _keywords(dialect: Dialect) -> _Keywords:
 
 _OPERATORS = {
     "+": "PLUS", "-": "MINUS", "*": "STAR", "/": "SLASH", "\\": "BSLASH", "^": "CARET",
-    "(": "_LPAR", ")": "_RPAR", ",": "COMMA", ";": "SEMI", ":": "_COLON",
+    "(": "_LPAR", ")": "_RPAR", ",": "COMMA", ";": "SEMI", ":": "_COLON", "#": "HASH",
 }
 _RELATIONS = {
     "=": "EQ", "<": "LT", ">": "GT", "<=": "LE", "=<": "LE", ">=": "GE", "=>": "GE",
@@ -305,8 +330,25 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
     for kind, value, start, _ in _lexemes(text, dialect):
         if kind == "REMARK" and tokens and text[start] == "'":
             break
+        if _joins_go(tokens, kind, value):
+            tokens[-1] = Token(_GO_JOINED[value], "GO" + value)
+            continue
         tokens.append(Token(kind, value))
     return tokens
+
+
+_GO_JOINED = {"TO": "GOTO", "SUB": "GOSUB"}
+_STATEMENT_STARTS = (None, "_COLON", "THEN", "ELSE")
+
+
+def _joins_go(tokens: list, kind: str, value) -> bool:
+    """Keyword-first reading: is this ``TO`` or ``SUB`` the second word of ``GO TO`` /
+    ``GO SUB`` at a statement start?  (GW-BASIC's whole-word reading joins them itself.)"""
+    if value not in _GO_JOINED or kind not in ("TO", "NAME") or not tokens:
+        return False
+    last = tokens[-1]
+    before = tokens[-2].type if len(tokens) > 1 else None
+    return last.type == "NAME" and last.value == "GO" and before in _STATEMENT_STARTS
 
 
 # Lexemes listed as words: a space separates two of them (``FOR J``, ``1 TO``, ``COS T``).

@@ -137,8 +137,8 @@ def expr_type(node) -> str:
         return "s"
     if isinstance(node, (Var, Elem, FnCall)):
         return "s" if node.name.endswith("$") else "n"
-    if isinstance(node, Call):
-        return "s" if node.name in STRING_FUNCTIONS else "n"
+    if isinstance(node, (Call, SysVar)):
+        return "s" if node.name.endswith("$") else "n"
     if isinstance(node, Binary) and node.op == "+":
         return expr_type(node.left)
     return "n"
@@ -237,7 +237,59 @@ class Dim:
 
 @_node
 class Clear:
+    args: list = _LIST  # CLEAR [n][,[m][,k]]: memory sizes, evaluated and checked only
+
+
+@_node
+class While:
+    condition: object
+
+
+@_node
+class Wend:
     pass
+
+
+@_node
+class Swap:
+    first: object
+    second: object
+
+
+@_node
+class MidAssign:
+    """MID$(target, start[, count]) = value."""
+    target: object
+    start: object
+    count: object
+    value: object
+
+
+@_node
+class Erase:
+    names: list
+
+
+@_node
+class OptionBase:
+    base: int
+
+
+@_node
+class LineInput:
+    prompt: str | None
+    target: object
+
+
+@_node
+class Write:
+    items: list
+
+
+@_node
+class ReturnTo:
+    """RETURN n: leave the subroutine and go on at line n."""
+    target: int
 
 
 @_node
