@@ -715,24 +715,34 @@ def test_examples_as_drawn_have_exact_axes():
 
 # --------------------------------------------------------------------------- random geometries
 
-from hypothesis import HealthCheck, assume, given, settings  # noqa: E402
+from hypothesis import HealthCheck, assume, example, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
 
 @settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(a=st.floats(5, 60), b=st.floats(20, 150), c=st.floats(20, 150), d=st.floats(20, 150),
        theta=st.floats(-180, 180), side=st.sampled_from([1, -1]), w=st.floats(-20, 20), alpha=st.floats(-50, 50))
+# A parallelogram 1.5 degrees from its folded position: the diagonal B-D is 1.2 long against
+# links of 139, so every double-precision solution loses about two digits there.
+@example(a=47.0, b=139.0, c=139.0, d=47.0, theta=1.5, side=1, w=1.0, alpha=0.0)
 def test_four_bar_reference_on_random_geometries(a, b, c, d, theta, side, w, alpha):
-    """Any assemblable position away from toggles: the solver equals the hand closed form."""
+    """Any assemblable position away from toggles: the solver equals the hand closed form.
+
+    The tolerance of the rates grows with the condition of the position, (b + c) / reach:
+    the loop closes on the short diagonal from B to the follower's pivot, and an error of
+    one unit in the last place of the links is magnified by that ratio in any solution.
+    """
     t = math.radians(theta)
     reach = math.hypot(d - a * math.cos(t), a * math.sin(t))
     assume(abs(b - c) + 1 < reach < b + c - 1)
     exact = four_bar_closed_form(a, b, c, d, theta, w, alpha, side)
     r = basic_linkages.fourbar(d, 0, a, b, c, [theta], w, alpha, crossed=side < 0)
+    condition = (b + c) / reach
     scale_w = abs(a * w) / min(b, c) + 1e-9
     assert math.remainder(r["T(13)"][0] - exact["beta"], 360) == pytest.approx(0, abs=1e-9)
-    assert r["W(6)"][0] == pytest.approx(exact["bd"], rel=1e-8, abs=1e-10 * scale_w)
-    assert r["A(7)"][0] == pytest.approx(exact["pdd"], rel=1e-8, abs=1e-10 * (scale_w ** 2 + abs(alpha)))
+    assert r["W(6)"][0] == pytest.approx(exact["bd"], rel=1e-8, abs=1e-10 * scale_w * condition)
+    assert r["A(7)"][0] == pytest.approx(exact["pdd"], rel=1e-8,
+                                         abs=1e-10 * (scale_w ** 2 + abs(alpha)) * condition)
 
 
 @settings(max_examples=100, deadline=None, suppress_health_check=[HealthCheck.too_slow])
