@@ -135,3 +135,28 @@ def test_a_traced_value_never_becomes_a_plain_number():
     with pytest.raises(TypeError):
         {traced: 1}
     assert (traced * 2).value == 5.0
+
+
+def test_an_array_of_another_length_is_read_as_the_plain_code_reads_it():
+    # I(7), I(8) fall beyond a shorter I (read as 0): the recording made for the longer
+    # array must not be used for it, nor the one made for the shorter for the longer
+    runs = []
+    for recording in (True, False):
+        binding._recordings.clear()
+        binding._calls.clear()
+        saved = binding.MAX_RECORDINGS
+        binding.MAX_RECORDINGS = saved if recording else 0
+        try:
+            m = machine(2, 2.0, 1)
+            full = list(m.array("I"))
+            row = []
+            for call in range(8):
+                m.arrays["I"] = full[:7] if call % 3 == 2 else list(full)
+                m.array("T")[12] = 15.0 * call
+                row.append(outcome(m, 2))
+            runs.append(row)
+        finally:
+            binding.MAX_RECORDINGS = saved
+    recorded, plain = runs
+    assert recorded == plain
+    assert recorded[2] != recorded[1]  # the shorter array does change the forces

@@ -143,24 +143,28 @@ class _RecordingFrame(_Frame):
     def __init__(self, machine, area: int, recorder):
         super().__init__(machine, area)
         self.recorder = recorder
-        self._arrays: set[str] = set()
+        self._arrays: dict[str, int] = {}  # array read -> its length (the recording holds for it only)
 
     def get(self, name: str, index: int):
         value = super().get(name, index)
         array = f"_a_{name}"
         if name not in self._arrays:
-            self._arrays.add(name)
-            self.recorder.lines.append(f"{array} = _M.array({name!r})")
-        return self.recorder.emit(value, f"float({array}[{index}]) if {index} < len({array}) else 0.0")
+            self._arrays[name] = length = len(self.machine.array(name))
+            self.recorder.lines += [f"{array} = _M.array({name!r})", f"if len({array}) != {length}: raise _Retrace"]
+        if index >= self._arrays[name]:
+            return value  # beyond the dimension: 0, as long as the length is the same
+        return self.recorder.emit(value, f"float({array}[{index}])")
 
     def scalar(self, name: str):
         return self.recorder.emit(super().scalar(name), f"float(_M.scalar({name!r}))")
 
     def choice(self, name: str, index: int) -> float:
-        traced = self.get(name, index)
-        if traced.value != traced.value:  # NaN equals nothing: no guard could pin it
-            from yaseer.linkages.tracing import NotTraceable
+        from yaseer.linkages.tracing import NotTraceable, Traced
 
+        traced = self.get(name, index)
+        if not isinstance(traced, Traced):  # beyond the dimension: 0 under the recording's length guard
+            return traced
+        if traced.value != traced.value:  # NaN equals nothing: no guard could pin it
             raise NotTraceable(f"{name}({index}) is NaN")
         bool(traced == traced.value)  # a guard: the recording holds for this value only
         return traced.value
@@ -183,7 +187,7 @@ class _RecordingFrame(_Frame):
         for name, index in self._elements:
             largest[name] = max(index, largest.get(name, -1))
             if name not in self._arrays:
-                self._arrays.add(name)
+                self._arrays[name] = -1  # written only
                 lines.append(f"_a_{name} = _M.array({name!r})")
         if largest:  # an array's elements are all numbers, all strings or all rows: one look each
             lines += [f"if {' or '.join(f'len(_a_{n}) <= {i}' for n, i in largest.items())}: "
