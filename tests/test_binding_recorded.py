@@ -46,8 +46,8 @@ def outcome(m: Machine, number: int):
     return {name: list(m.array(name)) for name in WRITTEN}, dict(m.scalars)
 
 
-def both_ways(number, z, q, angles, branch=0.0, scale=1.0):
-    """The outcomes with recordings (fresh) and with the plain code, call by call."""
+def recorded_and_plain(scenario) -> list:
+    """``scenario()`` run twice: with fresh recordings, and with the plain code."""
     results = []
     for recording in (True, False):
         binding._recordings.clear()
@@ -55,19 +55,27 @@ def both_ways(number, z, q, angles, branch=0.0, scale=1.0):
         saved = binding.MAX_RECORDINGS
         binding.MAX_RECORDINGS = saved if recording else 0
         try:
-            m = machine(number, z, q, branch)
-            name, index = CRANK[number]
-            row = []
-            for angle in angles:
-                m.array(name)[index] = angle
-                m.array("L")[12 if number == 2 else 2] *= scale
-                row.append(outcome(m, number))
-            results.append(row)
-            assert bool(binding._recordings.get((number, None))) == recording  # recorded calls ran
-
+            results.append(scenario())
         finally:
             binding.MAX_RECORDINGS = saved
+        assert any(binding._recordings.values()) == recording  # recorded calls ran (or none)
     return results
+
+
+def both_ways(number, z, q, angles, branch=0.0, scale=1.0):
+    """The outcomes with recordings (fresh) and with the plain code, call by call."""
+
+    def scenario():
+        m = machine(number, z, q, branch)
+        name, index = CRANK[number]
+        row = []
+        for angle in angles:
+            m.array(name)[index] = angle
+            m.array("L")[12 if number == 2 else 2] *= scale
+            row.append(outcome(m, number))
+        return row
+
+    return recorded_and_plain(scenario)
 
 
 ANGLES = [0.0, 37.5, 90.0, 123.4, 180.0, 270.0, 301.0, 359.9, 45.0, 0.0]
@@ -140,23 +148,17 @@ def test_a_traced_value_never_becomes_a_plain_number():
 def test_an_array_of_another_length_is_read_as_the_plain_code_reads_it():
     # I(7), I(8) fall beyond a shorter I (read as 0): the recording made for the longer
     # array must not be used for it, nor the one made for the shorter for the longer
-    runs = []
-    for recording in (True, False):
-        binding._recordings.clear()
-        binding._calls.clear()
-        saved = binding.MAX_RECORDINGS
-        binding.MAX_RECORDINGS = saved if recording else 0
-        try:
-            m = machine(2, 2.0, 1)
-            full = list(m.array("I"))
-            row = []
-            for call in range(8):
-                m.arrays["I"] = full[:7] if call % 3 == 2 else list(full)
-                m.array("T")[12] = 15.0 * call
-                row.append(outcome(m, 2))
-            runs.append(row)
-        finally:
-            binding.MAX_RECORDINGS = saved
+    def scenario():
+        m = machine(2, 2.0, 1)
+        full = list(m.array("I"))
+        row = []
+        for call in range(8):
+            m.arrays["I"] = full[:7] if call % 3 == 2 else list(full)
+            m.array("T")[12] = 15.0 * call
+            row.append(outcome(m, 2))
+        return row
+
+    runs = recorded_and_plain(scenario)
     recorded, plain = runs
     assert recorded == plain
     assert recorded[2] != recorded[1]  # the shorter array does change the forces
