@@ -95,6 +95,10 @@ def test_the_printed_program_5_and_a_method_change_the_numbers_as_the_paper_says
     assert printed.rows[:, 3].tolist() != pytest.approx(corrected.rows[:, 3].tolist(), rel=1e-3)
     for column in range(4):
         assert paper.rows[:, column].tolist() == pytest.approx(corrected.rows[:, column].tolist(), rel=1e-9)
+    # a BASIC program area is recorded like the library's: the printed Program 5's virtual link
+    assert [s.area for s in printed.frames[0].snapshots] == [1, 5, 1]
+    tip = printed.frames[0].snapshots[1].bars[0].end
+    assert tip == pytest.approx(corrected.frames[0].snapshots[1].bars[0].end, rel=1e-12)
 
 
 def test_frames_are_the_printed_positions():
