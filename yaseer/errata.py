@@ -1,10 +1,11 @@
 """The errata of the paper's listings (``listings/ERRATA.md``) that apply to one example.
 
 ``ERRATA.md`` is markdown: a summary table (``| example | line | slip | kind |``)
-and a section per example (``## Example 3 (...)``) with its table of corrections.
-:func:`errata_for` finds the file next to the listing (or one folder up, for
-``listings/paper/``) and returns, for Example n, its summary rows, its section,
-and the Program 5 row when the printed Program 5 is loaded.  Only the standard
+a section on all examples, and a section per example (``## Example 3 (...)``)
+with its table of corrections.  :func:`errata_for` finds the file next to the
+listing (or one folder up, for ``listings/paper/``) and returns, for Example n,
+its summary rows, its section, the all-examples section, and the Program 5 row
+when the printed Program 5 is loaded.  Only the standard
 library; the markdown is rendered to HTML by :func:`to_html` (tables,
 paragraphs, ``code``, *emphasis* — what the file uses).
 """
@@ -26,6 +27,7 @@ class Errata:
     example: int
     summary: list[str] = field(default_factory=list)
     section: str = ""
+    all_examples: str = ""  # the section on what every example shares (the universal line 2)
 
 
 def example_number(name: str | None) -> int | None:
@@ -56,6 +58,7 @@ def errata_for(listing: Path, printed_program_5: bool = False) -> Errata | None:
         if line.startswith("|") and (cells[0] == str(number) or (printed_program_5 and cells[0] == "Program 5")):
             found.summary.append(line)
     found.section = _section(text, f"Example {number}")
+    found.all_examples = _section(text, "All examples")
     return found
 
 
@@ -74,8 +77,11 @@ def _section(text: str, heading: str) -> str:
 
 
 def to_html(markdown: str) -> str:
-    """The little markdown the errata use, as HTML: tables, paragraphs, ``code``, *emphasis*."""
-    blocks, table, paragraph = [], [], []
+    """The little markdown the errata use, as HTML: tables, paragraphs, ``- `` lists, ``code``, *emphasis*."""
+    blocks: list[str] = []
+    table: list[str] = []
+    paragraph: list[str] = []
+    items: list[str] = []
 
     def close() -> None:
         if table:
@@ -88,16 +94,25 @@ def to_html(markdown: str) -> str:
         if paragraph:
             blocks.append(f"<p>{_inline(' '.join(paragraph))}</p>")
             paragraph.clear()
+        if items:
+            blocks.append("<ul>" + "".join(f"<li>{_inline(item)}</li>" for item in items) + "</ul>")
+            items.clear()
 
     for line in markdown.splitlines():
         if line.startswith("|"):
-            if paragraph:
+            if not table:
                 close()
             table.append(line)
         elif not line.strip():
             close()
+        elif line.startswith("- "):
+            if not items:
+                close()
+            items.append(line[2:].strip())
+        elif items and line.startswith("  "):  # an item's continued line
+            items[-1] += " " + line.strip()
         else:
-            if table:
+            if table or items:
                 close()
             paragraph.append(line.strip())
     close()

@@ -23,7 +23,7 @@ pre { background: #f6f6f4; padding: 0.8em; overflow-x: auto; font-size: 0.95em; 
 table { border-collapse: collapse; font-size: 0.92em; } td, th { border: 1px solid #ccc; padding: 0.25em 0.6em; }
 table.rows td { text-align: right; font-family: monospace; } th { background: #eef; vertical-align: bottom; }
 .error { color: #c00000; font-weight: bold; } .meta { color: #555; }
-section.errata td { vertical-align: top; }
+section.errata td { vertical-align: top; } section.errata table { margin: 0.8em 0; }
 """
 
 SUMMARY_HEADER = "| example | line | slip | kind |\n|---|---|---|---|"
@@ -94,5 +94,8 @@ def _errata(listing_path: Path, printed_program_5: bool) -> list[str]:
     if errata.summary:
         parts.append(to_html(SUMMARY_HEADER + "\n" + "\n".join(errata.summary)))
     parts.append(to_html(errata.section))
+    if errata.all_examples:
+        parts.append("<h3>All examples</h3>")
+        parts.append(to_html(errata.all_examples))
     parts.append("</section>")
     return parts
