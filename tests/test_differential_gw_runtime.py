@@ -48,7 +48,8 @@ def assert_generated_match(pc, generate, seed: int, count: int, width_of=lambda 
 def differing(pc, programs: list[str], width_of=lambda source: 80) -> list[tuple[str, str, str]]:
     out = []
     for source in programs:
-        pc.statement("WIDTH 80")  # PC-BASIC keeps a WIDTH from one run to the next
+        pc.statement("WIDTH 80")  # PC-BASIC keeps a WIDTH from one run to the next,
+        pc.statement("ON ERROR GOTO 0")  # and ON ERROR's hold on Overflow (RUN resets both in GW-BASIC)
         theirs, ours = screen_rows(pc.program(source), width_of(source)), gw(source)
         if theirs != ours:
             out.append((source, theirs, ours))
@@ -167,3 +168,31 @@ def loop_program(rng: random.Random) -> str:
 
 def test_generated_for_next_binding_matches_pcbasic(pc):
     assert_generated_match(pc, loop_program, 14, 150)
+
+
+# ---------------------------------------------------------------- division by zero and overflow
+
+FAILING = ["1/0", "-3/0", "0/0", "5\\0", "-5\\0", "7 MOD 0", "0^-1", "EXP(100)", "1E38*10", "-1E38*10",
+           "2^200", "1E38+1E38", "A/B", "-A/B", "1#/0", "A*1E37", "(1/0)*0"]
+
+
+def arithmetic_program(rng: random.Random) -> str:
+    """Failing operations printed or stored, with or without ON ERROR (GW-BASIC goes on
+    with the largest value after the message unless ON ERROR traps the error)."""
+    lines = ["A = 30: B = 0"]
+    if rng.random() < 0.3:
+        lines.append("ON ERROR GOTO 900")
+    for _ in range(rng.randint(1, 4)):
+        expr = rng.choice(FAILING)
+        if rng.random() < 0.5:
+            lines.append(f'PRINT "X"; {expr}; "Y"')
+        else:
+            lines.append(f"Z = {expr}: PRINT Z")
+    lines.append('PRINT "END"')
+    lines.append("END")
+    body = "\n".join(f"{10 * (k + 1)} {text}" for k, text in enumerate(lines))
+    return body + '\n900 PRINT "ERR"; ERR; ERL: RESUME NEXT\n'
+
+
+def test_generated_arithmetic_errors_match_pcbasic(pc):
+    assert_generated_match(pc, arithmetic_program, 15, 150)

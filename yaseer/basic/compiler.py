@@ -160,18 +160,19 @@ def _is_constant(node) -> bool:
     return isinstance(node, ast.Num) or (isinstance(node, ast.Unary) and _is_constant(node.operand))
 
 
-def _may_overflow(node) -> bool:
-    """Could this numeric expression produce inf from finite values?"""
+def _may_overflow(node, single: bool = False) -> bool:
+    """Could this numeric expression produce inf from finite values?  (``single``: the
+    typed model, where adding a constant may leave the single range too.)"""
     if isinstance(node, ast.Binary):
         if node.op in ("*", "/"):
             return True
-        if node.op in ("+", "-") and not (_is_constant(node.left) or _is_constant(node.right)):
+        if node.op in ("+", "-") and (single or not (_is_constant(node.left) or _is_constant(node.right))):
             return True
-        return _may_overflow(node.left) or _may_overflow(node.right)
+        return _may_overflow(node.left, single) or _may_overflow(node.right, single)
     if isinstance(node, ast.Unary):
-        return _may_overflow(node.operand)
+        return _may_overflow(node.operand, single)
     if isinstance(node, ast.Call):
-        return any(_may_overflow(a) for a in node.args)
+        return any(_may_overflow(a, single) for a in node.args)
     return isinstance(node, ast.FnCall)
 
 
@@ -461,20 +462,22 @@ class AreaCompiler:
             value_code = self.numbers.convert(value_code, value_kind, target_kind)
         if isinstance(target, ast.Var):
             name = scope.scalar(target.name, write=True)
+            if check:  # checked before the store: a trapped Overflow leaves the variable as it was
+                self.emit(f"_t = {value_code}")
+                self.emit(f"if _t - _t: _t = _ovf(_t, {target_kind!r})")
+                value_code = "_t"
             self.emit(f"{name} = {value_code}")
-            if check:
-                self.emit(f"if {name} - {name}: _ovf()")
             return
         element = self.element(target, scope)
         if check:
             self.emit(f"_t = {value_code}")
-            self.emit("if _t - _t: _ovf()")
+            self.emit(f"if _t - _t: _t = _ovf(_t, {target_kind!r})")
             value_code = "_t"
         self.emit(f"{element} = {value_code}")
 
     def stmt_Let(self, stmt, scope):
         code, kind = self.expr(stmt.value, scope)
-        check = kind != "s" and _may_overflow(stmt.value) and self.kind_of(stmt.target) != "%"
+        check = kind != "s" and _may_overflow(stmt.value, self.numbers.typed) and self.kind_of(stmt.target) != "%"
         self.assign(stmt.target, code, kind, scope, check)
 
     def stmt_Rem(self, stmt, scope):

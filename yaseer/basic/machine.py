@@ -26,7 +26,7 @@ import sys
 from functools import lru_cache
 from typing import Callable, TextIO
 
-from yaseer.basic import dialect as dialects, formatting, gwfunctions, numbers, program_cache, runtime
+from yaseer.basic import arith_policy, dialect as dialects, formatting, gwfunctions, numbers, program_cache, runtime
 from yaseer.basic.number_models import initial_value
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # MAX_STACK: GOSUB returns + open FOR loops together
 from yaseer.basic.errors import (
@@ -212,6 +212,7 @@ class Machine:
         # The dialect (scanner rules, number model, print rules, error policy, start-up
         # state: see dialect.py); ``angle`` overrides its start-up unit ("deg"/"rad").
         self.dialect = dialects.get_dialect(dialect)
+        self.arith = arith_policy.ArithmeticPolicy(self)  # division by zero, overflow: stop or go on
         # how PRINT shows a number: typed (GW: integers, 7-digit singles, 16-digit D doubles) or not
         self._printed_number, self._number_text = (
             (_same, numbers.number_to_text) if self.dialect.typed_numbers else (_as_number, formatting.number_to_text))
@@ -376,7 +377,7 @@ class Machine:
             "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range, "type": type, "int": int,
                              "BaseException": BaseException},
             "_M": self, "_S": self.scalars, "_A": self.arrays, "_arr": self.array_nd, "_ix": runtime.subscript,
-            "_ovf": runtime.overflow, "_err": BasicError, "_END": END, "_DirectJump": DirectJump,
+            "_ovf": self.arith.overflowed, "_err": BasicError, "_END": END, "_DirectJump": DirectJump,
             "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
             "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,
             "_oom": self._out_of_memory, "_call": self.call_area,
@@ -401,6 +402,7 @@ class Machine:
         ns.update(self._gw_functions())
         if self.dialect.typed_numbers:
             ns.update(numbers.RUNTIME)
+            ns.update(arith_policy.helpers(self.arith, numbers.to_single, ns["_idiv"], ns["_mod"], ns["_pow"]))
         ns.update(self._trig_functions())
         self.namespaces[area] = ns
         return ns
@@ -1014,7 +1016,7 @@ class Machine:
                 item, kind = self._printed_number(item), float
             if kind is float:
                 if item - item:
-                    runtime.overflow()
+                    item = self.arith.overflowed(item, "#" if isinstance(item, numbers.Double) else "!")
                 text = self._number_text(item)
                 if comma_follows:
                     text = self._blank_before_comma(stream, text)

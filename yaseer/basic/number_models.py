@@ -147,10 +147,10 @@ class TypedNumbers(PlainNumbers):
 
     def arithmetic(self, op: str, left: str, lkind: str, right: str, rkind: str) -> tuple[str, str]:
         kind = lkind if _RANK[lkind] >= _RANK[rkind] else rkind
-        if op == "/":
+        if op == "/":  # through the dialect's division-by-zero policy (arith_policy.py)
             if kind == "#":
-                return f"({left} / {right})", "#"
-            return f"_sg({left} / {right})", "!"
+                return f"_ddv({left}, {right})", "#"
+            return f"_dv({left}, {right})", "!"
         if kind == "%":
             return f"_ia({left} {op} {right})", "%"
         if kind == "!":

@@ -11,8 +11,8 @@ A value's Python type carries its BASIC type where the printed text depends on i
 * ``!`` single precision: a Python ``float`` holding a value exactly
   representable in IEEE single precision; every single-precision result is
   rounded to it (:func:`to_single`).  GW-BASIC's Microsoft Binary Format has the
-  same 24-bit mantissa; its range ends at 1.7E+38 (IEEE's at 3.4E+38: yaseer
-  reports Overflow only beyond that).
+  same 24-bit mantissa; its range ends at 1.7E+38 (IEEE's at 3.4E+38): beyond
+  it a result is Overflow.
 * ``#`` double precision: a Python ``float`` (53-bit mantissa; MBF doubles have
   56, so the 16th digit may differ).  Wrapped in :class:`Double` only on its
   way to PRINT or STR$, so that it shows 16 digits and ``D`` exponents.
@@ -37,14 +37,21 @@ _cell = array("f", [0.0])
 _store = _cell.__setitem__
 
 
+SINGLE_LARGEST = (1 - 2.0 ** -24) * 2.0 ** 127  # 1.701412E+38, the end of MBF's single range
+
+
 def to_single(x) -> float:
     """``x`` rounded to the nearest IEEE single-precision value (as a Python float).
 
-    Beyond the single range the result is infinite; the compiled code's overflow
-    checks (``x - x``) turn that into ``Overflow``.
+    Beyond GW-BASIC's single range (MBF: 1.701412E+38) the result is infinite; the
+    compiled code's overflow checks (``x - x``) pass that to the dialect's overflow
+    policy (yaseer/basic/arith_policy.py).
     """
     _store(0, x)
-    return _cell[0]
+    r = _cell[0]
+    if -SINGLE_LARGEST <= r <= SINGLE_LARGEST or r != r:
+        return r
+    return math.copysign(math.inf, r)
 
 
 def _overflow() -> BasicError:
