@@ -73,21 +73,16 @@ def helpers(policy: ArithmeticPolicy, to_single, int_divide, int_modulo, power) 
         except ZeroDivisionError:
             return result(DIVISION_BY_ZERO, a < 0, "#")
 
-    def integer_divide(a, b):
-        try:
-            return int_divide(a, b)
-        except BasicError as err:
-            if err.code != DIVISION_BY_ZERO:
-                raise
-            return result(DIVISION_BY_ZERO, a < 0, "!")
-
-    def modulo(a, b):
-        try:
-            return int_modulo(a, b)
-        except BasicError as err:
-            if err.code != DIVISION_BY_ZERO:
-                raise
-            return result(DIVISION_BY_ZERO, a < 0, "!")
+    def by_integer(operation):
+        """``\\`` or MOD: a division by zero gives the policy's value."""
+        def run(a, b):
+            try:
+                return operation(a, b)
+            except BasicError as err:
+                if err.code != DIVISION_BY_ZERO:
+                    raise
+                return result(DIVISION_BY_ZERO, a < 0, "!")
+        return run
 
     largest = LARGEST["#"]  # GW-BASIC's doubles end where its singles do
 
@@ -111,5 +106,5 @@ def helpers(policy: ArithmeticPolicy, to_single, int_divide, int_modulo, power) 
             r = math.inf
         return r if r <= largest else result(OVERFLOW, False, "!")
 
-    return {"_dv": divide_single, "_ddv": divide_double, "_idiv": integer_divide, "_mod": modulo,
+    return {"_dv": divide_single, "_ddv": divide_double, "_idiv": by_integer(int_divide), "_mod": by_integer(int_modulo),
             "_pow": raise_to, "_exp": exponential}
