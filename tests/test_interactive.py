@@ -200,9 +200,12 @@ def test_a_run_time_error_names_its_line_and_the_program_stays(terminal):
     terminal.close()
 
 
-def test_a_paper_listing_loads_and_runs(terminal):
+def test_a_paper_listing_loads_and_runs(terminal, tmp_path):
     listing = REPO / "listings" / "example3.bas"
-    shown = terminal.type(f'LOAD "{listing}"')
+    # LOAD reads in the session's directory only (issue 12): a path leading out is refused
+    assert "Path/File access error" in terminal.type(f'LOAD "{listing}"')
+    (tmp_path / "example3.bas").write_text(listing.read_text())
+    shown = terminal.type('LOAD "example3"')
     assert shown == ""
     rows = terminal.type("RUN").splitlines()
     assert len(rows) == 19  # T(2) = .1 TO 360.1 STEP 20

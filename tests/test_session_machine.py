@@ -60,7 +60,10 @@ def test_a_typed_program_area_replaces_the_library_until_new(session):
 
 
 def test_the_printed_program_5_loaded_into_its_area(session):
-    after(session, "PROG 5", f'LOAD "{REPO_PROGRAMS / "prog5.bas"}"', "PROG 0")
+    # LOAD reads inside the session's directory only: an absolute name is refused
+    assert after(session, f'LOAD "{REPO_PROGRAMS / "prog5.bas"}"') == "Path/File access error\n"
+    session.directory = REPO_PROGRAMS
+    after(session, "PROG 5", 'LOAD "prog5"', "PROG 0")
     # the printed subroutine divides by COS T: at T = 90 degrees it breaks, as the paper's listings avoid
     assert after(session, "X(10) = 0: Y(10) = 1: GOSUB PROG 5") == "Division by zero in 10 (PROG 5)\n"
     shown = after(session, "X(10) = 3: Y(10) = 4: GOSUB PROG 5: PRINT L")

@@ -178,7 +178,7 @@ class Result:
 def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, str] | None = None,
         prog: Mapping[int, Listing] | None = None, input=None, angle: str | None = None,
         raise_errors: bool = False, screen: IO[str] | None = None, printer: IO[str] | None = None,
-        output_format: str = "text", keep: bool = True) -> Result:
+        output_format: str = "text", keep: bool = True, files=None) -> Result:
     """Run ``listing`` (a path, or the program text) once on a fresh machine.
 
     ``method``: the method of library program n (``{2: "newton"}``); ``prog``:
@@ -187,7 +187,8 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
     echoed on the screen; ``sys.stdin``: typed at the keyboard; default nothing:
     ``Input past end``); ``angle``: ``"deg"`` or ``"rad"``, the unit of
     SIN COS TAN ATN at start (default: the dialect's); ``dialect``: ``"casio"``
-    (the default, the paper's pocket computer) or ``"gw"`` (GW-BASIC 3.23).
+    (the default, the paper's pocket computer) or ``"gw"`` (GW-BASIC 3.23);
+    ``files``: the one directory OPEN, KILL, NAME and FILES use (default: the current one).
     A BASIC error (and a missing file) is ``result.error``,
     one line; with ``raise_errors`` it is raised.
 
@@ -207,7 +208,7 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
     except BasicError as error:
         return _failed(result, error, raise_errors)
     execute(result, areas, dict(method or {}), input_stream, angle, dialect or "casio", screen, printer,
-            output_format, keep)
+            output_format, keep, files)
     for handle in opened:
         handle.close()
     if result.exception is not None and raise_errors:
@@ -216,7 +217,7 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
 
 
 def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str | None, dialect: str,
-            screen, printer, output_format: str, keep: bool) -> None:
+            screen, printer, output_format: str, keep: bool, files=None) -> None:
     """Load, bind and run ``result.listing``; fill in ``result`` (text, rows, frames, error, status)."""
     from yaseer import binding
     from yaseer.basic.errors import BasicError
@@ -236,7 +237,7 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
     # gw has no program areas (PROG is no word) unless areas are given (--prog)
     chosen = get_dialect(dialect).with_program_areas() if areas else dialect
     machine = Machine(screen=out, printer=paper, output_format=output_format, angle=angle,
-                      input_stream=input_stream, dialect=chosen)
+                      input_stream=input_stream, dialect=chosen, files=files)
     if keep:
         machine.area_hooks.append(recorder.hook)
         machine.line_hooks.append(lambda device, values: result.lines.append(values))

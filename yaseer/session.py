@@ -193,10 +193,15 @@ def file_name_argument(text: str) -> str:
 
 
 def read_listing_file(name: str, directory: Path) -> Program:
-    """LOAD: the program in file ``name`` (``.bas`` is tried if ``name`` has no suffix)."""
-    path = directory / name
+    """LOAD: the program in file ``name`` (``.bas`` is tried if ``name`` has no suffix),
+    inside ``directory`` only (yaseer.basic.files.Sandbox: a name that leads out of it is
+    ``Path/File access error``)."""
+    from yaseer.basic.files import Sandbox
+
+    sandbox = Sandbox(directory)
+    path = sandbox.path(name)
     if not path.exists() and not path.suffix:
-        path = path.with_suffix(".bas")
+        path = sandbox.path(name + ".bas")
     try:
         text = path.read_text(encoding="utf-8", errors="replace")
     except (FileNotFoundError, IsADirectoryError, NotADirectoryError):
@@ -410,8 +415,14 @@ class Session:
         self._can_continue = False
 
     def command_save(self, argument: str) -> None:
-        """SAVE "file": write the current area's program as a listing."""
-        path = self.directory / file_name_argument(argument)
+        """SAVE "file": write the current area's program as a listing, in the session's
+        directory only; a name without an extension gets ``.bas`` (GW-BASIC adds ``.BAS``)."""
+        from yaseer.basic.files import Sandbox
+
+        name = file_name_argument(argument)
+        if not Path(name).suffix:
+            name += ".bas"
+        path = Sandbox(self.directory).path(name)
         try:
             path.write_text(program_text(self.program), encoding="utf-8")
         except OSError:
@@ -440,11 +451,12 @@ class Session:
         self._execute(self.engine.cont, in_program=True)
 
     def command_files(self, argument: str) -> None:
-        """FILES: the listings (``*.bas``) in the directory LOAD and SAVE use."""
-        if argument:
-            raise BasicError("Syntax error", SYNTAX_ERROR)
-        for path in sorted(self.directory.glob("*.bas")):
-            self.write(path.name + "\n")
+        """FILES ["pattern"]: the files of the directory LOAD and SAVE use (default ``*.bas``)."""
+        from yaseer.basic.files import Sandbox
+
+        pattern = file_name_argument(argument) if argument else "*.bas"
+        for name in Sandbox(self.directory).listing(pattern):
+            self.write(name + "\n")
 
     def command_help(self, argument: str) -> None:
         """HELP: the commands, one line each."""

@@ -96,7 +96,8 @@ def splits(stmt) -> bool:
 _NATIVE_BODY = (
     ast.Let, ast.Print, ast.GosubProg, ast.Rem, ast.Data, ast.Read, ast.Dim, ast.Angle,
     ast.Randomize, ast.DefFn, ast.Input, ast.Clear, ast.Restore, ast.End, ast.OnError, ast.Cls,
-    ast.Error, ast.DefType,
+    ast.Error, ast.DefType, ast.Swap, ast.MidAssign, ast.LineInput, ast.Write, ast.Open, ast.Close,
+    ast.Kill, ast.Rename, ast.Files,
 )
 
 

@@ -510,7 +510,10 @@ class AreaCompiler:
     def stmt_Print(self, stmt, scope):
         """PRINT / LPRINT [USING]: items are printed as they are evaluated, so an item
         that fails leaves the ones before it on the screen (as GW-BASIC does)."""
-        device = 1 if stmt.printer else 0
+        device, pr, pru = 1 if stmt.printer else 0, "_pr", "_pru"
+        if stmt.channel is not None:  # PRINT #n: the file's stream, found once
+            device, pr, pru = self.new_temp(), "_prf", "_pruf"
+            self.emit(f"{device} = _fout({self.numeric(stmt.channel, scope)})")
         parts, newline = self.print_items(stmt.items, scope)
         safe = all(_is_safe_item(item) for item in stmt.items)
         if stmt.using is None:
@@ -518,22 +521,22 @@ class AreaCompiler:
             for k, chunk in enumerate(chunks):
                 last = k == len(chunks) - 1
                 values = "(" + "".join(p + ", " for p in chunk) + ")"
-                self.emit(f"_pr({device}, {values}, {newline and last}, {last})")
+                self.emit(f"{pr}({device}, {values}, {newline and last}, {last})")
             return
         fmt = self.string(stmt.using, scope)
         parts = [p for p in parts if p not in ("_COMMA", "_NUMCOMMA") and not p.startswith(("_Tab(", "_Spc("))]
         if safe:
             values = "(" + "".join(p + ", " for p in parts) + ")"
-            self.emit(f"_pru({device}, {fmt}, {values}, {newline})")
+            self.emit(f"{pru}({device}, {fmt}, {values}, {newline})")
             return
         self.emit("_u = []")
         self.emit("try:")
         for part in parts:
             self.emit(f"    _u.append({part})")
         self.emit("except BaseException:")
-        self.emit(f"    _pru({device}, {fmt}, _u, False)")
+        self.emit(f"    {pru}({device}, {fmt}, _u, False)")
         self.emit("    raise")
-        self.emit(f"_pru({device}, {fmt}, _u, {newline})")
+        self.emit(f"{pru}({device}, {fmt}, _u, {newline})")
 
     def stmt_Goto(self, stmt, scope):
         self.emit(self.jump(stmt.target))
@@ -667,10 +670,35 @@ class AreaCompiler:
         self.emit(f"_option_base({stmt.base})")
 
     def stmt_LineInput(self, stmt, scope):
+        if stmt.channel is not None:
+            self.assign(stmt.target, f"_fline({self.numeric(stmt.channel, scope)})", "s", scope, False)
+            return
         self.assign(stmt.target, f"_line_input({stmt.prompt!r})", "s", scope, False)
 
     def stmt_Write(self, stmt, scope):
+        if stmt.channel is not None:
+            stream = self.new_temp()
+            self.emit(f"{stream} = _fout({self.numeric(stmt.channel, scope)})")
+            self.emit(f"_writef({stream}, ({self.written_items(stmt.items, scope)}))")
+            return
         self.emit(f"_write(0, ({self.written_items(stmt.items, scope)}))")
+
+    # -- sequential files (files.py)
+    def stmt_Open(self, stmt, scope):
+        self.emit(f"_open({self.string(stmt.mode, scope)}, {self.numeric(stmt.number, scope)}, "
+                  f"{self.string(stmt.name, scope)})")
+
+    def stmt_Close(self, stmt, scope):
+        self.emit(f"_close(({''.join(self.numeric(n, scope) + ', ' for n in stmt.numbers)}))")
+
+    def stmt_Kill(self, stmt, scope):
+        self.emit(f"_kill({self.string(stmt.name, scope)})")
+
+    def stmt_Rename(self, stmt, scope):
+        self.emit(f"_rename({self.string(stmt.old, scope)}, {self.string(stmt.new, scope)})")
+
+    def stmt_Files(self, stmt, scope):
+        self.emit(f"_files({'None' if stmt.pattern is None else self.string(stmt.pattern, scope)})")
 
     def written_items(self, items, scope) -> str:
         """WRITE's items as Python text pieces: strings in quotes, numbers as STR$ gives
@@ -701,6 +729,14 @@ class AreaCompiler:
         self.emit(f"_restore({stmt.target!r})")
 
     def stmt_Input(self, stmt, scope):
+        if stmt.channel is not None:  # INPUT #n: one field for each variable, stored at once
+            channel = self.numeric(stmt.channel, scope)
+            for target in stmt.targets:
+                kind = self.kind_of(target)
+                reader = "_fin_s" if kind == "s" else "_fin_n"
+                self.assign(target, f"{reader}({channel})", "s" if kind == "s" else self.numbers.widest,
+                            scope, False)
+            return
         kinds = "".join("s" if self.kind_of(t) == "s" else "n" for t in stmt.targets)
         values = self.new_temp()
         self.emit(f"{values} = _input({stmt.prompt!r}, {stmt.question_mark}, {kinds!r})")

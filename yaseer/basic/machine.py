@@ -28,6 +28,7 @@ from typing import Callable, TextIO
 
 from yaseer.basic import arith_policy, dialect as dialects, formatting, gwfunctions, numbers, program_cache, runtime
 from yaseer.basic.number_models import initial_value
+from yaseer.basic.files import FileTable, Sandbox
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # MAX_STACK: GOSUB returns + open FOR loops together
 from yaseer.basic.errors import (
     BasicError, OutputError, BREAK, CANT_CONTINUE, DIVISION_BY_ZERO, DUPLICATE_DEFINITION, FOR_WITHOUT_NEXT,
@@ -208,7 +209,7 @@ class Machine:
 
     def __init__(self, screen: TextIO | None = None, printer: TextIO | None = None,
                  output_format: str = "text", angle: str | None = None, input_stream: TextIO | None = None,
-                 dialect: "str | dialects.Dialect" = "casio"):
+                 dialect: "str | dialects.Dialect" = "casio", files=None):
         # The dialect (scanner rules, number model, print rules, error policy, start-up
         # state: see dialect.py); ``angle`` overrides its start-up unit ("deg"/"rad").
         self.dialect = dialects.get_dialect(dialect)
@@ -259,6 +260,8 @@ class Machine:
         self._line_values: tuple[list, list] = ([], [])
         self.tracing = False  # TRON: lines run are shown as [n]
         self.subscript_base = 0  # OPTION BASE
+        # the program's sequential files, all in one directory (``files``; default the current one)
+        self.files = FileTable(Sandbox(files))
         # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
         # ``yaseer run`` stops at once): see _on_interrupt.
         self.resumable_breaks = False
@@ -420,6 +423,17 @@ class Machine:
             "_lpos": lambda _: float(self.printer.column + 1),
             "_erase": self.erase, "_option_base": self.option_base, "_line_input": self.line_input,
             "_write": self.write_values, "_clear_args": _check_clear_arguments,
+            # sequential files (files.py)
+            "_open": self.files.open, "_close": self.files.close, "_kill": self.files.kill,
+            "_rename": self.files.sandbox.rename, "_files": self.list_files,
+            "_fout": lambda n: self.files.get(n).output(), "_prf": self.print_to,
+            "_pruf": self.print_using_to, "_writef": self.write_to,
+            "_fin_n": self.file_number, "_fin_s": lambda n: self.files.get(n).read_field(False),
+            "_fline": lambda n: self.files.get(n).read_line(),
+            "_eof": lambda n: -1.0 if self.files.get(n).at_end() else 0.0,
+            "_lof": lambda n: float(self.files.get(n).length()),
+            "_loc": lambda n: float(self.files.get(n).records()),
+            "_input_chars": self.input_chars,
         }
 
     def _trig_functions(self) -> dict:
@@ -777,6 +791,7 @@ class Machine:
         self.area_depth = 0
         self.set_angle(self.default_angle)
         self.set_subscript_base(0)
+        self.files.close()
         self.random.reset()
 
     def run(self, line: int | None = None) -> str:
@@ -891,6 +906,7 @@ class Machine:
             self._disarm_break()
 
     def _execute_loop(self, area: int, block: int) -> str:
+        stopped = False
         try:
             self._run_area(area, self._compiled(area), block)
         except ProgramEnd:
@@ -906,10 +922,13 @@ class Machine:
             if stop.area == 0 and self.area_depth == 0:
                 self.cont_point = (stop.area, stop.block)
             self.area_depth = 0
+            stopped = True
             return "stop"
         except KeyboardInterrupt:
             raise BasicError("Break", BREAK).at(self.line) from None
         finally:
+            if not stopped:  # END, the last line or an error closes the files (STOP keeps them)
+                self.files.close()
             if self.csv:  # a last line left open (PRINT A;) is still a row
                 self.end_line()
             self.flush()
@@ -1008,6 +1027,10 @@ class Machine:
             if end and newline:
                 self._csv_row(stream)
             return
+        self._lay_out(stream, items, newline)
+
+    def _lay_out(self, stream: OutputStream, items: tuple, newline: bool) -> None:
+        """PRINT's items as text on ``stream`` (the screen, the printer or a file)."""
         comma_follows = False
         for item in items:
             kind = type(item)
@@ -1117,6 +1140,44 @@ class Machine:
         else:
             self.screen.column = 0
         return line.rstrip("\r\n")
+
+    # ------------------------------------------------------------ files (files.py)
+    def print_to(self, stream, items: tuple, newline: bool, end: bool = True) -> None:
+        """PRINT #n: the items laid out on the file's stream as on the screen (no csv, no hooks)."""
+        self._lay_out(stream, items, newline)
+
+    def print_using_to(self, stream, fmt: str, values: tuple, newline: bool) -> None:
+        """PRINT #n, USING."""
+        stream.write(formatting.using(fmt, [v if type(v) is float or type(v) is str else _as_number(v)
+                                            for v in values]))
+        if newline:
+            stream.write("\n")
+
+    def write_to(self, stream, pieces: tuple) -> None:
+        """WRITE #n."""
+        stream.write(",".join(pieces) + "\n")
+
+    def file_number(self, n) -> float:
+        """INPUT #n into a numeric variable: one field, read as GW-BASIC reads numbers."""
+        return gwfunctions.val(self.files.get(n).read_field(True))
+
+    def input_chars(self, count, n=None) -> str:
+        """INPUT$(count[, #n]): ``count`` characters of the file (or of the input)."""
+        k = runtime.cint(count)
+        if not 1 <= k <= 255:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        if n is not None:
+            return self.files.get(n).read_chars(k)
+        stream = self.input_stream if self.input_stream is not None else sys.stdin
+        text = stream.read(k)
+        if len(text) < k:
+            raise BasicError("Input past end", INPUT_PAST_END)
+        return text
+
+    def list_files(self, pattern) -> None:
+        """FILES [pattern]: the matching names of the files' directory, one a line."""
+        for name in self.files.sandbox.listing(pattern):
+            self.print_items(0, (name,), True)
 
     def write_values(self, device: int, pieces: tuple) -> None:
         """WRITE: the items (already as text: strings quoted, numbers without blanks)

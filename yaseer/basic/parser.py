@@ -253,6 +253,46 @@ class _ToAst(Transformer):
     def write_stmt(self, c):
         return ast.Write(_values(c)[1:])
 
+    # -- sequential files
+    def open_short(self, c):
+        v = [x for x in c[1:] if not (isinstance(x, Token) and x.type in ("COMMA", "HASH"))]
+        return ast.Open(v[0], v[1], v[2])
+
+    def open_long(self, c):
+        mode, word = c[3], c[4]
+        if (mode.type == "NAME" and mode.value != "OUTPUT") or word.value not in ("AS", "AS#"):
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return ast.Open(ast.Str(mode.value), c[-1], c[1])
+
+    def close_stmt(self, c):
+        return ast.Close([x for x in c[1:] if not isinstance(x, Token)])
+
+    def kill_stmt(self, c):
+        return ast.Kill(c[1])
+
+    def name_stmt(self, c):
+        if c[2].value != "AS":
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return ast.Rename(c[1], c[3])
+
+    def files_stmt(self, c):
+        return ast.Files(c[1] if len(c) > 1 else None)
+
+    def print_file(self, c):
+        return ast.Print(False, list(c[4:]), channel=c[2])
+
+    def print_file_using(self, c):
+        return ast.Print(False, list(c[7:]), using=c[5], channel=c[2])
+
+    def write_file(self, c):
+        return ast.Write(_values(c)[3:], channel=c[2])
+
+    def input_file(self, c):
+        return ast.Input(None, False, _values(c)[3:], channel=c[2])
+
+    def line_input_file(self, c):
+        return ast.LineInput(None, c[5], channel=c[3])
+
     def return_line(self, c):
         return ast.ReturnTo(_line_number(c[1]))
 

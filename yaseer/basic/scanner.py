@@ -199,6 +199,8 @@ def _scan_word_whole(upper: str, i: int, keywords: _Keywords) -> tuple[str, str,
             word = "GOSUB" if upper[j + 1] == "S" else "GOTO"
             return word, word, j + len(word) - 1
         kind = keywords.types.get(word)
+        if kind is not None and j < n and upper[j] == "$" and word + "$" in keywords.types:
+            return keywords.types[word + "$"], word + "$", j + 1  # INPUT$, not INPUT
         if kind is not None and (word in _GW_PREFIX_KEYWORDS or j >= n or upper[j] not in _NAME_CHARS):
             return kind, word, j
         if ch not in _NAME_CHARS:

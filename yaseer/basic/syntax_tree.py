@@ -158,6 +158,7 @@ class Print:
     printer: bool  # LPRINT
     items: list  # expressions, "," ";" separators, Tab, Spc
     using: object = None  # format expression for PRINT USING
+    channel: object = None  # PRINT #n: the file number expression
 
 
 @_node
@@ -279,11 +280,42 @@ class OptionBase:
 class LineInput:
     prompt: str | None
     target: object
+    channel: object = None  # LINE INPUT #n
 
 
 @_node
 class Write:
     items: list
+    channel: object = None  # WRITE #n
+
+
+@_node
+class Open:
+    """OPEN: mode ("I"/"O"/"A", or INPUT/OUTPUT/APPEND) expression, file number, name."""
+    mode: object
+    number: object
+    name: object
+
+
+@_node
+class Close:
+    numbers: list  # empty: every open file
+
+
+@_node
+class Kill:
+    name: object
+
+
+@_node
+class Rename:
+    old: object
+    new: object
+
+
+@_node
+class Files:
+    pattern: object = None
 
 
 @_node
@@ -312,6 +344,7 @@ class Input:
     prompt: str | None
     question_mark: bool
     targets: list
+    channel: object = None  # INPUT #n
 
 
 @_node

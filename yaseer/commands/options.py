@@ -105,6 +105,9 @@ def add_run_options(parser: argparse.ArgumentParser) -> None:
                        help="unit of SIN COS TAN ATN at the start (default: the dialect's: casio deg, gw rad)")
     group.add_argument("--input", metavar="FILE",
                        help="answer INPUT statements with the lines of FILE (default: standard input)")
+    group.add_argument("--files", metavar="DIR", default=None,
+                       help="the one directory the program's OPEN, KILL, NAME and FILES use "
+                            "(default: the current directory; nothing outside it is ever touched)")
 
 
 @dataclass
@@ -116,13 +119,14 @@ class RunSettings:
     dialect: str = "casio"
     angle: str | None = None  # None: the dialect's
     input: TextIO | None = None  # the --input file, opened (None: standard input)
+    files: str | None = None  # --files DIR: the directory of the program's files (None: the current one)
 
     def run_arguments(self) -> dict:
         """The keyword arguments of :func:`yaseer.run` these options give (INPUT from the keyboard without --input)."""
         import sys
 
         return {"method": self.methods, "prog": self.areas, "dialect": self.dialect, "angle": self.angle,
-                "input": self.input if self.input is not None else sys.stdin}
+                "input": self.input if self.input is not None else sys.stdin, "files": self.files}
 
     def close(self) -> None:
         if self.input is not None:
@@ -134,7 +138,8 @@ def run_settings(args: argparse.Namespace) -> RunSettings:
     the --input file opened (close it with :meth:`RunSettings.close`); OSError naming a file that cannot be read."""
     areas = {n: read_area(n, path) for n, path in args.prog}
     return RunSettings(areas=areas, methods=dict(args.method), dialect=args.dialect, angle=args.angle,
-                       input=open(args.input, encoding="utf-8", errors="replace") if args.input else None)
+                       input=open(args.input, encoding="utf-8", errors="replace") if args.input else None,
+                       files=_files_directory(args.files))
 
 
 _STRINGS = re.compile(r'"[^"]*("|$)')
@@ -155,6 +160,15 @@ def read_area(number: int, path: str) -> str:
     if not any("RETURN" in _STRINGS.sub("", line).upper() for line in lines):
         raise CommandError(f"--prog {number}={path}: no RETURN, so GOSUB PROG {number} could never come back")
     return text
+
+
+def _files_directory(path: str | None) -> str | None:
+    """``--files DIR``: DIR must be an existing directory (CommandError otherwise)."""
+    import os
+
+    if path is not None and not os.path.isdir(path):
+        raise CommandError(f"--files {path}: no such directory")
+    return path
 
 
 def read_text(path: str) -> str:

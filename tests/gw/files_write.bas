@@ -1,0 +1,11 @@
+10 OPEN "O", #1, "OUT.TXT"
+20 PRINT #1, "a"; 1; -2; TAB(12); 3.5, "z"
+30 PRINT #1, USING "###.##  &"; 2.345; "w"
+40 WRITE #1, "q,r", 0, -1.5: WRITE #1,
+50 PRINT #1, 1,: PRINT #1, "end"
+60 CLOSE
+70 OPEN "OUT.TXT" FOR APPEND AS 2: PRINT #2, "appended": CLOSE #2
+80 OPEN "I", 1, "OUT.TXT": OPEN "I", 2, "OUT.TXT"
+90 LINE INPUT #1, A$: INPUT #2, B$, C, D: PRINT A$; "|"; B$; C; D; LOF(1)
+100 CLOSE: OPEN "O", 3, "EMPTY": CLOSE 3
+110 OPEN "EMPTY" FOR INPUT AS 1: PRINT EOF(1); LOF(1): CLOSE

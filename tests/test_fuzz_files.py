@@ -1,0 +1,87 @@
+"""Fuzzing the file statements (issue 12): random OPEN / PRINT # / WRITE # / INPUT # /
+LINE INPUT # / INPUT$ / EOF / LOF / LOC / CLOSE / KILL / NAME / FILES programs, with
+names that try to leave the directory (absolute, ``..``, a symbolic link out), run in
+both dialects.  Each ends normally or with a BASIC error line, and no file ever
+appears, changes or disappears outside the program's directory.
+
+``YASEER_FUZZ_EXAMPLES`` sets the number of programs (60 by default).
+"""
+
+from __future__ import annotations
+
+import io
+import os
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+NAMES = ["A.TXT", "B", "c.dat", "sub/x", "../up.txt", "../outside/victim.txt", "/tmp/yaseer-fuzz-abs",
+         "link/victim.txt", "loop", "..", ".", "", "a:b", "link", "inside_link"]
+MODES = ['"O"', '"I"', '"A"', '"R"', '"X"']
+VALUES = ['1', '-2.5', '"s"', '"a,b"', 'X', 'A$', '1E300']
+
+
+def statement(data) -> str:
+    name = '"' + data.draw(st.sampled_from(NAMES)) + '"'
+    other = '"' + data.draw(st.sampled_from(NAMES)) + '"'
+    n = data.draw(st.sampled_from(["1", "2", "3", "0", "4", "#1", "#2"]))
+    number = n.lstrip("#")
+    value = data.draw(st.sampled_from(VALUES))
+    choices = [
+        f"OPEN {data.draw(st.sampled_from(MODES))}, {n}, {name}",
+        f"OPEN {name} FOR {data.draw(st.sampled_from(['INPUT', 'OUTPUT', 'APPEND']))} AS {n}",
+        f"PRINT #{number}, {value}; {value}", f"PRINT #{number}, USING \"##.#\"; 1.25",
+        f"WRITE #{number}, {value}, {value}", f"INPUT #{number}, X, A$", f"LINE INPUT #{number}, A$",
+        f"A$ = INPUT$(2, #{number})", f"X = EOF({number}) + LOF({number}) + LOC({number})",
+        f"CLOSE {n}", "CLOSE", f"KILL {name}", f"NAME {name} AS {other}",
+        f"FILES {name}", "FILES",
+    ]
+    return data.draw(st.sampled_from(choices))
+
+
+def snapshot(root) -> dict:
+    """Every path under ``root`` (links not followed) with its bytes (files) or target (links)."""
+    found = {}
+    for folder, dirs, files in os.walk(root):
+        for entry in dirs + files:
+            path = os.path.join(folder, entry)
+            if os.path.islink(path):
+                found[path] = "->" + os.readlink(path)
+            elif os.path.isfile(path):
+                with open(path, "rb") as handle:
+                    found[path] = handle.read()
+            else:
+                found[path] = "dir"
+    return found
+
+
+@settings(max_examples=int(os.environ.get("YASEER_FUZZ_EXAMPLES", 60)), deadline=None, derandomize=True,
+          database=None, suppress_health_check=list(HealthCheck))
+@given(data=st.data())
+def test_file_statements_never_touch_anything_outside_the_directory(data, tmp_path_factory):
+    from yaseer.basic.errors import BasicError
+    from yaseer.basic.machine import Machine
+
+    root = tmp_path_factory.mktemp("fuzzfiles")
+    box, outside = root / "box", root / "outside"
+    box.mkdir()
+    outside.mkdir()
+    (outside / "victim.txt").write_bytes(b"keep\r\n")
+    (box / "sub").mkdir()
+    (box / "link").symlink_to(outside)
+    (box / "inside_link").symlink_to(box / "A.TXT")
+    (box / "loop").symlink_to(box / "loop")
+    before_outside = snapshot(outside)
+    before_root = set(os.listdir(root))
+    lines = [f"{10 * (k + 1)} {statement(data)}" for k in range(data.draw(st.integers(1, 12)))]
+    source = "5 ON ERROR GOTO 1000\n" + "\n".join(lines) + "\n999 END\n1000 RESUME NEXT\n"
+    dialect = data.draw(st.sampled_from(["casio", "gw"]))
+    machine = Machine(screen=io.StringIO(), dialect=dialect, files=box, input_stream=io.StringIO(""))
+    machine.load(source)
+    try:
+        machine.run()
+    except BasicError as err:
+        assert "Internal error" not in str(err), source
+    assert snapshot(outside) == before_outside, source
+    assert set(os.listdir(root)) == before_root, source
+    assert not os.path.exists("/tmp/yaseer-fuzz-abs"), source

@@ -1,0 +1,139 @@
+"""Sequential files (issue 12) against PC-BASIC 2.0.8, and the one-directory rule.
+
+The programs of tests/gw/files*.bas run in PC-BASIC (drive C: mounted on a fresh
+directory) and in yaseer (``files=`` a fresh directory), in both dialects: the same
+screen output, and afterwards the same files with the same bytes.  Then the sandbox:
+an absolute name, ``..`` and a symbolic link leading out are ``Path/File access
+error``, and nothing is written outside the directory, or at all without OPEN for
+output.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+from pathlib import Path
+
+import pytest
+
+from test_differential_support import clean_output
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+
+CASES = Path(__file__).parent / "gw"
+PROGRAMS = ["files.bas", "files_write.bas"]
+
+
+def pcbasic_run(source: str, directory: Path) -> str:
+    import pcbasic
+
+    session = pcbasic.Session(output_streams=None, input_streams=None,
+                              devices={"C:": str(directory)}, current_device="C:")
+    session.start()
+    session.execute("NEW")
+    out = clean_output(session.execute(source.rstrip("\n") + "\nRUN"))
+    session.close()
+    return out
+
+
+def yaseer_run(source: str, directory: Path, dialect: str = "gw") -> str:
+    from yaseer.basic.errors import BasicError
+    from yaseer.basic.machine import Machine
+
+    screen = io.StringIO()
+    machine = Machine(screen=screen, dialect=dialect, angle="rad", files=directory)
+    machine.load(source)
+    try:
+        machine.run()
+    except BasicError as err:
+        machine.end_line()
+        return screen.getvalue() + str(err) + "\n"
+    return screen.getvalue()
+
+
+def contents(directory: Path) -> dict[str, bytes]:
+    return {p.name: p.read_bytes() for p in sorted(directory.iterdir())}
+
+
+@pytest.mark.parametrize("dialect", ["gw", "casio"])
+@pytest.mark.parametrize("name", PROGRAMS)
+def test_file_program_matches_pcbasic_output_and_files(tmp_path, name, dialect):
+    source = (CASES / name).read_text()
+    theirs_dir, ours_dir = tmp_path / "pcbasic", tmp_path / "yaseer"
+    theirs_dir.mkdir()
+    ours_dir.mkdir()
+    theirs = pcbasic_run(source, theirs_dir)
+    assert yaseer_run(source, ours_dir, dialect) == theirs
+    assert contents(ours_dir) == contents(theirs_dir)
+    assert contents(ours_dir)  # the programs leave files to compare
+
+
+@pytest.mark.parametrize("name", ["/tmp/yaseer-escape", "../escape", "sub/../../escape", "..", "C:X", ""])
+def test_a_name_leading_out_of_the_directory_is_refused(tmp_path, name):
+    inside = tmp_path / "inside"
+    inside.mkdir()
+    out = yaseer_run(f'10 OPEN "O", 1, "{name}": PRINT #1, 1: CLOSE\n', inside)
+    assert out in ("Path/File access error in 10\n", "Bad file name in 10\n")
+    assert list(tmp_path.iterdir()) == [inside] and not list(inside.iterdir())
+    assert not Path("/tmp/yaseer-escape").exists()
+
+
+def test_a_link_leading_out_is_refused_and_one_inside_is_followed(tmp_path):
+    inside, outside = tmp_path / "inside", tmp_path / "outside"
+    inside.mkdir()
+    outside.mkdir()
+    (inside / "out").symlink_to(outside)
+    (inside / "out.txt").symlink_to(outside / "x.txt")
+    (inside / "here.txt").symlink_to(inside / "real.txt")
+    assert yaseer_run('10 OPEN "O", 1, "out/x.txt"\n', inside) == "Path/File access error in 10\n"
+    assert yaseer_run('10 OPEN "O", 1, "out.txt"\n', inside) == "Path/File access error in 10\n"
+    assert yaseer_run('10 KILL "out.txt"\n', inside) == "Path/File access error in 10\n"
+    assert not list(outside.iterdir())
+    assert yaseer_run('10 OPEN "O", 1, "here.txt": PRINT #1, "ok": CLOSE\n', inside) == ""
+    assert (inside / "real.txt").read_bytes() == b"ok\r\n\x1a"
+
+
+def test_nothing_is_written_without_open_for_output(tmp_path):
+    program = ('10 ON ERROR GOTO 100\n20 OPEN "I", 1, "A": KILL "B": NAME "C" AS "D": FILES\n'
+               '30 PRINT 1; EOF(1): INPUT #1, X: CLOSE: END\n100 PRINT ERR;: RESUME NEXT\n')
+    assert yaseer_run(program, tmp_path) == " 53  53  53  1  52  52 "
+    assert not list(tmp_path.iterdir())
+
+
+def test_the_default_directory_is_the_current_one(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert yaseer_run('10 OPEN "O", 1, "HERE.TXT": WRITE #1, 1\n20 FILES\n', None) == "HERE.TXT\n"
+    assert (tmp_path / "HERE.TXT").read_bytes() == b"1\r\n\x1a"
+
+
+def test_run_files_option_confines_the_program(tmp_path):
+    import subprocess
+    import sys
+
+    program = tmp_path / "p.bas"
+    program.write_text('10 OPEN "O", 1, "R.TXT": PRINT #1, "x": CLOSE\n20 OPEN "O", 2, "../S.TXT"\n')
+    box = tmp_path / "box"
+    box.mkdir()
+    done = subprocess.run([sys.executable, "-m", "yaseer", "run", str(program), "--files", str(box)],
+                          capture_output=True, text=True, cwd=tmp_path)
+    assert done.returncode == 1 and done.stderr.strip() == "Path/File access error in 20"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["box", "p.bas"]
+    assert [p.name for p in box.iterdir()] == ["R.TXT"]
+    missing = subprocess.run([sys.executable, "-m", "yaseer", "run", str(program), "--files", str(tmp_path / "no")],
+                             capture_output=True, text=True, cwd=tmp_path)
+    assert missing.returncode == 1 and "--files" in missing.stderr
+
+
+def test_session_save_adds_bas_and_stays_in_its_directory(tmp_path):
+    from yaseer.session import MachineEngine, Session
+
+    shown = []
+    session = Session(write=shown.append, engine=MachineEngine(shown.append), directory=tmp_path)
+    for line in ['10 PRINT "seed"', 'SAVE "seed004"', 'SAVE "copy.txt"', 'SAVE "../up"', 'SAVE "/tmp/yaseer-up"',
+                 "NEW", 'LOAD "seed004"', "FILES", 'FILES "*.txt"']:
+        session.handle(line)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["copy.txt", "seed004.bas"]
+    assert "".join(shown).count("Path/File access error") == 2
+    assert "".join(shown).endswith("seed004.bas\ncopy.txt\n")
+    assert session.programs[0] == {10: 'PRINT "seed"'}
+    assert not Path("/tmp/yaseer-up.bas").exists()
