@@ -3,8 +3,10 @@
     python tests/benchmarks/interpreter_speed.py [--target SECONDS] [--repeat N]
 
 1. The tight loop ``10 FOR I=1 TO 100000: A=A+1: NEXT``: yaseer (load + compile +
-   run, in process) against the same loop in plain Python (a function with
-   float locals, ``while`` and ``for range`` forms), and against bwbasic.
+   run, in process) in each dialect (casio: doubles; gw: singles, every result
+   rounded) against the same loop in plain Python (a function with float locals,
+   ``while`` and ``for range`` forms), and against bwbasic.  In gw also an integer
+   loop ``FOR I% = 1 TO 30000`` against the same loop over a single ``I``.
 2. Rugg/Feldman BM1-BM8 and Ahl (the workloads of tests/benchmarks/classic/, see
    classic_workloads.py; ``--extra DIR`` adds other copies, e.g. a directory of
    ``bmN.bas`` + ``bw_bmN.bas``, skipped with one line when DIR is absent): each
@@ -69,8 +71,8 @@ def best_of(repeat: int, function) -> float:
     return min(times)
 
 
-def yaseer_in_process(text: str) -> None:
-    machine = Machine(screen=io.StringIO(), printer=io.StringIO())
+def yaseer_in_process(text: str, dialect: str = "casio") -> None:
+    machine = Machine(screen=io.StringIO(), printer=io.StringIO(), dialect=dialect)
     machine.load(text)
     machine.run()
 
@@ -146,11 +148,20 @@ def main() -> int:
     have_bwbasic = shutil.which("bwbasic") is not None
 
     n = 100_000
-    t_yaseer = best_of(args.repeat, lambda: yaseer_in_process(TIGHT_LOOP.format(n=n)))
     t_while = best_of(args.repeat, lambda: plain_python_while(n))
     t_range = best_of(args.repeat, lambda: plain_python_range(n))
-    print(f"tight loop, {n} passes: yaseer {t_yaseer:.4f} s; plain Python while {t_while:.4f} s "
-          f"(ratio {t_yaseer / t_while:.2f}), for-range {t_range:.4f} s (ratio {t_yaseer / t_range:.2f})")
+    for dialect in ("casio", "gw"):
+        t_yaseer = best_of(args.repeat, lambda: yaseer_in_process(TIGHT_LOOP.format(n=n), dialect))
+        print(f"tight loop, {n} passes, --dialect {dialect}: yaseer {t_yaseer:.4f} s; plain Python while "
+              f"{t_while:.4f} s (ratio {t_yaseer / t_while:.2f}), for-range {t_range:.4f} s "
+              f"(ratio {t_yaseer / t_range:.2f}; goal: within 5)")
+    for body in ("A=A+1", "A=A+I%*2"):
+        typed = f"10 FOR I%=1 TO 30000: {body}: NEXT\n"
+        untyped = typed.replace("I%", "I")
+        t_int = best_of(args.repeat, lambda: yaseer_in_process(typed, "gw"))
+        t_single = best_of(args.repeat, lambda: yaseer_in_process(untyped, "gw"))
+        print(f"gw {typed.strip()!r}: {t_int:.4f} s; with a single I: {t_single:.4f} s "
+              f"(ratio {t_int / t_single:.2f}; goal: at most 1)")
     if have_bwbasic:
         big = 1_000_000
         t_bw = bwbasic_time(TIGHT_LOOP_BW.format(n=big), 1)

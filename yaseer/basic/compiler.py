@@ -499,7 +499,11 @@ class AreaCompiler:
             elif isinstance(item, ast.Spc):
                 parts.append(f"_Spc({self.numeric(item.count, scope)})")
             else:
-                code, kind = self.expr(item, scope)
+                try:
+                    code, kind = self.expr(item, scope)
+                except CompileError as err:  # e.g. Type mismatch: the items before it still print
+                    parts.append(f"_fail({err.message!r}, {err.code})")
+                    return parts, False
                 if kind != "s" and items[k + 1:k + 2] == [","]:
                     parts.append("_NUMCOMMA")  # a number a comma follows (see Machine._blank_before_comma)
                 parts.append(self.numbers.printable(code, kind))

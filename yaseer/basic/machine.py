@@ -380,7 +380,7 @@ class Machine:
             "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range, "type": type, "int": int,
                              "BaseException": BaseException},
             "_M": self, "_S": self.scalars, "_A": self.arrays, "_arr": self.array_nd, "_ix": runtime.subscript,
-            "_ovf": self.arith.overflowed, "_err": BasicError, "_END": END, "_DirectJump": DirectJump,
+            "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_END": END, "_DirectJump": DirectJump,
             "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
             "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,
             "_oom": self._out_of_memory, "_call": self.call_area,

@@ -24,7 +24,7 @@ GW-BASIC (checked with PC-BASIC: ``CINT(2.5)`` is 3, ``CINT(-2.5)`` is -3).
 from __future__ import annotations
 
 import math
-from array import array
+import struct
 from decimal import ROUND_HALF_UP, Decimal
 
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
@@ -33,9 +33,8 @@ INT_MIN, INT_MAX = -32768, 32767
 SINGLE_DIGITS = 7  # significant digits PRINT shows of a single-precision number
 DOUBLE_DIGITS = 16  # ... of a double-precision number
 
-_cell = array("f", [0.0])
-_store = _cell.__setitem__
-
+_SINGLE = struct.Struct("f")
+_pack, _unpack = _SINGLE.pack, _SINGLE.unpack
 
 SINGLE_LARGEST = (1 - 2.0 ** -24) * 2.0 ** 127  # 1.701412E+38, the end of MBF's single range
 
@@ -47,8 +46,10 @@ def to_single(x) -> float:
     compiled code's overflow checks (``x - x``) pass that to the dialect's overflow
     policy (yaseer/basic/arith_policy.py).
     """
-    _store(0, x)
-    r = _cell[0]
+    try:
+        r = _unpack(_pack(x))[0]
+    except OverflowError:  # beyond IEEE single too
+        return math.copysign(math.inf, x)
     if -SINGLE_LARGEST <= r <= SINGLE_LARGEST or r != r:
         return r
     return math.copysign(math.inf, r)
@@ -162,14 +163,25 @@ def _single_digits(x: float) -> tuple[str, int]:
 
 
 def _double_digits(x: float) -> tuple[str, int]:
-    """``abs(x)`` rounded half up to 16 significant digits (from its exact binary value)."""
-    exact = Decimal(abs(x))
+    """``abs(x)`` (double precision) to at most 16 significant digits, rounded half up.
+
+    GW-BASIC's doubles carry 56 bits, yaseer's 53: a value with at most 24 bits (a
+    widened single, an integer) is exact in both and is rounded from its exact
+    binary value (``CDBL(1.1)`` is 1.100000023841858); any other is rounded from the
+    shortest decimal that reads back as it (what was typed, for a literal:
+    ``-90095.2872#`` shows as typed, as on GW-BASIC, not ``-90095.28720000001``).
+    """
+    x = abs(x)
+    exact = Decimal(x) if abs(x) < 3.4e38 and _unpack(_pack(x))[0] == x else Decimal(repr(x))
     e = exact.adjusted()
-    n = int((exact.scaleb(DOUBLE_DIGITS - 1 - e)).to_integral_value(rounding=ROUND_HALF_UP))
-    if n >= 10 ** DOUBLE_DIGITS:
-        n //= 10
-        e += 1
-    return str(n).rstrip("0") or "0", e
+    digits = exact.as_tuple().digits
+    if len(digits) > DOUBLE_DIGITS:
+        n = int(exact.scaleb(DOUBLE_DIGITS - 1 - e).to_integral_value(rounding=ROUND_HALF_UP))
+        if n >= 10 ** DOUBLE_DIGITS:
+            n //= 10
+            e += 1
+        return str(n).rstrip("0") or "0", e
+    return "".join(map(str, digits)).rstrip("0") or "0", e
 
 
 def unsigned_text(x, digits: int, marker: str) -> str:

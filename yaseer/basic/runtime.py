@@ -22,6 +22,11 @@ def illegal_function_call() -> BasicError:
     return BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
 
 
+def fail(message: str, code: int):
+    """Raise the BASIC error ``message`` (a PRINT item the compiler found bad, reached at run time)."""
+    raise BasicError(message, code)
+
+
 def overflow() -> None:
     """Raise Overflow: a result beyond double range (the code checks ``x - x``)."""
     raise BasicError("Overflow", OVERFLOW)

@@ -222,7 +222,8 @@ def _scan_number(upper: str, i: int) -> tuple[float, int]:
     return value, match.end()
 
 
-_TYPED_NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)(?:([ED])([+-]?\d*))?([%!#]?)")
+# a type character may follow a number without exponent only (``1E2!`` is 1E2, then a bad ``!``)
+_TYPED_NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)(?:([ED])([+-]?\d*)|([%!#]?))")
 _RADIX_NUMBER = re.compile(r"&(H[0-9A-F]*|O?[0-7]*)")
 SINGLE_DIGITS = 7  # a literal with more significant digits is double precision (GW-BASIC)
 
@@ -256,13 +257,18 @@ def _scan_typed_number(upper: str, i: int) -> tuple[tuple, int]:
     if suffix == "%" or (not suffix and plain and value < 32768):
         if not value.is_integer() and suffix == "%":
             return (to_single(value), "!"), match.end()
-        if value >= 32768:
+        if value == 32768:  # only as -32768%: a single until the minus makes it an integer
+            return (32768.0, "!"), match.end()
+        if value > 32768:
             raise _syntax_error()
         return (int(value), "%"), match.end()
     digits = len(mantissa.replace(".", "").lstrip("0").rstrip("0") if "." in mantissa else mantissa.lstrip("0"))
     if suffix == "#" or (not suffix and (letter == "D" or digits > SINGLE_DIGITS)):
         return (value, "#"), match.end()
-    return (to_single(value), "!"), match.end()
+    single = to_single(value)
+    if single - single:  # beyond the single range
+        raise BasicError("Overflow", OVERFLOW)
+    return (single, "!"), match.end()
 
 
 def _lexemes(text: str, dialect: Dialect = CASIO):
