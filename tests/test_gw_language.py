@@ -61,24 +61,37 @@ INPUT_ANSWERS = ["1_2", "12", " 1 2 ", "&H10", "1D2", "inf", "nan", "", "1e3", "
 INPUT_PROGRAM = "10 FOR I=1 TO 14\n20 INPUT A\n30 PRINT A\n40 NEXT\n"
 
 
-@pytest.mark.parametrize("dialect", DIALECTS)
-def test_input_reads_numbers_as_gw_basic(dialect):
-    """Python's float syntax does not leak into INPUT: inf, nan, 1_2 ask again."""
+def with_answers(program: str, answers: list[str], dialect: str) -> tuple[str, str]:
+    """(yaseer's screen, PC-BASIC's screen) for ``program`` answered with ``answers``."""
     import pcbasic
 
     from yaseer.basic.machine import Machine
 
-    session = pcbasic.Session(input_streams=io.BytesIO(("\r".join(INPUT_ANSWERS) + "\r").encode()),
+    session = pcbasic.Session(input_streams=io.BytesIO(("\r".join(answers) + "\r").encode()),
                               output_streams=None)
     session.start()
-    session.execute(INPUT_PROGRAM)
+    session.execute(program)
     theirs = clean_output(session.execute("RUN"))
     session.close()
     screen = io.StringIO()
-    machine = Machine(screen=screen, dialect=dialect, input_stream=io.StringIO("\n".join(INPUT_ANSWERS) + "\n"))
-    machine.load(INPUT_PROGRAM)
+    machine = Machine(screen=screen, dialect=dialect, input_stream=io.StringIO("\n".join(answers) + "\n"))
+    machine.load(program)
     machine.run()
-    assert screen.getvalue() == theirs
+    return screen.getvalue(), theirs
+
+
+@pytest.mark.parametrize("dialect", DIALECTS)
+def test_input_reads_numbers_as_gw_basic(dialect):
+    """Python's float syntax does not leak into INPUT: inf, nan, 1_2 ask again."""
+    ours, theirs = with_answers(INPUT_PROGRAM, INPUT_ANSWERS, dialect)
+    assert ours == theirs
+
+
+@pytest.mark.parametrize("dialect", DIALECTS)
+def test_line_input_takes_the_whole_line(dialect):
+    program = '10 LINE INPUT A$: LINE INPUT "say: "; B$: PRINT "["; A$; "]["; B$; "]"\n'
+    ours, theirs = with_answers(program, ['  a, "b" ,c  ', "x,y"], dialect)
+    assert ours == theirs
 
 
 READ_PROGRAM = ('10 READ A, B, C, D, E: PRINT A; B; C; D; E\n20 READ F\n'
@@ -89,3 +102,33 @@ READ_PROGRAM = ('10 READ A, B, C, D, E: PRINT A; B; C; D; E\n20 READ F\n'
 def test_read_takes_numbers_as_gw_basic(pc, dialect):
     angle = None if dialect == "gw" else "rad"
     assert run_yaseer(READ_PROGRAM, angle=angle, dialect=dialect) == pc.program(READ_PROGRAM)
+
+
+def test_mbf_bytes_of_generated_values_match_pcbasic(pc):
+    """MKS$, MKD$ and MKI$ of seeded random values (exact in single precision, so both
+    BASICs hold the same number), and CVS / CVI of random byte strings: one PC-BASIC
+    program, compared byte for byte (gw) and the decoded values within single precision's
+    last digit (casio prints 10 digits)."""
+    import random
+
+    from test_differential_support import base_seed, basic_number, exact_single, numbers_and_text
+
+    rng = random.Random(base_seed() + 12)
+    lines = []
+    for k in range(60):
+        literal = basic_number(exact_single(rng))  # at most 7 digits: single in GW-BASIC, exact in both
+        scale = rng.choice(["", "", " * 2^-60", " * 2^70"])
+        lines.append(f"{10 + 10 * k} X={literal}{scale}: A$=MKS$(X): B$=MKD$(X): GOSUB 2000")
+    for k in range(40):
+        chars = "+".join(f"CHR$({rng.randint(0, 255)})" for _ in range(4))
+        lines.append(f"{1000 + 10 * k} C$={chars}: PRINT CVS(C$); CVI(C$); CVS(MKS$(CVS(C$))) = CVS(C$)")
+    lines.append("1990 END")
+    lines.append('2000 FOR K=1 TO 4: PRINT ASC(MID$(A$,K,1));: NEXT: PRINT "|";')
+    lines.append("2010 FOR K=1 TO 8: PRINT ASC(MID$(B$,K,1));: NEXT: PRINT: RETURN")
+    source = "\n".join(lines) + "\n"
+    theirs = pc.program(source)
+    assert run_yaseer(source, angle=None, dialect="gw") == theirs
+    ours_numbers, ours_text = numbers_and_text(run_yaseer(source, angle="rad", dialect="casio"))
+    their_numbers, their_text = numbers_and_text(theirs)
+    assert ours_text == their_text and len(ours_numbers) == len(their_numbers)
+    assert all(abs(a - b) <= 1e-6 * max(abs(a), abs(b)) for a, b in zip(ours_numbers, their_numbers))

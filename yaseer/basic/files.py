@@ -159,7 +159,8 @@ class OpenFile:
     def read_field(self, numeric: bool) -> str:
         """One INPUT # field: blanks and line ends before it skipped; a number ends at a
         blank, comma or line end, a string at a comma or line end (a quoted one at its
-        closing quote); the comma or line end after it is consumed."""
+        closing quote, and text after that begins the next field, as in PC-BASIC); the
+        comma or line end after it is consumed."""
         data = self._input()
         n = len(data)
         i = self.position
@@ -171,7 +172,7 @@ class OpenFile:
             close = data.find('"', i + 1)
             close = n if close < 0 else close
             text, i = data[i + 1:close], close + 1
-            while i < n and data[i] not in ",\r\n":
+            while i < n and data[i] == " ":
                 i += 1
         else:
             stops = " ,\r\n" if numeric else ",\r\n"

@@ -1119,8 +1119,9 @@ class Machine:
             self.screen.write("?Redo from start\n")
 
     def line_input(self, prompt) -> str:
-        """LINE INPUT ["prompt";] a$: the whole line, commas and quotes included."""
-        return self._read_line(prompt or "")
+        """LINE INPUT ["prompt";] a$: the whole line, commas and quotes included (its
+        trailing blanks dropped, as GW-BASIC's screen editor drops them)."""
+        return self._read_line(prompt or "").rstrip(" ")
 
     def _read_line(self, prompt: str) -> str:
         """Show ``prompt``, read one line of input (without its line end); the end of
