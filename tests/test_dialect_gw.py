@@ -55,6 +55,7 @@ SAME_AS_PCBASIC = {
     "integer loop variable": "10 X=0:FOR I%=1 TO 300:X=X+I%/7:NEXT:PRINT X;I%\n",
     "typed DEF FN": "10 DEF FNA(X)=X*X+1:PRINT FNA(3);FNA(1.5)\n20 DEF FNI%(X)=X/2:PRINT FNI%(5)\n",
     "functions return single": "10 PRINT SIN(1);ATN(1)*4;EXP(1);LOG(10)\n",
+    "adding a constant rounds to single": "10 A=16777216!:A=A+1:B#=A:PRINT B#\n20 A=.1:A=A+.2:B#=A:PRINT B#\n",
     "no Al-Yaseer arrays": "10 N(10)=5:PRINT N(10)\n20 PRINT A(11)\n",
 }
 

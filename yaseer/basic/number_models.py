@@ -154,6 +154,10 @@ class TypedNumbers(PlainNumbers):
         if kind == "%":
             return f"_ia({left} {op} {right})", "%"
         if kind == "!":
+            if op in "+-" and (_small_literal(left) or _small_literal(right)):
+                # adding a small constant cannot cross the single range: round inline
+                # (struct pack/unpack, no Python frame: the tight loop's A=A+1)
+                return f"_up(_pk({left} {op} {right}))[0]", "!"
             return f"_sg({left} {op} {right})", "!"
         return f"({left} {op} {right})", "#"
 
@@ -233,6 +237,14 @@ class TypedNumbers(PlainNumbers):
         def whole(node) -> bool:
             return node is None or (isinstance(node, ast.Num) and float(node.value).is_integer())
         return whole(stmt.start) and whole(stmt.step)
+
+
+def _small_literal(code: str) -> bool:
+    """Is ``code`` a number literal below 1E+30 (far below a single's unit at 1.7E+38)?"""
+    try:
+        return abs(float(code)) < 1e30
+    except ValueError:
+        return False
 
 
 def _is_int_literal(code: str) -> bool:

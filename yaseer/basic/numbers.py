@@ -225,7 +225,7 @@ def number_to_text(x) -> str:
 # The names the typed compiled code calls (merged into the machine's namespace over
 # the plain ones; see number_models.TypedNumbers for which code uses which).
 RUNTIME = {
-    "_sg": to_single, "_ia": int_result, "_ci": to_int, "_dbl": Double, "_irange": int_range,
+    "_sg": to_single, "_pk": _pack, "_up": _unpack, "_ia": int_result, "_ci": to_int, "_dbl": Double, "_irange": int_range,
     "_idiv": int_divide, "_mod": int_modulo, "_and": logical_and, "_or": logical_or,
     "_xor": logical_xor, "_eqv": logical_eqv, "_imp": logical_imp, "_not": logical_not,
     "_sgn": sign, "_len": len, "_strs": str_dollar,
