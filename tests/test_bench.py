@@ -182,7 +182,7 @@ def test_bench_command_quick(tmp_path, capsys):
     assert {r["case"] for r in rows} == {"seed 001 slider-crank", "seed 003 four-bar, uncrossed",
                                          "seed 003 four-bar, crossed", "seed 004 change-point four-bar"}
     assert all(r["status"] == "ok" for r in rows if not r["method"].startswith("newton tol=0.1"))
-    assert {r["way"] for r in rows} == {"listing", "per position", "array"}
+    assert {r["way"] for r in rows} == {"listing", "listing (decimal)", "per position", "array"}
     with open(tmp_path / "bench_laziness.csv") as handle:
         levels = {r["level"] for r in csv.DictReader(handle)}
     assert levels == {"positions", "+ velocities and accelerations", "+ forces"}

@@ -368,7 +368,8 @@ class AreaCompiler:
         if op == "^":
             if self.numbers.typed:
                 return self.numbers.power(left, lkind, right, rkind)
-            if isinstance(node.right, ast.Num) and node.right.value == 2.0 and _simple_operand(left):
+            if (self.numbers.square_by_product and isinstance(node.right, ast.Num)
+                    and node.right.value == 2.0 and _simple_operand(left)):
                 return f"({left} * {left})", "n"
         return self.numbers.helper(op, left, right)
 

@@ -57,6 +57,10 @@ class Dialect:
         precision, ``$`` strings, with DEFINT/DEFSNG/DEFDBL/DEFSTR, literal
         suffixes and ``&H``/``&O`` literals.
 
+        ``arithmetic``: ``"binary"`` (IEEE doubles, or GW's types) or
+        ``"decimal"`` (``--arith decimal``, casio only: 13-digit decimal
+        arithmetic as the FX-850P family's BCD, yaseer/basic/decimal_arith.py).
+
     Print rules
         ``print_digits``: significant digits PRINT and STR$ show for the
         default numeric type (10 on the 10-digit Casio display; 7 for
@@ -126,6 +130,16 @@ class Dialect:
     errors_when_reached: bool = False
     comma_trims_number: bool = False
     for_binds_next: bool = False
+    arithmetic: str = "binary"
+
+    def with_arithmetic(self, arithmetic: str) -> "Dialect":
+        """This dialect computing in ``arithmetic`` ("binary" or "decimal"); decimal
+        is the Casio's (ValueError for a typed dialect)."""
+        if arithmetic == self.arithmetic:
+            return self
+        if arithmetic not in ("binary", "decimal") or self.typed_numbers:
+            raise ValueError(f"--arith {arithmetic} is not for the {self.name} dialect (decimal is casio's)")
+        return replace(self, arithmetic=arithmetic)
 
     def with_program_areas(self) -> "Dialect":
         """This dialect with ``GOSUB PROG n`` (``--prog`` gives areas in gw too)."""

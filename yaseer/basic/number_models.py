@@ -49,6 +49,7 @@ class PlainNumbers:
     """The pocket computer's numbers: every value a double, type ``"n"``."""
 
     typed = False
+    square_by_product = True  # X^2 may compile to X*X (exact in binary)
     widest = "n"  # the type of a number read by READ or INPUT (converted to the target's)
     integer = "n"  # the type of ERR, ERL
 
@@ -251,6 +252,36 @@ def _is_int_literal(code: str) -> bool:
     return code.lstrip("-").isdigit()
 
 
+class DecimalNumbers(PlainNumbers):
+    """``--arith decimal`` (casio): floats that stand for 13-digit decimals; ``+ - * /``,
+    ``^``, literals and FOR steps through yaseer/basic/decimal_arith.py."""
+
+    square_by_product = False
+    _OPERATIONS = {"+": "_dadd", "-": "_dsub", "*": "_dmul", "/": "_ddiv13"}
+
+    def literal(self, value, kind: str) -> tuple[str, str]:
+        from yaseer.basic.decimal_arith import rounded
+
+        return repr(rounded(float(value))), "n"
+
+    def arithmetic(self, op: str, left: str, lkind: str, right: str, rkind: str) -> tuple[str, str]:
+        return f"{self._OPERATIONS[op]}({left}, {right})", "n"
+
+    def loop_helpers(self, kind: str) -> tuple[str, str]:
+        return "_frange", "_dadd({var}, {step})"
+
+    def may_iterate(self, stmt, kind: str) -> bool:
+        """Only whole-number loops iterate (exact in both arithmetics); any other adds
+        its step in decimal each pass."""
+        from yaseer.basic import syntax_tree as ast
+
+        def whole(node) -> bool:
+            return node is None or (isinstance(node, ast.Num) and float(node.value).is_integer())
+        return whole(stmt.start) and whole(stmt.step)
+
+
 def number_model(dialect) -> PlainNumbers:
     """A fresh model for compiling one area in ``dialect``."""
-    return TypedNumbers() if dialect.typed_numbers else PlainNumbers()
+    if dialect.typed_numbers:
+        return TypedNumbers()
+    return DecimalNumbers() if dialect.arithmetic == "decimal" else PlainNumbers()

@@ -30,7 +30,7 @@ def main(args) -> int:
     from yaseer.evaluation import benchmark as bench
 
     out = output_directory(args.out)
-    ways = tuple(w for w in bench.WAYS if not (args.no_listing and w == "listing"))
+    ways = tuple(w for w in bench.WAYS if not (args.no_listing and w.startswith("listing")))
     repeat = 1 if args.quick else 3
     if "listing" in ways and not bench.interpreter_available():
         print("note: the interpreter (yaseer run) is not available; the listing way is skipped", file=sys.stderr)

@@ -103,6 +103,9 @@ def add_run_options(parser: argparse.ArgumentParser) -> None:
     add_dialect_argument(group)
     group.add_argument("--angle", choices=("deg", "rad"), default=None,
                        help="unit of SIN COS TAN ATN at the start (default: the dialect's: casio deg, gw rad)")
+    group.add_argument("--arith", choices=("binary", "decimal"), default="binary",
+                       help="casio's arithmetic: binary (IEEE doubles, default) or decimal (13 digits inside, "
+                            "as the FX-850P family's BCD)")
     group.add_argument("--input", metavar="FILE",
                        help="answer INPUT statements with the lines of FILE (default: standard input)")
     group.add_argument("--files", metavar="DIR", default=None,
@@ -116,7 +119,7 @@ class RunSettings:
 
     areas: dict[int, str] = field(default_factory=dict)   # area -> BASIC text (--prog)
     methods: dict[int, str] = field(default_factory=dict)  # program -> method name (--method)
-    dialect: str = "casio"
+    dialect: object = "casio"  # a dialect name, or a Dialect (--arith decimal)
     angle: str | None = None  # None: the dialect's
     input: TextIO | None = None  # the --input file, opened (None: standard input)
     files: str | None = None  # --files DIR: the directory of the program's files (None: the current one)
@@ -137,7 +140,18 @@ def run_settings(args: argparse.Namespace) -> RunSettings:
     """The parsed run options of ``args`` (see :func:`add_run_options`): area files read and checked,
     the --input file opened (close it with :meth:`RunSettings.close`); OSError naming a file that cannot be read."""
     areas = {n: read_area(n, path) for n, path in args.prog}
-    return RunSettings(areas=areas, methods=dict(args.method), dialect=args.dialect, angle=args.angle,
+    dialect = args.dialect
+    if getattr(args, "arith", "binary") != "binary":
+        from yaseer.basic.dialect import get_dialect
+
+        try:
+            dialect = get_dialect(dialect).with_arithmetic(args.arith)
+        except ValueError as error:
+            import sys
+
+            print(f"yaseer: {error}", file=sys.stderr)
+            raise SystemExit(2) from None
+    return RunSettings(areas=areas, methods=dict(args.method), dialect=dialect, angle=args.angle,
                        input=open(args.input, encoding="utf-8", errors="replace") if args.input else None,
                        files=_files_directory(args.files))
 

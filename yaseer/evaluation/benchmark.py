@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from .cases import all_cases
-from .ways import WAYS, run_listing, run_python
+from .ways import LISTING_ARITHMETIC, WAYS, run_listing, run_python
 
 FIELDS = ("case", "linkage", "method", "way", "single", "positions", "seconds_per_position", "worst_error", "status",
           "where", "detail", "model_note")
@@ -57,17 +57,17 @@ def selected_cases(pattern: str | None = None):
 def bench_rows(quick: bool = False, ways=WAYS, repeat: int = 3, progress=None, pattern=None) -> list[dict]:
     """Every case x method x way.  ``progress(text)`` is told what runs."""
     rows = []
-    listing = "listing" in ways and interpreter_available()
+    listing = any(way in LISTING_ARITHMETIC for way in ways) and interpreter_available()
     for case in selected_cases(pattern):
         angles = case.quick if quick else case.dense
         for method in methods_of(case.linkage):
             for way in ways:
                 if progress:
                     progress(f"{case.name}: {method}, {way}")
-                if way == "listing":
+                if way in LISTING_ARITHMETIC:
                     if not listing:
                         continue
-                    run = run_listing(case, method, angles)
+                    run = run_listing(case, method, angles, arithmetic=LISTING_ARITHMETIC[way])
                 elif case.compute is None:
                     continue
                 else:
@@ -120,10 +120,10 @@ def write_csv(path: Path, rows, fields) -> None:
 
 def format_table(summary) -> str:
     """The aggregated rows as a plain-text table."""
-    lines = [f"{'linkage':<13} {'method':<22} {'way':<13} {'us/position':>12} {'worst error':>12}  failures"]
+    lines = [f"{'linkage':<13} {'method':<22} {'way':<17} {'us/position':>12} {'worst error':>12}  failures"]
     for s in summary:
         micro = s["seconds_per_position"] * 1e6
-        lines.append(f"{s['linkage']:<13} {s['method']:<22} {s['way']:<13} {micro:>12.2f} "
+        lines.append(f"{s['linkage']:<13} {s['method']:<22} {s['way']:<17} {micro:>12.2f} "
                      f"{s['worst_error']:>12.3g}  {s['failures']}")
     return "\n".join(lines)
 
@@ -190,7 +190,7 @@ def draw_chart(summary, newton_summary, path_stem: Path) -> list[Path]:
     import matplotlib.pyplot as plt
     from matplotlib.lines import Line2D
 
-    markers = {"listing": "s", "per position": "o", "array": "^"}
+    markers = {"listing": "s", "listing (decimal)": "D", "per position": "o", "array": "^"}
     linkages = sorted({s["linkage"] for s in summary})
     figure, axes = plt.subplots(1, len(linkages), figsize=(5.5 * len(linkages), 6.2), squeeze=False)
     for axis, linkage in zip(axes[0], linkages):

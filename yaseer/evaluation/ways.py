@@ -3,6 +3,8 @@
 * ``listing``: a calling listing through the interpreter, in process, exactly
   as ``yaseer run FILE --format csv --method N=NAME`` runs it; its time per
   position is the time of ``machine.run()`` / printed rows.
+* ``listing (decimal)``: the same with ``--arith decimal`` (the BASIC part in the
+  FX-850P family's 13-digit decimal arithmetic; the library programs stay binary).
 * ``per position``: the Python programs called once per crank angle (floats).
 * ``array``: one vectorised call over the whole cycle (numpy arrays).
 
@@ -22,7 +24,8 @@ import numpy as np
 from .listings import parse_csv_rows
 from .measure import Outcome, outcome_of
 
-WAYS = ("listing", "per position", "array")
+WAYS = ("listing", "listing (decimal)", "per position", "array")
+LISTING_ARITHMETIC = {"listing": "binary", "listing (decimal)": "decimal"}  # yaseer run --arith
 PROGRAM_OF = {"slider_crank": 1, "fourbar": 2, "inverted_slider_crank": 3, "virtual_link": 5}
 
 
@@ -60,7 +63,7 @@ def _judge(case, angles, results) -> Outcome:
     return outcome_of(case.reference(angles), {k: np.asarray(v, float) for k, v in results.items()}, other)
 
 
-def run_listing(case, method: str, angles, repeat: int = 1) -> Run:
+def run_listing(case, method: str, angles, repeat: int = 1, arithmetic: str = "binary") -> Run:
     """Run ``case``'s listing through the interpreter with program ``N`` using ``method``.
 
     In process, as ``yaseer run FILE --format csv --method N=NAME`` does it (the
@@ -70,14 +73,16 @@ def run_listing(case, method: str, angles, repeat: int = 1) -> Run:
     if case.listing is None:
         return Run(math.nan, Outcome(math.nan, "n/a", "no listing for this case"), 0)
     from yaseer import binding
+    from yaseer.basic.dialect import CASIO
     from yaseer.basic.errors import BasicError
     from yaseer.basic.machine import Machine
 
+    dialect = CASIO.with_arithmetic(arithmetic)
     text = case.listing(np.asarray(angles, float))
     best, output = math.inf, ""
     for _ in range(repeat):
         screen = io.StringIO()
-        machine = Machine(screen=screen, printer=screen, output_format="csv")
+        machine = Machine(screen=screen, printer=screen, output_format="csv", dialect=dialect)
         try:
             machine.load(text)
             binding.install(machine, {PROGRAM_OF[case.linkage]: method})

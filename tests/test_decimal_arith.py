@@ -1,0 +1,123 @@
+"""``--arith decimal`` (casio): 13-digit decimal arithmetic (yaseer/basic/decimal_arith.py).
+
+Checked against independent computations: exact rationals (``fractions``) rounded
+half up to 13 significant digits by a function of this file, and mpmath at 40
+digits for SQR, EXP, LOG and the trigonometric functions.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import io
+import math
+import random
+from fractions import Fraction
+
+import mpmath
+import pytest
+
+from yaseer.basic import decimal_arith as D
+from yaseer.basic.dialect import CASIO
+from yaseer.basic.machine import Machine
+
+DECIMAL = dataclasses.replace(CASIO, arithmetic="decimal")
+
+
+def round13(value: Fraction) -> float:
+    """``value`` rounded half up (away from zero) to 13 significant digits, as a float."""
+    if value == 0:
+        return 0.0
+    sign = -1 if value < 0 else 1
+    value = abs(value)
+    exponent = math.floor(math.log10(value))  # may be one off for values near a power of ten:
+    while value >= Fraction(10) ** (exponent + 1):
+        exponent += 1
+    while value < Fraction(10) ** exponent:
+        exponent -= 1
+    scale = Fraction(10) ** (12 - exponent)
+    digits = math.floor(value * scale + Fraction(1, 2))
+    return sign * float(Fraction(digits) / scale)
+
+
+def random_decimal(rng: random.Random) -> Fraction:
+    """A decimal of 1..13 significant digits between 1e-6 and 1e7 (either sign)."""
+    digits = rng.randint(1, 13)
+    mantissa = rng.randint(10 ** (digits - 1), 10 ** digits - 1)
+    value = Fraction(mantissa, 10 ** rng.randint(0, 12))
+    return -value if rng.random() < 0.3 else value
+
+
+@pytest.mark.parametrize("name, exact", [
+    ("add", lambda a, b: a + b), ("subtract", lambda a, b: a - b),
+    ("multiply", lambda a, b: a * b), ("divide", lambda a, b: a / b),
+])
+def test_operations_round_the_exact_result_to_13_digits(name, exact):
+    rng = random.Random(13)
+    operation = getattr(D, name)
+    for _ in range(2000):
+        a, b = random_decimal(rng), random_decimal(rng)
+        assert operation(float(a), float(b)) == round13(exact(a, b)), (a, b)
+
+
+@pytest.mark.parametrize("function", ["sqrt", "exp", "log", "sin", "cos", "tan", "atn"])
+def test_functions_agree_with_mpmath_to_13_digits(function):
+    mpmath.mp.dps = 40
+    rng = random.Random(7)
+    mismatches = 0
+    for _ in range(300):
+        x = Fraction(rng.randint(1, 10 ** 7), 10 ** rng.randint(0, 5))
+        if function in ("exp",):
+            x = x / 10 ** 5
+        if function == "tan" and (x % 180) in (90,):
+            continue
+        arg = mpmath.mpf(x.numerator) / x.denominator
+        degrees = arg * mpmath.pi / 180
+        reference = {"sqrt": lambda: mpmath.sqrt(arg), "exp": lambda: mpmath.exp(arg),
+                     "log": lambda: mpmath.log(arg), "sin": lambda: mpmath.sin(degrees),
+                     "cos": lambda: mpmath.cos(degrees), "tan": lambda: mpmath.tan(degrees),
+                     "atn": lambda: mpmath.atan(arg) * 180 / mpmath.pi}[function]()
+        ours = getattr(D, function)(float(x))
+        expected = round13(Fraction(mpmath.nstr(reference, 35, min_fixed=-40, max_fixed=40)))
+        if abs(reference) < mpmath.mpf("1e-20"):
+            expected = 0.0
+        mismatches += ours != expected
+    assert mismatches == 0
+
+
+def run(program: str, dialect=DECIMAL) -> str:
+    screen = io.StringIO()
+    machine = Machine(screen=screen, dialect=dialect)
+    machine.load(program)
+    machine.run()
+    return screen.getvalue()
+
+
+def test_tenths_add_up_exactly():
+    program = "10 X = 1: FOR K = 1 TO 10: X = X - .1: NEXT K: PRINT X; X = 0\n"
+    assert run(program) == " 0 -1 \n"
+    assert run(program, CASIO) == " 1.387778781E-16  0 \n"  # binary doubles, as today
+
+
+def test_the_paper_loop_lands_on_its_limit():
+    program = "10 FOR T = .1 TO 360.1 STEP 20: N = N + 1: L = T: NEXT T: PRINT N; L = 360.1; (1/3)*3 - 1\n"
+    assert run(program) == " 19 -1 -1E-13 \n"
+
+
+def test_exact_right_angles_and_ten_digit_display():
+    assert run("10 PRINT COS(90); SIN(180); SIN(30); 2/3\n") == " 0  0  .5  .6666666667 \n"
+
+
+def test_overflow_beyond_the_casio_range():
+    machine = Machine(screen=io.StringIO(), dialect=DECIMAL)
+    machine.load("10 X = 1E60 * 1E60\n")
+    with pytest.raises(Exception, match="Overflow"):
+        machine.run()
+
+
+def test_run_option(tmp_path, capsys):
+    from yaseer.cli import main
+
+    listing = tmp_path / "tenths.bas"
+    listing.write_text("10 X = 1: FOR K = 1 TO 10: X = X - .1: NEXT K: PRINT X\n")
+    assert main(["run", "--arith", "decimal", str(listing)]) == 0
+    assert capsys.readouterr().out == " 0 \n"

@@ -1,0 +1,212 @@
+"""``--arith decimal``: the Casio FX-850P family's arithmetic, 13 decimal digits inside.
+
+The pocket computers compute in BCD with a 13-digit mantissa and show 10 digits,
+so ``1 - 10*.1`` is exactly 0 and ``FOR T = .1 TO 360.1 STEP 20`` reaches 360.1
+exactly.  yaseer keeps every value a Python float (so arrays, FOR loops, PRINT and
+the program areas work unchanged) but every value is the nearest float to a
+13-significant-digit decimal: each operation reads its operands back as those
+decimals (:func:`dec`, exact because 13 digits < 15), computes in the decimal
+module with 13 digits (:data:`CONTEXT`, rounding half up as a calculator does,
+exponents up to 99 as the Casio's 1E99 range), and stores the float of the result.
+
+SQR, EXP, LOG and ``^`` are correctly rounded by the decimal module; SIN, COS,
+TAN and ATN are computed with 25 digits (Taylor series after an exact reduction of
+the angle) and then rounded to 13.  In degrees the multiples of 90 give exact
+values, as in the binary arithmetic.  Beyond 9.999999999999E+99 is ``Overflow``.
+"""
+
+from __future__ import annotations
+
+from decimal import ROUND_HALF_UP, Context, Decimal, Overflow as DecimalOverflow
+
+from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_CALL, OVERFLOW
+
+DIGITS = 13  # inside; the display shows 10 (formatting.number_to_text)
+CONTEXT = Context(prec=DIGITS, rounding=ROUND_HALF_UP, Emax=99, Emin=-99,
+                  traps=[DecimalOverflow])
+_WIDE = Context(prec=25, rounding=ROUND_HALF_UP)  # trig is computed with 12 guard digits
+_PI = Decimal("3.14159265358979323846264338327950288")
+
+
+def dec(x) -> Decimal:
+    """The 13-digit decimal a float stands for (a float from outside is rounded to 13 digits)."""
+    return Decimal(format(x, ".13g"))
+
+
+def _float(d: Decimal) -> float:
+    return float(d)
+
+
+def _checked(operation, *args) -> float:
+    try:
+        return float(operation(*args))
+    except DecimalOverflow:
+        raise BasicError("Overflow", OVERFLOW) from None
+
+
+def add(a, b) -> float:
+    return _checked(CONTEXT.add, dec(a), dec(b))
+
+
+def subtract(a, b) -> float:
+    return _checked(CONTEXT.subtract, dec(a), dec(b))
+
+
+def multiply(a, b) -> float:
+    return _checked(CONTEXT.multiply, dec(a), dec(b))
+
+
+def divide(a, b) -> float:
+    if b == 0:
+        raise BasicError("Division by zero", DIVISION_BY_ZERO)
+    return _checked(CONTEXT.divide, dec(a), dec(b))
+
+
+def rounded(x) -> float:
+    """Any value (a literal, READ, INPUT, a Python area's result) as a 13-digit decimal."""
+    if x != x or x in (float("inf"), float("-inf")):
+        return x
+    return _checked(CONTEXT.plus, dec(x))
+
+
+def power(a, b) -> float:
+    """a ^ b: 0 ^ negative is Division by zero, negative ^ fraction Illegal function call."""
+    da, db = dec(a), dec(b)
+    if da == 0 and db < 0:
+        raise BasicError("Division by zero", DIVISION_BY_ZERO)
+    if da < 0 and db != db.to_integral_value():
+        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+    if db == db.to_integral_value() and abs(db) <= 1000:
+        return _checked(CONTEXT.power, da, int(db))
+    return _checked(CONTEXT.power, da, db)
+
+
+def sqrt(x) -> float:
+    d = dec(x)
+    if d < 0:
+        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+    return _checked(CONTEXT.sqrt, d)
+
+
+def exp(x) -> float:
+    return _checked(CONTEXT.exp, dec(x))
+
+
+def log(x) -> float:
+    d = dec(x)
+    if d <= 0:
+        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+    return _checked(CONTEXT.ln, d)
+
+
+# ------------------------------------------------------------------ trigonometry
+
+def _sin_cos_radians(r: Decimal) -> tuple[Decimal, Decimal]:
+    """sin and cos of ``r`` (|r| <= pi/4 after reduction) with 25 digits, by their series."""
+    ctx = _WIDE
+    r2 = ctx.multiply(r, r)
+    sin_sum, cos_sum = r, Decimal(1)
+    sin_term, cos_term = r, Decimal(1)
+    k = 1
+    while True:
+        sin_term = ctx.divide(ctx.multiply(-sin_term, r2), (2 * k) * (2 * k + 1))
+        cos_term = ctx.divide(ctx.multiply(-cos_term, r2), (2 * k - 1) * (2 * k))
+        if abs(sin_term) < Decimal("1e-30") and abs(cos_term) < Decimal("1e-30"):
+            return sin_sum, cos_sum
+        sin_sum, cos_sum = ctx.add(sin_sum, sin_term), ctx.add(cos_sum, cos_term)
+        k += 1
+
+
+def _sin_cos(angle: Decimal, degrees: bool) -> tuple[Decimal, Decimal]:
+    """sin and cos of ``angle`` (degrees or radians) with 25 digits; the reduction to
+    octants is exact in degrees (a decimal remainder)."""
+    ctx = _WIDE
+    if degrees:
+        turn, quarter = Decimal(360), Decimal(90)
+        a = angle % turn
+        to_radians = ctx.divide(_PI, 180)
+    else:
+        turn, quarter = ctx.multiply(_PI, 2), ctx.divide(_PI, 2)
+        a = ctx.subtract(angle, ctx.multiply(turn, (angle / turn).to_integral_value(rounding="ROUND_FLOOR")))
+        to_radians = Decimal(1)
+    if a < 0:
+        a = ctx.add(a, turn)
+    k = int(ctx.divide(a, quarter).to_integral_value(rounding="ROUND_HALF_EVEN")) % 4
+    rest = ctx.subtract(a, ctx.multiply(quarter, int(ctx.divide(a, quarter).to_integral_value(rounding="ROUND_HALF_EVEN"))))
+    s, c = _sin_cos_radians(ctx.multiply(rest, to_radians))
+    return [(s, c), (c, -s), (-s, -c), (-c, s)][k]
+
+
+def _exact_quadrant(d: Decimal, degrees: bool):
+    """(sin, cos) exactly at multiples of 90 degrees, else None."""
+    if degrees and d % 90 == 0:
+        return [(0, 1), (1, 0), (0, -1), (-1, 0)][int(d % 360) // 90]
+    return None
+
+
+def sin(x, degrees: bool = True) -> float:
+    d = dec(x)
+    exact = _exact_quadrant(d, degrees)
+    if exact is not None:
+        return float(exact[0])
+    return _checked(CONTEXT.plus, _sin_cos(d, degrees)[0])
+
+
+def cos(x, degrees: bool = True) -> float:
+    d = dec(x)
+    exact = _exact_quadrant(d, degrees)
+    if exact is not None:
+        return float(exact[1])
+    return _checked(CONTEXT.plus, _sin_cos(d, degrees)[1])
+
+
+def tan(x, degrees: bool = True) -> float:
+    d = dec(x)
+    exact = _exact_quadrant(d, degrees)
+    if exact is not None:
+        if exact[1] == 0:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        return 0.0
+    s, c = _sin_cos(d, degrees)
+    return _checked(CONTEXT.plus, _WIDE.divide(s, c))
+
+
+def _atan_radians(d: Decimal) -> Decimal:
+    """atan with 25 digits: halve the argument three times (atan x = 2 atan(x / (1 +
+    sqrt(1 + x^2)))), then the series."""
+    ctx = _WIDE
+    negative = d < 0
+    x = abs(d)
+    invert = x > 1
+    if invert:
+        x = ctx.divide(1, x)
+    for _ in range(3):
+        x = ctx.divide(x, ctx.add(1, ctx.sqrt(ctx.add(1, ctx.multiply(x, x)))))
+    x2, term, total, k = ctx.multiply(x, x), x, x, 1
+    while abs(term) > Decimal("1e-30"):
+        term = ctx.multiply(-term, x2)
+        total = ctx.add(total, ctx.divide(term, 2 * k + 1))
+        k += 1
+    result = ctx.multiply(total, 8)
+    if invert:
+        result = ctx.subtract(ctx.divide(_PI, 2), result)
+    return -result if negative else result
+
+
+def atn(x, degrees: bool = True) -> float:
+    r = _atan_radians(dec(x))
+    if degrees:
+        r = _WIDE.divide(_WIDE.multiply(r, 180), _PI)
+    return _checked(CONTEXT.plus, r)
+
+
+def trig_functions(degrees: bool) -> dict:
+    """The compiled code's ``_sin _cos _tan _atn`` in decimal arithmetic."""
+    return {"_sin": lambda x: sin(x, degrees), "_cos": lambda x: cos(x, degrees),
+            "_tan": lambda x: tan(x, degrees), "_atn": lambda x: atn(x, degrees)}
+
+
+RUNTIME = {
+    "_dadd": add, "_dsub": subtract, "_dmul": multiply, "_ddiv13": divide, "_d13": rounded,
+    "_pow": power, "_sqrt": sqrt, "_exp": exp, "_log": log,
+}
