@@ -33,10 +33,6 @@ def dec(x) -> Decimal:
     return Decimal(format(x, ".13g"))
 
 
-def _float(d: Decimal) -> float:
-    return float(d)
-
-
 def _checked(operation, *args) -> float:
     try:
         return float(operation(*args))
@@ -144,20 +140,21 @@ def _exact_quadrant(d: Decimal, degrees: bool):
     return None
 
 
-def sin(x, degrees: bool = True) -> float:
+def _sine_or_cosine(x, degrees: bool, which: int) -> float:
+    """SIN (``which`` 0) or COS (1) of ``x``, rounded to 13 digits."""
     d = dec(x)
     exact = _exact_quadrant(d, degrees)
     if exact is not None:
-        return float(exact[0])
-    return _checked(CONTEXT.plus, _sin_cos(d, degrees)[0])
+        return float(exact[which])
+    return _checked(CONTEXT.plus, _sin_cos(d, degrees)[which])
+
+
+def sin(x, degrees: bool = True) -> float:
+    return _sine_or_cosine(x, degrees, 0)
 
 
 def cos(x, degrees: bool = True) -> float:
-    d = dec(x)
-    exact = _exact_quadrant(d, degrees)
-    if exact is not None:
-        return float(exact[1])
-    return _checked(CONTEXT.plus, _sin_cos(d, degrees)[1])
+    return _sine_or_cosine(x, degrees, 1)
 
 
 def tan(x, degrees: bool = True) -> float:
