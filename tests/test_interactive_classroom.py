@@ -192,3 +192,21 @@ def test_width_is_checked(tmp_path):
                             text=True, cwd=tmp_path, env=dict(os.environ, PYTHONPATH=str(REPO)), timeout=60)
     assert result.returncode == 2
     assert "from 16 to 255" in result.stderr and "Traceback" not in result.stderr
+
+
+def test_ctrl_c_while_input_waits_then_cont_asks_again(terminal):
+    """GW-BASIC: Ctrl-C at an INPUT question is a break; CONT asks the question again."""
+    for line in ("10 FOR K=1 TO 2", '20 INPUT "VALUE"; A', "30 S=S+A", "40 NEXT K", "50 PRINT S"):
+        terminal.type(line)
+    terminal.child.send("RUN\r")
+    terminal.child.expect_exact("VALUE? ")
+    terminal.child.send("5\r")
+    terminal.child.expect_exact("VALUE? ")
+    terminal.child.sendintr()
+    assert plain(terminal.wait()).endswith("Break in 20\n")
+    assert terminal.type("PRINT K; S") == " 2  5 \n"
+    terminal.child.send("CONT\r")
+    terminal.child.expect_exact("VALUE? ")
+    terminal.child.send("7\r")
+    assert plain(terminal.wait()).endswith(" 12 \n")
+    terminal.close()

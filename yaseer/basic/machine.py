@@ -1114,10 +1114,13 @@ class Machine:
         stream.row = []
         stream.column = 0
 
-    def input_values(self, prompt, question_mark: bool, kinds: str) -> list:
-        """INPUT: prompt, read one line, split at commas; wrong values ask again."""
+    def input_values(self, prompt, question_mark: bool, kinds: str, again: tuple | None = None) -> list:
+        """INPUT: prompt, read one line, split at commas; wrong values ask again.
+
+        ``again``: (the block of area 0 this INPUT starts, its line); see :meth:`_read_line`.
+        """
         while True:
-            line = self._read_line((prompt or "") + ("? " if question_mark or prompt is None else ""))
+            line = self._read_line((prompt or "") + ("? " if question_mark or prompt is None else ""), again)
             values = _parse_input(line, kinds)
             if values is not None:
                 return values
@@ -1128,15 +1131,27 @@ class Machine:
         trailing blanks dropped, as GW-BASIC's screen editor drops them)."""
         return self._read_line(prompt or "").rstrip(" ")
 
-    def _read_line(self, prompt: str) -> str:
+    def _read_line(self, prompt: str, again: tuple | None = None) -> str:
         """Show ``prompt``, read one line of input (without its line end); the end of
-        the input is ``Input past end``."""
-        self.screen.write(prompt)
-        self.screen.flush()
+        the input is ``Input past end``.
+
+        ``again``: (a block of area 0 that starts with this statement, its line); with
+        ``resumable_breaks`` a Ctrl-C while the line is awaited (or one that came just
+        before) is a break that CONT resumes by running that block: asking again, as
+        GW-BASIC does.  Otherwise a Ctrl-C here breaks at once.
+        """
         stream = self.input_stream if self.input_stream is not None else sys.stdin
         self._reading_input = True  # a Ctrl-C now breaks at once
         try:
+            if self._break_armed is not None and again is not None:
+                raise KeyboardInterrupt  # a Ctrl-C came just before: the break lands here
+            self.screen.write(prompt)
+            self.screen.flush()
             line = stream.readline()
+        except KeyboardInterrupt:
+            if again is None or not self.resumable_breaks:
+                raise
+            raise BreakPoint(0, again[0], again[1], (), self.area_depth) from None
         finally:
             self._reading_input = False
         if not line:
