@@ -165,3 +165,17 @@ def test_auto_offers_the_numbers_and_marks_pcbasic_offers(session):
     session.interrupt()  # Ctrl-C
     assert offered == theirs_offered == [("10", " "), ("20", "*"), ("30", " "), ("40", " ")]
     assert after(session, "LIST").splitlines() == theirs_listing
+
+
+def test_list_reads_a_line_as_the_dialect_reads_it(tmp_path):
+    shown = []
+    gw = Session(write=shown.append, engine=MachineEngine(shown.append, dialect="gw"), directory=tmp_path,
+                 dialect="gw")
+    casio = Session(write=shown.append, engine=MachineEngine(shown.append), directory=tmp_path)
+    for session in (gw, casio):
+        session.handle("10 cost=1:print cost")
+    shown.clear()
+    gw.handle("LIST")
+    casio.handle("LIST")
+    # GW-BASIC reads a run of letters as one word (COST is a name); the Casio finds keywords first
+    assert shown == ["10 COST=1:PRINT COST\n", "10 COS T=1:PRINT COS T\n"]

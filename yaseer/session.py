@@ -242,7 +242,8 @@ class Session:
     with ``run(programs, start)``, ``cont()``, ``direct(statement, programs)``
     and ``reset()`` that reports errors, STOP and breaks as BasicError.
     ``directory`` is where LOAD and SAVE look; ``printer`` receives LLIST
-    (default: ``write``, the screen).
+    (default: ``write``, the screen); ``dialect`` ("casio" or "gw", as the
+    engine's) decides how LIST reads a line (GW-BASIC reads ``COST`` as a name).
     """
 
     write: Callable[[str], object]
@@ -253,6 +254,7 @@ class Session:
     edit_text: str | None = None  # a line EDIT put up for the next input
     finished: bool = False
     printer: Callable[[str], object] | None = None
+    dialect: str = "casio"
     auto: tuple[int, int] | None = None  # AUTO: (number offered next, step)
     _auto_step: int = 10
     _can_continue: bool = False
@@ -329,7 +331,9 @@ class Session:
 
     def listed(self, number: int) -> str:
         """Line ``number`` of the current area as LIST shows it (``20 FOR J=1 TO 3``)."""
-        return f"{number} {detokenize(self.program[number])}"
+        from yaseer.basic.dialect import get_dialect
+
+        return f"{number} {detokenize(self.program[number], get_dialect(self.dialect))}"
 
     # -- commands --
 

@@ -61,7 +61,7 @@ def main(args=None) -> int:
     terminal = _is_terminal()
     engine = MachineEngine(write, dialect=dialect, printer=printer,
                            clear_screen=(lambda: write(CLEAR_SCREEN)) if terminal else None)
-    session = Session(write=write, engine=engine, printer=printer)
+    session = Session(write=write, engine=engine, printer=printer, dialect=dialect)
     read = prompt_toolkit_reader() if terminal else plain_reader(sys.stdin, write)
     write(BANNER)
     # on a terminal Enter starts a new row; from a pipe nothing is echoed and output goes on after the prompt
