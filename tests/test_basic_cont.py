@@ -123,3 +123,28 @@ def test_break_points_are_lines_nothing_can_interrupt_half_way():
                 assert re.fullmatch(r"_ln = \d+|continue", lines[number - 1].strip())
                 checked += 1
     assert checked > 10
+
+
+def test_ctrl_c_as_input_asks_is_a_break_and_cont_asks_again():
+    """The Ctrl-C comes while the question is being shown (before the line is read)."""
+    import sys
+
+    class Screen(io.StringIO):
+        interrupt = True
+
+        def write(self, text):
+            super().write(text)
+            if "VALUE?" in text and Screen.interrupt:
+                Screen.interrupt = False
+                machine._on_interrupt(signal.SIGINT, sys._getframe())  # what the terminal's Ctrl-C calls
+            return len(text)
+
+    screen = Screen()
+    machine = Machine(screen=screen, input_stream=io.StringIO("7\n"))
+    machine.resumable_breaks = True
+    machine.load('10 S=5\n20 INPUT "VALUE"; A\n30 PRINT S+A')
+    with pytest.raises(BasicError) as info:
+        machine.run()
+    assert str(info.value) == "Break in 20" and machine.cont_point is not None
+    assert machine.cont() == "end"
+    assert screen.getvalue() == "VALUE? VALUE? 7\n 12 \n"  # asked again after CONT

@@ -746,8 +746,8 @@ class AreaCompiler:
         values = self.new_temp()
         # an INPUT that starts its block of area 0 (a top-level one): CONT after a Ctrl-C
         # while it waits runs that block again, asking again (GW-BASIC)
-        again = self.cur.number if (self.depth == 0 and self.index in self.entry_block and self.area == 0
-                                    and not self.direct) else None
+        again = (self.cur.number, self.line) if (self.depth == 0 and self.index in self.entry_block
+                                                 and self.area == 0 and not self.direct) else None
         self.emit(f"{values} = _input({stmt.prompt!r}, {stmt.question_mark}, {kinds!r}, {again})")
         for n, target in enumerate(stmt.targets):
             self.assign(target, f"{values}[{n}]", "s" if kinds[n] == "s" else self.numbers.widest,
