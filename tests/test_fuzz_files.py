@@ -39,6 +39,21 @@ def statement(data) -> str:
     return data.draw(st.sampled_from(choices))
 
 
+def arena(tmp_path_factory):
+    """(root, box, outside): the program's directory ``box`` with a subdirectory, a link
+    out to ``outside`` (which holds a file to protect), a link inside and a link loop."""
+    root = tmp_path_factory.mktemp("fuzzfiles")
+    box, outside = root / "box", root / "outside"
+    box.mkdir()
+    outside.mkdir()
+    (outside / "victim.txt").write_bytes(b"keep\r\n")
+    (box / "sub").mkdir()
+    (box / "link").symlink_to(outside)
+    (box / "inside_link").symlink_to(box / "A.TXT")
+    (box / "loop").symlink_to(box / "loop")
+    return root, box, outside
+
+
 def snapshot(root) -> dict:
     """Every path under ``root`` (links not followed) with its bytes (files) or target (links)."""
     found = {}
@@ -62,17 +77,8 @@ def test_file_statements_never_touch_anything_outside_the_directory(data, tmp_pa
     from yaseer.basic.errors import BasicError
     from yaseer.basic.machine import Machine
 
-    root = tmp_path_factory.mktemp("fuzzfiles")
-    box, outside = root / "box", root / "outside"
-    box.mkdir()
-    outside.mkdir()
-    (outside / "victim.txt").write_bytes(b"keep\r\n")
-    (box / "sub").mkdir()
-    (box / "link").symlink_to(outside)
-    (box / "inside_link").symlink_to(box / "A.TXT")
-    (box / "loop").symlink_to(box / "loop")
-    before_outside = snapshot(outside)
-    before_root = set(os.listdir(root))
+    root, box, outside = arena(tmp_path_factory)
+    before_outside, before_root = snapshot(outside), set(os.listdir(root))
     lines = [f"{10 * (k + 1)} {statement(data)}" for k in range(data.draw(st.integers(1, 12)))]
     source = "5 ON ERROR GOTO 1000\n" + "\n".join(lines) + "\n999 END\n1000 RESUME NEXT\n"
     dialect = data.draw(st.sampled_from(["casio", "gw"]))
@@ -85,3 +91,23 @@ def test_file_statements_never_touch_anything_outside_the_directory(data, tmp_pa
     assert snapshot(outside) == before_outside, source
     assert set(os.listdir(root)) == before_root, source
     assert not os.path.exists("/tmp/yaseer-fuzz-abs"), source
+
+
+@settings(max_examples=int(os.environ.get("YASEER_FUZZ_EXAMPLES", 60)) // 2, deadline=None, derandomize=True,
+          database=None, suppress_health_check=list(HealthCheck))
+@given(commands=st.lists(st.tuples(st.sampled_from(["SAVE", "LOAD", "FILES", "RUN"]), st.sampled_from(NAMES)),
+                         min_size=1, max_size=6))
+def test_session_save_load_files_stay_in_the_directory(commands, tmp_path_factory):
+    """The interactive session's SAVE, LOAD, FILES and RUN "file" with the same hostile names."""
+    from yaseer.session import MachineEngine, Session
+
+    root, box, outside = arena(tmp_path_factory)
+    before_outside, before_root = snapshot(outside), set(os.listdir(root))
+    shown: list[str] = []
+    session = Session(write=shown.append, engine=MachineEngine(shown.append, files=box), directory=box)
+    session.handle('10 OPEN "O", 1, "prog.out": PRINT #1, 1: CLOSE')
+    for command, name in commands:
+        session.handle(f'{command} "{name}"')
+    assert snapshot(outside) == before_outside, commands
+    assert set(os.listdir(root)) == before_root, commands
+    assert not any("Internal error" in text or "Traceback" in text for text in shown), shown

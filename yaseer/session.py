@@ -500,19 +500,20 @@ class Session:
 
 
 def create_machine(screen, printer, methods: dict[int, str] | None = None, install=None,
-                   angle: str | None = None, dialect: str = "casio"):
+                   angle: str | None = None, dialect: str = "casio", files=None):
     """A BASIC machine writing PRINT to ``screen`` and LPRINT to ``printer``, library bound.
 
     ``install(machine, methods)`` binds the library programs (default
     ``yaseer.binding.install``; the animation passes a recording one);
     ``angle`` ("deg" or "rad") is the unit of SIN, COS, TAN and ATN at start
     (default: the dialect's); ``dialect`` is "casio" or "gw" (see
-    ``yaseer.basic.dialect``): the library is bound only in a dialect with program areas.
+    ``yaseer.basic.dialect``): the library is bound only in a dialect with program areas;
+    ``files`` the directory of the program's files (default: the current one).
     """
     from yaseer import binding
     from yaseer.basic.machine import Machine
 
-    machine = Machine(screen=screen, printer=printer, angle=angle, dialect=dialect)
+    machine = Machine(screen=screen, printer=printer, angle=angle, dialect=dialect, files=files)
     if machine.dialect.program_areas:
         (install or binding.install)(machine, methods)
     return machine
@@ -576,8 +577,9 @@ class MachineEngine:
 
     def __init__(self, write: Callable[[str], object], dialect: str = "casio",
                  printer: Callable[[str], object] | None = None,
-                 clear_screen: Callable[[], object] | None = None) -> None:
+                 clear_screen: Callable[[], object] | None = None, files=None) -> None:
         self._screen = _Screen(write)
+        self._files = files  # the directory of the programs' files (None: the current one)
         self._dialect = dialect
         self._printer = _Screen(printer) if printer is not None else self._screen
         self._clear_screen = clear_screen
@@ -587,7 +589,7 @@ class MachineEngine:
     def machine(self):
         """The machine holding the variables (created when first needed)."""
         if self._machine is None:
-            self._machine = create_machine(self._screen, self._printer, dialect=self._dialect)
+            self._machine = create_machine(self._screen, self._printer, dialect=self._dialect, files=self._files)
             self._machine.on_clear_screen = self._clear_screen
             self._machine.resumable_breaks = True  # Ctrl-C, then CONT goes on exactly
         return self._machine
