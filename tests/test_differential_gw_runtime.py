@@ -107,8 +107,12 @@ def rnd_program(rng: random.Random) -> str:
             lines.append(f"PRINT INT(RND(-{rng.choice([1, 2, 3, 0.5, 7, 100, 12345, 0.1, 3.75])}) * 4096)")
         elif kind < 0.8:
             lines.append(f"RANDOMIZE {rng.choice([rng.randint(0, 32767), rng.randint(-32768, -1), rng.randint(32768, 99999)])}")
-        else:
+        elif kind < 0.9:
             lines.append(f"X = {rng.randint(-500, 500) / 4}: RANDOMIZE X")
+        elif kind < 0.95:
+            lines.append(f"X% = {rng.randint(-32768, 32767)}: RANDOMIZE X%")
+        else:
+            lines.append(f"D# = {rng.randint(-500, 500) / 8}: RANDOMIZE D#: RANDOMIZE 1.5#")
     return "\n".join(f"{10 * (k + 1)} {text}" for k, text in enumerate(lines)) + "\n"
 
 

@@ -210,17 +210,6 @@ def _print_chunks(parts: list) -> list:
     return chunks
 
 
-def _seed_kind(node) -> str:
-    """The BASIC type RANDOMIZE sees its argument stored as: "%" for an integer variable
-    or an unsigned integer literal up to 32767, "#" for a double variable, else "!"
-    (PC-BASIC 2.0.8 treats ``-1`` and ``0-1`` as single here)."""
-    if isinstance(node, ast.Num):
-        return "%" if node.value == int(node.value) and 0 <= node.value <= 32767 else "!"
-    if isinstance(node, (ast.Var, ast.Elem)) and node.name[-1:] in ("%", "#"):
-        return node.name[-1]
-    return "!"
-
-
 def _simple_operand(code: str) -> bool:
     return code.replace("_", "a").replace("[", "").replace("]", "").isalnum()
 
@@ -785,7 +774,21 @@ class AreaCompiler:
 
     def stmt_Randomize(self, stmt, scope):
         seed = "None" if stmt.seed is None else self.numeric(stmt.seed, scope)
-        self.emit(f"_randomize({seed}, {_seed_kind(stmt.seed)!r})")
+        self.emit(f"_randomize({seed}, {self.seed_kind(stmt.seed)!r})")
+
+    def seed_kind(self, node) -> str:
+        """The BASIC type RANDOMIZE sees its argument stored as (randomness.py): a
+        variable's own type (``%`` ``!`` ``#``, DEF types included); an unsigned integer
+        literal up to 32767 is ``%``, a double literal ``#``; any other expression ``!``
+        (PC-BASIC 2.0.8 reads ``-1`` and ``0-1`` as singles here)."""
+        if isinstance(node, ast.Num):
+            if node.kind:  # gw: the literal's own type
+                return node.kind
+            return "%" if node.value == int(node.value) and 0 <= node.value <= 32767 else "!"
+        if isinstance(node, (ast.Var, ast.Elem)):
+            kind = self.kind_of(node)
+            return kind if kind in ("%", "#") else "!"
+        return "!"
 
     def stmt_Angle(self, stmt, scope):
         self.emit(f"_M.set_angle({stmt.mode!r})")
