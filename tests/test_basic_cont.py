@@ -7,7 +7,7 @@ with a break every few hundredths of a second and CONT after each, until it ends
 The programs put every kind of loop the compiler makes in the way: native FOR
 loops in their three forms (counting passes, iterating values, testing each
 pass), nested, fractional steps, an array element as the variable, a loop in a
-subroutine (GOSUB returns renumbered), a block that jumps to itself, READ/DATA,
+subroutine (GOSUB returns renumbered), a block that jumps to itself, WHILE/WEND, READ/DATA,
 and an error handler (every statement its own block).
 """
 
@@ -35,6 +35,7 @@ PROGRAMS = {
     "printing as it goes": (
         "10 FOR I=1 TO 4000\n20 FOR J=1 TO 30: S=S+I MOD J: NEXT J: PRINT S;\n"
         "30 IF I MOD 8=0 THEN PRINT\n40 NEXT I\n50 PRINT"),
+    "WHILE ... WEND": "10 WHILE N<150000: N=N+1: S=S+N MOD 3: WEND\n20 PRINT N;S",
     "an error handler": (
         "10 ON ERROR GOTO 100\n20 FOR I=1 TO 60000: X=I/(I MOD 7000): S=S+X: NEXT I\n30 PRINT S;E\n40 END\n"
         "100 E=E+1: RESUME NEXT"),
