@@ -100,6 +100,17 @@ def test_nothing_is_written_without_open_for_output(tmp_path):
     assert not list(tmp_path.iterdir())
 
 
+def test_files_lists_the_matching_names_and_a_pattern_matching_nothing_is_file_not_found(tmp_path):
+    """The error line as PC-BASIC gives it (its listing layout, 8.3 names with the bytes
+    free of the disk, is not copied: yaseer prints the names, one a line)."""
+    program = '10 OPEN "O",1,"A.TXT": CLOSE: OPEN "O",1,"B.BAS": CLOSE\n20 FILES "*.TXT"\n30 FILES "NONE"\n'
+    (tmp_path / "pc").mkdir()
+    (tmp_path / "ours").mkdir()
+    theirs = pcbasic_run(program, tmp_path / "pc").splitlines()
+    ours = yaseer_run(program, tmp_path / "ours").splitlines()
+    assert ours == ["A.TXT", theirs[-1]] and theirs[-1] == "File not found in 30"
+
+
 def test_the_default_directory_is_the_current_one(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     assert yaseer_run('10 OPEN "O", 1, "HERE.TXT": WRITE #1, 1\n20 FILES\n', None) == "HERE.TXT\n"

@@ -89,11 +89,15 @@ class Sandbox:
             raise _error(PATH_FILE_ACCESS_ERROR) from None
 
     def listing(self, pattern: str | None = None) -> list[str]:
-        """FILES [pattern]: the names of the files in the sandbox that match (``*`` ``?``)."""
+        """FILES [pattern]: the names of the files in the sandbox that match (``*`` ``?``);
+        a pattern nothing matches is ``File not found`` (GW-BASIC)."""
         if pattern is not None:
             self.path(pattern.replace("*", "x").replace("?", "x"))  # the same rules for the pattern
         names = sorted(p.name for p in self.root.iterdir() if p.is_file())
-        return [n for n in names if fnmatch.fnmatch(n.upper(), (pattern or "*").upper())]
+        found = [n for n in names if fnmatch.fnmatch(n.upper(), (pattern or "*").upper())]
+        if pattern is not None and not found:
+            raise _error(FILE_NOT_FOUND)
+        return found
 
 
 class OpenFile:
