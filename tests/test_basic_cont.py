@@ -126,7 +126,8 @@ def test_break_points_are_lines_nothing_can_interrupt_half_way():
     assert checked > 10
 
 
-def test_ctrl_c_as_input_asks_is_a_break_and_cont_asks_again():
+@pytest.mark.parametrize("statement", ['INPUT "VALUE"; A', 'LINE INPUT "VALUE? "; A$: A=VAL(A$)'])
+def test_ctrl_c_as_input_asks_is_a_break_and_cont_asks_again(statement):
     """The Ctrl-C comes while the question is being shown (before the line is read)."""
     import sys
 
@@ -143,7 +144,7 @@ def test_ctrl_c_as_input_asks_is_a_break_and_cont_asks_again():
     screen = Screen()
     machine = Machine(screen=screen, input_stream=io.StringIO("7\n"))
     machine.resumable_breaks = True
-    machine.load('10 S=5\n20 INPUT "VALUE"; A\n30 PRINT S+A')
+    machine.load(f'10 S=5\n20 {statement}\n30 PRINT S+A')
     with pytest.raises(BasicError) as info:
         machine.run()
     assert str(info.value) == "Break in 20" and machine.cont_point is not None

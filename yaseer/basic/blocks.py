@@ -96,9 +96,9 @@ def splits(stmt) -> bool:
 _NATIVE_BODY = (
     ast.Let, ast.Print, ast.GosubProg, ast.Rem, ast.Data, ast.Read, ast.Dim, ast.Angle,
     ast.Randomize, ast.DefFn, ast.Clear, ast.Restore, ast.End, ast.OnError, ast.Cls,
-    ast.Error, ast.DefType, ast.Swap, ast.MidAssign, ast.LineInput, ast.Write, ast.Open, ast.Close,
+    ast.Error, ast.DefType, ast.Swap, ast.MidAssign, ast.Write, ast.Open, ast.Close,
     ast.Kill, ast.Rename, ast.Files,
-)  # not INPUT: it starts a block (see plan)
+)  # not INPUT nor LINE INPUT: they start a block (see plan)
 
 
 def _native_statement(stmt) -> bool:
@@ -235,7 +235,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
             entries.add(i)  # a line that does not parse too: RESUME NEXT goes on after it
         if isinstance(stmt, BasicError):
             continue
-        if isinstance(stmt, ast.Input):
+        if isinstance(stmt, (ast.Input, ast.LineInput)):
             entries.add(i)  # Ctrl-C while INPUT waits breaks before it, and CONT asks again
         if isinstance(stmt, ast.For) and i not in native:
             entries.add(i + 1)

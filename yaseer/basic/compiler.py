@@ -667,7 +667,7 @@ class AreaCompiler:
         if stmt.channel is not None:
             self.assign(stmt.target, f"_fline({self.numeric(stmt.channel, scope)})", "s", scope, False)
             return
-        self.assign(stmt.target, f"_line_input({stmt.prompt!r})", "s", scope, False)
+        self.assign(stmt.target, f"_line_input({stmt.prompt!r}, {self.asking_again()})", "s", scope, False)
 
     def stmt_Write(self, stmt, scope):
         if stmt.channel is not None:
@@ -733,14 +733,18 @@ class AreaCompiler:
             return
         kinds = "".join("s" if self.kind_of(t) == "s" else "n" for t in stmt.targets)
         values = self.new_temp()
-        # an INPUT that starts its block of area 0 (a top-level one): CONT after a Ctrl-C
-        # while it waits runs that block again, asking again (GW-BASIC)
-        again = (self.cur.number, self.line) if (self.depth == 0 and self.index in self.entry_block
-                                                 and self.area == 0 and not self.direct) else None
-        self.emit(f"{values} = _input({stmt.prompt!r}, {stmt.question_mark}, {kinds!r}, {again})")
+        self.emit(f"{values} = _input({stmt.prompt!r}, {stmt.question_mark}, {kinds!r}, {self.asking_again()})")
         for n, target in enumerate(stmt.targets):
             self.assign(target, f"{values}[{n}]", "s" if kinds[n] == "s" else self.numbers.widest,
                         scope, False)
+
+    def asking_again(self) -> tuple | None:
+        """For an INPUT or LINE INPUT that starts its block of area 0 (a top-level one):
+        (that block, its line), where CONT after a Ctrl-C while it waits goes on, asking
+        again (GW-BASIC); None for one inside an IF branch or another area."""
+        if self.depth == 0 and self.index in self.entry_block and self.area == 0 and not self.direct:
+            return self.cur.number, self.line
+        return None
 
     def stmt_DefFn(self, stmt, scope):
         fn_scope = _FnScope(self, stmt.params)

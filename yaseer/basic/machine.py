@@ -1126,10 +1126,11 @@ class Machine:
                 return values
             self.screen.write("?Redo from start\n")
 
-    def line_input(self, prompt) -> str:
+    def line_input(self, prompt, again: tuple | None = None) -> str:
         """LINE INPUT ["prompt";] a$: the whole line, commas and quotes included (its
-        trailing blanks dropped, as GW-BASIC's screen editor drops them)."""
-        return self._read_line(prompt or "").rstrip(" ")
+        trailing blanks dropped, as GW-BASIC's screen editor drops them); ``again``
+        as for INPUT (see :meth:`_read_line`)."""
+        return self._read_line(prompt or "", again).rstrip(" ")
 
     def _read_line(self, prompt: str, again: tuple | None = None) -> str:
         """Show ``prompt``, read one line of input (without its line end); the end of
