@@ -93,10 +93,10 @@ def test_the_key_follows_program_area_entries_and_sources(cache, monkeypatch, tm
     assert program_cache.key(0, program, dialect=CASIO) != program_cache.key(0, program, dialect=GW)
     sources = tmp_path / "basic"
     sources.mkdir()
-    for path in program_cache._SOURCES.iterdir():
+    for path in Path(program_cache._SOURCES).iterdir():
         if path.suffix in (".py", ".lark"):
             (sources / path.name).write_bytes(path.read_bytes())
-    monkeypatch.setattr(program_cache, "_SOURCES", sources)
+    monkeypatch.setattr(program_cache, "_SOURCES", str(sources))
     monkeypatch.setattr(program_cache, "_fingerprint", None)
     assert program_cache.key(0, program) == base  # the same sources: the same key
     (sources / "grammar.lark").write_text((sources / "grammar.lark").read_text() + "\n// edited\n")
@@ -133,12 +133,12 @@ def test_an_empty_cache_dir_switches_the_cache_off(tmp_path, monkeypatch):
 def test_the_default_place_is_the_user_cache_not_the_checkout(tmp_path, monkeypatch):
     monkeypatch.delenv("YASEER_CACHE_DIR", raising=False)
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
-    assert program_cache.cache_dir() == tmp_path / "yaseer" / "compiled"
+    assert Path(program_cache.cache_dir()) == tmp_path / "yaseer" / "compiled"
     monkeypatch.delenv("XDG_CACHE_HOME")
-    assert ROOT not in program_cache.cache_dir().parents
-    assert program_cache.cache_dir() == Path.home() / ".cache" / "yaseer" / "compiled"
+    assert ROOT not in Path(program_cache.cache_dir()).parents
+    assert Path(program_cache.cache_dir()) == Path.home() / ".cache" / "yaseer" / "compiled"
     monkeypatch.setenv("XDG_CACHE_HOME", "relative/dir")  # not absolute: ignored, as XDG says
-    assert program_cache.cache_dir() == Path.home() / ".cache" / "yaseer" / "compiled"
+    assert Path(program_cache.cache_dir()) == Path.home() / ".cache" / "yaseer" / "compiled"
     monkeypatch.setenv("HOME", "")
     monkeypatch.setattr("os.path.expanduser", lambda path: path)  # no home directory at all
     assert program_cache.cache_dir() is None

@@ -20,7 +20,6 @@ import os
 import re
 import sys
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import IO, Mapping, Union
 
 Listing = Union[str, "os.PathLike[str]"]
@@ -280,13 +279,28 @@ def _source(listing: Listing) -> tuple[str, str | None]:
         return listing, None
     if not isinstance(listing, (str, os.PathLike)):
         raise TypeError(f"a listing is a path or the program text, not {type(listing).__name__}")
-    path = Path(listing)
     try:
-        return path.read_text(encoding="utf-8", errors="replace"), path.stem
+        with open(listing, encoding="utf-8", errors="replace") as file:
+            return file.read(), _stem(listing)
     except FileNotFoundError:
-        raise BasicError(f"File not found: {path}", FILE_NOT_FOUND) from None
+        raise BasicError(f"File not found: {_shown(listing)}", FILE_NOT_FOUND) from None
     except OSError as error:
-        raise BasicError(f"Cannot read {path}: {error.strerror or error}", DEVICE_IO_ERROR) from None
+        raise BasicError(f"Cannot read {_shown(listing)}: {error.strerror or error}", DEVICE_IO_ERROR) from None
+
+
+def _stem(path) -> str:
+    """The file name of ``path`` without its last suffix, as ``pathlib.PurePath.stem`` gives it
+    (``x.bas`` -> ``x``, ``.bas`` and ``x.`` stay whole), without importing pathlib at start-up."""
+    name = os.path.basename(os.fspath(path))
+    dot = name.rfind(".")
+    return name[:dot] if 0 < dot < len(name) - 1 else name
+
+
+def _shown(path) -> str:
+    """``path`` as an error names it (normalised as ``pathlib.Path`` shows it: ``./x.bas`` is ``x.bas``)."""
+    from pathlib import Path
+
+    return str(Path(path))
 
 
 def _input_stream(source, opened: list):

@@ -1,7 +1,11 @@
 """Start-up: the whole process, from exec to its last line of output, against
 ``python -c pass`` measured in the same run (a script, not a test).
 
-    python tests/benchmarks/startup.py [--runs N] [--warmup W]
+    python tests/benchmarks/startup.py [--runs N] [--warmup W] [--python PYTHON]
+
+``--python`` measures the yaseer installed in another environment (a regular
+``pip install .``, whose ``python -c pass`` is not slowed by an editable
+install's import hook); the default is the Python running this script.
 
 Like hyperfine: each command is run W times untimed, then N times, the commands
 interleaved so that a slow spell of the shared machine hits them alike; wall
@@ -40,11 +44,11 @@ def children_cpu() -> float:
     return usage.ru_utime + usage.ru_stime
 
 
-def run_once(command: list[str], env: dict) -> tuple[float, float]:
-    """Wall and CPU seconds of one run of ``command``."""
+def run_once(command: list[str], env: dict, cwd: Path) -> tuple[float, float]:
+    """Wall and CPU seconds of one run of ``command`` started in ``cwd``."""
     cpu, start = children_cpu(), time.perf_counter()
     subprocess.run(command, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                   check=True, cwd=str(ROOT), env=env)
+                   check=True, cwd=str(cwd), env=env)
     return time.perf_counter() - start, children_cpu() - cpu
 
 
@@ -59,20 +63,23 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--runs", type=int, default=20)
     parser.add_argument("--warmup", type=int, default=3)
+    parser.add_argument("--python", default=sys.executable,
+                        help="the Python whose installed yaseer is measured (default: this one)")
     args = parser.parse_args(argv)
+    python = os.path.abspath(args.python)  # not resolved: a venv's python is a link to the base one
     work = Path(tempfile.mkdtemp(prefix="yaseer-startup-"))
     try:
         program = work / "print1.bas"
         program.write_text(PRINT_1)
         example1 = str(ROOT / "listings" / "example1.bas")
-        script = Path(sys.executable).with_name("yaseer")
-        starters = {"python -m yaseer": [sys.executable, "-m", "yaseer"]}
+        script = Path(python).with_name("yaseer")
+        starters = {"python -m yaseer": [python, "-m", "yaseer"]}
         if script.exists():
             starters = {"yaseer (console script)": [str(script)], **starters}
         else:
-            print(f"no console script beside {sys.executable}: only python -m yaseer measured")
+            print(f"no console script beside {python}: only python -m yaseer measured")
         warm = str(work / "cache")
-        cases = {"python -c pass": ([sys.executable, "-c", "pass"], None)}
+        cases = {"python -c pass": ([python, "-c", "pass"], None)}
         for label, listing in (("10 PRINT 1", str(program)), ("Example 1", example1)):
             for starter, prefix in starters.items():
                 cases[f"{label}: {starter}, warm cache"] = (prefix + ["run", listing], warm)
@@ -84,13 +91,14 @@ def main(argv=None) -> int:
             for name, (command, cache) in cases.items():
                 if cache == "cold":
                     cache = tempfile.mkdtemp(dir=work)
-                elapsed = run_once(command, environment(cache if cache is not None else warm))
+                # Started outside the checkout, so `python -m yaseer` runs the installed yaseer, not ./yaseer.
+                elapsed = run_once(command, environment(cache if cache is not None else warm), work)
                 if round_ >= args.warmup:
                     times[name].append(elapsed)
         base_wall = statistics.median(wall for wall, _ in times["python -c pass"])
         base_cpu = statistics.median(cpu for _, cpu in times["python -c pass"])
         print(f"whole process, {args.runs} runs each after {args.warmup} untimed "
-              f"({sys.executable}, Python {sys.version.split()[0]})")
+              f"({python})")
         print(f"{'command':50s} {'wall ms':>8s} {'min':>6s} {'x pass':>7s} {'CPU ms':>7s} {'x pass':>7s}  goal (CPU)")
         for name, values in times.items():
             wall = statistics.median(wall for wall, _ in values)

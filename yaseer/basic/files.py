@@ -20,7 +20,10 @@ from __future__ import annotations
 
 import fnmatch
 import os
-from pathlib import Path
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # pathlib is imported where a file is used, not at start-up
+    from pathlib import Path
 
 from yaseer.basic.errors import (
     BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
@@ -43,11 +46,20 @@ class Sandbox:
     """The one directory a program's files live in."""
 
     def __init__(self, root: str | os.PathLike | None = None):
-        self.root = Path(root if root is not None else os.getcwd())
+        self._root = root if root is not None else os.getcwd()
+
+    @property
+    def root(self) -> Path:
+        """The directory (pathlib is imported at the first file operation, not at start-up)."""
+        from pathlib import Path
+
+        return Path(self._root)
 
     def path(self, name: str) -> Path:
         """The path of file ``name`` inside the sandbox; anything that would leave it is
         ``Path/File access error``, an empty name ``Bad file name``."""
+        from pathlib import Path
+
         if not name or "\x00" in name:
             raise _error(BAD_FILE_NAME)
         relative = Path(name.replace("\\", "/"))

@@ -48,15 +48,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import lru_cache
-from decimal import ROUND_HALF_UP, Context, Decimal, localcontext
 from typing import Sequence, Union
 
 from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, OVERFLOW, TYPE_MISMATCH, BasicError
 
 SIGNIFICANT_DIGITS = 10  # a 10-digit pocket-computer display
 
-# Enough digits for any double written out in full (1.8E308 has 309) plus its decimals.
-_WIDE = Context(prec=800, Emax=1000, Emin=-1000)
 
 Value = Union[float, int, str]
 
@@ -270,8 +267,22 @@ def _parsed(fmt: str) -> tuple[Token, ...]:
 # PRINT USING: the fields
 # ---------------------------------------------------------------------------
 
-def _decimal(x: float) -> Decimal:
-    """The shortest decimal that reads back as ``abs(x)``."""
+# decimal is imported by the functions below, at the first PRINT USING of a number:
+# a run that never formats one does not load it (start-up, issue 15).
+
+@lru_cache(maxsize=None)
+def _wide():
+    """The decimal context PRINT USING rounds in: enough digits for any double written
+    out in full (1.8E308 has 309) plus its decimals."""
+    from decimal import Context
+
+    return Context(prec=800, Emax=1000, Emin=-1000)
+
+
+def _decimal(x: float):
+    """The shortest ``decimal.Decimal`` that reads back as ``abs(x)``."""
+    from decimal import Decimal
+
     return Decimal(repr(abs(float(x))))
 
 
@@ -289,7 +300,9 @@ def _fixed_body(x: float, field: NumericField) -> str:
     puts it back when there is room (see :func:`format_number`).  A non-zero
     value that rounds to zero keeps its ``0`` (``-0.00``), as in GW-BASIC.
     """
-    with localcontext(_WIDE):
+    from decimal import ROUND_HALF_UP, Decimal, localcontext
+
+    with localcontext(_wide()):
         rounded = _decimal(x).quantize(Decimal(1).scaleb(-field.decimals), rounding=ROUND_HALF_UP)
     whole, _, fraction = f"{rounded:f}".partition(".")
     if field.comma:
@@ -313,7 +326,9 @@ def _scientific_body(x: float, field: NumericField) -> str:
     if x == 0:
         mantissa, exponent = ("." + "0" * field.decimals) if field.point else "", 0
     else:
-        with localcontext(_WIDE):
+        from decimal import localcontext
+
+        with localcontext(_wide()):
             mantissa, exponent = _scientific_parts(x, field)
     sign = "-" if exponent < 0 else "+"
     return f"{mantissa}E{sign}{abs(exponent):0{field.exponent_digits}d}"
@@ -321,6 +336,8 @@ def _scientific_body(x: float, field: NumericField) -> str:
 
 def _scientific_parts(x: float, field: NumericField) -> tuple[str, int]:
     """Mantissa text and power of ten of non-zero ``abs(x)`` for a ``^^^^`` field."""
+    from decimal import ROUND_HALF_UP, Decimal
+
     before = _scientific_digits_before(field)
     value = _decimal(x)
     quantum = Decimal(1).scaleb(-field.decimals)

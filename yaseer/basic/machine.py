@@ -19,7 +19,6 @@ Python program areas use ``array(name)``, ``scalar(name)``, ``set_scalar``.
 from __future__ import annotations
 
 import contextlib
-import csv
 import math
 import signal
 import sys
@@ -1109,6 +1108,8 @@ class Machine:
 
     def _csv_row(self, stream: OutputStream) -> None:
         """Write the csv row of the line ``stream`` was printing (its values so far)."""
+        import csv  # here: only --format csv and INPUT need it (start-up)
+
         writer = csv.writer(stream.stream, lineterminator="\n")
         writer.writerow(stream.row)
         stream.row = []
@@ -1320,6 +1321,8 @@ def _as_number(value):
 
 def _parse_input(text: str, kinds: str):
     """The values of one INPUT line for targets of ``kinds`` ("n"/"s"), or None to redo."""
+    import csv
+
     reader = csv.reader([text], skipinitialspace=True)
     fields = next(reader, None) or [""]  # an empty answer is one empty value: 0 or ""
     if len(fields) != len(kinds):

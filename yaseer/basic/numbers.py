@@ -25,7 +25,6 @@ from __future__ import annotations
 
 import math
 import struct
-from decimal import ROUND_HALF_UP, Decimal
 
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
 
@@ -171,6 +170,8 @@ def _double_digits(x: float) -> tuple[str, int]:
     shortest decimal that reads back as it (what was typed, for a literal:
     ``-90095.2872#`` shows as typed, as on GW-BASIC, not ``-90095.28720000001``).
     """
+    from decimal import ROUND_HALF_UP, Decimal  # here: a run printing no double does not load decimal
+
     x = abs(x)
     exact = Decimal(x) if abs(x) < 3.4e38 and _unpack(_pack(x))[0] == x else Decimal(repr(x))
     e = exact.adjusted()

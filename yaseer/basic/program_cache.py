@@ -23,7 +23,6 @@ from __future__ import annotations
 import marshal
 import os
 import sys
-from pathlib import Path
 
 try:  # the built-in module: hashlib would load OpenSSL (~10 ms of start-up)
     from _blake2 import blake2b
@@ -34,21 +33,22 @@ import yaseer
 from yaseer.basic.compiled import CompiledArea
 
 FORMAT = 1  # bump when the stored layout changes
-_SOURCES = Path(__file__).resolve().parent  # yaseer/basic: scanner, grammar, parser, compiler, ...
+# Paths are os.path strings here, not pathlib (whose import costs a few ms of every start).
+_SOURCES = os.path.dirname(os.path.realpath(__file__))  # yaseer/basic: scanner, grammar, parser, compiler, ...
 
 
-def cache_dir() -> Path | None:
+def cache_dir() -> str | None:
     """The directory of the cache, or None when it is switched off."""
     configured = os.environ.get("YASEER_CACHE_DIR")
     if configured is not None:
-        return Path(configured) if configured else None
+        return configured or None
     base = os.environ.get("XDG_CACHE_HOME", "")
     if not os.path.isabs(base):  # unset or relative (the XDG rule: ignore it)
         home = os.path.expanduser("~")
         if not os.path.isabs(home):  # no home directory: no cache (never one in the current directory)
             return None
         base = os.path.join(home, ".cache")
-    return Path(base) / "yaseer" / "compiled"
+    return os.path.join(base, "yaseer", "compiled")
 
 
 _fingerprint: bytes | None = None
@@ -59,9 +59,10 @@ def toolchain_fingerprint() -> bytes:
     global _fingerprint
     if _fingerprint is None:
         digest = blake2b(f"{FORMAT} {yaseer.__version__} {sys.version} {sys.implementation.cache_tag}".encode())
-        for path in sorted(_SOURCES.iterdir()):
-            if path.suffix in (".py", ".lark"):
-                digest.update(path.name.encode() + b"\0" + path.read_bytes() + b"\0")
+        for name in sorted(os.listdir(_SOURCES)):
+            if name.endswith((".py", ".lark")):
+                with open(os.path.join(_SOURCES, name), "rb") as source:
+                    digest.update(name.encode() + b"\0" + source.read() + b"\0")
         _fingerprint = digest.digest()
     return _fingerprint
 
@@ -85,7 +86,8 @@ def key(area, program: dict[int, str], entry_lines=(), dialect=None) -> str | No
 def load(entry: str) -> tuple[CompiledArea, list] | None:
     """The compiled area and its code objects stored under ``entry``, or None."""
     try:
-        data = (cache_dir() / f"{entry}.bin").read_bytes()
+        with open(os.path.join(cache_dir(), f"{entry}.bin"), "rb") as stored:
+            data = stored.read()
         stored_key, fields, codes = marshal.loads(data)
     except (OSError, EOFError, ValueError, TypeError):
         return None
@@ -98,13 +100,14 @@ def store(entry: str, compiled: CompiledArea, codes: list) -> None:
     """Keep ``compiled`` and its code objects (None for a piece that could not be
     compiled) under ``entry``; failures are ignored."""
     directory = cache_dir()
-    temporary = directory / f".{entry}.{os.getpid()}.tmp"
+    temporary = os.path.join(directory, f".{entry}.{os.getpid()}.tmp")
     try:
-        directory.mkdir(parents=True, exist_ok=True)
-        temporary.write_bytes(marshal.dumps((entry, compiled.as_plain(), codes)))
-        os.replace(temporary, directory / f"{entry}.bin")
+        os.makedirs(directory, exist_ok=True)
+        with open(temporary, "wb") as entry_file:
+            entry_file.write(marshal.dumps((entry, compiled.as_plain(), codes)))
+        os.replace(temporary, os.path.join(directory, f"{entry}.bin"))
     except (OSError, ValueError):
         try:
-            temporary.unlink()
+            os.unlink(temporary)
         except OSError:
             pass

@@ -8,8 +8,6 @@ that cannot be used is a :class:`~yaseer.commands.options.CommandError` naming i
 
 from __future__ import annotations
 
-from pathlib import Path
-
 
 class NamedStream:
     """Wraps a text stream; an ``OSError`` from write, flush or close becomes an
@@ -53,8 +51,10 @@ def open_for_writing(path: str) -> NamedStream:
     return NamedStream(open(path, "w", encoding="utf-8"), path)
 
 
-def output_directory(path) -> Path:
-    """``--out DIR`` made ready: created with its parents; an error naming it if it is a file."""
+def output_directory(path):
+    """``--out DIR`` made ready (a ``pathlib.Path``): created with its parents; an error naming it if it is a file."""
+    from pathlib import Path  # here, not at the top: `yaseer run` has no --out (start-up)
+
     from yaseer.commands.options import CommandError
 
     directory = Path(path)
@@ -67,8 +67,10 @@ def output_directory(path) -> Path:
     return directory
 
 
-def output_file(path) -> Path:
-    """``--out FILE`` made ready: its directory created; an error naming it if it is a directory."""
+def output_file(path):
+    """``--out FILE`` made ready (a ``pathlib.Path``): its directory created; an error naming it if it is a directory."""
+    from pathlib import Path
+
     from yaseer.commands.options import CommandError
 
     file = Path(path)

@@ -1,0 +1,88 @@
+"""Start-up (issue 15): which modules a warm ``yaseer run`` imports.
+
+A run whose compiled program is in the cache must not load what it does not
+use: the parser and lark, numpy, and the standard modules that only some paths
+need (pathlib for files and --out, decimal for PRINT USING and doubles, csv for
+--format csv and INPUT, hashlib for the cache key).  Each probe is a fresh
+process started with ``-S`` (no site: an editable install's import hook would
+load pathlib before yaseer does) that runs ``yaseer run`` as the console script
+does and prints which of the watched modules are in ``sys.modules`` at the end.
+(Speed itself is measured by tests/benchmarks/startup.py, never asserted.)
+"""
+
+from __future__ import annotations
+
+import ast
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import yaseer
+
+ROOT = Path(__file__).resolve().parents[1]
+PACKAGE_PARENT = str(Path(yaseer.__file__).resolve().parents[1])
+
+NEVER_WARM = ("lark", "numpy", "yaseer.basic.parser", "yaseer.basic.compiler", "yaseer.animation",
+              "pathlib", "decimal", "csv", "hashlib")
+"""Imported by no warm run of a listing that prints numbers (they serve other paths)."""
+
+NOT_WITHOUT_PROG = ("yaseer.linkages",)
+"""Imported only when a listing calls a library program."""
+
+WATCHED = NEVER_WARM + NOT_WITHOUT_PROG
+
+
+def warm_run(listing: Path, cache: Path) -> tuple[str, set[str]]:
+    """Run ``yaseer run LISTING`` twice (the first fills the cache); the second's output
+    and which WATCHED modules it imported."""
+    env = dict(os.environ, YASEER_CACHE_DIR=str(cache))
+    cold = subprocess.run([sys.executable, "-m", "yaseer", "run", str(listing)], capture_output=True, text=True,
+                          env=env, check=True)
+    probe = (f"import sys; sys.path.insert(0, {PACKAGE_PARENT!r})\n"
+             "from yaseer.cli import main\n"
+             "status = main(['run', sys.argv[1]])\n"
+             f"print(sorted(m for m in {WATCHED!r} if m in sys.modules), status)")
+    done = subprocess.run([sys.executable, "-S", "-c", probe, str(listing)], capture_output=True, text=True,
+                          env=env, check=True)
+    *output, last = done.stdout.splitlines()
+    modules, status = last.rsplit(" ", 1)
+    assert status == "0", done.stderr
+    assert "\n".join(output) + "\n" == cold.stdout  # the cached program prints what the compiled one did
+    return cold.stdout, set(ast.literal_eval(modules))
+
+
+@pytest.fixture
+def cache(tmp_path) -> Path:
+    return tmp_path / "cache"
+
+
+def test_a_warm_basic_only_run_imports_only_the_machine(cache):
+    listing = cache.parent / "print.bas"
+    listing.write_text("10 PRINT 1\n")
+    output, imported = warm_run(listing, cache)
+    assert output == " 1 \n"
+    assert imported == set()
+
+
+def test_a_warm_run_calling_the_programs_loads_their_formulas_only(cache):
+    output, imported = warm_run(ROOT / "listings" / "example1.bas", cache)
+    assert output == (ROOT / "tests" / "golden" / "example1.txt").read_text()
+    assert imported == set(NOT_WITHOUT_PROG) | {"decimal"}  # decimal: its PRINT USING rounds with it
+
+
+def test_the_watched_modules_are_those_the_other_paths_need(cache):
+    """The probe can see them: PRINT USING, INPUT and a file do load them (no -S needed here)."""
+    listing = cache.parent / "other.bas"
+    listing.write_text('10 PRINT USING "##.##"; 1.234\n20 OPEN "O", 1, "F.TXT": PRINT #1, 1: CLOSE 1\n30 INPUT A\n')
+    (cache.parent / "answers.txt").write_text("5\n")
+    env = dict(os.environ, YASEER_CACHE_DIR=str(cache))
+    probe = (f"import sys, os; sys.path.insert(0, {PACKAGE_PARENT!r}); os.chdir(sys.argv[2])\n"
+             "from yaseer.cli import main\n"
+             "status = main(['run', '--dialect', 'gw', '--input', 'answers.txt', sys.argv[1]])\n"
+             "print(sorted(m for m in ('pathlib', 'decimal', 'csv') if m in sys.modules))")
+    done = subprocess.run([sys.executable, "-c", probe, str(listing), str(cache.parent)],
+                          capture_output=True, text=True, env=env, check=True)
+    assert done.stdout.splitlines()[-1] == "['csv', 'decimal', 'pathlib']", done.stderr
