@@ -25,7 +25,7 @@ import sys
 from functools import lru_cache
 from typing import Callable, TextIO
 
-from yaseer.basic import arith_policy, decimal_arith, dialect as dialects, formatting, gwfunctions, numbers, program_cache, runtime
+from yaseer.basic import arith_policy, dialect as dialects, formatting, gwfunctions, numbers, program_cache, runtime
 from yaseer.basic.number_models import initial_value
 from yaseer.basic.files import FileTable, Sandbox
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # MAX_STACK: GOSUB returns + open FOR loops together
@@ -407,6 +407,8 @@ class Machine:
             ns.update(arith_policy.helpers(self.arith, numbers.to_single, ns["_idiv"], ns["_mod"], ns["_pow"]))
         ns.update(self._trig_functions())
         if self.dialect.arithmetic == "decimal":
+            from yaseer.basic import decimal_arith  # here: only --arith decimal loads the decimal module
+
             ns.update(decimal_arith.RUNTIME)
             ns.update(self._trig_functions())
         self.namespaces[area] = ns
@@ -440,6 +442,8 @@ class Machine:
 
     def _trig_functions(self) -> dict:
         if self.dialect.arithmetic == "decimal":
+            from yaseer.basic import decimal_arith
+
             return decimal_arith.trig_functions(self.angle != "RAD")
         if self.angle == "RAD":
             return {"_sin": math.sin, "_cos": math.cos, "_tan": math.tan, "_atn": math.atan}
