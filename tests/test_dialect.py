@@ -73,3 +73,14 @@ def test_interactive_session_takes_dialect(monkeypatch, capsys):
     monkeypatch.setattr("sys.stdin", io.StringIO("PRINT ATN(1) > 1\n"))
     assert main([]) == 0
     assert "-1 \n" in capsys.readouterr().out
+
+
+def test_session_lists_lines_as_its_dialect_reads_them():
+    from yaseer.session import MachineEngine, Session
+
+    for dialect, listed in (("casio", "10 COS T=5"), ("gw", "10 COST=5")):
+        shown: list[str] = []
+        session = Session(write=shown.append, engine=MachineEngine(shown.append, dialect=dialect), dialect=dialect)
+        session.handle("10 cost=5")
+        session.handle("LIST")
+        assert listed in "".join(shown), (dialect, shown)

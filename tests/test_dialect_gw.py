@@ -56,6 +56,14 @@ SAME_AS_PCBASIC = {
     "typed DEF FN": "10 DEF FNA(X)=X*X+1:PRINT FNA(3);FNA(1.5)\n20 DEF FNI%(X)=X/2:PRINT FNI%(5)\n",
     "functions return single": "10 PRINT SIN(1);ATN(1)*4;EXP(1);LOG(10)\n",
     "adding a constant rounds to single": "10 A=16777216!:A=A+1:B#=A:PRINT B#\n20 A=.1:A=A+.2:B#=A:PRINT B#\n",
+    "no double FOR variable": "10 FOR X!=0 TO 1 STEP .1: S=S+X!: NEXT: PRINT S; X!\n20 FOR D#=0 TO 1: NEXT\n",
+    "power is single": "10 PRINT 2#^3; 4#^.5; 2%^2%\n",
+    "typed arrays": "10 DIM B%(5), C#(3), D$(2): B%(1)=2.5: C#(2)=1/3#: D$(1)=\"X\": PRINT B%(1); C#(2); D$(1)\n"
+                    "20 A!(3)=1/3: A%(3)=7: PRINT A!(3); A%(3); A(3)\n",
+    "READ into typed variables": "10 READ A%, B$, C#: PRINT A%; B$; C#\n20 DATA 2.5, HI, 1.23456789012\n",
+    "typed DEF FN of doubles": "10 DEF FNF#(X#)=X#*X#: PRINT FNF#(1.1#); FNF#(1.1)\n",
+    "single FOR through the stack": "10 FOR X=0 TO 1 STEP .1: GOSUB 100: NEXT: PRINT X; S\n20 END\n100 S=S+X: RETURN\n",
+    "integer FOR overflows past 32767": "10 FOR I%=32765 TO 32767: GOSUB 100: NEXT\n20 END\n100 PRINT I%;: RETURN\n",
     "no Al-Yaseer arrays": "10 N(10)=5:PRINT N(10)\n20 PRINT A(11)\n",
 }
 

@@ -866,7 +866,7 @@ class AreaCompiler:
 
     def stmt_For(self, stmt, scope, native_next: int | None = None):
         kind = self.kind_of(stmt.var)
-        if kind == "s":
+        if kind not in self.numbers.loop_types:
             raise _type_mismatch()
         convert = self.numbers.convert
         start = convert(*self.typed(stmt.start, scope), kind)

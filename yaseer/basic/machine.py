@@ -660,7 +660,7 @@ class Machine:
         if not self.stack or type(self.stack[-1]) is not ForFrame or self.stack[-1].key.endswith("()"):
             raise BasicError("NEXT without FOR", NEXT_WITHOUT_FOR)
         frame = self.stack[-1]
-        value = self.scalars[frame.key] + frame.step
+        value = numbers.stepped(frame.key, self.scalars[frame.key] + frame.step)
         self.scalars[frame.key] = value
         if (value <= frame.limit) if frame.step >= 0 else (value >= frame.limit):
             self.frame_body = frame.body

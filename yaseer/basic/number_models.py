@@ -50,6 +50,7 @@ class PlainNumbers:
 
     typed = False
     square_by_product = True  # X^2 may compile to X*X (exact in binary)
+    loop_types = frozenset("n")  # the types a FOR variable may have
     widest = "n"  # the type of a number read by READ or INPUT (converted to the target's)
     integer = "n"  # the type of ERR, ERL
 
@@ -112,6 +113,7 @@ class TypedNumbers(PlainNumbers):
     """GW-BASIC's typed numbers (see the module docstring)."""
 
     typed = True
+    loop_types = frozenset("%!")  # FOR D# is Type mismatch in GW-BASIC (checked with PC-BASIC)
     widest = "#"
     integer = "%"
     _SUFFIX = {"INT": "%", "SNG": "!", "DBL": "#", "STR": "$"}
@@ -170,9 +172,7 @@ class TypedNumbers(PlainNumbers):
         return f"{names[op]}({left}, {right})", "%"
 
     def power(self, left: str, lkind: str, right: str, rkind: str) -> tuple[str, str]:
-        """``^``: double when either side is double, else single."""
-        if "#" in (lkind, rkind):
-            return f"_pow({left}, {right})", "#"
+        """``^``: single precision, also of doubles (GW-BASIC without /D: ``2#^.5`` is 1.414213)."""
         return f"_sg(_pow({left}, {right}))", "!"
 
     def negate(self, operand: str, kind: str) -> tuple[str, str]:

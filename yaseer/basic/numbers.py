@@ -132,6 +132,15 @@ def sign(x) -> int:
     return 1 if x > 0 else (-1 if x < 0 else 0)
 
 
+def stepped(name: str, value):
+    """A FOR variable ``name`` after ``+ STEP``, in its type (``I!`` single, ``I%`` integer
+    with Overflow past 32767; an untyped casio name unchanged)."""
+    last = name[-1]
+    if last == "!":
+        return to_single(value)
+    return to_int(value) if last == "%" else value
+
+
 class Double(float):
     """A double-precision value on its way to PRINT or STR$ (shows 16 digits, ``D``)."""
 
