@@ -202,6 +202,9 @@ def test_gw_corpus_program_matches_recorded_pcbasic_output(case):
 def recorded_output(session, case) -> str:
     """PC-BASIC's output of a corpus program; for gw its screen rows (80 columns), the
     way yaseer's gw screen writes them (see screen_rows)."""
+    if case in GW_CORPUS_CASES:  # PC-BASIC keeps these from one run to the next (RUN resets them in GW-BASIC)
+        session.statement("WIDTH 80")
+        session.statement("ON ERROR GOTO 0")
     out = session.program(case.read_text())
     return screen_rows(out) if case in GW_CORPUS_CASES else out
 

@@ -87,6 +87,14 @@ def test_input_reads_numbers_as_gw_basic(dialect):
     assert ours == theirs
 
 
+def test_input_beyond_the_mbf_range_is_overflow_and_the_largest_of_the_target():
+    """gw: INPUT of a number beyond 1.7D+38 prints Overflow and stores the signed largest
+    value of the variable's type (double or single), as PC-BASIC does."""
+    program = "10 INPUT A#: PRINT A#: INPUT B: PRINT B: INPUT C#: PRINT C#: INPUT D: PRINT D\n"
+    ours, theirs = with_answers(program, ["1D+39", "-1E+39", "1D+400", "1D+38"], "gw")
+    assert "Overflow" in theirs and ours == theirs
+
+
 @pytest.mark.parametrize("dialect", DIALECTS)
 def test_line_input_takes_the_whole_line(dialect):
     program = '10 LINE INPUT A$: LINE INPUT "say: "; B$: PRINT "["; A$; "]["; B$; "]"\n'

@@ -22,11 +22,12 @@ from __future__ import annotations
 import math
 
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
+from yaseer.basic.numbers import DOUBLE_LARGEST, SINGLE_LARGEST
 
 # The largest values of Microsoft Binary Format (exponent byte 255, mantissa all ones):
 # single (1 - 2**-24) * 2**127 = 1.701412E+38; double (1 - 2**-56) * 2**127, whose
 # nearest Python float is 2**127 (printed 1.701411834604692D+38, as GW-BASIC does).
-LARGEST = {"!": (1 - 2.0 ** -24) * 2.0 ** 127, "#": 2.0 ** 127}
+LARGEST = {"!": SINGLE_LARGEST, "#": DOUBLE_LARGEST}
 MESSAGES = {DIVISION_BY_ZERO: "Division by zero", OVERFLOW: "Overflow"}
 
 
@@ -55,7 +56,8 @@ class ArithmeticPolicy:
 
 
 def helpers(policy: ArithmeticPolicy, to_single, int_divide, int_modulo, power) -> dict:
-    """The compiled code's helpers for a dialect whose policy continues: ``_dv`` and
+    """The compiled code's helpers for a typed dialect: ``_dk`` (a double ``+ - *``
+    result, or VAL's, kept in MBF's range: beyond it the policy's value), ``_dv`` and
     ``_ddv`` (single and double ``/``), and ``\\`` ``MOD`` ``^`` ``EXP`` that give the
     policy's value instead of failing.  (A ``\\`` or ``MOD`` by zero gives a single
     1.701412E+38 with the dividend's sign, as PC-BASIC 2.0.8 shows.)"""
@@ -67,9 +69,14 @@ def helpers(policy: ArithmeticPolicy, to_single, int_divide, int_modulo, power) 
         except ZeroDivisionError:
             return result(DIVISION_BY_ZERO, a < 0, "!")
 
+    def double(x):
+        if -DOUBLE_LARGEST <= x <= DOUBLE_LARGEST:
+            return x
+        return result(OVERFLOW, x < 0, "#")
+
     def divide_double(a, b):
         try:
-            return a / b
+            return double(a / b)
         except ZeroDivisionError:
             return result(DIVISION_BY_ZERO, a < 0, "#")
 
@@ -84,7 +91,7 @@ def helpers(policy: ArithmeticPolicy, to_single, int_divide, int_modulo, power) 
                 return result(DIVISION_BY_ZERO, a < 0, "!")
         return run
 
-    largest = LARGEST["#"]  # GW-BASIC's doubles end where its singles do
+    largest = DOUBLE_LARGEST  # GW-BASIC's doubles end where its singles do
 
     def raise_to(a, b):
         try:
@@ -106,5 +113,5 @@ def helpers(policy: ArithmeticPolicy, to_single, int_divide, int_modulo, power) 
             r = math.inf
         return r if r <= largest else result(OVERFLOW, False, "!")
 
-    return {"_dv": divide_single, "_ddv": divide_double, "_idiv": by_integer(int_divide), "_mod": by_integer(int_modulo),
+    return {"_dk": double, "_dv": divide_single, "_ddv": divide_double, "_idiv": by_integer(int_divide), "_mod": by_integer(int_modulo),
             "_pow": raise_to, "_exp": exponential}

@@ -714,7 +714,8 @@ class AreaCompiler:
     def stmt_Read(self, stmt, scope):
         for target in stmt.targets:
             kind = "s" if self.kind_of(target) == "s" else self.numbers.widest
-            self.assign(target, "_read_s()" if kind == "s" else "_read_n()", kind, scope, False)
+            self.assign(target, "_read_s()" if kind == "s" else "_read_n()", kind, scope,
+                        self.numbers.typed and kind != "s")  # beyond the range: Overflow's policy
 
     def stmt_Restore(self, stmt, scope):
         if stmt.target is not None and stmt.target not in self.line_first:
@@ -729,14 +730,14 @@ class AreaCompiler:
                 kind = self.kind_of(target)
                 reader = "_fin_s" if kind == "s" else "_fin_n"
                 self.assign(target, f"{reader}({channel})", "s" if kind == "s" else self.numbers.widest,
-                            scope, False)
+                            scope, self.numbers.typed and kind != "s")
             return
         kinds = "".join("s" if self.kind_of(t) == "s" else "n" for t in stmt.targets)
         values = self.new_temp()
         self.emit(f"{values} = _input({stmt.prompt!r}, {stmt.question_mark}, {kinds!r}, {self.asking_again()})")
         for n, target in enumerate(stmt.targets):
             self.assign(target, f"{values}[{n}]", "s" if kinds[n] == "s" else self.numbers.widest,
-                        scope, False)
+                        scope, self.numbers.typed and kinds[n] != "s")
 
     def asking_again(self) -> tuple | None:
         """For an INPUT or LINE INPUT that starts its block of area 0 (a top-level one):

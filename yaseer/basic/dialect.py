@@ -21,6 +21,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from yaseer.basic.numbers import DOUBLE_LARGEST
 from yaseer.basic.randomness import GwRandom, RepeatableRandom
 
 # The paper's universal line 2: these arrays exist with these sizes from the start
@@ -98,6 +99,11 @@ class Dialect:
         ``on_division_by_zero`` and ``on_overflow``: ``"stop"`` ends the run
         with the error (Casio); ``"continue"`` prints GW-BASIC's message and
         goes on with the signed largest value, unless ON ERROR traps it.
+        ``largest_number``: where the number range ends when it is not IEEE's
+        (``None``; beyond 1.8E+308 is then an ``Overflow`` error): GW-BASIC's
+        Microsoft Binary Format doubles end where its singles do, at 2**127
+        (``DOUBLE_LARGEST``, printed 1.701411834604692D+38); a double result, or
+        a number read by VAL, INPUT or READ, beyond it follows ``on_overflow``.
 
     Start-up environment
         ``angle``: ``"DEG"`` or ``"RAD"``, the unit of SIN COS TAN ATN at RUN.
@@ -131,6 +137,7 @@ class Dialect:
     comma_trims_number: bool = False
     for_binds_next: bool = False
     arithmetic: str = "binary"
+    largest_number: float | None = None
 
     def with_arithmetic(self, arithmetic: str) -> "Dialect":
         """This dialect computing in ``arithmetic`` ("binary" or "decimal"); decimal
@@ -167,7 +174,7 @@ GW = Dialect(
     own_words=("DEFINT", "DEFSNG", "DEFDBL", "DEFSTR", "XOR", "EQV", "IMP"), typed_numbers=True, print_digits=7,
     width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
     implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,
-    errors_when_reached=True, comma_trims_number=True, for_binds_next=True,
+    errors_when_reached=True, comma_trims_number=True, for_binds_next=True, largest_number=DOUBLE_LARGEST,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

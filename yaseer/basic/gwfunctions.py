@@ -192,7 +192,7 @@ _EXPONENT = re.compile(r"[ED]([+-]?)(\d*)")
 _RADIX = {"H": (16, "0123456789ABCDEF"), "O": (8, "01234567")}
 
 
-def read_number(text: str) -> tuple[float, int]:
+def read_number(text: str, largest: float | None = None) -> tuple[float, int]:
     """The number at the start of ``text`` as GW-BASIC reads it, and where it ends.
 
     Blanks (space, tab, line feed) anywhere in it are skipped (``"1 2"`` is 12);
@@ -201,7 +201,9 @@ def read_number(text: str) -> tuple[float, int]:
     ``&H`` hexadecimal / ``&O`` or ``&`` octal (16-bit, ``&HFFFF`` is -1).  Points
     after the first are skipped (``"1.2.3"`` is 1.23, as PC-BASIC reads it).  What
     follows the number is not read: ``"1_2"`` is 1.  No number at all is (0, 0).
-    Beyond the double range is ``Overflow``.
+    Beyond the double range is ``Overflow``; with ``largest`` (the dialect's
+    ``largest_number``) a number beyond it is an infinity of its sign instead, which
+    the caller passes to the dialect's overflow policy (yaseer/basic/arith_policy.py).
     """
     packed, where = [], []  # the characters without blanks, and their positions
     for k, ch in enumerate(text):
@@ -212,12 +214,12 @@ def read_number(text: str) -> tuple[float, int]:
     if s.startswith("&"):
         value, used = _read_radix(s)
     else:
-        value, used = _read_decimal(s)
+        value, used = _read_decimal(s, largest)
     end = where[used - 1] + 1 if used else 0
     return value, end
 
 
-def _read_decimal(s: str) -> tuple[float, int]:
+def _read_decimal(s: str, largest: float | None = None) -> tuple[float, int]:
     match = _DECIMAL.match(s)
     sign, whole, fraction = match.group(1), match.group(2), (match.group(3) or "").replace(".", "")
     if not whole and not fraction:
@@ -230,11 +232,14 @@ def _read_decimal(s: str) -> tuple[float, int]:
         used = found.end()
     digits = (whole + fraction).lstrip("0") or "0"
     if digits != "0" and len(digits) - len(fraction) + exponent > 310:
-        raise _overflow()
-    value = float(f"{sign}{whole or '0'}.{fraction or '0'}e{max(min(exponent, 400), -400)}")
-    if abs(value) > _MAX_DOUBLE:
-        raise _overflow()
-    return value, used
+        value = math.inf
+    else:
+        value = abs(float(f"{whole or '0'}.{fraction or '0'}e{max(min(exponent, 400), -400)}"))
+    if value > (_MAX_DOUBLE if largest is None else largest):
+        if largest is None:
+            raise _overflow()
+        value = math.inf
+    return (-value if sign == "-" else value), used
 
 
 def _read_radix(s: str) -> tuple[float, int]:
@@ -252,17 +257,18 @@ def _read_radix(s: str) -> tuple[float, int]:
     return float(value - 0x10000 if value > 0x7FFF else value), used
 
 
-def val(s: str) -> float:
+def val(s: str, largest: float | None = None) -> float:
     """VAL: the number at the start of ``s`` (see :func:`read_number`), 0 if none."""
-    return read_number(s)[0]
+    return read_number(s, largest)[0]
 
 
-def number_field(text: str) -> float | None:
+def number_field(text: str, largest: float | None = None) -> float | None:
     """A whole INPUT or DATA field as a number, or None if it is not exactly one number
-    (blanks around and inside it allowed; an empty field is 0)."""
+    (blanks around and inside it allowed; an empty field is 0; ``largest`` as in
+    :func:`read_number`)."""
     if not text.strip(_BLANKS):
         return 0.0
-    value, end = read_number(text)
+    value, end = read_number(text, largest)
     if end == 0 or text[end:].strip(_BLANKS):
         return None
     return value

@@ -174,7 +174,7 @@ class _AreaRuntime:
     def read_number(self) -> float:
         text, line = self.read_item()
         try:
-            value = gwfunctions.number_field(text)
+            value = gwfunctions.number_field(text, self.machine.dialect.largest_number)
         except BasicError as err:
             raise err.at(line, self.number) from None
         if value is None:
@@ -405,6 +405,7 @@ class Machine:
         if self.dialect.typed_numbers:
             ns.update(numbers.RUNTIME)
             ns.update(arith_policy.helpers(self.arith, numbers.to_single, ns["_idiv"], ns["_mod"], ns["_pow"]))
+            ns["_val"] = lambda s: gwfunctions.val(s, self.dialect.largest_number)
         ns.update(self._trig_functions())
         if self.dialect.arithmetic == "decimal":
             from yaseer.basic import decimal_arith  # here: only --arith decimal loads the decimal module
@@ -1126,7 +1127,7 @@ class Machine:
         """
         while True:
             line = self._read_line((prompt or "") + ("? " if question_mark or prompt is None else ""), again)
-            values = _parse_input(line, kinds)
+            values = _parse_input(line, kinds, self.dialect.largest_number)
             if values is not None:
                 return values
             self.screen.write("?Redo from start\n")
@@ -1186,7 +1187,7 @@ class Machine:
 
     def file_number(self, n) -> float:
         """INPUT #n into a numeric variable: one field, read as GW-BASIC reads numbers."""
-        return gwfunctions.val(self.files.get(n).read_field(True))
+        return gwfunctions.val(self.files.get(n).read_field(True), self.dialect.largest_number)
 
     def input_chars(self, count, n=None) -> str:
         """INPUT$(count[, #n]): ``count`` characters of the file (or of the input)."""
@@ -1323,8 +1324,9 @@ def _as_number(value):
     return value
 
 
-def _parse_input(text: str, kinds: str):
-    """The values of one INPUT line for targets of ``kinds`` ("n"/"s"), or None to redo."""
+def _parse_input(text: str, kinds: str, largest: float | None = None):
+    """The values of one INPUT line for targets of ``kinds`` ("n"/"s"), or None to redo
+    (``largest``: see gwfunctions.read_number)."""
     import csv
 
     reader = csv.reader([text], skipinitialspace=True)
@@ -1337,7 +1339,7 @@ def _parse_input(text: str, kinds: str):
             values.append(field_text)
             continue
         try:
-            value = gwfunctions.number_field(field_text)
+            value = gwfunctions.number_field(field_text, largest)
         except BasicError:  # beyond the double range
             return None
         if value is None:

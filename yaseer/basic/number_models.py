@@ -162,7 +162,7 @@ class TypedNumbers(PlainNumbers):
                 # (struct pack/unpack, no Python frame: the tight loop's A=A+1)
                 return f"_up(_pk({left} {op} {right}))[0]", "!"
             return f"_sg({left} {op} {right})", "!"
-        return f"({left} {op} {right})", "#"
+        return f"_dk({left} {op} {right})", "#"  # MBF's double range ends at 1.7D+38
 
     def helper(self, op: str, left: str, right: str) -> tuple[str, str]:
         if op == "^":
@@ -213,6 +213,8 @@ class TypedNumbers(PlainNumbers):
             return code, kind
         if kind == "!":
             return f"_sg({code})", "!"
+        if name == "VAL":  # text may name a number beyond the double range
+            return f"_dk({code})", kind
         return code, kind
 
     def printable(self, code: str, kind: str) -> str:
@@ -226,7 +228,7 @@ class TypedNumbers(PlainNumbers):
             return "_irange", "_ci({var} + {step})"
         if kind == "!":
             return "_frange", "_sg({var} + {step})"
-        return "_frange", "{var} + {step}"
+        return "_frange", "_dk({var} + {step})"
 
     def may_iterate(self, stmt, kind: str) -> bool:
         """Single-precision loops iterate only over whole numbers (exact in single

@@ -14,7 +14,8 @@ A value's Python type carries its BASIC type where the printed text depends on i
   same 24-bit mantissa; its range ends at 1.7E+38 (IEEE's at 3.4E+38): beyond
   it a result is Overflow.
 * ``#`` double precision: a Python ``float`` (53-bit mantissa; MBF doubles have
-  56, so the 16th digit may differ).  Wrapped in :class:`Double` only on its
+  56, so the 16th digit may differ), within :data:`DOUBLE_LARGEST` (MBF's range;
+  ``+ - * /`` results beyond it go to the overflow policy through ``_dk``).  Wrapped in :class:`Double` only on its
   way to PRINT or STR$, so that it shows 16 digits and ``D`` exponents.
 
 Rounding to an integer (CINT, assignment to ``%``) is half away from zero, as
@@ -36,6 +37,9 @@ _SINGLE = struct.Struct("f")
 _pack, _unpack = _SINGLE.pack, _SINGLE.unpack
 
 SINGLE_LARGEST = (1 - 2.0 ** -24) * 2.0 ** 127  # 1.701412E+38, the end of MBF's single range
+# MBF's double range ends there too, at (1 - 2**-56) * 2**127, whose nearest Python
+# float is 2**127 (printed 1.701411834604692D+38, as GW-BASIC prints it)
+DOUBLE_LARGEST = 2.0 ** 127
 
 
 def to_single(x) -> float:

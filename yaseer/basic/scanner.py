@@ -235,7 +235,7 @@ def _scan_typed_number(upper: str, i: int) -> tuple[tuple, int]:
     more than 7 digits makes a double, anything else is single precision.
     ``&H1F`` / ``&O17`` / ``&17`` are 16-bit integers (``&HFFFF`` is -1).
     """
-    from yaseer.basic.numbers import to_single
+    from yaseer.basic.numbers import DOUBLE_LARGEST, to_single
 
     if upper[i] == "&":
         match = _RADIX_NUMBER.match(upper, i)
@@ -264,6 +264,8 @@ def _scan_typed_number(upper: str, i: int) -> tuple[tuple, int]:
         return (int(value), "%"), match.end()
     digits = len(mantissa.replace(".", "").lstrip("0").rstrip("0") if "." in mantissa else mantissa.lstrip("0"))
     if suffix == "#" or (not suffix and (letter == "D" or digits > SINGLE_DIGITS)):
+        if value > DOUBLE_LARGEST:  # MBF's double range ends where the single's does
+            raise BasicError("Overflow", OVERFLOW)
         return (value, "#"), match.end()
     single = to_single(value)
     if single - single:  # beyond the single range

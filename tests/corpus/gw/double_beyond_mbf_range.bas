@@ -1,0 +1,12 @@
+10 REM MBF doubles end at 1.701411834604692D+38, where singles do: beyond is Overflow
+20 A# = 1D+38: B# = A# * 10: PRINT B#
+30 PRINT A# * A#; -A# * 5; A# / 1D-5; 1.5D+38 + 1.5D+38
+40 C# = CDBL(1E+38) * 3: PRINT C#
+50 D# = VAL("1D+39"): PRINT D#: PRINT STR$(A# * 3)
+60 READ E#: PRINT E#: READ F: PRINT F
+70 X# = A# * 10 / 100: PRINT X#
+80 ON ERROR GOTO 200
+90 G# = A# * A#: PRINT "NOT HERE"
+100 PRINT G#: END
+200 PRINT "ERR"; ERR; ERL: RESUME NEXT
+300 DATA 1D+39, -1E+39
