@@ -118,3 +118,18 @@ def test_classic_benchmarks_print_as_pcbasic_in_gw(pc):
         source = scale.sub(lambda m: m.group(1) + str(max(1, int(m.group(2)) // 50)), path.read_text())
         theirs, ours = pc.program(source), gw(source)
         assert theirs == ours or last_digit_apart(theirs, ours), (path.name, theirs, ours)
+
+
+def test_def_types_hold_for_direct_statements_in_gw():
+    import io
+
+    from yaseer.basic.machine import Machine
+
+    screen = io.StringIO()
+    machine = Machine(screen=screen, dialect="gw")
+    machine.load("10 DEFINT A\n20 A = 2.7\n")
+    machine.run()
+    machine.execute_direct("PRINT A; A / 2")  # A is A%: 3, and 3/2 is 1.5
+    machine.execute_direct("DEFDBL B: B = 1 / 3#")
+    machine.execute_direct("PRINT B")
+    assert screen.getvalue() == " 3  1.5 \n .3333333333333333 \n"

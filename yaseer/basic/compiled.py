@@ -27,14 +27,16 @@ class CompiledArea:
     (loops: ``(FOR index, FOR-stack key, temporary number, mode, Python local
     of the variable or None)`` for each native loop open there, outermost
     first); ``dynamic_loops`` the FOR indices this compile was told to run
-    through the FOR stack.
+    through the FOR stack.  ``def_types`` letter -> type character after the
+    area's DEFINT/DEFSNG/DEFDBL/DEFSTR (gw; direct statements start from it).
     """
 
     FIELDS = ("source", "pieces", "block_count", "line_blocks", "block_next", "data", "data_lines",
-              "scalars", "first_line", "index_blocks", "break_points", "dynamic_loops")
+              "scalars", "first_line", "index_blocks", "break_points", "dynamic_loops", "def_types")
 
     def __init__(self, source, pieces, block_count, line_blocks, block_next, data, data_lines,
-                 scalars, first_line=None, index_blocks=None, break_points=None, dynamic_loops=()):
+                 scalars, first_line=None, index_blocks=None, break_points=None, dynamic_loops=(),
+                 def_types=None):
         self.source, self.pieces, self.block_count = source, pieces, block_count
         self.line_blocks, self.block_next = line_blocks, block_next
         self.data, self.data_lines, self.scalars = data, data_lines, scalars
@@ -42,6 +44,7 @@ class CompiledArea:
         self.index_blocks = index_blocks or {}
         self.break_points = break_points or {}
         self.dynamic_loops = dynamic_loops
+        self.def_types = def_types or {}
         self.blocks: list = []
 
     def as_plain(self) -> tuple:

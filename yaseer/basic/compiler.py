@@ -218,9 +218,9 @@ class AreaCompiler:
     """Compiles the lines of one program area (see the module docstring)."""
 
     def __init__(self, lines: list, area: int = 0, direct: bool = False, entry_lines=(), trace: bool = False,
-                 dynamic_loops=(), dialect=CASIO):
+                 dynamic_loops=(), dialect=CASIO, def_types=None):
         self.area = area
-        self.numbers = number_model(dialect)
+        self.numbers = number_model(dialect, def_types)
         self.direct = direct
         self.trace = trace and not direct
         self.dynamic_loops = set(dynamic_loops)
@@ -1139,7 +1139,7 @@ class AreaCompiler:
             block_next=self.block_next, data=self.data, data_lines=self.data_lines,
             scalars=set(self.scalars), first_line=self.flat[0][0] if self.flat else None,
             index_blocks=dict(self.entry_block), break_points=self.break_points,
-            dynamic_loops=tuple(sorted(self.dynamic_loops)),
+            dynamic_loops=tuple(sorted(self.dynamic_loops)), def_types=self.numbers.def_types(),
         )
 
     def block_source(self, block: _Block) -> str:
@@ -1224,7 +1224,7 @@ def split_data(text: str) -> list[str]:
 
 
 def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=(),
-                 trace: bool = False, dynamic_loops=(), dialect=CASIO) -> CompiledArea:
+                 trace: bool = False, dynamic_loops=(), dialect=CASIO, def_types=None) -> CompiledArea:
     """Compile an area's parsed lines (``syntax_tree.Line`` in line order) for ``dialect``.
 
     ``entry_lines`` are lines that must start a block although no jump names
@@ -1233,4 +1233,4 @@ def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=(
     indices of FOR loops to run through the FOR stack even where they could be
     native (CONT resumes a native loop broken by Ctrl-C that way).
     """
-    return AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect).compile()
+    return AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect, def_types).compile()

@@ -212,6 +212,7 @@ class Machine:
         # The dialect (scanner rules, number model, print rules, error policy, start-up
         # state: see dialect.py); ``angle`` overrides its start-up unit ("deg"/"rad").
         self.dialect = dialects.get_dialect(dialect)
+        self.def_types: dict = {}  # gw: letter -> type character of the last DEF statements
         self.arith = arith_policy.ArithmeticPolicy(self)  # division by zero, overflow: stop or go on
         # how PRINT shows a number: typed (GW: integers, 7-digit singles, 16-digit D doubles) or not
         self._printed_number, self._number_text = (
@@ -332,7 +333,7 @@ class Machine:
             lines = [_parse_cached(number, text, self.dialect) for number, text in sorted(program.items())]
             compiled = compile_area(lines, area if isinstance(area, int) else 0, direct=direct,
                                     entry_lines=entry_lines, trace=self.tracing, dynamic_loops=dynamic_loops,
-                                    dialect=self.dialect)
+                                    dialect=self.dialect, def_types=self.def_types if direct else None)
             codes = [None] * len(compiled.pieces)
         runtime_state = _AreaRuntime(self, area, compiled)
         namespace = self._namespace(area, runtime_state)
@@ -341,6 +342,8 @@ class Machine:
         if entry and cached is None:
             program_cache.store(entry, compiled, codes)
         compiled.blocks = [namespace[f"_b{b}"] for b in range(compiled.block_count)]
+        if direct or area == 0:  # DEF types hold for the direct statements that follow
+            self.def_types = dict(compiled.def_types)
         for name in compiled.scalars:
             self.scalars.setdefault(name, initial_value(name))
         if not direct:

@@ -57,6 +57,10 @@ class PlainNumbers:
     def set_types(self, statements) -> None:
         """No DEF types in this model."""
 
+    def def_types(self) -> dict:
+        """letter -> type character set by DEF statements (none here)."""
+        return {}
+
     def name(self, name: str) -> str:
         return name
 
@@ -124,8 +128,11 @@ class TypedNumbers(PlainNumbers):
         "ASC": "%", "CINT": "%", "CSNG": "!", "CDBL": "#", "CVD": "#",
     }
 
-    def __init__(self):
-        self.letters: dict[str, str] = {}
+    def __init__(self, def_types=None):
+        self.letters: dict[str, str] = dict(def_types or {})
+
+    def def_types(self) -> dict:
+        return dict(self.letters)
 
     def set_types(self, statements) -> None:
         """Apply the program's DEFINT/DEFSNG/DEFDBL/DEFSTR statements (in order)."""
@@ -282,8 +289,9 @@ class DecimalNumbers(PlainNumbers):
         return whole(stmt.start) and whole(stmt.step)
 
 
-def number_model(dialect) -> PlainNumbers:
-    """A fresh model for compiling one area in ``dialect``."""
+def number_model(dialect, def_types=None) -> PlainNumbers:
+    """A fresh model for compiling one area in ``dialect`` (gw: starting from the letter
+    types ``def_types`` a program's DEF statements set, for direct statements)."""
     if dialect.typed_numbers:
-        return TypedNumbers()
+        return TypedNumbers(def_types)
     return DecimalNumbers() if dialect.arithmetic == "decimal" else PlainNumbers()
