@@ -29,8 +29,8 @@ NEVER_WARM = ("lark", "numpy", "yaseer.basic.parser", "yaseer.basic.compiler", "
               "pathlib", "decimal", "csv", "hashlib")
 """Imported by no warm run of a listing that prints numbers (they serve other paths)."""
 
-NOT_WITHOUT_PROG = ("yaseer.linkages",)
-"""Imported only when a listing calls a library program."""
+NOT_WITHOUT_PROG = ("yaseer.linkages", "typing")
+"""Imported only when a listing calls a library program (the linkages' NamedTuples need typing)."""
 
 WATCHED = NEVER_WARM + NOT_WITHOUT_PROG
 

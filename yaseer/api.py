@@ -20,9 +20,12 @@ import os
 import re
 import sys
 from dataclasses import dataclass, field
-from typing import IO, Mapping, Union
 
-Listing = Union[str, "os.PathLike[str]"]
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
+    from typing import IO, Mapping, Union
+
+    Listing = Union[str, "os.PathLike[str]"]
 
 _LINE_NUMBER = re.compile(r"\s*\d")
 

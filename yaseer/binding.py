@@ -23,7 +23,6 @@ import contextlib
 import functools
 import math
 import sys
-from typing import Callable
 from weakref import WeakKeyDictionary
 
 from yaseer.basic.errors import (
@@ -34,6 +33,10 @@ from yaseer.basic.errors import (
     TYPE_MISMATCH,
     BasicError,
 )
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
+    from typing import Callable
 
 LINKAGES = {1: "slider_crank", 2: "fourbar", 3: "inverted_slider_crank", 5: "virtual_link"}
 

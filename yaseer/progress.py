@@ -11,11 +11,14 @@ from __future__ import annotations
 
 import sys
 from contextlib import contextmanager
-from typing import IO, Iterable, Iterator, TypeVar
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
+    from typing import IO, Iterable, Iterator, TypeVar
+
+    T = TypeVar("T")
 
 DELAY_SECONDS = 1.0  # a task quicker than this shows no bar at all
-
-T = TypeVar("T")
 
 
 def bar(

@@ -48,14 +48,18 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import Sequence, Union
 
 from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, OVERFLOW, TYPE_MISMATCH, BasicError
 
 SIGNIFICANT_DIGITS = 10  # a 10-digit pocket-computer display
 
 
-Value = Union[float, int, str]
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
+    from typing import Sequence, Union
+
+    Value = Union[float, int, str]
+    Token = Union["Literal", "StringField", "NumericField"]
 
 
 # ---------------------------------------------------------------------------
@@ -158,9 +162,6 @@ class NumericField:
     dollar: bool
     sign: str
     exponent_digits: int  # 0 (fixed notation), 2 (^^^^) or 3 (^^^^^)
-
-
-Token = Union[Literal, StringField, NumericField]
 
 
 def _count(fmt: str, i: int, chars: str) -> int:

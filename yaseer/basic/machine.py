@@ -23,7 +23,6 @@ import math
 import signal
 import sys
 from functools import lru_cache
-from typing import Callable, TextIO
 
 from yaseer.basic import arith_policy, dialect as dialects, formatting, gwfunctions, numbers, program_cache, runtime
 from yaseer.basic.number_models import initial_value
@@ -37,6 +36,10 @@ from yaseer.basic.errors import (
 )
 from yaseer.basic.scanner import split_lines
 from yaseer.basic.screen import SCREEN_WIDTHS, OutputStream
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
+    from typing import Callable, TextIO
 
 
 # Resource limits (each exceeded limit is "Out of memory in N").

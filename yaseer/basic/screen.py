@@ -22,7 +22,9 @@ Columns are 0-based here (BASIC's ``POS`` and ``TAB`` are 1-based).
 
 from __future__ import annotations
 
-from typing import TextIO
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
+    from typing import TextIO
 
 SCREEN_WIDTHS = (40, 80)  # the widths WIDTH n accepts (GW-BASIC's text screen; PC-BASIC checked)
 

@@ -11,7 +11,12 @@ is ``Break in <line>`` (the machine places it) and CONT goes on; Ctrl-D or
 from __future__ import annotations
 
 import sys
-from typing import Callable
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (every command loads this module)
+    from typing import Callable
+
+    Reader = Callable[[str, str], str]  # (prompt, text put up for editing) -> the line typed
 
 BANNER = (
     "yaseer - the Al-Yaseer pocket computer. PROG 1, 2, 3 and 5 hold the library programs.\n"
@@ -19,8 +24,6 @@ BANNER = (
     "LOAD, SAVE, PROG n, TRON; "
     "HELP lists the commands; SYSTEM (or Ctrl-D) leaves.\n"
 )
-
-Reader = Callable[[str, str], str]  # (prompt, text put up for editing) -> the line typed
 
 
 CLEAR_SCREEN = "\x1b[H\x1b[2J"  # CLS on a terminal: cursor home, erase the screen

@@ -16,7 +16,9 @@ from __future__ import annotations
 import argparse
 import re
 from dataclasses import dataclass, field
-from typing import TextIO
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
+    from typing import TextIO
 
 AREAS = range(1, 10)  # --prog N: areas 1-9 (area 0 is the listing itself)
 
