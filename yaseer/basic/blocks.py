@@ -165,20 +165,29 @@ def _close(open_loops: list, var):
     return None
 
 
-def scan_for_next(statements: list, start: int):
+def scan_for_next(statements: list, start: int, branch_for=None):
     """GW-BASIC's FOR: the NEXT it finds scanning forward from statement ``start``,
     counting the FORs and NEXTs met on the way (names ignored, IF branches included).
+    ``branch_for``: a FOR inside an IF branch of statement ``start - 1``; the scan
+    then starts with the statements that follow it in that IF's text.
 
     Returns ``(index of the statement holding it, the NEXT)``, or None when the
     program has none (``FOR without NEXT``).  PC-BASIC 2.0.8 binds the loop to that
     NEXT when the FOR runs; a NEXT naming another variable is ``NEXT without FOR``.
     """
     depth = 0
-    for k in range(start, len(statements)):
+    first = start
+    if branch_for is not None:
+        first = start - 1
+    for k in range(first, len(statements)):
         stmt = statements[k]
         if isinstance(stmt, BasicError):
             continue
-        for inner in walk_statements(stmt):
+        inners = walk_statements(stmt)
+        if k < start:  # the rest of the IF statement after the FOR in its branch
+            inners = list(inners)
+            inners = inners[next(n for n, s in enumerate(inners) if s is branch_for) + 1:]
+        for inner in inners:
             if isinstance(inner, ast.For):
                 depth += 1
             elif isinstance(inner, ast.Next):
@@ -246,6 +255,11 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
                 entries.add(bound[0] + 1)  # where GW-BASIC goes when the loop runs zero times
         elif not isinstance(stmt, ast.For) and splits(stmt):
             entries.add(i + 1)
+        if isinstance(stmt, ast.If):
+            for loop in walk_statements(stmt):
+                bound = scan_for_next(statements, i + 1, loop) if isinstance(loop, ast.For) else None
+                if bound is not None:
+                    entries.add(bound[0] + 1)  # likewise for a FOR in an IF branch
     # dynamic loops' NEXTs are not consumed; natives' are
     dynamic_for_next = {f: j for f, j in for_next.items() if f not in native}
     branch_for_next = _branch_loops(statements, entries, for_next)  # adds the entries it needs

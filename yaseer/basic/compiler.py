@@ -939,11 +939,9 @@ class AreaCompiler:
 
     def bound_next(self, stmt):
         """What GW-BASIC's FOR finds scanning for its NEXT (``Machine.for_push``):
-        ``(statement index, line, names this loop?)``, None for no NEXT; False for a
-        FOR inside an IF branch (not bound)."""
-        if self.depth != 0:
-            return False
-        found = scan_for_next([s for _, s in self.flat], self.index + 1)
+        ``(statement index, line, names this loop?)``, None for no NEXT.  A FOR inside
+        an IF branch scans on from itself through the rest of its IF statement."""
+        found = scan_for_next([s for _, s in self.flat], self.index + 1, stmt if self.depth else None)
         if found is None:
             return None
         k, next_stmt = found
