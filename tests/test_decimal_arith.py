@@ -7,7 +7,6 @@ digits for SQR, EXP, LOG and the trigonometric functions.
 
 from __future__ import annotations
 
-import dataclasses
 import io
 import math
 import random
@@ -20,7 +19,7 @@ from yaseer.basic import decimal_arith as D
 from yaseer.basic.dialect import CASIO
 from yaseer.basic.machine import Machine
 
-DECIMAL = dataclasses.replace(CASIO, arithmetic="decimal")
+DECIMAL = CASIO._replace(arithmetic="decimal")
 
 
 def round13(value: Fraction) -> float:

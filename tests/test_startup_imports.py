@@ -3,7 +3,8 @@
 A run whose compiled program is in the cache must not load what it does not
 use: the parser and lark, numpy, and the standard modules that only some paths
 need (pathlib for files and --out, decimal for PRINT USING and doubles, csv for
---format csv and INPUT, hashlib for the cache key).  Each probe is a fresh
+--format csv and INPUT, hashlib for the cache key), nor dataclasses before a
+library program is called.  Each probe is a fresh
 process started with ``-S`` (no site: an editable install's import hook would
 load pathlib before yaseer does) that runs ``yaseer run`` as the console script
 does and prints which of the watched modules are in ``sys.modules`` at the end.
@@ -29,8 +30,9 @@ NEVER_WARM = ("lark", "numpy", "yaseer.basic.parser", "yaseer.basic.compiler", "
               "pathlib", "decimal", "csv", "hashlib")
 """Imported by no warm run of a listing that prints numbers (they serve other paths)."""
 
-NOT_WITHOUT_PROG = ("yaseer.linkages", "typing")
-"""Imported only when a listing calls a library program (the linkages' NamedTuples need typing)."""
+NOT_WITHOUT_PROG = ("yaseer.linkages", "dataclasses", "inspect")
+"""Imported only when a listing calls a library program (the linkages' results are dataclasses;
+dataclasses imports inspect, ast, dis and tokenize: several ms of every start)."""
 
 WATCHED = NEVER_WARM + NOT_WITHOUT_PROG
 
@@ -86,3 +88,21 @@ def test_the_watched_modules_are_those_the_other_paths_need(cache):
     done = subprocess.run([sys.executable, "-c", probe, str(listing), str(cache.parent)],
                           capture_output=True, text=True, env=env, check=True)
     assert done.stdout.splitlines()[-1] == "['csv', 'decimal', 'pathlib']", done.stderr
+
+
+def test_the_plain_classes_behave_as_the_dataclasses_they_replace():
+    """Result compares and shows itself by its fields (not lines), with a list of its own;
+    a Dialect is immutable and makes variants."""
+    from yaseer.api import Result
+    from yaseer.basic.dialect import CASIO
+
+    a, b = Result("10 PRINT 1", text=" 1 \n"), Result("10 PRINT 1", text=" 1 \n")
+    assert a == b and a != Result("10 PRINT 1") and a != "10 PRINT 1"
+    assert repr(a) == ("Result(listing='10 PRINT 1', name=None, text=' 1 \\n', error=None, status='end', "
+                       "line=None, exception=None, frames=[])")
+    a.lines.append([1.0])
+    assert a != b and b.lines == [] and a.frames is not b.frames
+    with pytest.raises(AttributeError):
+        CASIO.width = 80
+    assert CASIO._replace(width=80).width == 80 and CASIO.width is None
+    assert CASIO.with_program_areas() is CASIO and hash(CASIO) == hash(CASIO._replace())

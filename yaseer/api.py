@@ -19,7 +19,6 @@ from __future__ import annotations
 import os
 import re
 import sys
-from dataclasses import dataclass, field
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
@@ -73,7 +72,6 @@ class _Output:
         return "".join(self._parts or ())
 
 
-@dataclass
 class Result:
     """What one run of a listing gave.
 
@@ -83,18 +81,36 @@ class Result:
     after Ctrl-C is an error line too).  ``frames``: the recorded positions of
     the mechanism, one :class:`yaseer.animation.Frame` per printed line after a
     library call.  ``name``: the listing's file stem (None for program text).
+
+    Compared and shown by its fields as a dataclass would be, but a plain class:
+    importing dataclasses costs every start several milliseconds (issue 15).
     """
 
-    listing: str
-    name: str | None = None
-    text: str = ""
-    error: str | None = None
-    status: str = "end"
-    line: int | None = None  # the BASIC line the run stopped in (STOP, an error), else None
-    exception: Exception | None = None
-    frames: list = field(default_factory=list)
-    lines: list = field(default_factory=list, repr=False)  # values printed per line (yaseer.table)
-    _rows: object = field(default=None, repr=False)
+    _SHOWN = ("listing", "name", "text", "error", "status", "line", "exception", "frames")
+
+    def __init__(self, listing: str, name: str | None = None, text: str = "", error: str | None = None,
+                 status: str = "end", line: int | None = None, exception: Exception | None = None,
+                 frames: list | None = None, lines: list | None = None, _rows: object = None) -> None:
+        self.listing = listing
+        self.name = name
+        self.text = text
+        self.error = error
+        self.status = status
+        self.line = line  # the BASIC line the run stopped in (STOP, an error), else None
+        self.exception = exception
+        self.frames = frames if frames is not None else []
+        self.lines = lines if lines is not None else []  # values printed per line (yaseer.table)
+        self._rows = _rows
+
+    def __repr__(self) -> str:
+        return f"Result({', '.join(f'{name}={getattr(self, name)!r}' for name in self._SHOWN)})"
+
+    def __eq__(self, other) -> bool:
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return vars(self) == vars(other)
+
+    __hash__ = None  # mutable
 
     @property
     def rows(self):

@@ -14,12 +14,14 @@ Two dialects exist:
   it; where the two disagree, Microsoft's GW-BASIC assembly source decides
   (see docs/compatibility.md).
 
-Field names are stable: other modules build on them.
+Field names are stable: other modules build on them.  A dialect is a named tuple
+(immutable; ``dialect._replace(field=value)`` makes a variant), not a dataclass:
+importing dataclasses costs every start several milliseconds (issue 15).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from typing import NamedTuple
 
 from yaseer.basic.numbers import DOUBLE_LARGEST
 from yaseer.basic.randomness import GwRandom, RepeatableRandom
@@ -33,8 +35,7 @@ AL_YASEER_DIMENSIONS = (
 )
 
 
-@dataclass(frozen=True)
-class Dialect:
+class Dialect(NamedTuple):
     """Everything that differs between the BASICs yaseer runs (all plain data).
 
     Scanner rules
@@ -146,11 +147,11 @@ class Dialect:
             return self
         if arithmetic not in ("binary", "decimal") or self.typed_numbers:
             raise ValueError(f"--arith {arithmetic} is not for the {self.name} dialect (decimal is casio's)")
-        return replace(self, arithmetic=arithmetic)
+        return self._replace(arithmetic=arithmetic)
 
     def with_program_areas(self) -> "Dialect":
         """This dialect with ``GOSUB PROG n`` (``--prog`` gives areas in gw too)."""
-        return self if self.program_areas else replace(self, program_areas=True)
+        return self if self.program_areas else self._replace(program_areas=True)
 
     def implicit_size(self, name: str, ndim: int) -> int:
         """The largest subscript of array ``name`` with ``ndim`` dimensions used without DIM."""

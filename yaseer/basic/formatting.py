@@ -46,8 +46,8 @@ the user who typed it expects.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from functools import lru_cache
+from typing import NamedTuple  # the format's fields (named tuples: dataclasses costs start-up)
 
 from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, OVERFLOW, TYPE_MISMATCH, BasicError
 
@@ -130,22 +130,19 @@ def number_to_text(x: float) -> str:
 # PRINT USING: the format string
 # ---------------------------------------------------------------------------
 
-@dataclass(frozen=True)
-class Literal:
+class Literal(NamedTuple):
     """Text copied to the output as it is."""
 
     text: str
 
 
-@dataclass(frozen=True)
-class StringField:
+class StringField(NamedTuple):
     """``!`` (width 1), ``\\  \\`` (width n+2) or ``&`` (width ``None``: the whole string)."""
 
     width: int | None
 
 
-@dataclass(frozen=True)
-class NumericField:
+class NumericField(NamedTuple):
     """A numeric field of a PRINT USING format.
 
     ``positions`` counts the places left of the decimal point (``#``, the two

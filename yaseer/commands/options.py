@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import argparse
 import re
-from dataclasses import dataclass, field
 TYPE_CHECKING = False
 if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
     from typing import TextIO
@@ -115,16 +114,21 @@ def add_run_options(parser: argparse.ArgumentParser) -> None:
                             "(default: the current directory; nothing outside it is ever touched)")
 
 
-@dataclass
 class RunSettings:
-    """The run options, read and checked: what a machine needs to run the listing."""
+    """The run options, read and checked: what a machine needs to run the listing.
 
-    areas: dict[int, str] = field(default_factory=dict)   # area -> BASIC text (--prog)
-    methods: dict[int, str] = field(default_factory=dict)  # program -> method name (--method)
-    dialect: object = "casio"  # a dialect name, or a Dialect (--arith decimal)
-    angle: str | None = None  # None: the dialect's
-    input: TextIO | None = None  # the --input file, opened (None: standard input)
-    files: str | None = None  # --files DIR: the directory of the program's files (None: the current one)
+    (A plain class, not a dataclass: importing dataclasses costs every start several ms.)
+    """
+
+    def __init__(self, areas: dict[int, str] | None = None, methods: dict[int, str] | None = None,
+                 dialect: object = "casio", angle: str | None = None, input: TextIO | None = None,
+                 files: str | None = None) -> None:
+        self.areas = areas if areas is not None else {}  # area -> BASIC text (--prog)
+        self.methods = methods if methods is not None else {}  # program -> method name (--method)
+        self.dialect = dialect  # a dialect name, or a Dialect (--arith decimal)
+        self.angle = angle  # None: the dialect's
+        self.input = input  # the --input file, opened (None: standard input)
+        self.files = files  # --files DIR: the directory of the program's files (None: the current one)
 
     def run_arguments(self) -> dict:
         """The keyword arguments of :func:`yaseer.run` these options give (INPUT from the keyboard without --input)."""
