@@ -235,7 +235,7 @@ def _scan_typed_number(upper: str, i: int) -> tuple[tuple, int]:
     more than 7 digits makes a double, anything else is single precision.
     ``&H1F`` / ``&O17`` / ``&17`` are 16-bit integers (``&HFFFF`` is -1).
     """
-    from yaseer.basic.numbers import DOUBLE_LARGEST, to_single
+    from yaseer.basic.numbers import DOUBLE_LARGEST, single_literal, to_single
 
     if upper[i] == "&":
         match = _RADIX_NUMBER.match(upper, i)
@@ -268,6 +268,8 @@ def _scan_typed_number(upper: str, i: int) -> tuple[tuple, int]:
             raise BasicError("Overflow", OVERFLOW)
         return (value, "#"), match.end()
     single = to_single(value)
+    if not single - single:  # in range: the value GW-BASIC's conversion gives (numbers.mbf_single)
+        single = single_literal(match.group(0).rstrip("!#%"))
     if single - single:  # beyond the single range
         raise BasicError("Overflow", OVERFLOW)
     return (single, "!"), match.end()
