@@ -90,6 +90,8 @@ def splits(stmt) -> bool:
             return True
         if isinstance(s, ast.OnJump) and s.gosub:
             return True
+        if s is not stmt and isinstance(s, (ast.While, ast.Wend)):
+            return True  # a WHILE or WEND inside an IF branch starts a block there
     return False
 
 
@@ -269,19 +271,30 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
 
 
 def _plan_while_loops(statements: list, result: Plan) -> None:
-    """Match top-level WHILE and WEND by nesting (GW-BASIC scans the program the same
-    way): the WHILE starts a block (WEND jumps back to it), so does the statement after
-    its WEND (where a false condition goes).  Also notes whether OPTION BASE is used."""
+    """Match WHILE and WEND by nesting, in the program's text order (IF branches
+    included: GW-BASIC's WHILE scans the text for its WEND the same way).
+
+    ``while_wend``: id(WHILE) -> (index of the statement holding its WEND, the WEND);
+    ``wend_while`` the other way.  A top-level WHILE starts a block (WEND jumps back to
+    it), so does the statement after a top-level WEND (where a false condition goes);
+    the compiler makes the blocks of those inside IF branches.  Also notes whether
+    OPTION BASE is used."""
     result.while_wend, result.wend_while = {}, {}
-    open_loops: list[int] = []
+    open_loops: list[tuple[int, object]] = []
     extra = set()
     for i, stmt in enumerate(statements):
-        if isinstance(stmt, ast.While):
-            open_loops.append(i)
-        elif isinstance(stmt, ast.Wend) and open_loops:
-            start = open_loops.pop()
-            result.while_wend[start], result.wend_while[i] = i, start
-            extra.update((start, i + 1))
+        if isinstance(stmt, BasicError):
+            continue
+        for inner in walk_statements(stmt):
+            if isinstance(inner, ast.While):
+                open_loops.append((i, inner))
+            elif isinstance(inner, ast.Wend) and open_loops:
+                start, loop = open_loops.pop()
+                result.while_wend[id(loop)], result.wend_while[id(inner)] = (i, inner), (start, loop)
+                if loop is statements[start]:
+                    extra.add(start)
+                if inner is stmt:
+                    extra.add(i + 1)
     result.entries = sorted(set(result.entries) | extra)
     result.option_base = any(isinstance(s, ast.OptionBase) for stmt in statements
                              if not isinstance(stmt, BasicError) for s in walk_statements(stmt))

@@ -232,6 +232,8 @@ class AreaCompiler:
         self.entry_block = {idx: b for b, idx in enumerate(self.plan.entries)}
         self.blocks: list[_Block] = [_Block(b) for b in range(len(self.plan.entries))]
         self.block_next: dict[int, int] = {}
+        self.while_block: dict[int, int] = {}  # id(WHILE in an IF branch) -> its block
+        self.wend_after: dict[int, _Block] = {}  # id(WEND in an IF branch) -> the block after it
         self.prelude: list[str] = []
         self.scalars: set[str] = set()
         self.cur: _Block | None = None
@@ -629,16 +631,36 @@ class AreaCompiler:
 
     # -- GW-BASIC's statements (issue 12)
     def stmt_While(self, stmt, scope):
-        wend = self.plan.while_wend.get(self.index) if self.depth == 0 else None
-        if wend is None:
+        found = self.plan.while_wend.get(id(stmt))
+        if found is None:
             raise CompileError("WHILE without WEND", WHILE_WITHOUT_WEND)
-        self.emit(f"if not ({self.condition(stmt.condition, scope)}): return {self.entry_block[wend + 1]}")
+        if self.depth:  # inside an IF branch: a block starts here, for WEND to come back to
+            block, indent = self.cur, self.indent
+            self.while_block[id(stmt)] = start = self.continuation()
+            block.code.append((indent, f"return {start}"))
+        self.emit(f"if not ({self.condition(stmt.condition, scope)}): return {self.after_wend(*found).number}")
+
+    def after_wend(self, index: int, wend) -> _Block:
+        """The block where execution goes on after ``wend`` (in statement ``index``)."""
+        if wend is self.flat[index][1]:
+            return self.blocks[self.entry_block[index + 1]]
+        block = self.wend_after.get(id(wend))
+        if block is None:
+            block = self.wend_after[id(wend)] = self.new_block()
+        return block
 
     def stmt_Wend(self, stmt, scope):
-        start = self.plan.wend_while.get(self.index) if self.depth == 0 else None
+        found = self.plan.wend_while.get(id(stmt))
+        start = None
+        if found is not None:
+            index, loop = found
+            start = self.entry_block[index] if loop is self.flat[index][1] else self.while_block.get(id(loop))
         if start is None:
             raise CompileError("WEND without WHILE", WEND_WITHOUT_WHILE)
-        self.emit(f"return {self.entry_block[start]}")
+        self.emit(f"return {start}")
+        if self.depth:  # the rest of the IF branch goes on in the block after the WEND
+            self.cur, self.indent = self.after_wend(self.index, stmt), 1
+            self.emit(f"_ln = {self.line}")
 
     def stmt_Swap(self, stmt, scope):
         first, kind = self.expr(stmt.first, scope)
@@ -801,7 +823,7 @@ class AreaCompiler:
     def stmt_If(self, stmt, scope):
         cond = self.condition(stmt.condition, scope)
         branches = [b for b in (stmt.then, stmt.otherwise) if isinstance(b, list)]
-        split = any(splits(s) for b in branches for s in b)
+        split = any(splits(s) or isinstance(s, (ast.While, ast.Wend)) for b in branches for s in b)
         if not split:
             self.emit(f"if {cond}:")
             self.branch(stmt.then)

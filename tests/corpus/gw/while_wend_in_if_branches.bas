@@ -1,0 +1,11 @@
+10 REM WHILE and WEND inside IF branches, matched by nesting in the text as GW-BASIC scans it
+20 I = 0: WHILE I < 3: I = I + 1: IF I = 2 THEN WHILE K < 2: K = K + 1: PRINT "K"; K;: WEND
+30 PRINT "I"; I: WEND
+40 X = 1: IF X = 1 THEN WHILE X < 4: X = X + 1: PRINT "X"; X;: WEND: PRINT "W"
+50 I = 0: WHILE I < 5: I = I + 1: PRINT I;: IF I < 5 THEN WEND ELSE PRINT "E"
+60 IF 0 THEN PRINT "A" ELSE WHILE N < 2: N = N + 1: PRINT N;: WEND: PRINT "B"
+70 IF 1 THEN WHILE 0: PRINT "NO": WEND: PRINT "SKIP"
+80 FOR I = 1 TO 2: IF 1 THEN WHILE J < 2: J = J + 1: PRINT I; J;: WEND
+90 J = 0: NEXT: PRINT "F"
+100 PRINT "S": IF 1 THEN WHILE M < 2: M = M + 1
+110 PRINT M
