@@ -52,14 +52,14 @@ def _deliver_ctrl_c(signum, frame):
         signal.setitimer(signal.ITIMER_REAL, 0.005)
 
 
-def run_with_breaks(program: str, every: float | None) -> tuple[str, int]:
+def run_with_breaks(program: str, every: float | None, dialect: str = "casio") -> tuple[str, int]:
     """The screen after running ``program`` to its end, and how many breaks it took.
 
     ``every``: seconds between Ctrl-Cs (None: no break).  Each break must be
     ``Break in <line>`` and resumable.
     """
     screen = io.StringIO()
-    machine = Machine(screen=screen)
+    machine = Machine(screen=screen, dialect=dialect)
     machine.resumable_breaks = True
     machine.load(program)
     breaks = 0
@@ -93,6 +93,23 @@ def test_broken_and_continued_run_prints_what_an_unbroken_run_prints(name):
     output, breaks = run_with_breaks(program, every)
     assert breaks >= 2  # the program ran long enough to be broken and continued more than once
     assert output == reference
+
+
+def test_gw_typed_variables_survive_breaks():
+    """gw: integer, double and single locals (i_, d_, n_) are kept across Ctrl-C and CONT."""
+    program = ("10 DEFINT I-K: DEFDBL D\n20 FOR I=1 TO 20000: D=D+I/3#: K=(K+I) MOD 7: S=S+.5\n"
+               "30 N%=N%+1: IF N%>9999 THEN N%=0\n40 NEXT I\n50 PRINT D;K;I;S;N%")
+    started = time.perf_counter()
+    reference, _ = run_with_breaks(program, None, "gw")
+    every = max(0.002, (time.perf_counter() - started) / 8)
+    output, breaks = run_with_breaks(program, every, "gw")
+    assert breaks >= 2
+    assert output == reference
+    k = 0
+    for i in range(1, 20001):
+        k = (k + i) % 7
+    # D: the sum of I/3 is 20000*20001/6; S: 20000 halves; N% wraps to 0 at 10000 and 20000
+    assert reference == f" {20000 * 20001 // 6}  {k}  20001  10000  0 \n"
 
 
 def test_the_reference_itself_is_right():

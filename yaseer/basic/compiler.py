@@ -1094,7 +1094,8 @@ class AreaCompiler:
         # The top of a pass is where a Ctrl-C may stop the loop so that CONT resumes it:
         # its line is the atomic ``_ln = n`` (nothing in it can be interrupted half-way).
         self.open_loops.append((i, self.loop_key(stmt.var), n, mode,
-                                local_name(stmt.var.name) if isinstance(stmt.var, ast.Var) else None))
+                                local_name(self.numbers.name(stmt.var.name)) if isinstance(stmt.var, ast.Var)
+                                else None))
         self.emit(f"#BREAK#{len(self.break_infos)}")
         self.break_infos.append((self.flat[i + 1][0], tuple(self.open_loops)))
         self.line = None

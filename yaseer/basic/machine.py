@@ -850,8 +850,7 @@ class Machine:
             if frame.f_globals.get("_M") is self and "_ln" in frame.f_locals:
                 self.line = frame.f_locals["_ln"]
                 for local, value in frame.f_locals.items():
-                    if local[:2] in ("n_", "s_") and local[2:3].isalpha():
-                        name = local[2:] + ("$" if local[0] == "s" else "")
+                    for name in _scalar_names(local):
                         if name in self.scalars:
                             self.scalars[name] = value
                 break
@@ -1311,6 +1310,18 @@ def _resume_without_error() -> BasicError:
     err = BasicError("RESUME without error", RESUME_WITHOUT_ERROR)
     err.trappable = False
     return err
+
+
+_LOCAL_SUFFIXES = {"n_": ("", "!"), "s_": ("$",), "i_": ("%",), "d_": ("#",)}
+
+
+def _scalar_names(local: str) -> tuple:
+    """The scalar names a compiled block's Python local may hold (number_models.local_name):
+    ``n_A`` is A (casio) or A! (gw), ``i_A`` A%, ``d_A`` A#, ``s_A`` A$."""
+    suffixes = _LOCAL_SUFFIXES.get(local[:2])
+    if suffixes is None or not local[2:3].isalpha():
+        return ()
+    return tuple(local[2:] + suffix for suffix in suffixes)
 
 
 def _same(value):
