@@ -112,6 +112,50 @@ class Sandbox:
         return found
 
 
+    def directory(self, pattern: str | None = None) -> list[str]:
+        """FILES [pattern]: GW-BASIC's entries for the sandbox's directories (``.`` and
+        ``..`` too) then its files, each sorted, whose 8.3 names match ``pattern``
+        (``*`` ``?``; name and extension matched apart, as DOS does: ``A*`` is only
+        names without extension); each entry 17 columns: :func:`directory_entry`.
+        Names starting with ``.`` are hidden."""
+        if pattern is not None:
+            if not pattern:
+                raise _error(BAD_FILE_NAME)
+            self.path(pattern.replace("*", "x").replace("?", "x"))  # the same rules for the pattern
+        mask = dos_split((pattern or "*.*").upper())
+        dirs, files = [("", ""), ("", ".")], []
+        for p in self.root.iterdir():
+            if not p.name.startswith("."):
+                (dirs if p.is_dir() else files).append(dos_split(p.name.upper()))
+        return [directory_entry(name, is_dir) for group, is_dir in ((dirs, True), (files, False))
+                for name in sorted(n for n in group if all(map(fnmatch.fnmatchcase, n, mask)))]
+
+    def free_bytes(self) -> int:
+        """The free bytes of the sandbox's disk (FILES' last line)."""
+        import shutil
+
+        return shutil.disk_usage(self.root).free
+
+
+def dos_split(name: str) -> tuple[str, str]:
+    """A name as DOS shows it: (name, extension) split at the first ``.``, clipped to
+    8 and 3 characters with ``+`` marking a clipped one (``LONGNAME1.DAT`` is
+    ``LONGNAM+``, ``DAT``)."""
+    trunk, _, ext = name.partition(".")
+    if len(trunk) > 8:
+        trunk = trunk[:7] + "+"
+    if len(ext) > 3:
+        ext = ext[:2] + "+"
+    return trunk, ext
+
+
+def directory_entry(name: tuple[str, str], is_dir: bool) -> str:
+    """One FILES entry: the name in 8 columns, ``.`` and the extension in 4, then
+    ``<DIR>`` or 5 blanks (``A       .BAS     ``; ``.`` itself is ``        .   <DIR>``)."""
+    trunk, ext = name
+    return trunk.ljust(8) + ("." if ext or not trunk else " ") + ext.ljust(3) + ("<DIR>" if is_dir else " " * 5)
+
+
 class OpenFile:
     """One open sequential file: ``mode`` "I", "O" or "A"."""
 

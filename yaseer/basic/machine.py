@@ -29,7 +29,7 @@ from yaseer.basic.number_models import initial_value
 from yaseer.basic.files import FileTable, Sandbox
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # MAX_STACK: GOSUB returns + open FOR loops together
 from yaseer.basic.errors import (
-    BasicError, OutputError, BREAK, CANT_CONTINUE, DIVISION_BY_ZERO, DUPLICATE_DEFINITION, FOR_WITHOUT_NEXT,
+    BasicError, OutputError, BREAK, CANT_CONTINUE, DIVISION_BY_ZERO, DUPLICATE_DEFINITION, FILE_NOT_FOUND, FOR_WITHOUT_NEXT,
     ILLEGAL_FUNCTION_CALL, NEXT_WITHOUT_FOR, OUT_OF_DATA, OUT_OF_MEMORY, OVERFLOW,
     RESUME_WITHOUT_ERROR, RETURN_WITHOUT_GOSUB, SUBSCRIPT_OUT_OF_RANGE, SYNTAX_ERROR,
     UNDEFINED_PROGRAM_AREA, UNDEFINED_USER_FUNCTION,
@@ -1208,9 +1208,20 @@ class Machine:
         return text
 
     def list_files(self, pattern) -> None:
-        """FILES [pattern]: the matching names of the files' directory, one a line."""
-        for name in self.files.sandbox.listing(pattern):
-            self.print_items(0, (name,), True)
+        """FILES [pattern]: GW-BASIC's listing: the directory (``C:\\``, the sandbox as
+        a drive's root), the matching entries in as many columns of 18 as the width
+        has 20s, the disk's bytes free, an empty line; nothing matching is ``File not
+        found`` after the directory line (as PC-BASIC 2.0.8 prints it)."""
+        sandbox = self.files.sandbox
+        entries = sandbox.directory(pattern)
+        self.print_items(0, ("C:\\",), True)
+        if not entries:
+            raise BasicError("File not found", FILE_NOT_FOUND)
+        columns = max(1, (self.screen.width or 80) // 20)
+        for k in range(0, len(entries), columns):
+            self.print_items(0, (" ".join(entries[k:k + columns]),), True)
+        self.print_items(0, (f" {sandbox.free_bytes()} Bytes free",), True)
+        self.print_items(0, (), True)
 
     def write_values(self, device: int, pieces: tuple) -> None:
         """WRITE: the items (already as text: strings quoted, numbers without blanks)
