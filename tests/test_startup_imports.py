@@ -3,7 +3,7 @@
 A run whose compiled program is in the cache must not load what it does not
 use: the parser and lark, numpy, and the standard modules that only some paths
 need (pathlib for files and --out, decimal for PRINT USING and doubles, csv for
---format csv and INPUT, hashlib for the cache key), nor dataclasses before a
+--format csv and INPUT, hashlib for the cache key, random for RND), nor dataclasses before a
 library program is called.  Each probe is a fresh
 process started with ``-S`` (no site: an editable install's import hook would
 load pathlib before yaseer does) that runs ``yaseer run`` as the console script
@@ -27,7 +27,7 @@ ROOT = Path(__file__).resolve().parents[1]
 PACKAGE_PARENT = str(Path(yaseer.__file__).resolve().parents[1])
 
 NEVER_WARM = ("lark", "numpy", "yaseer.basic.parser", "yaseer.basic.compiler", "yaseer.animation",
-              "pathlib", "decimal", "csv", "hashlib")
+              "pathlib", "decimal", "csv", "hashlib", "random")
 """Imported by no warm run of a listing that prints numbers (they serve other paths)."""
 
 NOT_WITHOUT_PROG = ("yaseer.linkages", "dataclasses", "inspect")

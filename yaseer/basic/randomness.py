@@ -17,7 +17,6 @@ is stored in.  ``reset()`` is what RUN does.
 from __future__ import annotations
 
 import math
-import random
 import struct
 
 _PERIOD = 1 << 24
@@ -36,8 +35,17 @@ class RepeatableRandom:
         self.reset()
 
     def reset(self) -> None:
-        self._generator = random.Random(0)
+        self._seeded = None  # made at the first RND or RANDOMIZE: a run without them never imports random
         self._last = 0.0
+
+    @property
+    def _generator(self):
+        """The Mersenne Twister, seeded with 0 when first needed after RUN."""
+        if self._seeded is None:
+            import random
+
+            self._seeded = random.Random(0)
+        return self._seeded
 
     def rnd(self, x: float = 1.0) -> float:
         if x < 0:
