@@ -613,7 +613,7 @@ class AreaCompiler:
         self.emit("_M.clear_screen()")
 
     def stmt_Width(self, stmt, scope):
-        self.emit(f"_M.set_width({self.numeric(stmt.columns, scope)})")
+        self.emit(f"_M.set_width({self.numeric(stmt.columns, scope)}, {stmt.printer})")
 
     def stmt_Dim(self, stmt, scope):
         for name, sizes in stmt.arrays:

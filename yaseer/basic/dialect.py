@@ -71,6 +71,8 @@ class Dialect(NamedTuple):
         (``None``: never wrap, the Casio behaviour as yaseer runs it; 80 for
         GW-BASIC, changed with ``WIDTH n``).
         ``zone``: columns per ``,`` print zone (14 in both).
+        ``printer_width``: where LPRINT wraps (``None`` never; GW-BASIC's printer:
+        80, changed with ``WIDTH LPRINT n``).
         ``comma_trims_number``: True drops the trailing blank of a number a
         ``,`` follows when the number ends one column before a zone (GW-BASIC's
         source, GIO86.ASM ``MODCOM``), so the comma moves one column instead of
@@ -139,6 +141,7 @@ class Dialect(NamedTuple):
     for_binds_next: bool = False
     arithmetic: str = "binary"
     largest_number: float | None = None
+    printer_width: int | None = None
 
     def with_arithmetic(self, arithmetic: str) -> "Dialect":
         """This dialect computing in ``arithmetic`` ("binary" or "decimal"); decimal
@@ -176,6 +179,7 @@ GW = Dialect(
     width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
     implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,
     errors_when_reached=True, comma_trims_number=True, for_binds_next=True, largest_number=DOUBLE_LARGEST,
+    printer_width=80,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

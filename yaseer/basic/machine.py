@@ -221,7 +221,8 @@ class Machine:
         self._printed_number, self._number_text = (
             (_same, numbers.number_to_text) if self.dialect.typed_numbers else (_as_number, formatting.number_to_text))
         self.screen = OutputStream(screen if screen is not None else sys.stdout, self.dialect.width)
-        self.printer = OutputStream(printer if printer is not None else self.screen.stream)
+        self.printer = OutputStream(printer if printer is not None else self.screen.stream,
+                                    self.dialect.printer_width, moves_items=False)
         if printer is None:
             self.printer = self.screen
         self.streams = (self.screen, self.printer)
@@ -491,10 +492,18 @@ class Machine:
             self.on_clear_screen()
         self.screen.column = 0
 
-    def set_width(self, columns) -> None:
+    def set_width(self, columns, printer: bool = False) -> None:
         """WIDTH n: the screen's width, 40 or 80 columns as GW-BASIC's text screen has
-        (any other n is Illegal function call); PRINT wraps there from now on."""
+        (any other n is Illegal function call); PRINT wraps there from now on.
+        WIDTH LPRINT n: the printer's, 0..255 (0 acts as 1, 255 never wraps, as
+        PC-BASIC 2.0.8 has it); nothing changes while LPRINT goes to the screen."""
         n = runtime.cint(columns)
+        if printer:
+            if not 0 <= n <= 255:
+                raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+            if self.printer is not self.screen:
+                self.printer.width = None if n == 255 else max(n, 1)
+            return
         if n not in SCREEN_WIDTHS:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         self.screen.width = n

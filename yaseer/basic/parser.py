@@ -347,7 +347,7 @@ class _ToAst(Transformer):
         return ast.Cls()
 
     def width_stmt(self, c):
-        return ast.Width(c[1])
+        return ast.Width(c[-1], len(c) == 3)  # WIDTH LPRINT n: the printer's
 
     def deftype_stmt(self, c):
         return ast.DefType(c[0].value[3:], _values(c)[1:])

@@ -13,7 +13,8 @@ reproduces it:
   (an item that does not fit, ``,``, ``TAB``) does not add another;
 * a PRINT item (a number with its blanks, or a string) that would run past the
   width starts on a new row unless the row is empty (``STRDON``/``LINCHK``);
-  longer ones then wrap character by character;
+  longer ones then wrap character by character (on the printer, ``moves_items``
+  False, every item wraps so: PC-BASIC's LPRINT);
 * ``,`` moves to the next 14-column zone, or to a new row from the last zone on
   (``COMPRT``); ``TAB(n)`` and ``SPC(n)`` count modulo the width (``TABER``).
 
@@ -32,10 +33,11 @@ SCREEN_WIDTHS = (40, 80)  # the widths WIDTH n accepts (GW-BASIC's text screen; 
 class OutputStream:
     """A text stream with its current column; ``width`` None never wraps (see module docstring)."""
 
-    def __init__(self, stream: TextIO, width: int | None = None):
+    def __init__(self, stream: TextIO, width: int | None = None, moves_items: bool = True):
         self.stream = stream
         self.column = 0
         self.width = width
+        self.moves_items = moves_items  # False: a printer, whose items wrap where they are
         self.row: list = []  # csv output: the values of the line being printed
 
     def write(self, text: str) -> None:
@@ -70,9 +72,10 @@ class OutputStream:
         self.column = 0
 
     def item(self, text: str) -> None:
-        """One PRINT item: on a new row first if it would run past the width (GW-BASIC)."""
+        """One PRINT item: on a new row first if it would run past the width (GW-BASIC's
+        screen; a printer's items wrap character by character, as PC-BASIC 2.0.8 prints)."""
         width = self.width
-        if width is not None and self.column and self.column + len(text) > width:
+        if width is not None and self.moves_items and self.column and self.column + len(text) > width:
             self.new_row()
         self.write(text)
 

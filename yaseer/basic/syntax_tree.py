@@ -388,8 +388,10 @@ class Cls:
 
 @_node
 class Width:
-    """``WIDTH n``: the screen's width in columns (PRINT wraps there)."""
+    """``WIDTH n``: the screen's width in columns (PRINT wraps there); ``WIDTH LPRINT n``
+    (``printer``): the printer's (LPRINT wraps there)."""
     columns: object
+    printer: bool = False
 
 
 @_node

@@ -1,0 +1,63 @@
+"""LPRINT in ``--dialect gw`` against PC-BASIC 2.0.8's printer (LPT1 written to a file):
+the printer wraps at its width (80, ``WIDTH LPRINT n``: 0..255, 255 never wraps;
+0 is taken as 1, where PC-BASIC writes extra line ends)
+character by character, items included; ``,`` zones, TAB and SPC as on the screen."""
+
+from __future__ import annotations
+
+import io
+
+import pytest
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+
+PROGRAM = """10 LPRINT STRING$(100, "A")
+20 LPRINT "X"; TAB(70); "YYYYYYYYYYYYYYY"
+30 WIDTH LPRINT 20
+40 LPRINT "0123456789012345678901234": LPRINT STRING$(20, "D"): LPRINT "E"
+50 LPRINT 1, 2, 3
+60 FOR I = 1 TO 8: LPRINT "AB ";: NEXT: LPRINT
+70 LPRINT 12345; 67890; 12345; 67890: LPRINT STRING$(19, "F"); 123
+80 LPRINT "G"; TAB(25); "H": LPRINT "I"; SPC(30); "J"
+90 WIDTH LPRINT 1: LPRINT "KL"
+100 WIDTH LPRINT 255: LPRINT STRING$(100, "B")
+110 WIDTH LPRINT 80: LPRINT 1, 2, 3, 4, 5, 6, 7: LPRINT STRING$(80, "M"): LPRINT "N"
+120 PRINT LPOS(0): LPRINT "O";: PRINT LPOS(0)
+130 WIDTH LPRINT 256
+"""
+
+
+def pcbasic_printer(source: str, tmp_path) -> tuple[str, str]:
+    """(screen, printer text) of PC-BASIC running ``source``."""
+    import pcbasic
+
+    from test_differential_support import clean_output
+
+    paper = tmp_path / "lpt1.txt"
+    session = pcbasic.Session(output_streams=None, input_streams=None, devices={"LPT1:": f"FILE:{paper}"})
+    session.start()
+    session.execute("NEW")
+    screen = clean_output(session.execute(source.rstrip("\n") + "\nRUN"))
+    session.close()
+    return screen, paper.read_bytes().decode("latin-1").replace("\r\n", "\n")
+
+
+def yaseer_printer(source: str) -> tuple[str, str]:
+    from yaseer.basic.errors import BasicError
+    from yaseer.basic.machine import Machine
+
+    screen, paper = io.StringIO(), io.StringIO()
+    machine = Machine(screen=screen, printer=paper, dialect="gw")
+    machine.load(source)
+    try:
+        machine.run()
+    except BasicError as err:
+        machine.end_line()
+        screen.write(str(err) + "\n")
+    return screen.getvalue(), paper.getvalue()
+
+
+def test_lprint_wraps_at_the_printer_width_as_pcbasic(tmp_path):
+    theirs = pcbasic_printer(PROGRAM, tmp_path)
+    assert "YYYYYYYYYYY\nYYYY\n" in theirs[1] and theirs[0].endswith("Illegal function call in 130\n")
+    assert yaseer_printer(PROGRAM) == theirs
