@@ -32,7 +32,7 @@ import math
 from yaseer.basic import syntax_tree as ast
 from yaseer.basic.blocks import data_statements, flatten, nodes, plan, scan_for_next, splits, walk_statements
 from yaseer.basic.dialect import CASIO
-from yaseer.basic.number_models import NUMERIC, array_local, local_name, number_model
+from yaseer.basic.number_models import NUMERIC, RANGE_CHECKED, array_local, local_name, number_model
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # noqa: F401  (re-exported)
 from yaseer.basic.errors import (
     BasicError, FOR_WITHOUT_NEXT, OUT_OF_MEMORY, SYNTAX_ERROR, TYPE_MISMATCH, UNDEFINED_LINE,
@@ -353,7 +353,9 @@ class AreaCompiler:
         if op in ("+", "-", "*", "/"):
             # a left-leaning chain (A+B+C...) stays flat: Python groups + - and * / the same way
             group = ("+", "-") if op in ("+", "-") else ("*", "/")
-            if isinstance(node.left, ast.Binary) and node.left.op in group and left.startswith("("):
+            # (not a gw double's range-checked result, "(_w if ...)": number_models)
+            if (isinstance(node.left, ast.Binary) and node.left.op in group and left.startswith("(")
+                    and not left.startswith(RANGE_CHECKED)):
                 left = left[1:-1]
             return self.numbers.arithmetic(op, left, lkind, right, rkind)
         if op == "^":

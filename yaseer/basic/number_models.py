@@ -169,7 +169,7 @@ class TypedNumbers(PlainNumbers):
                 # (struct pack/unpack, no Python frame: the tight loop's A=A+1)
                 return f"_up(_pk({left} {op} {right}))[0]", "!"
             return f"_sg({left} {op} {right})", "!"
-        return f"_dk({left} {op} {right})", "#"  # MBF's double range ends at 1.7D+38
+        return _in_double_range(f"{left} {op} {right}"), "#"
 
     def helper(self, op: str, left: str, right: str) -> tuple[str, str]:
         if op == "^":
@@ -247,6 +247,17 @@ class TypedNumbers(PlainNumbers):
         def whole(node) -> bool:
             return node is None or (isinstance(node, ast.Num) and float(node.value).is_integer())
         return whole(stmt.start) and whole(stmt.step)
+
+
+RANGE_CHECKED = "(_w if "  # how the code of a range-checked double result starts
+
+
+def _in_double_range(code: str) -> str:
+    """``code`` (a double result) kept in MBF's range, 1.7D+38 (``numbers.DOUBLE_LARGEST``):
+    beyond it ``_dk`` gives the overflow policy's value.  The test is inline (a
+    chained comparison, no call: twice as fast in a double loop); ``_w`` is a scratch
+    local, each use read before the next assignment."""
+    return f"{RANGE_CHECKED}{-2.0 ** 127!r} <= (_w := {code}) <= {2.0 ** 127!r} else _dk(_w))"
 
 
 def _small_literal(code: str) -> bool:
