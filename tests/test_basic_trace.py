@@ -9,7 +9,6 @@ from __future__ import annotations
 import pytest
 
 from test_basic_helpers import run_text
-from test_differential_support import PcBasic
 
 from yaseer.basic.compiler import compile_area
 from yaseer.basic.parser import parse_line
@@ -31,13 +30,6 @@ PROGRAMS = [
     # an error trapped by ON ERROR GOTO, RESUME NEXT
     "10 ON ERROR GOTO 100\n20 X=1/0\n30 PRINT ERR\n40 END\n100 PRINT 100: RESUME NEXT",
 ]
-
-
-@pytest.fixture(scope="module")
-def pc():
-    session = PcBasic()
-    yield session
-    session.close()
 
 
 @pytest.mark.parametrize("program", PROGRAMS)

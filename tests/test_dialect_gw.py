@@ -11,21 +11,10 @@ import math
 
 import pytest
 
-from test_differential_support import PcBasic, run_yaseer
+from test_differential_support import run_yaseer, run_gw as gw
 from yaseer.api import run
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
-
-
-@pytest.fixture(scope="module")
-def pc():
-    session = PcBasic()
-    yield session
-    session.close()
-
-
-def gw(source: str) -> str:
-    return run_yaseer(source, angle=None, dialect="gw")
 
 
 # Programs whose every printed line fits in 80 columns (wrapping is another part of the dialect).

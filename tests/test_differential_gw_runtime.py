@@ -20,21 +20,9 @@ from __future__ import annotations
 import random
 import pytest
 
-from test_differential_support import PcBasic, base_seed, case_count, run_yaseer, screen_rows
+from test_differential_support import base_seed, case_count, screen_rows, run_gw as gw
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
-
-
-
-@pytest.fixture(scope="module")
-def pc():
-    session = PcBasic()
-    yield session
-    session.close()
-
-
-def gw(source: str) -> str:
-    return run_yaseer(source, angle=None, dialect="gw")
 
 
 def assert_generated_match(pc, generate, seed: int, count: int, width_of=lambda source: 80) -> None:

@@ -24,13 +24,6 @@ pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
 HANDLER = 30000  # the error handler's line: prints the code, goes on with the next case
 
 
-@pytest.fixture(scope="module")
-def pc():
-    session = PcBasic()
-    yield session
-    session.close()
-
-
 def program(cases: list[str], prelude: list[str] = ()) -> str:
     """One program: ``prelude`` statements, then a line per case, its output after an ``@``."""
     lines = [f"10 ON ERROR GOTO {HANDLER}"]

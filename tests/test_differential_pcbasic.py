@@ -38,13 +38,6 @@ from yaseer.basic.formatting import number_to_text, str_dollar, using
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
 
 
-@pytest.fixture(scope="module")
-def pc():
-    session = PcBasic()
-    yield session
-    session.close()
-
-
 def yaseer_using(fmt: str, values) -> str:
     """yaseer's PRINT USING text, or its error message."""
     try:

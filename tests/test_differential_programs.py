@@ -47,13 +47,6 @@ def program_count() -> int:
     return int(os.environ.get("YASEER_DIFF_PROGRAMS", 40))
 
 
-@pytest.fixture(scope="module")
-def pc():
-    session = PcBasic()
-    yield session
-    session.close()
-
-
 def too_wide(output: str) -> bool:
     """Whether PC-BASIC's 80-column screen may have wrapped a line (yaseer never wraps)."""
     return max(len(line) for line in output.split("\n")) >= LONG_LINE

@@ -290,6 +290,11 @@ def run_yaseer(source: str, angle: str | None = "rad", dialect: str = "casio") -
     return screen.getvalue()
 
 
+def run_gw(source: str) -> str:
+    """yaseer's screen for ``source`` in ``--dialect gw`` (the dialect's own angle unit)."""
+    return run_yaseer(source, angle=None, dialect="gw")
+
+
 def run_direct(text: str, dialect: str = "gw") -> str:
     """yaseer's output for one statement typed in direct mode, then its error line if it fails
     (as PC-BASIC shows a direct statement)."""

@@ -5,16 +5,9 @@ from __future__ import annotations
 
 import pytest
 
-from test_differential_support import PcBasic, run_direct as direct
+from test_differential_support import run_direct as direct
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
-
-
-@pytest.fixture(scope="module")
-def pc():
-    session = PcBasic()
-    yield session
-    session.close()
 
 
 def test_error_statement_raises_every_code_with_gw_basics_message(pc):

@@ -14,19 +14,12 @@ from pathlib import Path
 
 import pytest
 
-from test_differential_support import PcBasic, run_direct as direct, clean_output, run_yaseer
+from test_differential_support import run_direct as direct, clean_output, run_yaseer
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 
 CASES = Path(__file__).parent / "gw"
 DIALECTS = ["gw", "casio"]
-
-
-@pytest.fixture(scope="module")
-def pc():
-    session = PcBasic()
-    yield session
-    session.close()
 
 
 def statements(dialect: str) -> list[str]:
