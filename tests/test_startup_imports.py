@@ -3,8 +3,8 @@
 A run whose compiled program is in the cache must not load what it does not
 use: the parser and lark, numpy, and the standard modules that only some paths
 need (pathlib for files and --out, decimal for PRINT USING and doubles, csv for
---format csv and INPUT, hashlib for the cache key, random for RND), nor dataclasses before a
-library program is called.  Each probe is a fresh
+--format csv and INPUT, hashlib for the cache key, random for RND), nor dataclasses (with
+inspect) at all, not even when a library program is called.  Each probe is a fresh
 process started with ``-S`` (no site: an editable install's import hook would
 load pathlib before yaseer does) that runs ``yaseer run`` as the console script
 does and prints which of the watched modules are in ``sys.modules`` at the end.
@@ -27,12 +27,12 @@ ROOT = Path(__file__).resolve().parents[1]
 PACKAGE_PARENT = str(Path(yaseer.__file__).resolve().parents[1])
 
 NEVER_WARM = ("lark", "numpy", "yaseer.basic.parser", "yaseer.basic.compiler", "yaseer.animation",
-              "pathlib", "decimal", "csv", "hashlib", "random")
+              "pathlib", "decimal", "csv", "hashlib", "random", "dataclasses", "inspect")
 """Imported by no warm run of a listing that prints numbers (they serve other paths)."""
 
-NOT_WITHOUT_PROG = ("yaseer.linkages", "dataclasses", "inspect")
-"""Imported only when a listing calls a library program (the linkages' results are dataclasses;
-dataclasses imports inspect, ast, dis and tokenize: several ms of every start)."""
+NOT_WITHOUT_PROG = ("yaseer.linkages",)
+"""Imported only when a listing calls a library program.  (Its results are named tuples and
+plain classes, not dataclasses: dataclasses imports inspect, ast, dis and tokenize, several ms.)"""
 
 WATCHED = NEVER_WARM + NOT_WITHOUT_PROG
 
@@ -106,3 +106,24 @@ def test_the_plain_classes_behave_as_the_dataclasses_they_replace():
         CASIO.width = 80
     assert CASIO._replace(width=80).width == 80 and CASIO.width is None
     assert CASIO.with_program_areas() is CASIO and hash(CASIO) == hash(CASIO._replace())
+
+
+def test_the_linkage_results_behave_as_the_frozen_dataclasses_they_replace():
+    """Kinematics results: made from their fields in order, immutable, compared, hashed
+    and shown by their fields; the force records are named tuples of the same fields."""
+    from yaseer.linkages import MassProps, slider_crank, virtual_link
+
+    a, b = slider_crank(0.0, 1.0, 3.0, 30.0, 2.0, 0.0), slider_crank(0.0, 1.0, 3.0, 30.0, 2.0, 0.0)
+    assert a == b and hash(a) == hash(b) and a != slider_crank(0.0, 1.0, 3.0, 31.0, 2.0, 0.0) and a != a.crank
+    assert repr(a).startswith("SliderCrank(crank=Rotation(angle=") and repr(a).endswith(", moving=True)")
+    assert type(a)(*(getattr(a, name) for name in a.FIELDS)) == a
+    a.rod_point(1.0, 0.0)  # keeps its unit vectors, still equal
+    assert a == b
+    with pytest.raises(AttributeError):
+        a.rod = a.crank
+    with pytest.raises(TypeError):
+        type(a)(a.crank)
+    assert MassProps(2.0) == MassProps(mass=2.0, inertia=0.0) and MassProps().offset_deg == 0.0
+    with pytest.raises(AttributeError):
+        MassProps().mass = 1.0
+    assert virtual_link(3.0, 4.0, 0.0, 0.0, 0.0, 0.0).length == 5.0

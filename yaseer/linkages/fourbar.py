@@ -14,8 +14,6 @@ function elsewhere; here the branch is given per position.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.kinetostatics import ForceResult, Joint, Load, MassProps, analyse, loads_at_point, rigid_body
 from yaseer.linkages.numerics import math_for
@@ -37,7 +35,6 @@ LOAD_NAMES = (
 )
 
 
-@dataclass(frozen=True)
 class FourBar(CrankedLinkage):
     """Kinematics of a four-bar at one or many positions (arrays broadcast).
 
@@ -54,6 +51,7 @@ class FourBar(CrankedLinkage):
     pin_b: Motion
     pivot: Motion
     moving: bool
+    FIELDS = ("crank", "crank_length", "coupler", "follower", "pin_a", "pin_b", "pivot", "moving")
 
     FRAMES = {"crank": (None, "crank", False), "coupler": ("pin_a", "coupler", False),
               "follower": ("pivot", "follower", True)}

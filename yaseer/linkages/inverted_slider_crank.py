@@ -10,8 +10,6 @@ A' = L5' u + L5 T9' i u (one 2x2 solve), singular only where A reaches Bo.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, loads_at_point, rigid_body
 from yaseer.linkages.numerics import math_for
@@ -24,7 +22,6 @@ from yaseer.linkages.planar import solve_two_directions, unit_degrees
 LOAD_NAMES = ("crank_torque", "follower_perpendicular")
 
 
-@dataclass(frozen=True)
 class InvertedSliderCrank(CrankedLinkage):
     """Kinematics of the FISC at one or many positions (arrays broadcast).
 
@@ -39,6 +36,7 @@ class InvertedSliderCrank(CrankedLinkage):
     pin_a: Motion
     pivot: Motion
     moving: bool
+    FIELDS = ("crank", "crank_length", "follower", "follower_length", "pin_a", "pivot", "moving")
 
     FRAMES = {"crank": (None, "crank", False), "follower": ("pivot", "follower", False)}
 

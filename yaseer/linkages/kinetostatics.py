@@ -19,7 +19,7 @@ receives +value, the upstream body -value.  Forces are complex numbers
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
+from typing import NamedTuple  # records (named tuples: dataclasses costs start-up, issue 15)
 
 from yaseer.linkages.errors import SingularForceError, UnknownLoadError
 from yaseer.linkages.numerics import SCALAR, math_for
@@ -32,8 +32,7 @@ from yaseer.linkages.planar import Motion, cross
 SINGULAR_TOLERANCE = 1e-9
 
 
-@dataclass(frozen=True)
-class Body:
+class Body(NamedTuple):
     """A rigid body: mass (kg), inertia about its mass centre (kg m**2), the
     motion of the mass centre and the angular acceleration (rad/s**2)."""
 
@@ -45,8 +44,7 @@ class Body:
     particle: bool = False
 
 
-@dataclass(frozen=True)
-class Load:
+class Load(NamedTuple):
     """A load of scalar value on ``body``: a force along unit ``direction`` acting
     at ``point``, or (``direction is None``) a couple."""
 
@@ -66,8 +64,7 @@ def point_loads(body: str, point, perpendicular) -> dict[str, "Load"]:
     }
 
 
-@dataclass(frozen=True)
-class Joint:
+class Joint(NamedTuple):
     """An unknown reaction, the action of ``upstream`` (None: ground) on ``downstream``.
 
     ``kind`` is ``"pin"`` (two components, result complex), ``"slide"`` (a force
@@ -409,8 +406,7 @@ def _reactions(plan: _Plan, joints: list[Joint], pin_forms: dict, solution: list
     return reactions
 
 
-@dataclass(frozen=True)
-class MassProps:
+class MassProps(NamedTuple):
     """Mass (kg), inertia about the mass centre (kg m**2) and where the mass centre
     lies: ``distance`` from the link's reference joint at ``offset_deg`` degrees
     counter-clockwise from the link's reference line."""
@@ -437,8 +433,7 @@ def loads_at_point(linkage, body: str, point_of_interest) -> dict[str, Load]:
                        linkage.load_direction(body, distance, offset))
 
 
-@dataclass(frozen=True)
-class ForceResult:
+class ForceResult(NamedTuple):
     """A solved force analysis: the name and value of the unknown load, and the
     joint reactions by name (pins complex ``Fx + 1j*Fy``, slides and couples real)."""
 

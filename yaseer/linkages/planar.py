@@ -213,8 +213,12 @@ def driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate,
 
 
 class CrankedLinkage:
-    """Mixin of the linkages' kinematics results (frozen dataclasses), whose ``crank``
-    (a :class:`Rotation`) turns about the origin Ao.
+    """Base of the linkages' kinematics results, whose ``crank`` (a :class:`Rotation`)
+    turns about the origin Ao.
+
+    A result is immutable and made from its ``FIELDS`` in order, compared, hashed and
+    shown by them as a frozen dataclass would be, but a plain class: importing
+    dataclasses costs every start several milliseconds (issue 15).
 
     ``FRAMES`` names, for each moving body, how its points are given: (the attribute
     holding the Motion of the joint they are measured from, None for Ao; the
@@ -223,12 +227,38 @@ class CrankedLinkage:
     """
 
     crank: Rotation
+    FIELDS: ClassVar[tuple[str, ...]] = ("crank",)
     FRAMES: ClassVar[dict[str, tuple[str | None, str, bool]]] = {"crank": (None, "crank", False)}
+
+    def __init__(self, *values) -> None:
+        if len(values) != len(self.FIELDS):
+            raise TypeError(f"{type(self).__name__} takes {len(self.FIELDS)} values ({', '.join(self.FIELDS)}), "
+                            f"not {len(values)}")
+        self.__dict__.update(zip(self.FIELDS, values))
+
+    def __setattr__(self, name: str, value) -> None:
+        raise AttributeError(f"cannot assign to field {name!r} of an immutable {type(self).__name__}")
+
+    __delattr__ = __setattr__
+
+    def _values(self) -> tuple:
+        return tuple(getattr(self, name) for name in self.FIELDS)
+
+    def __eq__(self, other) -> bool:
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        return self._values() == other._values()
+
+    def __hash__(self) -> int:
+        return hash(self._values())
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({', '.join(f'{name}={getattr(self, name)!r}' for name in self.FIELDS)})"
 
     def unit_vector(self, link: str, reverse: bool = False):
         """u(inclination) of the link named ``link`` (``-u`` with ``reverse``: its line
         measured from the other end), computed once per result and kept."""
-        kept = self.__dict__.setdefault("_unit_vectors", {})  # the dataclass is frozen; its __dict__ is not
+        kept = self.__dict__.setdefault("_unit_vectors", {})  # the result is immutable; its __dict__ is not
         if link not in kept:
             kept[link] = unit(getattr(self, link).angle)
         return -kept[link] if reverse else kept[link]

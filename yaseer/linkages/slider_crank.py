@@ -12,8 +12,6 @@ Units: lengths in any unit, angles in degrees at the interface, rates in rad/s.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, loads_at_point, rigid_body
 from yaseer.linkages.numerics import math_for
@@ -32,7 +30,6 @@ LOAD_NAMES = (
 )
 
 
-@dataclass(frozen=True)
 class SliderCrank(CrankedLinkage):
     """Kinematics of a slider-crank at one or many positions (arrays broadcast).
 
@@ -50,6 +47,7 @@ class SliderCrank(CrankedLinkage):
     travel: Stretch
     axis: Values
     moving: bool
+    FIELDS = ("crank", "crank_length", "rod", "pin_a", "pin_b", "travel", "axis", "moving")
 
     FRAMES = {"crank": (None, "crank", False), "rod": ("pin_b", "rod", True)}
 
