@@ -127,3 +127,30 @@ def test_the_linkage_results_behave_as_the_frozen_dataclasses_they_replace():
     with pytest.raises(AttributeError):
         MassProps().mass = 1.0
     assert virtual_link(3.0, 4.0, 0.0, 0.0, 0.0, 0.0).length == 5.0
+
+
+@pytest.mark.parametrize("command", ["run", "diff", "plot", "animate", "bench", "stability", "centrode", "report"])
+def test_a_command_parser_alone_is_the_sub_parser_of_the_whole_parser(command, monkeypatch):
+    """``yaseer COMMAND ...`` is parsed by the command's parser alone (the main parser and
+    the other sub-parsers are not built): the same help, usage, options and defaults."""
+    from yaseer.cli import build_parser, command_parser
+
+    monkeypatch.setenv("COLUMNS", "100")
+    alone, sub = command_parser(command), build_parser(command)[1]
+    assert alone.prog == sub.prog == f"yaseer {command}"
+    assert alone.format_help() == sub.format_help()
+    assert [(a.dest, a.default) for a in alone._actions] == [(a.dest, a.default) for a in sub._actions]
+
+
+def test_a_warm_run_builds_no_other_commands_parser(cache):
+    listing = cache.parent / "print.bas"
+    listing.write_text("10 PRINT 1\n")
+    env = dict(os.environ, YASEER_CACHE_DIR=str(cache))
+    subprocess.run([sys.executable, "-m", "yaseer", "run", str(listing)], capture_output=True, env=env, check=True)
+    probe = (f"import sys; sys.path.insert(0, {PACKAGE_PARENT!r})\n"
+             "from yaseer.cli import main\n"
+             "assert main(['run', sys.argv[1]]) == 0\n"
+             "print(sorted(m for m in sys.modules if m.startswith('yaseer.commands.')))")
+    done = subprocess.run([sys.executable, "-S", "-c", probe, str(listing)], capture_output=True, text=True,
+                          env=env, check=True)
+    assert done.stdout.splitlines()[-1] == "['yaseer.commands.options', 'yaseer.commands.output', 'yaseer.commands.run']"

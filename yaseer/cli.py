@@ -51,7 +51,8 @@ def _load(name: str):
 
 
 def build_parser(command: str | None = None) -> tuple[argparse.ArgumentParser, argparse.ArgumentParser | None]:
-    """The ``yaseer`` parser and ``command``'s sub-parser, the only one given its arguments (its module imported)."""
+    """The whole ``yaseer`` parser and ``command``'s sub-parser, the only one given its arguments
+    (its module imported).  A command line that names a command needs only :func:`command_parser`."""
     parser = argparse.ArgumentParser(prog="yaseer", description=DESCRIPTION, epilog=EPILOG,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"yaseer {__version__}")
@@ -65,6 +66,16 @@ def build_parser(command: str | None = None) -> tuple[argparse.ArgumentParser, a
             _load(name).add_arguments(command_parser)
             chosen = command_parser
     return parser, chosen
+
+
+def command_parser(command: str) -> argparse.ArgumentParser:
+    """``command``'s parser alone: the sub-parser :func:`build_parser` makes for it (the same
+    prog, description and arguments), without the main parser and the other commands' empty
+    sub-parsers (every ``yaseer run`` would build them for nothing: start-up, issue 15)."""
+    parser = argparse.ArgumentParser(prog=f"yaseer {command}", description=COMMANDS[command],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    _load(command).add_arguments(parser)
+    return parser
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -98,13 +109,12 @@ def main(argv: list[str] | None = None) -> int:
 
 def _dispatch(argv: list[str], command: str | None) -> int:
     """Parse ``argv`` (only ``command``'s module imported) and run it; a usage error is status 2."""
-    parser, command_parser = build_parser(command)
     try:
-        if command_parser is None:  # the session's options (--dialect gw), --help, --version, or not a command
-            args = parser.parse_args(argv)
+        if command is None:  # the session's options (--dialect gw), --help, --version, or not a command
+            args = build_parser()[0].parse_args(argv)
             return _load("interactive").main(args)
-        # The sub-parser itself, so a wrong option prints that command's usage.
-        args = command_parser.parse_args(argv[1:])
+        # The command's parser alone, so a wrong option prints that command's usage.
+        args = command_parser(command).parse_args(argv[1:])
     except SystemExit as exit_:  # --help, --version (0) or a usage error (2, usage already printed)
         return exit_.code if isinstance(exit_.code, int) else 2
     args.command = command
