@@ -137,10 +137,14 @@ def test_ctrl_d_leaves(terminal):
     assert terminal.child.exitstatus == 0
 
 
+def session_from_pipe(typed: str, cwd) -> subprocess.CompletedProcess:
+    """``yaseer`` (the session) reading ``typed`` from a pipe in ``cwd``; its outcome."""
+    return subprocess.run([sys.executable, "-m", "yaseer"], input=typed, capture_output=True, text=True,
+                          cwd=cwd, env=dict(os.environ, PYTHONPATH=str(REPO)), timeout=60)
+
+
 def test_plain_input_when_stdin_is_not_a_terminal(tmp_path):
-    typed = "20 PRINT 2\n10 PRINT 1\nLIST\nEDIT 10\nDELETE 5\n"
-    result = subprocess.run([sys.executable, "-m", "yaseer"], input=typed, capture_output=True, text=True,
-                            cwd=tmp_path, env=dict(os.environ, PYTHONPATH=str(REPO)), timeout=60)
+    result = session_from_pipe("20 PRINT 2\n10 PRINT 1\nLIST\nEDIT 10\nDELETE 5\n", tmp_path)
     assert result.returncode == 0
     assert "\x1b" not in result.stdout  # no line editor on a pipe
     assert "10 PRINT 1\n20 PRINT 2\n" in result.stdout

@@ -126,15 +126,9 @@ def test_a_partly_printed_line_is_ended_before_the_prompt(terminal):
 
 
 def test_classroom_commands_from_a_pipe(tmp_path):
-    import os
-    import subprocess
-    import sys
+    from test_interactive import session_from_pipe
 
-    from test_interactive import REPO
-
-    typed = "AUTO 10,5\nprint 1\nprint 2\n\nCLS\nLIST\nTRON\nRUN\n"
-    result = subprocess.run([sys.executable, "-m", "yaseer"], input=typed, capture_output=True, text=True,
-                            cwd=tmp_path, env=dict(os.environ, PYTHONPATH=str(REPO)), timeout=60)
+    result = session_from_pipe("AUTO 10,5\nprint 1\nprint 2\n\nCLS\nLIST\nTRON\nRUN\n", tmp_path)
     assert result.returncode == 0
     assert "\x1b" not in result.stdout  # CLS clears nothing on a pipe
     assert "P0> 10 15 20 P0> P0> 10 PRINT 1\n15 PRINT 2\nP0> P0> [10] 1 \n[15] 2 \n" in result.stdout
