@@ -63,22 +63,19 @@ def helpers(policy: ArithmeticPolicy, to_single, int_divide, int_modulo, power) 
     1.701412E+38 with the dividend's sign, as PC-BASIC 2.0.8 shows.)"""
     result = policy.result
 
-    def divide_single(a, b):
-        try:
-            return to_single(a / b)
-        except ZeroDivisionError:
-            return result(DIVISION_BY_ZERO, a < 0, "!")
-
     def double(x):
         if -DOUBLE_LARGEST <= x <= DOUBLE_LARGEST:
             return x
         return result(OVERFLOW, x < 0, "#")
 
-    def divide_double(a, b):
-        try:
-            return double(a / b)
-        except ZeroDivisionError:
-            return result(DIVISION_BY_ZERO, a < 0, "#")
+    def divider(keep, kind: str):
+        """``/`` whose quotient ``keep`` rounds to the type ``kind`` (``"!"`` or ``"#"``)."""
+        def divide(a, b):
+            try:
+                return keep(a / b)
+            except ZeroDivisionError:
+                return result(DIVISION_BY_ZERO, a < 0, kind)
+        return divide
 
     def by_integer(operation):
         """``\\`` or MOD: a division by zero gives the policy's value."""
@@ -113,5 +110,5 @@ def helpers(policy: ArithmeticPolicy, to_single, int_divide, int_modulo, power) 
             r = math.inf
         return r if r <= largest else result(OVERFLOW, False, "!")
 
-    return {"_dk": double, "_dv": divide_single, "_ddv": divide_double, "_idiv": by_integer(int_divide), "_mod": by_integer(int_modulo),
+    return {"_dk": double, "_dv": divider(to_single, "!"), "_ddv": divider(double, "#"), "_idiv": by_integer(int_divide), "_mod": by_integer(int_modulo),
             "_pow": raise_to, "_exp": exponential}
