@@ -217,10 +217,6 @@ def _same_angle(text: str, angle: float) -> bool:
     return abs(float(text) - angle) < 0.051
 
 
-def _fit(text: str, width: int) -> str:
-    return text if len(text) <= width else text[: max(width - 1, 1)] + "\N{HORIZONTAL ELLIPSIS}"
-
-
 def _colours():
     while True:
         yield from TRACE_COLOURS

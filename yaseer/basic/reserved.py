@@ -37,11 +37,6 @@ UNSUPPORTED = "UNSUPPORTED"  # token type: a reserved word the dialect does not 
 _NAME_TOKENS = ("NAME", "STRNAME")
 
 
-def is_reserved(word: str) -> bool:
-    """Whether ``word`` (upper case, with its ``$``) is a GW-BASIC reserved word."""
-    return word in GW_RESERVED_WORDS
-
-
 def mark_unsupported(tokens: list) -> list:
     """``tokens`` with every name that is a reserved word as an ``UNSUPPORTED`` token.
 

@@ -131,10 +131,6 @@ _RELATIONS = {
 _NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)(E[+-]?\d+)?")
 _LINE_NUMBER = re.compile(r"\s*(\d+)(?=[\sA-Za-z'?]|$)\s?")
 
-def keyword_at(upper: str, i: int, dialect: Dialect = CASIO) -> str | None:
-    """The longest keyword of ``dialect`` that starts at position ``i`` of the upper-cased text."""
-    return _keywords(dialect).at(upper, i)
-
 
 def _syntax_error() -> BasicError:
     return BasicError("Syntax error", SYNTAX_ERROR)
