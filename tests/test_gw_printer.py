@@ -61,3 +61,41 @@ def test_lprint_wraps_at_the_printer_width_as_pcbasic(tmp_path):
     theirs = pcbasic_printer(PROGRAM, tmp_path)
     assert "YYYYYYYYYYY\nYYYY\n" in theirs[1] and theirs[0].endswith("Illegal function call in 130\n")
     assert yaseer_printer(PROGRAM) == theirs
+
+
+DEVICE_WIDTH_PROGRAM = """10 LPRINT STRING$(30, "A")
+20 WIDTH "LPT1:", 20: LPRINT STRING$(30, "B")
+30 WIDTH "lpt1:", 10: LPRINT STRING$(30, "C")
+40 D$ = "LPT1:": WIDTH D$, 25.6: LPRINT STRING$(30, "D")
+50 WIDTH "COM1:", 20: WIDTH "CAS1:", 200: LPRINT STRING$(30, "E")
+60 WIDTH "LPT1:", 255: LPRINT STRING$(100, "F")
+70 WIDTH "SCRN:", 40: PRINT "G": WIDTH "SCRN:", 80: WIDTH "LPT1:", 80: LPRINT "H"
+80 ON ERROR GOTO 200
+90 WIDTH "LPT1:", 256
+100 WIDTH "FOO:", 20
+110 WIDTH "LPT1", 20
+120 WIDTH "", 20
+130 WIDTH "KYBD:", 20
+140 WIDTH "SCRN:", 50
+150 WIDTH "LPT1:", -1
+160 WIDTH "COM1:", 300
+170 END
+200 PRINT ERR; ERL: RESUME NEXT
+"""
+
+
+def test_width_of_a_device_as_pcbasic(tmp_path):
+    """WIDTH "LPT1:", n sets the width LPRINT wraps at at once (GIOLPT.ASM LPTSWD),
+    "SCRN:" the screen's; a name that is no device is Bad file name (64)."""
+    theirs = pcbasic_printer(DEVICE_WIDTH_PROGRAM, tmp_path)
+    assert "BBBBBBBBBBBBBBBBBBBB\nBBBBBBBBBB\n" in theirs[1] and " 64  100 \n" in theirs[0]
+    assert yaseer_printer(DEVICE_WIDTH_PROGRAM) == theirs
+
+
+def test_width_of_a_device_needs_a_string_and_a_width():
+    """As PC-BASIC 2.0.8: no width is a Syntax error, a string width Type mismatch.
+    (``WIDTH 80, 25``, which PC-BASIC takes, stays a Syntax error in yaseer: rows are not emulated.)"""
+    for bad, error in (('WIDTH "LPT1:"', "Syntax error"), ('WIDTH "LPT1:", "A"', "Type mismatch"),
+                       ("WIDTH 80, 25", "Syntax error")):
+        screen, _ = yaseer_printer(f"10 {bad}\n")
+        assert screen == f"{error} in 10\n", (bad, screen)

@@ -615,6 +615,14 @@ class AreaCompiler:
         self.emit("_M.clear_screen()")
 
     def stmt_Width(self, stmt, scope):
+        if stmt.device is not None:
+            if self.kind_of(stmt.device) != "s":
+                raise _syntax_error()  # WIDTH n, rows: the screen rows are not emulated
+            device = self.string(stmt.device, scope)
+            self.emit(f"_M.set_device_width({device}, {self.numeric(stmt.columns, scope)})")
+            return
+        if self.kind_of(stmt.columns) == "s":
+            raise _syntax_error()  # WIDTH "LPT1:" without its width
         self.emit(f"_M.set_width({self.numeric(stmt.columns, scope)}, {stmt.printer})")
 
     def stmt_Dim(self, stmt, scope):

@@ -29,13 +29,13 @@ from yaseer.basic.number_models import initial_value
 from yaseer.basic.files import FileTable, Sandbox
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # MAX_STACK: GOSUB returns + open FOR loops together
 from yaseer.basic.errors import (
-    BasicError, OutputError, BREAK, CANT_CONTINUE, DIVISION_BY_ZERO, DUPLICATE_DEFINITION, FILE_NOT_FOUND, FOR_WITHOUT_NEXT,
+    BasicError, OutputError, BAD_FILE_NAME, BREAK, CANT_CONTINUE, DIVISION_BY_ZERO, DUPLICATE_DEFINITION, FILE_NOT_FOUND, FOR_WITHOUT_NEXT,
     ILLEGAL_FUNCTION_CALL, NEXT_WITHOUT_FOR, OUT_OF_DATA, OUT_OF_MEMORY, OVERFLOW,
     RESUME_WITHOUT_ERROR, RETURN_WITHOUT_GOSUB, SUBSCRIPT_OUT_OF_RANGE, SYNTAX_ERROR,
     UNDEFINED_PROGRAM_AREA, UNDEFINED_USER_FUNCTION,
 )
 from yaseer.basic.scanner import split_lines
-from yaseer.basic.screen import SCREEN_WIDTHS, OutputStream
+from yaseer.basic.screen import DEVICE_WIDTHS, SCREEN_WIDTHS, OutputStream
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
@@ -507,6 +507,21 @@ class Machine:
         if n not in SCREEN_WIDTHS:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         self.screen.width = n
+
+    def set_device_width(self, device: str, columns) -> None:
+        """WIDTH "dev", n: ``LPT1:`` is WIDTH LPRINT n (GW-BASIC's source, GIOLPT.ASM
+        ``LPTSWD``, sets the width LPRINT wraps at), ``SCRN:`` WIDTH n; the other devices
+        GW-BASIC has take 0..255 and change nothing yaseer shows (``KYBD:`` refuses it,
+        Illegal function call); any other text is ``Bad file name``."""
+        action = DEVICE_WIDTHS.get(device.upper())
+        if action is None:
+            raise BasicError("Bad file name", BAD_FILE_NAME)
+        if action == "screen":
+            self.set_width(columns)
+        elif action == "printer":
+            self.set_width(columns, printer=True)
+        elif action == "refused" or not 0 <= runtime.cint(columns) <= 255:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
 
     def set_angle(self, mode: str) -> None:
         """DEG or RAD: the unit SIN, COS, TAN take and ATN returns."""

@@ -349,6 +349,9 @@ class _ToAst(Transformer):
     def width_stmt(self, c):
         return ast.Width(c[-1], len(c) == 3)  # WIDTH LPRINT n: the printer's
 
+    def width_device(self, c):
+        return ast.Width(c[-1], device=c[1])  # WIDTH "LPT1:", n
+
     def deftype_stmt(self, c):
         return ast.DefType(c[0].value[3:], _values(c)[1:])
 

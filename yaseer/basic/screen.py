@@ -28,6 +28,12 @@ if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start
     from typing import TextIO
 
 SCREEN_WIDTHS = (40, 80)  # the widths WIDTH n accepts (GW-BASIC's text screen; PC-BASIC checked)
+# WIDTH "dev", n: what each of GW-BASIC's device names does (any other name: Bad file name).
+# "other": a device yaseer does not have; n is checked (0..255) and changes nothing shown.
+DEVICE_WIDTHS = {
+    "LPT1:": "printer", "SCRN:": "screen", "KYBD:": "refused",
+    "LPT2:": "other", "LPT3:": "other", "COM1:": "other", "COM2:": "other", "CAS1:": "other",
+}
 
 
 class OutputStream:

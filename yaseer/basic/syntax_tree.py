@@ -389,9 +389,11 @@ class Cls:
 @_node
 class Width:
     """``WIDTH n``: the screen's width in columns (PRINT wraps there); ``WIDTH LPRINT n``
-    (``printer``): the printer's (LPRINT wraps there)."""
+    (``printer``): the printer's (LPRINT wraps there); ``WIDTH "LPT1:", n``: the width
+    of the device ``device`` names (a string expression)."""
     columns: object
     printer: bool = False
+    device: object = None
 
 
 @_node
