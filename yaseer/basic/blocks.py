@@ -48,14 +48,15 @@ def _jump_targets(stmt) -> list:
     return []
 
 
-def walk_statements(stmt):
-    """The statement and every statement nested in its IF branches."""
+def walk_statements(stmt, unreachable: bool = True):
+    """The statement and every statement nested in its IF branches (and in the text
+    after ``THEN n:``, which never runs, unless ``unreachable`` is False)."""
     yield stmt
     if isinstance(stmt, ast.If):
-        for branch in (stmt.then, stmt.otherwise, stmt.unreachable):
+        for branch in (stmt.then, stmt.otherwise, stmt.unreachable if unreachable else None):
             if isinstance(branch, list):
                 for s in branch:
-                    yield from walk_statements(s)
+                    yield from walk_statements(s, unreachable)
 
 
 def data_statements(stmt):
@@ -121,7 +122,9 @@ class Plan:
     ``native`` FOR index -> its NEXT index, for loops compiled to ``while``;
     ``for_next`` the same for loops run through the FOR stack; ``next_for`` NEXT
     index -> FOR index; ``fine`` every statement starts a block (RESUME is used);
-    ``branch_for_next`` id(FOR inside an IF branch) -> index of its NEXT.
+    ``branch_for_next`` id(FOR inside an IF branch) -> index of its NEXT;
+    ``branch_nexts`` id(NEXT inside an IF branch) for each NEXT a FOR's scan finds
+    (GW-BASIC's zero-trip loop goes on right after it, in the middle of the branch).
     """
 
     def __init__(self, entries, native, for_next, next_for, fine, branch_for_next):
@@ -241,6 +244,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
             if body_ok and same_pair and f not in dynamic_loops and not any(f < t <= j for t in targets):
                 native[f] = j
     entries = {0, n} | targets
+    bounds = []  # (statement index, NEXT) of each FOR's scan
     for i, stmt in enumerate(statements):
         if fine:
             entries.add(i)  # a line that does not parse too: RESUME NEXT goes on after it
@@ -255,6 +259,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
             bound = scan_for_next(statements, i + 1)
             if bound is not None:
                 entries.add(bound[0] + 1)  # where GW-BASIC goes when the loop runs zero times
+                bounds.append(bound)
         elif not isinstance(stmt, ast.For) and splits(stmt):
             entries.add(i + 1)
         if isinstance(stmt, ast.If):
@@ -262,10 +267,13 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
                 bound = scan_for_next(statements, i + 1, loop) if isinstance(loop, ast.For) else None
                 if bound is not None:
                     entries.add(bound[0] + 1)  # likewise for a FOR in an IF branch
+                    bounds.append(bound)
     # dynamic loops' NEXTs are not consumed; natives' are
     dynamic_for_next = {f: j for f, j in for_next.items() if f not in native}
     branch_for_next = _branch_loops(statements, entries, for_next)  # adds the entries it needs
     result = Plan(sorted(entries), native, dynamic_for_next, next_for, fine, branch_for_next)
+    result.branch_nexts = {id(found) for k, found in bounds if found is not statements[k] and any(
+        s is found for s in walk_statements(statements[k], unreachable=False))}
     _plan_while_loops(statements, result)
     return result
 
@@ -305,9 +313,10 @@ def _branch_loops(statements: list, entries: set, for_next: dict) -> dict:
 
     For a FOR inside an IF branch, or a top-level FOR whose NEXT sits inside an IF
     branch: id(FOR) -> index of the top-level statement holding the closing NEXT.
-    MS-BASIC scans forward for that NEXT and goes on after it; here execution goes on
-    with the statement after the one holding it (exact when the NEXT ends its branch),
-    which therefore becomes a block entry.
+    MS-BASIC scans forward for that NEXT and goes on after it; here (casio, whose
+    FOR is not bound to a NEXT) execution goes on with the statement after the one
+    holding it, which therefore becomes a block entry.  (gw goes on right after the
+    NEXT the FOR's scan finds: ``Plan.branch_nexts``.)
     """
     found = {}
     for i, stmt in enumerate(statements):

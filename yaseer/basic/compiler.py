@@ -233,7 +233,7 @@ class AreaCompiler:
         self.blocks: list[_Block] = [_Block(b) for b in range(len(self.plan.entries))]
         self.block_next: dict[int, int] = {}
         self.while_block: dict[int, int] = {}  # id(WHILE in an IF branch) -> its block
-        self.wend_after: dict[int, _Block] = {}  # id(WEND in an IF branch) -> the block after it
+        self.branch_after: dict[int, _Block] = {}  # id(WEND or NEXT in an IF branch) -> the block after it
         self.prelude: list[str] = []
         self.scalars: set[str] = set()
         self.cur: _Block | None = None
@@ -648,16 +648,27 @@ class AreaCompiler:
             block, indent = self.cur, self.indent
             self.while_block[id(stmt)] = start = self.continuation()
             block.code.append((indent, f"return {start}"))
-        self.emit(f"if not ({self.condition(stmt.condition, scope)}): return {self.after_wend(*found).number}")
+        self.emit(f"if not ({self.condition(stmt.condition, scope)}): return {self.after(*found).number}")
 
-    def after_wend(self, index: int, wend) -> _Block:
-        """The block where execution goes on after ``wend`` (in statement ``index``)."""
-        if wend is self.flat[index][1]:
+    def after(self, index: int, node) -> _Block:
+        """The block where execution goes on after ``node`` (a WEND, or a NEXT a FOR that
+        runs zero times goes on after) in statement ``index``: inside an IF branch, a
+        block of its own that the rest of the branch is compiled into."""
+        if node is self.flat[index][1]:
             return self.blocks[self.entry_block[index + 1]]
-        block = self.wend_after.get(id(wend))
+        block = self.branch_after.get(id(node))
         if block is None:
-            block = self.wend_after[id(wend)] = self.new_block()
+            block = self.branch_after[id(node)] = self.new_block()
         return block
+
+    def continue_after(self, node, fall_through: bool) -> None:
+        """Inside an IF branch: compile the rest of the branch into the block after
+        ``node`` (see :meth:`after`), which the code so far enters if ``fall_through``."""
+        block = self.after(self.index, node)
+        if fall_through:
+            self.emit(f"return {block.number}")
+        self.cur, self.indent = block, 1
+        self.emit(f"_ln = {self.line}")
 
     def stmt_Wend(self, stmt, scope):
         found = self.plan.wend_while.get(id(stmt))
@@ -669,8 +680,7 @@ class AreaCompiler:
             raise CompileError("WEND without WHILE", WEND_WITHOUT_WHILE)
         self.emit(f"return {start}")
         if self.depth:  # the rest of the IF branch goes on in the block after the WEND
-            self.cur, self.indent = self.after_wend(self.index, stmt), 1
-            self.emit(f"_ln = {self.line}")
+            self.continue_after(stmt, fall_through=False)
 
     def stmt_Swap(self, stmt, scope):
         first, kind = self.expr(stmt.first, scope)
@@ -833,7 +843,8 @@ class AreaCompiler:
     def stmt_If(self, stmt, scope):
         cond = self.condition(stmt.condition, scope)
         branches = [b for b in (stmt.then, stmt.otherwise) if isinstance(b, list)]
-        split = any(splits(s) or isinstance(s, (ast.While, ast.Wend)) for b in branches for s in b)
+        split = any(splits(s) or isinstance(s, (ast.While, ast.Wend)) or self.zero_trip_target(s)
+                    for b in branches for s in b)
         if not split:
             self.emit(f"if {cond}:")
             self.branch(stmt.then)
@@ -960,7 +971,8 @@ class AreaCompiler:
         bound = self.bound_next(stmt)
         if bound:  # GW-BASIC: no NEXT, or one naming another loop, is an error; else go on after it
             block.code.append((indent, f"_M.bound_next({bound!r})"))
-            block.code.append((indent, f"if _M.dialect.for_binds_next: return {self.entry_block[bound[0] + 1]}"))
+            after = self.after(bound[0], self.scanned_next(stmt)[1]).number
+            block.code.append((indent, f"if _M.dialect.for_binds_next: return {after}"))
         elif bound is None:
             block.code.append((indent, "_M.bound_next(None)"))
         if skip_index is None:
@@ -973,11 +985,19 @@ class AreaCompiler:
         """What GW-BASIC's FOR finds scanning for its NEXT (``Machine.for_push``):
         ``(statement index, line, names this loop?)``, None for no NEXT.  A FOR inside
         an IF branch scans on from itself through the rest of its IF statement."""
-        found = scan_for_next([s for _, s in self.flat], self.index + 1, stmt if self.depth else None)
+        found = self.scanned_next(stmt)
         if found is None:
             return None
         k, next_stmt = found
         return (k, self.flat[k][0], next_stmt.var is None or next_stmt.var == stmt.var)
+
+    def scanned_next(self, stmt):
+        """``(statement index, NEXT)`` that the FOR ``stmt``'s scan finds, or None."""
+        return scan_for_next([s for _, s in self.flat], self.index + 1, stmt if self.depth else None)
+
+    def zero_trip_target(self, stmt) -> bool:
+        """Does ``stmt`` hold, in an IF branch, a NEXT that a zero-trip FOR goes on after?"""
+        return any(id(s) in self.plan.branch_nexts for s in walk_statements(stmt, unreachable=False))
 
     def stmt_Next(self, stmt, scope):
         var = stmt.var
@@ -987,12 +1007,14 @@ class AreaCompiler:
             self.emit("#FLUSH#")
             self.emit("if _next_any(): return _M.frame_body")
             self.emit("#RELOAD#")
-            return
-        target, key = self.loop_var(var, scope)
-        self.emit(f"_f = _next({key!r}, {self.index})")
-        self.emit(f"{target} = {self.stepping(var, target, '_f.step')}")
-        self.emit(f"if {target} <= _f.limit if _f.step >= 0.0 else {target} >= _f.limit: return _f.body")
-        self.emit("_pop()")
+        else:
+            target, key = self.loop_var(var, scope)
+            self.emit(f"_f = _next({key!r}, {self.index})")
+            self.emit(f"{target} = {self.stepping(var, target, '_f.step')}")
+            self.emit(f"if {target} <= _f.limit if _f.step >= 0.0 else {target} >= _f.limit: return _f.body")
+            self.emit("_pop()")
+        if id(stmt) in self.plan.branch_nexts:  # a zero-trip FOR goes on here, inside the branch
+            self.continue_after(stmt, fall_through=True)
 
     def loop_mode(self, stmt) -> str:
         """How to run the native loop now being compiled.
