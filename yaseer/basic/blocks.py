@@ -84,9 +84,14 @@ def nodes(value):
             stack.extend(getattr(item, name) for name in item._fields)
 
 
-def splits(stmt) -> bool:
-    """True when code after ``stmt`` must be enterable from outside (a return point)."""
+def splits(stmt, bare_returns=frozenset()) -> bool:
+    """True when code after ``stmt`` must be enterable from outside (a return point).
+
+    A GOSUB to a line of ``bare_returns`` (lines that start with a plain RETURN) is
+    compiled in place (see :func:`bare_return_lines`) and returns nowhere."""
     for s in walk_statements(stmt):
+        if isinstance(s, ast.Gosub) and s.target in bare_returns:
+            continue
         if isinstance(s, (ast.Gosub, ast.Stop, ast.For, ast.Trace, ast.Erase, ast.OptionBase)):
             return True
         if isinstance(s, ast.OnJump) and s.gosub:
@@ -104,12 +109,27 @@ _NATIVE_BODY = (
 )  # not INPUT nor LINE INPUT: they start a block (see plan)
 
 
-def _native_statement(stmt) -> bool:
+def bare_return_lines(flat: list, fine: bool) -> frozenset:
+    """The lines whose first statement is a plain RETURN: a GOSUB to one of them pushes
+    its return point and pops it at once, so it is compiled in place as the check for
+    a full stack alone (the block and return point it would need are not made).  None
+    in a program that uses RESUME (every statement is a block there)."""
+    if fine:
+        return frozenset()
+    first: dict[int, object] = {}
+    for number, stmt in flat:
+        first.setdefault(number, stmt)
+    return frozenset(number for number, stmt in first.items() if type(stmt) is ast.Return)
+
+
+def _native_statement(stmt, bare_returns=frozenset()) -> bool:
     """May ``stmt`` sit inside a native loop (no jump, no return point, no NEXT)?"""
     for s in walk_statements(stmt):
         if isinstance(s, ast.If):
             if isinstance(s.then, int) or isinstance(s.otherwise, int):
                 return False
+        elif isinstance(s, ast.Gosub) and s.target in bare_returns:
+            continue
         elif not isinstance(s, _NATIVE_BODY):
             return False
     return True
@@ -124,12 +144,14 @@ class Plan:
     index -> FOR index; ``fine`` every statement starts a block (RESUME is used);
     ``branch_for_next`` id(FOR inside an IF branch) -> index of its NEXT;
     ``branch_nexts`` id(NEXT inside an IF branch) for each NEXT a FOR's scan finds
-    (GW-BASIC's zero-trip loop goes on right after it, in the middle of the branch).
+    (GW-BASIC's zero-trip loop goes on right after it, in the middle of the branch);
+    ``bare_returns`` the lines a GOSUB to which is compiled in place (:func:`bare_return_lines`).
     """
 
-    def __init__(self, entries, native, for_next, next_for, fine, branch_for_next):
+    def __init__(self, entries, native, for_next, next_for, fine, branch_for_next, bare_returns=frozenset()):
         self.entries, self.native, self.for_next = entries, native, for_next
         self.next_for, self.fine, self.branch_for_next = next_for, fine, branch_for_next
+        self.bare_returns = bare_returns
 
 
 def _match_loops(flat: list) -> tuple[dict, dict]:
@@ -209,6 +231,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
     statements = [s for _, s in flat]
     fine = any(isinstance(s, ast.Resume) and s.mode != "line"
                for stmt in statements if not isinstance(stmt, BasicError) for s in walk_statements(stmt))
+    bare_returns = bare_return_lines(flat, fine)
     first_index: dict[int, int] = {}
     for i, (number, _) in enumerate(flat):
         first_index.setdefault(number, i)
@@ -235,7 +258,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
                         break
                     k = native[k] + 1
                     continue
-                if isinstance(stmt, BasicError) or not _native_statement(stmt):
+                if isinstance(stmt, BasicError) or not _native_statement(stmt, bare_returns):
                     body_ok = False
                     break
                 k += 1
@@ -260,7 +283,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
             if bound is not None:
                 entries.add(bound[0] + 1)  # where GW-BASIC goes when the loop runs zero times
                 bounds.append(bound)
-        elif not isinstance(stmt, ast.For) and splits(stmt):
+        elif not isinstance(stmt, ast.For) and splits(stmt, bare_returns):
             entries.add(i + 1)
         if isinstance(stmt, ast.If):
             for loop in walk_statements(stmt):
@@ -271,7 +294,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
     # dynamic loops' NEXTs are not consumed; natives' are
     dynamic_for_next = {f: j for f, j in for_next.items() if f not in native}
     branch_for_next = _branch_loops(statements, entries, for_next)  # adds the entries it needs
-    result = Plan(sorted(entries), native, dynamic_for_next, next_for, fine, branch_for_next)
+    result = Plan(sorted(entries), native, dynamic_for_next, next_for, fine, branch_for_next, bare_returns)
     result.branch_nexts = {id(found) for k, found in bounds if found is not statements[k] and any(
         s is found for s in walk_statements(statements[k], unreachable=False))}
     _plan_while_loops(statements, result)

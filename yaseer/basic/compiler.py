@@ -160,6 +160,16 @@ def _is_constant(node) -> bool:
     return isinstance(node, ast.Num) or (isinstance(node, ast.Unary) and _is_constant(node.operand))
 
 
+def _constant_value(node) -> float | None:
+    """The value of a number literal, or of one with signs before it (``-1.5``); else None."""
+    if isinstance(node, ast.Num):
+        return float(node.value)
+    if isinstance(node, ast.Unary) and node.op in "+-":
+        value = _constant_value(node.operand)
+        return None if value is None else (-value if node.op == "-" else value)
+    return None
+
+
 def _may_overflow(node, single: bool = False) -> bool:
     """Could this numeric expression produce inf from finite values?  (``single``: the
     typed model, where adding a constant may leave the single range too.)"""
@@ -247,6 +257,8 @@ class AreaCompiler:
         self.data_lines: dict = {}
         self.scope = _BlockScope(self)
         self.counting_vars: set[str] = set()  # native loop variables that stay >= 0
+        self.idle_body = False  # the native loop being compiled has an empty body
+        self.whole_index: dict[str, str] = {}  # constant loop variable -> local of its subscript
         self.open_loops: list[tuple] = []  # the native loops around the code being emitted
         self.break_infos: list[tuple] = []  # #BREAK#k markers: (BASIC line, open loops)
         self.break_points: dict[int, dict] = {}  # block -> {Python line: (BASIC line, open loops)}
@@ -325,6 +337,8 @@ class AreaCompiler:
             if isinstance(index, ast.Num) and index.value >= self.lowest_fast_subscript \
                     and index.value == int(index.value):
                 code += f"[{int(index.value)}]"
+            elif isinstance(index, ast.Var) and index.name in self.whole_index and isinstance(scope, _BlockScope):
+                code += f"[{self.whole_index[index.name]}]"  # the subscript of a constant loop's value
             elif isinstance(index, ast.Var) and index.name in self.counting_vars and isinstance(scope, _BlockScope) \
                     and not self.plan.option_base:
                 code += f"[int({scope.scalar(index.name)} + 0.5)]"  # a loop variable known to be >= 0
@@ -552,6 +566,13 @@ class AreaCompiler:
         return block.number
 
     def stmt_Gosub(self, stmt, scope):
+        if stmt.target in self.plan.bare_returns:
+            # a subroutine that is a plain RETURN: push and pop in place (a full stack
+            # is still Out of memory at the GOSUB; TRON still shows the RETURN's line)
+            self.emit(f"if len(_stk) >= {MAX_STACK}: _oom()")
+            if self.trace:
+                self.emit(f"_tr({stmt.target})")
+            return
         target = self.jump(stmt.target)
         block, indent = self.cur, self.indent
         ret = self.continuation()
@@ -843,7 +864,7 @@ class AreaCompiler:
     def stmt_If(self, stmt, scope):
         cond = self.condition(stmt.condition, scope)
         branches = [b for b in (stmt.then, stmt.otherwise) if isinstance(b, list)]
-        split = any(splits(s) or isinstance(s, (ast.While, ast.Wend)) or self.zero_trip_target(s)
+        split = any(splits(s, self.plan.bare_returns) or isinstance(s, (ast.While, ast.Wend)) or self.zero_trip_target(s)
                     for b in branches for s in b)
         if not split:
             self.emit(f"if {cond}:")
@@ -939,9 +960,23 @@ class AreaCompiler:
                 self.emit(f"if {test}:")
                 self.indent += 1
                 self.emit(f"_it{n} = _fcount(_v{n}, _l{n}, _s{n})")
+                if self.idle_body:  # an empty body: the passes are counted in C, in chunks
+                    self.emit(f"_i{n} = 0")
                 self.emit("try:")
                 self.indent += 1
-                self.emit(f"for _i{n} in _it{n}:")
+                self.emit(f"for _i{n} in {'_fidle(_it%s)' % n if self.idle_body else '_it%s' % n}:")
+                return n, var, step_value, mode
+            if mode == "constant":
+                values, _ = self.constant_passes(stmt)
+                self.emit(f"if {test}:")
+                self.indent += 1
+                if not self.plan.option_base and all(v == int(v) and 0 <= v < 2.0 ** 52 for v in values):
+                    # the subscript of each value too: the body indexes arrays with it
+                    self.whole_index[stmt.var.name] = f"_k{n}"
+                    pairs = "".join(f"({int(v)}, {v!r}), " for v in values)
+                    self.emit(f"for _k{n}, {var} in ({pairs}):")
+                else:
+                    self.emit(f"for {var} in ({''.join(f'{v!r}, ' for v in values)}):")
                 return n, var, step_value, mode
             if mode == "values":
                 # the body never changes the variable: iterate over its values
@@ -1021,16 +1056,19 @@ class AreaCompiler:
 
         ``"while"``: test and add the step each pass (always right; used for a
         short loop with constant bounds, or when the body may change the variable);
+        ``"constant"``: such a short loop in plain doubles iterates over a tuple of
+        its values made at compile time (:meth:`constant_passes`), with each value's
+        subscript beside it when all are whole numbers >= 0;
         ``"values"``: ``for var in _frange(...)`` when nothing in the body can
         change the variable; ``"count"``: ``for _ in range(n)`` when the body does
         not even read it (the variable's value is set after the loop, or on an error).
         """
         if not self.iterable_loop(stmt.var):
             return "while"
-        if all(isinstance(x, ast.Num) or x is None for x in (stmt.start, stmt.stop, stmt.step)):
-            step = 1.0 if stmt.step is None else stmt.step.value
-            if step and 0 <= (stmt.stop.value - stmt.start.value) / step < 16:
-                return "while"
+        start, stop = _constant_value(stmt.start), _constant_value(stmt.stop)
+        step = 1.0 if stmt.step is None else _constant_value(stmt.step)
+        if start is not None and stop is not None and step and 0 <= (stop - start) / step < 16:
+            return "constant" if self.constant_passes(stmt) else "while"
         first, last = self.loop_range
         body = [self.flat[k][1] for k in range(first + 1, last)]
         if any(isinstance(node, ast.FnCall) or node == stmt.var for node in nodes(body)):
@@ -1106,11 +1144,41 @@ class AreaCompiler:
         if self.trace and self.line_first[number] == i:
             self.emit(f"_tr({number})")
 
+    def constant_passes(self, stmt) -> tuple[list, float] | None:
+        """A short loop known at compile time: (the values of the variable, one per pass;
+        its value after the loop), found by adding the step as the loop does.
+
+        Only for a scalar FOR with constant bounds and fewer than 16 passes (the short
+        loops :meth:`loop_mode` would run as ``while``, and those that never run) whose numbers are plain doubles
+        stepped by a plain ``+`` (the casio dialect's); None for any other loop.
+        """
+        if self.numbers.typed or self.numbers.loop_helpers("n")[1] != "{var} + {step}":
+            return None
+        if not isinstance(stmt.var, ast.Var) or self.kind_of(stmt.var) == "s":
+            return None
+        value, limit = _constant_value(stmt.start), _constant_value(stmt.stop)
+        step = 1.0 if stmt.step is None else _constant_value(stmt.step)
+        if value is None or limit is None or step is None or not step or not (limit - value) / step < 16:  # (a loop that never runs is one too)
+            return None
+        values = []
+        while (value <= limit) if step > 0 else (value >= limit):
+            values.append(value)
+            value = value + step
+        return values, value
+
     def native_loop(self, i: int) -> int:
         """Emit FOR at ``i`` ... its NEXT as a Python while loop; the index after NEXT."""
         j = self.plan.native[i]
         stmt = self.flat[i][1]
         scope = _BlockScope(self)
+        # nothing between FOR and NEXT (and no TRON line marks): a delay loop
+        self.idle_body = j == i + 1 and not self.trace
+        passes = self.constant_passes(stmt) if self.idle_body else None
+        if passes is not None:  # a short delay loop: its variable's final value
+            self.emit(f"{scope.scalar(stmt.var.name, write=True)} = {passes[1]!r}")
+            self.line = None
+            self.set_line(self.flat[j][0])
+            return j + 1
         block, mark = self.cur, len(self.cur.code)
         self.loop_range = (i, j)
         try:
@@ -1152,6 +1220,10 @@ class AreaCompiler:
         elif mode == "values":
             self.indent -= 1
             self.emit(f"{var} = {increment}")
+        elif mode == "constant":
+            self.indent -= 1
+            self.emit(f"{var} = {self.constant_passes(stmt)[1]!r}")
+            self.whole_index.pop(stmt.var.name, None)
         else:
             self.emit(f"{var} = {increment}")
             self.indent -= 1

@@ -404,7 +404,7 @@ class Machine:
             "_cat": runtime.concat, "_pow": runtime.power, "_idiv": runtime.int_divide,
             "_mod": runtime.modulo, "_and": runtime.logical_and, "_or": runtime.logical_or,
             "_not": runtime.logical_not, "_frange": runtime.float_range,
-            "_fcount": runtime.pass_counter, "_fvalue": runtime.counted_value,
+            "_fcount": runtime.pass_counter, "_fidle": runtime.idle_passes, "_fvalue": runtime.counted_value,
             "_fafter": runtime.counted_final, "_tr": self.trace_line, "_cint": lambda x: float(runtime.cint(x)),
             "_csng": float, "_cdbl": float,
         }

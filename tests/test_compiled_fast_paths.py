@@ -1,0 +1,167 @@
+"""The compiler's fast paths give what the general code gives (issue 15).
+
+Each fast path is checked against the same program with the fast path defeated:
+an unreachable ``RESUME NEXT`` line makes every statement a block of its own, so
+no GOSUB is compiled in place and no FOR loop is native (the general path of the
+FOR stack and the GOSUB stack); or against values computed here in Python.  Each
+test also checks that the fast path is really in the generated code.
+"""
+
+from __future__ import annotations
+
+import io
+import time
+
+import pytest
+
+from test_basic_cont import checked_break_points, run_with_breaks
+from test_basic_helpers import error_of, run_text
+from yaseer.basic import runtime
+from yaseer.basic.machine import Machine
+
+DEFEAT = "\n64999 END\n65000 RESUME NEXT\n"  # never reached: only makes the general code be compiled
+
+
+def source_of(program: str, **options) -> str:
+    """The Python the compiler makes of area 0 of ``program``."""
+    machine = Machine(screen=io.StringIO(), **options)
+    machine.load(program)
+    machine.run()
+    return machine.compiled[0].source
+
+
+def same_as_general(program: str, **options) -> str:
+    """The screen of ``program``, checked equal to the screen of its defeated form."""
+    fast = run_text(program, **options)
+    assert fast == run_text(program + DEFEAT, **options)
+    return fast
+
+
+# ---------------------------------------------------------------- GOSUB to a line holding RETURN
+
+BARE_SUBROUTINES = [
+    "10 K=K+1: GOSUB 100: IF K<50 THEN 10\n20 PRINT K: END\n100 RETURN",
+    "10 FOR I=1 TO 30: IF I MOD 3=0 THEN GOSUB 100: C=C+1 ELSE GOSUB 100\n20 NEXT I: PRINT I;C: END\n100 RETURN",
+    "10 FOR I=1 TO 20: GOSUB 100: S=S+I: NEXT: GOSUB 200: PRINT S;I;T: END\n100 RETURN\n"
+    "200 T=T+1: GOSUB 100: RETURN",
+    "10 GOSUB 100: PRINT 1: GOSUB 100: PRINT 2: END\n100 RETURN: PRINT 3",
+]
+
+
+@pytest.mark.parametrize("dialect", ["casio", "gw"])
+@pytest.mark.parametrize("program", BARE_SUBROUTINES)
+def test_gosub_to_a_bare_return_is_compiled_in_place(program, dialect):
+    same_as_general(program, dialect=dialect)
+    # only the GOSUB 200 (a subroutine that does something) pushes a return point
+    assert source_of(program, dialect=dialect).count("_stk.append") == program.count("GOSUB 200")
+
+
+def test_gosub_to_a_bare_return_still_fills_the_stack():
+    # line 10 recurses through GOSUB 10 until the stack is full: the next GOSUB 100
+    # (compiled in place) is the one that finds it full, at line 10, with N the depth
+    program = "10 GOSUB 100: N=N+1: GOSUB 10\n100 RETURN"
+    general = program.replace("100 RETURN", "100 REM\n110 RETURN")  # line 100 no longer a bare RETURN
+    machine = Machine(screen=io.StringIO())
+    machine.load(program)
+    with pytest.raises(Exception) as fast:
+        machine.run()
+    assert str(fast.value) == error_of(general) == "Out of memory in 10"
+    assert machine.scalar("N") == 10_000  # MAX_STACK GOSUB 10 returns were pushed
+
+
+def test_gosub_to_a_bare_return_is_traced_as_the_return_line():
+    # TRON shows the RETURN's line once per call, as the general code does
+    program = "10 TRON: GOSUB 100: PRINT: GOSUB 100: END\n100 RETURN"
+    traced = run_text(program)
+    assert traced == run_text(program + DEFEAT) and traced.count("[100]") == 2
+
+
+def test_gosub_returns_into_a_native_loop_without_ending_it():
+    program = "10 FOR I=1 TO 5: GOSUB 100: S=S+I: NEXT I: PRINT S;I: END\n100 RETURN"
+    assert same_as_general(program) == " 15  6 \n"
+    source = source_of(program)
+    assert "n_I in ((" in source and "_stk.append" not in source  # one native loop
+
+
+# ---------------------------------------------------------------- empty loops (delay loops)
+
+@pytest.mark.parametrize("start, stop, step", [
+    (1, 3 * runtime.IDLE_CHUNK + 5, 1), (1, runtime.IDLE_CHUNK, 1), (2, runtime.IDLE_CHUNK + 1, 1),
+    (4_000_000, -1_000_000, -3), (5, 1, 1), (0, 1000, 0.5)])
+def test_an_empty_loop_counts_its_passes_in_chunks(start, stop, step):
+    program = f"10 FOR I={start} TO {stop} STEP {step}: NEXT I\n20 PRINT I"
+    value = float(start)  # the variable after the loop, by repeated + STEP
+    if (stop - start) / step >= 0:
+        passes = int((stop - start) // step) + 1
+        value = start + passes * step
+    machine = Machine(screen=io.StringIO())
+    machine.load(program)
+    machine.run()
+    assert machine.scalar("I") == value
+    if step == 1 and stop > 100:
+        assert "_fidle(" in machine.compiled[0].source
+
+
+@pytest.mark.parametrize("loop, final", [
+    ("FOR L=1 TO 5", 6.0), ("FOR L=3 TO 1", 3.0), ("FOR L=5 TO 1 STEP -1.5", 0.5),
+    ("FOR L=0 TO 1 STEP 0.1", None), ("FOR L=1 TO 15", 16.0)])
+def test_a_short_empty_loop_is_its_final_value(loop, final):
+    program = f"10 {loop}\n20 NEXT L\n30 PRINT L;L*1E15"
+    if final is None:  # 0.1 added eleven times, as the loop adds it
+        final = 0.0
+        while final <= 1:
+            final += 0.1
+    assert same_as_general(program) == run_text(f"10 L={final!r}\n30 PRINT L;L*1E15")
+    assert "while" not in source_of(program) and "for " not in source_of(program)
+
+
+# ---------------------------------------------------------------- short loops with constant bounds
+
+@pytest.mark.parametrize("program", [
+    "10 DIM M(5): FOR K=1 TO 3: FOR L=1 TO 5: M(L)=M(L)+L*K: NEXT L: NEXT K\n20 PRINT M(1);M(5);L;K",
+    "10 FOR L=0 TO 1 STEP .25: S=S+L: PRINT L;: NEXT\n20 PRINT S;L",
+    "10 FOR L=5 TO 0 STEP -1: A(L)=L: S=S+A(L): NEXT: PRINT S;L",
+])
+def test_a_short_constant_loop_iterates_over_its_values(program):
+    same_as_general(program)
+    assert "n_L in (" in source_of(program)  # the tuple of values made at compile time
+
+
+def test_a_short_constant_loop_indexes_arrays_with_its_whole_values():
+    program = "10 DIM M(5): FOR L=1 TO 5: M(L)=L*L: NEXT L\n20 PRINT M(1);M(3);M(5);L"
+    assert same_as_general(program) == " 1  9  25  6 \n"
+    assert "a_M[_k" in source_of(program)
+
+
+def test_an_error_in_a_short_constant_loop_names_its_line_and_keeps_the_variable():
+    program = "10 DIM M(2)\n20 FOR L=1 TO 5\n30 M(L)=L\n40 NEXT L"
+    assert error_of(program) == error_of(program + DEFEAT) == "Subscript out of range in 30"
+    machine = Machine(screen=io.StringIO())
+    machine.load("10 ON ERROR GOTO 100\n20 DIM M(2): FOR L=1 TO 5: M(L)=L: NEXT L\n30 END\n100 PRINT L;ERL: END")
+    machine.run()
+    assert machine.scalar("L") == 3.0
+
+
+# ---------------------------------------------------------------- Ctrl-C and CONT on the fast paths
+
+BROKEN = {
+    "delay loops": "10 FOR J=1 TO 300: FOR I=1 TO 40000: NEXT I: S=S+J: NEXT J\n20 PRINT S;I;J",
+    "a short constant loop": ("10 DIM M(5): FOR J=1 TO 60000: FOR L=1 TO 5: M(L)=M(L)+L*J: NEXT L: NEXT J\n"
+                              "20 PRINT M(1);M(5);L;J"),
+    "a GOSUB in place": "10 K=K+1: GOSUB 100: S=S+K: IF K<150000 THEN 10\n20 PRINT K;S: END\n100 RETURN",
+}
+
+
+@pytest.mark.parametrize("name", list(BROKEN))
+def test_fast_paths_broken_and_continued_print_what_they_print_unbroken(name):
+    program = BROKEN[name]
+    started = time.perf_counter()
+    reference, _ = run_with_breaks(program, None)
+    every = max(0.002, (time.perf_counter() - started) / 6)
+    output, breaks = run_with_breaks(program, every)
+    assert breaks >= 1
+    assert output == reference == run_text(program + DEFEAT)
+
+
+def test_fast_paths_break_only_on_lines_nothing_can_interrupt_half_way():
+    assert checked_break_points(BROKEN.values()) >= 4
