@@ -179,3 +179,37 @@ def test_list_reads_a_line_as_the_dialect_reads_it(tmp_path):
     casio.handle("LIST")
     # GW-BASIC reads a run of letters as one word (COST is a name); the Casio finds keywords first
     assert shown == ["10 COST=1:PRINT COST\n", "10 COS T=1:PRINT COS T\n"]
+
+
+@pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+def test_gw_overflow_of_a_literal_is_shown_when_the_line_is_typed_as_pcbasic(tmp_path):
+    """GW-BASIC reads a literal when the line is entered: ``Overflow`` then, once (not at
+    each RUN), and the literal is the largest number; a direct statement shows it first."""
+    from test_differential_support import PcBasic
+
+    typed = ["10 A = 1E+39: PRINT A; -1D+39", '20 PRINT "1E+39"; 1E+38: REM 1E+39', "PRINT 2E+39 * 0; 3",
+             "RUN", "RUN", "20 PRINT 4E+39", "RUN"]
+    pc = PcBasic()
+    shown = []
+    gw = Session(write=shown.append, engine=MachineEngine(shown.append, dialect="gw"), directory=tmp_path,
+                 dialect="gw")
+    theirs, ours = [], []
+    for line in typed:
+        theirs.append(pc.statement(line))
+        gw.handle(line)
+        ours.append("".join(shown))
+        shown.clear()
+    pc.close()
+    assert theirs[0] == "Overflow\nOverflow\n" and theirs[3] == theirs[4]
+    assert ours == theirs
+
+
+def test_gw_load_and_run_of_a_file_show_the_overflow_of_its_literals_once(tmp_path):
+    (tmp_path / "big.bas").write_text("10 PRINT 1E+39; 1D+39\n20 PRINT 5\n")
+    shown = []
+    gw = Session(write=shown.append, engine=MachineEngine(shown.append, dialect="gw"), directory=tmp_path,
+                 dialect="gw")
+    gw.shown = shown
+    assert after(gw, 'LOAD "big"') == "Overflow\nOverflow\n"
+    assert after(gw, "RUN") == " 1.701412E+38  1.701411834604692D+38 \n 5 \n"
+    assert after(gw, 'RUN "big"') == "Overflow\nOverflow\n 1.701412E+38  1.701411834604692D+38 \n 5 \n"

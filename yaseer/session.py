@@ -39,7 +39,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
-from yaseer.basic.scanner import detokenize
+from yaseer.basic.scanner import detokenize, entry_messages
 from yaseer.basic.errors import (
     BREAK,
     CANT_CONTINUE,
@@ -314,9 +314,20 @@ class Session:
         """Type ``number text``: store (or, with no text, delete) a line."""
         if text.strip():
             self.program[number] = text
+            self._show_entry_messages({number: text})
         else:
             self.program.pop(number, None)
         self._can_continue = False
+
+    def _show_entry_messages(self, program: Program) -> None:
+        """What GW-BASIC prints when it reads the lines ``program`` in (``Overflow`` for
+        a literal beyond the range: scanner.entry_messages), one row each."""
+        from yaseer.basic.dialect import get_dialect
+
+        dialect = get_dialect(self.dialect)
+        for number in sorted(program):
+            for message in entry_messages(program[number], dialect):
+                self.write(message + "\n")
 
     def _auto_line(self, text: str) -> None:
         """A line typed after an AUTO number (see the module docstring)."""
@@ -416,6 +427,7 @@ class Session:
     def command_load(self, argument: str) -> None:
         """LOAD "file": replace the current area's program with the file's."""
         self.programs[self.area] = read_listing_file(file_name_argument(argument), self.directory)
+        self._show_entry_messages(self.program)
         self._can_continue = False
 
     def command_save(self, argument: str) -> None:
@@ -439,6 +451,7 @@ class Session:
         """
         if argument.startswith('"'):
             self.programs[0] = read_listing_file(file_name_argument(argument), self.directory)
+            self._show_entry_messages(self.programs[0])
             argument = ""
         if argument and not argument.isdigit():
             raise BasicError("Syntax error", SYNTAX_ERROR)
@@ -625,7 +638,7 @@ class MachineEngine:
         for area, program in areas.items():
             held = machine.programs.get(area)
             if program and held != {n: text.strip() for n, text in program.items()}:
-                machine.load(program_text(program), area=area)
+                machine.load(program_text(program), area=area, entered=False)  # shown when typed
             elif not program and held is not None and area in LIBRARY_AREAS:
                 from yaseer import binding
 

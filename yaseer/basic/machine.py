@@ -34,7 +34,7 @@ from yaseer.basic.errors import (
     RESUME_WITHOUT_ERROR, RETURN_WITHOUT_GOSUB, SUBSCRIPT_OUT_OF_RANGE, SYNTAX_ERROR,
     UNDEFINED_PROGRAM_AREA, UNDEFINED_USER_FUNCTION,
 )
-from yaseer.basic.scanner import split_lines
+from yaseer.basic.scanner import entry_messages, split_lines
 from yaseer.basic.screen import DEVICE_WIDTHS, SCREEN_WIDTHS, OutputStream
 
 TYPE_CHECKING = False
@@ -275,12 +275,18 @@ class Machine:
         self.on_clear_screen: Callable[[], object] | None = None
 
     # ------------------------------------------------------------ programs
-    def load(self, text: str, area: int = 0) -> None:
-        """Replace area ``area``'s program by the listing ``text`` (line -> text)."""
+    def load(self, text: str, area: int = 0, entered: bool = True) -> None:
+        """Replace area ``area``'s program by the listing ``text`` (line -> text).
+
+        ``entered``: the lines are entered now, so the messages GW-BASIC prints when
+        it reads a line are shown (``Overflow`` of a literal: :func:`scanner.entry_messages`);
+        False for lines entered before (the session hands its typed program over at RUN)."""
         program: dict[int, str] = {}
         for number, statement_text, _ in split_lines(text):
             if statement_text:
                 program[number] = statement_text
+                if entered:
+                    self.show_messages(entry_messages(statement_text, self.dialect))
             else:
                 program.pop(number, None)
         self.programs[area] = program
@@ -295,6 +301,14 @@ class Machine:
         else:
             program.pop(number, None)
         self._invalidate(area)
+
+    def show_messages(self, messages: list[str]) -> None:
+        """Print each message on a row of its own, as GW-BASIC does where it reads a line
+        (not in ``--format csv``, whose rows are values)."""
+        for message in messages:
+            if not self.csv:
+                self.screen.write(message)
+                self.screen.new_row()
 
     def set_area(self, n: int, area) -> None:
         """Bind program area ``n`` to a Python callable ``area(machine)`` or BASIC text."""
@@ -1018,6 +1032,7 @@ class Machine:
 
     def execute_direct(self, text: str) -> str:
         """Run statements typed without a line number against the same variables."""
+        self.show_messages(entry_messages(text, self.dialect))
         compiled = self._compile("direct", {0: text}, direct=True)
         self.namespaces.pop("direct", None)
         try:

@@ -224,14 +224,18 @@ _RADIX_NUMBER = re.compile(r"&(H[0-9A-F]*|O?[0-7]*)")
 SINGLE_DIGITS = 7  # a literal with more significant digits is double precision (GW-BASIC)
 
 
-def _scan_typed_number(upper: str, i: int) -> tuple[tuple, int]:
+def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[tuple, int]:
     """A GW-BASIC number literal: ``((value, type), end)`` with type ``%``, ``!`` or ``#``.
 
     Without a suffix a whole number below 32768 is an integer, a ``D`` exponent or
     more than 7 digits makes a double, anything else is single precision.
     ``&H1F`` / ``&O17`` / ``&17`` are 16-bit integers (``&HFFFF`` is -1).
+    A decimal literal beyond MBF's range (``1E+39``, ``1D+39``) is the largest number of
+    its type, and ``"Overflow"`` is added to ``notes``: GW-BASIC's tokeniser prints it
+    when the line is entered (PC-BASIC 2.0.8: when a program is loaded), not when the
+    line runs; see :func:`entry_messages`.
     """
-    from yaseer.basic.numbers import DOUBLE_LARGEST, single_literal, to_single
+    from yaseer.basic.numbers import DOUBLE_LARGEST, SINGLE_LARGEST, single_literal, to_single
 
     if upper[i] == "&":
         match = _RADIX_NUMBER.match(upper, i)
@@ -247,8 +251,6 @@ def _scan_typed_number(upper: str, i: int) -> tuple[tuple, int]:
         raise _syntax_error()
     mantissa, letter, exponent, suffix = match.groups()
     value = float(mantissa + ("E" + (exponent if exponent.strip("+-") else "0") if letter else ""))
-    if value == float("inf"):
-        raise BasicError("Overflow", OVERFLOW)
     plain = letter is None and "." not in mantissa
     if suffix == "%" or (not suffix and plain and value < 32768):
         if not value.is_integer() and suffix == "%":
@@ -261,19 +263,48 @@ def _scan_typed_number(upper: str, i: int) -> tuple[tuple, int]:
     digits = len(mantissa.replace(".", "").lstrip("0").rstrip("0") if "." in mantissa else mantissa.lstrip("0"))
     if suffix == "#" or (not suffix and (letter == "D" or digits > SINGLE_DIGITS)):
         if value > DOUBLE_LARGEST:  # MBF's double range ends where the single's does
-            raise BasicError("Overflow", OVERFLOW)
+            value = _overflowed(DOUBLE_LARGEST, notes)
         return (value, "#"), match.end()
     single = to_single(value)
     if not single - single:  # in range: the value GW-BASIC's conversion gives (numbers.mbf_single)
         single = single_literal(match.group(0).rstrip("!#%"))
     if single - single:  # beyond the single range
-        raise BasicError("Overflow", OVERFLOW)
+        single = _overflowed(SINGLE_LARGEST, notes)
     return (single, "!"), match.end()
 
 
-def _lexemes(text: str, dialect: Dialect = CASIO):
+def _overflowed(largest: float, notes: list | None) -> float:
+    """The value of a literal beyond the range: ``largest``, noting GW's message."""
+    if notes is not None:
+        notes.append("Overflow")
+    return largest
+
+
+# Only a literal with an exponent of two digits or more, or with 30 digits in a row, can
+# pass 1.7E+38: lines without one are not scanned for entry messages.
+_MAY_OVERFLOW = re.compile(r"[EDed][+]?\d\d|\d{30}")
+
+
+def entry_messages(text: str, dialect: Dialect = CASIO) -> list[str]:
+    """The messages GW-BASIC prints when the line ``text`` is entered or loaded: one
+    ``Overflow`` for each number literal beyond the range (GWMAIN.ASM's tokeniser reads
+    numbers as it stores the line; PC-BASIC 2.0.8 prints them when it loads a program,
+    before RUN).  Literals in strings, remarks and DATA are text and print nothing."""
+    if not dialect.typed_numbers or not _MAY_OVERFLOW.search(text):
+        return []
+    notes: list[str] = []
+    try:
+        for _ in _lexemes(text, dialect, notes):
+            pass
+    except BasicError:
+        pass  # a character no token starts with: the line's error is reported when it runs
+    return notes
+
+
+def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
     """``(token type, value, start, end)`` for each token of one line, in order, as
-    ``dialect`` reads it (see ``Dialect.keyword_first`` and ``Dialect.typed_numbers``).
+    ``dialect`` reads it (see ``Dialect.keyword_first`` and ``Dialect.typed_numbers``);
+    ``notes`` collects the messages of literals beyond the range (see :func:`entry_messages`).
 
     ``start:end`` is the token's span in ``text``.  A remark (``REM`` or ``'``)
     is the last lexeme: type ``REMARK``, value the text after it.  Raises
@@ -298,7 +329,7 @@ def _lexemes(text: str, dialect: Dialect = CASIO):
             yield "REMARK", text[i + 1:], start, n
             return
         elif ch.isdigit() or (ch == "." and i + 1 < n and upper[i + 1].isdigit()) or (ch == "&" and typed):
-            value, i = _scan_typed_number(upper, i) if typed else _scan_number(upper, i)
+            value, i = _scan_typed_number(upper, i, notes) if typed else _scan_number(upper, i)
             yield "NUMBER", value, start, i
         elif ch.isascii() and ch.isalpha():
             kind, word, end = scan_word(upper, i, keywords)
