@@ -118,9 +118,10 @@ def test_ahl_prints_what_pcbasic_prints(name, pcbasic_outputs):
 @pytest.mark.parametrize("workload", WORKLOADS, ids=lambda w: w.name)
 def test_in_the_gw_dialect_the_text_is_pcbasics(workload, pcbasic_outputs):
     """``--dialect gw``: single precision, GW's printing and GW's random numbers, so the
-    text is PC-BASIC's, character for character, except the digits of GW's own SIN, LOG,
-    SQR and ^ (not correctly rounded in GW-BASIC; docs/compatibility.md): BM8's last
-    digits and Ahl's accuracy line, which sums the rounding errors of 2,000 of them."""
+    text is PC-BASIC's, character for character, except the digits of SIN, LOG and SQR
+    (GW's own series, and PC-BASIC cuts SQR's result where GW's ``$SQR`` rounds it;
+    docs/compatibility.md): BM8's last digits and Ahl's accuracy line, which sums the
+    rounding errors of 2,000 of them."""
     ours = yaseer_output(classic.scaled(workload.text, SCALE), dialect="gw").splitlines()
     theirs = pcbasic_outputs[workload.name].splitlines()
     if workload.name == "bm8":

@@ -55,12 +55,15 @@ class ArithmeticPolicy:
         return self.result(OVERFLOW, value < 0, kind)
 
 
-def helpers(policy: ArithmeticPolicy, to_single, int_divide, int_modulo, power) -> dict:
+def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
     """The compiled code's helpers for a typed dialect: ``_dk`` (a double ``+ - *``
     result, or VAL's, kept in MBF's range: beyond it the policy's value), ``_dv`` and
-    ``_ddv`` (single and double ``/``), and ``\\`` ``MOD`` ``^`` ``EXP`` that give the
-    policy's value instead of failing.  (A ``\\`` or ``MOD`` by zero gives a single
-    1.701412E+38 with the dividend's sign, as PC-BASIC 2.0.8 shows.)"""
+    ``_ddv`` (single and double ``/``), ``_spow`` (``^``, single precision), and
+    ``\\`` ``MOD`` ``^`` ``EXP`` that give the policy's value instead of failing.  (A
+    ``\\`` or ``MOD`` by zero gives a single 1.701412E+38 with the dividend's sign, as
+    PC-BASIC 2.0.8 shows.)"""
+    from yaseer.basic import single_arith
+
     result = policy.result
 
     def double(x):
@@ -68,14 +71,25 @@ def helpers(policy: ArithmeticPolicy, to_single, int_divide, int_modulo, power) 
             return x
         return result(OVERFLOW, x < 0, "#")
 
-    def divider(keep, kind: str):
-        """``/`` whose quotient ``keep`` rounds to the type ``kind`` (``"!"`` or ``"#"``)."""
+    def divider(quotient, kind: str):
+        """``/`` of the type ``kind`` (``"!"`` or ``"#"``) by ``quotient(a, b)``."""
         def divide(a, b):
             try:
-                return keep(a / b)
+                return quotient(a, b)
             except ZeroDivisionError:
                 return result(DIVISION_BY_ZERO, a < 0, kind)
         return divide
+
+    def single_power(a, b):
+        """``a ^ b`` of two singles as GW-BASIC's ``$FPWR`` (single_arith.py): an integral
+        exponent multiplies, any other is the nearest single to the double power."""
+        if single_arith.is_integral_power(b):
+            try:
+                r = single_arith.power_by_integer(a, b)
+            except ZeroDivisionError:
+                return result(DIVISION_BY_ZERO, False, "!")  # zero to a negative power: positive
+            return r if r - r == 0 else result(OVERFLOW, r < 0, "!")
+        return single_arith.nearest(raise_to(a, b))
 
     def by_integer(operation):
         """``\\`` or MOD: a division by zero gives the policy's value."""
@@ -110,5 +124,6 @@ def helpers(policy: ArithmeticPolicy, to_single, int_divide, int_modulo, power) 
             r = math.inf
         return r if r <= largest else result(OVERFLOW, False, "!")
 
-    return {"_dk": double, "_dv": divider(to_single, "!"), "_ddv": divider(double, "#"), "_idiv": by_integer(int_divide), "_mod": by_integer(int_modulo),
-            "_pow": raise_to, "_exp": exponential}
+    return {"_dk": double, "_dv": divider(single_arith.divide, "!"), "_ddv": divider(lambda a, b: double(a / b), "#"),
+            "_idiv": by_integer(int_divide), "_mod": by_integer(int_modulo), "_pow": raise_to, "_exp": exponential,
+            "_spow": single_power}

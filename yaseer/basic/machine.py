@@ -425,7 +425,7 @@ class Machine:
         ns.update(self._gw_functions())
         if self.dialect.typed_numbers:
             ns.update(numbers.RUNTIME)
-            ns.update(arith_policy.helpers(self.arith, numbers.to_single, ns["_idiv"], ns["_mod"], ns["_pow"]))
+            ns.update(arith_policy.helpers(self.arith, ns["_idiv"], ns["_mod"], ns["_pow"]))
             ns["_val"] = lambda s: gwfunctions.val(s, self.dialect.largest_number)
         ns.update(self._trig_functions())
         if self.dialect.arithmetic == "decimal":
@@ -705,7 +705,7 @@ class Machine:
         if not self.stack or type(self.stack[-1]) is not ForFrame or self.stack[-1].key.endswith("()"):
             raise BasicError("NEXT without FOR", NEXT_WITHOUT_FOR)
         frame = self.stack[-1]
-        value = numbers.stepped(frame.key, self.scalars[frame.key] + frame.step)
+        value = numbers.stepped(frame.key, self.scalars[frame.key], frame.step)
         self.scalars[frame.key] = value
         if (value <= frame.limit) if frame.step >= 0 else (value >= frame.limit):
             self.frame_body = frame.body

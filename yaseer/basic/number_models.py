@@ -128,6 +128,9 @@ class TypedNumbers(PlainNumbers):
         "ASC": "%", "CINT": "%", "CSNG": "!", "CDBL": "#", "CVD": "#",
     }
 
+    # functions GW-BASIC computes in single precision from an argument made single
+    _SINGLE_FUNCTIONS = frozenset(("SIN", "COS", "TAN", "ATN", "SQR", "EXP", "LOG"))
+
     def __init__(self, def_types=None):
         self.letters: dict[str, str] = dict(def_types or {})
 
@@ -163,24 +166,28 @@ class TypedNumbers(PlainNumbers):
             return f"_dv({left}, {right})", "!"
         if kind == "%":
             return f"_ia({left} {op} {right})", "%"
-        if kind == "!":
-            if op in "+-" and (_small_literal(left) or _small_literal(right)):
-                # adding a small constant cannot cross the single range: round inline
-                # (struct pack/unpack, no Python frame: the tight loop's A=A+1)
-                return f"_up(_pk({left} {op} {right}))[0]", "!"
-            return f"_sg({left} {op} {right})", "!"
+        if kind == "!":  # rounded as GW-BASIC's MBF routines round (single_arith.py)
+            if op == "*":
+                return f"_sp({left} * {right})", "!"
+            helper = "_sadd" if op == "+" else "_ssub"
+            if _plain_operand(left) and _plain_operand(right) and (_small_literal(left) or _small_literal(right)):
+                # the tight loop's A=A+1: a sum that needs at most 24 bits is GW's result
+                # (and cannot leave the range); tested inline by Veltkamp's split, which
+                # gives the sum cut to 24 bits (no Python frame); any other through the helper
+                return (f"(_sv if (_sv := {left} {op} {right}) == (_sc := _sv * 536870913.0) - (_sc - _sv) "
+                        f"else {helper}({left}, {right}))"), "!"
+            return f"{helper}({left}, {right})", "!"
         return _in_double_range(f"{left} {op} {right}"), "#"
 
     def helper(self, op: str, left: str, right: str) -> tuple[str, str]:
-        if op == "^":
-            return f"_sg(_pow({left}, {right}))", "!"
         names = {"\\": "_idiv", "MOD": "_mod", "AND": "_and", "OR": "_or", "XOR": "_xor",
                  "EQV": "_eqv", "IMP": "_imp"}
         return f"{names[op]}({left}, {right})", "%"
 
     def power(self, left: str, lkind: str, right: str, rkind: str) -> tuple[str, str]:
-        """``^``: single precision, also of doubles (GW-BASIC without /D: ``2#^.5`` is 1.414213)."""
-        return f"_sg(_pow({left}, {right}))", "!"
+        """``^``: single precision, also of doubles (GW-BASIC's ``$FPWR`` makes both
+        operands single: ``2#^.5`` is 1.414214); ``_spow`` in arith_policy.py."""
+        return f"_spow({self.convert(left, lkind, '!')}, {self.convert(right, rkind, '!')})", "!"
 
     def negate(self, operand: str, kind: str) -> tuple[str, str]:
         if kind == "%":
@@ -206,7 +213,7 @@ class TypedNumbers(PlainNumbers):
             return f"_ci({code})"
         if source == target or target == "#" or source == "%":
             return code
-        return f"_sg({code})"
+        return f"_sfd({code})"
 
     def call(self, name: str, helper: str, codes: list[str], kinds: list[str], result: str) -> tuple[str, str]:
         code = f"{helper}({', '.join(codes)})"
@@ -219,7 +226,9 @@ class TypedNumbers(PlainNumbers):
                 return (f"_ia({code})" if name == "ABS" else codes[0]), "%"
             return code, kind
         if kind == "!":
-            return f"_sg({code})", "!"
+            if name in self._SINGLE_FUNCTIONS and kinds and kinds[0] == "#":  # computed on the single
+                code = f"{helper}({', '.join([self.convert(codes[0], '#', '!')] + codes[1:])})"
+            return f"_sfn({code})", "!"
         if name == "VAL":  # text may name a number beyond the double range
             return f"_dk({code})", kind
         return code, kind
@@ -234,7 +243,7 @@ class TypedNumbers(PlainNumbers):
         if kind == "%":
             return "_irange", "_ci({var} + {step})"
         if kind == "!":
-            return "_frange", "_sg({var} + {step})"
+            return "_frange", "_sadd({var}, {step})"
         return "_frange", "_dk({var} + {step})"
 
     def may_iterate(self, stmt, kind: str) -> bool:
@@ -263,9 +272,17 @@ def _in_double_range(code: str) -> str:
 def _small_literal(code: str) -> bool:
     """Is ``code`` a number literal below 1E+30 (far below a single's unit at 1.7E+38)?"""
     try:
-        return abs(float(code)) < 1e30
+        value = abs(float(code))
     except ValueError:
         return False
+    # below 1E+30 (far below a single's unit at 1.7E+38) and, unless 0, at least 2**-100
+    # (a nonzero exact sum with it is at least 2**-124, inside MBF's range)
+    return value < 1e30 and (value == 0 or value >= 2.0 ** -100)
+
+
+def _plain_operand(code: str) -> bool:
+    """Is ``code`` a local name or a literal (free to evaluate twice)?"""
+    return code.isidentifier() or _small_literal(code)
 
 
 def _is_int_literal(code: str) -> bool:

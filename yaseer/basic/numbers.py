@@ -8,11 +8,10 @@ A value's Python type carries its BASIC type where the printed text depends on i
   ``PRINT 200*200`` shows 40000); storing a value outside it in an integer
   variable, or using it where an integer is needed (``\\``, ``MOD``, ``AND``
   ...), is ``Overflow``.
-* ``!`` single precision: a Python ``float`` holding a value exactly
-  representable in IEEE single precision; every single-precision result is
-  rounded to it (:func:`to_single`).  GW-BASIC's Microsoft Binary Format has the
-  same 24-bit mantissa; its range ends at 1.7E+38 (IEEE's at 3.4E+38): beyond
-  it a result is Overflow.
+* ``!`` single precision: a Python ``float`` holding a 24-bit mantissa exactly
+  (GW-BASIC's Microsoft Binary Format); every single-precision result is rounded
+  as GW-BASIC's routines round (:mod:`yaseer.basic.single_arith`).  MBF's range
+  ends at 1.7E+38 (IEEE's at 3.4E+38): beyond it a result is Overflow.
 * ``#`` double precision: a Python ``float`` (53-bit mantissa; MBF doubles have
   56, so the 16th digit may differ), within :data:`DOUBLE_LARGEST` (MBF's range;
   ``+ - * /`` results beyond it go to the overflow policy through ``_dk``).  Wrapped in :class:`Double` only on its
@@ -27,6 +26,7 @@ from __future__ import annotations
 import math
 import struct
 
+from yaseer.basic import single_arith
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
 
 INT_MIN, INT_MAX = -32768, 32767
@@ -145,10 +145,11 @@ def _overflow() -> BasicError:
 
 def int_result(x):
     """The result of ``+ - *`` (or unary minus, ABS) on integers: ``x`` itself when it
-    fits in 16 bits, else ``x`` as single precision."""
+    fits in 16 bits, else ``x`` as single precision (GW-BASIC multiplies integers in
+    single precision: a product beyond 24 bits rounds as ``$FMULS``; a sum is exact)."""
     if INT_MIN <= x <= INT_MAX:
         return x
-    return to_single(x)
+    return single_arith.product(float(x))
 
 
 def to_int(x) -> int:
@@ -171,7 +172,7 @@ def int_divide(a, b) -> int:
     if y == 0:
         raise BasicError("Division by zero", DIVISION_BY_ZERO)
     q = abs(x) // abs(y)
-    return int_result(q if (x >= 0) == (y >= 0) else -q)
+    return to_int(q if (x >= 0) == (y >= 0) else -q)  # -32768 \ -1 is Overflow
 
 
 def int_modulo(a, b) -> int:
@@ -217,13 +218,13 @@ def sign(x) -> int:
     return 1 if x > 0 else (-1 if x < 0 else 0)
 
 
-def stepped(name: str, value):
-    """A FOR variable ``name`` after ``+ STEP``, in its type (``I!`` single, ``I%`` integer
+def stepped(name: str, value, step):
+    """A FOR variable ``name`` of ``value`` after ``+ step``, in its type (``I!`` single, ``I%`` integer
     with Overflow past 32767; an untyped casio name unchanged)."""
     last = name[-1]
     if last == "!":
-        return to_single(value)
-    return to_int(value) if last == "%" else value
+        return single_arith.add(value, step)
+    return to_int(value + step) if last == "%" else value + step
 
 
 class Double(float):
@@ -233,26 +234,13 @@ class Double(float):
 
 
 def _single_digits(x: float) -> tuple[str, int]:
-    """``abs(x)`` (single precision) to 7 significant digits as GW-BASIC finds them:
-    the value is scaled by a power of ten into 999999.9 .. 9999999 *in single
-    precision* and then rounded half up to an integer (so ``1/3``, stored as
-    0.333333343..., scales to 3333333.5 and shows as ``.3333334``, as PC-BASIC
-    shows it).  Returns (digit string without trailing zeros, exponent of the first digit).
-    """
-    x = abs(x)
-    e = math.floor(math.log10(x))
-    y = to_single(x * 10.0 ** (SINGLE_DIGITS - 1 - e))
-    if y > 9999999:
-        e += 1
-        y = to_single(x * 10.0 ** (SINGLE_DIGITS - 1 - e))
-    elif y < 999999.9:
-        e -= 1
-        y = to_single(x * 10.0 ** (SINGLE_DIGITS - 1 - e))
-    n = int(y + 0.5)
-    if n >= 10 ** SINGLE_DIGITS:
-        n //= 10
-        e += 1
-    return str(n).rstrip("0") or "0", e
+    """``abs(x)`` (single precision) to 7 significant digits as GW-BASIC finds them
+    (:func:`yaseer.basic.single_arith.decimal_digits`: scaled by ten in MBF working
+    precision, rounded twice: ``1/3`` shows as ``.3333334``, 825157.625 as
+    ``825157.7``).  Returns (digit string without trailing zeros, exponent of the
+    first digit)."""
+    n, power = single_arith.decimal_digits(x)
+    return str(n).rjust(SINGLE_DIGITS, "0").rstrip("0") or "0", power + SINGLE_DIGITS - 1
 
 
 def _double_digits(x: float) -> tuple[str, int]:
@@ -320,9 +308,11 @@ def number_to_text(x) -> str:
 # The names the typed compiled code calls (merged into the machine's namespace over
 # the plain ones; see number_models.TypedNumbers for which code uses which).
 RUNTIME = {
-    "_sg": to_single, "_pk": _pack, "_up": _unpack, "_ia": int_result, "_ci": to_int, "_dbl": Double, "_irange": int_range,
+    "_ia": int_result, "_ci": to_int, "_dbl": Double, "_irange": int_range,
     "_idiv": int_divide, "_mod": int_modulo, "_and": logical_and, "_or": logical_or,
     "_xor": logical_xor, "_eqv": logical_eqv, "_imp": logical_imp, "_not": logical_not,
     "_sgn": sign, "_len": len, "_strs": str_dollar,
-    "_cint": to_int, "_csng": to_single, "_cdbl": float,
+    "_cint": to_int, "_csng": single_arith.from_double, "_cdbl": float,
+    "_sadd": single_arith.add, "_ssub": single_arith.subtract, "_sp": single_arith.product,
+    "_sfd": single_arith.from_double, "_sfn": single_arith.function_result,
 }
