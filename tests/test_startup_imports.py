@@ -37,16 +37,17 @@ plain classes, not dataclasses: dataclasses imports inspect, ast, dis and tokeni
 WATCHED = NEVER_WARM + NOT_WITHOUT_PROG
 
 
-def warm_run(listing: Path, cache: Path) -> tuple[str, set[str]]:
-    """Run ``yaseer run LISTING`` twice (the first fills the cache); the second's output
-    and which WATCHED modules it imported."""
+def warm_run(listing: Path, cache: Path, watched: tuple[str, ...] = WATCHED,
+             options: tuple[str, ...] = ()) -> tuple[str, set[str]]:
+    """Run ``yaseer run [OPTIONS] LISTING`` twice (the first fills the cache); the second's output
+    and which ``watched`` modules it imported."""
     env = dict(os.environ, YASEER_CACHE_DIR=str(cache))
-    cold = subprocess.run([sys.executable, "-m", "yaseer", "run", str(listing)], capture_output=True, text=True,
-                          env=env, check=True)
+    cold = subprocess.run([sys.executable, "-m", "yaseer", "run", *options, str(listing)], capture_output=True,
+                          text=True, env=env, check=True)
     probe = (f"import sys; sys.path.insert(0, {PACKAGE_PARENT!r})\n"
              "from yaseer.cli import main\n"
-             "status = main(['run', sys.argv[1]])\n"
-             f"print(sorted(m for m in {WATCHED!r} if m in sys.modules), status)")
+             f"status = main(['run', *{list(options)!r}, sys.argv[1]])\n"
+             f"print(sorted(m for m in {watched!r} if m in sys.modules), status)")
     done = subprocess.run([sys.executable, "-S", "-c", probe, str(listing)], capture_output=True, text=True,
                           env=env, check=True)
     *output, last = done.stdout.splitlines()
@@ -154,3 +155,58 @@ def test_a_warm_run_builds_no_other_commands_parser(cache):
     done = subprocess.run([sys.executable, "-S", "-c", probe, str(listing)], capture_output=True, text=True,
                           env=env, check=True)
     assert done.stdout.splitlines()[-1] == "['yaseer.commands.options', 'yaseer.commands.output', 'yaseer.commands.run']"
+
+
+NOT_FOR_A_PLAIN_RUN = ("argparse", "typing", "gettext", "locale", "shutil", "yaseer.commands.parsers")
+"""Not imported by a warm ``yaseer run FILE [options]`` of a BASIC-only listing: the command line is
+read from the run command's table without argparse (with gettext, locale and shutil for its help
+width), and no named tuple of the machine is a ``typing.NamedTuple``."""
+
+
+@pytest.mark.parametrize("options", [(), ("--dialect", "gw", "--format=csv", "--angle", "deg", "--arith=binary")])
+def test_a_plain_run_command_line_imports_no_argparse_and_no_typing(options, cache):
+    listing = cache.parent / "print.bas"
+    listing.write_text("10 PRINT 1\n")
+    output, imported = warm_run(listing, cache, NOT_FOR_A_PLAIN_RUN, options)
+    assert output == (" 1 \n" if not options else "1.0\n")
+    assert imported == set()
+
+
+def test_the_run_parser_and_the_scanner_are_built_from_one_table():
+    """argparse's ``yaseer run`` parser holds exactly the table's arguments, in its order."""
+    from yaseer.cli import command_parser
+    from yaseer.commands.run import ARGUMENTS
+
+    parser = command_parser("run")
+    table = [option for _, group in ARGUMENTS for option in group]
+    assert [(a.dest, a.option_strings, a.metavar, a.choices) for a in parser._actions if a.dest != "help"] == [
+        (o.dest, [] if o.positional else [o.flag], o.metavar, o.choices) for o in table]
+
+
+@pytest.mark.parametrize("argv", [
+    ["x.bas"], ["-"], ["--dialect", "gw", "x.bas"], ["x.bas", "--dialect=gw", "--dialect", "casio"],
+    ["--format", "csv", "--printer", "-", "x.bas"], ["--printer=", "x.bas"], ["x=y.bas", "--input", "in.txt"],
+    ["--prog", "5=p.bas", "--prog=1=q.bas", "x.bas", "--method", "5=paper", "--method=2=newton"],
+    ["--angle", "rad", "--arith", "decimal", "--files", "dir", "x.bas"], [""],
+])
+def test_the_scanner_reads_a_plain_command_line_as_argparse_does(argv):
+    from yaseer.cli import command_parser
+    from yaseer.commands.options import scan
+    from yaseer.commands.run import ARGUMENTS
+
+    assert vars(scan(argv, ARGUMENTS)) == vars(command_parser("run").parse_args(argv))
+
+
+@pytest.mark.parametrize("argv", [
+    [], ["--help"], ["-h", "x.bas"], ["x.bas", "y.bas"], ["--form", "csv", "x.bas"], ["--", "x.bas"],
+    ["--dialect", "xx", "x.bas"], ["--dialect=", "x.bas"], ["--prog", "12=x.bas", "x.bas"], ["--prog", "x", "x.bas"],
+    ["--method", "5=nonsense", "x.bas"], ["x.bas", "--printer"], ["x.bas", "--printer", "--format", "csv"],
+    ["-5"], ["x.bas", "--version"], ["--dialect", "-", "x.bas"],
+])
+def test_the_scanner_leaves_every_other_command_line_to_argparse(argv):
+    """Help, errors and the forms whose reading is argparse's own (abbreviations, ``--``, a
+    value like an option): the scanner declines, so argparse reads them or reports them as before."""
+    from yaseer.commands.options import scan
+    from yaseer.commands.run import ARGUMENTS
+
+    assert scan(argv, ARGUMENTS) is None

@@ -3,7 +3,11 @@
 Each sub-command lives in its own module (``yaseer/commands/<name>.py``) with
 ``add_arguments(parser)`` and ``main(args) -> int``.  Only the module of the
 command being run is imported (the others' sub-parsers are left empty, their
-one-line help is kept here), so start-up stays small.
+one-line help is kept here), so start-up stays small.  A command whose module
+describes its arguments as a table (``ARGUMENTS``, see
+:mod:`yaseer.commands.options`: ``run``) has its plain command lines read from
+that table without importing argparse; argparse, built from the same table,
+reads everything else and prints the help, usage and errors.
 
 Exit statuses, the same in every command: 0 success, 1 an error (one line on
 standard error, never a traceback), 2 a usage error (the sub-command's usage
@@ -13,12 +17,14 @@ stops the command quietly with status 0.
 
 from __future__ import annotations
 
-import argparse
-import importlib
 import os
 import sys
 
 from yaseer import __version__
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only: argparse is imported only when a command line needs it (issue 15)
+    from argparse import ArgumentParser
 
 COMMANDS = {
     "run": "run a BASIC listing and print what it prints",
@@ -47,12 +53,16 @@ line, 130 interrupted by Ctrl-C."""
 
 
 def _load(name: str):
-    return importlib.import_module(f"yaseer.commands.{name}")
+    module = f"yaseer.commands.{name}"
+    __import__(module)  # not importlib.import_module: importing importlib costs start-up
+    return sys.modules[module]
 
 
-def build_parser(command: str | None = None) -> tuple[argparse.ArgumentParser, argparse.ArgumentParser | None]:
+def build_parser(command: str | None = None) -> tuple[ArgumentParser, ArgumentParser | None]:
     """The whole ``yaseer`` parser and ``command``'s sub-parser, the only one given its arguments
     (its module imported).  A command line that names a command needs only :func:`command_parser`."""
+    import argparse
+
     parser = argparse.ArgumentParser(prog="yaseer", description=DESCRIPTION, epilog=EPILOG,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--version", action="version", version=f"yaseer {__version__}")
@@ -68,10 +78,12 @@ def build_parser(command: str | None = None) -> tuple[argparse.ArgumentParser, a
     return parser, chosen
 
 
-def command_parser(command: str) -> argparse.ArgumentParser:
+def command_parser(command: str) -> ArgumentParser:
     """``command``'s parser alone: the sub-parser :func:`build_parser` makes for it (the same
     prog, description and arguments), without the main parser and the other commands' empty
     sub-parsers (every ``yaseer run`` would build them for nothing: start-up, issue 15)."""
+    import argparse
+
     parser = argparse.ArgumentParser(prog=f"yaseer {command}", description=COMMANDS[command],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     _load(command).add_arguments(parser)
@@ -113,12 +125,25 @@ def _dispatch(argv: list[str], command: str | None) -> int:
         if command is None:  # the session's options (--dialect gw), --help, --version, or not a command
             args = build_parser()[0].parse_args(argv)
             return _load("interactive").main(args)
-        # The command's parser alone, so a wrong option prints that command's usage.
-        args = command_parser(command).parse_args(argv[1:])
+        args = scan_command_line(command, argv[1:])
+        if args is None:  # the command's parser alone, so a wrong option prints that command's usage
+            args = command_parser(command).parse_args(argv[1:])
     except SystemExit as exit_:  # --help, --version (0) or a usage error (2, usage already printed)
         return exit_.code if isinstance(exit_.code, int) else 2
     args.command = command
     return _load(command).main(args)
+
+
+def scan_command_line(command: str, argv: list[str]):
+    """``argv`` read from the table of ``command``'s arguments without argparse (the namespace
+    argparse would make), or None: the command has no table, or ``argv`` is not a plain command
+    line (see :func:`yaseer.commands.options.scan`)."""
+    table = getattr(_load(command), "ARGUMENTS", None)
+    if table is None:
+        return None
+    from yaseer.commands.options import scan
+
+    return scan(argv, table)
 
 
 def guarded(command: str, call) -> int:

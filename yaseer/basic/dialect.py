@@ -15,13 +15,14 @@ Two dialects exist:
   (see docs/compatibility.md).
 
 Field names are stable: other modules build on them.  A dialect is a named tuple
-(immutable; ``dialect._replace(field=value)`` makes a variant), not a dataclass:
-importing dataclasses costs every start several milliseconds (issue 15).
+(immutable; ``dialect._replace(field=value)`` makes a variant) made by
+``collections.namedtuple``, not a dataclass or a ``typing.NamedTuple``: importing
+dataclasses or typing costs every start milliseconds (issue 15).
 """
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from collections import namedtuple
 
 from yaseer.basic.numbers import DOUBLE_LARGEST
 from yaseer.basic.randomness import GwRandom, RepeatableRandom
@@ -35,7 +36,34 @@ AL_YASEER_DIMENSIONS = (
 )
 
 
-class Dialect(NamedTuple):
+FIELDS = (
+    "name",  # str: casio, gw
+    "keyword_first",  # bool
+    "pi_keyword",  # bool
+    "own_words",  # tuple[str, ...]
+    "typed_numbers",  # bool
+    "print_digits",  # int
+    "width",  # int | None
+    "zone",  # int
+    "on_division_by_zero",  # str: stop, continue
+    "on_overflow",  # str: stop, continue
+    "angle",  # str: DEG, RAD
+    "implicit_arrays",  # tuple[tuple[str, int], ...]
+    "default_dimension",  # int
+    "program_areas",  # bool
+    # with defaults (the Casio's):
+    "random",  # type: RepeatableRandom
+    "errors_when_reached",  # bool: False
+    "comma_trims_number",  # bool: False
+    "for_binds_next",  # bool: False
+    "arithmetic",  # str: binary
+    "largest_number",  # float | None: None
+    "printer_width",  # int | None: None
+)
+DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None)
+
+
+class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
     """Everything that differs between the BASICs yaseer runs (all plain data).
 
     Scanner rules
@@ -121,27 +149,7 @@ class Dialect(NamedTuple):
         areas are given explicitly (``--prog``).
     """
 
-    name: str
-    keyword_first: bool
-    pi_keyword: bool
-    own_words: tuple[str, ...]
-    typed_numbers: bool
-    print_digits: int
-    width: int | None
-    zone: int
-    on_division_by_zero: str
-    on_overflow: str
-    angle: str
-    implicit_arrays: tuple[tuple[str, int], ...]
-    default_dimension: int
-    program_areas: bool
-    random: type = RepeatableRandom
-    errors_when_reached: bool = False
-    comma_trims_number: bool = False
-    for_binds_next: bool = False
-    arithmetic: str = "binary"
-    largest_number: float | None = None
-    printer_width: int | None = None
+    __slots__ = ()
 
     def with_arithmetic(self, arithmetic: str) -> "Dialect":
         """This dialect computing in ``arithmetic`` ("binary" or "decimal"); decimal

@@ -47,7 +47,7 @@ from __future__ import annotations
 
 import math
 from functools import lru_cache
-from typing import NamedTuple  # the format's fields (named tuples: dataclasses costs start-up)
+from collections import namedtuple  # the format's fields (not dataclasses or typing: start-up, issue 15)
 
 from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, OVERFLOW, TYPE_MISMATCH, BasicError
 
@@ -130,35 +130,31 @@ def number_to_text(x: float) -> str:
 # PRINT USING: the format string
 # ---------------------------------------------------------------------------
 
-class Literal(NamedTuple):
-    """Text copied to the output as it is."""
+class Literal(namedtuple("Literal", "text")):
+    """Text copied to the output as it is (``text``: str)."""
 
-    text: str
+    __slots__ = ()
 
 
-class StringField(NamedTuple):
+class StringField(namedtuple("StringField", "width")):
     """``!`` (width 1), ``\\  \\`` (width n+2) or ``&`` (width ``None``: the whole string)."""
 
-    width: int | None
+    __slots__ = ()
 
 
-class NumericField(NamedTuple):
+class NumericField(namedtuple("NumericField", "positions decimals point comma fill dollar sign exponent_digits")):
     """A numeric field of a PRINT USING format.
 
-    ``positions`` counts the places left of the decimal point (``#``, the two
-    of ``**`` or ``$$``, the three of ``**$``, and the commas); ``decimals``
-    the ``#`` after it.  ``sign`` is ``"lead+"``, ``"trail+"``, ``"trail-"``
-    or ``""`` (a minus then takes one of the positions).
+    ``positions`` (int) counts the places left of the decimal point (``#``, the two
+    of ``**`` or ``$$``, the three of ``**$``, and the commas); ``decimals`` (int)
+    the ``#`` after it; ``point`` and ``comma`` (bool) whether the field has them;
+    ``fill`` ``"*"`` or ``" "``; ``dollar`` (bool) a ``$`` before the number;
+    ``sign`` is ``"lead+"``, ``"trail+"``, ``"trail-"`` or ``""`` (a minus then
+    takes one of the positions); ``exponent_digits`` 0 (fixed notation), 2
+    (``^^^^``) or 3 (``^^^^^``).
     """
 
-    positions: int
-    decimals: int
-    point: bool
-    comma: bool
-    fill: str  # "*" or " "
-    dollar: bool
-    sign: str
-    exponent_digits: int  # 0 (fixed notation), 2 (^^^^) or 3 (^^^^^)
+    __slots__ = ()
 
 
 def _count(fmt: str, i: int, chars: str) -> int:

@@ -1,10 +1,36 @@
-"""The options shared by every command that runs a listing: ``run``, ``diff``, ``plot``, ``animate``, ``report``.
+"""Command-line options as data, and the options shared by every command that runs a listing.
 
-:func:`add_run_options` adds them to a sub-command's parser (one place, so the
-commands cannot drift apart); :func:`run_settings` turns the parsed options into
+An :class:`Option` is one argument (``--dialect``, or the positional ``file``)
+with everything a parser needs: its flag, help, metavar, value conversion,
+choices, default, and whether it may be repeated.  A command lists its options
+in a table: (title, options) groups in the order of its help (title ``None``:
+argparse's default groups).  From that one table
+
+* :func:`yaseer.commands.parsers.add_groups` builds the command's argparse parser
+  (its help, usage and every error message), and
+* :func:`scan` reads a plain command line without importing argparse at all
+  (argparse with gettext, locale and shutil costs every ``yaseer run`` several
+  milliseconds of start-up, issue 15).
+
+:func:`scan` accepts only the forms whose meaning is plain: an option's exact
+flag with its value as the next word (``--dialect gw``) or after ``=``
+(``--dialect=gw``), and each positional once, in any order.  Anything else
+(``--help``, an abbreviated flag, ``--``, a value that looks like an option, a
+missing or extra positional, a value its conversion or choices refuse) makes it
+answer ``None``: the caller then parses with argparse, which reads it, or prints
+the usage and error exactly as it always has.  Where :func:`scan` answers, its
+namespace is the one argparse makes (pinned in tests/test_startup_imports.py).
+A value conversion raises :class:`OptionValueError` with the user's message
+(argparse shows it as ``argument --prog: MESSAGE``).
+
+The run options (``run``, ``diff``, ``plot``, ``animate``, ``report``):
+:data:`RUN_OPTIONS` describes them once; :func:`add_run_options` adds them to a
+sub-command's argparse parser, and ``yaseer run``'s own table includes them, so
+the commands cannot drift apart.  :func:`run_settings` turns the parsed options into
 the plain values a run needs (area texts read and checked, methods checked,
 the INPUT file opened, :meth:`RunSettings.run_arguments` for :func:`yaseer.run`).
 A new run option (``--files``) is added here once and every command takes it.
+This module does not import argparse (start-up, issue 15).
 
 A wrong option value (``--prog 12=x.bas``, ``--method 5=fast``) is a usage error
 (exit status 2, the sub-command's usage line); an area file that cannot be read,
@@ -13,13 +39,100 @@ is empty or has no ``RETURN`` is an error naming the file (exit status 1).
 
 from __future__ import annotations
 
-import argparse
 import re
+from types import SimpleNamespace
+
 TYPE_CHECKING = False
 if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
-    from typing import TextIO
+    from argparse import Namespace
+    from typing import Callable, Sequence, TextIO
 
 AREAS = range(1, 10)  # --prog N: areas 1-9 (area 0 is the listing itself)
+
+
+class OptionValueError(ValueError):
+    """A value an option's conversion refuses; its text is the whole message (``program areas are 1-9, got '12'``)."""
+
+
+class Option:
+    """One argument of a command: a ``--flag`` taking one value, or a positional (a flag without ``-``).
+
+    ``convert`` turns the text into the value (raising :class:`OptionValueError`);
+    ``choices`` the values allowed (after ``convert``); ``default`` the value when
+    the option is not given; ``repeated``: every occurrence appended to a list
+    (default: an empty list).  ``help`` is the text, or a function returning it
+    when it is costly to compute (shown only by ``--help``).
+    """
+
+    __slots__ = ("flag", "help", "metavar", "convert", "choices", "default", "repeated")
+
+    def __init__(self, flag: str, help: str | Callable[[], str] | None = None, *, metavar: str | None = None,
+                 convert: Callable[[str], object] | None = None, choices: tuple | None = None,
+                 default: object = None, repeated: bool = False) -> None:
+        self.flag = flag
+        self.help = help
+        self.metavar = metavar
+        self.convert = convert
+        self.choices = choices
+        self.default = default
+        self.repeated = repeated
+
+    @property
+    def positional(self) -> bool:
+        return not self.flag.startswith("-")
+
+    @property
+    def dest(self) -> str:
+        """The attribute of the parsed namespace (argparse's rule: the flag without dashes, ``-`` as ``_``)."""
+        return self.flag.lstrip("-").replace("-", "_")
+
+    def value(self, text: str) -> object:
+        """``text`` converted and checked against the choices (as argparse does); ValueError when refused."""
+        value = self.convert(text) if self.convert is not None else text
+        if self.choices is not None and value not in self.choices:
+            raise ValueError(f"invalid choice: {value!r}")
+        return value
+
+
+def scan(argv: Sequence[str], groups: Sequence[tuple[str | None, Sequence[Option]]]) -> SimpleNamespace | None:
+    """The namespace argparse makes of ``argv`` for the options of ``groups`` (a command's table:
+    (title, options) pairs), or None when ``argv`` is not a plain command line (see the module
+    docstring: argparse then parses it)."""
+    options = [option for _, group in groups for option in group]
+    flags = {option.flag: option for option in options if not option.positional}
+    waiting = iter([option for option in options if option.positional])
+    found = {option.dest: [] if option.repeated else option.default for option in options}
+    words = iter(argv)
+    for word in words:
+        if _is_flag(word):
+            flag, equals, text = word.partition("=")
+            option = flags.get(flag)
+            if option is None:
+                return None
+            if not equals:
+                text = next(words, None)
+                if text is None or _is_flag(text):
+                    return None
+        else:
+            option, text = next(waiting, None), word
+            if option is None:
+                return None
+        try:
+            value = option.value(text)
+        except (TypeError, ValueError):  # argparse reports it
+            return None
+        if option.repeated:
+            found[option.dest].append(value)
+        else:
+            found[option.dest] = value
+    if next(waiting, None) is not None:
+        return None
+    return SimpleNamespace(**found)
+
+
+def _is_flag(word: str) -> bool:
+    """Whether argparse might read ``word`` as an option (``-`` alone is standard input, a positional)."""
+    return word.startswith("-") and word != "-"
 
 
 class CommandError(Exception):
@@ -34,12 +147,12 @@ def area_file(text: str) -> tuple[int, str]:
     """``"5=prog5.bas"`` -> ``(5, "prog5.bas")``; areas 1-9 only."""
     number, _, path = text.partition("=")
     if not number.strip().isdigit() or not path:
-        raise argparse.ArgumentTypeError(f"expected N=FILE, got {text!r}")
+        raise OptionValueError(f"expected N=FILE, got {text!r}")
     area = int(number)
     if area == 0:
-        raise argparse.ArgumentTypeError(f"area 0 is the listing itself; --prog takes areas 1-9, got {text!r}")
+        raise OptionValueError(f"area 0 is the listing itself; --prog takes areas 1-9, got {text!r}")
     if area not in AREAS:
-        raise argparse.ArgumentTypeError(f"program areas are 1-9, got {text!r}")
+        raise OptionValueError(f"program areas are 1-9, got {text!r}")
     return area, path
 
 
@@ -47,14 +160,14 @@ def method_pair(text: str) -> tuple[int, str]:
     """``"5=paper"`` -> ``(5, "paper")``, checked against the method registry."""
     number, _, name = text.partition("=")
     if not number.strip().isdigit() or not name.strip():
-        raise argparse.ArgumentTypeError(f"expected N=NAME, got {text!r}")
+        raise OptionValueError(f"expected N=NAME, got {text!r}")
     area, name = int(number), name.strip()
     known = method_choices()
     if area not in known:
-        raise argparse.ArgumentTypeError(
+        raise OptionValueError(
             f"no library program {area} to choose a method for (programs: {', '.join(map(str, known))})")
     if name not in known[area]:
-        raise argparse.ArgumentTypeError(f"unknown method {name!r} for PROG {area} (known: {', '.join(known[area])})")
+        raise OptionValueError(f"unknown method {name!r} for PROG {area} (known: {', '.join(known[area])})")
     return area, name
 
 
@@ -71,47 +184,47 @@ def method_choices() -> dict[int, list[str]]:
     return choices
 
 
-class _MethodAction(argparse._AppendAction):
-    """``--method N=NAME`` whose help lists every program's methods, computed only when help is shown.
+def method_help() -> str:
+    """``--method``'s help, listing every program's methods (computed only when help is shown:
+    building the list imports the numerics, and a plain ``yaseer run`` must not)."""
+    listed = "; ".join(f"{n}: {', '.join(names)}" for n, names in method_choices().items())
+    return f"the method library program N uses, the first named being the default ({listed}); may be repeated"
 
-    (Building the list imports the numerics; a plain ``yaseer run`` must not.)
-    """
 
-    @property
-    def help(self) -> str:
-        listed = "; ".join(f"{n}: {', '.join(names)}" for n, names in method_choices().items())
-        return ("the method library program N uses, the first named being the default "
-                f"({listed}); may be repeated")
+DIALECT = Option("--dialect", "casio: the paper's pocket computer (default); gw: GW-BASIC 3.23",
+                 choices=("casio", "gw"), default="casio")
+"""``--dialect casio|gw`` (a run option, and the interactive session's)."""
 
-    @help.setter
-    def help(self, value) -> None:
-        """The help is computed (see the class docstring)."""
+RUN_OPTIONS = ("running the listing (the same in run, diff, plot, animate and report)", (
+    Option("--prog", "load a BASIC subroutine into program area N (1-9) instead of the library program; "
+                     "it shares the listing's variables and must end in RETURN; may be repeated",
+           metavar="N=FILE", convert=area_file, repeated=True),
+    Option("--method", method_help, metavar="N=NAME", convert=method_pair, repeated=True),
+    DIALECT,
+    Option("--angle", "unit of SIN COS TAN ATN at the start (default: the dialect's: casio deg, gw rad)",
+           choices=("deg", "rad")),
+    Option("--arith", "casio's arithmetic: binary (IEEE doubles, default) or decimal (13 digits inside, "
+                      "as the FX-850P family's BCD)", choices=("binary", "decimal"), default="binary"),
+    Option("--input", "answer INPUT statements with the lines of FILE (default: standard input)", metavar="FILE"),
+    Option("--files", "the one directory the program's OPEN, KILL, NAME and FILES use "
+                      "(default: the current directory; nothing outside it is ever touched)", metavar="DIR"),
+))
+"""--prog N=FILE, --method N=NAME, --dialect, --angle deg|rad, --arith, --input FILE, --files DIR:
+one titled group of a command's table."""
 
 
 def add_dialect_argument(parser) -> None:
-    """``--dialect casio|gw`` (a run option, and the interactive session's)."""
-    parser.add_argument("--dialect", choices=("casio", "gw"), default="casio",
-                        help="casio: the paper's pocket computer (default); gw: GW-BASIC 3.23")
+    """``--dialect`` on an argparse parser (the interactive session's)."""
+    from yaseer.commands.parsers import add_option
+
+    add_option(parser, DIALECT)
 
 
-def add_run_options(parser: argparse.ArgumentParser) -> None:
-    """--prog N=FILE, --method N=NAME, --dialect, --angle deg|rad, --input FILE (as ``yaseer run``)."""
-    group = parser.add_argument_group("running the listing (the same in run, diff, plot, animate and report)")
-    group.add_argument("--prog", metavar="N=FILE", type=area_file, action="append", default=[],
-                       help="load a BASIC subroutine into program area N (1-9) instead of the library program; "
-                            "it shares the listing's variables and must end in RETURN; may be repeated")
-    group.add_argument("--method", metavar="N=NAME", type=method_pair, action=_MethodAction, default=[])
-    add_dialect_argument(group)
-    group.add_argument("--angle", choices=("deg", "rad"), default=None,
-                       help="unit of SIN COS TAN ATN at the start (default: the dialect's: casio deg, gw rad)")
-    group.add_argument("--arith", choices=("binary", "decimal"), default="binary",
-                       help="casio's arithmetic: binary (IEEE doubles, default) or decimal (13 digits inside, "
-                            "as the FX-850P family's BCD)")
-    group.add_argument("--input", metavar="FILE",
-                       help="answer INPUT statements with the lines of FILE (default: standard input)")
-    group.add_argument("--files", metavar="DIR", default=None,
-                       help="the one directory the program's OPEN, KILL, NAME and FILES use "
-                            "(default: the current directory; nothing outside it is ever touched)")
+def add_run_options(parser) -> None:
+    """:data:`RUN_OPTIONS` on an argparse parser (a command other than ``run``, whose table holds them)."""
+    from yaseer.commands.parsers import add_groups
+
+    add_groups(parser, (RUN_OPTIONS,))
 
 
 class RunSettings:
@@ -142,7 +255,7 @@ class RunSettings:
             self.input.close()
 
 
-def run_settings(args: argparse.Namespace) -> RunSettings:
+def run_settings(args: Namespace) -> RunSettings:
     """The parsed run options of ``args`` (see :func:`add_run_options`): area files read and checked,
     the --input file opened (close it with :meth:`RunSettings.close`); OSError naming a file that cannot be read."""
     areas = {n: read_area(n, path) for n, path in args.prog}

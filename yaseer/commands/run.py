@@ -7,10 +7,13 @@ and exit status 1; never a Python traceback.  ``STOP`` ends with ``Break in N``
 
 from __future__ import annotations
 
-import argparse
 import sys
 
-from yaseer.commands.options import add_run_options, read_text, run_settings
+from yaseer.commands.options import RUN_OPTIONS, Option, read_text, run_settings
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only
+    from argparse import ArgumentParser, Namespace
 
 EPILOG = """\
 FILE - reads the listing from standard input (INPUT then needs --input).
@@ -20,17 +23,27 @@ Break in N on standard error), 1 a BASIC error or an unreadable file (one line o
 standard error), 2 a wrong command line, 130 Ctrl-C (Break in N)."""
 
 
-def add_arguments(parser: argparse.ArgumentParser) -> None:
+ARGUMENTS = (
+    (None, (
+        Option("file", "the BASIC listing (program area 0); - for standard input"),
+        Option("--format", "text (default): the faithful output; csv: one row of full-precision values per printed line",
+               choices=("text", "csv"), default="text"),
+        Option("--printer", "write LPRINT output to FILE (replaced; default: standard output)", metavar="FILE"),
+    )),
+    RUN_OPTIONS,
+)
+"""The command's arguments (see :mod:`yaseer.commands.options`): a plain ``yaseer run FILE [options]``
+is read from this table without argparse, which builds the parser for help and errors from the same table."""
+
+
+def add_arguments(parser: ArgumentParser) -> None:
+    from yaseer.commands.parsers import add_groups
+
     parser.epilog = EPILOG
-    parser.add_argument("file", help="the BASIC listing (program area 0); - for standard input")
-    parser.add_argument("--format", choices=("text", "csv"), default="text",
-                        help="text (default): the faithful output; csv: one row of full-precision values per printed line")
-    parser.add_argument("--printer", metavar="FILE",
-                        help="write LPRINT output to FILE (replaced; default: standard output)")
-    add_run_options(parser)
+    add_groups(parser, ARGUMENTS)
 
 
-def main(args: argparse.Namespace) -> int:
+def main(args: Namespace) -> int:
     """Run through :func:`yaseer.run`, streaming the output; the one error line and the exit status."""
     from yaseer.api import run
     from yaseer.commands.output import open_for_writing
