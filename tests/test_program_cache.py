@@ -82,6 +82,18 @@ def test_a_listing_calling_the_programs_runs_without_numpy(cache):
     assert warm == ["yaseer.linkages"]  # the programs' formulas, on Python floats
 
 
+def copied_sources(tmp_path: Path, monkeypatch) -> Path:
+    """A copy of yaseer/basic's sources (new modification times) that the cache keys on from now."""
+    sources = tmp_path / "basic"
+    sources.mkdir()
+    for path in Path(program_cache._SOURCES).iterdir():
+        if path.suffix in (".py", ".lark"):
+            (sources / path.name).write_bytes(path.read_bytes())
+    monkeypatch.setattr(program_cache, "_SOURCES", str(sources))
+    monkeypatch.setattr(program_cache, "_fingerprint", None)
+    return sources
+
+
 def test_the_key_follows_program_area_entries_and_sources(cache, monkeypatch, tmp_path):
     program = {10: "PRINT 1"}
     base = program_cache.key(0, program)
@@ -91,17 +103,50 @@ def test_the_key_follows_program_area_entries_and_sources(cache, monkeypatch, tm
     assert base != program_cache.key(1, program)
     assert base != program_cache.key(0, program, entry_lines=(10,))
     assert program_cache.key(0, program, dialect=CASIO) != program_cache.key(0, program, dialect=GW)
-    sources = tmp_path / "basic"
-    sources.mkdir()
-    for path in Path(program_cache._SOURCES).iterdir():
-        if path.suffix in (".py", ".lark"):
-            (sources / path.name).write_bytes(path.read_bytes())
-    monkeypatch.setattr(program_cache, "_SOURCES", str(sources))
-    monkeypatch.setattr(program_cache, "_fingerprint", None)
+    sources = copied_sources(tmp_path, monkeypatch)
     assert program_cache.key(0, program) == base  # the same sources: the same key
     (sources / "grammar.lark").write_text((sources / "grammar.lark").read_text() + "\n// edited\n")
     monkeypatch.setattr(program_cache, "_fingerprint", None)
     assert program_cache.key(0, program) != base  # an edited grammar invalidates every entry
+
+
+def test_the_sources_hash_is_remembered_for_their_sizes_and_times(cache, monkeypatch, tmp_path):
+    """The text of the sources is hashed once; later starts read the hash kept beside their
+    bytecode while no source's size or time changes (an edit, or a damaged hash, is hashed again)."""
+    program = {10: "PRINT 1"}
+    base = program_cache.key(0, program)
+    monkeypatch.setattr(sys, "dont_write_bytecode", False)
+    sources = copied_sources(tmp_path, monkeypatch)
+    assert program_cache.key(0, program) == base  # the same text: the same key
+    (remembered,) = (sources / "__pycache__").glob("toolchain-*.key")
+    remembered.write_bytes(b"short")
+    monkeypatch.setattr(program_cache, "_fingerprint", None)
+    assert program_cache.key(0, program) == base  # damaged: hashed again and replaced
+    assert len(remembered.read_bytes()) == 64
+    text_fingerprint = program_cache._text_fingerprint
+
+    def hashing_again(names):
+        raise AssertionError("the sources were hashed again")
+
+    monkeypatch.setattr(program_cache, "_text_fingerprint", hashing_again)
+    monkeypatch.setattr(program_cache, "_fingerprint", None)
+    assert program_cache.key(0, program) == base  # read back, not hashed
+    grammar = sources / "grammar.lark"
+    grammar.write_text(grammar.read_text() + "\n// edited\n")
+    monkeypatch.setattr(program_cache, "_fingerprint", None)
+    with pytest.raises(AssertionError, match="hashed again"):
+        program_cache.key(0, program)
+    monkeypatch.setattr(program_cache, "_text_fingerprint", text_fingerprint)
+    assert program_cache.key(0, program) != base
+    assert len(list((sources / "__pycache__").glob("toolchain-*.key"))) == 2
+
+
+def test_the_sources_hash_is_not_written_where_python_writes_no_bytecode(cache, monkeypatch, tmp_path):
+    base = program_cache.key(0, {10: "PRINT 1"})
+    monkeypatch.setattr(sys, "dont_write_bytecode", True)
+    sources = copied_sources(tmp_path, monkeypatch)
+    assert program_cache.key(0, {10: "PRINT 1"}) == base
+    assert not (sources / "__pycache__").exists()
 
 
 @pytest.mark.parametrize("damage", [b"", b"not marshal data", b"\x00" * 40])

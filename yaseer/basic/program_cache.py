@@ -5,7 +5,18 @@ Key: a BLAKE2 hash of the area's lines and every other input of the compile
 (area number, extra entry lines, the machine's dialect), of yaseer's version, of the Python that
 runs it (bytecode is version-specific), and of the text of every source file
 that turns text into compiled code (``yaseer/basic/*.py`` and ``grammar.lark``),
-so editing the grammar or the compiler invalidates every entry.  Value: the
+so editing the grammar or the compiler invalidates every entry.  Reading and
+hashing that text cost every start about 0.8 ms (issue 15), so its hash is
+remembered beside the sources' bytecode, where Python keeps what it derives from
+them: ``yaseer/basic/__pycache__/toolchain-<S>.key`` holds it for the sources
+whose names, sizes and modification times (in nanoseconds) hash to ``S`` (Python's
+own bytecode cache trusts size and modification time the same way).  A start then
+only asks the sources' sizes and times (about 0.05 ms) and reads that one file.  Sources
+copied elsewhere or reinstalled are hashed again once (and give the same key when
+their text is the same); a file rewritten with new text of the same size in the
+same nanosecond would go unnoticed.  The hash is not written where Python writes no
+bytecode (``-B``, ``PYTHONDONTWRITEBYTECODE``) or cannot (a read-only install): the
+sources are then hashed at every start, as before.  Value: the
 :class:`~yaseer.basic.compiled.CompiledArea` fields and the code object of each
 generated function, stored with :mod:`marshal`.
 
@@ -55,16 +66,40 @@ _fingerprint: bytes | None = None
 
 
 def toolchain_fingerprint() -> bytes:
-    """The hash of yaseer's version, the Python, and the compiler's source files."""
+    """The hash of yaseer's version, the Python, and the text of the compiler's source files
+    (remembered in the cache for the files' sizes and modification times: see the module docstring)."""
     global _fingerprint
     if _fingerprint is None:
-        digest = blake2b(f"{FORMAT} {yaseer.__version__} {sys.version} {sys.implementation.cache_tag}".encode())
-        for name in sorted(os.listdir(_SOURCES)):
-            if name.endswith((".py", ".lark")):
-                with open(os.path.join(_SOURCES, name), "rb") as source:
-                    digest.update(name.encode() + b"\0" + source.read() + b"\0")
-        _fingerprint = digest.digest()
+        with os.scandir(_SOURCES) as entries:
+            sources = sorted((entry.name, entry.stat()) for entry in entries if entry.name.endswith((".py", ".lark")))
+        signature = _toolchain_digest()
+        for name, status in sources:
+            signature.update(f"{name}\0{status.st_size}\0{status.st_mtime_ns}\0".encode("utf-8", "surrogateescape"))
+        remembered = os.path.join(_SOURCES, "__pycache__", f"toolchain-{signature.hexdigest()}.key")
+        try:
+            with open(remembered, "rb") as stored:
+                _fingerprint = stored.read()
+        except OSError:
+            pass
+        if _fingerprint is None or len(_fingerprint) != signature.digest_size:
+            _fingerprint = _text_fingerprint(name for name, _ in sources)
+            if not sys.dont_write_bytecode:
+                _write_atomically(remembered, _fingerprint)
     return _fingerprint
+
+
+def _toolchain_digest():
+    """A BLAKE2 hash begun with the cache's format, yaseer's version and the Python."""
+    return blake2b(f"{FORMAT} {yaseer.__version__} {sys.version} {sys.implementation.cache_tag}".encode())
+
+
+def _text_fingerprint(names) -> bytes:
+    """The hash of the named source files' text (with :func:`_toolchain_digest`'s start)."""
+    digest = _toolchain_digest()
+    for name in names:
+        with open(os.path.join(_SOURCES, name), "rb") as source:
+            digest.update(name.encode() + b"\0" + source.read() + b"\0")
+    return digest.digest()
 
 
 def key(area, program: dict[int, str], entry_lines=(), dialect=None) -> str | None:
@@ -99,14 +134,23 @@ def load(entry: str) -> tuple[CompiledArea, list] | None:
 def store(entry: str, compiled: CompiledArea, codes: list) -> None:
     """Keep ``compiled`` and its code objects (None for a piece that could not be
     compiled) under ``entry``; failures are ignored."""
-    directory = cache_dir()
-    temporary = os.path.join(directory, f".{entry}.{os.getpid()}.tmp")
+    try:
+        data = marshal.dumps((entry, compiled.as_plain(), codes))
+    except ValueError:
+        return
+    _write_atomically(os.path.join(cache_dir(), f"{entry}.bin"), data)
+
+
+def _write_atomically(path: str, data: bytes) -> None:
+    """Write ``data`` to a temporary file beside ``path`` and rename it into place; failures are ignored."""
+    directory = os.path.dirname(path)
+    temporary = os.path.join(directory, f".{os.path.basename(path)}.{os.getpid()}.tmp")
     try:
         os.makedirs(directory, exist_ok=True)
-        with open(temporary, "wb") as entry_file:
-            entry_file.write(marshal.dumps((entry, compiled.as_plain(), codes)))
-        os.replace(temporary, os.path.join(directory, f"{entry}.bin"))
-    except (OSError, ValueError):
+        with open(temporary, "wb") as written:
+            written.write(data)
+        os.replace(temporary, path)
+    except OSError:
         try:
             os.unlink(temporary)
         except OSError:
