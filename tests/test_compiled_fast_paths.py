@@ -165,3 +165,27 @@ def test_fast_paths_broken_and_continued_print_what_they_print_unbroken(name):
 
 def test_fast_paths_break_only_on_lines_nothing_can_interrupt_half_way():
     assert checked_break_points(BROKEN.values()) >= 4
+
+
+# ---------------------------------------------------------------- RND with a constant argument
+
+@pytest.mark.parametrize("dialect", ["casio", "gw"])
+def test_rnd_with_a_constant_argument_draws_what_rnd_of_a_variable_draws(dialect):
+    fast = "10 FOR I=1 TO 400: S=S+RND(1)+RND: NEXT: PRINT S;RND(1);RND(0);RND(.5)"
+    general = "5 P=1\n" + fast.replace("RND(1)", "RND(P)").replace("RND:", "RND(P):").replace("RND(.5)", "RND(P/2)")
+    assert run_text(fast, dialect=dialect) == run_text(general, dialect=dialect)
+    assert "_rndf()" in source_of(fast, dialect=dialect) and "_rndf" not in source_of(general, dialect=dialect)
+
+
+def test_rnd_zero_in_a_direct_statement_repeats_the_last_number_of_the_run():
+    import random
+
+    reference = random.Random(0)  # the casio generator: seed 0 at RUN
+    expected = [reference.random() for _ in range(333)][-1]
+    screen = io.StringIO()
+    machine = Machine(screen=screen)
+    machine.load("10 FOR I=1 TO 333: X=RND(1): NEXT")
+    machine.run()
+    assert machine.scalar("X") == expected
+    machine.execute_direct("PRINT RND(0)=X; RND(0)-X")
+    assert screen.getvalue() == "-1  0 \n"

@@ -92,3 +92,28 @@ def test_gw_machine_uses_gw_sequence_and_randomize_alone_asks():
     assert _gw_screen("10 PRINT RND * 16777216") == _gw_screen("10 PRINT 2035917")
     asked = _gw_screen("10 RANDOMIZE: PRINT RND * 16777216", "5\n")
     assert asked == "Random number seed (-32768 to 32767)? 5\n" + _gw_screen("10 PRINT 593500")
+
+
+def test_repeatable_rnd_zero_reads_the_last_number_drawn_by_the_fast_drawer():
+    """RND(0) after draws through ``drawer()`` (which records nothing) is the last
+    number drawn, across the generator's regenerations (every 312 numbers), against
+    Python's own generator seeded with 0 drawn one number at a time."""
+    import random
+
+    reference = random.Random(0)
+    r = RepeatableRandom()
+    assert r.rnd(0) == 0.0  # nothing drawn since RUN
+    draw = r.drawer()
+    for count in (1, 310, 1, 1, 1, 700):
+        for _ in range(count):
+            expected = reference.random()
+            assert draw() == expected
+        assert r.rnd(0) == expected
+    r.randomize(7)
+    reference.seed(7)
+    assert r.rnd(0) == expected  # RANDOMIZE does not draw: RND(0) still gives the one before
+    assert r.rnd() == reference.random()
+    reference.seed(-2.5)
+    assert r.rnd(-2.5) == reference.random() == r.rnd(0)
+    r.reset()
+    assert r.rnd(0) == 0.0 and draw() == random.Random(0).random()  # the drawer survives RUN

@@ -383,8 +383,8 @@ class AreaCompiler:
     def expr_Call(self, node, scope):
         forms, result, helper = _FUNCTIONS[node.name]
         args = list(node.args)
-        if node.name == "RND" and not args:
-            return self.numbers.call("RND", "_rnd", ["1.0"], [self.numbers.widest], "n")
+        if node.name == "RND" and (not args or (len(args) == 1 and (_constant_value(args[0]) or 0) > 0)):
+            return self.numbers.call("RND", "_rndf", [], [], "n")  # the next number (the generator's drawer)
         form = _call_form(forms, [ast.expr_type(arg) for arg in args])
         codes, kinds = [], []
         for arg, want in zip(args, form):

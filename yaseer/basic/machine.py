@@ -410,7 +410,7 @@ class Machine:
             "_read_s": rt.read_string, "_restore": rt.restore, "_input": self.input_values,
             "_fn": self.user_function, "_resume": self.resume, "_resume_at": self.resume_at,
             "_error_off": self.error_trapping_off, "_error": self.raise_error,
-            "_randomize": self.randomize, "_rnd": self.rnd,
+            "_randomize": self.randomize, "_rnd": self.rnd, "_rndf": self._first_draw,
             "_sqrt": math.sqrt, "_floor": runtime.floor, "_fix": runtime.fix, "_sgn": runtime.sign,
             "_exp": math.exp, "_log": math.log, "_len": lambda s: float(len(s)),
             "_strs": formatting.str_dollar, "_val": gwfunctions.val, "_chr": runtime.chr_dollar,
@@ -1270,6 +1270,14 @@ class Machine:
     def rnd(self, x: float = 1.0) -> float:
         """RND(x): x > 0 the next number, 0 the last again, x < 0 reseeds with x first."""
         return self.random.rnd(x)
+
+    def _first_draw(self) -> float:
+        """RND's next number, the first time an area draws one: from then on each area's
+        ``_rndf`` (RND and RND(x) with a constant x > 0) is the generator's own drawer."""
+        draw = self.random.drawer()
+        for namespace in self.namespaces.values():
+            namespace["_rndf"] = draw
+        return draw()
 
     def randomize(self, seed, kind: str = "!") -> None:
         """RANDOMIZE seed; ``kind`` is the seed's type ("%", "!", "#", see yaseer.basic.randomness).

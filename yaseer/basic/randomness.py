@@ -1,7 +1,9 @@
 """RND and RANDOMIZE: one generator per dialect, each with the same small interface.
 
 ``rnd(x)`` is BASIC's ``RND(x)``: x > 0 (or no argument) the next number in [0, 1),
-x = 0 the last one again, x < 0 reseeds from x first.  ``randomize(value, kind)``
+x = 0 the last one again, x < 0 reseeds from x first; ``drawer()`` a callable that
+draws the next number as fast as the generator can (RND(x) with a constant x > 0).
+``randomize(value, kind)``
 is ``RANDOMIZE value`` where ``kind`` is the value's BASIC type (``"%"`` integer,
 ``"!"`` single, ``"#"`` double), because GW-BASIC reseeds from the bytes the value
 is stored in.  ``reset()`` is what RUN does.
@@ -27,36 +29,86 @@ _RESEED_STRIDE = 0x43FD00  # RANDOMIZE n moves the state by n times this
 
 
 class RepeatableRandom:
-    """The Casio dialect's RND: Mersenne Twister, seed 0 at RUN (no Casio sequence is documented)."""
+    """The Casio dialect's RND: Mersenne Twister, seed 0 at RUN (no Casio sequence is documented).
+
+    The compiled code draws ``RND`` and ``RND(x)`` with a constant x > 0 through
+    :meth:`drawer`, the generator's own C method, which records nothing; so RND(0)
+    reads the last number back from the generator's state (:func:`last_drawn`).
+    """
 
     seed_prompt = None  # RANDOMIZE alone seeds from the system
 
     def __init__(self) -> None:
+        self._seeded = None  # made at the first RND or RANDOMIZE: a run without them never imports random
         self.reset()
 
     def reset(self) -> None:
-        self._seeded = None  # made at the first RND or RANDOMIZE: a run without them never imports random
-        self._last = 0.0
+        """RUN: seed 0 again (a generator once made is kept, so :meth:`drawer`'s method stays valid)."""
+        if self._seeded is not None:
+            self._seeded.seed(0)
+        self._mark(0.0)
+
+    def _mark(self, last: float) -> None:
+        """Note the state right after a seeding and the last number then (RND(0) before any draw)."""
+        self._seed_state = None if self._seeded is None else self._seeded.getstate()
+        self._seed_last = last
 
     @property
     def _generator(self):
-        """The Mersenne Twister, seeded with 0 when first needed after RUN."""
+        """The Mersenne Twister, seeded with 0 when first needed."""
         if self._seeded is None:
             import random
-
             self._seeded = random.Random(0)
+            self._mark(self._seed_last)
         return self._seeded
+
+    def drawer(self):
+        """The callable that draws the next number (RND(x), x > 0)."""
+        return self._generator.random
+
+    def last(self) -> float:
+        """The number RND last gave (0.0 after RUN before any; after RANDOMIZE the one before it)."""
+        if self._seeded is None:
+            return self._seed_last
+        state = self._seeded.getstate()
+        if state == self._seed_state:
+            return self._seed_last
+        return last_drawn(state)
 
     def rnd(self, x: float = 1.0) -> float:
         if x < 0:
             self._generator.seed(x)
         if x != 0:
-            self._last = self._generator.random()
-        return self._last
+            return self._generator.random()
+        return self.last()
 
     def randomize(self, value, kind: str = "!") -> None:
         """RANDOMIZE value; ``None`` (RANDOMIZE alone) seeds from the system."""
+        last = self.last()
         self._generator.seed(value)
+        self._mark(last)
+
+
+def _tempered(y: int) -> int:
+    """The Mersenne Twister's tempering of one state word (its output)."""
+    y ^= y >> 11
+    y ^= (y << 7) & 0x9D2C5680
+    y ^= (y << 15) & 0xEFC60000
+    return y ^ (y >> 18)
+
+
+def last_drawn(state: tuple) -> float:
+    """The number ``random.Random.random`` returned last, from ``getstate()`` after it.
+
+    CPython's ``random()`` takes two 32-bit outputs, a >> 5 and b >> 6, and returns
+    (a * 2**26 + b) / 2**53; outputs are the tempered state words, taken in order
+    from index 0 after each regeneration of all 624 (an even number: the two words of
+    one number are never split by a regeneration, so the index is >= 2 after any draw).
+    """
+    words = state[1]
+    index = words[-1]
+    a, b = _tempered(words[index - 2]) >> 5, _tempered(words[index - 1]) >> 6
+    return (a * 67108864.0 + b) * (1.0 / 9007199254740992.0)
 
 
 class GwRandom:
@@ -73,6 +125,10 @@ class GwRandom:
 
     def _advance(self) -> None:
         self.state = (self.state * _MULTIPLIER + _INCREMENT) % _PERIOD
+
+    def drawer(self):
+        """The callable that draws the next number (RND(x), x > 0)."""
+        return self.rnd
 
     def rnd(self, x: float = 1.0) -> float:
         if x < 0:
