@@ -204,3 +204,11 @@ def test_slider_crank_rates_match_differences_for_random_linkages(eccentricity, 
     rod_rate, rod_accel = central(*angle_samples(*positions.rod.angle), step=FINE)
     assert abs(moving.rod.omega - rod_rate) < 1e-5 * (1 + abs(rod_rate))
     assert abs(moving.rod.alpha - rod_accel) < 1e-3 * (1 + abs(rod_accel))
+
+
+def test_a_subnormal_eccentricity_is_a_tiny_offset_not_an_error():
+    """Found by hypothesis: cmath.phase raised OverflowError for the subnormal angle."""
+    offset = slider_crank(5e-324, 1.0, 3.0, 0.0, 0.0, 0.0, axis_deg=0.0)
+    plain = slider_crank(0.0, 1.0, 3.0, 0.0, 0.0, 0.0, axis_deg=0.0)
+    assert abs(offset.pin_b.pos - plain.pin_b.pos) < 1e-300
+    assert abs(offset.rod.angle - plain.rod.angle) < 1e-300

@@ -47,7 +47,12 @@ def _imag(value) -> float:
     return value.imag
 
 
-_angle = cmath.phase  # atan2(imag, real)
+def _angle(value: complex) -> float:
+    """atan2(imag, real) in radians.  (Not cmath.phase: it raises OverflowError when the
+    angle underflows to a subnormal, as for an eccentricity of 5e-324.)"""
+    return math.atan2(value.imag, value.real)
+
+
 _unit = functools.partial(cmath.rect, 1.0)  # u(angle) = cos(angle) + i sin(angle)
 
 
