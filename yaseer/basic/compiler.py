@@ -208,13 +208,18 @@ def _is_safe_item(item) -> bool:
 
 
 def _print_chunks(parts: list) -> list:
-    """PRINT items split so that each chunk holds one value and the separators before it."""
-    chunks, current = [], []
+    """PRINT items split so that each chunk holds one thing to evaluate (a value with the
+    ``_NUMCOMMA`` mark before it, TAB or SPC) and the commas after it: each comma moves
+    the cursor before the next item is evaluated, so a message that item prints
+    (``Overflow``) lands where GW-BASIC prints it.  Leading commas are a chunk of their own."""
+    chunks, current, evaluated = [], [], False
     for part in parts:
+        if part != "_COMMA":
+            if evaluated or (current and current[-1] == "_COMMA"):
+                chunks.append(current)
+                current, evaluated = [], False
+            evaluated = part != "_NUMCOMMA"
         current.append(part)
-        if part not in ("_COMMA", "_NUMCOMMA") and not part.startswith(("_Tab(", "_Spc(")):
-            chunks.append(current)
-            current = []
     if current or not chunks:
         chunks.append(current)
     return chunks
