@@ -157,10 +157,11 @@ def test_a_warm_run_builds_no_other_commands_parser(cache):
     assert done.stdout.splitlines()[-1] == "['yaseer.commands.options', 'yaseer.commands.output', 'yaseer.commands.run']"
 
 
-NOT_FOR_A_PLAIN_RUN = ("argparse", "typing", "gettext", "locale", "shutil", "yaseer.commands.parsers")
-"""Not imported by a warm ``yaseer run FILE [options]`` of a BASIC-only listing: the command line is
-read from the run command's table without argparse (with gettext, locale and shutil for its help
-width), and no named tuple of the machine is a ``typing.NamedTuple``."""
+NOT_FOR_A_PLAIN_RUN = ("argparse", "typing", "gettext", "locale", "shutil", "importlib", "yaseer.commands.parsers")
+"""Not imported by a warm ``yaseer run FILE [options]``: the command line is read from the run
+command's table without argparse (with gettext, locale and shutil for its help width), no named
+tuple of the machine or the linkages is a ``typing.NamedTuple``, and the command's module and the
+linkages' default methods are found without importlib."""
 
 
 @pytest.mark.parametrize("options", [(), ("--dialect", "gw", "--format=csv", "--angle", "deg", "--arith=binary")])
@@ -169,6 +170,12 @@ def test_a_plain_run_command_line_imports_no_argparse_and_no_typing(options, cac
     listing.write_text("10 PRINT 1\n")
     output, imported = warm_run(listing, cache, NOT_FOR_A_PLAIN_RUN, options)
     assert output == (" 1 \n" if not options else "1.0\n")
+    assert imported == set()
+
+
+def test_a_warm_run_calling_the_programs_imports_no_argparse_and_no_typing(cache):
+    output, imported = warm_run(ROOT / "listings" / "example1.bas", cache, NOT_FOR_A_PLAIN_RUN)
+    assert output == (ROOT / "tests" / "golden" / "example1.txt").read_text()
     assert imported == set()
 
 

@@ -19,7 +19,7 @@ receives +value, the upstream body -value.  Forces are complex numbers
 from __future__ import annotations
 
 import functools
-from typing import NamedTuple  # records (named tuples: dataclasses costs start-up, issue 15)
+from collections import namedtuple  # records (not dataclasses or typing.NamedTuple: start-up, issue 15)
 
 from yaseer.linkages.errors import SingularForceError, UnknownLoadError
 from yaseer.linkages.numerics import SCALAR, math_for
@@ -32,25 +32,19 @@ from yaseer.linkages.planar import Motion, cross
 SINGULAR_TOLERANCE = 1e-9
 
 
-class Body(NamedTuple):
-    """A rigid body: mass (kg), inertia about its mass centre (kg m**2), the
-    motion of the mass centre and the angular acceleration (rad/s**2)."""
+class Body(namedtuple("Body", "name mass inertia centre alpha particle", defaults=(False,))):
+    """A rigid body ``name``: ``mass`` (kg), ``inertia`` about its mass centre (kg m**2),
+    the :class:`Motion` of the mass ``centre`` and the angular acceleration ``alpha``
+    (rad/s**2), each a float or an array; ``particle`` (default False): no moment equation."""
 
-    name: str
-    mass: numpy.ndarray | float
-    inertia: numpy.ndarray | float
-    centre: Motion
-    alpha: numpy.ndarray | float
-    particle: bool = False
+    __slots__ = ()
 
 
-class Load(NamedTuple):
-    """A load of scalar value on ``body``: a force along unit ``direction`` acting
-    at ``point``, or (``direction is None``) a couple."""
+class Load(namedtuple("Load", "body direction point", defaults=(None, None))):
+    """A load of scalar value on ``body`` (a name): a force along unit ``direction`` acting
+    at ``point`` (complex numbers or arrays), or (``direction is None``) a couple."""
 
-    body: str
-    direction: numpy.ndarray | complex | None = None
-    point: numpy.ndarray | complex | None = None
+    __slots__ = ()
 
 
 def point_loads(body: str, point, perpendicular) -> dict[str, "Load"]:
@@ -64,19 +58,15 @@ def point_loads(body: str, point, perpendicular) -> dict[str, "Load"]:
     }
 
 
-class Joint(NamedTuple):
-    """An unknown reaction, the action of ``upstream`` (None: ground) on ``downstream``.
+class Joint(namedtuple("Joint", "name upstream downstream kind point direction", defaults=(None, None))):
+    """An unknown reaction ``name``, the action of body ``upstream`` (None: ground) on body ``downstream``.
 
     ``kind`` is ``"pin"`` (two components, result complex), ``"slide"`` (a force
-    along unit ``direction``) or ``"couple"``.
+    along unit ``direction``) or ``"couple"``; ``point`` where it acts (``point`` and
+    ``direction``: complex numbers or arrays, default None).
     """
 
-    name: str
-    upstream: str | None
-    downstream: str
-    kind: str
-    point: numpy.ndarray | complex | None = None
-    direction: numpy.ndarray | complex | None = None
+    __slots__ = ()
 
 
 class _Plan:
@@ -406,15 +396,12 @@ def _reactions(plan: _Plan, joints: list[Joint], pin_forms: dict, solution: list
     return reactions
 
 
-class MassProps(NamedTuple):
-    """Mass (kg), inertia about the mass centre (kg m**2) and where the mass centre
+class MassProps(namedtuple("MassProps", "mass inertia distance offset_deg", defaults=(0.0, 0.0, 0.0, 0.0))):
+    """``mass`` (kg), ``inertia`` about the mass centre (kg m**2) and where the mass centre
     lies: ``distance`` from the link's reference joint at ``offset_deg`` degrees
-    counter-clockwise from the link's reference line."""
+    counter-clockwise from the link's reference line (floats or arrays, each 0 by default)."""
 
-    mass: numpy.ndarray | float = 0.0
-    inertia: numpy.ndarray | float = 0.0
-    distance: numpy.ndarray | float = 0.0
-    offset_deg: numpy.ndarray | float = 0.0
+    __slots__ = ()
 
 
 def rigid_body(linkage, body: str, props: MassProps) -> Body:
@@ -433,13 +420,11 @@ def loads_at_point(linkage, body: str, point_of_interest) -> dict[str, Load]:
                        linkage.load_direction(body, distance, offset))
 
 
-class ForceResult(NamedTuple):
-    """A solved force analysis: the name and value of the unknown load, and the
-    joint reactions by name (pins complex ``Fx + 1j*Fy``, slides and couples real)."""
+class ForceResult(namedtuple("ForceResult", "unknown value reactions")):
+    """A solved force analysis: the name (``unknown``) and ``value`` of the unknown load, and
+    the joint ``reactions`` by name (pins complex ``Fx + 1j*Fy``, slides and couples real)."""
 
-    unknown: str
-    value: numpy.ndarray
-    reactions: dict[str, numpy.ndarray]
+    __slots__ = ()
 
 
 def analysis_shape(*arrays) -> tuple[int, ...]:

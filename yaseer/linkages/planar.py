@@ -10,7 +10,7 @@ are rad/s and rad/s**2, counter-clockwise positive.
 
 from __future__ import annotations
 
-from typing import ClassVar, NamedTuple
+from collections import namedtuple  # records (not typing.NamedTuple: importing typing costs start-up, issue 15)
 
 from yaseer.linkages.errors import LockedError
 from yaseer.linkages.numerics import QUADRANTS, SCALAR, math_for
@@ -88,22 +88,19 @@ def solve_two_directions(rhs, first, second, xp=None):
     return cross(rhs, second) / determinant, cross(first, rhs) / determinant
 
 
-class Motion(NamedTuple):
-    """Position (length units), velocity (per s) and acceleration (per s**2) of a point,
-    each a complex array ``x + 1j*y`` in the frame of the crank pivot Ao."""
+class Motion(namedtuple("Motion", "pos vel acc")):
+    """Position ``pos`` (length units), velocity ``vel`` (per s) and acceleration ``acc``
+    (per s**2) of a point, each :data:`Values`, ``x + 1j*y`` in the frame of the crank pivot Ao."""
 
-    pos: Values
-    vel: Values
-    acc: Values
+    __slots__ = ()
 
 
-class Rotation(NamedTuple):
-    """Inclination (radians, not normalised), angular velocity (rad/s) and angular
-    acceleration (rad/s**2) of a link, counter-clockwise positive."""
+class Rotation(namedtuple("Rotation", "angle omega alpha")):
+    """Inclination ``angle`` (radians, not normalised), angular velocity ``omega`` (rad/s)
+    and angular acceleration ``alpha`` (rad/s**2) of a link, counter-clockwise positive
+    (each :data:`Values`)."""
 
-    angle: Values
-    omega: Values
-    alpha: Values
+    __slots__ = ()
 
     @property
     def degrees(self):
@@ -111,12 +108,11 @@ class Rotation(NamedTuple):
         return normalize_degrees(math_for(self.angle).degrees(self.angle))
 
 
-class Stretch(NamedTuple):
-    """A length (length units) and its first and second time derivatives."""
+class Stretch(namedtuple("Stretch", "value rate accel")):
+    """A length ``value`` (length units) and its first and second time derivatives
+    ``rate`` and ``accel`` (each :data:`Values`)."""
 
-    value: Values
-    rate: Values
-    accel: Values
+    __slots__ = ()
 
 
 def fixed_point(position, xp=None) -> Motion:
@@ -184,15 +180,13 @@ def perpendicular_direction(reference_direction, offset_deg, distance):
     return sign * reference_direction * xp.unit(xp.radians(offset_deg) + xp.pi / 2)
 
 
-class DrivenCrank(NamedTuple):
-    """The driving crank of a call: its rotation, its (flexible) length, the motion
-    of its pin A, and whether any crank rate is non-zero (``moving``; when not,
-    A's velocity and acceleration are exactly 0 and no rates are computed)."""
+class DrivenCrank(namedtuple("DrivenCrank", "rotation length pin moving")):
+    """The driving crank of a call: its ``rotation`` (a :class:`Rotation`), its (flexible)
+    ``length`` (a :class:`Stretch`), the :class:`Motion` of its ``pin`` A, and whether any
+    crank rate is non-zero (``moving``; when not, A's velocity and acceleration are exactly
+    0 and no rates are computed)."""
 
-    rotation: Rotation
-    length: Stretch
-    pin: Motion
-    moving: bool
+    __slots__ = ()
 
 
 def driven_crank(crank_length, crank_angle_deg, omega, alpha, crank_length_rate, crank_length_accel, *,
@@ -227,8 +221,8 @@ class CrankedLinkage:
     """
 
     crank: Rotation
-    FIELDS: ClassVar[tuple[str, ...]] = ("crank",)
-    FRAMES: ClassVar[dict[str, tuple[str | None, str, bool]]] = {"crank": (None, "crank", False)}
+    FIELDS: tuple[str, ...] = ("crank",)  # class constants (typing's ClassVar is not imported: start-up)
+    FRAMES: dict[str, tuple[str | None, str, bool]] = {"crank": (None, "crank", False)}
 
     def __init__(self, *values) -> None:
         if len(values) != len(self.FIELDS):

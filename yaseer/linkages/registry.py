@@ -14,8 +14,9 @@ line, ``--method 2=newton``).
 
 from __future__ import annotations
 
-import importlib
-from typing import Callable
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
+    from typing import Callable
 
 from yaseer.linkages.errors import UnknownMethodError
 
@@ -41,11 +42,14 @@ def register(linkage: str, name: str, *, default: bool = False) -> Callable[[Cal
 
 
 def _load_extensions() -> None:
-    """Import the extension packages once, so their methods are registered."""
+    """Import the extension packages once, so their methods are registered (importlib only then:
+    a run with the default methods never needs it, and importing it costs start-up)."""
     global _extensions_loaded
     if _extensions_loaded:
         return
     _extensions_loaded = True
+    import importlib
+
     for package in EXTENSION_PACKAGES:
         try:
             importlib.import_module(package)

@@ -19,24 +19,20 @@ Methods:
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from collections import namedtuple  # not typing.NamedTuple: importing typing costs start-up (issue 15)
 
 from yaseer.linkages.errors import AssemblyError, MethodDivisionByZero
 from yaseer.linkages.numerics import math_for
-from yaseer.linkages.planar import Values, dot
+from yaseer.linkages.planar import dot
 from yaseer.linkages.registry import lookup, register
 
 
-class VirtualLink(NamedTuple):
-    """Inclination T (degrees, [0, 360)), length L, dT/dt, d2T/dt2 (rad/s, rad/s**2),
-    dL/dt, d2L/dt2 (length/s, length/s**2); floats or arrays."""
+class VirtualLink(namedtuple("VirtualLink", "angle_deg length angle_rate angle_accel length_rate length_accel")):
+    """Inclination T (``angle_deg``, degrees, [0, 360)), ``length`` L, dT/dt, d2T/dt2
+    (``angle_rate``, ``angle_accel``: rad/s, rad/s**2), dL/dt, d2L/dt2 (``length_rate``,
+    ``length_accel``: length/s, length/s**2); floats or arrays."""
 
-    angle_deg: Values
-    length: Values
-    angle_rate: Values
-    angle_accel: Values
-    length_rate: Values
-    length_accel: Values
+    __slots__ = ()
 
 
 def virtual_link(x, y, vx=0.0, vy=0.0, ax=0.0, ay=0.0, *, method: str | None = None) -> VirtualLink:
