@@ -80,7 +80,7 @@ def test_gosub_returns_into_a_native_loop_without_ending_it():
     program = "10 FOR I=1 TO 5: GOSUB 100: S=S+I: NEXT I: PRINT S;I: END\n100 RETURN"
     assert same_as_general(program) == " 15  6 \n"
     source = source_of(program)
-    assert "n_I in ((" in source and "_stk.append" not in source  # one native loop
+    assert "n_I in (" in source and "_stk.append" not in source  # one native loop
 
 
 # ---------------------------------------------------------------- empty loops (delay loops)
@@ -189,3 +189,31 @@ def test_rnd_zero_in_a_direct_statement_repeats_the_last_number_of_the_run():
     assert machine.scalar("X") == expected
     machine.execute_direct("PRINT RND(0)=X; RND(0)-X")
     assert screen.getvalue() == "-1  0 \n"
+
+
+# ---------------------------------------------------------------- SIN and COS in degrees
+
+def test_degree_sine_and_cosine_test_for_multiples_of_90_first():
+    import math
+
+    def reference(function, exact, x):
+        """The angle reduced to [0, 360), exact at 0, 90, 180 and 270, else the radian function."""
+        r = math.fmod(x, 360.0)
+        r = r + 360.0 if r < 0 else r
+        return exact[r] if r in exact else function(math.radians(r))
+
+    sines, cosines = {0.0: 0.0, 90.0: 1.0, 180.0: 0.0, 270.0: -1.0}, {0.0: 1.0, 90.0: 0.0, 180.0: -1.0, 270.0: 0.0}
+    angles = [k * 7.5 for k in range(-200, 200)] + [33.0, 1e6 + 0.25, -1e-20, 359.999999, 45.5, -90.0, 450.0]
+    for x in angles:
+        assert runtime.sin_degrees(x) == reference(math.sin, sines, x), x
+        assert runtime.cos_degrees(x) == reference(math.cos, cosines, x), x
+
+
+# ---------------------------------------------------------------- sums that cannot overflow
+
+def test_adding_a_bounded_function_needs_no_overflow_check():
+    # RND, SIN, COS and SGN are at most 1 in size: added to a finite double, no infinity
+    assert "_ovf" not in source_of("10 R=R+RND(1)-SIN(R)+COS(30)+SGN(R)")
+    assert "_ovf" in source_of("10 R=R+X")  # two variables may overflow
+    program = "10 R=1.79E308: R=R+RND(1)+SIN(30)+COS(60)+SGN(R): PRINT R=1.79E308; R-1.79E308"
+    assert run_text(program) == "-1  0 \n"  # the largest doubles absorb the small terms

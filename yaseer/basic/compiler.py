@@ -160,6 +160,15 @@ def _is_constant(node) -> bool:
     return isinstance(node, ast.Num) or (isinstance(node, ast.Unary) and _is_constant(node.operand))
 
 
+_BOUNDED = frozenset({"RND", "SIN", "COS", "SGN"})  # results in [-1, 1]
+
+
+def _is_small(node) -> bool:
+    """A constant, or a function whose result is at most 1 in size (RND, SIN, COS, SGN):
+    added to a finite double it cannot give an infinity."""
+    return _is_constant(node) or (isinstance(node, ast.Call) and node.name in _BOUNDED)
+
+
 def _constant_value(node) -> float | None:
     """The value of a number literal, or of one with signs before it (``-1.5``); else None."""
     if isinstance(node, ast.Num):
@@ -176,7 +185,7 @@ def _may_overflow(node, single: bool = False) -> bool:
     if isinstance(node, ast.Binary):
         if node.op in ("*", "/"):
             return True
-        if node.op in ("+", "-") and (single or not (_is_constant(node.left) or _is_constant(node.right))):
+        if node.op in ("+", "-") and (single or not (_is_small(node.left) or _is_small(node.right))):
             return True
         return _may_overflow(node.left, single) or _may_overflow(node.right, single)
     if isinstance(node, ast.Unary):
@@ -975,7 +984,10 @@ class AreaCompiler:
                 values, _ = self.constant_passes(stmt)
                 self.emit(f"if {test}:")
                 self.indent += 1
-                if not self.plan.option_base and all(v == int(v) and 0 <= v < 2.0 ** 52 for v in values):
+                first, last = self.loop_range
+                indexing = any(isinstance(node, ast.Elem) and stmt.var in node.indices
+                               for node in nodes([self.flat[k][1] for k in range(first + 1, last)]))
+                if indexing and not self.plan.option_base and all(v == int(v) and 0 <= v < 2.0 ** 52 for v in values):
                     # the subscript of each value too: the body indexes arrays with it
                     self.whole_index[stmt.var.name] = f"_k{n}"
                     pairs = "".join(f"({int(v)}, {v!r}), " for v in values)
@@ -1063,7 +1075,8 @@ class AreaCompiler:
         short loop with constant bounds, or when the body may change the variable);
         ``"constant"``: such a short loop in plain doubles iterates over a tuple of
         its values made at compile time (:meth:`constant_passes`), with each value's
-        subscript beside it when all are whole numbers >= 0;
+        subscript beside it when all are whole numbers >= 0 and the body indexes
+        an array with the variable;
         ``"values"``: ``for var in _frange(...)`` when nothing in the body can
         change the variable; ``"count"``: ``for _ in range(n)`` when the body does
         not even read it (the variable's value is set after the loop, or on an error).
@@ -1204,7 +1217,8 @@ class AreaCompiler:
         self.emit(f"#BREAK#{len(self.break_infos)}")
         self.break_infos.append((self.flat[i + 1][0], tuple(self.open_loops)))
         self.line = None
-        self.set_line(self.flat[i][0])
+        # (the line of the body's first statement, where a break lands; the FOR's for an empty body)
+        self.set_line(self.flat[i + 1][0] if j > i + 1 else self.flat[i][0])
         body_mark = len(self.cur.code)
         self.walk(i + 1, j)
         self.trace_line(j)  # a NEXT that starts its line

@@ -217,16 +217,23 @@ _EXACT_SIN = {0.0: 0.0, 90.0: 1.0, 180.0: 0.0, 270.0: -1.0}
 _EXACT_COS = {0.0: 1.0, 90.0: 0.0, 180.0: -1.0, 270.0: 0.0}
 
 
+_sin, _cos = math.sin, math.cos
+
+
 def sin_degrees(x: float) -> float:
     r = x % 360.0
+    if r % 90.0:  # (not a multiple of 90 degrees: the common case, one test)
+        return _sin(r * _RADIANS_PER_DEGREE)
     exact = _EXACT_SIN.get(r)
-    return math.sin(r * _RADIANS_PER_DEGREE) if exact is None else exact
+    return _sin(r * _RADIANS_PER_DEGREE) if exact is None else exact
 
 
 def cos_degrees(x: float) -> float:
     r = x % 360.0
+    if r % 90.0:
+        return _cos(r * _RADIANS_PER_DEGREE)
     exact = _EXACT_COS.get(r)
-    return math.cos(r * _RADIANS_PER_DEGREE) if exact is None else exact
+    return _cos(r * _RADIANS_PER_DEGREE) if exact is None else exact
 
 
 def tan_degrees(x: float) -> float:
