@@ -20,6 +20,7 @@ import sys
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings, strategies as st
 
 import yaseer
 
@@ -217,3 +218,23 @@ def test_the_scanner_leaves_every_other_command_line_to_argparse(argv):
     from yaseer.commands.run import ARGUMENTS
 
     assert scan(argv, ARGUMENTS) is None
+
+
+WORDS = ("x.bas", "y.bas", "-", "", "a b", "-5", "--", "-h", "--help", "--form", "--pr", "--dialect", "--dialect=gw",
+         "--dialect=", "gw", "casio", "xx", "--format", "csv", "text", "--printer", "--printer=out.txt", "--prog",
+         "--prog=5=p.bas", "5=p.bas", "12=x", "--method", "5=paper", "5=nonsense", "--angle", "deg", "--arith",
+         "decimal", "--input", "--files", "dir", "--no-such", "-x", "--files=")
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.sampled_from(WORDS), max_size=6).flatmap(lambda words: st.permutations([*words, "x.bas"])))
+def test_whatever_the_scanner_reads_argparse_reads_the_same(argv):
+    """Any command line the scanner answers for (words of every kind, one file among them),
+    argparse parses to the same namespace."""
+    from yaseer.cli import command_parser
+    from yaseer.commands.options import scan
+    from yaseer.commands.run import ARGUMENTS
+
+    scanned = scan(argv, ARGUMENTS)
+    if scanned is not None:
+        assert vars(scanned) == vars(command_parser("run").parse_args(argv))
