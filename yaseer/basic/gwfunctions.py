@@ -205,6 +205,27 @@ def read_number(text: str, largest: float | None = None) -> tuple[float, int]:
     ``largest_number``) a number beyond it is an infinity of its sign instead, which
     the caller passes to the dialect's overflow policy (yaseer/basic/arith_policy.py).
     """
+    value, end, _, _ = _read(text, largest)
+    return value, end
+
+
+def val_typed(text: str, largest: float) -> tuple[float, str]:
+    """VAL in gw: the number (:func:`read_number`) and the type GW-BASIC's reader gives
+    it, as its tokeniser types a literal: ``"#"`` for a ``D`` exponent, a ``#`` after
+    it or more than 7 significant digits, else ``"!"`` (``&H``/``&O`` numbers too),
+    whose value is the one GW's conversion gives (``numbers.single_literal``),
+    infinite beyond the single range."""
+    value, _, kind, literal = _read(text, largest)
+    if kind == "!" and literal and 0.0 < abs(value) < math.inf:
+        from yaseer.basic.numbers import single_literal, to_single
+
+        value = math.copysign(to_single(single_literal(literal)), value)
+    return value, kind
+
+
+def _read(text: str, largest: float | None) -> tuple[float, int, str, str]:
+    """(value, end, type, the decimal literal's digits as ``numbers.single_literal`` reads
+    them, "" for ``&H``/``&O``) of the number at the start of ``text``."""
     packed, where = [], []  # the characters without blanks, and their positions
     for k, ch in enumerate(text):
         if ch not in _BLANKS:
@@ -213,17 +234,18 @@ def read_number(text: str, largest: float | None = None) -> tuple[float, int]:
     s = "".join(packed)
     if s.startswith("&"):
         value, used = _read_radix(s)
+        kind, literal = "!", ""
     else:
-        value, used = _read_decimal(s, largest)
+        value, used, kind, literal = _read_decimal(s, largest)
     end = where[used - 1] + 1 if used else 0
-    return value, end
+    return value, end, kind, literal
 
 
-def _read_decimal(s: str, largest: float | None = None) -> tuple[float, int]:
+def _read_decimal(s: str, largest: float | None = None) -> tuple[float, int, str, str]:
     match = _DECIMAL.match(s)
     sign, whole, fraction = match.group(1), match.group(2), (match.group(3) or "").replace(".", "")
     if not whole and not fraction:
-        return 0.0, 0
+        return 0.0, 0, "!", ""
     used = match.end()
     exponent = 0
     found = _EXPONENT.match(s, used)
@@ -239,7 +261,14 @@ def _read_decimal(s: str, largest: float | None = None) -> tuple[float, int]:
         if largest is None:
             raise _overflow()
         value = math.inf
-    return (-value if sign == "-" else value), used
+    from yaseer.basic.scanner import SINGLE_DIGITS
+
+    significant = (whole + fraction).strip("0") if match.group(3) is not None else whole.lstrip("0")
+    after = s[used:used + 1]
+    double = (found is not None and found.group(0)[0] == "D") or after == "#" or (
+        after != "!" and len(significant) > SINGLE_DIGITS)
+    literal = f"{whole or '0'}.{fraction}E{exponent}"
+    return (-value if sign == "-" else value), used, "#" if double else "!", literal
 
 
 def _read_radix(s: str) -> tuple[float, int]:

@@ -24,7 +24,9 @@ import signal
 import sys
 from functools import lru_cache
 
-from yaseer.basic import arith_policy, dialect as dialects, formatting, gwfunctions, numbers, program_cache, runtime
+from yaseer.basic import (
+    arith_policy, dialect as dialects, formatting, gwfunctions, numbers, program_cache, runtime, val_numbers,
+)
 from yaseer.basic.number_models import initial_value
 from yaseer.basic.files import FileTable, Sandbox
 from yaseer.basic.compiled import MAX_STACK, CompiledArea  # MAX_STACK: GOSUB returns + open FOR loops together
@@ -426,7 +428,7 @@ class Machine:
         if self.dialect.typed_numbers:
             ns.update(numbers.RUNTIME)
             ns.update(arith_policy.helpers(self.arith, ns["_idiv"], ns["_mod"], ns["_pow"]))
-            ns["_val"] = lambda s: gwfunctions.val(s, self.dialect.largest_number)
+            ns.update(val_numbers.helpers(self.arith, ns, self.dialect.largest_number))
         ns.update(self._trig_functions())
         if self.dialect.arithmetic == "decimal":
             from yaseer.basic import decimal_arith  # here: only --arith decimal loads the decimal module

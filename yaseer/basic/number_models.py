@@ -7,7 +7,8 @@ expression; :func:`number_model` picks the model from ``Dialect.typed_numbers``.
 * :class:`PlainNumbers` (casio): one numeric type ``"n"``, a Python float;
   the code is what yaseer has always generated.
 * :class:`TypedNumbers` (gw): types ``"%"`` (16-bit integer), ``"!"``
-  (single, the default), ``"#"`` (double); ``"s"`` is a string in both.  A name
+  (single, the default), ``"#"`` (double), ``"?"`` (VAL's: single or double as its
+  text says, known when it runs: :mod:`yaseer.basic.val_numbers`); ``"s"`` is a string in both.  A name
   without a type character gets its letter's type from DEFINT/DEFSNG/DEFDBL/
   DEFSTR (collected from the whole program before compiling, in program order:
   yaseer treats them as declarations, where GW-BASIC runs them as statements).
@@ -16,8 +17,8 @@ expression; :func:`number_model` picks the model from ``Dialect.typed_numbers``.
 
 from __future__ import annotations
 
-NUMERIC = frozenset("n%!#")
-_RANK = {"%": 0, "!": 1, "#": 2}
+NUMERIC = frozenset("n%!#?")
+_RANK = {"%": 0, "!": 1, "?": 1.5, "#": 2}
 
 
 def local_name(name: str) -> str:
@@ -124,7 +125,7 @@ class TypedNumbers(PlainNumbers):
     # result types of the built-in functions: None keeps the argument's type
     _RESULTS = {
         "SIN": "!", "COS": "!", "TAN": "!", "ATN": "!", "SQR": "!", "EXP": "!", "LOG": "!",
-        "RND": "!", "VAL": "#", "ABS": None, "INT": None, "FIX": None, "SGN": "%", "LEN": "%",
+        "RND": "!", "VAL": "?", "ABS": None, "INT": None, "FIX": None, "SGN": "%", "LEN": "%",
         "ASC": "%", "CINT": "%", "CSNG": "!", "CDBL": "#", "CVD": "#",
     }
 
@@ -160,6 +161,8 @@ class TypedNumbers(PlainNumbers):
 
     def arithmetic(self, op: str, left: str, lkind: str, right: str, rkind: str) -> tuple[str, str]:
         kind = lkind if _RANK[lkind] >= _RANK[rkind] else rkind
+        if kind == "?":  # VAL's with a single or integer: the type VAL's text gave (val_numbers.py)
+            return (f"_vdv({left}, {right})" if op == "/" else f"_vop({op!r}, {left}, {right})"), "?"
         if op == "/":  # through the dialect's division-by-zero policy (arith_policy.py)
             if kind == "#":
                 return f"_ddv({left}, {right})", "#"
@@ -192,6 +195,8 @@ class TypedNumbers(PlainNumbers):
     def negate(self, operand: str, kind: str) -> tuple[str, str]:
         if kind == "%":
             return f"_ia(-{operand})", "%"
+        if kind == "?":
+            return f"_vneg({operand})", "?"
         return f"(-{operand})", kind
 
     def logical_not(self, operand: str) -> tuple[str, str]:
@@ -224,13 +229,13 @@ class TypedNumbers(PlainNumbers):
             kind = kinds[0]
             if kind == "%":
                 return (f"_ia({code})" if name == "ABS" else codes[0]), "%"
+            if kind == "?":
+                return f"_vlike({code}, {codes[0]})", "?"
             return code, kind
         if kind == "!":
-            if name in self._SINGLE_FUNCTIONS and kinds and kinds[0] == "#":  # computed on the single
+            if name in self._SINGLE_FUNCTIONS and kinds and kinds[0] in "#?":  # computed on the single
                 code = f"{helper}({', '.join([self.convert(codes[0], '#', '!')] + codes[1:])})"
             return f"_sfn({code})", "!"
-        if name == "VAL":  # text may name a number beyond the double range
-            return f"_dk({code})", kind
         return code, kind
 
     def printable(self, code: str, kind: str) -> str:
