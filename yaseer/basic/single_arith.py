@@ -112,12 +112,15 @@ def _rounded(exponent: int, mantissa: int, negative: bool) -> float:
 def add(a, b) -> float:
     """``a + b`` of two singles (or integers), rounded as GW-BASIC's ``$FADDS``.
 
-    Fast paths, where GW's result is the exact sum (exact in a Python float when
-    the exponents differ by at most 29) rounded half to even: a subtraction whose
-    exponents differ by at most 3 (no bit of the smaller operand is shifted out,
-    the guard byte's low 5 bits are 0); an addition, unless the carry shifted out a
-    1 below a guard byte of exactly 0x80 (the sum is then 0.5 + 1/512 of a unit
-    above the 24 bits: IEEE rounds up, GW half to even)."""
+    Fast paths, where the exponents differ by at most 29 (the sum is exact in a
+    Python float): a sum that needs at most 24 bits is GW's result (no bit was
+    shifted out, so nothing rounds; tested by Veltkamp's split, which gives the
+    sum cut to 24 bits); otherwise GW's result is the exact sum rounded half to
+    even for a subtraction whose exponents differ by at most 3 (no bit of the
+    smaller operand is shifted out, the guard byte's low 5 bits are 0) and for an
+    addition, unless the carry shifted out a 1 below a guard byte of exactly 0x80
+    (the sum is then 0.5 + 1/512 of a unit above the 24 bits: IEEE rounds up, GW
+    half to even)."""
     if not a:
         return b + 0.0
     if not b:
@@ -127,19 +130,22 @@ def add(a, b) -> float:
     small, large = (a, b) if x <= y else (b, a)
     if x > y:
         x, y = y, x
-    if (a > 0) == (b > 0):
-        if x * 536870912.0 >= y:
-            total = a + b
-            if total >= _SAFE_LOW or total <= -_SAFE_LOW:
-                r = nearest(total)
-                if r == total or (frexp(total)[0] * 16777216.0) % 1.0 not in (0.501953125, 0.498046875):
-                    return r
-    elif x * 8.0 >= y:
+    if x * 536870912.0 >= y:
         total = a + b
         if not total:
             return 0.0
         if total >= _SAFE_LOW or total <= -_SAFE_LOW:
-            return nearest(total)
+            split = total * 536870913.0
+            if split - (split - total) == total:
+                if -_LIMIT < total < _LIMIT:
+                    return total
+                return -inf if total < 0 else inf
+            if (a > 0) == (b > 0):
+                r = nearest(total)
+                if (frexp(total)[0] * 16777216.0) % 1.0 not in (0.501953125, 0.498046875):
+                    return r
+            elif x * 8.0 >= y:
+                return nearest(total)
     small_exponent, small_mantissa = _parts(small)
     exponent, mantissa = _parts(large)
     return _rounded(*_sum(small_exponent, small_mantissa, small < 0, exponent, mantissa, large < 0))
@@ -259,14 +265,16 @@ def power_by_integer(x, n: int) -> float:
     gives 1.  Overflow gives an infinity; 0 to a negative power raises
     ZeroDivisionError."""
     count = int(n)
-    y, z = 1.0, x + 0.0
+    y, z = None, x + 0.0  # y None: still 1 (1 * Z is exact: the first product is Z itself)
     bits = -count if count < 0 else count
     while bits:
         if bits & 1:
-            y = product(y * z)
+            y = z if y is None else product(y * z)
         bits >>= 1
         if bits:
             z = product(z * z)
+    if y is None:
+        return 1.0
     return divide(1.0, y) if count < 0 else y
 
 
