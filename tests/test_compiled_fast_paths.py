@@ -69,6 +69,29 @@ def test_gosub_to_a_bare_return_still_fills_the_stack():
     assert machine.scalar("N") == 10_000  # MAX_STACK GOSUB 10 returns were pushed
 
 
+def test_gosub_to_a_bare_return_in_a_block_that_keeps_the_stack_measures_it_once():
+    # each pass pushes one return point at line 10 (never returned) and enters line 30's
+    # block, which neither pushes nor pops: it measures the stack once as it starts
+    program = "10 GOSUB 30\n30 GOSUB 100: N=N+1: GOTO 10\n100 RETURN"
+    general = program.replace("100 RETURN", "100 REM\n110 RETURN")
+    assert "if _full: _oom()" in source_of(program.replace("GOTO 10", "END"))
+    machine = Machine(screen=io.StringIO())
+    machine.load(program)
+    with pytest.raises(Exception) as fast:
+        machine.run()
+    assert str(fast.value) == error_of(general) == "Out of memory in 30"
+    assert machine.scalar("N") == 10_000 - 1  # the 10000th return point filled the stack
+
+
+def test_gosub_to_a_bare_return_measures_the_stack_each_time_where_a_next_pops_it():
+    # GOSUB 300 makes the loop run through the FOR stack: its NEXT pops, then GOSUB 100
+    program = ("10 FOR I=1 TO 3: GOSUB 300: GOSUB 100\n20 NEXT I: GOSUB 100: PRINT I;X: END\n"
+               "100 RETURN\n300 X=X+1: RETURN")
+    popping = [f for f in source_of(program).split("def ") if "_pop()" in f]
+    assert len(popping) == 1 and "if _full" not in popping[0] and "if len(_stk) >= 10000: _oom()" in popping[0]
+    assert same_as_general(program) == " 4  3 \n"
+
+
 def test_gosub_to_a_bare_return_is_traced_as_the_return_line():
     # TRON shows the RETURN's line once per call, as the general code does
     program = "10 TRON: GOSUB 100: PRINT: GOSUB 100: END\n100 RETURN"

@@ -160,6 +160,9 @@ def _is_constant(node) -> bool:
     return isinstance(node, ast.Num) or (isinstance(node, ast.Unary) and _is_constant(node.operand))
 
 
+# What generated code calls that changes the GOSUB/FOR stack and goes on in the same block.
+_STACK_CHANGES = ("_pop(", "_next_any(", "_clear(", "_call(", "_M.", "_gosub(", "_stk.")
+
 _BOUNDED = frozenset({"RND", "SIN", "COS", "SGN"})  # results in [-1, 1]
 
 
@@ -583,7 +586,7 @@ class AreaCompiler:
         if stmt.target in self.plan.bare_returns:
             # a subroutine that is a plain RETURN: push and pop in place (a full stack
             # is still Out of memory at the GOSUB; TRON still shows the RETURN's line)
-            self.emit(f"if len(_stk) >= {MAX_STACK}: _oom()")
+            self.emit("#FULL#")  # the full-stack check (see block_source)
             if self.trace:
                 self.emit(f"_tr({stmt.target})")
             return
@@ -1303,12 +1306,22 @@ class AreaCompiler:
         store = "; ".join(f"_S[{n!r}] = {local_name(n)}" for n in written)
         loop_back = f"return {block.number}"
         self_loop = any(text == loop_back or text.endswith(": " + loop_back) for _, text in block.code)
+        # A GOSUB compiled in place checks for a full stack.  Every push onto the stack
+        # ends its block, so unless the block pops (a NEXT through the stack), clears
+        # or calls out, the stack's length cannot change while the block runs: it is
+        # measured once, as the block starts.
+        full_check = f"if len(_stk) >= {MAX_STACK}: _oom()"
+        if any(text == "#FULL#" for _, text in block.code) and not any(
+                name in text for _, text in block.code for name in _STACK_CHANGES):
+            full_check = "if _full: _oom()"
         base = 2 if self_loop else 1
         out = [f"def _b{block.number}():"]
         for text in (load, load_arrays):
             if text:
                 out.append("    " + text)
         out.append("    _ln = None")
+        if full_check == "if _full: _oom()":
+            out.append(f"    _full = len(_stk) >= {MAX_STACK}")
         out.append("    try:")
         if self_loop:
             out.append("        while True:")
@@ -1328,6 +1341,8 @@ class AreaCompiler:
                 if name in block.arrays:
                     out.append(pad + f"{array_local(name)} = _A[{name!r}]")  # just dimensioned
                 continue
+            if text == "#FULL#":
+                text = full_check
             if text.startswith("#BREAK#"):
                 pending = self.break_infos[int(text[7:])]
                 continue
