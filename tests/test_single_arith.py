@@ -17,6 +17,7 @@ import io
 import math
 import random
 import struct
+from decimal import Decimal
 from fractions import Fraction
 
 import pytest
@@ -250,3 +251,23 @@ def test_the_inline_sum_of_the_compiled_code_is_the_helpers():
         lines.append(f"{10 + k} A!={v:.9E}: B!=A!+{c}: C!={c}: D!=A!+C!: PRINT B!=D!; B!-D!")
     text = "\n".join(lines) + "\n"
     assert run_gw(text).split() == ["-1", "0"] * len(values)
+
+
+def test_a_widened_single_prints_pcbasics_sixteen_digits():
+    """A double holding a single (``B#=A!``, CDBL) or an integer is exact in GW's 56 bits:
+    its 16 digits are those of GW's output routine (PC-BASIC's ``Double``), which
+    differ from the exactly rounded decimal in about 2% of such values."""
+    from yaseer.basic.numbers import Double, str_dollar
+
+    rng = random.Random(10)
+    differs_from_exact = 0
+    for _ in range(20000):
+        x = random_single(rng) if rng.random() < 0.8 else float(rng.randint(-10 ** 7, 10 ** 7))
+        if not x or abs(x) < 2.0 ** -100 or abs(x) > 2.0 ** 100:
+            continue
+        theirs = pcbasic_numbers.Double(None, VALUES).from_single(pc_single(x)).to_str(True, False).decode()
+        assert str_dollar(Double(x)) == theirs, x
+        exact = format(Decimal(abs(x)), ".16g").lstrip("0")
+        differs_from_exact += "E" not in theirs and "e" not in exact and theirs.strip().lstrip("-").rstrip("0").rstrip(".") != exact.rstrip("0").rstrip(".")
+    assert differs_from_exact > 0  # the routine's digits are not simply the exact value's
+    assert str_dollar(Double(9.625066757202148)) == " 9.625066757202149"

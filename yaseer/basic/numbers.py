@@ -26,7 +26,7 @@ from __future__ import annotations
 import math
 import struct
 
-from yaseer.basic import single_arith
+from yaseer.basic import mbf_digits, single_arith
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
 
 INT_MIN, INT_MAX = -32768, 32767
@@ -235,11 +235,11 @@ class Double(float):
 
 def _single_digits(x: float) -> tuple[str, int]:
     """``abs(x)`` (single precision) to 7 significant digits as GW-BASIC finds them
-    (:func:`yaseer.basic.single_arith.decimal_digits`: scaled by ten in MBF working
+    (:func:`yaseer.basic.mbf_digits.decimal_digits`: scaled by ten in MBF working
     precision, rounded twice: ``1/3`` shows as ``.3333334``, 825157.625 as
     ``825157.7``).  Returns (digit string without trailing zeros, exponent of the
     first digit)."""
-    n, power = single_arith.decimal_digits(x)
+    n, power = mbf_digits.decimal_digits(x)
     return str(n).rjust(SINGLE_DIGITS, "0").rstrip("0") or "0", power + SINGLE_DIGITS - 1
 
 
@@ -247,15 +247,19 @@ def _double_digits(x: float) -> tuple[str, int]:
     """``abs(x)`` (double precision) to at most 16 significant digits, rounded half up.
 
     GW-BASIC's doubles carry 56 bits, yaseer's 53: a value with at most 24 bits (a
-    widened single, an integer) is exact in both and is rounded from its exact
-    binary value (``CDBL(1.1)`` is 1.100000023841858); any other is rounded from the
-    shortest decimal that reads back as it (what was typed, for a literal:
-    ``-90095.2872#`` shows as typed, as on GW-BASIC, not ``-90095.28720000001``).
+    widened single, an integer) is exact in both and gets the digits of GW's output
+    routine (:mod:`yaseer.basic.mbf_digits`: ``CDBL(1.1)`` is 1.100000023841858);
+    any other is rounded half up from the shortest decimal that reads back as it
+    (what was typed, for a literal: ``-90095.2872#`` shows as typed, as on
+    GW-BASIC, not ``-90095.28720000001``).
     """
     from decimal import ROUND_HALF_UP, Decimal  # here: a run printing no double does not load decimal
 
     x = abs(x)
-    exact = Decimal(x) if abs(x) < 3.4e38 and _unpack(_pack(x))[0] == x else Decimal(repr(x))
+    if x < 3.4e38 and _unpack(_pack(x))[0] == x:  # exact in GW's 56 bits: GW's output routine
+        n, power = mbf_digits.decimal_digits(x, mbf_digits.DOUBLE)
+        return str(n).rjust(DOUBLE_DIGITS, "0").rstrip("0") or "0", power + DOUBLE_DIGITS - 1
+    exact = Decimal(repr(x))
     e = exact.adjusted()
     digits = exact.as_tuple().digits
     if len(digits) > DOUBLE_DIGITS:

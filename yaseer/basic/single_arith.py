@@ -29,7 +29,7 @@ GW-BASIC's result:
   reproduce; yaseer gives the nearest single to the true value (:func:`nearest`).
 * A double made single (:func:`from_double`, ``$CSD``): rounded half up on the
   guard byte's top bit.
-* PRINT's digits (:func:`decimal_digits`): as PC-BASIC 2.0.8 reproduces them.
+* PRINT's digits: :mod:`yaseer.basic.mbf_digits` (with this module's working sum and quotient).
 
 The range is MBF's: exponent byte 1..255, values 2**-128 .. (1 - 2**-24) * 2**127.
 A result below it is 0; one at or beyond 2**127 is infinite with its sign, which
@@ -148,14 +148,14 @@ def add(a, b) -> float:
                 return nearest(total)
     small_exponent, small_mantissa = _parts(small)
     exponent, mantissa = _parts(large)
-    return _rounded(*_sum(small_exponent, small_mantissa, small < 0, exponent, mantissa, large < 0))
+    return _rounded(*working_sum(small_exponent, small_mantissa, small < 0, exponent, mantissa, large < 0))
 
 
-def _sum(small_exponent: int, small_mantissa: int, small_negative: bool,
-         exponent: int, mantissa: int, negative: bool) -> tuple[int, int, bool]:
+def working_sum(small_exponent: int, small_mantissa: int, small_negative: bool,
+         exponent: int, mantissa: int, negative: bool, top: int = _TOP) -> tuple[int, int, bool]:
     """The working sum of two working numbers, the second the larger in magnitude
     (not yet normalised or rounded): the steps of ``$FADDS`` listed in the module
-    docstring."""
+    docstring.  ``top``: 2**32 for singles, 2**64 for the doubles' working numbers."""
     shift = exponent - small_exponent
     nothing_lost = small_mantissa & ((1 << shift) - 1) == 0
     small_mantissa >>= shift
@@ -167,7 +167,7 @@ def _sum(small_exponent: int, small_mantissa: int, small_negative: bool,
             mantissa &= ~0x80  # GW's subtraction rounds this guard byte down
     else:
         mantissa += small_mantissa
-        if mantissa >= _TOP:
+        if mantissa >= top:
             exponent += 1
             mantissa >>= 1
         if not nothing_lost:
@@ -217,11 +217,11 @@ def divide(a, b) -> float:
     return nearest(a / b)
 
 
-def _quotient(exponent: int, rest: int, divisor_exponent: int, divisor: int) -> tuple[int, int]:
-    """The working quotient of two working numbers (magnitudes) as PC-BASIC's output
-    routine divides by ten: 32 steps of long division that shift the divisor right,
-    subtracting when the rest is greater."""
-    exponent += 160 + 1 - divisor_exponent
+def working_quotient(exponent: int, rest: int, divisor_exponent: int, divisor: int, width: int = 32) -> tuple[int, int]:
+    """The working quotient of two ``width``-bit working numbers (magnitudes) as
+    PC-BASIC's output routine divides by ten: ``width`` steps of long division that
+    shift the divisor right, subtracting when the rest is greater."""
+    exponent += 128 + width + 1 - divisor_exponent
     quotient = 0
     while divisor:
         quotient <<= 1
@@ -281,47 +281,3 @@ def power_by_integer(x, n: int) -> float:
 def is_integral_power(n) -> bool:
     """Does GW-BASIC's ``$FPWR`` raise to ``n`` by multiplying (``n`` integral, |n| < 32768)?"""
     return -32768 < n < 32768 and n == int(n)
-
-
-# PRINT's digits: the working number is brought into 999999.9 .. 9999999 by dividing
-# and multiplying by ten in working precision (guard byte kept), its guard byte rounded
-# half up after each of the two loops, then it is rounded half up to an integer.
-_TEN = _parts(10.0)
-_DIGITS_TOP = _parts(9999999.0)
-_DIGITS_BOTTOM = _parts(999999.9375)  # the single below 1E+6
-
-
-def decimal_digits(x) -> tuple[int, int]:
-    """``(n, power)`` with ``abs(x)`` shown as ``n * 10**power``, ``n`` of 7 digits: the
-    digits GW-BASIC prints for a nonzero single ``x`` (its output routine as PC-BASIC
-    2.0.8 reproduces it: ``825157.625`` shows as 825157.7, for the guard byte is
-    rounded before the last digit is)."""
-    exponent, mantissa = _parts(x)
-    power = 0
-    while (exponent, mantissa) > _DIGITS_TOP:
-        exponent, mantissa = _quotient(exponent, mantissa, *_TEN)
-        if mantissa < _HALF_TOP:
-            shift = 32 - mantissa.bit_length()
-            mantissa <<= shift
-            exponent -= shift
-        power += 1
-    exponent, mantissa = _carried(exponent, mantissa)
-    while (exponent, mantissa) < _DIGITS_BOTTOM:
-        exponent, mantissa, _ = _sum(exponent + 1, mantissa, False, exponent + 3, mantissa, False)
-        power -= 1
-    exponent, mantissa = _carried(exponent, mantissa)
-    shift = exponent - 152
-    mantissa = mantissa << shift if shift > 0 else mantissa >> -shift
-    if mantissa & 0x80:
-        mantissa += 0x80
-    return mantissa >> 8, power
-
-
-def _carried(exponent: int, mantissa: int) -> tuple[int, int]:
-    """A working number's guard byte rounded half up into its 24 bits (and cleared)."""
-    if mantissa & 0xFF > 0x7F:
-        mantissa += 0x100
-        if mantissa >= _TOP:
-            exponent += 1
-            mantissa >>= 1
-    return exponent, mantissa & ~0xFF
