@@ -42,5 +42,8 @@ def test_the_largest_allowed_array_works():
 
 @pytest.mark.parametrize("limit", ["1E9", "1E12", "1E300"])
 def test_a_long_empty_loop_runs_until_interrupted_not_out_of_memory(limit):
-    """A loop's pass count is not a memory size (one committed state said Out of memory here)."""
-    assert run_mutant(f"10 FOR I = 1 TO {limit}: NEXT\n", with_prog5=False) == "Break in 10"
+    """A loop's pass count is not a memory size (one committed state said Out of memory here).
+    An empty body is counted in C, in chunks: 1E9 passes may end before the interrupt
+    (seconds on a quiet machine); 1E12 cannot."""
+    outcome = run_mutant(f"10 FOR I = 1 TO {limit}: NEXT\n", with_prog5=False)
+    assert outcome in (("Break in 10", "ok") if limit == "1E9" else ("Break in 10",))
