@@ -122,3 +122,10 @@ def test_def_types_hold_for_direct_statements_in_gw():
     machine.execute_direct("DEFDBL B: B = 1 / 3#")
     machine.execute_direct("PRINT B")
     assert screen.getvalue() == " 3  1.5 \n .3333333333333333 \n"
+
+
+def test_literals_below_mbf_range_are_zero_as_pcbasic(pc):
+    """MBF's range begins at 2**-128 (exponent byte 1) for singles and doubles alike."""
+    source = "10 PRINT 1D-50; 1E-50; 2.9D-39; 3D-39; 1#/1D-38; -1D-45\n"
+    assert gw(source) == pc.program(source)
+    assert gw(source).split()[:2] == ["0", "0"]

@@ -40,6 +40,7 @@ SINGLE_LARGEST = (1 - 2.0 ** -24) * 2.0 ** 127  # 1.701412E+38, the end of MBF's
 # MBF's double range ends there too, at (1 - 2**-56) * 2**127, whose nearest Python
 # float is 2**127 (printed 1.701411834604692D+38, as GW-BASIC prints it)
 DOUBLE_LARGEST = 2.0 ** 127
+MBF_SMALLEST = 2.0 ** -128  # the least MBF single or double (exponent byte 1); below it: 0
 
 
 def to_single(x) -> float:

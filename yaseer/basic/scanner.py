@@ -235,7 +235,7 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
     when the line is entered (PC-BASIC 2.0.8: when a program is loaded), not when the
     line runs; see :func:`entry_messages`.
     """
-    from yaseer.basic.numbers import DOUBLE_LARGEST, SINGLE_LARGEST, single_literal, to_single
+    from yaseer.basic.numbers import DOUBLE_LARGEST, MBF_SMALLEST, SINGLE_LARGEST, single_literal, to_single
 
     if upper[i] == "&":
         match = _RADIX_NUMBER.match(upper, i)
@@ -264,6 +264,8 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
     if suffix == "#" or (not suffix and (letter == "D" or digits > SINGLE_DIGITS)):
         if value > DOUBLE_LARGEST:  # MBF's double range ends where the single's does
             value = _overflowed(DOUBLE_LARGEST, notes)
+        elif value < MBF_SMALLEST:  # ... and begins there too: below it a literal is 0
+            value = 0.0
         return (value, "#"), match.end()
     single = to_single(value)
     if not single - single:  # in range: the value GW-BASIC's conversion gives (numbers.mbf_single)
