@@ -168,7 +168,7 @@ def test_an_error_in_a_short_constant_loop_names_its_line_and_keeps_the_variable
 # ---------------------------------------------------------------- Ctrl-C and CONT on the fast paths
 
 BROKEN = {
-    "delay loops": "10 FOR J=1 TO 300: FOR I=1 TO 40000: NEXT I: S=S+J: NEXT J\n20 PRINT S;I;J",
+    "delay loops": "10 FOR J=1 TO 100: FOR I=1 TO 40000: NEXT I: S=S+J: NEXT J\n20 PRINT S;I;J",
     "a short constant loop": ("10 DIM M(5): FOR J=1 TO 60000: FOR L=1 TO 5: M(L)=M(L)+L*J: NEXT L: NEXT J\n"
                               "20 PRINT M(1);M(5);L;J"),
     "a GOSUB in place": "10 K=K+1: GOSUB 100: S=S+K: IF K<150000 THEN 10\n20 PRINT K;S: END\n100 RETURN",
