@@ -9,6 +9,7 @@ raised as ``BasicError`` (or as the Python exception the machine maps: a
 from __future__ import annotations
 
 import math
+from collections import deque
 from itertools import repeat
 
 from yaseer.basic.errors import (
@@ -161,17 +162,17 @@ def pass_counter(start: float, limit: float, step: float):
     return _Accumulator(start, limit, step)
 
 
-IDLE_CHUNK = 1 << 20  # passes of an empty loop counted in one C call (a few milliseconds)
+IDLE_CHUNK = 1 << 20  # passes of an empty loop counted in one C call (about a millisecond)
+_consume = deque(maxlen=0).extend
 
 
 def idle_passes(passes):
     """The passes of a FOR loop whose body is empty (a delay loop), counted in C.
 
     ``passes`` is a :func:`pass_counter`.  For a ``range`` the passes are counted
-    in C, IDLE_CHUNK at a time (``sum`` of ones, about 2.5 ns a pass: a loop of 1E9
-    passes still takes seconds); yields the index of the first pass of each chunk
-    (the top of a pass where Ctrl-C may break, see :func:`counted_value`).  An
-    accumulating counter yields every pass as before.
+    IDLE_CHUNK at a time by a C-level iterator; yields the index of the first pass
+    of each chunk (the top of a pass where Ctrl-C may break, see
+    :func:`counted_value`).  An accumulating counter yields every pass as before.
     """
     if type(passes) is not range:
         yield from passes
@@ -179,7 +180,7 @@ def idle_passes(passes):
     total = len(passes)
     for first in range(0, total, IDLE_CHUNK):
         yield first
-        sum(repeat(1, min(IDLE_CHUNK, total - first)))
+        _consume(repeat(None, min(IDLE_CHUNK, total - first)))
 
 
 def counted_value(passes, start: float, step: float, index: int) -> float:
