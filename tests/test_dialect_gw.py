@@ -129,3 +129,12 @@ def test_literals_below_mbf_range_are_zero_as_pcbasic(pc):
     source = "10 PRINT 1D-50; 1E-50; 2.9D-39; 3D-39; 1#/1D-38; -1D-45\n"
     assert gw(source) == pc.program(source)
     assert gw(source).split()[:2] == ["0", "0"]
+
+
+def test_adding_a_small_constant_to_the_largest_single_stays_in_range_as_pcbasic(pc):
+    """The compiled code drops the overflow check where a constant below 1E+30 is added
+    (less than half a unit of the largest single); a larger one is still checked."""
+    source = ("10 A = 1.701411E+38: B = A + 1: C = A + 9E+29: PRINT B; C\n"
+              "20 D = A + 1E+38: PRINT D: E = -A - 1E+38: PRINT E\n")
+    assert gw(source) == pc.program(source)
+    assert "Overflow" in gw(source)

@@ -166,10 +166,17 @@ _STACK_CHANGES = ("_pop(", "_next_any(", "_clear(", "_call(", "_M.", "_gosub(", 
 _BOUNDED = frozenset({"RND", "SIN", "COS", "SGN"})  # results in [-1, 1]
 
 
-def _is_small(node) -> bool:
+def _is_small(node, single: bool = False) -> bool:
     """A constant, or a function whose result is at most 1 in size (RND, SIN, COS, SGN):
-    added to a finite double it cannot give an infinity."""
-    return _is_constant(node) or (isinstance(node, ast.Call) and node.name in _BOUNDED)
+    added to a finite double it cannot give an infinity.  (``single``: the typed
+    model, whose range ends at 1.7E+38: a constant below 1E+30 in size, less than half
+    a unit of the largest single, cannot carry a sum beyond it.)"""
+    if isinstance(node, ast.Call):
+        return node.name in _BOUNDED
+    if single:
+        value = _constant_value(node)
+        return value is not None and abs(value) < 1e30
+    return _is_constant(node)
 
 
 def _constant_value(node) -> float | None:
@@ -188,7 +195,7 @@ def _may_overflow(node, single: bool = False) -> bool:
     if isinstance(node, ast.Binary):
         if node.op in ("*", "/"):
             return True
-        if node.op in ("+", "-") and (single or not (_is_small(node.left) or _is_small(node.right))):
+        if node.op in ("+", "-") and not (_is_small(node.left, single) or _is_small(node.right, single)):
             return True
         return _may_overflow(node.left, single) or _may_overflow(node.right, single)
     if isinstance(node, ast.Unary):
