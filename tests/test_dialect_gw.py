@@ -138,3 +138,22 @@ def test_adding_a_small_constant_to_the_largest_single_stays_in_range_as_pcbasic
               "20 D = A + 1E+38: PRINT D: E = -A - 1E+38: PRINT E\n")
     assert gw(source) == pc.program(source)
     assert "Overflow" in gw(source)
+
+
+def test_an_integer_loop_compiles_to_the_loop_of_an_untyped_one():
+    """Issue 11: FOR I% is no slower than FOR I: both count in C the same way (the
+    benchmark's 1.0x is this, measured; here the generated code is compared)."""
+    import io
+
+    from yaseer.basic.machine import Machine
+
+    def source(text):
+        machine = Machine(screen=io.StringIO(), dialect="gw")
+        machine.load(text)
+        machine.run()
+        return machine.compiled[0].source
+
+    typed = source("10 FOR I%=1 TO 30000: A=A+1: NEXT\n")
+    untyped = source("10 FOR I=1 TO 30000: A=A+1: NEXT\n")
+    assert typed.replace("i_I", "n_I").replace("'I%'", "'I!'") == untyped
+    assert "for _i_t1 in _it_t1:" in typed  # a native loop, no per-pass helper call for I
