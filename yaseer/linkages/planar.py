@@ -60,12 +60,6 @@ def normalize_degrees(angle_deg):
     return 180.0 - (180.0 - math_for(angle_deg).float(angle_deg)) % 360.0
 
 
-def direction_degrees(vector):
-    """The inclination of ``vector`` in degrees, in (-180, 180]."""
-    xp = math_for(vector)
-    return normalize_degrees(xp.degrees(xp.angle(vector)))
-
-
 def any_nonzero(*values) -> bool:
     """True when any element of any of ``values`` is non-zero (a motion is asked for)."""
     xp = math_for(*values)
