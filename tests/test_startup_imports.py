@@ -27,7 +27,8 @@ import yaseer
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGE_PARENT = str(Path(yaseer.__file__).resolve().parents[1])
 
-NEVER_WARM = ("lark", "numpy", "yaseer.basic.parser", "yaseer.basic.compiler", "yaseer.animation",
+NEVER_WARM = ("lark", "numpy", "yaseer.basic.parser", "yaseer.basic.compiler", "yaseer.basic.compile_expressions",
+              "yaseer.basic.compile_io", "yaseer.basic.compile_loops", "yaseer.animation",
               "pathlib", "decimal", "csv", "hashlib", "random", "dataclasses", "inspect")
 """Imported by no warm run of a listing that prints numbers (they serve other paths)."""
 
