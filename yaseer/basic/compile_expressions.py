@@ -58,26 +58,26 @@ def _call_form(forms: tuple, kinds: list) -> str:
     Syntax error, wrong types Type mismatch."""
     same_length = [form for form in forms if len(form) == len(kinds)]
     if not same_length:
-        raise _syntax_error()
+        raise syntax_error()
     for form in same_length:
         if all(want in ("x", kind) for want, kind in zip(form, kinds)):
             return form
-    raise _type_mismatch()
+    raise type_mismatch()
 
 
 class CompileError(BasicError):
     """A statement that cannot be compiled; it becomes a run-time error of its line."""
 
 
-def _syntax_error() -> CompileError:
+def syntax_error() -> CompileError:
     return CompileError("Syntax error", SYNTAX_ERROR)
 
 
-def _type_mismatch() -> CompileError:
+def type_mismatch() -> CompileError:
     return CompileError("Type mismatch", TYPE_MISMATCH)
 
 
-class _BlockScope:
+class BlockScope:
     """Variable references inside a block: Python locals."""
 
     def __init__(self, compiler: "AreaCompiler"):
@@ -98,7 +98,7 @@ class _BlockScope:
         return array_local(name)
 
 
-class _FnScope:
+class FnScope:
     """Variable references inside a DEF FN body: parameters are locals, the rest global."""
 
     def __init__(self, compiler: "AreaCompiler", params: list):
@@ -143,22 +143,22 @@ def _is_small(node, single: bool = False) -> bool:
     if isinstance(node, ast.Call):
         return node.name in _BOUNDED
     if single:
-        value = _constant_value(node)
+        value = constant_value(node)
         return value is not None and abs(value) < 1e30
     return _is_constant(node)
 
 
-def _constant_value(node) -> float | None:
+def constant_value(node) -> float | None:
     """The value of a number literal, or of one with signs before it (``-1.5``); else None."""
     if isinstance(node, ast.Num):
         return float(node.value)
     if isinstance(node, ast.Unary) and node.op in "+-":
-        value = _constant_value(node.operand)
+        value = constant_value(node.operand)
         return None if value is None else (-value if node.op == "-" else value)
     return None
 
 
-def _may_overflow(node, single: bool = False) -> bool:
+def may_overflow(node, single: bool = False) -> bool:
     """Could this numeric expression produce inf from finite values?  (``single``: the
     typed model, where adding a constant may leave the single range too.)"""
     if isinstance(node, ast.Binary):
@@ -166,11 +166,11 @@ def _may_overflow(node, single: bool = False) -> bool:
             return True
         if node.op in ("+", "-") and not (_is_small(node.left, single) or _is_small(node.right, single)):
             return True
-        return _may_overflow(node.left, single) or _may_overflow(node.right, single)
+        return may_overflow(node.left, single) or may_overflow(node.right, single)
     if isinstance(node, ast.Unary):
-        return _may_overflow(node.operand, single)
+        return may_overflow(node.operand, single)
     if isinstance(node, ast.Call):
-        return any(_may_overflow(a, single) for a in node.args)
+        return any(may_overflow(a, single) for a in node.args)
     return isinstance(node, ast.FnCall)
 
 
@@ -194,7 +194,7 @@ class ExpressionCompiler:
         """(code, numeric type) of a numeric expression; a string is Type mismatch."""
         code, kind = self.expr(node, scope)
         if kind not in NUMERIC:
-            raise _type_mismatch()
+            raise type_mismatch()
         return code, kind
 
     def kind_of(self, node) -> str:
@@ -206,7 +206,7 @@ class ExpressionCompiler:
     def string(self, node, scope) -> str:
         code, kind = self.expr(node, scope)
         if kind != "s":
-            raise _type_mismatch()
+            raise type_mismatch()
         return code
 
     def expr_Num(self, node, scope):
@@ -227,9 +227,9 @@ class ExpressionCompiler:
             if isinstance(index, ast.Num) and index.value >= self.lowest_fast_subscript \
                     and index.value == int(index.value):
                 code += f"[{int(index.value)}]"
-            elif isinstance(index, ast.Var) and index.name in self.whole_index and isinstance(scope, _BlockScope):
+            elif isinstance(index, ast.Var) and index.name in self.whole_index and isinstance(scope, BlockScope):
                 code += f"[{self.whole_index[index.name]}]"  # the subscript of a constant loop's value
-            elif isinstance(index, ast.Var) and index.name in self.counting_vars and isinstance(scope, _BlockScope) \
+            elif isinstance(index, ast.Var) and index.name in self.counting_vars and isinstance(scope, BlockScope) \
                     and not self.plan.option_base:
                 code += f"[int({scope.scalar(index.name)} + 0.5)]"  # a loop variable known to be >= 0
             else:
@@ -248,12 +248,12 @@ class ExpressionCompiler:
         right, rkind = self.expr(node.right, scope)
         if op in _PY_RELATIONS:
             if (lkind == "s") != (rkind == "s"):
-                raise _type_mismatch()
+                raise type_mismatch()
             return self.numbers.truth(f"{left} {_PY_RELATIONS[op]} {right}")
         if op == "+" and lkind == "s" and rkind == "s":
             return f"_cat({left}, {right})", "s"
         if lkind not in NUMERIC or rkind not in NUMERIC:
-            raise _type_mismatch()
+            raise type_mismatch()
         if op in ("+", "-", "*", "/"):
             # a left-leaning chain (A+B+C...) stays flat: Python groups + - and * / the same way
             group = ("+", "-") if op in ("+", "-") else ("*", "/")
@@ -273,7 +273,7 @@ class ExpressionCompiler:
     def expr_Call(self, node, scope):
         forms, result, helper = _FUNCTIONS[node.name]
         args = list(node.args)
-        if node.name == "RND" and (not args or (len(args) == 1 and (_constant_value(args[0]) or 0) > 0)):
+        if node.name == "RND" and (not args or (len(args) == 1 and (constant_value(args[0]) or 0) > 0)):
             return self.numbers.call("RND", "_rndf", [], [], "n")  # the next number (the generator's drawer)
         form = _call_form(forms, [ast.expr_type(arg) for arg in args])
         codes, kinds = [], []
@@ -290,10 +290,10 @@ class ExpressionCompiler:
         params = self.fn_params.get(self.numbers.name(node.name))
         if params is not None:  # a DEF FN of this area: check the call against it
             if len(params) != len(node.args):
-                raise _syntax_error()
+                raise syntax_error()
             for param, arg in zip(params, node.args):
                 if (ast.expr_type(arg) == "s") != (self.numbers.kind(param) == "s"):
-                    raise _type_mismatch()
+                    raise type_mismatch()
         scope.uses_fn = True
         args = []
         for k, arg in enumerate(node.args):
@@ -316,7 +316,7 @@ class ExpressionCompiler:
             left, lkind = self.expr(node.left, scope)
             right, rkind = self.expr(node.right, scope)
             if (lkind == "s") != (rkind == "s"):
-                raise _type_mismatch()
+                raise type_mismatch()
             return f"{left} {_PY_RELATIONS[node.op]} {right}"
         if isinstance(node, ast.Binary) and node.op in ("AND", "OR") and _is_relation(node):
             word = node.op.lower()

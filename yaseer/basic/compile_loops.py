@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from yaseer.basic import syntax_tree as ast
 from yaseer.basic.blocks import nodes, scan_for_next, walk_statements
-from yaseer.basic.compile_expressions import CompileError, _BlockScope, _constant_value, _syntax_error, _type_mismatch
+from yaseer.basic.compile_expressions import BlockScope, CompileError, constant_value, syntax_error, type_mismatch
 from yaseer.basic.number_models import local_name
 from yaseer.basic.errors import FOR_WITHOUT_NEXT
 
@@ -29,7 +29,7 @@ class LoopCompiler:
     def loop_var(self, var, scope) -> tuple[str, str]:
         """(Python target for the control variable, FOR-stack key)."""
         if self.kind_of(var) == "s":
-            raise _type_mismatch()
+            raise type_mismatch()
         if isinstance(var, ast.Var):
             return scope.scalar(var.name, write=True), self.loop_key(var)
         return self.element(var, scope), self.loop_key(var)
@@ -41,7 +41,7 @@ class LoopCompiler:
     def stmt_For(self, stmt, scope, native_next: int | None = None):
         kind = self.kind_of(stmt.var)
         if kind not in self.numbers.loop_types:
-            raise _type_mismatch()
+            raise type_mismatch()
         convert = self.numbers.convert
         start = convert(*self.typed(stmt.start, scope), kind)
         limit = convert(*self.typed(stmt.stop, scope), kind)
@@ -52,7 +52,7 @@ class LoopCompiler:
         self.emit(f"_v{n} = {start}; _l{n} = {limit}; _s{n} = {step}")
         if isinstance(stmt.var, ast.Elem) and stmt.var.indices and not all(
                 isinstance(i, ast.Num) for i in stmt.var.indices):
-            raise _syntax_error()  # a computed subscript would be re-evaluated each pass
+            raise syntax_error()  # a computed subscript would be re-evaluated each pass
         self.emit(f"{var} = _v{n}")
         if native_next is not None:
             step_value = stmt.step.value if isinstance(stmt.step, ast.Num) else (
@@ -178,8 +178,8 @@ class LoopCompiler:
         """
         if not self.iterable_loop(stmt.var):
             return "while"
-        start, stop = _constant_value(stmt.start), _constant_value(stmt.stop)
-        step = 1.0 if stmt.step is None else _constant_value(stmt.step)
+        start, stop = constant_value(stmt.start), constant_value(stmt.stop)
+        step = 1.0 if stmt.step is None else constant_value(stmt.step)
         if start is not None and stop is not None and step and 0 <= (stop - start) / step < 16:
             return "constant" if self.constant_passes(stmt) else "while"
         first, last = self.loop_range
@@ -232,8 +232,8 @@ class LoopCompiler:
             return None
         if not isinstance(stmt.var, ast.Var) or self.kind_of(stmt.var) == "s":
             return None
-        value, limit = _constant_value(stmt.start), _constant_value(stmt.stop)
-        step = 1.0 if stmt.step is None else _constant_value(stmt.step)
+        value, limit = constant_value(stmt.start), constant_value(stmt.stop)
+        step = 1.0 if stmt.step is None else constant_value(stmt.step)
         if value is None or limit is None or step is None or not step or not (limit - value) / step < 16:  # (a loop that never runs is one too)
             return None
         values = []
@@ -246,7 +246,7 @@ class LoopCompiler:
         """Emit FOR at ``i`` ... its NEXT as a Python while loop; the index after NEXT."""
         j = self.plan.native[i]
         stmt = self.flat[i][1]
-        scope = _BlockScope(self)
+        scope = BlockScope(self)
         # nothing between FOR and NEXT (and no TRON line marks): a delay loop
         self.idle_body = j == i + 1 and not self.trace
         passes = self.constant_passes(stmt) if self.idle_body else None

@@ -30,7 +30,7 @@ from __future__ import annotations
 from yaseer.basic import syntax_tree as ast
 from yaseer.basic.blocks import data_statements, flatten, plan, splits, walk_statements
 from yaseer.basic.compile_expressions import (
-    CompileError, ExpressionCompiler, _BlockScope, _FnScope, _may_overflow, _syntax_error, _type_mismatch,
+    BlockScope, CompileError, ExpressionCompiler, FnScope, may_overflow, syntax_error, type_mismatch,
 )
 from yaseer.basic.compile_io import InputOutputCompiler
 from yaseer.basic.compile_loops import LoopCompiler
@@ -105,7 +105,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.fn_count = 0
         self.data: list = []
         self.data_lines: dict = {}
-        self.scope = _BlockScope(self)
+        self.scope = BlockScope(self)
         self.counting_vars: set[str] = set()  # native loop variables that stay >= 0
         self.idle_body = False  # the native loop being compiled has an empty body
         self.whole_index: dict[str, str] = {}  # constant loop variable -> local of its subscript
@@ -149,7 +149,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             return
         mark = len(self.cur.code)
         block = self.cur
-        scope = _BlockScope(self)
+        scope = BlockScope(self)
         try:
             getattr(self, "stmt_" + type(stmt).__name__)(stmt, scope)
         except (CompileError, RecursionError) as exc:
@@ -171,7 +171,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         A number is converted to the target's numeric type (GW-BASIC's types)."""
         target_kind = self.kind_of(target)
         if (target_kind == "s") != (value_kind == "s"):
-            raise _type_mismatch()
+            raise type_mismatch()
         if value_kind != "s":
             value_code = self.numbers.convert(value_code, value_kind, target_kind)
         if isinstance(target, ast.Var):
@@ -191,7 +191,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
 
     def stmt_Let(self, stmt, scope):
         code, kind = self.expr(stmt.value, scope)
-        check = kind != "s" and _may_overflow(stmt.value, self.numbers.typed) and self.kind_of(stmt.target) != "%"
+        check = kind != "s" and may_overflow(stmt.value, self.numbers.typed) and self.kind_of(stmt.target) != "%"
         self.assign(stmt.target, code, kind, scope, check)
 
     def stmt_Rem(self, stmt, scope):
@@ -288,12 +288,12 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
     def stmt_Width(self, stmt, scope):
         if stmt.device is not None:
             if self.kind_of(stmt.device) != "s":
-                raise _syntax_error()  # WIDTH n, rows: the screen rows are not emulated
+                raise syntax_error()  # WIDTH n, rows: the screen rows are not emulated
             device = self.string(stmt.device, scope)
             self.emit(f"_M.set_device_width({device}, {self.numeric(stmt.columns, scope)})")
             return
         if self.kind_of(stmt.columns) == "s":
-            raise _syntax_error()  # WIDTH "LPT1:" without its width
+            raise syntax_error()  # WIDTH "LPT1:" without its width
         self.emit(f"_M.set_width({self.numeric(stmt.columns, scope)}, {stmt.printer})")
 
     def stmt_Dim(self, stmt, scope):
@@ -357,7 +357,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         first, kind = self.expr(stmt.first, scope)
         second, other = self.expr(stmt.second, scope)
         if kind != other:
-            raise _type_mismatch()
+            raise type_mismatch()
         t = self.new_temp()
         self.emit(f"{t} = {first}")
         self.assign(stmt.first, second, kind, scope, False)
@@ -383,11 +383,11 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit(jump)
 
     def stmt_DefFn(self, stmt, scope):
-        fn_scope = _FnScope(self, stmt.params)
+        fn_scope = FnScope(self, stmt.params)
         body, kind = self.expr(stmt.body, fn_scope)
         fn_kind = self.numbers.kind(stmt.name)
         if (kind == "s") != (fn_kind == "s"):
-            raise _type_mismatch()
+            raise type_mismatch()
         if kind != "s":
             body = self.numbers.convert(body, kind, fn_kind)
         self.fn_count += 1
