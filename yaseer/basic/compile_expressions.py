@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 from yaseer.basic import syntax_tree as ast
 from yaseer.basic.number_models import NUMERIC, RANGE_CHECKED, array_local, local_name
 from yaseer.basic.errors import BasicError, SYNTAX_ERROR, TYPE_MISMATCH
+from yaseer.basic.single_arith import SMALL_CONSTANT
 
 if TYPE_CHECKING:  # (annotations only: compiler.py imports this module)
     from yaseer.basic.compiler import AreaCompiler
@@ -138,13 +139,13 @@ _BOUNDED = frozenset({"RND", "SIN", "COS", "SGN"})  # results in [-1, 1]
 def _is_small(node, single: bool = False) -> bool:
     """A constant, or a function whose result is at most 1 in size (RND, SIN, COS, SGN):
     added to a finite double it cannot give an infinity.  (``single``: the typed
-    model, whose range ends at 1.7E+38: a constant below 1E+30 in size, less than half
+    model, whose range ends at 1.7E+38: a constant below SMALL_CONSTANT, less than half
     a unit of the largest single, cannot carry a sum beyond it.)"""
     if isinstance(node, ast.Call):
         return node.name in _BOUNDED
     if single:
         value = constant_value(node)
-        return value is not None and abs(value) < 1e30
+        return value is not None and abs(value) < SMALL_CONSTANT
     return _is_constant(node)
 
 

@@ -15,20 +15,13 @@ byte is rounded before the last digit is), ``CDBL(9.625066757202148!)`` as
 from __future__ import annotations
 
 from collections import namedtuple
-from math import frexp
 
-from yaseer.basic.single_arith import working_quotient, working_sum
+from yaseer.basic.single_arith import working_parts, working_quotient, working_sum
 
 Format = namedtuple("Format", "width bits digits top bottom ten")
 Format.__doc__ = """An MBF format's working numbers: ``width`` bits of working mantissa,
 ``bits`` of mantissa, ``digits`` printed; ``top`` and ``bottom`` the largest values
 below 10**digits and 10**(digits-1), ``ten`` 10, as working numbers."""
-
-
-def _parts(x, width: int) -> tuple[int, int]:
-    """A nonzero number's (exponent byte, ``width``-bit working mantissa)."""
-    m, e = frexp(abs(x))
-    return e + 128, int(m * 2.0 ** width)
 
 
 def _below_power_of_ten(power: int, bits: int, width: int) -> tuple[int, int]:
@@ -39,7 +32,7 @@ def _below_power_of_ten(power: int, bits: int, width: int) -> tuple[int, int]:
 
 def _format(width: int, bits: int, digits: int) -> Format:
     return Format(width, bits, digits, _below_power_of_ten(digits, bits, width),
-                  _below_power_of_ten(digits - 1, bits, width), _parts(10.0, width))
+                  _below_power_of_ten(digits - 1, bits, width), working_parts(10.0, width))
 
 
 SINGLE = _format(32, 24, 7)
@@ -51,7 +44,7 @@ def decimal_digits(x, form: Format = SINGLE) -> tuple[int, int]:
     ``form.digits`` digits, for a nonzero ``x`` that ``form`` holds exactly."""
     width = form.width
     top, half_top = 1 << width, 1 << (width - 1)
-    exponent, mantissa = _parts(x, width)
+    exponent, mantissa = working_parts(x, width)
     power = 0
     while (exponent, mantissa) > form.top:
         exponent, mantissa = working_quotient(exponent, mantissa, *form.ten, width=width)

@@ -17,6 +17,8 @@ expression; :func:`number_model` picks the model from ``Dialect.typed_numbers``.
 
 from __future__ import annotations
 
+from yaseer.basic.single_arith import SMALL_CONSTANT
+
 NUMERIC = frozenset("n%!#?")
 _RANK = {"%": 0, "!": 1, "?": 1.5, "#": 2}
 
@@ -280,9 +282,9 @@ def _small_literal(code: str) -> bool:
         value = abs(float(code))
     except ValueError:
         return False
-    # below 1E+30 (far below a single's unit at 1.7E+38) and, unless 0, at least 2**-100
-    # (a nonzero exact sum with it is at least 2**-124, inside MBF's range)
-    return value < 1e30 and (value == 0 or value >= 2.0 ** -100)
+    # below SMALL_CONSTANT (far below a single's unit at 1.7E+38) and, unless 0, at
+    # least 2**-100 (a nonzero exact sum with it is at least 2**-124, inside MBF's range)
+    return value < SMALL_CONSTANT and (value == 0 or value >= 2.0 ** -100)
 
 
 def _plain_operand(code: str) -> bool:

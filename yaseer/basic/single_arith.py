@@ -49,6 +49,9 @@ _HALF_TOP = 1 << 31  # ... and, normalised, at least this
 _TINY = 2.0 ** -128  # the least MBF single; anything smaller is 0
 _LIMIT = 2.0 ** 127  # a rounded result this large overflows (exponent byte 256)
 _SAFE_LOW = 2.0 ** -125  # IEEE singles keep all 24 bits from 2**-126 up
+# A constant below this in size, added to a single, cannot carry the sum beyond the
+# range: it is less than half a unit of the largest single (2**103, about 1E+31).
+SMALL_CONSTANT = 1e30
 _pack, _unpack = struct.Struct("f").pack, struct.Struct("f").unpack
 
 
@@ -77,10 +80,11 @@ def nearest(x) -> float:
     return -r if x < 0 else r
 
 
-def _parts(x) -> tuple[int, int]:
-    """A nonzero single's (exponent byte, 32-bit mantissa whose low byte is 0)."""
+def working_parts(x, width: int = 32) -> tuple[int, int]:
+    """A nonzero number's (exponent byte, ``width``-bit working mantissa): for a single
+    and width 32 the low byte is 0; width 64 holds a double's 53 bits exactly."""
     m, e = frexp(abs(x))
-    return e + 128, int(m * 4294967296.0)
+    return e + 128, int(ldexp(m, width))
 
 
 def _rounded(exponent: int, mantissa: int, negative: bool) -> float:
@@ -146,8 +150,8 @@ def add(a, b) -> float:
                     return r
             elif x * 8.0 >= y:
                 return nearest(total)
-    small_exponent, small_mantissa = _parts(small)
-    exponent, mantissa = _parts(large)
+    small_exponent, small_mantissa = working_parts(small)
+    exponent, mantissa = working_parts(large)
     return _rounded(*working_sum(small_exponent, small_mantissa, small < 0, exponent, mantissa, large < 0))
 
 
