@@ -65,6 +65,13 @@ def decimal_digits(x, form: Format = SINGLE) -> tuple[int, int]:
     return mantissa >> 8, power
 
 
+def digit_string(x, form: Format = SINGLE) -> tuple[str, int]:
+    """:func:`decimal_digits` as PRINT uses them: (the digits without trailing zeros,
+    the decimal exponent of the first digit)."""
+    n, power = decimal_digits(x, form)
+    return str(n).rjust(form.digits, "0").rstrip("0") or "0", power + form.digits - 1
+
+
 def _carried(exponent: int, mantissa: int, top: int) -> tuple[int, int]:
     """A working number's guard byte rounded half up into its mantissa (and cleared)."""
     if mantissa & 0xFF > 0x7F:

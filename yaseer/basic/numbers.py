@@ -240,8 +240,7 @@ def _single_digits(x: float) -> tuple[str, int]:
     precision, rounded twice: ``1/3`` shows as ``.3333334``, 825157.625 as
     ``825157.7``).  Returns (digit string without trailing zeros, exponent of the
     first digit)."""
-    n, power = mbf_digits.decimal_digits(x)
-    return str(n).rjust(SINGLE_DIGITS, "0").rstrip("0") or "0", power + SINGLE_DIGITS - 1
+    return mbf_digits.digit_string(x)
 
 
 def _double_digits(x: float) -> tuple[str, int]:
@@ -254,12 +253,11 @@ def _double_digits(x: float) -> tuple[str, int]:
     (what was typed, for a literal: ``-90095.2872#`` shows as typed, as on
     GW-BASIC, not ``-90095.28720000001``).
     """
-    from decimal import ROUND_HALF_UP, Decimal  # here: a run printing no double does not load decimal
-
     x = abs(x)
     if x < 3.4e38 and _unpack(_pack(x))[0] == x:  # exact in GW's 56 bits: GW's output routine
-        n, power = mbf_digits.decimal_digits(x, mbf_digits.DOUBLE)
-        return str(n).rjust(DOUBLE_DIGITS, "0").rstrip("0") or "0", power + DOUBLE_DIGITS - 1
+        return mbf_digits.digit_string(x, mbf_digits.DOUBLE)
+    from decimal import ROUND_HALF_UP, Decimal  # here: a run printing no other double does not load decimal
+
     exact = Decimal(repr(x))
     e = exact.adjusted()
     digits = exact.as_tuple().digits
