@@ -14,6 +14,9 @@ double one, and ``"?"`` is made a single where a single is needed, as any double
 
 from __future__ import annotations
 
+import operator
+
+from yaseer.basic import single_arith
 from yaseer.basic.errors import OVERFLOW
 from yaseer.basic.numbers import Double
 
@@ -21,14 +24,13 @@ from yaseer.basic.numbers import Double
 def helpers(policy, ns: dict, largest: float) -> dict:
     """The compiled code's ``_val``, ``_vop``, ``_vdv``, ``_vneg`` and ``_vlike`` for a
     typed dialect; ``ns`` holds the single and double helpers (``_sadd`` ``_ssub``
-    ``_sp`` ``_dv`` ``_ddv`` ``_dk``), ``policy`` the overflow policy (arith_policy.py)
+    ``_dv`` ``_ddv`` ``_dk``), ``policy`` the overflow policy (arith_policy.py)
     and ``largest`` the double range's end."""
     from yaseer.basic.gwfunctions import val_typed
 
-    sadd, ssub, product, single_divide, double_divide, in_range = (
-        ns["_sadd"], ns["_ssub"], ns["_sp"], ns["_dv"], ns["_ddv"], ns["_dk"])
-    singles = {"+": sadd, "-": ssub, "*": lambda a, b: product(a * b)}
-    doubles = {"+": lambda a, b: a + b, "-": lambda a, b: a - b, "*": lambda a, b: a * b}
+    single_divide, double_divide, in_range = ns["_dv"], ns["_ddv"], ns["_dk"]
+    singles = {"+": ns["_sadd"], "-": ns["_ssub"], "*": single_arith.multiply}
+    doubles = {"+": operator.add, "-": operator.sub, "*": operator.mul}
 
     def val(text: str):
         value, kind = val_typed(text, largest)
