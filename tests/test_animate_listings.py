@@ -16,7 +16,8 @@ from pathlib import Path
 
 import pytest
 
-from yaseer.animation import build_scene, distance, record_listing
+from yaseer.animation import build_scene, distance
+from yaseer.recorded_run import record_listing
 
 REPO = Path(__file__).resolve().parents[1]
 LISTINGS = REPO / "listings"
@@ -164,7 +165,7 @@ def test_a_listing_that_dims_an_input_array_small_still_animates():
 
 def test_angle_option_sets_the_unit_of_the_trigonometric_functions():
     """In radians, T(2) = ATN(1) * 4 is 3.14159: the recorded crank angle is what the listing computed."""
-    from yaseer.animation import record_run
+    from yaseer.recorded_run import record_run
 
     text = "10 L(2) = 1: L(3) = 3: T(2) = ATN(1) * 4: GOSUB PROG 1: PRINT T(2)\n"
     (radians,) = record_run(text, angle="rad").frames

@@ -1,5 +1,5 @@
 """Division by zero and overflow: casio stops, gw prints GW-BASIC's message and goes on
-with the signed largest value unless ON ERROR traps it (yaseer/basic/arith_policy.py).
+with the signed largest value unless ON ERROR traps it (yaseer/basic/arithmetic/arith_policy.py).
 
 The gw expectations are PC-BASIC 2.0.8's output for the same programs;
 tests/test_differential_gw_runtime.py compares generated ones live.
@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 
 from test_basic_helpers import error_of, run_text
-from yaseer.basic.arith_policy import LARGEST
+from yaseer.basic.arithmetic.arith_policy import LARGEST
 
 # PC-BASIC 2.0.8, line by line (a message where the cursor is, then a line end):
 PROGRAM = """10 PRINT "A";1/0;"B"

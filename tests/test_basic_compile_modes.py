@@ -12,7 +12,7 @@ import random
 import pytest
 
 from yaseer.basic.errors import BasicError
-from yaseer.basic.machine import Machine
+from yaseer.basic.machine.machine import Machine
 
 
 def outcome(program: str) -> tuple[str, str]:

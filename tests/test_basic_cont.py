@@ -20,7 +20,7 @@ import time
 import pytest
 
 from yaseer.basic.errors import BREAK, BasicError
-from yaseer.basic.machine import Machine
+from yaseer.basic.machine.machine import Machine
 
 PROGRAMS = {
     "nested native loops": (
@@ -124,9 +124,9 @@ def checked_break_points(sources) -> int:
     ``continue``; how many there are."""
     import re
 
-    from yaseer.basic.compiler import compile_area
-    from yaseer.basic.parser import parse_line
-    from yaseer.basic.scanner import split_lines
+    from yaseer.basic.compile.compiler import compile_area
+    from yaseer.basic.source.parser import parse_line
+    from yaseer.basic.source.scanner import split_lines
 
     checked = 0
     for source in sources:

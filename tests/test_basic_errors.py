@@ -73,7 +73,7 @@ def test_long_minus_chain_fails_on_its_own_line():
 
 
 def test_print_shows_the_items_before_the_failing_one():
-    from yaseer.basic.machine import Machine
+    from yaseer.basic.machine.machine import Machine
     import io
 
     for statement, shown in (('PRINT "a"; SQR(-1)', "a"), ('PRINT USING "##.#"; 1; SQR(-1)', " 1.0")):

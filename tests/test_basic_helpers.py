@@ -5,7 +5,7 @@ from __future__ import annotations
 import csv
 import io
 
-from yaseer.basic.machine import Machine
+from yaseer.basic.machine.machine import Machine
 
 
 def run_text(program: str, **options) -> str:

@@ -7,7 +7,7 @@ import pytest
 
 from test_basic_helpers import error_of, run_rows, run_text, run_values
 from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL
-from yaseer.basic.machine import Machine
+from yaseer.basic.machine.machine import Machine
 
 
 def values(program, **options):
@@ -422,8 +422,7 @@ def test_error_inside_a_counted_loop_sees_the_current_variable():
 def test_loop_helpers_match_repeated_addition():
     import random
 
-    from yaseer.basic import runtime
-
+    from yaseer.basic.machine import runtime
     rng = random.Random(1)
     for _ in range(3000):
         start = rng.choice([rng.randint(-50, 50), rng.uniform(-50, 50), round(rng.uniform(-50, 50), 1)])
@@ -470,8 +469,7 @@ def test_break_of_a_jump_loop_names_the_line():
 
 
 def test_total_array_budget():
-    from yaseer.basic import machine as machine_module
-
+    from yaseer.basic.machine import machine as machine_module
     names = ", ".join(f"A{k}(1999998)" for k in range(machine_module.MAX_TOTAL_ELEMENTS // 1999999 + 1))
     assert error_of(f"10 DIM {names}") == "Out of memory in 10"
 

@@ -2,9 +2,9 @@
 
 import pytest
 
-from yaseer.basic import syntax_tree as ast
-from yaseer.basic.dialect import GW
-from yaseer.basic.parser import parse_line, parse_statements
+from yaseer.basic.source import syntax_tree as ast
+from yaseer.basic.dialects.dialect import GW
+from yaseer.basic.source.parser import parse_line, parse_statements
 
 
 def one(text):

@@ -3,7 +3,7 @@
 import pytest
 
 from yaseer.basic.errors import BasicError
-from yaseer.basic.scanner import split_lines, tokenize
+from yaseer.basic.source.scanner import split_lines, tokenize
 
 
 def kinds(text):
@@ -110,7 +110,7 @@ def test_text_before_the_first_line_number_is_an_error():
 
 from pathlib import Path  # noqa: E402
 
-from yaseer.basic.scanner import detokenize  # noqa: E402
+from yaseer.basic.source.scanner import detokenize  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[1]
 

@@ -10,8 +10,8 @@ import pytest
 
 from test_basic_helpers import run_text
 
-from yaseer.basic.compiler import compile_area
-from yaseer.basic.parser import parse_line
+from yaseer.basic.compile.compiler import compile_area
+from yaseer.basic.source.parser import parse_line
 
 PROGRAMS = [
     # a FOR loop over lines (native), its NEXT on its own line

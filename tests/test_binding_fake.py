@@ -1,4 +1,4 @@
-"""A minimal stand-in for yaseer.basic.machine.Machine, for the binding tests.
+"""A minimal stand-in for yaseer.basic.machine.machine.Machine, for the binding tests.
 
 It implements only what Python program areas use: array/scalar/set_scalar/set_area.
 Arrays not DIMensioned get BASIC's implicit dimension 10 (subscripts 0..10).

@@ -15,7 +15,7 @@ import pytest
 
 from yaseer import binding
 from yaseer.basic.errors import BasicError
-from yaseer.basic.machine import Machine
+from yaseer.basic.machine.machine import Machine
 from yaseer.linkages.tracing import NotTraceable, Recorder
 
 sys.path.insert(0, str(Path(__file__).resolve().parent / "benchmarks"))

@@ -24,7 +24,7 @@ from pathlib import Path
 import pytest
 
 from test_differential_support import PcBasic
-from yaseer.basic.machine import Machine
+from yaseer.basic.machine.machine import Machine
 
 ROOT = Path(__file__).resolve().parents[1]
 BENCHMARKS = ROOT / "tests" / "benchmarks"

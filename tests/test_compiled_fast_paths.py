@@ -16,8 +16,8 @@ import pytest
 
 from test_basic_cont import checked_break_points, run_with_breaks
 from test_basic_helpers import error_of, run_text
-from yaseer.basic import runtime
-from yaseer.basic.machine import Machine
+from yaseer.basic.machine import runtime
+from yaseer.basic.machine.machine import Machine
 
 DEFEAT = "\n64999 END\n65000 RESUME NEXT\n"  # never reached: only makes the general code be compiled
 

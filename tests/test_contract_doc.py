@@ -29,7 +29,7 @@ import pytest
 from test_binding import P1_INPUTS, P2_INPUTS, P3_INPUTS
 from test_binding_fake import PAPER_DIMS, FakeMachine
 from yaseer import binding
-from yaseer.basic.dialect import AL_YASEER_DIMENSIONS
+from yaseer.basic.dialects.dialect import AL_YASEER_DIMENSIONS
 from yaseer.basic.errors import BasicError
 
 DOC = Path(__file__).resolve().parents[1] / "docs" / "contract.md"

@@ -1,4 +1,4 @@
-"""``--arith decimal`` (casio): 13-digit decimal arithmetic (yaseer/basic/decimal_arith.py).
+"""``--arith decimal`` (casio): 13-digit decimal arithmetic (yaseer/basic/arithmetic/decimal_arith.py).
 
 Checked against independent computations: exact rationals (``fractions``) rounded
 half up to 13 significant digits by a function of this file, and mpmath at 40
@@ -15,9 +15,9 @@ from fractions import Fraction
 import mpmath
 import pytest
 
-from yaseer.basic import decimal_arith as D
-from yaseer.basic.dialect import CASIO
-from yaseer.basic.machine import Machine
+from yaseer.basic.arithmetic import decimal_arith as D
+from yaseer.basic.dialects.dialect import CASIO
+from yaseer.basic.machine.machine import Machine
 
 DECIMAL = CASIO._replace(arithmetic="decimal")
 

@@ -7,8 +7,8 @@ import io
 import pytest
 
 from test_differential_support import PcBasic, run_yaseer
-from yaseer.basic.dialect import CASIO, GW, Dialect, get_dialect
-from yaseer.basic.machine import Machine
+from yaseer.basic.dialects.dialect import CASIO, GW, Dialect, get_dialect
+from yaseer.basic.machine.machine import Machine
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
 

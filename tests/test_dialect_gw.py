@@ -112,7 +112,7 @@ def test_classic_benchmarks_print_as_pcbasic_in_gw(pc):
 def test_def_types_hold_for_direct_statements_in_gw():
     import io
 
-    from yaseer.basic.machine import Machine
+    from yaseer.basic.machine.machine import Machine
 
     screen = io.StringIO()
     machine = Machine(screen=screen, dialect="gw")
@@ -145,7 +145,7 @@ def test_an_integer_loop_compiles_to_the_loop_of_an_untyped_one():
     benchmark's 1.0x is this, measured; here the generated code is compared)."""
     import io
 
-    from yaseer.basic.machine import Machine
+    from yaseer.basic.machine.machine import Machine
 
     def source(text):
         machine = Machine(screen=io.StringIO(), dialect="gw")

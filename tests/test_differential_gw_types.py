@@ -167,7 +167,7 @@ def random_single(rng: random.Random) -> str:
 def test_single_precision_arithmetic_prints_as_pcbasic(pc):
     """+ - * of singles, powers by 0..5, FOR steps and their printing (7 digits, GW's
     digit rule), byte for byte: yaseer rounds as GW's MBF routines do
-    (yaseer/basic/single_arith.py; ``/`` and higher powers follow the source where
+    (yaseer/basic/arithmetic/single_arith.py; ``/`` and higher powers follow the source where
     PC-BASIC differs: tests/test_single_arith.py)."""
     rng = random.Random(base_seed() + 14)
     cases = []
@@ -235,7 +235,7 @@ def random_val_text(rng: random.Random) -> str:
 
 
 def test_val_has_the_type_its_text_gives_as_pcbasic(pc):
-    """VAL's result is a single or a double as its text says (yaseer/basic/val_numbers.py):
+    """VAL's result is a single or a double as its text says (yaseer/basic/machine/val_numbers.py):
     printed, in arithmetic with singles, integers and doubles, negated, under ABS/INT/STR$,
     stored, and beyond the range (Overflow, the message where the item is evaluated).
     The operations are exact (by 2, 4, 0.5), since MBF's 56-bit doubles may round a 16th

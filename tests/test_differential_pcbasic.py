@@ -31,7 +31,7 @@ from test_differential_support import (
     using_statement,
 )
 from yaseer.basic.errors import BasicError
-from yaseer.basic.formatting import number_to_text, str_dollar, using
+from yaseer.basic.arithmetic.formatting import number_to_text, str_dollar, using
 
 
 # PC-BASIC 2.0.8 uses importlib.resources calls deprecated in Python 3.11.

@@ -273,7 +273,7 @@ def run_yaseer(source: str, angle: str | None = "rad", dialect: str = "casio") -
     import io
 
     from yaseer.basic.errors import BasicError
-    from yaseer.basic.machine import Machine
+    from yaseer.basic.machine.machine import Machine
 
     screen = io.StringIO()
     machine = Machine(screen=screen, angle=angle, dialect=dialect)
@@ -301,7 +301,7 @@ def run_direct(text: str, dialect: str = "gw") -> str:
     import io
 
     from yaseer.basic.errors import BasicError
-    from yaseer.basic.machine import Machine
+    from yaseer.basic.machine.machine import Machine
 
     screen = io.StringIO()
     machine = Machine(screen=screen, dialect=dialect)

@@ -1,4 +1,4 @@
-"""PRINT, STR$ and PRINT USING text (yaseer.basic.formatting).
+"""PRINT, STR$ and PRINT USING text (yaseer.basic.arithmetic.formatting).
 
 Expected texts come from the GW-BASIC 3.2 user's manual's PRINT USING
 examples, from the rule documented in formatting.py worked by hand, and from
@@ -13,7 +13,7 @@ import math
 import pytest
 
 from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, OVERFLOW, TYPE_MISMATCH, BasicError
-from yaseer.basic.formatting import number_to_text, parse_format, str_dollar, using
+from yaseer.basic.arithmetic.formatting import number_to_text, parse_format, str_dollar, using
 
 # ---------------------------------------------------------------------------
 # Plain PRINT / STR$: 10 significant digits

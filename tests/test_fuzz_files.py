@@ -75,7 +75,7 @@ def snapshot(root) -> dict:
 @given(data=st.data())
 def test_file_statements_never_touch_anything_outside_the_directory(data, tmp_path_factory):
     from yaseer.basic.errors import BasicError
-    from yaseer.basic.machine import Machine
+    from yaseer.basic.machine.machine import Machine
 
     root, box, outside = arena(tmp_path_factory)
     before_outside, before_root = snapshot(outside), set(os.listdir(root))

@@ -29,7 +29,7 @@ from hypothesis import strategies as st
 
 from yaseer import binding
 from yaseer.basic.errors import BasicError
-from yaseer.basic.machine import INTERNAL_ERROR, Machine
+from yaseer.basic.machine.machine import INTERNAL_ERROR, Machine
 
 ROOT = Path(__file__).resolve().parent.parent
 SEED_FILES = sorted(ROOT.glob("listings/*.bas")) + sorted((ROOT / "tests/benchmarks/classic").glob("*.bas"))

@@ -39,7 +39,7 @@ def pcbasic_run(source: str, directory: Path) -> str:
 
 def yaseer_run(source: str, directory: Path, dialect: str = "gw") -> str:
     from yaseer.basic.errors import BasicError
-    from yaseer.basic.machine import Machine
+    from yaseer.basic.machine.machine import Machine
 
     screen = io.StringIO()
     machine = Machine(screen=screen, dialect=dialect, angle="rad", files=directory)

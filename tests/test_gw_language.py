@@ -58,7 +58,7 @@ def with_answers(program: str, answers: list[str], dialect: str) -> tuple[str, s
     """(yaseer's screen, PC-BASIC's screen) for ``program`` answered with ``answers``."""
     import pcbasic
 
-    from yaseer.basic.machine import Machine
+    from yaseer.basic.machine.machine import Machine
 
     session = pcbasic.Session(input_streams=io.BytesIO(("\r".join(answers) + "\r").encode()),
                               output_streams=None)

@@ -44,7 +44,7 @@ def pcbasic_printer(source: str, tmp_path) -> tuple[str, str]:
 
 def yaseer_printer(source: str) -> tuple[str, str]:
     from yaseer.basic.errors import BasicError
-    from yaseer.basic.machine import Machine
+    from yaseer.basic.machine.machine import Machine
 
     screen, paper = io.StringIO(), io.StringIO()
     machine = Machine(screen=screen, printer=paper, dialect="gw")

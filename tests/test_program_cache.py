@@ -1,4 +1,4 @@
-"""The on-disk cache of compiled programs (yaseer.basic.program_cache): a warm
+"""The on-disk cache of compiled programs (yaseer.basic.compile.program_cache): a warm
 run gives the same output without importing the parser; the key changes with
 the program, the area and the compiler's sources; bad entries are ignored; it
 can be switched off; it never lives in the checkout; concurrent runs are safe."""
@@ -14,9 +14,9 @@ from pathlib import Path
 
 import pytest
 
-from yaseer.basic import program_cache
-from yaseer.basic.dialect import CASIO, GW
-from yaseer.basic.machine import Machine
+from yaseer.basic.compile import program_cache
+from yaseer.basic.dialects.dialect import CASIO, GW
+from yaseer.basic.machine.machine import Machine
 
 ROOT = Path(__file__).resolve().parents[1]
 LISTING = "10 FOR I=1 TO 3: PRINT I*I;: NEXT\n20 GOSUB 100: PRINT \"END\"\n30 END\n100 PRINT \"SUB\";: RETURN\n"
@@ -45,12 +45,12 @@ def test_a_warm_run_reads_the_entry_and_prints_the_same(cache, monkeypatch):
     assert run() == EXPECTED
     assert len(entries(cache)) == 1
     calls = []
-    monkeypatch.setattr("yaseer.basic.compiler.compile_area", lambda *a, **k: calls.append(a))
+    monkeypatch.setattr("yaseer.basic.compile.compiler.compile_area", lambda *a, **k: calls.append(a))
     assert run() == EXPECTED
     assert calls == []  # compiled program taken from the cache
 
 
-HEAVY = ("lark", "yaseer.basic.parser", "yaseer.basic.compiler", "numpy", "yaseer.linkages", "yaseer.animation")
+HEAVY = ("lark", "yaseer.basic.source.parser", "yaseer.basic.compile.compiler", "numpy", "yaseer.linkages", "yaseer.animation")
 
 
 def imported_by_run(listing: Path, cache: Path) -> tuple[str, list[str]]:
@@ -70,7 +70,7 @@ def test_a_warm_process_imports_neither_parser_nor_lark(cache):
     cold_output, cold = imported_by_run(listing, cache)
     warm_output, warm = imported_by_run(listing, cache)
     assert cold_output == warm_output == EXPECTED
-    assert "yaseer.basic.parser" in cold and "lark" in cold
+    assert "yaseer.basic.source.parser" in cold and "lark" in cold
     assert warm == []
 
 
@@ -83,12 +83,13 @@ def test_a_listing_calling_the_programs_runs_without_numpy(cache):
 
 
 def copied_sources(tmp_path: Path, monkeypatch) -> Path:
-    """A copy of yaseer/basic's sources (new modification times) that the cache keys on from now."""
+    """A copy of yaseer/basic's sources and its wings' (new modification times) that the cache keys on from now."""
     sources = tmp_path / "basic"
-    sources.mkdir()
-    for path in Path(program_cache._SOURCES).iterdir():
-        if path.suffix in (".py", ".lark"):
-            (sources / path.name).write_bytes(path.read_bytes())
+    for path in Path(program_cache._SOURCES).rglob("*"):
+        if path.suffix in (".py", ".lark") and "__pycache__" not in path.parts:
+            copy = sources / path.relative_to(program_cache._SOURCES)
+            copy.parent.mkdir(parents=True, exist_ok=True)
+            copy.write_bytes(path.read_bytes())
     monkeypatch.setattr(program_cache, "_SOURCES", str(sources))
     monkeypatch.setattr(program_cache, "_fingerprint", None)
     return sources
@@ -105,7 +106,7 @@ def test_the_key_follows_program_area_entries_and_sources(cache, monkeypatch, tm
     assert program_cache.key(0, program, dialect=CASIO) != program_cache.key(0, program, dialect=GW)
     sources = copied_sources(tmp_path, monkeypatch)
     assert program_cache.key(0, program) == base  # the same sources: the same key
-    (sources / "grammar.lark").write_text((sources / "grammar.lark").read_text() + "\n// edited\n")
+    (sources / "source" / "grammar.lark").write_text((sources / "source" / "grammar.lark").read_text() + "\n// edited\n")
     monkeypatch.setattr(program_cache, "_fingerprint", None)
     assert program_cache.key(0, program) != base  # an edited grammar invalidates every entry
 
@@ -131,7 +132,7 @@ def test_the_sources_hash_is_remembered_for_their_sizes_and_times(cache, monkeyp
     monkeypatch.setattr(program_cache, "_text_fingerprint", hashing_again)
     monkeypatch.setattr(program_cache, "_fingerprint", None)
     assert program_cache.key(0, program) == base  # read back, not hashed
-    grammar = sources / "grammar.lark"
+    grammar = sources / "source" / "grammar.lark"
     grammar.write_text(grammar.read_text() + "\n// edited\n")
     monkeypatch.setattr(program_cache, "_fingerprint", None)
     with pytest.raises(AssertionError, match="hashed again"):

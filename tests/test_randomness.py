@@ -1,4 +1,4 @@
-"""RND and RANDOMIZE of both dialects (yaseer/basic/randomness.py).
+"""RND and RANDOMIZE of both dialects (yaseer/basic/arithmetic/randomness.py).
 
 The GW numbers below are PC-BASIC 2.0.8's output (GW-BASIC's generator), printed
 as ``CDBL(RND) * 16777216#`` so that the 24-bit state shows exactly, recorded from
@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import pytest
 
-from yaseer.basic.randomness import GwRandom, RepeatableRandom, mbf_bytes, seed_word
+from yaseer.basic.arithmetic.randomness import GwRandom, RepeatableRandom, mbf_bytes, seed_word
 
 TWO_24 = 16777216
 
@@ -79,7 +79,7 @@ def test_repeatable_generator_restarts_at_reset():
 def _gw_screen(program: str, answers: str = "") -> str:
     import io
 
-    from yaseer.basic.machine import Machine
+    from yaseer.basic.machine.machine import Machine
 
     screen = io.StringIO()
     machine = Machine(screen=screen, dialect="gw", input_stream=io.StringIO(answers))

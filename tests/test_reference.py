@@ -502,7 +502,7 @@ def test_program3_reference_against_geometry_and_differences(theta):
     L6, T6, L7, w = 5.7, -74.74, 2.5, 30.0
     h = 1e-4
     hd = math.degrees(h)
-    r = basic_linkages.inverted_slider_crank(L6, T6, L7, [theta - hd, theta, theta + hd], w, 0)
+    r = programs.inverted_slider_crank(L6, T6, L7, [theta - hd, theta, theta + hd], w, 0)
     bo = (-L6 * math.cos(math.radians(T6)), -L6 * math.sin(math.radians(T6)))
     pin = (L7 * math.cos(math.radians(theta)), L7 * math.sin(math.radians(theta)))
     assert r["L(5)"][1] == pytest.approx(math.hypot(pin[0] - bo[0], pin[1] - bo[1]), rel=1e-13)
@@ -611,7 +611,7 @@ def test_flexible_crank_rates_against_differences_in_time(program):
                                    crank_rate=rates, crank_accel=accels)
         pairs = [("T(13)", "W(6)", "A(6)", math.pi / 180), ("T(14)", "W(7)", "A(7)", math.pi / 180)]
     else:
-        r = basic_linkages.inverted_slider_crank(90, 200, lengths, angles, omegas, alphas,
+        r = programs.inverted_slider_crank(90, 200, lengths, angles, omegas, alphas,
                                                  crank_rate=rates, crank_accel=accels)
         pairs = [("T(9)", "W(4)", "A(4)", math.pi / 180), ("L(5)", "D(4)", "E(4)", 1.0)]
     for value, rate, accel, unit in pairs:

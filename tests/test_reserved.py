@@ -1,4 +1,4 @@
-"""GW-BASIC's reserved words are never variables (yaseer/basic/reserved.py).
+"""GW-BASIC's reserved words are never variables (yaseer/basic/dialects/reserved.py).
 
 The table is checked against PC-BASIC 2.0.8's own keyword table (an independent
 list of GW-BASIC's tokens); a word not implemented stops its statement with
@@ -12,8 +12,8 @@ import io
 import pytest
 
 from yaseer.basic.errors import BasicError
-from yaseer.basic.machine import Machine
-from yaseer.basic.reserved import GW_RESERVED_WORDS
+from yaseer.basic.machine.machine import Machine
+from yaseer.basic.dialects.reserved import GW_RESERVED_WORDS
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 

@@ -1,4 +1,4 @@
-"""GW-BASIC's single-precision arithmetic (yaseer/basic/single_arith.py) against
+"""GW-BASIC's single-precision arithmetic (yaseer/basic/arithmetic/single_arith.py) against
 independent references:
 
 * ``+ - *`` and PRINT's digits: PC-BASIC 2.0.8's own MBF classes (its ``Single``
@@ -22,8 +22,8 @@ from fractions import Fraction
 
 import pytest
 
-from yaseer.basic import single_arith as sa
-from yaseer.basic.machine import Machine
+from yaseer.basic.arithmetic import single_arith as sa
+from yaseer.basic.machine.machine import Machine
 
 pcbasic_numbers = pytest.importorskip("pcbasic.basic.values.numbers")
 pcbasic_values = pytest.importorskip("pcbasic.basic.values.values")
@@ -210,7 +210,7 @@ def test_a_double_made_single_rounds_half_up_on_the_25th_bit():
 
 
 def test_print_digits_are_pcbasics():
-    from yaseer.basic.numbers import str_dollar
+    from yaseer.basic.arithmetic.values import str_dollar
 
     rng = random.Random(7)
     for _ in range(20000):
@@ -257,7 +257,7 @@ def test_a_widened_single_prints_pcbasics_sixteen_digits():
     """A double holding a single (``B#=A!``, CDBL) or an integer is exact in GW's 56 bits:
     its 16 digits are those of GW's output routine (PC-BASIC's ``Double``), which
     differ from the exactly rounded decimal in about 2% of such values."""
-    from yaseer.basic.numbers import Double, str_dollar
+    from yaseer.basic.arithmetic.values import Double, str_dollar
 
     rng = random.Random(10)
     differs_from_exact = 0

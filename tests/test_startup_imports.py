@@ -27,8 +27,8 @@ import yaseer
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGE_PARENT = str(Path(yaseer.__file__).resolve().parents[1])
 
-NEVER_WARM = ("lark", "numpy", "yaseer.basic.parser", "yaseer.basic.compiler", "yaseer.basic.compile_expressions",
-              "yaseer.basic.compile_io", "yaseer.basic.compile_loops", "yaseer.animation",
+NEVER_WARM = ("lark", "numpy", "yaseer.basic.source.parser", "yaseer.basic.compile.compiler", "yaseer.basic.compile.expressions",
+              "yaseer.basic.compile.statements_io", "yaseer.basic.compile.loops", "yaseer.animation",
               "pathlib", "decimal", "csv", "hashlib", "random", "dataclasses", "inspect")
 """Imported by no warm run of a listing that prints numbers (they serve other paths)."""
 
@@ -97,7 +97,7 @@ def test_the_plain_classes_behave_as_the_dataclasses_they_replace():
     """Result compares and shows itself by its fields (not lines), with a list of its own;
     a Dialect is immutable and makes variants."""
     from yaseer.api import Result
-    from yaseer.basic.dialect import CASIO
+    from yaseer.basic.dialects.dialect import CASIO
 
     a, b = Result("10 PRINT 1", text=" 1 \n"), Result("10 PRINT 1", text=" 1 \n")
     assert a == b and a != Result("10 PRINT 1") and a != "10 PRINT 1"

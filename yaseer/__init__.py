@@ -1,7 +1,7 @@
 """yaseer: a pocket-computer BASIC that runs the Al-Yaseer listings.
 
-Flow: source text -> tokens (``basic.scanner``) -> AST (``basic.parser``) ->
-compiled program (``basic.compiler``) -> machine state (``basic.machine``) -> output.
+Flow: source text -> tokens (``basic.source.scanner``) -> AST (``basic.source.parser``) ->
+blocks and Python (``basic.compile``) -> machine state (``basic.machine``) -> output.
 The numerics live in ``linkages`` and know nothing of BASIC; ``binding`` maps
 ``GOSUB PROG n`` to them.
 
@@ -10,7 +10,7 @@ From Python: ``yaseer.run(listing, ...)`` (see ``yaseer.api``); in Jupyter:
 package imports nothing else: ``run`` and ``Result`` are loaded on first use.
 """
 
-__version__ = "0.1.0"
+from yaseer.version import __version__
 __all__ = ["run", "Result", "load_ipython_extension"]
 
 

@@ -21,7 +21,7 @@ import re
 import sys
 
 TYPE_CHECKING = False
-if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up time)
     from typing import IO, Mapping, Union
 
     Listing = Union[str, "os.PathLike[str]"]
@@ -83,7 +83,7 @@ class Result:
     library call.  ``name``: the listing's file stem (None for program text).
 
     Compared and shown by its fields as a dataclass would be, but a plain class:
-    importing dataclasses costs every start several milliseconds (issue 15).
+    importing dataclasses costs every start several milliseconds.
     """
 
     _SHOWN = ("listing", "name", "text", "error", "status", "line", "exception", "frames")
@@ -239,7 +239,7 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
     """Load, bind and run ``result.listing``; fill in ``result`` (text, rows, frames, error, status)."""
     from yaseer import binding
     from yaseer.basic.errors import BasicError
-    from yaseer.basic.machine import Machine
+    from yaseer.basic.machine.machine import Machine
 
     recorder = None
     if keep:  # the animation package (and its drawing code) only when frames are kept: start-up
@@ -249,7 +249,7 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
     on_line = recorder.line_printed if recorder is not None else None
     out = _Output(screen, keep, on_line)
     paper = _Output(printer, False, on_line) if printer is not None else None
-    from yaseer.basic.dialect import get_dialect
+    from yaseer.basic.dialects.dialect import get_dialect
 
     library = get_dialect(dialect).program_areas  # the library programs are bound in casio only
     # gw has no program areas (PROG is no word) unless areas are given (--prog)

@@ -35,7 +35,7 @@ from yaseer.basic.errors import (
 )
 
 TYPE_CHECKING = False
-if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up time)
     from typing import Callable
 
 LINKAGES = {1: "slider_crank", 2: "fourbar", 3: "inverted_slider_crank", 5: "virtual_link"}

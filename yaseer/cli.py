@@ -20,10 +20,10 @@ from __future__ import annotations
 import os
 import sys
 
-from yaseer import __version__
+from yaseer.version import __version__
 
 TYPE_CHECKING = False
-if TYPE_CHECKING:  # annotations only: argparse is imported only when a command line needs it (issue 15)
+if TYPE_CHECKING:  # annotations only: argparse is imported only when a command line needs it
     from argparse import ArgumentParser
 
 COMMANDS = {
@@ -81,7 +81,7 @@ def build_parser(command: str | None = None) -> tuple[ArgumentParser, ArgumentPa
 def command_parser(command: str) -> ArgumentParser:
     """``command``'s parser alone: the sub-parser :func:`build_parser` makes for it (the same
     prog, description and arguments), without the main parser and the other commands' empty
-    sub-parsers (every ``yaseer run`` would build them for nothing: start-up, issue 15)."""
+    sub-parsers (every ``yaseer run`` would build them for nothing: start-up time)."""
     import argparse
 
     parser = argparse.ArgumentParser(prog=f"yaseer {command}", description=COMMANDS[command],

@@ -13,7 +13,7 @@ import sys
 from contextlib import contextmanager
 
 TYPE_CHECKING = False
-if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up time)
     from typing import IO, Iterable, Iterator, TypeVar
 
     T = TypeVar("T")

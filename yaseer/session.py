@@ -39,7 +39,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
-from yaseer.basic.scanner import detokenize, entry_messages
+from yaseer.basic.source.scanner import detokenize, entry_messages
 from yaseer.basic.errors import (
     BREAK,
     CANT_CONTINUE,
@@ -82,10 +82,10 @@ def parse_listing(text: str) -> Program:
 
     Blank lines are skipped; a line that does not start with a line number
     continues the line before it (the paper's listings wrap long lines; see
-    ``yaseer.basic.scanner.split_lines``).  Text before the first numbered
+    ``yaseer.basic.source.scanner.split_lines``).  Text before the first numbered
     line is a ``Syntax error``; a repeated number keeps the later line.
     """
-    from yaseer.basic.scanner import split_lines
+    from yaseer.basic.source.scanner import split_lines
 
     program: Program = {}
     for number, body, _ in split_lines(text):
@@ -194,9 +194,9 @@ def file_name_argument(text: str) -> str:
 
 def read_listing_file(name: str, directory: Path) -> Program:
     """LOAD: the program in file ``name`` (``.bas`` is tried if ``name`` has no suffix),
-    inside ``directory`` only (yaseer.basic.files.Sandbox: a name that leads out of it is
+    inside ``directory`` only (yaseer.basic.machine.files.Sandbox: a name that leads out of it is
     ``Path/File access error``)."""
-    from yaseer.basic.files import Sandbox
+    from yaseer.basic.machine.files import Sandbox
 
     sandbox = Sandbox(directory)
     path = sandbox.path(name)
@@ -322,7 +322,7 @@ class Session:
     def _show_entry_messages(self, program: Program) -> None:
         """What GW-BASIC prints when it reads the lines ``program`` in (``Overflow`` for
         a literal beyond the range: scanner.entry_messages), one row each."""
-        from yaseer.basic.dialect import get_dialect
+        from yaseer.basic.dialects.dialect import get_dialect
 
         dialect = get_dialect(self.dialect)
         for number in sorted(program):
@@ -342,7 +342,7 @@ class Session:
 
     def listed(self, number: int) -> str:
         """Line ``number`` of the current area as LIST shows it (``20 FOR J=1 TO 3``)."""
-        from yaseer.basic.dialect import get_dialect
+        from yaseer.basic.dialects.dialect import get_dialect
 
         return f"{number} {detokenize(self.program[number], get_dialect(self.dialect))}"
 
@@ -433,7 +433,7 @@ class Session:
     def command_save(self, argument: str) -> None:
         """SAVE "file": write the current area's program as a listing, in the session's
         directory only; a name without an extension gets ``.bas`` (GW-BASIC adds ``.BAS``)."""
-        from yaseer.basic.files import Sandbox
+        from yaseer.basic.machine.files import Sandbox
 
         name = file_name_argument(argument)
         if not Path(name).suffix:
@@ -469,7 +469,7 @@ class Session:
 
     def command_files(self, argument: str) -> None:
         """FILES ["pattern"]: the files of the directory LOAD and SAVE use (default ``*.bas``)."""
-        from yaseer.basic.files import Sandbox
+        from yaseer.basic.machine.files import Sandbox
 
         pattern = file_name_argument(argument) if argument else "*.bas"
         for name in Sandbox(self.directory).listing(pattern):
@@ -520,11 +520,11 @@ def create_machine(screen, printer, methods: dict[int, str] | None = None, insta
     ``yaseer.binding.install``; the animation passes a recording one);
     ``angle`` ("deg" or "rad") is the unit of SIN, COS, TAN and ATN at start
     (default: the dialect's); ``dialect`` is "casio" or "gw" (see
-    ``yaseer.basic.dialect``): the library is bound only in a dialect with program areas;
+    ``yaseer.basic.dialects.dialect``): the library is bound only in a dialect with program areas;
     ``files`` the directory of the program's files (default: the current one).
     """
     from yaseer import binding
-    from yaseer.basic.machine import Machine
+    from yaseer.basic.machine.machine import Machine
 
     machine = Machine(screen=screen, printer=printer, angle=angle, dialect=dialect, files=files)
     if machine.dialect.program_areas:
@@ -544,7 +544,7 @@ class FoldedScreen:
     """
 
     def __init__(self, write: Callable[[str], object], width: int) -> None:
-        from yaseer.basic.screen import OutputStream
+        from yaseer.basic.machine.screen import OutputStream
 
         self._screen = OutputStream(_Screen(write), width)  # the machine's screen folding, at ``width``
 

@@ -15,8 +15,8 @@ from __future__ import annotations
 import io
 import time
 
-from yaseer.basic import number_models
-from yaseer.basic.machine import Machine
+from yaseer.basic.compile import number_models
+from yaseer.basic.machine.machine import Machine
 
 PROGRAM = ("10 DEFDBL A-H\n20 S = 0: FOR I% = 1 TO 30000: A = I% * 1.5#: S = S + A * A - A / 3: NEXT\n"
            "30 PRINT S\n")

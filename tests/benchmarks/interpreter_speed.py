@@ -42,7 +42,7 @@ sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from classic_workloads import from_directory, in_repo, scaled  # noqa: E402
-from yaseer.basic.machine import Machine  # noqa: E402
+from yaseer.basic.machine.machine import Machine  # noqa: E402
 
 TIGHT_LOOP = "10 FOR I=1 TO {n}: A=A+1: NEXT\n"
 TIGHT_LOOP_BW = "10 FOR I=1 TO {n}\n20 A=A+1\n30 NEXT I\n40 SYSTEM\n"

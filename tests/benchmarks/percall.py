@@ -28,7 +28,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 
 from yaseer import binding  # noqa: E402
-from yaseer.basic.machine import Machine  # noqa: E402
+from yaseer.basic.machine.machine import Machine  # noqa: E402
 
 # Inputs of each program (element -> value); the crank angle element is varied.
 INPUTS = {

@@ -163,51 +163,6 @@ class Recorder:
         return [prepare_frame(frame) for frame in self.frames]
 
 
-class _LineCounter:
-    """A text stream that only counts lines into a progress bar."""
-
-    def __init__(self, progress) -> None:
-        self._progress = progress
-
-    def write(self, text: str) -> int:
-        self._progress.update(text.count("\n"))
-        return len(text)
-
-    def flush(self) -> None:
-        """Nothing is kept."""
-
-    def isatty(self) -> bool:
-        return False
-
-
-def record_run(listing, methods: dict[int, str] | None = None, progress_file=None, angle: str | None = None,
-               **run_options):
-    """Run ``listing`` (a path or the program text) once through :func:`yaseer.run`: its Result.
-
-    PRINT and LPRINT output both close frames.  A BASIC error (syntax, run
-    time, a mechanism that cannot be assembled) ends the run: the frames
-    recorded before it are kept with the error, so the animation can show the
-    mechanism up to where the method broke.  A progress counter of printed
-    lines appears on stderr if the run takes more than a second.  ``angle``
-    is the unit of the trigonometric functions, as ``yaseer run --angle``;
-    ``run_options`` are further :func:`yaseer.run` arguments (``prog``,
-    ``input``, ``dialect``).
-    """
-    from yaseer.api import run
-    from yaseer.progress import bar
-
-    with bar(None, "running", "line", file=progress_file) as progress:
-        return run(listing, method=methods, angle=angle, screen=_LineCounter(progress), **run_options)
-
-
-def record_listing(text: str, methods: dict[int, str] | None = None, progress_file=None) -> list[Frame]:
-    """The frames of a run that must complete: as :func:`record_run`, raising its BASIC error."""
-    result = record_run(text, methods, progress_file)
-    if result.exception is not None:
-        raise result.exception
-    return result.frames
-
-
 # --- assembling frames ------------------------------------------------------------
 
 VIRTUAL_MATCH = 1e-9  # relative distance within which a crank tip is a virtual link's end

@@ -16,7 +16,7 @@ from pathlib import Path
 
 def add_arguments(parser) -> None:
     """FILE, --out, --fps, --size, --frame, --title, --max-frames and the run options of ``yaseer run``."""
-    from yaseer.commands.options import add_run_options
+    from yaseer.commands.parsers import add_run_options
 
     parser.epilog = ("Exit status: 0 written, 1 an error (one line on standard error; a run that fails part-way "
                      "is still drawn up to the failure), 2 a wrong command line (also --frame without a .png), "
@@ -55,7 +55,8 @@ def main(args) -> int:
     A run stopped by a BASIC error after some frames is still drawn up to the
     error (the error line goes to stderr and the status is 1).
     """
-    from yaseer.animation import AnimationError, record_run, render
+    from yaseer.animation import AnimationError, render
+    from yaseer.recorded_run import record_run
     from yaseer.commands.options import UsageError, run_settings
     from yaseer.commands.output import output_file
     from yaseer.commands.run import raise_if_interrupted

@@ -365,7 +365,7 @@ def csv_number_rows(text: str) -> list[list[float]]:
 
 
 def add_arguments(parser) -> None:
-    from yaseer.commands.options import add_run_options
+    from yaseer.commands.parsers import add_run_options
 
     parser.epilog = ("Exit status: 0 every compared cell agrees, 1 cells differ or rows are missing (the last line "
                      "says which) or an error (one line on standard error, nothing on standard output), "

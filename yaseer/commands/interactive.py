@@ -31,7 +31,7 @@ CLEAR_SCREEN = "\x1b[H\x1b[2J"  # CLS on a terminal: cursor home, erase the scre
 
 def add_arguments(parser) -> None:
     """``yaseer`` alone (or ``yaseer --dialect gw``) starts the session: ``--dialect``, ``--printer``."""
-    from yaseer.commands.options import add_dialect_argument
+    from yaseer.commands.parsers import add_dialect_argument
 
     add_dialect_argument(parser)
     parser.add_argument("--printer", metavar="FILE",

@@ -10,7 +10,7 @@ argparse's default groups).  From that one table
   (its help, usage and every error message), and
 * :func:`scan` reads a plain command line without importing argparse at all
   (argparse with gettext, locale and shutil costs every ``yaseer run`` several
-  milliseconds of start-up, issue 15).
+  milliseconds of start-up).
 
 :func:`scan` accepts only the forms whose meaning is plain: an option's exact
 flag with its value as the next word (``--dialect gw``) or after ``=``
@@ -24,13 +24,13 @@ A value conversion raises :class:`OptionValueError` with the user's message
 (argparse shows it as ``argument --prog: MESSAGE``).
 
 The run options (``run``, ``diff``, ``plot``, ``animate``, ``report``):
-:data:`RUN_OPTIONS` describes them once; :func:`add_run_options` adds them to a
+:data:`RUN_OPTIONS` describes them once; :func:`yaseer.commands.parsers.add_run_options` adds them to a
 sub-command's argparse parser, and ``yaseer run``'s own table includes them, so
 the commands cannot drift apart.  :func:`run_settings` turns the parsed options into
 the plain values a run needs (area texts read and checked, methods checked,
 the INPUT file opened, :meth:`RunSettings.run_arguments` for :func:`yaseer.run`).
 A new run option (``--files``) is added here once and every command takes it.
-This module does not import argparse (start-up, issue 15).
+This module does not import argparse (start-up time).
 
 A wrong option value (``--prog 12=x.bas``, ``--method 5=fast``) is a usage error
 (exit status 2, the sub-command's usage line); an area file that cannot be read,
@@ -43,7 +43,7 @@ import re
 from types import SimpleNamespace
 
 TYPE_CHECKING = False
-if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up time)
     from argparse import Namespace
     from typing import Callable, Sequence, TextIO
 
@@ -213,20 +213,6 @@ RUN_OPTIONS = ("running the listing (the same in run, diff, plot, animate and re
 one titled group of a command's table."""
 
 
-def add_dialect_argument(parser) -> None:
-    """``--dialect`` on an argparse parser (the interactive session's)."""
-    from yaseer.commands.parsers import add_option
-
-    add_option(parser, DIALECT)
-
-
-def add_run_options(parser) -> None:
-    """:data:`RUN_OPTIONS` on an argparse parser (a command other than ``run``, whose table holds them)."""
-    from yaseer.commands.parsers import add_groups
-
-    add_groups(parser, (RUN_OPTIONS,))
-
-
 class RunSettings:
     """The run options, read and checked: what a machine needs to run the listing.
 
@@ -256,12 +242,12 @@ class RunSettings:
 
 
 def run_settings(args: Namespace) -> RunSettings:
-    """The parsed run options of ``args`` (see :func:`add_run_options`): area files read and checked,
+    """The parsed run options of ``args`` (see :func:`yaseer.commands.parsers.add_run_options`): area files read and checked,
     the --input file opened (close it with :meth:`RunSettings.close`); OSError naming a file that cannot be read."""
     areas = {n: read_area(n, path) for n, path in args.prog}
     dialect = args.dialect
     if getattr(args, "arith", "binary") != "binary":
-        from yaseer.basic.dialect import get_dialect
+        from yaseer.basic.dialects.dialect import get_dialect
 
         try:
             dialect = get_dialect(dialect).with_arithmetic(args.arith)
@@ -281,7 +267,7 @@ _STRINGS = re.compile(r'"[^"]*("|$)')
 def read_area(number: int, path: str) -> str:
     """The text of ``--prog N=path``; :class:`CommandError` if it holds no lines or no RETURN."""
     from yaseer.basic.errors import BasicError
-    from yaseer.basic.scanner import split_lines
+    from yaseer.basic.source.scanner import split_lines
 
     text = read_text(path)
     try:

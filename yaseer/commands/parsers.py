@@ -12,11 +12,22 @@ from __future__ import annotations
 import argparse
 import functools
 
-from yaseer.commands.options import Option, OptionValueError
+from yaseer.commands.options import DIALECT, RUN_OPTIONS, Option, OptionValueError
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:  # annotations only
     from typing import Sequence
+
+
+def add_dialect_argument(parser) -> None:
+    """``--dialect`` on an argparse parser (the interactive session's)."""
+    add_option(parser, DIALECT)
+
+
+def add_run_options(parser) -> None:
+    """:data:`~yaseer.commands.options.RUN_OPTIONS` on an argparse parser (a command other than ``run``,
+    whose table holds them)."""
+    add_groups(parser, (RUN_OPTIONS,))
 
 
 def add_groups(parser: argparse.ArgumentParser, groups: Sequence[tuple[str | None, Sequence[Option]]]) -> None:

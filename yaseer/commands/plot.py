@@ -18,7 +18,7 @@ from pathlib import Path
 
 
 def add_arguments(parser) -> None:
-    from yaseer.commands.options import add_run_options
+    from yaseer.commands.parsers import add_run_options
 
     parser.epilog = ("Exit status: 0 drawn, 1 an error (one line on standard error: the listing's BASIC error, "
                      "or what is wrong), 2 a wrong command line, 130 Ctrl-C.")

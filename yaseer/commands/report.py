@@ -15,7 +15,7 @@ from pathlib import Path
 def add_arguments(parser) -> None:
     """FILE, --out, --fps, --size, --max-frames and the run options of ``yaseer run``."""
     from yaseer.commands.animate import _size
-    from yaseer.commands.options import add_run_options
+    from yaseer.commands.parsers import add_run_options
 
     parser.add_argument("file", help="the BASIC listing")
     parser.add_argument("--out", metavar="FILE", help="the page to write (default: <stem>.html here)")

@@ -73,9 +73,9 @@ def run_listing(case, method: str, angles, repeat: int = 1, arithmetic: str = "b
     if case.listing is None:
         return Run(math.nan, Outcome(math.nan, "n/a", "no listing for this case"), 0)
     from yaseer import binding
-    from yaseer.basic.dialect import CASIO
+    from yaseer.basic.dialects.dialect import CASIO
     from yaseer.basic.errors import BasicError
-    from yaseer.basic.machine import Machine
+    from yaseer.basic.machine.machine import Machine
 
     dialect = CASIO.with_arithmetic(arithmetic)
     text = case.listing(np.asarray(angles, float))

@@ -19,7 +19,7 @@ receives +value, the upstream body -value.  Forces are complex numbers
 from __future__ import annotations
 
 import functools
-from collections import namedtuple  # records (not dataclasses or typing.NamedTuple: start-up, issue 15)
+from collections import namedtuple  # records (not dataclasses or typing.NamedTuple: start-up time)
 
 from yaseer.linkages.errors import SingularForceError, UnknownLoadError
 from yaseer.linkages.numerics import SCALAR, math_for

@@ -10,7 +10,7 @@ are rad/s and rad/s**2, counter-clockwise positive.
 
 from __future__ import annotations
 
-from collections import namedtuple  # records (not typing.NamedTuple: importing typing costs start-up, issue 15)
+from collections import namedtuple  # records (not typing.NamedTuple: importing typing costs start-up)
 
 from yaseer.linkages.errors import LockedError
 from yaseer.linkages.numerics import QUADRANTS, SCALAR, math_for
@@ -206,7 +206,7 @@ class CrankedLinkage:
 
     A result is immutable and made from its ``FIELDS`` in order, compared, hashed and
     shown by them as a frozen dataclass would be, but a plain class: importing
-    dataclasses costs every start several milliseconds (issue 15).
+    dataclasses costs every start several milliseconds.
 
     ``FRAMES`` names, for each moving body, how its points are given: (the attribute
     holding the Motion of the joint they are measured from, None for Ao; the

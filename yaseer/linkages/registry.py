@@ -15,7 +15,7 @@ line, ``--method 2=newton``).
 from __future__ import annotations
 
 TYPE_CHECKING = False
-if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up, issue 15)
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up time)
     from typing import Callable
 
 from yaseer.linkages.errors import UnknownMethodError

@@ -19,7 +19,7 @@ Methods:
 
 from __future__ import annotations
 
-from collections import namedtuple  # not typing.NamedTuple: importing typing costs start-up (issue 15)
+from collections import namedtuple  # not typing.NamedTuple: importing typing costs start-up
 
 from yaseer.linkages.errors import AssemblyError, MethodDivisionByZero
 from yaseer.linkages.numerics import math_for

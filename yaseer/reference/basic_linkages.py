@@ -15,8 +15,9 @@ and returns a dict of numpy arrays, or of lists of mpf with
   e u(phi - 90) + s u(phi), ahead of A along u(phi) (``ahead=False``: behind).
 * :func:`fourbar` -- Program 2: fixed link Ao->Bo = L11 u(T11), crank L12,
   coupler L13, follower L14; uncrossed: B left of the directed line A->Bo.
-* :func:`inverted_slider_crank` -- Program 3 (FISC): Bo = -L6 u(T6), crank L7,
-  the follower pivoted at Bo with its line through A.
+
+Program 3 (FISC), the inverted slider-crank, is solved in full in
+:mod:`yaseer.reference.programs` (:func:`~yaseer.reference.programs.inverted_slider_crank`).
 """
 
 from __future__ import annotations
@@ -246,21 +247,3 @@ def fourbar(L11, T11, L12, L13, L14, thetas_deg, omega=0, alpha=0, crossed=False
              "T(14)": normalise_degrees(s.angle("follower") + 180, s.ar),
              "W(7)": s.omega("follower"), "A(7)": s.alpha("follower")} for s in snapshots]
     return collect(rows, number)
-
-
-# --------------------------------------------------------------------------- inverted slider-crank
-
-def inverted_slider_crank(L6, T6, L7, thetas_deg, omega=0, alpha=0, crank_rate=0, crank_accel=0,
-                          number="float", dps=50):
-    """Program 3 (FISC): L(5) = |Bo->A|, D(4), E(4); T(9) of Bo->A, W(4), A(4).
-
-    ``L7``, ``crank_rate``, ``crank_accel``: the crank length and D(3), E(3)
-    (numbers, or one per angle for a flexible crank).  The block at A carries
-    the pin; it slides along the follower, whose line passes through Bo
-    (the kinematics of :func:`yaseer.reference.programs.program3`).
-    """
-    from yaseer.reference.programs import program3
-
-    r = program3({"L(6)": L6, "T(6)": T6, "L(7)": L7, "W(0)": omega, "A(0)": alpha, "D(3)": crank_rate,
-                  "E(3)": crank_accel}, thetas_deg, number, dps)
-    return {name: r[name] for name in ("L(5)", "D(4)", "E(4)", "T(9)", "W(4)", "A(4)")}

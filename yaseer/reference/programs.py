@@ -349,3 +349,19 @@ def _program3_row(s, crank, forces, q):
         row["U(4)"] = s.moment_on("block", "slide", "lock")
         row["F(16)"], row["F(17)"] = s.reaction("Bo", "follower")
     return row
+
+
+# --------------------------------------------------------------------------- inverted slider-crank
+
+def inverted_slider_crank(L6, T6, L7, thetas_deg, omega=0, alpha=0, crank_rate=0, crank_accel=0,
+                          number="float", dps=50):
+    """Program 3 (FISC): L(5) = |Bo->A|, D(4), E(4); T(9) of Bo->A, W(4), A(4).
+
+    ``L7``, ``crank_rate``, ``crank_accel``: the crank length and D(3), E(3)
+    (numbers, or one per angle for a flexible crank).  The block at A carries
+    the pin; it slides along the follower, whose line passes through Bo
+    (the kinematics of :func:`program3`).
+    """
+    r = program3({"L(6)": L6, "T(6)": T6, "L(7)": L7, "W(0)": omega, "A(0)": alpha, "D(3)": crank_rate,
+                  "E(3)": crank_accel}, thetas_deg, number, dps)
+    return {name: r[name] for name in ("L(5)", "D(4)", "E(4)", "T(9)", "W(4)", "A(4)")}

@@ -1,4 +1,4 @@
-"""Alternative solution methods for the basic linkages (issue 5).
+"""Alternative solution methods for the basic linkages.
 
 Importing this package registers, in :mod:`yaseer.linkages.registry`:
 

@@ -26,7 +26,7 @@ Two forms:
 Both compute the two roots and keep the one on the side of A->Bo the
 contract's assembly mode asks for (uncrossed: B left of A->Bo), and take the
 rates from the differentiated loop equations (the rate formulas printed in 003
-carry sign errors that are not a matter of numerics; issue 6 documents them).
+carry sign errors that are not a matter of numerics; the errata document them).
 """
 
 from __future__ import annotations

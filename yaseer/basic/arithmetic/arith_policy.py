@@ -1,0 +1,128 @@
+"""What a division by zero or an overflow does: the dialect's run-time error policy.
+
+``Dialect.on_division_by_zero`` and ``Dialect.on_overflow`` are ``"stop"`` (the
+Casio: the run stops with the error, which ON ERROR may trap) or ``"continue"``
+(GW-BASIC): unless ON ERROR is set, the message (``Division by zero`` or
+``Overflow``) is printed where the cursor is, followed by a line end, and the
+operation's result is the largest number of its type with the right sign, so the
+program goes on.  With ON ERROR set the error is trapped as any other.
+
+Microsoft's source, MATH1.ASM: ``$DIV0S``/``$OVFLS`` call ``DOINF`` (the signed
+largest value: ``$INFPD``/``$INFMD``, positive for zero to a negative power) and
+then ``DV010``, which traps through ``TRAPER`` when ON ERROR is set and else
+prints the message with ``$STPRN`` and a carriage return and line feed.
+
+:class:`ArithmeticPolicy` holds the machine-side half; :func:`helpers` gives the
+compiled code's ``/`` and the wrapped ``\\``, ``MOD``, ``^`` and ``EXP`` of a
+dialect whose policy continues.
+"""
+
+from __future__ import annotations
+
+import math
+
+from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
+from yaseer.basic.arithmetic.values import DOUBLE_LARGEST, SINGLE_LARGEST
+
+# The largest values of Microsoft Binary Format (exponent byte 255, mantissa all ones):
+# single (1 - 2**-24) * 2**127 = 1.701412E+38; double (1 - 2**-56) * 2**127, whose
+# nearest Python float is 2**127 (printed 1.701411834604692D+38, as GW-BASIC does).
+LARGEST = {"!": SINGLE_LARGEST, "#": DOUBLE_LARGEST}
+MESSAGES = {DIVISION_BY_ZERO: "Division by zero", OVERFLOW: "Overflow"}
+
+
+class ArithmeticPolicy:
+    """The run-time half of the policy: ``machine`` gives the dialect, ON ERROR and the screen."""
+
+    def __init__(self, machine):
+        self.machine = machine
+
+    def result(self, code: int, negative: bool = False, kind: str = "!") -> float:
+        """The value an operation that failed with ``code`` gives, or the raised error."""
+        machine = self.machine
+        dialect = machine.dialect
+        policy = dialect.on_division_by_zero if code == DIVISION_BY_ZERO else dialect.on_overflow
+        if policy != "continue" or machine.on_error is not None:
+            raise BasicError(MESSAGES[code], code)
+        if not machine.csv:
+            machine.screen.write(MESSAGES[code])
+            machine.screen.new_row()
+        largest = LARGEST.get(kind, LARGEST["!"])
+        return -largest if negative else largest
+
+    def overflowed(self, value, kind: str = "!") -> float:
+        """A stored or printed value beyond the number range (infinite or not a number)."""
+        return self.result(OVERFLOW, value < 0, kind)
+
+
+def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
+    """The compiled code's helpers for a typed dialect: ``_dk`` (a double ``+ - *``
+    result, or VAL's, kept in MBF's range: beyond it the policy's value), ``_dv`` and
+    ``_ddv`` (single and double ``/``), ``_spow`` (``^``, single precision), and
+    ``\\`` ``MOD`` ``^`` ``EXP`` that give the policy's value instead of failing.  (A
+    ``\\`` or ``MOD`` by zero gives a single 1.701412E+38 with the dividend's sign, as
+    PC-BASIC 2.0.8 shows.)"""
+    from yaseer.basic.arithmetic import single_arith
+    result = policy.result
+
+    def double(x):
+        if -DOUBLE_LARGEST <= x <= DOUBLE_LARGEST:
+            return x
+        return result(OVERFLOW, x < 0, "#")
+
+    def divider(quotient, kind: str):
+        """``/`` of the type ``kind`` (``"!"`` or ``"#"``) by ``quotient(a, b)``."""
+        def divide(a, b):
+            try:
+                return quotient(a, b)
+            except ZeroDivisionError:
+                return result(DIVISION_BY_ZERO, a < 0, kind)
+        return divide
+
+    def single_power(a, b):
+        """``a ^ b`` of two singles as GW-BASIC's ``$FPWR`` (single_arith.py): an integral
+        exponent multiplies, any other is the nearest single to the double power."""
+        if single_arith.is_integral_power(b):
+            try:
+                r = single_arith.power_by_integer(a, b)
+            except ZeroDivisionError:
+                return result(DIVISION_BY_ZERO, False, "!")  # zero to a negative power: positive
+            return r if r - r == 0 else result(OVERFLOW, r < 0, "!")
+        return single_arith.nearest(raise_to(a, b))
+
+    def by_integer(operation):
+        """``\\`` or MOD: a division by zero gives the policy's value."""
+        def run(a, b):
+            try:
+                return operation(a, b)
+            except BasicError as err:
+                if err.code != DIVISION_BY_ZERO:
+                    raise
+                return result(DIVISION_BY_ZERO, a < 0, "!")
+        return run
+
+    largest = DOUBLE_LARGEST  # GW-BASIC's doubles end where its singles do
+
+    def raise_to(a, b):
+        try:
+            r = power(a, b)
+            if -largest <= r <= largest or r != r:
+                return r
+            return result(OVERFLOW, r < 0, "!")
+        except BasicError as err:
+            if err.code != DIVISION_BY_ZERO:
+                raise
+            return result(DIVISION_BY_ZERO, False, "!")  # zero to a negative power: positive
+        except OverflowError:
+            return result(OVERFLOW, a < 0 and float(b).is_integer() and int(b) % 2 == 1, "!")
+
+    def exponential(x):
+        try:
+            r = math.exp(x)
+        except OverflowError:
+            r = math.inf
+        return r if r <= largest else result(OVERFLOW, False, "!")
+
+    return {"_dk": double, "_dv": divider(single_arith.divide, "!"), "_ddv": divider(lambda a, b: double(a / b), "#"),
+            "_idiv": by_integer(int_divide), "_mod": by_integer(int_modulo), "_pow": raise_to, "_exp": exponential,
+            "_spow": single_power}

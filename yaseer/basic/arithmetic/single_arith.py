@@ -1,0 +1,287 @@
+"""GW-BASIC's single-precision arithmetic: how Microsoft Binary Format rounds.
+
+A GW-BASIC single is a 24-bit mantissa and an exponent byte (Microsoft Binary
+Format, MBF); yaseer holds it in a Python float, exactly.  GW-BASIC's routines
+(MATH1.ASM, MATH2.ASM of Microsoft's published source) work on the 24 bits and a
+guard byte, and do not always give the nearest single.  The functions here give
+GW-BASIC's result:
+
+* ``+ -`` (:func:`add`, :func:`subtract`, ``$FADDS``) and ``*`` (:func:`product`,
+  ``$FMULS``) step for step as PC-BASIC 2.0.8 reproduces them, which the
+  differential tests compare against bit for bit.  Addition: the smaller
+  operand's mantissa is shifted right to the larger's exponent (bits shifted out
+  are lost; an addition that lost bits sets a sticky bit); a subtraction whose
+  shifted operand is below half a guard unit gives the larger operand unchanged,
+  and one whose guard byte is ``10x?????`` with some of the low five bits set
+  rounds down.  Multiplication: the product is truncated to 28 bits; the 4 bits
+  below the mantissa round half to even, ``1001`` counting as a half (``$ROUNS``
+  keeps the guard byte's top 3 bits: 0x80..0x9F is a tie).
+* ``/`` (:func:`divide`, ``$FDIVS``): the nearest single, ties to even: the
+  routine rounds with a sticky bit from the remainder.  (PC-BASIC's division
+  shifts the divisor right and loses its low bits: about 1% of its quotients are
+  one unit off; the source decides, docs/compatibility.md.)
+* SQR (``$SQR``: bit by bit, 24 bits and a rounding bit): the nearest single.
+* ``^`` (:func:`power`, ``$FPWR``): an integral exponent below 32768 in size
+  multiplies by binary powering (Knuth's algorithm A, each step ``$FMULS``; a
+  negative one divides 1 by the result); any other is ``EXP(Y*LOG(X))``.
+* LOG, EXP, SIN, COS, TAN, ATN and ``^`` with a fractional exponent: GW-BASIC
+  evaluates Hart's polynomials in single precision, whose last bit yaseer does not
+  reproduce; yaseer gives the nearest single to the true value (:func:`nearest`).
+* A double made single (:func:`from_double`, ``$CSD``): rounded half up on the
+  guard byte's top bit.
+* PRINT's digits: :mod:`yaseer.basic.arithmetic.mbf_digits` (with this module's working sum and quotient).
+
+The range is MBF's: exponent byte 1..255, values 2**-128 .. (1 - 2**-24) * 2**127.
+A result below it is 0; one at or beyond 2**127 is infinite with its sign, which
+the compiled code hands to the dialect's overflow policy (arith_policy.py).
+
+Working numbers are ``(exponent byte, mantissa)`` with the value
+``mantissa * 2**(exponent - 160)``: a 32-bit mantissa whose top bit is set.
+"""
+
+from __future__ import annotations
+
+import struct
+from math import frexp, inf, ldexp
+
+_TOP = 1 << 32  # a 32-bit working mantissa is below this
+_HALF_TOP = 1 << 31  # ... and, normalised, at least this
+_TINY = 2.0 ** -128  # the least MBF single; anything smaller is 0
+_LIMIT = 2.0 ** 127  # a rounded result this large overflows (exponent byte 256)
+_SAFE_LOW = 2.0 ** -125  # IEEE singles keep all 24 bits from 2**-126 up
+# A constant below this in size, added to a single, cannot carry the sum beyond the
+# range: it is less than half a unit of the largest single (2**103, about 1E+31).
+SMALL_CONSTANT = 1e30
+_pack, _unpack = struct.Struct("f").pack, struct.Struct("f").unpack
+
+
+def nearest(x) -> float:
+    """``x`` rounded to the nearest single, ties to even, in MBF's range (below
+    2**-128: 0; from 2**127: an infinity).  NaN and infinities pass through."""
+    if _SAFE_LOW <= x or x <= -_SAFE_LOW:
+        try:
+            r = _unpack(_pack(x))[0]
+        except OverflowError:
+            return -inf if x < 0 else inf
+        if -_LIMIT < r < _LIMIT:
+            return r
+        return -inf if r < 0 else inf
+    if not x or x != x:
+        return x + 0.0
+    m, e = frexp(x)  # below IEEE single's normal range: round the 24 bits here
+    q = m * 16777216.0 if m > 0 else m * -16777216.0
+    below = q % 1.0
+    q -= below
+    if below > 0.5 or (below == 0.5 and q % 2.0):
+        q += 1.0
+    r = ldexp(q, e - 24)
+    if r < _TINY:
+        return 0.0
+    return -r if x < 0 else r
+
+
+def working_parts(x, width: int = 32) -> tuple[int, int]:
+    """A nonzero number's (exponent byte, ``width``-bit working mantissa): for a single
+    and width 32 the low byte is 0; width 64 holds a double's 53 bits exactly."""
+    m, e = frexp(abs(x))
+    return e + 128, int(ldexp(m, width))
+
+
+def _rounded(exponent: int, mantissa: int, negative: bool) -> float:
+    """A working number normalised and rounded to 24 bits (guard byte half to even).
+
+    Normalising shifts left while the mantissa is below 2**31 - 1 (so 0x7FFFFFFF,
+    which rounds up to 2**31, is left as it is, as in GW-BASIC's loop)."""
+    if mantissa == 0 or exponent <= 0:
+        return 0.0
+    if mantissa < _HALF_TOP - 1:
+        shift = 32 - mantissa.bit_length()
+        mantissa <<= shift
+        exponent -= shift
+    low = mantissa & 0xFF
+    mantissa >>= 8
+    if low > 0x80 or (low == 0x80 and mantissa & 1):
+        mantissa += 1
+        if mantissa == 0x1000000:
+            mantissa = 0x800000
+            exponent += 1
+    if exponent <= 0:
+        return 0.0
+    if exponent > 255:
+        return -inf if negative else inf
+    value = ldexp(mantissa, exponent - 152)
+    return -value if negative else value
+
+
+def add(a, b) -> float:
+    """``a + b`` of two singles (or integers), rounded as GW-BASIC's ``$FADDS``.
+
+    Fast paths, where the exponents differ by at most 29 (the sum is exact in a
+    Python float): a sum that needs at most 24 bits is GW's result (no bit was
+    shifted out, so nothing rounds; tested by Veltkamp's split, which gives the
+    sum cut to 24 bits); otherwise GW's result is the exact sum rounded half to
+    even for a subtraction whose exponents differ by at most 3 (no bit of the
+    smaller operand is shifted out, the guard byte's low 5 bits are 0) and for an
+    addition, unless the carry shifted out a 1 below a guard byte of exactly 0x80
+    (the sum is then 0.5 + 1/512 of a unit above the 24 bits: IEEE rounds up, GW
+    half to even)."""
+    if not a:
+        return b + 0.0
+    if not b:
+        return a + 0.0
+    x = a if a > 0 else -a
+    y = b if b > 0 else -b
+    small, large = (a, b) if x <= y else (b, a)
+    if x > y:
+        x, y = y, x
+    if x * 536870912.0 >= y:
+        total = a + b
+        if not total:
+            return 0.0
+        if total >= _SAFE_LOW or total <= -_SAFE_LOW:
+            split = total * 536870913.0
+            if split - (split - total) == total:
+                if -_LIMIT < total < _LIMIT:
+                    return total
+                return -inf if total < 0 else inf
+            if (a > 0) == (b > 0):
+                r = nearest(total)
+                if (frexp(total)[0] * 16777216.0) % 1.0 not in (0.501953125, 0.498046875):
+                    return r
+            elif x * 8.0 >= y:
+                return nearest(total)
+    small_exponent, small_mantissa = working_parts(small)
+    exponent, mantissa = working_parts(large)
+    return _rounded(*working_sum(small_exponent, small_mantissa, small < 0, exponent, mantissa, large < 0))
+
+
+def working_sum(small_exponent: int, small_mantissa: int, small_negative: bool,
+         exponent: int, mantissa: int, negative: bool, top: int = _TOP) -> tuple[int, int, bool]:
+    """The working sum of two working numbers, the second the larger in magnitude
+    (not yet normalised or rounded): the steps of ``$FADDS`` listed in the module
+    docstring.  ``top``: 2**32 for singles, 2**64 for the doubles' working numbers."""
+    shift = exponent - small_exponent
+    nothing_lost = small_mantissa & ((1 << shift) - 1) == 0
+    small_mantissa >>= shift
+    if small_negative != negative:
+        if small_mantissa < 0x80 or (small_mantissa == 0x80 and nothing_lost):
+            return exponent, mantissa, negative
+        mantissa -= small_mantissa
+        if mantissa & 0x1C0 == 0x80 and mantissa & 0x1DF != 0x80:
+            mantissa &= ~0x80  # GW's subtraction rounds this guard byte down
+    else:
+        mantissa += small_mantissa
+        if mantissa >= top:
+            exponent += 1
+            mantissa >>= 1
+        if not nothing_lost:
+            mantissa |= 1
+    return exponent, mantissa, negative
+
+
+def subtract(a, b) -> float:
+    """``a - b`` of two singles (or integers), as GW-BASIC's ``$FSUBS``."""
+    return add(a, -b)
+
+
+def product(p) -> float:
+    """The single GW-BASIC's ``$FMULS`` gives for the exact product ``p`` of two singles
+    (or integers; any product of two values of at most 24 bits is exact in a Python
+    float): ``p`` truncated to 28 bits, whose 4 low bits round the 24 half to even
+    (``1001`` counts as a half): up when the part below the 24 bits is at least
+    10/16 of a unit, or at least 8/16 over an odd mantissa."""
+    if -_TINY < p < _TINY:
+        return 0.0
+    if p in (inf, -inf):  # a power's product after an overflow
+        return p
+    m, e = frexp(p)
+    q = m * 16777216.0 if m > 0 else m * -16777216.0  # the 24 bits and the rest, exact
+    below = q % 1.0
+    q -= below
+    if below >= 0.625 or (below >= 0.5 and q % 2.0):
+        q += 1.0
+    r = ldexp(q, e - 24)
+    if r >= _LIMIT:
+        return -inf if p < 0 else inf
+    return -r if p < 0 else r
+
+
+def multiply(a, b) -> float:
+    """``a * b`` of two singles (or integers), as GW-BASIC's ``$FMULS``."""
+    return product(a * b)
+
+
+def divide(a, b) -> float:
+    """``a / b`` of two singles (or integers), as GW-BASIC's ``$FDIVS``: the nearest
+    single (the quotient of two 24-bit mantissas is never exactly halfway unless
+    exact, so the double quotient rounds as the exact one).  ``b`` = 0 raises
+    ZeroDivisionError (the caller applies the policy)."""
+    if not b:
+        raise ZeroDivisionError("division by zero")
+    return nearest(a / b)
+
+
+def working_quotient(exponent: int, rest: int, divisor_exponent: int, divisor: int, width: int = 32) -> tuple[int, int]:
+    """The working quotient of two ``width``-bit working numbers (magnitudes) as
+    PC-BASIC's output routine divides by ten: ``width`` steps of long division that
+    shift the divisor right, subtracting when the rest is greater."""
+    exponent += 128 + width + 1 - divisor_exponent
+    quotient = 0
+    while divisor:
+        quotient <<= 1
+        if rest > divisor:
+            rest -= divisor
+            quotient += 1
+        divisor >>= 1
+        exponent -= 1
+    return exponent, quotient
+
+
+def from_double(x) -> float:
+    """A double made single (CSNG, or stored in a single variable), as GW-BASIC's
+    ``$CSD``: the top 24 bits of the mantissa, rounded up when the next bit is 1."""
+    if not x:
+        return 0.0
+    if x != x or x in (inf, -inf):  # already beyond the range: the caller's overflow check
+        return x
+    m, e = frexp(x)
+    q = m * 16777216.0 if m > 0 else m * -16777216.0
+    q += 0.5
+    q -= q % 1.0
+    if e + 128 <= 0:
+        return 0.0
+    r = ldexp(q, e - 24)
+    if r >= _LIMIT:
+        return -inf if x < 0 else inf
+    return -r if x < 0 else r
+
+
+# A single-precision function's value (SQR, SIN, LOG, EXP, ``^`` with a fractional
+# exponent) from its IEEE double result: the nearest single (module docstring).
+function_result = nearest
+
+
+def power_by_integer(x, n: int) -> float:
+    """``x ^ n`` for an integral ``n`` below 32768 in size, as GW-BASIC's ``$FPWR``:
+    Knuth's binary powering (``Y = 1, Z = x``; per bit of ``n`` from the lowest:
+    ``Y = Y*Z`` when it is 1, then, while bits remain, ``Z = Z*Z``), each product
+    rounded as ``$FMULS``; for a negative ``n``, 1 divided by ``x ^ -n``.  ``n`` = 0
+    gives 1.  Overflow gives an infinity; 0 to a negative power raises
+    ZeroDivisionError."""
+    count = int(n)
+    y, z = None, x + 0.0  # y None: still 1 (1 * Z is exact: the first product is Z itself)
+    bits = -count if count < 0 else count
+    while bits:
+        if bits & 1:
+            y = z if y is None else product(y * z)
+        bits >>= 1
+        if bits:
+            z = product(z * z)
+    if y is None:
+        return 1.0
+    return divide(1.0, y) if count < 0 else y
+
+
+def is_integral_power(n) -> bool:
+    """Does GW-BASIC's ``$FPWR`` raise to ``n`` by multiplying (``n`` integral, |n| < 32768)?"""
+    return -32768 < n < 32768 and n == int(n)

@@ -1,0 +1,321 @@
+"""GW-BASIC's number model at run time: 16-bit integers, single and double precision.
+
+The compiled code of a typed dialect (``Dialect.typed_numbers``) calls these.
+A value's Python type carries its BASIC type where the printed text depends on it:
+
+* ``%`` integer: a Python ``int`` in -32768..32767.  ``+ - *`` of two integers
+  that leave that range give a single-precision result (GW-BASIC does the same:
+  ``PRINT 200*200`` shows 40000); storing a value outside it in an integer
+  variable, or using it where an integer is needed (``\\``, ``MOD``, ``AND``
+  ...), is ``Overflow``.
+* ``!`` single precision: a Python ``float`` holding a 24-bit mantissa exactly
+  (GW-BASIC's Microsoft Binary Format); every single-precision result is rounded
+  as GW-BASIC's routines round (:mod:`yaseer.basic.arithmetic.single_arith`).  MBF's range
+  ends at 1.7E+38 (IEEE's at 3.4E+38): beyond it a result is Overflow.
+* ``#`` double precision: a Python ``float`` (53-bit mantissa; MBF doubles have
+  56, so the 16th digit may differ), within :data:`DOUBLE_LARGEST` (MBF's range;
+  ``+ - * /`` results beyond it go to the overflow policy through ``_dk``).  Wrapped in :class:`Double` only on its
+  way to PRINT or STR$, so that it shows 16 digits and ``D`` exponents.
+
+Rounding to an integer (CINT, assignment to ``%``) is half away from zero, as
+GW-BASIC (checked with PC-BASIC: ``CINT(2.5)`` is 3, ``CINT(-2.5)`` is -3).
+"""
+
+from __future__ import annotations
+
+import math
+import struct
+
+from yaseer.basic.arithmetic import mbf_digits, single_arith
+from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
+
+INT_MIN, INT_MAX = -32768, 32767
+SINGLE_DIGITS = 7  # significant digits PRINT shows of a single-precision number
+DOUBLE_DIGITS = 16  # ... of a double-precision number
+
+_SINGLE = struct.Struct("f")
+_pack, _unpack = _SINGLE.pack, _SINGLE.unpack
+
+SINGLE_LARGEST = (1 - 2.0 ** -24) * 2.0 ** 127  # 1.701412E+38, the end of MBF's single range
+# MBF's double range ends there too, at (1 - 2**-56) * 2**127, whose nearest Python
+# float is 2**127 (printed 1.701411834604692D+38, as GW-BASIC prints it)
+DOUBLE_LARGEST = 2.0 ** 127
+MBF_SMALLEST = 2.0 ** -128  # the least MBF single or double (exponent byte 1); below it: 0
+
+
+def to_single(x) -> float:
+    """``x`` rounded to the nearest IEEE single-precision value (as a Python float).
+
+    Beyond GW-BASIC's single range (MBF: 1.701412E+38) the result is infinite; the
+    compiled code's overflow checks (``x - x``) pass that to the dialect's overflow
+    policy (yaseer/basic/arithmetic/arith_policy.py).
+    """
+    try:
+        r = _unpack(_pack(x))[0]
+    except OverflowError:  # beyond IEEE single too
+        return math.copysign(math.inf, x)
+    if -SINGLE_LARGEST <= r <= SINGLE_LARGEST or r != r:
+        return r
+    return math.copysign(math.inf, r)
+
+
+# GW-BASIC reads a single-precision literal into Microsoft Binary Format: its digits as
+# an integer (cut to 24 bits), then divided or multiplied by ten once per decimal place
+# in a 32-bit working mantissa (24 bits and 8 guard bits), rounded to 24 bits at the
+# end.  That is not always the nearest single (``736.43455!`` reads as 736.4345...);
+# the routine below does the same steps (as PC-BASIC 2.0.8 reproduces them) so that
+# a literal has GW's value.  Working numbers: (exponent, mantissa), value
+# mantissa * 2**(exponent - 160), mantissa normalised to 32 bits.
+_MBF_TOP = 1 << 32
+_MBF_TEN = (132, 0xA0000000)
+
+
+def _mbf_div10(exponent: int, mantissa: int) -> tuple[int, int]:
+    """One division by ten: long division of the 32-bit mantissas (GW's order of steps)."""
+    divisor = _MBF_TEN[1]
+    exponent += 160 - _MBF_TEN[0] + 1  # the exponents subtract; each quotient bit takes one back
+    quotient, rest = 0, mantissa
+    while divisor > 0:
+        quotient <<= 1
+        exponent -= 1
+        if rest > divisor:
+            rest -= divisor
+            quotient += 1
+        divisor >>= 1
+    while quotient < (1 << 31):
+        exponent -= 1
+        quotient <<= 1
+    return exponent, quotient
+
+
+def _mbf_mul10(exponent: int, mantissa: int) -> tuple[int, int]:
+    """One multiplication by ten: 2x + 8x, the lower bits shifted out marked (sticky bit)."""
+    low, high = mantissa, mantissa  # 2x has exponent + 1, 8x exponent + 3
+    lost = low & 0b11
+    total = (low >> 2) + high
+    exponent += 3
+    if total >= _MBF_TOP:
+        exponent += 1
+        total >>= 1
+    if lost:
+        total |= 1
+    return exponent, total
+
+
+def single_literal(text: str) -> float:
+    """The single GW-BASIC reads for a literal's digits ``text`` (``736.43455``, ``1.5E3``)."""
+    digits, _, exponent = text.upper().replace("D", "E").partition("E")
+    whole, _, fraction = digits.partition(".")
+    mantissa = int(whole + fraction or "0")
+    exp10 = int(exponent) if exponent.strip("+-") else 0
+    return mbf_single(mantissa, exp10 - len(fraction)) if mantissa else 0.0
+
+
+def mbf_single(mantissa: int, exp10: int) -> float:
+    """The single GW-BASIC reads for the literal ``mantissa`` * 10 ** ``exp10``
+    (``mantissa`` > 0: all the digits typed, as an integer)."""
+    exponent = 152
+    while mantissa > 0xFFFFFF:  # cut to 24 bits (the low bits are dropped)
+        mantissa >>= 1
+        exponent += 1
+    while mantissa <= 0x7FFFFF:
+        mantissa <<= 1
+        exponent -= 1
+    mantissa <<= 8
+    for _ in range(-exp10):
+        exponent, mantissa = _mbf_div10(exponent, mantissa)
+    for _ in range(exp10):
+        exponent, mantissa = _mbf_mul10(exponent, mantissa)
+    while mantissa < (1 << 31) - 1:
+        exponent -= 1
+        mantissa <<= 1
+    low = mantissa & 0xFF
+    up = low > 0x80 or (low == 0x80 and mantissa & 0x100 != 0)
+    mantissa = (mantissa & 0xFFFFFF00) + 0x100 * up
+    if mantissa >= _MBF_TOP:
+        exponent += 1
+        mantissa >>= 1
+    if exponent <= 0:
+        return 0.0
+    return math.ldexp(mantissa, exponent - 160)
+
+
+def _overflow() -> BasicError:
+    return BasicError("Overflow", OVERFLOW)
+
+
+def int_result(x):
+    """The result of ``+ - *`` (or unary minus, ABS) on integers: ``x`` itself when it
+    fits in 16 bits, else ``x`` as single precision (GW-BASIC multiplies integers in
+    single precision: a product beyond 24 bits rounds as ``$FMULS``; a sum is exact)."""
+    if INT_MIN <= x <= INT_MAX:
+        return x
+    return single_arith.product(float(x))
+
+
+def to_int(x) -> int:
+    """CINT: ``x`` rounded half away from zero; ``Overflow`` outside -32768..32767."""
+    if type(x) is int:
+        if INT_MIN <= x <= INT_MAX:
+            return x
+        raise _overflow()
+    if x != x:
+        raise _overflow()
+    r = int(x + 0.5) if x >= 0 else -int(-x + 0.5)
+    if INT_MIN <= r <= INT_MAX:
+        return r
+    raise _overflow()
+
+
+def int_divide(a, b) -> int:
+    """``a \\ b``: both rounded to integers, the quotient truncated toward zero."""
+    x, y = to_int(a), to_int(b)
+    if y == 0:
+        raise BasicError("Division by zero", DIVISION_BY_ZERO)
+    q = abs(x) // abs(y)
+    return to_int(q if (x >= 0) == (y >= 0) else -q)  # -32768 \ -1 is Overflow
+
+
+def int_modulo(a, b) -> int:
+    """``a MOD b``: both rounded to integers; the remainder has the sign of ``a``."""
+    x, y = to_int(a), to_int(b)
+    if y == 0:
+        raise BasicError("Division by zero", DIVISION_BY_ZERO)
+    return int(math.fmod(x, y))
+
+
+def logical_and(a, b) -> int:
+    return to_int(a) & to_int(b)
+
+
+def logical_or(a, b) -> int:
+    return to_int(a) | to_int(b)
+
+
+def logical_xor(a, b) -> int:
+    return to_int(a) ^ to_int(b)
+
+
+def logical_eqv(a, b) -> int:
+    return ~(to_int(a) ^ to_int(b))
+
+
+def logical_imp(a, b) -> int:
+    return ~to_int(a) | to_int(b)
+
+
+def logical_not(a) -> int:
+    return ~to_int(a)
+
+
+def int_range(start: int, limit, step: int):
+    """The values of an integer FOR variable (the first pass is known to run)."""
+    if step > 0:
+        return range(start, math.floor(limit) + 1, step)
+    return range(start, math.ceil(limit) - 1, step)
+
+
+def sign(x) -> int:
+    return 1 if x > 0 else (-1 if x < 0 else 0)
+
+
+def stepped(name: str, value, step):
+    """A FOR variable ``name`` of ``value`` after ``+ step``, in its type (``I!`` single, ``I%`` integer
+    with Overflow past 32767; an untyped casio name unchanged)."""
+    last = name[-1]
+    if last == "!":
+        return single_arith.add(value, step)
+    return to_int(value + step) if last == "%" else value + step
+
+
+class Double(float):
+    """A double-precision value on its way to PRINT or STR$ (shows 16 digits, ``D``)."""
+
+    __slots__ = ()
+
+
+def _single_digits(x: float) -> tuple[str, int]:
+    """``abs(x)`` (single precision) to 7 significant digits as GW-BASIC finds them
+    (:func:`yaseer.basic.arithmetic.mbf_digits.decimal_digits`: scaled by ten in MBF working
+    precision, rounded twice: ``1/3`` shows as ``.3333334``, 825157.625 as
+    ``825157.7``).  Returns (digit string without trailing zeros, exponent of the
+    first digit)."""
+    return mbf_digits.digit_string(x)
+
+
+def _double_digits(x: float) -> tuple[str, int]:
+    """``abs(x)`` (double precision) to at most 16 significant digits, rounded half up.
+
+    GW-BASIC's doubles carry 56 bits, yaseer's 53: a value with at most 24 bits (a
+    widened single, an integer) is exact in both and gets the digits of GW's output
+    routine (:mod:`yaseer.basic.arithmetic.mbf_digits`: ``CDBL(1.1)`` is 1.100000023841858);
+    any other is rounded half up from the shortest decimal that reads back as it
+    (what was typed, for a literal: ``-90095.2872#`` shows as typed, as on
+    GW-BASIC, not ``-90095.28720000001``).
+    """
+    x = abs(x)
+    if x < 3.4e38 and _unpack(_pack(x))[0] == x:  # exact in GW's 56 bits: GW's output routine
+        return mbf_digits.digit_string(x, mbf_digits.DOUBLE)
+    from decimal import ROUND_HALF_UP, Decimal  # here: a run printing no other double does not load decimal
+
+    exact = Decimal(repr(x))
+    e = exact.adjusted()
+    digits = exact.as_tuple().digits
+    if len(digits) > DOUBLE_DIGITS:
+        n = int(exact.scaleb(DOUBLE_DIGITS - 1 - e).to_integral_value(rounding=ROUND_HALF_UP))
+        if n >= 10 ** DOUBLE_DIGITS:
+            n //= 10
+            e += 1
+        return str(n).rstrip("0") or "0", e
+    return "".join(map(str, digits)).rstrip("0") or "0", e
+
+
+def unsigned_text(x, digits: int, marker: str) -> str:
+    """``abs(x)`` as GW-BASIC's PRINT shows a number with ``digits`` (7 or 16) significant digits.
+
+    Fixed notation unless the number needs more than ``digits`` places before the
+    point or more than ``digits + 1`` after it; E (D for doubles) notation is
+    ``1.5E+12``.  No leading zero: ``.5``.
+    """
+    if x == 0:
+        return "0"
+    d, e = _single_digits(x) if digits == SINGLE_DIGITS else _double_digits(x)
+    if e >= digits or len(d) - e > digits + 1:
+        mantissa = d[0] + ("." + d[1:] if len(d) > 1 else "")
+        return f"{mantissa}{marker}{'-' if e < 0 else '+'}{abs(e):02d}"
+    point = e + 1
+    if point >= len(d):
+        return d + "0" * (point - len(d))
+    if point > 0:
+        return d[:point] + "." + d[point:]
+    return "." + "0" * (-point) + d
+
+
+def str_dollar(x) -> str:
+    """STR$ of a typed value: sign or space, then the digits of its type."""
+    if type(x) is int:
+        return str(x) if x < 0 else " " + str(x)
+    if not math.isfinite(x):
+        raise _overflow()
+    sign_text = "-" if x < 0 else " "
+    if type(x) is Double:
+        return sign_text + unsigned_text(x, DOUBLE_DIGITS, "D")
+    return sign_text + unsigned_text(x, SINGLE_DIGITS, "E")
+
+
+def number_to_text(x) -> str:
+    """How PRINT shows a typed number: STR$ form plus a trailing space."""
+    return str_dollar(x) + " "
+
+
+# The names the typed compiled code calls (merged into the machine's namespace over
+# the plain ones; see number_models.TypedNumbers for which code uses which).
+RUNTIME = {
+    "_ia": int_result, "_ci": to_int, "_dbl": Double, "_irange": int_range,
+    "_idiv": int_divide, "_mod": int_modulo, "_and": logical_and, "_or": logical_or,
+    "_xor": logical_xor, "_eqv": logical_eqv, "_imp": logical_imp, "_not": logical_not,
+    "_sgn": sign, "_len": len, "_strs": str_dollar,
+    "_cint": to_int, "_csng": single_arith.from_double, "_cdbl": float,
+    "_sadd": single_arith.add, "_ssub": single_arith.subtract, "_sp": single_arith.product,
+    "_sfd": single_arith.from_double, "_sfn": single_arith.function_result,
+}

@@ -1,0 +1,659 @@
+"""AST -> Python: one program area becomes a set of Python functions, one per block.
+
+A *block* is a run of statements that is entered only at its top: it starts at
+a line some jump names (GOTO, GOSUB, THEN n, ON ... GOTO, RESUME n), at the
+statement after a GOSUB or STOP (the return point), at the body of a FOR loop
+that must be run through the FOR stack, or - in a program that uses RESUME or
+RESUME NEXT - at every statement.  Each block is generated as Python source:
+
+* scalars live in Python locals for the block's duration (loaded from the
+  machine's scalar dict on entry, stored back in a ``finally``, and around every
+  call out of the block: ``GOSUB PROG n``, ``FN``, ``CLEAR``);
+* a FOR ... NEXT with no jump into or out of its body becomes a native
+  ``while`` loop; a block that jumps back to its own start becomes
+  ``while True`` with ``continue``;
+* a block returns the number of the next block to run; the machine's run loop
+  is ``while True: b = blocks[b]()``.
+
+The variable ``_ln`` tracks the BASIC line for error messages.
+
+With ``trace`` (TRON), the first statement of every line is preceded by
+``_tr(n)``, which prints ``[n]``: a line is traced when execution reaches its
+start (falling in from the line before, or by a jump), not when a NEXT or
+RETURN comes back into its middle, as GW-BASIC traces.  The traced variant has
+the same blocks as the plain one, so the machine can swap one for the other
+while a program runs; the plain variant carries no cost for tracing.
+"""
+
+from __future__ import annotations
+
+from yaseer.basic.source import syntax_tree as ast
+from yaseer.basic.compile.blocks import data_statements, flatten, plan, splits, walk_statements
+from yaseer.basic.compile.expressions import (
+    BlockScope, CompileError, ExpressionCompiler, FnScope, may_overflow, syntax_error, type_mismatch,
+)
+from yaseer.basic.compile.statements_io import InputOutputCompiler
+from yaseer.basic.compile.loops import LoopCompiler
+from yaseer.basic.dialects.dialect import CASIO
+from yaseer.basic.compile.number_models import array_local, local_name, number_model
+from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  (re-exported)
+from yaseer.basic.errors import BasicError, OUT_OF_MEMORY, UNDEFINED_LINE, WEND_WITHOUT_WHILE, WHILE_WITHOUT_WEND
+
+
+class _Block:
+    def __init__(self, number: int):
+        self.number = number
+        self.code: list[tuple[int, str]] = []
+        self.scalars: dict[str, bool] = {}  # name -> assigned in this block
+        self.arrays: dict[str, int] = {}  # name -> number of dimensions
+        self.first_line = None
+
+
+# What generated code calls that changes the GOSUB/FOR stack and goes on in the same block.
+_STACK_CHANGES = ("_pop(", "_next_any(", "_clear(", "_call(", "_M.", "_gosub(", "_stk.")
+
+
+def _too_deep(code: list) -> bool:
+    """Would these generated lines pass Python's nesting limits (indents, parentheses)?"""
+    for indent, text in code:
+        if indent > 80:
+            return True
+        depth = 0
+        for ch in text:
+            if ch == "(":
+                depth += 1
+                if depth > 150:
+                    return True
+            elif ch == ")":
+                depth -= 1
+    return False
+
+
+class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
+    """Compiles the lines of one program area (see the module docstring).
+
+    The area walk, the blocks and the statements of control flow are here; expressions
+    (:mod:`~yaseer.basic.compile.expressions`), the statements that move data in and
+    out (:mod:`~yaseer.basic.compile.statements_io`) and FOR/NEXT loops
+    (:mod:`~yaseer.basic.compile.loops`) are compiled by the mixins."""
+
+    def __init__(self, lines: list, area: int = 0, direct: bool = False, entry_lines=(), trace: bool = False,
+                 dynamic_loops=(), dialect=CASIO, def_types=None):
+        self.area = area
+        self.numbers = number_model(dialect, def_types)
+        self.direct = direct
+        self.trace = trace and not direct
+        self.dynamic_loops = set(dynamic_loops)
+        self.flat = flatten(lines)
+        self.plan = plan(self.flat, entry_lines, self.dynamic_loops)
+        self.line_first = {}
+        for i, (number, _) in enumerate(self.flat):
+            self.line_first.setdefault(number, i)
+        self.entry_block = {idx: b for b, idx in enumerate(self.plan.entries)}
+        self.blocks: list[_Block] = [_Block(b) for b in range(len(self.plan.entries))]
+        self.block_next: dict[int, int] = {}
+        self.while_block: dict[int, int] = {}  # id(WHILE in an IF branch) -> its block
+        self.branch_after: dict[int, _Block] = {}  # id(WEND or NEXT in an IF branch) -> the block after it
+        self.prelude: list[str] = []
+        self.scalars: set[str] = set()
+        self.cur: _Block | None = None
+        self.indent = 0
+        self.depth = 0  # IF nesting
+        self.index = 0  # current top-level statement
+        self.line = None
+        self.temp = 0
+        self.fn_count = 0
+        self.data: list = []
+        self.data_lines: dict = {}
+        self.scope = BlockScope(self)
+        self.counting_vars: set[str] = set()  # native loop variables that stay >= 0
+        self.idle_body = False  # the native loop being compiled has an empty body
+        self.whole_index: dict[str, str] = {}  # constant loop variable -> local of its subscript
+        self.open_loops: list[tuple] = []  # the native loops around the code being emitted
+        self.break_infos: list[tuple] = []  # #BREAK#k markers: (BASIC line, open loops)
+        self.break_points: dict[int, dict] = {}  # block -> {Python line: (BASIC line, open loops)}
+        self.fn_params: dict[str, list] = {}  # DEF FN name -> parameter names
+        # under OPTION BASE 1 a constant subscript 0 must go through the check
+        self.lowest_fast_subscript = 1 if self.plan.option_base else 0
+
+    # -- emission primitives
+    def emit(self, text: str) -> None:
+        self.cur.code.append((self.indent, text))
+
+    def new_temp(self) -> str:
+        self.temp += 1
+        return f"_t{self.temp}"
+
+    def new_block(self) -> _Block:
+        block = _Block(len(self.blocks))
+        self.blocks.append(block)
+        return block
+
+    def block_of_line(self, line: int) -> int | None:
+        index = self.line_first.get(line)
+        return None if index is None else self.entry_block[index]
+
+    def jump(self, line: int) -> str:
+        block = self.block_of_line(line)
+        if block is None:
+            if self.direct:
+                return f"raise _DirectJump({line})"
+            return f"raise _err('Undefined line number {line}', {UNDEFINED_LINE})"
+        return f"return {block}"
+
+    # -- statements
+    def statement(self, stmt) -> None:
+        """Emit one statement; a compile error becomes a run-time raise of its line."""
+        if isinstance(stmt, BasicError):
+            self.emit(f"raise _err({stmt.message!r}, {stmt.code})")
+            return
+        mark = len(self.cur.code)
+        block = self.cur
+        scope = BlockScope(self)
+        try:
+            getattr(self, "stmt_" + type(stmt).__name__)(stmt, scope)
+        except (CompileError, RecursionError) as exc:
+            err = exc if isinstance(exc, CompileError) else CompileError("Out of memory", OUT_OF_MEMORY)
+            if self.cur is block:
+                del block.code[mark:]
+            self.emit(f"raise _err({err.message!r}, {err.code})")
+            return
+        if self.cur is block and _too_deep(block.code[mark:]):
+            del block.code[mark:]  # Python could not compile it: the statement's own error
+            self.emit(f"raise _err('Out of memory', {OUT_OF_MEMORY})")
+            return
+        if scope.uses_fn:
+            block.code.insert(mark, (self.indent, "#FLUSH#"))
+
+    def assign(self, target, value_code: str, value_kind: str, scope, check: bool) -> None:
+        """Store ``value_code`` in a variable or element; ``check`` adds the Overflow test.
+
+        A number is converted to the target's numeric type (GW-BASIC's types)."""
+        target_kind = self.kind_of(target)
+        if (target_kind == "s") != (value_kind == "s"):
+            raise type_mismatch()
+        if value_kind != "s":
+            value_code = self.numbers.convert(value_code, value_kind, target_kind)
+        if isinstance(target, ast.Var):
+            name = scope.scalar(target.name, write=True)
+            if check:  # checked before the store: a trapped Overflow leaves the variable as it was
+                self.emit(f"_t = {value_code}")
+                self.emit(f"if _t - _t: _t = _ovf(_t, {target_kind!r})")
+                value_code = "_t"
+            self.emit(f"{name} = {value_code}")
+            return
+        element = self.element(target, scope)
+        if check:
+            self.emit(f"_t = {value_code}")
+            self.emit(f"if _t - _t: _t = _ovf(_t, {target_kind!r})")
+            value_code = "_t"
+        self.emit(f"{element} = {value_code}")
+
+    def stmt_Let(self, stmt, scope):
+        code, kind = self.expr(stmt.value, scope)
+        check = kind != "s" and may_overflow(stmt.value, self.numbers.typed) and self.kind_of(stmt.target) != "%"
+        self.assign(stmt.target, code, kind, scope, check)
+
+    def stmt_Rem(self, stmt, scope):
+        pass
+
+    def stmt_Data(self, stmt, scope):
+        pass
+
+    def stmt_Goto(self, stmt, scope):
+        self.emit(self.jump(stmt.target))
+
+    def continuation(self) -> int:
+        """The block where code after the current statement goes (a return point)."""
+        if self.depth == 0:
+            block = self.entry_block[self.index + 1]
+            self.cur = None
+            return block
+        block = self.new_block()
+        self.cur = block
+        self.indent = 1
+        self.emit(f"_ln = {self.line}")
+        return block.number
+
+    def stmt_Gosub(self, stmt, scope):
+        if stmt.target in self.plan.bare_returns:
+            # a subroutine that is a plain RETURN: push and pop in place (a full stack
+            # is still Out of memory at the GOSUB; TRON still shows the RETURN's line)
+            self.emit("#FULL#")  # the full-stack check (see block_source)
+            if self.trace:
+                self.emit(f"_tr({stmt.target})")
+            return
+        target = self.jump(stmt.target)
+        block, indent = self.cur, self.indent
+        ret = self.continuation()
+        block.code.append((indent, f"if len(_stk) >= {MAX_STACK}: _oom()"))
+        block.code.append((indent, f"_stk.append({ret})"))
+        block.code.append((indent, target))
+
+    def stmt_GosubProg(self, stmt, scope):
+        self.emit("#FLUSH#")
+        self.emit(f"_call({stmt.area}, _ln)")
+        self.emit("#RELOAD#")
+
+    def stmt_Return(self, stmt, scope):
+        # the common case inline: a GOSUB's return block on top of the stack
+        self.emit("if _stk and type(_stk[-1]) is int: return _stk.pop()")
+        self.emit("return _return()")
+
+    def stmt_OnJump(self, stmt, scope):
+        selector = self.numeric(stmt.selector, scope)
+        k = self.new_temp()
+        self.emit(f"{k} = _on({selector}, {len(stmt.targets)})")
+        jumps = [self.jump(t) for t in stmt.targets]
+        if not stmt.gosub:
+            for n, jump in enumerate(jumps, 1):
+                self.emit(f"if {k} == {n}: {jump}")
+            return
+        block, indent = self.cur, self.indent
+        self.emit(f"if {k}:")
+        ret = self.continuation()
+        block.code.append((indent + 1, f"_gosub({ret})"))
+        for n, jump in enumerate(jumps, 1):
+            block.code.append((indent + 1, f"if {k} == {n}: {jump}"))
+        block.code.append((indent, f"return {ret}"))
+
+    def stmt_OnError(self, stmt, scope):
+        if stmt.target == 0:
+            self.emit("_error_off()")
+            return
+        block = self.block_of_line(stmt.target)
+        if block is None:
+            self.emit(self.jump(stmt.target))
+            return
+        self.emit(f"_M.on_error = ({self.area}, {block})")
+
+    def stmt_End(self, stmt, scope):
+        self.emit("raise _END")
+
+    def stmt_Stop(self, stmt, scope):
+        block, indent = self.cur, self.indent
+        ret = self.continuation()
+        block.code.append((indent, f"_stop({ret})"))
+
+    def stmt_Trace(self, stmt, scope):
+        """TRON / TROFF: the machine swaps in the other variant; the next block is its."""
+        block, indent = self.cur, self.indent
+        ret = self.continuation()
+        block.code.append((indent, f"_M.set_trace({stmt.on})"))
+        block.code.append((indent, f"return {ret}"))
+
+    def stmt_Cls(self, stmt, scope):
+        self.emit("_M.clear_screen()")
+
+    def stmt_Width(self, stmt, scope):
+        if stmt.device is not None:
+            if self.kind_of(stmt.device) != "s":
+                raise syntax_error()  # WIDTH n, rows: the screen rows are not emulated
+            device = self.string(stmt.device, scope)
+            self.emit(f"_M.set_device_width({device}, {self.numeric(stmt.columns, scope)})")
+            return
+        if self.kind_of(stmt.columns) == "s":
+            raise syntax_error()  # WIDTH "LPT1:" without its width
+        self.emit(f"_M.set_width({self.numeric(stmt.columns, scope)}, {stmt.printer})")
+
+    def stmt_Dim(self, stmt, scope):
+        for name, sizes in stmt.arrays:
+            name = self.numbers.name(name)
+            codes = ", ".join(self.numeric(s, scope) for s in sizes)
+            self.emit(f"_dim({name!r}, ({codes},))")
+            self.emit(f"#ARRAY#{name}")
+
+    def stmt_Clear(self, stmt, scope):
+        if stmt.args:
+            sizes = ", ".join("None" if a is None else self.numeric(a, scope) for a in stmt.args)
+            self.emit(f"_clear_args({sizes})")
+        self.emit("_clear()")
+        self.emit("#RELOAD#")
+
+    # -- GW-BASIC's statements
+    def stmt_While(self, stmt, scope):
+        found = self.plan.while_wend.get(id(stmt))
+        if found is None:
+            raise CompileError("WHILE without WEND", WHILE_WITHOUT_WEND)
+        if self.depth:  # inside an IF branch: a block starts here, for WEND to come back to
+            block, indent = self.cur, self.indent
+            self.while_block[id(stmt)] = start = self.continuation()
+            block.code.append((indent, f"return {start}"))
+        self.emit(f"if not ({self.condition(stmt.condition, scope)}): return {self.after(*found).number}")
+
+    def after(self, index: int, node) -> _Block:
+        """The block where execution goes on after ``node`` (a WEND, or a NEXT a FOR that
+        runs zero times goes on after) in statement ``index``: inside an IF branch, a
+        block of its own that the rest of the branch is compiled into."""
+        if node is self.flat[index][1]:
+            return self.blocks[self.entry_block[index + 1]]
+        block = self.branch_after.get(id(node))
+        if block is None:
+            block = self.branch_after[id(node)] = self.new_block()
+        return block
+
+    def continue_after(self, node, fall_through: bool) -> None:
+        """Inside an IF branch: compile the rest of the branch into the block after
+        ``node`` (see :meth:`after`), which the code so far enters if ``fall_through``."""
+        block = self.after(self.index, node)
+        if fall_through:
+            self.emit(f"return {block.number}")
+        self.cur, self.indent = block, 1
+        self.emit(f"_ln = {self.line}")
+
+    def stmt_Wend(self, stmt, scope):
+        found = self.plan.wend_while.get(id(stmt))
+        start = None
+        if found is not None:
+            index, loop = found
+            start = self.entry_block[index] if loop is self.flat[index][1] else self.while_block.get(id(loop))
+        if start is None:
+            raise CompileError("WEND without WHILE", WEND_WITHOUT_WHILE)
+        self.emit(f"return {start}")
+        if self.depth:  # the rest of the IF branch goes on in the block after the WEND
+            self.continue_after(stmt, fall_through=False)
+
+    def stmt_Swap(self, stmt, scope):
+        first, kind = self.expr(stmt.first, scope)
+        second, other = self.expr(stmt.second, scope)
+        if kind != other:
+            raise type_mismatch()
+        t = self.new_temp()
+        self.emit(f"{t} = {first}")
+        self.assign(stmt.first, second, kind, scope, False)
+        self.assign(stmt.second, t, kind, scope, False)
+
+    def stmt_MidAssign(self, stmt, scope):
+        target = self.string(stmt.target, scope)
+        count = "None" if stmt.count is None else self.numeric(stmt.count, scope)
+        code = f"_midset({target}, {self.numeric(stmt.start, scope)}, {count}, {self.string(stmt.value, scope)})"
+        self.assign(stmt.target, code, "s", scope, False)
+
+    def stmt_Erase(self, stmt, scope):
+        for name in stmt.names:
+            self.emit(f"_erase({self.numbers.name(name)!r})")
+
+    def stmt_OptionBase(self, stmt, scope):
+        self.emit(f"_option_base({stmt.base})")
+
+    # -- RETURN n, DEF FN, errors, RANDOMIZE, IF
+    def stmt_ReturnTo(self, stmt, scope):
+        jump = self.jump(stmt.target)
+        self.emit("_return()")
+        self.emit(jump)
+
+    def stmt_DefFn(self, stmt, scope):
+        fn_scope = FnScope(self, stmt.params)
+        body, kind = self.expr(stmt.body, fn_scope)
+        fn_kind = self.numbers.kind(stmt.name)
+        if (kind == "s") != (fn_kind == "s"):
+            raise type_mismatch()
+        if kind != "s":
+            body = self.numbers.convert(body, kind, fn_kind)
+        self.fn_count += 1
+        fname = f"_fn_{self.fn_count}"
+        params = ", ".join("p" + local_name(self.numbers.name(p)) for p in stmt.params)
+        self.prelude.append(f"def {fname}({params}):\n    return {body}\n")
+        self.emit(f"_M.fns[{self.numbers.name(stmt.name)!r}] = ({fname}, {len(stmt.params)})")
+
+    def stmt_DefType(self, stmt, scope):
+        pass  # applied to the whole program before compiling (number_models.TypedNumbers)
+
+    def stmt_Resume(self, stmt, scope):
+        if stmt.mode == "line":
+            block = self.block_of_line(stmt.target)
+            if block is None:
+                self.emit(self.jump(stmt.target))
+                return
+            self.emit(f"return _resume_at({block})")
+        else:
+            self.emit(f"return _resume({stmt.mode == 'next'})")
+
+    def stmt_Error(self, stmt, scope):
+        self.emit(f"_error({self.numeric(stmt.code, scope)})")
+
+    def stmt_Randomize(self, stmt, scope):
+        seed = "None" if stmt.seed is None else self.numeric(stmt.seed, scope)
+        self.emit(f"_randomize({seed}, {self.seed_kind(stmt.seed)!r})")
+
+    def seed_kind(self, node) -> str:
+        """The BASIC type RANDOMIZE sees its argument stored as (randomness.py): a
+        variable's own type (``%`` ``!`` ``#``, DEF types included); an unsigned integer
+        literal up to 32767 is ``%``, a double literal ``#``; any other expression ``!``
+        (PC-BASIC 2.0.8 reads ``-1`` and ``0-1`` as singles here)."""
+        if isinstance(node, ast.Num):
+            if node.kind:  # gw: the literal's own type
+                return node.kind
+            return "%" if node.value == int(node.value) and 0 <= node.value <= 32767 else "!"
+        if isinstance(node, (ast.Var, ast.Elem)):
+            kind = self.kind_of(node)
+            return kind if kind in ("%", "#") else "!"
+        return "!"
+
+    def stmt_Angle(self, stmt, scope):
+        self.emit(f"_M.set_angle({stmt.mode!r})")
+
+    def stmt_If(self, stmt, scope):
+        cond = self.condition(stmt.condition, scope)
+        branches = [b for b in (stmt.then, stmt.otherwise) if isinstance(b, list)]
+        split = any(splits(s, self.plan.bare_returns) or isinstance(s, (ast.While, ast.Wend)) or self.zero_trip_target(s)
+                    for b in branches for s in b)
+        if not split:
+            self.emit(f"if {cond}:")
+            self.branch(stmt.then)
+            if stmt.otherwise is not None:
+                self.emit("else:")
+                self.branch(stmt.otherwise)
+            return
+        if self.depth == 0:
+            after = self.entry_block[self.index + 1]
+            after_block = None
+        else:
+            after_block = self.new_block()
+            after = after_block.number
+        start, indent = self.cur, self.indent
+        self.emit(f"if {cond}:")
+        self.branch(stmt.then, after)
+        self.cur, self.indent = start, indent
+        self.emit("else:")
+        if stmt.otherwise is not None:
+            self.branch(stmt.otherwise, after)
+        else:
+            self.indent += 1
+            self.emit(f"return {after}")
+            self.indent -= 1
+        self.cur, self.indent = after_block, 1
+        if after_block is not None:
+            self.emit(f"_ln = {self.line}")
+
+    def branch(self, branch, after: int | None = None) -> None:
+        """The statements of a THEN or ELSE, one indent deeper."""
+        self.indent += 1
+        self.depth += 1
+        if isinstance(branch, int):
+            self.emit(self.jump(branch))
+        else:
+            self.emit("pass")
+            for stmt in branch:
+                self.statement(stmt)
+        if after is not None:
+            self.block_next.setdefault(self.cur.number, after)
+            self.emit(f"return {after}")
+        self.depth -= 1
+        self.indent -= 1
+
+    # -- the program walk
+    def set_line(self, number) -> None:
+        if self.cur.first_line is None:
+            self.cur.first_line = number
+        self.emit(f"_ln = {number}")
+        self.line = number
+
+    def walk(self, start: int, stop: int) -> None:
+        """Emit top-level statements ``start``..``stop-1``."""
+        i = start
+        while i < stop:
+            number, stmt = self.flat[i]
+            self.index = i
+            if i in self.entry_block:
+                if self.cur is not None:
+                    self.emit(f"return {self.entry_block[i]}")
+                self.cur = self.blocks[self.entry_block[i]]
+                self.indent = 1
+                self.line = None
+                if self.plan.fine:
+                    self.block_next[self.cur.number] = self.entry_block.get(
+                        min(e for e in self.plan.entries if e > i))
+            if number != self.line:
+                self.set_line(number)
+            self.trace_line(i)
+            if i in self.plan.native:
+                i = self.native_loop(i)
+                continue
+            self.statement(stmt)
+            i += 1
+
+    def trace_line(self, i: int) -> None:
+        """TRON: print ``[n]`` where statement ``i`` starts its line ``n``."""
+        number = self.flat[i][0]
+        if self.trace and self.line_first[number] == i:
+            self.emit(f"_tr({number})")
+
+    # -- the whole area
+    def compile(self) -> CompiledArea:
+        """Generate every block of the area (DEF types, DATA and DEF FN collected first)."""
+        self.numbers.set_types(s for _, stmt in self.flat if not isinstance(stmt, BasicError)
+                               for s in walk_statements(stmt) if isinstance(s, ast.DefType))
+        for i, (number, stmt) in enumerate(self.flat):
+            for s in ([] if isinstance(stmt, BasicError) else data_statements(stmt)):
+                self.data_lines.setdefault(number, len(self.data))
+                self.data.extend((item, number) for item in split_data(s.text))
+        for _, stmt in self.flat:
+            for s in ([] if isinstance(stmt, BasicError) else walk_statements(stmt)):
+                if isinstance(s, ast.DefFn):
+                    self.fn_params.setdefault(self.numbers.name(s.name), s.params)
+        self.walk(0, len(self.flat))
+        end = self.entry_block[len(self.flat)]
+        if self.cur is not None:
+            self.emit(f"return {end}")
+        self.cur = self.blocks[end]
+        self.indent = 1
+        self.set_line(self.flat[-1][0] if self.flat else 0)
+        self.emit("raise _END")
+        pieces = [(None, text) for text in self.prelude]
+        pieces += [(b.first_line, self.block_source(b)) for b in self.blocks]
+        source = "\n".join(text for _, text in pieces)
+        line_blocks = {number: self.entry_block[i] for number, i in self.line_first.items()
+                       if i in self.entry_block}
+        return CompiledArea(
+            source=source, pieces=pieces, block_count=len(self.blocks), line_blocks=line_blocks,
+            block_next=self.block_next, data=self.data, data_lines=self.data_lines,
+            scalars=set(self.scalars), first_line=self.flat[0][0] if self.flat else None,
+            index_blocks=dict(self.entry_block), break_points=self.break_points,
+            dynamic_loops=tuple(sorted(self.dynamic_loops)), def_types=self.numbers.def_types(),
+        )
+
+    def block_source(self, block: _Block) -> str:
+        """The Python text of one block function.
+
+        Its break points (see :class:`CompiledArea`) go to ``self.break_points``:
+        the ``continue`` lines of a block that loops back to its own start, and the
+        line marked ``#BREAK#k`` at the top of each native loop's pass.
+        """
+        points: dict[int, tuple] = {}
+        pending = None  # a #BREAK# marker waiting for the line it marks
+        names = sorted(block.scalars)
+        written = [n for n in names if block.scalars[n]]
+        load = "; ".join(f"{local_name(n)} = _S[{n!r}]" for n in names)
+        load_arrays = "; ".join(f"{array_local(a)} = _A.get({a!r}) or _arr({a!r}, {d})"
+                                for a, d in sorted(block.arrays.items()))
+        store = "; ".join(f"_S[{n!r}] = {local_name(n)}" for n in written)
+        loop_back = f"return {block.number}"
+        self_loop = any(text == loop_back or text.endswith(": " + loop_back) for _, text in block.code)
+        # A GOSUB compiled in place checks for a full stack.  Every push onto the stack
+        # ends its block, so unless the block pops (a NEXT through the stack), clears
+        # or calls out, the stack's length cannot change while the block runs: it is
+        # measured once, as the block starts.
+        full_check = f"if len(_stk) >= {MAX_STACK}: _oom()"
+        if any(text == "#FULL#" for _, text in block.code) and not any(
+                name in text for _, text in block.code for name in _STACK_CHANGES):
+            full_check = "if _full: _oom()"
+        base = 2 if self_loop else 1
+        out = [f"def _b{block.number}():"]
+        for text in (load, load_arrays):
+            if text:
+                out.append("    " + text)
+        out.append("    _ln = None")
+        if full_check == "if _full: _oom()":
+            out.append(f"    _full = len(_stk) >= {MAX_STACK}")
+        out.append("    try:")
+        if self_loop:
+            out.append("        while True:")
+        for indent, text in block.code:
+            pad = "    " * (indent + base)
+            if text == "#FLUSH#":
+                if store:
+                    out.append(pad + store)
+                continue
+            if text == "#RELOAD#":
+                for part in (load, load_arrays):
+                    if part:
+                        out.append(pad + part)
+                continue
+            if text.startswith("#ARRAY#"):
+                name = text[7:]
+                if name in block.arrays:
+                    out.append(pad + f"{array_local(name)} = _A[{name!r}]")  # just dimensioned
+                continue
+            if text == "#FULL#":
+                text = full_check
+            if text.startswith("#BREAK#"):
+                pending = self.break_infos[int(text[7:])]
+                continue
+            if self_loop and (text == loop_back or text.endswith(": " + loop_back)):
+                if text != loop_back:  # "if c: return b": the continue on a line of its own
+                    out.append(pad + text[: -len(loop_back) - 1])
+                    pad += "    "
+                points[len(out) + 1] = (block.first_line, ())  # (lines count from 1: def is 1)
+                text = "continue"
+            if pending is not None:
+                points[len(out) + 1], pending = pending, None
+            out.append(pad + text)
+        if not block.code:
+            out.append("    " * (1 + base) + "pass")
+        out.append("    finally:")
+        if store:
+            out.append("        " + store)
+        out.append("        _M.line = _ln")
+        if points:
+            self.break_points[block.number] = points
+        return "\n".join(out) + "\n"
+
+
+def split_data(text: str) -> list[str]:
+    """The items of a DATA statement's text: commas outside quotes separate them."""
+    items, current, quoted = [], [], False
+    for ch in text:
+        if ch == '"':
+            quoted = not quoted
+            current.append(ch)
+        elif ch == "," and not quoted:
+            items.append("".join(current).strip())
+            current = []
+        else:
+            current.append(ch)
+    items.append("".join(current).strip())
+    return items
+
+
+def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=(),
+                 trace: bool = False, dynamic_loops=(), dialect=CASIO, def_types=None) -> CompiledArea:
+    """Compile an area's parsed lines (``syntax_tree.Line`` in line order) for ``dialect``.
+
+    ``entry_lines`` are lines that must start a block although no jump names
+    them (RUN n, or a GOTO typed in direct mode); ``trace`` compiles the TRON
+    variant (see the module docstring); ``dynamic_loops`` are the statement
+    indices of FOR loops to run through the FOR stack even where they could be
+    native (CONT resumes a native loop broken by Ctrl-C that way).
+    """
+    return AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect, def_types).compile()

@@ -1,0 +1,323 @@
+"""Expressions -> Python: the half of the area compiler that turns expression nodes into
+Python source (``AreaCompiler`` in compiler.py mixes it in).
+
+Every expression compiles to ``(Python source, kind)``: kind ``"s"`` for a string,
+else the numeric type the number model (number_models.py) gives it.  Here too are the
+tables of built-in functions and system variables, the scopes that name variables
+(Python locals in a block, globals and parameters in a DEF FN body), and the
+predicates on expression nodes that let the statements skip checks (a constant, a
+relation, an expression that cannot overflow).
+"""
+
+from __future__ import annotations
+
+import math
+
+from yaseer.basic.source import syntax_tree as ast
+from yaseer.basic.compile.number_models import NUMERIC, RANGE_CHECKED, array_local, local_name
+from yaseer.basic.errors import BasicError, SYNTAX_ERROR, TYPE_MISMATCH
+from yaseer.basic.arithmetic.single_arith import SMALL_CONSTANT
+
+
+_PY_RELATIONS = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
+
+# name -> (argument kinds of each accepted form, result type, Python callable in the
+# namespace); a kind is "n" number, "s" string, "x" either (FRE).
+_FUNCTIONS = {
+    "SIN": (("n",), "n", "_sin"), "COS": (("n",), "n", "_cos"), "TAN": (("n",), "n", "_tan"),
+    "ATN": (("n",), "n", "_atn"), "SQR": (("n",), "n", "_sqrt"), "ABS": (("n",), "n", "abs"),
+    "INT": (("n",), "n", "_floor"), "FIX": (("n",), "n", "_fix"), "SGN": (("n",), "n", "_sgn"),
+    "EXP": (("n",), "n", "_exp"), "LOG": (("n",), "n", "_log"), "RND": (("", "n"), "n", "_rnd"),
+    "LEN": (("s",), "n", "_len"), "STR$": (("n",), "s", "_strs"), "VAL": (("s",), "n", "_val"),
+    "CHR$": (("n",), "s", "_chr"), "ASC": (("s",), "n", "_asc"),
+    "CINT": (("n",), "n", "_cint"), "CSNG": (("n",), "n", "_csng"), "CDBL": (("n",), "n", "_cdbl"),
+    "LEFT$": (("sn",), "s", "_left"), "RIGHT$": (("sn",), "s", "_right"),
+    "MID$": (("sn", "snn"), "s", "_mid"),
+    # GW-BASIC's own functions
+    "INSTR": (("ss", "nss"), "n", "_instr"), "STRING$": (("nn", "ns"), "s", "_string"),
+    "SPACE$": (("n",), "s", "_space"), "HEX$": (("n",), "s", "_hex"), "OCT$": (("n",), "s", "_oct"),
+    "MKI$": (("n",), "s", "_mki"), "MKS$": (("n",), "s", "_mks"), "MKD$": (("n",), "s", "_mkd"),
+    "CVI": (("s",), "n", "_cvi"), "CVS": (("s",), "n", "_cvs"), "CVD": (("s",), "n", "_cvd"),
+    "FRE": (("x",), "n", "_fre"), "POS": (("n",), "n", "_pos"), "LPOS": (("n",), "n", "_lpos"),
+    "EOF": (("n",), "n", "_eof"), "LOF": (("n",), "n", "_lof"), "LOC": (("n",), "n", "_loc"),
+    "INPUT$": (("n", "nn"), "s", "_input_chars"),
+}
+
+# Values without arguments: name -> (Python expression, "s" or None for the integer type).
+_SYSTEM_VARIABLES = {
+    "ERR": ("_M.err", None), "ERL": ("_M.erl", None), "TIMER": ("_timer()", "n"),
+    "DATE$": ("_date()", "s"), "TIME$": ("_time()", "s"),
+}
+
+
+def _call_form(forms: tuple, kinds: list) -> str:
+    """The form of a function that takes arguments of ``kinds`` ("s"/"n"): wrong count
+    Syntax error, wrong types Type mismatch."""
+    same_length = [form for form in forms if len(form) == len(kinds)]
+    if not same_length:
+        raise syntax_error()
+    for form in same_length:
+        if all(want in ("x", kind) for want, kind in zip(form, kinds)):
+            return form
+    raise type_mismatch()
+
+
+class CompileError(BasicError):
+    """A statement that cannot be compiled; it becomes a run-time error of its line."""
+
+
+def syntax_error() -> CompileError:
+    return CompileError("Syntax error", SYNTAX_ERROR)
+
+
+def type_mismatch() -> CompileError:
+    return CompileError("Type mismatch", TYPE_MISMATCH)
+
+
+class BlockScope:
+    """Variable references inside a block: Python locals."""
+
+    def __init__(self, compiler: "ExpressionCompiler"):
+        self.compiler = compiler
+        self.uses_fn = False
+
+    def scalar(self, name: str, write: bool = False) -> str:
+        block = self.compiler.cur
+        name = self.compiler.numbers.name(name)
+        self.compiler.scalars.add(name)
+        block.scalars[name] = block.scalars.get(name, False) or write
+        return local_name(name)
+
+    def array(self, name: str, ndim: int) -> str:
+        block = self.compiler.cur
+        name = self.compiler.numbers.name(name)
+        block.arrays.setdefault(name, ndim)
+        return array_local(name)
+
+
+class FnScope:
+    """Variable references inside a DEF FN body: parameters are locals, the rest global."""
+
+    def __init__(self, compiler: "ExpressionCompiler", params: list):
+        self.compiler = compiler
+        self.params = {compiler.numbers.name(p) for p in params}
+        self.uses_fn = False
+
+    def scalar(self, name: str, write: bool = False) -> str:
+        name = self.compiler.numbers.name(name)
+        if name in self.params:
+            return "p" + local_name(name)
+        self.compiler.scalars.add(name)
+        return f"_S[{name!r}]"
+
+    def array(self, name: str, ndim: int) -> str:
+        return f"_arr({self.compiler.numbers.name(name)!r}, {ndim})"
+
+
+def _is_relation(node) -> bool:
+    if isinstance(node, ast.Binary):
+        if node.op in _PY_RELATIONS:
+            return True
+        if node.op in ("AND", "OR"):
+            return _is_relation(node.left) and _is_relation(node.right)
+    if isinstance(node, ast.Unary) and node.op == "NOT":
+        return _is_relation(node.operand)
+    return False
+
+
+def _is_constant(node) -> bool:
+    return isinstance(node, ast.Num) or (isinstance(node, ast.Unary) and _is_constant(node.operand))
+
+
+_BOUNDED = frozenset({"RND", "SIN", "COS", "SGN"})  # results in [-1, 1]
+
+
+def _is_small(node, single: bool = False) -> bool:
+    """A constant, or a function whose result is at most 1 in size (RND, SIN, COS, SGN):
+    added to a finite double it cannot give an infinity.  (``single``: the typed
+    model, whose range ends at 1.7E+38: a constant below SMALL_CONSTANT, less than half
+    a unit of the largest single, cannot carry a sum beyond it.)"""
+    if isinstance(node, ast.Call):
+        return node.name in _BOUNDED
+    if single:
+        value = constant_value(node)
+        return value is not None and abs(value) < SMALL_CONSTANT
+    return _is_constant(node)
+
+
+def constant_value(node) -> float | None:
+    """The value of a number literal, or of one with signs before it (``-1.5``); else None."""
+    if isinstance(node, ast.Num):
+        return float(node.value)
+    if isinstance(node, ast.Unary) and node.op in "+-":
+        value = constant_value(node.operand)
+        return None if value is None else (-value if node.op == "-" else value)
+    return None
+
+
+def may_overflow(node, single: bool = False) -> bool:
+    """Could this numeric expression produce inf from finite values?  (``single``: the
+    typed model, where adding a constant may leave the single range too.)"""
+    if isinstance(node, ast.Binary):
+        if node.op in ("*", "/"):
+            return True
+        if node.op in ("+", "-") and not (_is_small(node.left, single) or _is_small(node.right, single)):
+            return True
+        return may_overflow(node.left, single) or may_overflow(node.right, single)
+    if isinstance(node, ast.Unary):
+        return may_overflow(node.operand, single)
+    if isinstance(node, ast.Call):
+        return any(may_overflow(a, single) for a in node.args)
+    return isinstance(node, ast.FnCall)
+
+
+def _simple_operand(code: str) -> bool:
+    return code.replace("_", "a").replace("[", "").replace("]", "").isalnum()
+
+
+class ExpressionCompiler:
+    """The expression methods of ``AreaCompiler`` (they use its ``numbers``, ``plan``,
+    ``fn_params`` and the native-loop facts ``whole_index`` and ``counting_vars``)."""
+
+    def expr(self, node, scope) -> tuple[str, str]:
+        """(Python source, "n" or "s") for an expression node."""
+        method = getattr(self, "expr_" + type(node).__name__)
+        return method(node, scope)
+
+    def numeric(self, node, scope) -> str:
+        return self.typed(node, scope)[0]
+
+    def typed(self, node, scope) -> tuple[str, str]:
+        """(code, numeric type) of a numeric expression; a string is Type mismatch."""
+        code, kind = self.expr(node, scope)
+        if kind not in NUMERIC:
+            raise type_mismatch()
+        return code, kind
+
+    def kind_of(self, node) -> str:
+        """The type of a variable, array element or FN reference (``"s"`` or numeric)."""
+        if isinstance(node, (ast.Var, ast.Elem, ast.FnCall)):
+            return self.numbers.kind(node.name)
+        return ast.expr_type(node)
+
+    def string(self, node, scope) -> str:
+        code, kind = self.expr(node, scope)
+        if kind != "s":
+            raise type_mismatch()
+        return code
+
+    def expr_Num(self, node, scope):
+        return self.numbers.literal(node.value, node.kind)
+
+    def expr_Str(self, node, scope):
+        return repr(node.value), "s"
+
+    def expr_Var(self, node, scope):
+        return scope.scalar(node.name), self.kind_of(node)
+
+    def expr_Elem(self, node, scope):
+        return self.element(node, scope), self.kind_of(node)
+
+    def element(self, node, scope) -> str:
+        code = scope.array(node.name, len(node.indices))
+        for index in node.indices:
+            if isinstance(index, ast.Num) and index.value >= self.lowest_fast_subscript \
+                    and index.value == int(index.value):
+                code += f"[{int(index.value)}]"
+            elif isinstance(index, ast.Var) and index.name in self.whole_index and isinstance(scope, BlockScope):
+                code += f"[{self.whole_index[index.name]}]"  # the subscript of a constant loop's value
+            elif isinstance(index, ast.Var) and index.name in self.counting_vars and isinstance(scope, BlockScope) \
+                    and not self.plan.option_base:
+                code += f"[int({scope.scalar(index.name)} + 0.5)]"  # a loop variable known to be >= 0
+            else:
+                code += f"[_ix({self.numeric(index, scope)})]"
+        return code
+
+    def expr_Unary(self, node, scope):
+        operand, kind = self.typed(node.operand, scope)
+        if node.op == "NOT":
+            return self.numbers.logical_not(operand)
+        return self.numbers.negate(operand, kind) if node.op == "-" else (operand, kind)
+
+    def expr_Binary(self, node, scope):
+        op = node.op
+        left, lkind = self.expr(node.left, scope)
+        right, rkind = self.expr(node.right, scope)
+        if op in _PY_RELATIONS:
+            if (lkind == "s") != (rkind == "s"):
+                raise type_mismatch()
+            return self.numbers.truth(f"{left} {_PY_RELATIONS[op]} {right}")
+        if op == "+" and lkind == "s" and rkind == "s":
+            return f"_cat({left}, {right})", "s"
+        if lkind not in NUMERIC or rkind not in NUMERIC:
+            raise type_mismatch()
+        if op in ("+", "-", "*", "/"):
+            # a left-leaning chain (A+B+C...) stays flat: Python groups + - and * / the same way
+            group = ("+", "-") if op in ("+", "-") else ("*", "/")
+            # (not a gw double's range-checked result, "(_w if ...)": number_models)
+            if (isinstance(node.left, ast.Binary) and node.left.op in group and left.startswith("(")
+                    and not left.startswith(RANGE_CHECKED)):
+                left = left[1:-1]
+            return self.numbers.arithmetic(op, left, lkind, right, rkind)
+        if op == "^":
+            if self.numbers.typed:
+                return self.numbers.power(left, lkind, right, rkind)
+            if (self.numbers.square_by_product and isinstance(node.right, ast.Num)
+                    and node.right.value == 2.0 and _simple_operand(left)):
+                return f"({left} * {left})", "n"
+        return self.numbers.helper(op, left, right)
+
+    def expr_Call(self, node, scope):
+        forms, result, helper = _FUNCTIONS[node.name]
+        args = list(node.args)
+        if node.name == "RND" and (not args or (len(args) == 1 and (constant_value(args[0]) or 0) > 0)):
+            return self.numbers.call("RND", "_rndf", [], [], "n")  # the next number (the generator's drawer)
+        form = _call_form(forms, [ast.expr_type(arg) for arg in args])
+        codes, kinds = [], []
+        for arg, want in zip(args, form):
+            if want == "s" or (want == "x" and ast.expr_type(arg) == "s"):
+                code, kind = self.string(arg, scope), "s"
+            else:
+                code, kind = self.typed(arg, scope)
+            codes.append(self.numbers.printable(code, kind) if node.name == "STR$" else code)
+            kinds.append(kind)
+        return self.numbers.call(node.name, helper, codes, kinds, result)
+
+    def expr_FnCall(self, node, scope):
+        params = self.fn_params.get(self.numbers.name(node.name))
+        if params is not None:  # a DEF FN of this area: check the call against it
+            if len(params) != len(node.args):
+                raise syntax_error()
+            for param, arg in zip(params, node.args):
+                if (ast.expr_type(arg) == "s") != (self.numbers.kind(param) == "s"):
+                    raise type_mismatch()
+        scope.uses_fn = True
+        args = []
+        for k, arg in enumerate(node.args):
+            code, kind = self.expr(arg, scope)
+            if params is not None and kind in NUMERIC:
+                code = self.numbers.convert(code, kind, self.numbers.kind(params[k]))
+            args.append(code)
+        name = self.numbers.name(node.name)
+        return f"_fn({name!r}, {len(node.args)})({', '.join(args)})", self.kind_of(node)
+
+    def expr_SysVar(self, node, scope):
+        if node.name == "PI":
+            return repr(math.pi), "n"
+        code, kind = _SYSTEM_VARIABLES[node.name]
+        return code, kind or self.numbers.integer
+
+    def condition(self, node, scope) -> str:
+        """A Python boolean expression for an IF condition."""
+        if isinstance(node, ast.Binary) and node.op in _PY_RELATIONS:
+            left, lkind = self.expr(node.left, scope)
+            right, rkind = self.expr(node.right, scope)
+            if (lkind == "s") != (rkind == "s"):
+                raise type_mismatch()
+            return f"{left} {_PY_RELATIONS[node.op]} {right}"
+        if isinstance(node, ast.Binary) and node.op in ("AND", "OR") and _is_relation(node):
+            word = node.op.lower()
+            return f"({self.condition(node.left, scope)}) {word} ({self.condition(node.right, scope)})"
+        if isinstance(node, ast.Unary) and node.op == "NOT" and _is_relation(node.operand):
+            return f"not ({self.condition(node.operand, scope)})"
+        return f"{self.numeric(node, scope)} != 0"

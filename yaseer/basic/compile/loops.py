@@ -1,0 +1,311 @@
+"""FOR ... NEXT -> Python: the loop half of the area compiler (``AreaCompiler`` in
+compiler.py mixes it in).
+
+A FOR whose NEXT the plan (blocks.py) finds with no jump into or out of the body
+becomes a native Python loop (:meth:`LoopCompiler.native_loop`), run in the way
+:meth:`LoopCompiler.loop_mode` picks; any other FOR pushes a frame on the FOR stack
+and its NEXT steps through it (``stmt_For``, ``stmt_Next``).
+"""
+
+from __future__ import annotations
+
+from yaseer.basic.source import syntax_tree as ast
+from yaseer.basic.compile.blocks import nodes, scan_for_next, walk_statements
+from yaseer.basic.compile.expressions import BlockScope, CompileError, constant_value, syntax_error, type_mismatch
+from yaseer.basic.compile.number_models import local_name
+from yaseer.basic.errors import FOR_WITHOUT_NEXT
+
+
+class LoopCompiler:
+    """The FOR / NEXT methods of ``AreaCompiler`` (they use its blocks, ``walk`` and
+    ``continuation``)."""
+
+    def loop_key(self, var) -> str:
+        """The FOR-stack key of a control variable: ``I``, or ``A()`` for an element
+        (gw: with its type character, ``I!``)."""
+        name = self.numbers.name(var.name)
+        return name if isinstance(var, ast.Var) else name + "()"
+
+    def loop_var(self, var, scope) -> tuple[str, str]:
+        """(Python target for the control variable, FOR-stack key)."""
+        if self.kind_of(var) == "s":
+            raise type_mismatch()
+        if isinstance(var, ast.Var):
+            return scope.scalar(var.name, write=True), self.loop_key(var)
+        return self.element(var, scope), self.loop_key(var)
+
+    def stepping(self, var_node, var: str, step: str) -> str:
+        """The code of ``var + step`` for a FOR variable (rounded to its type)."""
+        return self.numbers.loop_helpers(self.kind_of(var_node))[1].format(var=var, step=step)
+
+    def stmt_For(self, stmt, scope, native_next: int | None = None):
+        kind = self.kind_of(stmt.var)
+        if kind not in self.numbers.loop_types:
+            raise type_mismatch()
+        convert = self.numbers.convert
+        start = convert(*self.typed(stmt.start, scope), kind)
+        limit = convert(*self.typed(stmt.stop, scope), kind)
+        one = self.numbers.one()
+        step = one if stmt.step is None else convert(*self.typed(stmt.step, scope), kind)
+        var, key = self.loop_var(stmt.var, scope)
+        n = self.new_temp()
+        self.emit(f"_v{n} = {start}; _l{n} = {limit}; _s{n} = {step}")
+        if isinstance(stmt.var, ast.Elem) and stmt.var.indices and not all(
+                isinstance(i, ast.Num) for i in stmt.var.indices):
+            raise syntax_error()  # a computed subscript would be re-evaluated each pass
+        self.emit(f"{var} = _v{n}")
+        if native_next is not None:
+            step_value = stmt.step.value if isinstance(stmt.step, ast.Num) else (
+                1.0 if stmt.step is None else None)
+            if step_value is not None and step_value > 0:
+                test = f"{var} <= _l{n}"
+            elif step_value is not None and step_value < 0:
+                test = f"{var} >= _l{n}"
+            else:
+                test = f"({var} <= _l{n} if _s{n} >= 0.0 else {var} >= _l{n})"
+            mode = self.loop_mode(stmt) if self.numbers.may_iterate(stmt, kind) else "while"
+            if mode == "count":
+                # the body neither reads nor changes the variable: count the passes
+                self.emit(f"if {test}:")
+                self.indent += 1
+                self.emit(f"_it{n} = _fcount(_v{n}, _l{n}, _s{n})")
+                if self.idle_body:  # an empty body: the passes are counted in C, in chunks
+                    self.emit(f"_i{n} = 0")
+                self.emit("try:")
+                self.indent += 1
+                self.emit(f"for _i{n} in {'_fidle(_it%s)' % n if self.idle_body else '_it%s' % n}:")
+                return n, var, step_value, mode
+            if mode == "constant":
+                values, _ = self.constant_passes(stmt)
+                self.emit(f"if {test}:")
+                self.indent += 1
+                first, last = self.loop_range
+                indexing = any(isinstance(node, ast.Elem) and stmt.var in node.indices
+                               for node in nodes([self.flat[k][1] for k in range(first + 1, last)]))
+                if indexing and not self.plan.option_base and all(v == int(v) and 0 <= v < 2.0 ** 52 for v in values):
+                    # the subscript of each value too: the body indexes arrays with it
+                    self.whole_index[stmt.var.name] = f"_k{n}"
+                    pairs = "".join(f"({int(v)}, {v!r}), " for v in values)
+                    self.emit(f"for _k{n}, {var} in ({pairs}):")
+                else:
+                    self.emit(f"for {var} in ({''.join(f'{v!r}, ' for v in values)}):")
+                return n, var, step_value, mode
+            if mode == "values":
+                # the body never changes the variable: iterate over its values
+                self.emit(f"if {test}:")
+                self.indent += 1
+                self.emit(f"for {var} in {self.numbers.loop_helpers(kind)[0]}(_v{n}, _l{n}, _s{n}):")
+                return n, var, step_value, mode
+            self.emit(f"if {test}:")
+            self.indent += 1
+            self.emit(f"while {test}:")
+            return n, var, step_value, mode
+        body = self.entry_block.get(self.index + 1) if self.depth == 0 else None
+        skip_index = self.plan.for_next.get(self.index) if self.depth == 0 else None
+        if skip_index is None:
+            skip_index = self.plan.branch_for_next.get(id(stmt))
+        block, indent = self.cur, self.indent
+        self.emit(f"if _v{n} <= _l{n} if _s{n} >= 0.0 else _v{n} >= _l{n}:")
+        if body is None:
+            body_block = self.continuation()
+        else:
+            body_block = body
+            self.cur = None
+        block.code.append((indent + 1, f"_for({key!r}, _l{n}, _s{n}, {body_block}, {self.bound_next(stmt)!r})"))
+        block.code.append((indent + 1, f"return {body_block}"))
+        # a loop that never runs leaves its variable at the start value (GW-BASIC's
+        # source: FOR hands over to NEXTS in NEXT86.ASM with NXTFLG = 0; see compatibility.md)
+        bound = self.bound_next(stmt)
+        if bound:  # GW-BASIC: no NEXT, or one naming another loop, is an error; else go on after it
+            block.code.append((indent, f"_M.bound_next({bound!r})"))
+            after = self.after(bound[0], self.scanned_next(stmt)[1]).number
+            block.code.append((indent, f"if _M.dialect.for_binds_next: return {after}"))
+        elif bound is None:
+            block.code.append((indent, "_M.bound_next(None)"))
+        if skip_index is None:
+            block.code.append((indent, f"raise _err('FOR without NEXT', {FOR_WITHOUT_NEXT})"))
+        else:
+            block.code.append((indent, f"return {self.entry_block[skip_index + 1]}"))
+        return None
+
+    def bound_next(self, stmt):
+        """What GW-BASIC's FOR finds scanning for its NEXT (``Machine.for_push``):
+        ``(statement index, line, names this loop?)``, None for no NEXT.  A FOR inside
+        an IF branch scans on from itself through the rest of its IF statement."""
+        found = self.scanned_next(stmt)
+        if found is None:
+            return None
+        k, next_stmt = found
+        return (k, self.flat[k][0], next_stmt.var is None or next_stmt.var == stmt.var)
+
+    def scanned_next(self, stmt):
+        """``(statement index, NEXT)`` that the FOR ``stmt``'s scan finds, or None."""
+        return scan_for_next([s for _, s in self.flat], self.index + 1, stmt if self.depth else None)
+
+    def zero_trip_target(self, stmt) -> bool:
+        """Does ``stmt`` hold, in an IF branch, a NEXT that a zero-trip FOR goes on after?"""
+        return any(id(s) in self.plan.branch_nexts for s in walk_statements(stmt, unreachable=False))
+
+    def stmt_Next(self, stmt, scope):
+        var = stmt.var
+        if var is None and self.depth == 0 and self.index in self.plan.next_for:
+            var = self.flat[self.plan.next_for[self.index]][1].var
+        if var is None:
+            self.emit("#FLUSH#")
+            self.emit("if _next_any(): return _M.frame_body")
+            self.emit("#RELOAD#")
+        else:
+            target, key = self.loop_var(var, scope)
+            self.emit(f"_f = _next({key!r}, {self.index})")
+            self.emit(f"{target} = {self.stepping(var, target, '_f.step')}")
+            self.emit(f"if {target} <= _f.limit if _f.step >= 0.0 else {target} >= _f.limit: return _f.body")
+            self.emit("_pop()")
+        if id(stmt) in self.plan.branch_nexts:  # a zero-trip FOR goes on here, inside the branch
+            self.continue_after(stmt, fall_through=True)
+
+    def loop_mode(self, stmt) -> str:
+        """How to run the native loop now being compiled.
+
+        ``"while"``: test and add the step each pass (always right; used for a
+        short loop with constant bounds, or when the body may change the variable);
+        ``"constant"``: such a short loop in plain doubles iterates over a tuple of
+        its values made at compile time (:meth:`constant_passes`), with each value's
+        subscript beside it when all are whole numbers >= 0 and the body indexes
+        an array with the variable;
+        ``"values"``: ``for var in _frange(...)`` when nothing in the body can
+        change the variable; ``"count"``: ``for _ in range(n)`` when the body does
+        not even read it (the variable's value is set after the loop, or on an error).
+        """
+        if not self.iterable_loop(stmt.var):
+            return "while"
+        start, stop = constant_value(stmt.start), constant_value(stmt.stop)
+        step = 1.0 if stmt.step is None else constant_value(stmt.step)
+        if start is not None and stop is not None and step and 0 <= (stop - start) / step < 16:
+            return "constant" if self.constant_passes(stmt) else "while"
+        first, last = self.loop_range
+        body = [self.flat[k][1] for k in range(first + 1, last)]
+        if any(isinstance(node, ast.FnCall) or node == stmt.var for node in nodes(body)):
+            return "values"
+        return "count"
+
+    def counts_up_from_zero(self, stmt) -> bool:
+        """Does the loop's variable stay >= 0 in its body (constant start >= 0, step > 0,
+        never assigned there)?  Then it can index arrays without the subscript check."""
+        start_ok = isinstance(stmt.start, ast.Num) and stmt.start.value >= 0
+        step_ok = stmt.step is None or (isinstance(stmt.step, ast.Num) and stmt.step.value > 0)
+        return start_ok and step_ok and self.iterable_loop(stmt.var)
+
+    def iterable_loop(self, var) -> bool:
+        """May the native loop now being compiled iterate instead of testing?
+
+        Only when nothing in its body can change the control variable: it is a
+        scalar, no statement assigns it, and nothing outside the block (an area,
+        CLEAR) runs inside the loop.
+        """
+        if not isinstance(var, ast.Var):
+            return False
+        first, last = self.loop_range
+        for k in range(first + 1, last):
+            for s in walk_statements(self.flat[k][1]):
+                if isinstance(s, (ast.GosubProg, ast.Clear)):
+                    return False
+                targets = []
+                if isinstance(s, (ast.Let,)):
+                    targets = [s.target]
+                elif isinstance(s, (ast.Read, ast.Input)):
+                    targets = s.targets
+                elif isinstance(s, ast.For):
+                    targets = [s.var]
+                if var in targets:
+                    return False
+        return True
+
+    def constant_passes(self, stmt) -> tuple[list, float] | None:
+        """A short loop known at compile time: (the values of the variable, one per pass;
+        its value after the loop), found by adding the step as the loop does.
+
+        Only for a scalar FOR with constant bounds and fewer than 16 passes (the short
+        loops :meth:`loop_mode` would run as ``while``, and those that never run) whose numbers are plain doubles
+        stepped by a plain ``+`` (the casio dialect's); None for any other loop.
+        """
+        if self.numbers.typed or self.numbers.loop_helpers("n")[1] != "{var} + {step}":
+            return None
+        if not isinstance(stmt.var, ast.Var) or self.kind_of(stmt.var) == "s":
+            return None
+        value, limit = constant_value(stmt.start), constant_value(stmt.stop)
+        step = 1.0 if stmt.step is None else constant_value(stmt.step)
+        if value is None or limit is None or step is None or not step or not (limit - value) / step < 16:  # (a loop that never runs is one too)
+            return None
+        values = []
+        while (value <= limit) if step > 0 else (value >= limit):
+            values.append(value)
+            value = value + step
+        return values, value
+
+    def native_loop(self, i: int) -> int:
+        """Emit FOR at ``i`` ... its NEXT as a Python while loop; the index after NEXT."""
+        j = self.plan.native[i]
+        stmt = self.flat[i][1]
+        scope = BlockScope(self)
+        # nothing between FOR and NEXT (and no TRON line marks): a delay loop
+        self.idle_body = j == i + 1 and not self.trace
+        passes = self.constant_passes(stmt) if self.idle_body else None
+        if passes is not None:  # a short delay loop: its variable's final value
+            self.emit(f"{scope.scalar(stmt.var.name, write=True)} = {passes[1]!r}")
+            self.line = None
+            self.set_line(self.flat[j][0])
+            return j + 1
+        block, mark = self.cur, len(self.cur.code)
+        self.loop_range = (i, j)
+        try:
+            n, var, step_value, mode = self.stmt_For(stmt, scope, native_next=j)
+        except CompileError as err:
+            del block.code[mark:]
+            self.emit(f"raise _err({err.message!r}, {err.code})")
+            return i + 1
+        counting = self.counts_up_from_zero(stmt)
+        if counting:
+            self.counting_vars.add(stmt.var.name)
+        self.indent += 1
+        # The top of a pass is where a Ctrl-C may stop the loop so that CONT resumes it:
+        # its line is the atomic ``_ln = n`` (nothing in it can be interrupted half-way).
+        self.open_loops.append((i, self.loop_key(stmt.var), n, mode,
+                                local_name(self.numbers.name(stmt.var.name)) if isinstance(stmt.var, ast.Var)
+                                else None))
+        self.emit(f"#BREAK#{len(self.break_infos)}")
+        self.break_infos.append((self.flat[i + 1][0], tuple(self.open_loops)))
+        self.line = None
+        # (the line of the body's first statement, where a break lands; the FOR's for an empty body)
+        self.set_line(self.flat[i + 1][0] if j > i + 1 else self.flat[i][0])
+        body_mark = len(self.cur.code)
+        self.walk(i + 1, j)
+        self.trace_line(j)  # a NEXT that starts its line
+        self.open_loops.pop()
+        if len(self.cur.code) == body_mark:
+            self.emit("pass")  # an empty body (a delay loop)
+        if counting:
+            self.counting_vars.discard(stmt.var.name)
+        self.index = j  # (stepping cannot fail, so NEXT's line needs no marker in the loop)
+        increment = repr(step_value) if step_value is not None and not self.numbers.typed else f"_s{n}"
+        increment = self.stepping(stmt.var, var, increment)
+        if mode == "count":
+            self.indent -= 2
+            self.emit("except BaseException:")
+            self.emit(f"    {var} = _fvalue(_it{n}, _v{n}, _s{n}, _i{n})")
+            self.emit("    raise")
+            self.emit(f"{var} = _fafter(_it{n}, _v{n}, _s{n})")
+        elif mode == "values":
+            self.indent -= 1
+            self.emit(f"{var} = {increment}")
+        elif mode == "constant":
+            self.indent -= 1
+            self.emit(f"{var} = {self.constant_passes(stmt)[1]!r}")
+            self.whole_index.pop(stmt.var.name, None)
+        else:
+            self.emit(f"{var} = {increment}")
+            self.indent -= 1
+        self.indent -= 1
+        # a loop that never runs leaves its variable at the start value (see stmt_For)
+        self.line = None
+        self.set_line(self.flat[j][0])
+        return j + 1

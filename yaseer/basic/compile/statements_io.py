@@ -1,0 +1,172 @@
+"""PRINT, WRITE, INPUT, READ and the file statements -> Python: the statements that
+move data in and out, one half of the area compiler (``AreaCompiler`` in compiler.py
+mixes it in).  The machine's helpers they call are in runtime.py and files.py.
+"""
+
+from __future__ import annotations
+
+from yaseer.basic.source import syntax_tree as ast
+from yaseer.basic.compile.expressions import CompileError
+from yaseer.basic.errors import UNDEFINED_LINE
+
+
+def _is_safe_item(item) -> bool:
+    """A PRINT item whose evaluation cannot fail (so items may be evaluated together)."""
+    return isinstance(item, (str, ast.Num, ast.Str, ast.Var))
+
+
+def _print_chunks(parts: list) -> list:
+    """PRINT items split so that each chunk holds one thing to evaluate (a value with the
+    ``_NUMCOMMA`` mark before it, TAB or SPC) and the commas after it: each comma moves
+    the cursor before the next item is evaluated, so a message that item prints
+    (``Overflow``) lands where GW-BASIC prints it.  Leading commas are a chunk of their own."""
+    chunks, current, evaluated = [], [], False
+    for part in parts:
+        if part != "_COMMA":
+            if evaluated or (current and current[-1] == "_COMMA"):
+                chunks.append(current)
+                current, evaluated = [], False
+            evaluated = part != "_NUMCOMMA"
+        current.append(part)
+    if current or not chunks:
+        chunks.append(current)
+    return chunks
+
+
+class InputOutputCompiler:
+    """The input and output statements of ``AreaCompiler`` (they use its ``emit``,
+    ``assign`` and expression methods)."""
+
+    def print_items(self, items, scope) -> tuple[list, bool]:
+        """The Python parts of PRINT items (values, _COMMA, _Tab, _Spc) and whether a newline ends it."""
+        parts = []
+        for k, item in enumerate(items):
+            if item == ",":
+                parts.append("_COMMA")
+            elif item == ";":
+                continue
+            elif isinstance(item, ast.Tab):
+                parts.append(f"_Tab({self.numeric(item.column, scope)})")
+            elif isinstance(item, ast.Spc):
+                parts.append(f"_Spc({self.numeric(item.count, scope)})")
+            else:
+                try:
+                    code, kind = self.expr(item, scope)
+                except CompileError as err:  # e.g. Type mismatch: the items before it still print
+                    parts.append(f"_fail({err.message!r}, {err.code})")
+                    return parts, False
+                if kind != "s" and items[k + 1:k + 2] == [","]:
+                    parts.append("_NUMCOMMA")  # a number a comma follows (see Machine._blank_before_comma)
+                parts.append(self.numbers.printable(code, kind))
+        # a PRINT ending in a separator, TAB(n) or SPC(n) keeps the line open
+        newline = not items or not (items[-1] in (",", ";") or isinstance(items[-1], (ast.Tab, ast.Spc)))
+        return parts, newline
+
+    def stmt_Print(self, stmt, scope):
+        """PRINT / LPRINT [USING]: items are printed as they are evaluated, so an item
+        that fails leaves the ones before it on the screen (as GW-BASIC does)."""
+        device, pr, pru = 1 if stmt.printer else 0, "_pr", "_pru"
+        if stmt.channel is not None:  # PRINT #n: the file's stream, found once
+            device, pr, pru = self.new_temp(), "_prf", "_pruf"
+            self.emit(f"{device} = _fout({self.numeric(stmt.channel, scope)})")
+        parts, newline = self.print_items(stmt.items, scope)
+        safe = all(_is_safe_item(item) for item in stmt.items)
+        if stmt.using is None:
+            chunks = _print_chunks(parts) if not safe else [parts]
+            for k, chunk in enumerate(chunks):
+                last = k == len(chunks) - 1
+                values = "(" + "".join(p + ", " for p in chunk) + ")"
+                self.emit(f"{pr}({device}, {values}, {newline and last}, {last})")
+            return
+        fmt = self.string(stmt.using, scope)
+        parts = [p for p in parts if p not in ("_COMMA", "_NUMCOMMA") and not p.startswith(("_Tab(", "_Spc("))]
+        if safe:
+            values = "(" + "".join(p + ", " for p in parts) + ")"
+            self.emit(f"{pru}({device}, {fmt}, {values}, {newline})")
+            return
+        self.emit("_u = []")
+        self.emit("try:")
+        for part in parts:
+            self.emit(f"    _u.append({part})")
+        self.emit("except BaseException:")
+        self.emit(f"    {pru}({device}, {fmt}, _u, False)")
+        self.emit("    raise")
+        self.emit(f"{pru}({device}, {fmt}, _u, {newline})")
+
+    def stmt_Write(self, stmt, scope):
+        if stmt.channel is not None:
+            stream = self.new_temp()
+            self.emit(f"{stream} = _fout({self.numeric(stmt.channel, scope)})")
+            self.emit(f"_writef({stream}, ({self.written_items(stmt.items, scope)}))")
+            return
+        self.emit(f"_write(0, ({self.written_items(stmt.items, scope)}))")
+
+    def written_items(self, items, scope) -> str:
+        """WRITE's items as Python text pieces: strings in quotes, numbers as STR$ gives
+        them without the blank (the caller joins them with commas)."""
+        pieces = []
+        for item in items:
+            code, kind = self.expr(item, scope)
+            if kind == "s":
+                pieces.append(f"'\"' + {code} + '\"'")
+            else:
+                pieces.append(f"_strs({self.numbers.printable(code, kind)}).strip()")
+        return "".join(piece + ", " for piece in pieces)
+
+    def stmt_Input(self, stmt, scope):
+        if stmt.channel is not None:  # INPUT #n: one field for each variable, stored at once
+            channel = self.numeric(stmt.channel, scope)
+            for target in stmt.targets:
+                kind = self.kind_of(target)
+                reader = "_fin_s" if kind == "s" else "_fin_n"
+                self.assign(target, f"{reader}({channel})", "s" if kind == "s" else self.numbers.widest,
+                            scope, self.numbers.typed and kind != "s")
+            return
+        kinds = "".join("s" if self.kind_of(t) == "s" else "n" for t in stmt.targets)
+        values = self.new_temp()
+        self.emit(f"{values} = _input({stmt.prompt!r}, {stmt.question_mark}, {kinds!r}, {self.asking_again()})")
+        for n, target in enumerate(stmt.targets):
+            self.assign(target, f"{values}[{n}]", "s" if kinds[n] == "s" else self.numbers.widest,
+                        scope, self.numbers.typed and kinds[n] != "s")
+
+    def stmt_LineInput(self, stmt, scope):
+        if stmt.channel is not None:
+            self.assign(stmt.target, f"_fline({self.numeric(stmt.channel, scope)})", "s", scope, False)
+            return
+        self.assign(stmt.target, f"_line_input({stmt.prompt!r}, {self.asking_again()})", "s", scope, False)
+
+    def asking_again(self) -> tuple | None:
+        """For an INPUT or LINE INPUT that starts its block of area 0 (a top-level one):
+        (that block, its line), where CONT after a Ctrl-C while it waits goes on, asking
+        again (GW-BASIC); None for one inside an IF branch or another area."""
+        if self.depth == 0 and self.index in self.entry_block and self.area == 0 and not self.direct:
+            return self.cur.number, self.line
+        return None
+
+    def stmt_Read(self, stmt, scope):
+        for target in stmt.targets:
+            kind = "s" if self.kind_of(target) == "s" else self.numbers.widest
+            self.assign(target, "_read_s()" if kind == "s" else "_read_n()", kind, scope,
+                        self.numbers.typed and kind != "s")  # beyond the range: Overflow's policy
+
+    def stmt_Restore(self, stmt, scope):
+        if stmt.target is not None and stmt.target not in self.line_first:
+            self.emit(f"raise _err('Undefined line number {stmt.target}', {UNDEFINED_LINE})")
+            return
+        self.emit(f"_restore({stmt.target!r})")
+
+    def stmt_Open(self, stmt, scope):
+        self.emit(f"_open({self.string(stmt.mode, scope)}, {self.numeric(stmt.number, scope)}, "
+                  f"{self.string(stmt.name, scope)})")
+
+    def stmt_Close(self, stmt, scope):
+        self.emit(f"_close(({''.join(self.numeric(n, scope) + ', ' for n in stmt.numbers)}))")
+
+    def stmt_Kill(self, stmt, scope):
+        self.emit(f"_kill({self.string(stmt.name, scope)})")
+
+    def stmt_Rename(self, stmt, scope):
+        self.emit(f"_rename({self.string(stmt.old, scope)}, {self.string(stmt.new, scope)})")
+
+    def stmt_Files(self, stmt, scope):
+        self.emit(f"_files({'None' if stmt.pattern is None else self.string(stmt.pattern, scope)})")

@@ -1,0 +1,206 @@
+"""The BASIC dialect a machine speaks: one small frozen object of data.
+
+A :class:`Dialect` says how the scanner reads names, which number model the
+compiler and runtime use, how PRINT shows numbers and wraps lines, what an
+arithmetic error does at run time, and what the machine holds when a program
+starts.  The scanner, compiler, runtime and machine consult its fields; no
+code asks "which dialect is this?".
+
+Two dialects exist:
+
+* :data:`CASIO` (``--dialect casio``, the default): the paper's pocket
+  computer (Casio FX-850P family), exactly as yaseer has always run it.
+* :data:`GW` (``--dialect gw``): GW-BASIC 3.23 as PC-BASIC 2.0.8 reproduces
+  it; where the two disagree, Microsoft's GW-BASIC assembly source decides
+  (see docs/compatibility.md).
+
+Field names are stable: other modules build on them.  A dialect is a named tuple
+(immutable; ``dialect._replace(field=value)`` makes a variant) made by
+``collections.namedtuple``, not a dataclass or a ``typing.NamedTuple``: importing
+dataclasses or typing costs every start milliseconds.
+"""
+
+from __future__ import annotations
+
+from collections import namedtuple
+
+from yaseer.basic.arithmetic.values import DOUBLE_LARGEST
+from yaseer.basic.arithmetic.randomness import GwRandom, RepeatableRandom
+
+# The paper's universal line 2: these arrays exist with these sizes from the start
+# (one dimension, subscripts 0..size).
+AL_YASEER_DIMENSIONS = (
+    ("F", 46), ("M", 11), ("R", 19), ("H", 24), ("A", 53), ("L", 20), ("T", 25), ("W", 10),
+    ("Z", 5), ("C", 14), ("U", 4), ("D", 6), ("E", 6), ("X", 11), ("Y", 11), ("V", 21),
+    ("Q", 4), ("N", 3), ("I", 11), ("P", 4),
+)
+
+
+FIELDS = (
+    "name",  # str: casio, gw
+    "keyword_first",  # bool
+    "pi_keyword",  # bool
+    "own_words",  # tuple[str, ...]
+    "typed_numbers",  # bool
+    "print_digits",  # int
+    "width",  # int | None
+    "zone",  # int
+    "on_division_by_zero",  # str: stop, continue
+    "on_overflow",  # str: stop, continue
+    "angle",  # str: DEG, RAD
+    "implicit_arrays",  # tuple[tuple[str, int], ...]
+    "default_dimension",  # int
+    "program_areas",  # bool
+    # with defaults (the Casio's):
+    "random",  # type: RepeatableRandom
+    "errors_when_reached",  # bool: False
+    "comma_trims_number",  # bool: False
+    "for_binds_next",  # bool: False
+    "arithmetic",  # str: binary
+    "largest_number",  # float | None: None
+    "printer_width",  # int | None: None
+)
+DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None)
+
+
+class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
+    """Everything that differs between the BASICs yaseer runs (all plain data).
+
+    Scanner rules
+        ``keyword_first``: True reads keywords wherever they start inside a run
+        of letters (``COST`` is ``COS T``, ``FORI=1TO3`` is ``FOR I = 1 TO 3``),
+        as the pocket computers' tokenisers do; False reads a name whole, as
+        GW-BASIC does (``COST`` is a variable; a keyword counts only when the
+        run of letters does not continue it into a longer name).
+        ``pi_keyword``: True makes ``PI`` the constant pi (a Casio keyword);
+        False leaves it an ordinary variable name (GW-BASIC has no PI).
+        ``own_words``: keywords only this dialect reserves, on top of the
+        common ones in scanner.py (Casio: ``DEG RAD XOR EQV IMP``; GW: ``DEFINT DEFSNG
+        DEFDBL DEFSTR XOR EQV IMP``).  ``PI`` and ``PROG`` are reserved by
+        ``pi_keyword`` and ``program_areas``.
+
+    Number model
+        ``typed_numbers``: False is the pocket computer's one numeric type
+        (every number a Python float, i.e. a double, shown to ``print_digits``);
+        True is GW-BASIC's typed model: ``%`` 16-bit integers, ``!`` single
+        precision (the default type of a name without suffix), ``#`` double
+        precision, ``$`` strings, with DEFINT/DEFSNG/DEFDBL/DEFSTR, literal
+        suffixes and ``&H``/``&O`` literals.
+
+        ``arithmetic``: ``"binary"`` (IEEE doubles, or GW's types) or
+        ``"decimal"`` (``--arith decimal``, casio only: 13-digit decimal
+        arithmetic as the FX-850P family's BCD, yaseer/basic/arithmetic/decimal_arith.py).
+
+    Print rules
+        ``print_digits``: significant digits PRINT and STR$ show for the
+        default numeric type (10 on the 10-digit Casio display; 7 for
+        GW-BASIC's single precision; GW doubles show 16).
+        ``width``: the screen width in columns at which PRINT wraps lines
+        (``None``: never wrap, the Casio behaviour as yaseer runs it; 80 for
+        GW-BASIC, changed with ``WIDTH n``).
+        ``zone``: columns per ``,`` print zone (14 in both).
+        ``printer_width``: where LPRINT wraps (``None`` never; GW-BASIC's printer:
+        80, changed with ``WIDTH LPRINT n``).
+        ``comma_trims_number``: True drops the trailing blank of a number a
+        ``,`` follows when the number ends one column before a zone (GW-BASIC's
+        source, GIO86.ASM ``MODCOM``), so the comma moves one column instead of
+        a whole zone.
+
+        ``random``: the class of RND's generator (yaseer/basic/arithmetic/randomness.py):
+        ``RepeatableRandom`` (Python's, seed 0 at RUN) or ``GwRandom``
+        (GW-BASIC's own 24-bit sequence, as PC-BASIC reproduces it).
+
+    Syntax errors
+        ``errors_when_reached``: True (GW-BASIC) runs a line statement by
+        statement up to a bad one, which is the error when execution reaches
+        it (``10 PRINT 50: X`` prints 50, then ``Syntax error in 10``), and an
+        expression cut short by the end of its statement is ``Missing
+        operand``; False (Casio, as yaseer always ran the listings) makes a bad
+        line a ``Syntax error`` before any of it runs.
+
+    FOR and NEXT
+        ``for_binds_next``: True (GW-BASIC, as PC-BASIC 2.0.8 runs it) binds a
+        FOR, when it runs, to the NEXT it finds scanning forward (FORs and NEXTs
+        met on the way counted): none is ``FOR without NEXT``, one naming another
+        variable ``NEXT without FOR``, and any other NEXT of the variable is
+        ``NEXT without FOR``; False (Casio, classic Microsoft BASIC) lets any NEXT
+        of the variable continue the loop.
+
+    Run-time error policy
+        ``on_division_by_zero`` and ``on_overflow``: ``"stop"`` ends the run
+        with the error (Casio); ``"continue"`` prints GW-BASIC's message and
+        goes on with the signed largest value, unless ON ERROR traps it.
+        ``largest_number``: where the number range ends when it is not IEEE's
+        (``None``; beyond 1.8E+308 is then an ``Overflow`` error): GW-BASIC's
+        Microsoft Binary Format doubles end where its singles do, at 2**127
+        (``DOUBLE_LARGEST``, printed 1.701411834604692D+38); a double result, or
+        a number read by VAL, INPUT or READ, beyond it follows ``on_overflow``.
+
+    Start-up environment
+        ``angle``: ``"DEG"`` or ``"RAD"``, the unit of SIN COS TAN ATN at RUN.
+        ``implicit_arrays``: ``(name, size)`` pairs of one-dimensional arrays
+        that exist with those sizes before any DIM (the Al-Yaseer arrays in
+        Casio; none in GW).
+        ``default_dimension``: the largest subscript of an array used
+        without DIM (10 in both: subscripts 0..10).
+        ``program_areas``: True when ``GOSUB PROG n`` is a statement (the
+        library programs are bound at start); False in GW-BASIC, where PROG
+        is no word: ``GOSUB PROG n`` is then a syntax error unless program
+        areas are given explicitly (``--prog``).
+    """
+
+    __slots__ = ()
+
+    def with_arithmetic(self, arithmetic: str) -> "Dialect":
+        """This dialect computing in ``arithmetic`` ("binary" or "decimal"); decimal
+        is the Casio's (ValueError for a typed dialect)."""
+        if arithmetic == self.arithmetic:
+            return self
+        if arithmetic not in ("binary", "decimal") or self.typed_numbers:
+            raise ValueError(f"--arith {arithmetic} is not for the {self.name} dialect (decimal is casio's)")
+        return self._replace(arithmetic=arithmetic)
+
+    def with_program_areas(self) -> "Dialect":
+        """This dialect with ``GOSUB PROG n`` (``--prog`` gives areas in gw too)."""
+        return self if self.program_areas else self._replace(program_areas=True)
+
+    def implicit_size(self, name: str, ndim: int) -> int:
+        """The largest subscript of array ``name`` with ``ndim`` dimensions used without DIM."""
+        if ndim == 1:
+            for array, size in self.implicit_arrays:
+                if array == name:
+                    return size
+        return self.default_dimension
+
+
+CASIO = Dialect(
+    name="casio", keyword_first=True, pi_keyword=True, own_words=("DEG", "RAD", "XOR", "EQV", "IMP"),
+    typed_numbers=False,
+    print_digits=10,
+    width=None, zone=14, on_division_by_zero="stop", on_overflow="stop", angle="DEG",
+    implicit_arrays=AL_YASEER_DIMENSIONS, default_dimension=10, program_areas=True,
+)
+
+GW = Dialect(
+    name="gw", keyword_first=False, pi_keyword=False,
+    own_words=("DEFINT", "DEFSNG", "DEFDBL", "DEFSTR", "XOR", "EQV", "IMP"), typed_numbers=True, print_digits=7,
+    width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
+    implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,
+    errors_when_reached=True, comma_trims_number=True, for_binds_next=True, largest_number=DOUBLE_LARGEST,
+    printer_width=80,
+)
+
+DIALECTS = {d.name: d for d in (CASIO, GW)}
+
+
+def get_dialect(name: "str | Dialect") -> Dialect:
+    """The dialect called ``name`` ("casio" or "gw", any case); a Dialect passes through.
+
+    Raises ``ValueError`` naming the choices for any other name.
+    """
+    if isinstance(name, Dialect):
+        return name
+    try:
+        return DIALECTS[name.lower()]
+    except KeyError:
+        raise ValueError(f"unknown dialect {name!r} (choose from {', '.join(DIALECTS)})") from None

@@ -1,0 +1,316 @@
+"""Sequential files for BASIC programs, confined to one directory.
+
+Every name a program (or the interactive session) gives is looked up in one
+directory, the *sandbox*: the current directory, or ``yaseer run --files DIR``.
+An absolute name, a ``..`` component, or a name that leads out of the directory
+through a symbolic link is ``Path/File access error`` (75); nothing is ever read or
+written outside it, and nothing at all is written unless the program opens a file
+for OUTPUT or APPEND (or KILLs / NAMEs one).
+
+The files are GW-BASIC's sequential files: text with CR LF line ends and a Ctrl-Z
+(``chr(26)``) written at CLOSE; reading stops at the first Ctrl-Z.  Characters are
+bytes (latin-1).  At most :data:`MAX_FILES` are open at once (GW-BASIC's default
+``/F:3``); file numbers 1..MAX_FILES.  Errors are GW-BASIC's: ``Bad file number``
+(52), ``File not found`` (53), ``Bad file mode`` (54), ``File already open`` (55),
+``File already exists`` (58), ``Input past end`` (62), ``Bad file name`` (64),
+``Path/File access error`` (75).
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import os
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # pathlib is imported where a file is used, not at start-up
+    from pathlib import Path
+
+from yaseer.basic.errors import (
+    BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
+    FILE_NOT_FOUND, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, BasicError, error_message,
+)
+from yaseer.basic.machine.runtime import cint
+from yaseer.basic.machine.screen import OutputStream
+
+MAX_FILES = 3
+END_OF_FILE = "\x1a"  # Ctrl-Z
+RECORD = 128  # bytes: LOC counts these
+_MODES = {"I": "I", "O": "O", "A": "A", "INPUT": "I", "OUTPUT": "O", "APPEND": "A"}
+
+
+def _error(code: int) -> BasicError:
+    return BasicError(error_message(code), code)
+
+
+class Sandbox:
+    """The one directory a program's files live in."""
+
+    def __init__(self, root: str | os.PathLike | None = None):
+        self._root = root if root is not None else os.getcwd()
+
+    @property
+    def root(self) -> Path:
+        """The directory (pathlib is imported at the first file operation, not at start-up)."""
+        from pathlib import Path
+
+        return Path(self._root)
+
+    def path(self, name: str) -> Path:
+        """The path of file ``name`` inside the sandbox; anything that would leave it is
+        ``Path/File access error``, an empty name ``Bad file name``."""
+        from pathlib import Path
+
+        if not name or "\x00" in name:
+            raise _error(BAD_FILE_NAME)
+        relative = Path(name.replace("\\", "/"))
+        if relative.is_absolute() or relative.drive or ".." in relative.parts or ":" in name:
+            raise _error(PATH_FILE_ACCESS_ERROR)
+        root = self.root.resolve()
+        candidate = root / relative
+        try:
+            resolved = candidate.resolve()
+        except (OSError, RuntimeError):  # a symbolic link loop
+            raise _error(PATH_FILE_ACCESS_ERROR) from None
+        if resolved != root and root not in resolved.parents:
+            raise _error(PATH_FILE_ACCESS_ERROR)
+        return candidate
+
+    def existing(self, name: str) -> Path:
+        path = self.path(name)
+        if not path.is_file():
+            raise _error(FILE_NOT_FOUND)
+        return path
+
+    def kill(self, name: str) -> None:
+        """KILL name: delete the file."""
+        path = self.existing(name)
+        try:
+            path.unlink()
+        except OSError:
+            raise _error(PATH_FILE_ACCESS_ERROR) from None
+
+    def rename(self, old: str, new: str) -> None:
+        """NAME old AS new."""
+        source = self.existing(old)
+        target = self.path(new)
+        if target.exists():
+            raise _error(FILE_ALREADY_EXISTS)
+        try:
+            source.rename(target)
+        except OSError:
+            raise _error(PATH_FILE_ACCESS_ERROR) from None
+
+    def listing(self, pattern: str | None = None) -> list[str]:
+        """FILES [pattern]: the names of the files in the sandbox that match (``*`` ``?``);
+        a pattern nothing matches is ``File not found`` (GW-BASIC)."""
+        if pattern is not None:
+            self.path(pattern.replace("*", "x").replace("?", "x"))  # the same rules for the pattern
+        names = sorted(p.name for p in self.root.iterdir() if p.is_file())
+        found = [n for n in names if fnmatch.fnmatch(n.upper(), (pattern or "*").upper())]
+        if pattern is not None and not found:
+            raise _error(FILE_NOT_FOUND)
+        return found
+
+
+    def directory(self, pattern: str | None = None) -> list[str]:
+        """FILES [pattern]: GW-BASIC's entries for the sandbox's directories (``.`` and
+        ``..`` too) then its files, each sorted, whose 8.3 names match ``pattern``
+        (``*`` ``?``; name and extension matched apart, as DOS does: ``A*`` is only
+        names without extension); each entry 17 columns: :func:`directory_entry`.
+        Names starting with ``.`` are hidden."""
+        if pattern is not None:
+            if not pattern:
+                raise _error(BAD_FILE_NAME)
+            self.path(pattern.replace("*", "x").replace("?", "x"))  # the same rules for the pattern
+        mask = dos_split((pattern or "*.*").upper())
+        dirs, files = [("", ""), ("", ".")], []
+        for p in self.root.iterdir():
+            if not p.name.startswith("."):
+                (dirs if p.is_dir() else files).append(dos_split(p.name.upper()))
+        return [directory_entry(name, is_dir) for group, is_dir in ((dirs, True), (files, False))
+                for name in sorted(n for n in group if all(map(fnmatch.fnmatchcase, n, mask)))]
+
+    def free_bytes(self) -> int:
+        """The free bytes of the sandbox's disk (FILES' last line)."""
+        import shutil
+
+        return shutil.disk_usage(self.root).free
+
+
+def dos_split(name: str) -> tuple[str, str]:
+    """A name as DOS shows it: (name, extension) split at the first ``.``, clipped to
+    8 and 3 characters with ``+`` marking a clipped one (``LONGNAME1.DAT`` is
+    ``LONGNAM+``, ``DAT``)."""
+    trunk, _, ext = name.partition(".")
+    if len(trunk) > 8:
+        trunk = trunk[:7] + "+"
+    if len(ext) > 3:
+        ext = ext[:2] + "+"
+    return trunk, ext
+
+
+def directory_entry(name: tuple[str, str], is_dir: bool) -> str:
+    """One FILES entry: the name in 8 columns, ``.`` and the extension in 4, then
+    ``<DIR>`` or 5 blanks (``A       .BAS     ``; ``.`` itself is ``        .   <DIR>``)."""
+    trunk, ext = name
+    return trunk.ljust(8) + ("." if ext or not trunk else " ") + ext.ljust(3) + ("<DIR>" if is_dir else " " * 5)
+
+
+class OpenFile:
+    """One open sequential file: ``mode`` "I", "O" or "A"."""
+
+    def __init__(self, path: Path, mode: str):
+        self.path, self.mode = path, mode
+        if mode == "I":
+            data = path.read_bytes().decode("latin-1")
+            cut = data.find(END_OF_FILE)
+            self.data = data if cut < 0 else data[:cut]
+            self.size = len(data)
+            self.position = 0
+            self.stream = None
+        else:
+            if mode == "A" and path.is_file():
+                old = path.read_bytes().decode("latin-1")
+                cut = old.find(END_OF_FILE)
+                path.write_bytes((old if cut < 0 else old[:cut]).encode("latin-1"))
+            handle = open(path, "a" if mode == "A" else "w", encoding="latin-1", newline="\r\n")
+            self.stream = OutputStream(handle)
+            self.written = handle.tell()
+
+    # -- output
+    def output(self) -> OutputStream:
+        if self.stream is None:
+            raise _error(BAD_FILE_MODE)
+        return self.stream
+
+    def close(self) -> None:
+        if self.stream is not None:
+            self.stream.stream.write(END_OF_FILE)
+            self.stream.stream.close()
+
+    # -- input
+    def _input(self) -> str:
+        if self.stream is not None:
+            raise _error(BAD_FILE_MODE)
+        return self.data
+
+    def at_end(self) -> bool:
+        return self.position >= len(self._input())
+
+    def read_chars(self, n: int) -> str:
+        data = self._input()
+        if self.position + n > len(data):
+            raise _error(INPUT_PAST_END)
+        text = data[self.position:self.position + n]
+        self.position += n
+        return text
+
+    def read_line(self) -> str:
+        """LINE INPUT #: the text up to the line end (CR LF, or LF), which is consumed."""
+        data = self._input()
+        if self.position >= len(data):
+            raise _error(INPUT_PAST_END)
+        end = data.find("\n", self.position)
+        end = len(data) if end < 0 else end
+        line = data[self.position:end]
+        self.position = end + 1
+        return line[:-1] if line.endswith("\r") else line
+
+    def read_field(self, numeric: bool) -> str:
+        """One INPUT # field: blanks and line ends before it skipped; a number ends at a
+        blank, comma or line end, a string at a comma or line end (a quoted one at its
+        closing quote, and text after that begins the next field, as in PC-BASIC); the
+        comma or line end after it is consumed."""
+        data = self._input()
+        n = len(data)
+        i = self.position
+        while i < n and data[i] in " \r\n":
+            i += 1
+        if i >= n:
+            raise _error(INPUT_PAST_END)
+        if not numeric and data[i] == '"':
+            close = data.find('"', i + 1)
+            close = n if close < 0 else close
+            text, i = data[i + 1:close], close + 1
+            while i < n and data[i] == " ":
+                i += 1
+        else:
+            stops = " ,\r\n" if numeric else ",\r\n"
+            start = i
+            while i < n and data[i] not in stops:
+                i += 1
+            text = data[start:i] if numeric else data[start:i].rstrip(" ")
+        while numeric and i < n and data[i] == " ":
+            i += 1
+        if i < n and data[i] == "\r":
+            i += 1
+        if i < n and data[i] in ",\n":
+            i += 1
+        self.position = i
+        return text
+
+    # -- LOF, LOC
+    def length(self) -> int:
+        if self.stream is not None:
+            self.stream.flush()
+            return self.stream.stream.tell()
+        return self.size
+
+    def records(self) -> int:
+        """LOC: 128-byte records written, or read into the buffer (reading starts with one)."""
+        if self.stream is not None:
+            return self.length() // RECORD
+        return self.position // RECORD + 1
+
+
+class FileTable:
+    """The open files of a machine, by file number, all inside one :class:`Sandbox`."""
+
+    def __init__(self, sandbox: Sandbox | None = None):
+        self.sandbox = sandbox or Sandbox()
+        self.open_files: dict[int, OpenFile] = {}
+
+    @staticmethod
+    def number(n) -> int:
+        k = cint(n)
+        if not 1 <= k <= MAX_FILES:
+            raise _error(BAD_FILE_NUMBER)
+        return k
+
+    def open(self, mode: str, n, name: str) -> None:
+        """OPEN: ``mode`` "I"/"O"/"A" (or INPUT, OUTPUT, APPEND) as file number ``n``."""
+        kind = _MODES.get(mode.strip().upper())
+        if kind is None:
+            raise _error(BAD_FILE_MODE)
+        k = self.number(n)
+        if k in self.open_files:
+            raise _error(FILE_ALREADY_OPEN)
+        path = self.sandbox.existing(name) if kind == "I" else self.sandbox.path(name)
+        if any(f.path.resolve() == path.resolve() and (kind != "I" or f.mode != "I")
+               for f in self.open_files.values()):
+            raise _error(FILE_ALREADY_OPEN)
+        try:
+            self.open_files[k] = OpenFile(path, kind)
+        except IsADirectoryError:
+            raise _error(PATH_FILE_ACCESS_ERROR) from None
+        except OSError:
+            raise _error(PATH_FILE_ACCESS_ERROR) from None
+
+    def get(self, n) -> OpenFile:
+        f = self.open_files.get(self.number(n))
+        if f is None:
+            raise _error(BAD_FILE_NUMBER)
+        return f
+
+    def close(self, numbers=()) -> None:
+        """CLOSE [n, ...]: the files named (no error for one not open), or all."""
+        for k in ([self.number(n) for n in numbers] if numbers else list(self.open_files)):
+            f = self.open_files.pop(k, None)
+            if f is not None:
+                f.close()
+
+    def kill(self, name: str) -> None:
+        path = self.sandbox.existing(name)
+        if any(f.path.resolve() == path.resolve() for f in self.open_files.values()):
+            raise _error(FILE_ALREADY_OPEN)
+        self.sandbox.kill(name)

@@ -1,0 +1,326 @@
+"""GW-BASIC's string, conversion and clock functions, for both dialects.
+
+Strings are Python ``str`` whose characters stand for bytes (``chr(0)``..``chr(255)``).
+Numbers come in and go out as Python floats.  Errors are GW-BASIC's: a count or
+character code out of range is ``Illegal function call``, a value that does not fit
+its integer or binary format ``Overflow``.
+
+Also here: :func:`read_number`, the one reader of numbers typed as text (VAL, INPUT,
+READ of DATA items), which follows GW-BASIC's rules and not Python's float syntax
+(``"1_2"``, ``"inf"``, ``"nan"`` are not numbers).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+import time
+
+from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, OVERFLOW
+from yaseer.basic.machine.runtime import cint
+
+_MAX_DOUBLE = 1.7976931348623157e308
+
+
+def _illegal() -> BasicError:
+    return BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+
+
+def _overflow() -> BasicError:
+    return BasicError("Overflow", OVERFLOW)
+
+
+def _count(n: float, low: int = 0, high: int = 255) -> int:
+    """A count or code argument: rounded, ``low``..``high`` or Illegal function call."""
+    k = cint(n)
+    if not low <= k <= high:
+        raise _illegal()
+    return k
+
+
+def _integer(n: float) -> int:
+    """A 16-bit integer argument (-32768..32767), else Overflow."""
+    k = cint(n)
+    if not -32768 <= k <= 32767:
+        raise _overflow()
+    return k
+
+
+# ------------------------------------------------------------------ strings
+
+
+def instr(*args) -> float:
+    """INSTR([start,] s, t): the 1-based position of t in s from ``start``, 0 if absent.
+
+    An empty t is found at ``start`` when start <= LEN(s) (GW-BASIC); start 1..255.
+    """
+    start, s, t = args if len(args) == 3 else (1.0, *args)
+    k = _count(start, 1, 255)
+    if k > len(s):
+        return 0.0
+    return float(s.find(t, k - 1) + 1)
+
+
+def string_dollar(n: float, fill) -> str:
+    """STRING$(n, code) or STRING$(n, s): n copies of a character (s: its first)."""
+    k = _count(n)
+    if isinstance(fill, str):
+        return fill[:1] * k  # an empty string gives "" (PC-BASIC)
+    return chr(_count(fill)) * k
+
+
+def space_dollar(n: float) -> str:
+    return " " * _count(n)
+
+
+def _unsigned_word(n: float) -> int:
+    """HEX$/OCT$ argument: -65536..65535, taken modulo 2^16 (-1 is FFFF)."""
+    k = cint(n)
+    if not -65536 <= k <= 65535:
+        raise _overflow()
+    return k & 0xFFFF
+
+
+def hex_dollar(n: float) -> str:
+    return format(_unsigned_word(n), "X")
+
+
+def oct_dollar(n: float) -> str:
+    return format(_unsigned_word(n), "o")
+
+
+# ------------------------------------------------------------------ binary formats
+# MKI$: a 16-bit two's-complement integer, low byte first.  MKS$ / MKD$: Microsoft
+# Binary Format, the mantissa's bytes low first, then the exponent byte:
+#   value = 0.1mmm...(binary) * 2^(exponent - 128), the mantissa's leading 1 not
+#   stored (its place holds the sign bit); exponent byte 0 means the value 0.
+# Single: 24-bit mantissa (3 bytes), double: 56-bit mantissa (7 bytes).
+
+
+def _bytes_to_str(data) -> str:
+    return "".join(map(chr, data))
+
+
+def _str_to_bytes(s: str, size: int) -> bytes:
+    if len(s) < size:
+        raise _illegal()
+    return bytes(ord(ch) & 0xFF for ch in s[:size])
+
+
+def mki(n: float) -> str:
+    return _bytes_to_str(_integer(n).to_bytes(2, "little", signed=True))
+
+
+def cvi(s: str) -> float:
+    return float(int.from_bytes(_str_to_bytes(s, 2), "little", signed=True))
+
+
+def _to_mbf(x: float, mantissa_bits: int) -> bytes:
+    """``x`` in Microsoft Binary Format with a ``mantissa_bits`` mantissa (rounded half up)."""
+    size = mantissa_bits // 8 + 1
+    if x == 0:
+        return bytes(size)
+    m, e = math.frexp(abs(x))  # abs(x) = m * 2**e, 0.5 <= m < 1
+    mantissa = math.floor(m * 2 ** mantissa_bits + 0.5)
+    if mantissa >= 2 ** mantissa_bits:  # rounding carried into a new leading bit
+        mantissa >>= 1
+        e += 1
+    exponent = e + 128
+    if exponent > 255:
+        raise _overflow()
+    if exponent <= 0:
+        return bytes(size)  # below the smallest MBF number: 0
+    mantissa &= ~(1 << (mantissa_bits - 1))  # the implicit leading 1 ...
+    if x < 0:
+        mantissa |= 1 << (mantissa_bits - 1)  # ... makes room for the sign
+    return mantissa.to_bytes(size - 1, "little") + bytes((exponent,))
+
+
+def _from_mbf(data: bytes) -> float:
+    exponent = data[-1]
+    if exponent == 0:
+        return 0.0
+    bits = 8 * (len(data) - 1)
+    mantissa = int.from_bytes(data[:-1], "little")
+    negative = mantissa >> (bits - 1)
+    mantissa |= 1 << (bits - 1)
+    value = math.ldexp(mantissa, exponent - 128 - bits)
+    return -value if negative else value
+
+
+def mks(x: float) -> str:
+    return _bytes_to_str(_to_mbf(x, 24))
+
+
+def mkd(x: float) -> str:
+    return _bytes_to_str(_to_mbf(x, 56))
+
+
+def cvs(s: str) -> float:
+    return _from_mbf(_str_to_bytes(s, 4))
+
+
+def cvd(s: str) -> float:
+    return _from_mbf(_str_to_bytes(s, 8))
+
+
+# ------------------------------------------------------------------ clock
+
+
+def timer() -> float:
+    """TIMER: seconds since midnight (local time), to the hundredth."""
+    now = time.localtime()
+    fraction = time.time() % 1.0
+    return round(now.tm_hour * 3600 + now.tm_min * 60 + now.tm_sec + fraction, 2)
+
+
+def date_dollar() -> str:
+    """DATE$: ``MM-DD-YYYY``."""
+    return time.strftime("%m-%d-%Y")
+
+
+def time_dollar() -> str:
+    """TIME$: ``HH:MM:SS`` (24-hour)."""
+    return time.strftime("%H:%M:%S")
+
+
+# ------------------------------------------------------------------ reading numbers
+
+_BLANKS = " \t\n"
+_DECIMAL = re.compile(r"([+-]?)(\d*)(?:\.([\d.]*))?")  # points after the first are skipped
+_EXPONENT = re.compile(r"[ED]([+-]?)(\d*)")
+_RADIX = {"H": (16, "0123456789ABCDEF"), "O": (8, "01234567")}
+
+
+def read_number(text: str, largest: float | None = None) -> tuple[float, int]:
+    """The number at the start of ``text`` as GW-BASIC reads it, and where it ends.
+
+    Blanks (space, tab, line feed) anywhere in it are skipped (``"1 2"`` is 12);
+    then an optional sign, digits with one optional point, an optional exponent
+    ``E`` or ``D`` with sign and digits (an exponent without digits is 0), or
+    ``&H`` hexadecimal / ``&O`` or ``&`` octal (16-bit, ``&HFFFF`` is -1).  Points
+    after the first are skipped (``"1.2.3"`` is 1.23, as PC-BASIC reads it).  What
+    follows the number is not read: ``"1_2"`` is 1.  No number at all is (0, 0).
+    Beyond the double range is ``Overflow``; with ``largest`` (the dialect's
+    ``largest_number``) a number beyond it is an infinity of its sign instead, which
+    the caller passes to the dialect's overflow policy (yaseer/basic/arithmetic/arith_policy.py).
+    """
+    value, end, _, _ = _read(text, largest)
+    return value, end
+
+
+def val_typed(text: str, largest: float) -> tuple[float, str]:
+    """VAL in gw: the number (:func:`read_number`) and the type GW-BASIC's reader gives
+    it, as its tokeniser types a literal: ``"#"`` for a ``D`` exponent, a ``#`` after
+    it or more than 7 significant digits, else ``"!"`` (``&H``/``&O`` numbers too),
+    whose value is the one GW's conversion gives (``values.single_literal``),
+    infinite beyond the single range."""
+    value, _, kind, literal = _read(text, largest)
+    if kind == "!" and literal and 0.0 < abs(value) < math.inf:
+        from yaseer.basic.arithmetic.values import single_literal, to_single
+
+        value = math.copysign(to_single(single_literal(literal)), value)
+    return value, kind
+
+
+def _read(text: str, largest: float | None) -> tuple[float, int, str, str]:
+    """(value, end, type, the decimal literal's digits as ``values.single_literal`` reads
+    them, "" for ``&H``/``&O``) of the number at the start of ``text``."""
+    packed, where = [], []  # the characters without blanks, and their positions
+    for k, ch in enumerate(text):
+        if ch not in _BLANKS:
+            packed.append(ch.upper())
+            where.append(k)
+    s = "".join(packed)
+    if s.startswith("&"):
+        value, used = _read_radix(s)
+        kind, literal = "!", ""
+    else:
+        value, used, kind, literal = _read_decimal(s, largest)
+    end = where[used - 1] + 1 if used else 0
+    return value, end, kind, literal
+
+
+def _read_decimal(s: str, largest: float | None = None) -> tuple[float, int, str, str]:
+    match = _DECIMAL.match(s)
+    sign, whole, fraction = match.group(1), match.group(2), (match.group(3) or "").replace(".", "")
+    if not whole and not fraction:
+        return 0.0, 0, "!", ""
+    used = match.end()
+    exponent = 0
+    found = _EXPONENT.match(s, used)
+    if found:
+        exponent = int(found.group(2) or "0") * (-1 if found.group(1) == "-" else 1)
+        used = found.end()
+    digits = (whole + fraction).lstrip("0") or "0"
+    if digits != "0" and len(digits) - len(fraction) + exponent > 310:
+        value = math.inf
+    else:
+        value = abs(float(f"{whole or '0'}.{fraction or '0'}e{max(min(exponent, 400), -400)}"))
+    if value > (_MAX_DOUBLE if largest is None else largest):
+        if largest is None:
+            raise _overflow()
+        value = math.inf
+    from yaseer.basic.source.scanner import SINGLE_DIGITS
+
+    significant = (whole + fraction).strip("0") if match.group(3) is not None else whole.lstrip("0")
+    after = s[used:used + 1]
+    double = (found is not None and found.group(0)[0] == "D") or after == "#" or (
+        after != "!" and len(significant) > SINGLE_DIGITS)
+    literal = f"{whole or '0'}.{fraction}E{exponent}"
+    return (-value if sign == "-" else value), used, "#" if double else "!", literal
+
+
+def _read_radix(s: str) -> tuple[float, int]:
+    used = 1
+    base, digits = _RADIX["O"]
+    if s[1:2] in _RADIX:
+        base, digits = _RADIX[s[1]]
+        used = 2
+    start = used
+    while used < len(s) and s[used] in digits:
+        used += 1
+    value = int(s[start:used], base) if used > start else 0
+    if value > 0xFFFF:
+        raise _overflow()
+    return float(value - 0x10000 if value > 0x7FFF else value), used
+
+
+def val(s: str, largest: float | None = None) -> float:
+    """VAL: the number at the start of ``s`` (see :func:`read_number`), 0 if none."""
+    return read_number(s, largest)[0]
+
+
+def number_field(text: str, largest: float | None = None) -> float | None:
+    """A whole INPUT or DATA field as a number, or None if it is not exactly one number
+    (blanks around and inside it allowed; an empty field is 0; ``largest`` as in
+    :func:`read_number`)."""
+    if not text.strip(_BLANKS):
+        return 0.0
+    value, end = read_number(text, largest)
+    if end == 0 or text[end:].strip(_BLANKS):
+        return None
+    return value
+
+
+def mid_assign(target: str, start: float, count, value: str) -> str:
+    """MID$(target, start[, count]) = value: ``target`` with characters from ``start``
+    replaced by those of ``value`` (at most ``count``, never past the end of ``target``)."""
+    i = _count(start, 1, 255)
+    if i > len(target):
+        raise _illegal()
+    n = len(value) if count is None else min(_count(count), len(value))
+    n = min(n, len(target) - i + 1)
+    return target[:i - 1] + value[:n] + target[i - 1 + n:]
+
+
+def logical_xor(a: float, b: float) -> float:
+    return float(cint(a) ^ cint(b))
+
+
+def logical_eqv(a: float, b: float) -> float:
+    return float(~(cint(a) ^ cint(b)))
+
+
+def logical_imp(a: float, b: float) -> float:
+    return float(~cint(a) | cint(b))

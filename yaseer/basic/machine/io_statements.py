@@ -1,0 +1,350 @@
+"""The BASIC machine's input and output: PRINT and LPRINT (comma zones, TAB, SPC,
+csv rows, the line hooks), PRINT USING, WRITE, INPUT and LINE INPUT, INPUT$, the
+screen's settings (CLS, WIDTH, TRON's ``[n]``) and the file statements' I/O
+(PRINT #n, INPUT #n, FILES; the files themselves: files.py).  The
+:class:`InputOutput` mixin of :class:`yaseer.basic.machine.machine.Machine`."""
+
+from __future__ import annotations
+
+import sys
+
+from yaseer.basic.arithmetic import formatting, values
+
+from yaseer.basic.machine import gwfunctions, runtime
+from yaseer.basic.errors import (
+    BasicError, BAD_FILE_NAME, FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END,
+)
+from yaseer.basic.machine.signals import BreakPoint
+from yaseer.basic.machine.screen import DEVICE_WIDTHS, SCREEN_WIDTHS, OutputStream
+
+
+class Tab:
+    __slots__ = ("column",)
+
+    def __init__(self, column):
+        self.column = column
+
+
+class Spc:
+    __slots__ = ("count",)
+
+    def __init__(self, count):
+        self.count = count
+
+
+COMMA = object()
+NUMBER_THEN_COMMA = object()  # marks a PRINT number a comma follows (GW's blank rule)
+
+
+class InputOutput:
+    """PRINT, INPUT and the file statements' I/O on the machine's streams (``screen``,
+    ``printer``, ``input_stream``, ``files``).  A mixin of ``Machine``, on its state."""
+
+    def trace_line(self, number: int) -> None:
+        """TRON's ``[n]`` as line ``n`` starts (on the screen, like PRINT without a newline)."""
+        self.screen.write(f"[{number}]")
+
+    def clear_screen(self) -> None:
+        """CLS: clear the screen if the screen can be cleared; the next PRINT starts at column 1."""
+        if self.on_clear_screen is not None:
+            self.on_clear_screen()
+        self.screen.column = 0
+
+    def set_width(self, columns, printer: bool = False) -> None:
+        """WIDTH n: the screen's width, 40 or 80 columns as GW-BASIC's text screen has
+        (any other n is Illegal function call); PRINT wraps there from now on.
+        WIDTH LPRINT n: the printer's, 0..255 (0 acts as 1, 255 never wraps, as
+        PC-BASIC 2.0.8 has it); nothing changes while LPRINT goes to the screen."""
+        n = runtime.cint(columns)
+        if printer:
+            if not 0 <= n <= 255:
+                raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+            if self.printer is not self.screen:
+                self.printer.width = None if n == 255 else max(n, 1)
+            return
+        if n not in SCREEN_WIDTHS:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self.screen.width = n
+
+    def set_device_width(self, device: str, columns) -> None:
+        """WIDTH "dev", n: ``LPT1:`` is WIDTH LPRINT n (GW-BASIC's source, GIOLPT.ASM
+        ``LPTSWD``, sets the width LPRINT wraps at), ``SCRN:`` WIDTH n; the other devices
+        GW-BASIC has take 0..255 and change nothing yaseer shows (``KYBD:`` refuses it,
+        Illegal function call); any other text is ``Bad file name``."""
+        action = DEVICE_WIDTHS.get(device.upper())
+        if action is None:
+            raise BasicError("Bad file name", BAD_FILE_NAME)
+        if action == "screen":
+            self.set_width(columns)
+        elif action == "printer":
+            self.set_width(columns, printer=True)
+        elif action == "refused" or not 0 <= runtime.cint(columns) <= 255:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+
+    def print_items(self, device: int, items: tuple, newline: bool, end: bool = True) -> None:
+        """PRINT / LPRINT: values, comma zones, TAB and SPC; ``newline`` ends the line.
+
+        A statement may print in several calls; ``end`` marks its last.  In csv
+        output a row is a printed line: the values of every PRINT up to the one
+        that ends the line (so rows of one kind have one length).
+        """
+        stream = self.streams[device]
+        if self.line_hooks:
+            self._note_values(device, [_printed_value(v) for v in items if not isinstance(v, (Tab, Spc))
+                                       and v is not COMMA and v is not NUMBER_THEN_COMMA], newline)
+        if self.csv:
+            for v in items:
+                if type(v) is not float and type(v) is not str:
+                    v = _as_number(v)
+                if type(v) is float:
+                    if v - v:
+                        runtime.overflow()
+                    stream.row.append(repr(v))
+                elif type(v) is str:
+                    stream.row.append(v)
+            if end and newline:
+                self._csv_row(stream)
+            return
+        self._lay_out(stream, items, newline)
+
+    def _lay_out(self, stream: OutputStream, items: tuple, newline: bool) -> None:
+        """PRINT's items as text on ``stream`` (the screen, the printer or a file)."""
+        comma_follows = False
+        for item in items:
+            kind = type(item)
+            if kind is not float and kind is not str and isinstance(item, (int, float)):
+                # casio: e.g. a numpy float a Python area stored; gw: an integer or a double
+                item, kind = self._printed_number(item), float
+            if kind is float:
+                if item - item:
+                    item = self.arith.overflowed(item, "#" if isinstance(item, values.Double) else "!")
+                text = self._number_text(item)
+                if comma_follows:
+                    text = self._blank_before_comma(stream, text)
+                    comma_follows = False
+                stream.item(text)
+            elif kind is str:
+                stream.item(item)
+            elif item is COMMA:
+                stream.comma(self.dialect.zone)
+            elif item is NUMBER_THEN_COMMA:
+                comma_follows = self.dialect.comma_trims_number
+            elif kind is Tab:
+                column = runtime.cint(item.column)
+                if column > 255 and stream.width is None:
+                    raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+                stream.tab(column)
+            elif kind is Spc:
+                count = runtime.cint(item.count)
+                if (count < 0 or count > 255) and stream.width is None:
+                    raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+                stream.spc(count)
+        if newline:
+            stream.write("\n")
+
+    def _blank_before_comma(self, stream: OutputStream, text: str) -> str:
+        """A number a comma follows loses its trailing blank when it would end just
+        before a zone (so the comma moves one column, not a whole zone): GW-BASIC's
+        PRINT code, GIO86.ASM ``MODCOM``; PC-BASIC 2.0.8 keeps the blank."""
+        zone, width = self.dialect.zone, stream.width
+        end = stream.column + len(text) - 1  # the column after the number without its blank
+        if width is not None and width >= zone and end >= zone * (width // zone - 1):
+            return text
+        return text[:-1] if (end + 1) % zone == 0 else text
+
+    def print_using(self, device: int, fmt: str, values: tuple, newline: bool) -> None:
+        """PRINT USING fmt; values (the format rules live in ``formatting.using``)."""
+        stream = self.streams[device]
+        values = [v if type(v) is float or type(v) is str else _as_number(v) for v in values]
+        for v in values:
+            if type(v) is float and v - v:
+                runtime.overflow()
+        if self.line_hooks:
+            self._note_values(device, values, newline)
+        if self.csv:
+            stream.row.extend(repr(v) if type(v) is float else v for v in values)
+            if newline:
+                self._csv_row(stream)
+            return
+        stream.write(formatting.using(fmt, values))
+        if newline:
+            stream.write("\n")
+
+    def _note_values(self, device: int, values: list, newline) -> None:
+        """Collect a printed line's values; at its end hand them to the line hooks."""
+        line = self._line_values[device]
+        line.extend(values)
+        if newline:
+            printed = line.copy()
+            line.clear()
+            for hook in self.line_hooks:
+                hook(device, printed)
+
+    def _csv_row(self, stream: OutputStream) -> None:
+        """Write the csv row of the line ``stream`` was printing (its values so far)."""
+        import csv  # here: only --format csv and INPUT need it (start-up)
+
+        writer = csv.writer(stream.stream, lineterminator="\n")
+        writer.writerow(stream.row)
+        stream.row = []
+        stream.column = 0
+
+    def input_values(self, prompt, question_mark: bool, kinds: str, again: tuple | None = None) -> list:
+        """INPUT: prompt, read one line, split at commas; wrong values ask again.
+
+        ``again``: (the block of area 0 this INPUT starts, its line); see :meth:`_read_line`.
+        """
+        while True:
+            line = self._read_line((prompt or "") + ("? " if question_mark or prompt is None else ""), again)
+            values = _parse_input(line, kinds, self.dialect.largest_number)
+            if values is not None:
+                return values
+            self.screen.write("?Redo from start\n")
+
+    def line_input(self, prompt, again: tuple | None = None) -> str:
+        """LINE INPUT ["prompt";] a$: the whole line, commas and quotes included (its
+        trailing blanks dropped, as GW-BASIC's screen editor drops them); ``again``
+        as for INPUT (see :meth:`_read_line`)."""
+        return self._read_line(prompt or "", again).rstrip(" ")
+
+    def _read_line(self, prompt: str, again: tuple | None = None) -> str:
+        """Show ``prompt``, read one line of input (without its line end); the end of
+        the input is ``Input past end``.
+
+        ``again``: (a block of area 0 that starts with this statement, its line); with
+        ``resumable_breaks`` a Ctrl-C while the line is awaited (or one that came just
+        before) is a break that CONT resumes by running that block: asking again, as
+        GW-BASIC does.  Otherwise a Ctrl-C here breaks at once.
+        """
+        stream = self.input_stream if self.input_stream is not None else sys.stdin
+        self._reading_input = True  # a Ctrl-C now breaks at once
+        try:
+            if self._break_armed is not None and again is not None:
+                raise KeyboardInterrupt  # a Ctrl-C came just before: the break lands here
+            self.screen.write(prompt)
+            self.screen.flush()
+            line = stream.readline()
+        except KeyboardInterrupt:
+            if again is None or not self.resumable_breaks:
+                raise
+            raise BreakPoint(0, again[0], again[1], (), self.area_depth) from None
+        finally:
+            self._reading_input = False
+        if not line:
+            raise BasicError("Input past end", INPUT_PAST_END)
+        if self.input_stream is not None:
+            self.screen.write(line if line.endswith("\n") else line + "\n")
+        else:
+            self.screen.column = 0
+        return line.rstrip("\r\n")
+
+    def end_line(self) -> None:
+        """Finish a partly printed line (before an error message, as MS-BASIC does; csv: its row)."""
+        if self.csv:
+            for stream in dict.fromkeys(self.streams):
+                if stream.row:
+                    self._csv_row(stream)
+        elif self.screen.column:
+            self.screen.new_row()
+
+    def flush(self) -> None:
+        for stream in self.streams:
+            try:
+                stream.flush()
+            except (OSError, ValueError):
+                pass
+
+    # ------------------------------------------------------------ files (files.py)
+    def print_to(self, stream, items: tuple, newline: bool, end: bool = True) -> None:
+        """PRINT #n: the items laid out on the file's stream as on the screen (no csv, no hooks)."""
+        self._lay_out(stream, items, newline)
+
+    def print_using_to(self, stream, fmt: str, values: tuple, newline: bool) -> None:
+        """PRINT #n, USING."""
+        stream.write(formatting.using(fmt, [v if type(v) is float or type(v) is str else _as_number(v)
+                                            for v in values]))
+        if newline:
+            stream.write("\n")
+
+    def write_to(self, stream, pieces: tuple) -> None:
+        """WRITE #n."""
+        stream.write(",".join(pieces) + "\n")
+
+    def file_number(self, n) -> float:
+        """INPUT #n into a numeric variable: one field, read as GW-BASIC reads numbers."""
+        return gwfunctions.val(self.files.get(n).read_field(True), self.dialect.largest_number)
+
+    def input_chars(self, count, n=None) -> str:
+        """INPUT$(count[, #n]): ``count`` characters of the file (or of the input)."""
+        k = runtime.cint(count)
+        if not 1 <= k <= 255:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        if n is not None:
+            return self.files.get(n).read_chars(k)
+        stream = self.input_stream if self.input_stream is not None else sys.stdin
+        text = stream.read(k)
+        if len(text) < k:
+            raise BasicError("Input past end", INPUT_PAST_END)
+        return text
+
+    def list_files(self, pattern) -> None:
+        """FILES [pattern]: GW-BASIC's listing: the directory (``C:\\``, the sandbox as
+        a drive's root), the matching entries in as many columns of 18 as the width
+        has 20s, the disk's bytes free, an empty line; nothing matching is ``File not
+        found`` after the directory line (as PC-BASIC 2.0.8 prints it)."""
+        sandbox = self.files.sandbox
+        entries = sandbox.directory(pattern)
+        self.print_items(0, ("C:\\",), True)
+        if not entries:
+            raise BasicError("File not found", FILE_NOT_FOUND)
+        columns = max(1, (self.screen.width or 80) // 20)
+        for k in range(0, len(entries), columns):
+            self.print_items(0, (" ".join(entries[k:k + columns]),), True)
+        self.print_items(0, (f" {sandbox.free_bytes()} Bytes free",), True)
+        self.print_items(0, (), True)
+
+    def write_values(self, device: int, pieces: tuple) -> None:
+        """WRITE: the items (already as text: strings quoted, numbers without blanks)
+        separated by commas, then the line end."""
+        self.print_items(device, (",".join(pieces),), True)
+
+
+def _printed_value(value):
+    """A printed item as a line hook sees it: str stays, any number becomes a float."""
+    return value if type(value) is str else float(value)
+
+
+def _same(value):
+    return value
+
+
+def _as_number(value):
+    """A number some Python area stored (int, numpy float) as a Python float; else as is."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return float(value)
+    return value
+
+
+def _parse_input(text: str, kinds: str, largest: float | None = None):
+    """The values of one INPUT line for targets of ``kinds`` ("n"/"s"), or None to redo
+    (``largest``: see gwfunctions.read_number)."""
+    import csv
+
+    reader = csv.reader([text], skipinitialspace=True)
+    fields = next(reader, None) or [""]  # an empty answer is one empty value: 0 or ""
+    if len(fields) != len(kinds):
+        return None
+    values = []
+    for field_text, kind in zip(fields, kinds):
+        if kind == "s":
+            values.append(field_text)
+            continue
+        try:
+            value = gwfunctions.number_field(field_text, largest)
+        except BasicError:  # beyond the double range
+            return None
+        if value is None:
+            return None
+        values.append(value)
+    return values
+

@@ -1,0 +1,606 @@
+"""The BASIC machine: the coordinator of a run.
+
+A :class:`Machine` holds the state a pocket computer holds: scalars (a dict
+name -> float or str), arrays (name -> list, nested for more than one
+dimension), the GOSUB/FOR stack, the program areas (area 0 is the listing;
+``GOSUB PROG n`` runs area n, a Python callable or another BASIC program that
+shares the variables), the screen and printer streams.
+
+Typical use::
+
+    m = Machine()
+    m.load(text)          # area 0; lines are kept as line -> text
+    m.run()               # compiles on RUN, raises BasicError on an error
+    m.execute_direct("PRINT A")
+
+Python program areas use ``array(name)``, ``scalar(name)``, ``set_scalar``.
+
+This module keeps the programs (load, compile, the namespace the generated code
+runs with), the program areas, the run loop and RND; the machine's other jobs are
+mixins of their own modules in this wing, on the same state:
+
+* :mod:`.variables` - scalars and arrays (the Python-area API), DIM, ERASE, CLEAR;
+* :mod:`.stack` - the GOSUB/FOR stack, ON x GOTO, FN, STOP;
+* :mod:`.signals` - the exceptions that end or redirect a run, the BASIC error
+  of a Python exception, ON ERROR GOTO / RESUME / ERROR;
+* :mod:`.breaks` - Ctrl-C (a break CONT can resume) and CONT;
+* :mod:`.io_statements` - PRINT, PRINT USING, WRITE, INPUT, the screen's settings, file I/O.
+
+The mixins' contract.  Each mixin is a class without ``__init__`` whose methods run
+on a :class:`Machine`: they may read and write the state :meth:`Machine.__init__`
+sets (``scalars``, ``arrays``, ``stack``, ``screen``, ``printer``, ``files``,
+``dialect``, ``arith``, ``compiled``, ``namespaces``, ``line``, ...) and call each
+other's public methods, and they add no state of their own outside the names
+``__init__`` creates.  A mixin imports only modules below the machine (errors, the
+numbers, the runtime functions, the screen): never this module nor another mixin's
+class (only the exceptions of :mod:`.signals` and :class:`.stack.ForFrame`).
+Mixins, not separate objects the machine holds, because the generated code and the
+hot paths reach them as ``_M.method(...)``: a part held as ``_M.part.method(...)``
+and reading the state back through ``self.machine`` cost 1.2-1.6 times as much a call
+in a micro-benchmark of the FOR-stack push (CPU time, CPython 3.11).
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+from functools import lru_cache
+
+from yaseer.basic.arithmetic import arith_policy, formatting, values
+from yaseer.basic.compile.number_models import initial_value
+from yaseer.basic.compile import program_cache
+from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  MAX_STACK: GOSUB returns + open FOR loops together
+from yaseer.basic.dialects import dialect as dialects
+from yaseer.basic.machine import gwfunctions, runtime, val_numbers
+from yaseer.basic.machine.files import FileTable, Sandbox
+from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
+    BasicError, OutputError, BREAK, INPUT_PAST_END, OUT_OF_DATA, OUT_OF_MEMORY, SYNTAX_ERROR, UNDEFINED_PROGRAM_AREA,
+)
+from yaseer.basic.machine.breaks import Breaks, _interrupt_handler
+from yaseer.basic.machine.signals import (  # noqa: F401  (the run-time exceptions are re-exported)
+    END, INTERNAL_ERROR, BreakPoint, DirectJump, ErrorTrapping, ProgramEnd, ProgramStop, to_basic_error,
+)
+from yaseer.basic.machine.io_statements import (  # noqa: F401  (the PRINT items are re-exported)
+    COMMA, NUMBER_THEN_COMMA, InputOutput, Spc, Tab, _as_number, _same,
+)
+from yaseer.basic.machine.stack import AREA_MARK, ControlStack, ForFrame  # noqa: F401  (re-exported)
+from yaseer.basic.machine.variables import (  # noqa: F401  (the array limits are re-exported)
+    MAX_ARRAY_ELEMENTS, MAX_TOTAL_ELEMENTS, Variables, _check_clear_arguments,
+)
+from yaseer.basic.source.scanner import entry_messages, split_lines
+from yaseer.basic.machine.screen import OutputStream
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up time)
+    from typing import Callable, TextIO
+
+
+# Resource limits (each exceeded limit is "Out of memory in N"; the arrays': machine_variables).
+MAX_AREA_DEPTH = 100  # GOSUB PROG nesting
+
+
+@lru_cache(maxsize=4096)
+def _parse_cached(number: int, text: str, dialect):
+    from yaseer.basic.source.parser import parse_line  # here: a program read from the cache needs no parser
+
+    return parse_line(number, text, dialect)
+
+
+class _AreaRuntime:
+    """Per-area state the compiled code reaches: DATA pointer."""
+
+    def __init__(self, machine: "Machine", number: int, compiled: CompiledArea):
+        self.machine = machine
+        self.number = number
+        self.compiled = compiled
+        self.data_index = 0
+
+    def read_item(self) -> tuple[str, int]:
+        data = self.compiled.data
+        if self.data_index >= len(data):
+            raise BasicError("Out of DATA", OUT_OF_DATA)
+        item = data[self.data_index]
+        self.data_index += 1
+        return item
+
+    def read_number(self) -> float:
+        text, line = self.read_item()
+        try:
+            value = gwfunctions.number_field(text, self.machine.dialect.largest_number)
+        except BasicError as err:
+            raise err.at(line, self.number) from None
+        if value is None:
+            raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number)
+        return value
+
+    def read_string(self) -> str:
+        """The next DATA item as a string: a quoted item is the text between its quotes
+        (an unclosed quote runs to the end); anything after the closing quote is a
+        Syntax error in the DATA line (GW-BASIC)."""
+        text, line = self.read_item()
+        if not text.startswith('"'):
+            return text
+        end = text.find('"', 1)
+        if end < 0:
+            return text[1:]
+        if text[end + 1:].strip():
+            raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number)
+        return text[1:end]
+
+    def restore(self, line) -> None:
+        if line is None:
+            self.data_index = 0
+            return
+        later = [i for number, i in self.compiled.data_lines.items() if number >= line]
+        self.data_index = min(later) if later else len(self.compiled.data)
+
+
+class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput):
+    """A pocket-computer BASIC machine (see the module docstring)."""
+
+    def __init__(self, screen: TextIO | None = None, printer: TextIO | None = None,
+                 output_format: str = "text", angle: str | None = None, input_stream: TextIO | None = None,
+                 dialect: "str | dialects.Dialect" = "casio", files=None):
+        # The dialect (scanner rules, number model, print rules, error policy, start-up
+        # state: see dialect.py); ``angle`` overrides its start-up unit ("deg"/"rad").
+        self.dialect = dialects.get_dialect(dialect)
+        self.def_types: dict = {}  # gw: letter -> type character of the last DEF statements
+        self.arith = arith_policy.ArithmeticPolicy(self)  # division by zero, overflow: stop or go on
+        # how PRINT shows a number: typed (GW: integers, 7-digit singles, 16-digit D doubles) or not
+        self._printed_number, self._number_text = (
+            (_same, values.number_to_text) if self.dialect.typed_numbers else (_as_number, formatting.number_to_text))
+        self.screen = OutputStream(screen if screen is not None else sys.stdout, self.dialect.width)
+        self.printer = OutputStream(printer if printer is not None else self.screen.stream,
+                                    self.dialect.printer_width, moves_items=False)
+        if printer is None:
+            self.printer = self.screen
+        self.streams = (self.screen, self.printer)
+        self.csv = output_format == "csv"
+        self.default_angle = (angle or self.dialect.angle).upper()[:3]
+        self.input_stream = input_stream
+        self.programs: dict[int, dict[int, str]] = {}
+        self.python_areas: dict[int, Callable] = {}
+        self.compiled: dict[int, CompiledArea] = {}
+        self.runtimes: dict[int, _AreaRuntime] = {}
+        self.namespaces: dict[int, dict] = {}
+        self.scalars: dict[str, object] = {}
+        self.arrays: dict[str, list] = {}
+        self.array_dims: dict[str, tuple] = {}
+        self.explicit_arrays: set[str] = set()
+        self.stack: list = []
+        self.fns: dict[str, tuple] = {}
+        self.line = None
+        self.on_error = None
+        self.in_handler = False
+        self.pending_error = None  # the error a handler is running for
+        self.err = 0.0
+        self.erl = 0.0
+        self.error_point = None
+        self.cont_point = None
+        self.area_depth = 0
+        self.frame_body = 0
+        self.angle = self.default_angle
+        self.random = self.dialect.random()
+        self._extra_entries: set[int] = set()
+        self.array_elements = 0  # elements in all arrays (MAX_TOTAL_ELEMENTS)
+        # Called as hook(machine, n) after every GOSUB PROG n returns (e.g. to record a
+        # mechanism's positions for an animation); machine.line is the calling line.
+        self.area_hooks: list[Callable] = []
+        # Called as hook(device, values) when a printed line ends (device 0 PRINT, 1 LPRINT;
+        # values: the numbers (float) and strings the line printed, in order). Only
+        # collected while a hook is registered (yaseer.api keeps the printed rows).
+        self.line_hooks: list[Callable] = []
+        self._line_values: tuple[list, list] = ([], [])
+        self.tracing = False  # TRON: lines run are shown as [n]
+        self.subscript_base = 0  # OPTION BASE
+        # the program's sequential files, all in one directory (``files``; default the current one)
+        self.files = FileTable(Sandbox(files))
+        # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
+        # ``yaseer run`` stops at once): see _on_interrupt.
+        self.resumable_breaks = False
+        self._break_armed = None  # (compiled area, its real blocks) while a Ctrl-C waits to land
+        self._reading_input = False
+        # CLS: called to clear the screen (the session clears a terminal); None: nothing to clear
+        self.on_clear_screen: Callable[[], object] | None = None
+
+    # ------------------------------------------------------------ programs and their namespaces
+    def load(self, text: str, area: int = 0, entered: bool = True) -> None:
+        """Replace area ``area``'s program by the listing ``text`` (line -> text).
+
+        ``entered``: the lines are entered now, so the messages GW-BASIC prints when
+        it reads a line are shown (``Overflow`` of a literal: :func:`scanner.entry_messages`);
+        False for lines entered before (the session hands its typed program over at RUN)."""
+        program: dict[int, str] = {}
+        for number, statement_text, _ in split_lines(text):
+            if statement_text:
+                program[number] = statement_text
+                if entered:
+                    self.show_messages(entry_messages(statement_text, self.dialect))
+            else:
+                program.pop(number, None)
+        self.programs[area] = program
+        self.python_areas.pop(area, None)
+        self._invalidate(area)
+
+    def set_line(self, number: int, text: str, area: int = 0) -> None:
+        """Enter (or, with empty text, delete) one program line, as typed."""
+        program = self.programs.setdefault(area, {})
+        if text.strip():
+            program[number] = text.strip()
+        else:
+            program.pop(number, None)
+        self._invalidate(area)
+
+    def show_messages(self, messages: list[str]) -> None:
+        """Print each message on a row of its own, as GW-BASIC does where it reads a line
+        (not in ``--format csv``, whose rows are values)."""
+        for message in messages:
+            if not self.csv:
+                self.screen.write(message)
+                self.screen.new_row()
+
+    def set_area(self, n: int, area) -> None:
+        """Bind program area ``n`` to a Python callable ``area(machine)`` or BASIC text."""
+        if callable(area):
+            self.python_areas[n] = area
+            self.programs.pop(n, None)
+            self._invalidate(n)
+        else:
+            self.load(area, n)
+
+    def _invalidate(self, area: int) -> None:
+        self.compiled.pop(area, None)
+        self.namespaces.pop(area, None)
+        self.runtimes.pop(area, None)
+        if area == 0:
+            self.cont_point = None
+
+    def _compiled(self, area: int) -> CompiledArea:
+        compiled = self.compiled.get(area)
+        if compiled is None:
+            extra = tuple(self._extra_entries) if area == 0 else ()
+            compiled = self._compile(area, self.programs.get(area, {}), entry_lines=extra)
+        return compiled
+
+    def _compile(self, area, program: dict, direct: bool = False, entry_lines=(), dynamic_loops=()) -> CompiledArea:
+        """Parse, compile and exec one area's program (line -> text); returns the CompiledArea.
+
+        A program area (not a direct statement) is looked up first in the on-disk
+        cache of compiled programs (:mod:`yaseer.basic.compile.program_cache`) and stored
+        there after a compile (not the TRON variant, see ``set_trace``, nor one with
+        ``dynamic_loops``, see ``cont``)."""
+        plain = not (direct or self.tracing or dynamic_loops)
+        entry = program_cache.key(area, program, entry_lines, self.dialect) if plain else None
+        cached = program_cache.load(entry) if entry else None
+        if cached is not None:
+            compiled, codes = cached
+        else:
+            from yaseer.basic.compile.compiler import compile_area
+
+            lines = [_parse_cached(number, text, self.dialect) for number, text in sorted(program.items())]
+            compiled = compile_area(lines, area if isinstance(area, int) else 0, direct=direct,
+                                    entry_lines=entry_lines, trace=self.tracing, dynamic_loops=dynamic_loops,
+                                    dialect=self.dialect, def_types=self.def_types if direct else None)
+            codes = [None] * len(compiled.pieces)
+        runtime_state = _AreaRuntime(self, area, compiled)
+        namespace = self._namespace(area, runtime_state)
+        codes = [self._exec_piece(text, first_line, area, namespace, code)
+                 for (first_line, text), code in zip(compiled.pieces, codes)]
+        if entry and cached is None:
+            program_cache.store(entry, compiled, codes)
+        compiled.blocks = [namespace[f"_b{b}"] for b in range(compiled.block_count)]
+        if direct or area == 0:  # DEF types hold for the direct statements that follow
+            self.def_types = dict(compiled.def_types)
+        for name in compiled.scalars:
+            self.scalars.setdefault(name, initial_value(name))
+        if not direct:
+            self.compiled[area] = compiled
+            self.runtimes[area] = runtime_state
+            self.namespaces[area] = namespace
+        return compiled
+
+    def _exec_piece(self, text: str, first_line, area, namespace: dict, code=None):
+        """Compile (unless ``code`` is given) and run one generated function
+        definition; one too complex for Python becomes an error.  Returns its code
+        object (None for such a function)."""
+        try:
+            if code is None:
+                code = compile(text, f"<BASIC area {area}>", "exec")
+            exec(code, namespace)
+            return code
+        except SyntaxError as exc:
+            if "too many" not in str(exc) and "nested" not in str(exc):
+                raise BasicError(f"Internal error (generated code: {exc})", INTERNAL_ERROR) from None
+        except (RecursionError, MemoryError):
+            pass
+        exec(self._stub(text, first_line), namespace)
+        return None
+
+    @staticmethod
+    def _stub(text: str, first_line) -> str:
+        """A block Python cannot compile (nested too deeply): it raises Out of memory."""
+        name = text.split("(", 1)[0].split()[-1]
+        return (f"def {name}(*_):\n    _M.line = {first_line!r}\n"
+                f"    raise _err('Out of memory', {OUT_OF_MEMORY})\n")
+
+    def _namespace(self, area, rt: _AreaRuntime) -> dict:
+        """The globals the generated code of ``area`` runs with: the machine's state and helpers."""
+        ns = {
+            "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range, "type": type, "int": int,
+                             "BaseException": BaseException},
+            "_M": self, "_S": self.scalars, "_A": self.arrays, "_arr": self.array_nd, "_ix": runtime.subscript,
+            "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_END": END, "_DirectJump": DirectJump,
+            "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
+            "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,
+            "_oom": self._out_of_memory, "_call": self.call_area,
+            "_on": self.on_index, "_for": self.for_push, "_next": self.next_frame,
+            "_pop": self.stack.pop, "_next_any": self.next_any, "_stop": self._stopper(area),
+            "_dim": self.dim, "_clear": self.clear, "_read_n": rt.read_number,
+            "_read_s": rt.read_string, "_restore": rt.restore, "_input": self.input_values,
+            "_fn": self.user_function, "_resume": self.resume, "_resume_at": self.resume_at,
+            "_error_off": self.error_trapping_off, "_error": self.raise_error,
+            "_randomize": self.randomize, "_rnd": self.rnd, "_rndf": self._first_draw,
+            "_sqrt": math.sqrt, "_floor": runtime.floor, "_fix": runtime.fix, "_sgn": runtime.sign,
+            "_exp": math.exp, "_log": math.log, "_len": lambda s: float(len(s)),
+            "_strs": formatting.str_dollar, "_val": gwfunctions.val, "_chr": runtime.chr_dollar,
+            "_asc": runtime.asc, "_left": runtime.left, "_right": runtime.right, "_mid": runtime.mid,
+            "_cat": runtime.concat, "_pow": runtime.power, "_idiv": runtime.int_divide,
+            "_mod": runtime.modulo, "_and": runtime.logical_and, "_or": runtime.logical_or,
+            "_not": runtime.logical_not, "_frange": runtime.float_range,
+            "_fcount": runtime.pass_counter, "_fidle": runtime.idle_passes, "_fvalue": runtime.counted_value,
+            "_fafter": runtime.counted_final, "_tr": self.trace_line, "_cint": lambda x: float(runtime.cint(x)),
+            "_csng": float, "_cdbl": float,
+        }
+        ns.update(self._gw_functions())
+        if self.dialect.typed_numbers:
+            ns.update(values.RUNTIME)
+            ns.update(arith_policy.helpers(self.arith, ns["_idiv"], ns["_mod"], ns["_pow"]))
+            ns.update(val_numbers.helpers(self.arith, ns, self.dialect.largest_number))
+        ns.update(self._trig_functions())
+        if self.dialect.arithmetic == "decimal":
+            from yaseer.basic.arithmetic import decimal_arith  # here: only --arith decimal loads the decimal module
+
+            ns.update(decimal_arith.RUNTIME)
+            ns.update(self._trig_functions())
+        self.namespaces[area] = ns
+        return ns
+
+    def _gw_functions(self) -> dict:
+        """The namespace entries of GW-BASIC's statements and functions."""
+        g = gwfunctions
+        return {
+            "_instr": g.instr, "_string": g.string_dollar, "_space": g.space_dollar,
+            "_hex": g.hex_dollar, "_oct": g.oct_dollar, "_mki": g.mki, "_mks": g.mks, "_mkd": g.mkd,
+            "_cvi": g.cvi, "_cvs": g.cvs, "_cvd": g.cvd, "_timer": g.timer, "_date": g.date_dollar,
+            "_time": g.time_dollar, "_xor": g.logical_xor, "_eqv": g.logical_eqv,
+            "_imp": g.logical_imp, "_midset": g.mid_assign, "_fre": self.free_memory,
+            "_pos": lambda _: float(self.screen.column + 1),
+            "_lpos": lambda _: float(self.printer.column + 1),
+            "_erase": self.erase, "_option_base": self.option_base, "_line_input": self.line_input,
+            "_write": self.write_values, "_clear_args": _check_clear_arguments,
+            # sequential files (files.py)
+            "_open": self.files.open, "_close": self.files.close, "_kill": self.files.kill,
+            "_rename": self.files.sandbox.rename, "_files": self.list_files,
+            "_fout": lambda n: self.files.get(n).output(), "_prf": self.print_to,
+            "_pruf": self.print_using_to, "_writef": self.write_to,
+            "_fin_n": self.file_number, "_fin_s": lambda n: self.files.get(n).read_field(False),
+            "_fline": lambda n: self.files.get(n).read_line(),
+            "_eof": lambda n: -1.0 if self.files.get(n).at_end() else 0.0,
+            "_lof": lambda n: float(self.files.get(n).length()),
+            "_loc": lambda n: float(self.files.get(n).records()),
+            "_input_chars": self.input_chars,
+        }
+
+    def _trig_functions(self) -> dict:
+        if self.dialect.arithmetic == "decimal":
+            from yaseer.basic.arithmetic import decimal_arith
+            return decimal_arith.trig_functions(self.angle != "RAD")
+        if self.angle == "RAD":
+            return {"_sin": math.sin, "_cos": math.cos, "_tan": math.tan, "_atn": math.atan}
+        return {"_sin": runtime.sin_degrees, "_cos": runtime.cos_degrees,
+                "_tan": runtime.tan_degrees, "_atn": runtime.atn_degrees}
+
+    def set_trace(self, on: bool) -> None:
+        """TRON / TROFF: swap every compiled area's blocks for its traced (or plain) variant.
+
+        The variants have the same blocks, so a running program goes on in the
+        new variant from its next block (TRON and TROFF end their block).
+        """
+        if on == self.tracing:
+            return
+        self.tracing = on
+        from yaseer.basic.compile.compiler import compile_area
+
+        for area, compiled in list(self.compiled.items()):
+            extra = tuple(self._extra_entries) if area == 0 else ()
+            lines = [_parse_cached(number, text, self.dialect)
+                     for number, text in sorted(self.programs.get(area, {}).items())]
+            variant = compile_area(lines, area, entry_lines=extra, trace=on, dynamic_loops=compiled.dynamic_loops,
+                                   dialect=self.dialect)
+            namespace = self.namespaces[area]
+            for first_line, text in variant.pieces:
+                self._exec_piece(text, first_line, area, namespace)
+            armed = self._break_armed
+            blocks = armed[1] if armed is not None and armed[0] is compiled else compiled.blocks
+            blocks[:] = [namespace[f"_b{b}"] for b in range(variant.block_count)]
+
+    def set_angle(self, mode: str) -> None:
+        """DEG or RAD: the unit SIN, COS, TAN take and ATN returns."""
+        self.angle = mode.upper()[:3]
+        functions = self._trig_functions()
+        for ns in list(self.namespaces.values()):
+            ns.update(functions)
+
+    # ------------------------------------------------------------ program areas (GOSUB PROG)
+    def call_area(self, n: int, line=None) -> None:
+        """GOSUB PROG n (at BASIC ``line``): run program area n and come back."""
+        self.line = line
+        python_area = self.python_areas.get(n)
+        if python_area is not None:
+            python_area(self)
+        else:
+            self._call_basic_area(n)
+        for hook in self.area_hooks:
+            self.line = line
+            hook(self, n)
+
+    def _call_basic_area(self, n: int) -> None:
+        """Run BASIC program area ``n`` until its RETURN (its own line numbers, shared variables)."""
+        if n not in self.programs:
+            raise BasicError(f"Undefined program area {n}", UNDEFINED_PROGRAM_AREA)
+        if self.area_depth >= MAX_AREA_DEPTH:
+            raise BasicError("Out of memory", OUT_OF_MEMORY)
+        compiled = self._compiled(n)
+        mark = len(self.stack)
+        self.stack.append(AREA_MARK)
+        self.area_depth += 1
+        try:
+            self._run_area(n, compiled, 0)
+        finally:
+            self.area_depth -= 1
+            del self.stack[mark:]
+
+    # ------------------------------------------------------------ the run loop
+    def _run_area(self, area: int, compiled: CompiledArea, block: int) -> None:
+        """Run ``area`` from ``block`` until its RETURN (areas) or END (raises ProgramEnd)."""
+        blocks = compiled.blocks
+        b = block
+        while True:
+            try:
+                while b >= 0:
+                    b = blocks[b]()
+                return
+            except (ProgramEnd, ProgramStop, DirectJump, BrokenPipeError, OutputError):
+                raise
+            except BaseException as exc:  # noqa: BLE001 - every error becomes a BASIC error
+                err = to_basic_error(exc)
+                err.at(self.line, area)
+                target = self._trap(err, area, b)
+                if target is None:
+                    raise err from None
+                b = target
+
+    def reset(self) -> None:
+        """The state RUN starts from: no variables, empty stack, the default angle unit."""
+        self.clear()
+        self.stack.clear()
+        self.on_error = None
+        self.in_handler = False
+        self.err = self.erl = 0.0
+        self.cont_point = None
+        self.area_depth = 0
+        self.set_angle(self.default_angle)
+        self.set_subscript_base(0)
+        self.files.close()
+        self.random.reset()
+
+    def run(self, line: int | None = None) -> str:
+        """RUN (from ``line``): returns "end" or "stop"; raises BasicError on an error."""
+        if self.compiled.get(0) is not None and self.compiled[0].dynamic_loops:
+            self._invalidate(0)  # the variant CONT made after a Ctrl-C: back to native loops
+        compiled = self._compiled(0)
+        for area in self.programs:
+            self._compiled(area)
+        self.reset()
+        block = 0
+        if line is not None:
+            block = self._line_block(line)
+        return self._execute(0, block)
+
+    def _line_block(self, line: int) -> int:
+        """The block that starts at ``line`` of area 0 (recompiling so that one does)."""
+        if line not in self.programs.get(0, {}):
+            raise BasicError(f"Undefined line number {line}", 8)
+        block = self._compiled(0).line_blocks.get(line)
+        if block is None:
+            self._extra_entries.add(line)
+            self._compile(0, self.programs[0], entry_lines=tuple(self._extra_entries))
+            block = self._compiled(0).line_blocks[line]
+        return block
+
+    def _execute(self, area: int, block: int) -> str:
+        self.cont_point = None
+        try:
+            with _interrupt_handler(self._on_interrupt):
+                return self._execute_loop(area, block)
+        finally:
+            self._disarm_break()
+
+    def _execute_loop(self, area: int, block: int) -> str:
+        stopped = False
+        try:
+            self._run_area(area, self._compiled(area), block)
+        except ProgramEnd:
+            return "end"
+        except BreakPoint as stop:
+            self._disarm_break()
+            if stop.area == 0 and stop.depth == 0:
+                self.cont_point = (0, stop.block, stop.loops)
+            self.area_depth = 0
+            self.line = stop.line
+            raise BasicError("Break", BREAK).at(stop.line) from None
+        except ProgramStop as stop:
+            if stop.area == 0 and self.area_depth == 0:
+                self.cont_point = (stop.area, stop.block)
+            self.area_depth = 0
+            stopped = True
+            return "stop"
+        except KeyboardInterrupt:
+            raise BasicError("Break", BREAK).at(self.line) from None
+        finally:
+            if not stopped:  # END, the last line or an error closes the files (STOP keeps them)
+                self.files.close()
+            if self.csv:  # a last line left open (PRINT A;) is still a row
+                self.end_line()
+            self.flush()
+        return "end"
+
+    def execute_direct(self, text: str) -> str:
+        """Run statements typed without a line number against the same variables."""
+        self.show_messages(entry_messages(text, self.dialect))
+        compiled = self._compile("direct", {0: text}, direct=True)
+        self.namespaces.pop("direct", None)
+        try:
+            self.line = None
+            try:
+                self._run_area(0, compiled, 0)
+            except BasicError as err:
+                if err.line == 0:
+                    err.line = None
+                raise
+            return "end"
+        except ProgramEnd:
+            return "end"
+        except ProgramStop:
+            return "stop"
+        except DirectJump as jump:
+            return self._execute(0, self._line_block(jump.line))
+        finally:
+            if self.csv:  # a last line left open (PRINT A;) is still a row
+                self.end_line()
+            self.flush()
+
+    # ------------------------------------------------------------ RND
+    def rnd(self, x: float = 1.0) -> float:
+        """RND(x): x > 0 the next number, 0 the last again, x < 0 reseeds with x first."""
+        return self.random.rnd(x)
+
+    def _first_draw(self) -> float:
+        """RND's next number, the first time an area draws one: from then on each area's
+        ``_rndf`` (RND and RND(x) with a constant x > 0) is the generator's own drawer."""
+        draw = self.random.drawer()
+        for namespace in self.namespaces.values():
+            namespace["_rndf"] = draw
+        return draw()
+
+    def randomize(self, seed, kind: str = "!") -> None:
+        """RANDOMIZE seed; ``kind`` is the seed's type ("%", "!", "#", see yaseer.basic.arithmetic.randomness).
+
+        Without a seed a generator with a ``seed_prompt`` (GW-BASIC's) asks for one
+        on the screen and reads it as INPUT does, rounded to an integer.
+        """
+        if seed is None and self.random.seed_prompt is not None:
+            seed, kind = runtime.cint(self.input_values(self.random.seed_prompt, False, "n")[0]), "%"
+            if not -32768 <= seed <= 32767:
+                runtime.overflow()
+        self.random.randomize(seed, kind)

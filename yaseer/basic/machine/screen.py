@@ -1,0 +1,114 @@
+"""Where PRINT puts its text: a stream that knows its column and, optionally, its width.
+
+An :class:`OutputStream` with ``width = None`` (the Casio dialect) never wraps:
+lines are as long as the program makes them.  With a width (GW-BASIC's 80
+columns, ``WIDTH n``) it lays text out as GW-BASIC's screen does, one output line
+per screen row, following Microsoft's source (GIO86.ASM, the PRINT code from
+``PRINT1`` to ``NOTABR``) as PC-BASIC 2.0.8
+reproduces it:
+
+* a character written when the row is full (column = width) first starts a new
+  row, so a line of exactly ``width`` characters followed by the end of the PRINT
+  leaves an empty row, as on the real screen; a new row that PRINT itself starts
+  (an item that does not fit, ``,``, ``TAB``) does not add another;
+* a PRINT item (a number with its blanks, or a string) that would run past the
+  width starts on a new row unless the row is empty (``STRDON``/``LINCHK``);
+  longer ones then wrap character by character (on the printer, ``moves_items``
+  False, every item wraps so: PC-BASIC's LPRINT);
+* ``,`` moves to the next 14-column zone, or to a new row from the last zone on
+  (``COMPRT``); ``TAB(n)`` and ``SPC(n)`` count modulo the width (``TABER``).
+
+Columns are 0-based here (BASIC's ``POS`` and ``TAB`` are 1-based).
+"""
+
+from __future__ import annotations
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up time)
+    from typing import TextIO
+
+SCREEN_WIDTHS = (40, 80)  # the widths WIDTH n accepts (GW-BASIC's text screen; PC-BASIC checked)
+# WIDTH "dev", n: what each of GW-BASIC's device names does (any other name: Bad file name).
+# "other": a device yaseer does not have; n is checked (0..255) and changes nothing shown.
+DEVICE_WIDTHS = {
+    "LPT1:": "printer", "SCRN:": "screen", "KYBD:": "refused",
+    "LPT2:": "other", "LPT3:": "other", "COM1:": "other", "COM2:": "other", "CAS1:": "other",
+}
+
+
+class OutputStream:
+    """A text stream with its current column; ``width`` None never wraps (see module docstring)."""
+
+    def __init__(self, stream: TextIO, width: int | None = None, moves_items: bool = True):
+        self.stream = stream
+        self.column = 0
+        self.width = width
+        self.moves_items = moves_items  # False: a printer, whose items wrap where they are
+        self.row: list = []  # csv output: the values of the line being printed
+
+    def write(self, text: str) -> None:
+        """Write ``text``; a carriage return (``CHR$(13)``) ends the line as on the screen."""
+        if not text:
+            return
+        if "\r" in text:
+            text = text.replace("\r", "\n")
+        if self.width is not None:
+            text = self._folded(text)
+        self.stream.write(text)
+        newline = text.rfind("\n")
+        self.column = len(text) - newline - 1 if newline >= 0 else self.column + len(text)
+
+    def _folded(self, text: str) -> str:
+        """``text`` with a row break before every character that meets a full row."""
+        width, column = self.width, self.column
+        if "\n" not in text and column + len(text) < width:
+            return text  # the common case: it fits and leaves room
+        out = []
+        for ch in text:
+            if column >= width:
+                out.append("\n")
+                column = 0
+            out.append(ch)
+            column = 0 if ch == "\n" else column + 1
+        return "".join(out)
+
+    def new_row(self) -> None:
+        """Start a new row (a row that is full has one already waiting: no empty row)."""
+        self.stream.write("\n")
+        self.column = 0
+
+    def item(self, text: str) -> None:
+        """One PRINT item: on a new row first if it would run past the width (GW-BASIC's
+        screen; a printer's items wrap character by character, as PC-BASIC 2.0.8 prints)."""
+        width = self.width
+        if width is not None and self.moves_items and self.column and self.column + len(text) > width:
+            self.new_row()
+        self.write(text)
+
+    def comma(self, zone: int) -> None:
+        """``,`` in PRINT: blanks to the next zone; from the last zone on, a new row."""
+        width = self.width
+        if width is not None and width >= zone and self.column >= zone * (width // zone - 1):
+            self.new_row()
+            return
+        self.write(" " * (zone - self.column % zone))
+
+    def tab(self, n: int) -> None:
+        """``TAB(n)``: to 1-based column n (n below 1 is column 1), on a new row if already
+        past it; with a width, n counts modulo the width."""
+        target = max(n, 1) - 1
+        if self.width is not None:
+            target %= self.width
+        if target < self.column:
+            self.new_row()
+        self.write(" " * (target - self.column))
+
+    def spc(self, n: int) -> None:
+        """``SPC(n)``: n blanks (none for n below 1; modulo the width when there is one)."""
+        count = max(n, 0)
+        if self.width is not None:
+            count %= self.width
+        self.write(" " * count)
+
+    def flush(self) -> None:
+        self.stream.flush()

@@ -1,0 +1,134 @@
+"""Run-time errors of the BASIC machine: the exceptions that end, stop or redirect a
+run (END, STOP, a Ctrl-C break, a direct-mode GOTO), the BASIC error a Python
+exception inside compiled code becomes, and ON ERROR GOTO / RESUME / ERROR (the
+:class:`ErrorTrapping` mixin of :class:`yaseer.basic.machine.machine.Machine`)."""
+
+from __future__ import annotations
+
+from yaseer.basic.machine import runtime
+from yaseer.basic.errors import (
+    BasicError, BREAK, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_CALL, OUT_OF_MEMORY, OVERFLOW, RESUME_WITHOUT_ERROR,
+    SUBSCRIPT_OUT_OF_RANGE,
+)
+
+INTERNAL_ERROR = 51  # a Python exception no BASIC error stands for
+
+
+class ProgramEnd(BaseException):
+    """END, or the program ran off its last line."""
+
+
+class ProgramStop(BaseException):
+    """STOP: ``area`` and ``block`` are where CONT resumes."""
+
+    def __init__(self, area: int, block: int, line):
+        super().__init__("Break")
+        self.area, self.block, self.line = area, block, line
+
+
+class BreakPoint(ProgramStop):
+    """Ctrl-C landed where CONT can resume (see ``Machine.resumable_breaks``).
+
+    ``block`` of ``area`` is where to go on; ``loops`` the native FOR loops that
+    were open there, outermost first, as ``(FOR index, FOR-stack key, value,
+    limit, step)`` (value None for an array element, which holds its own);
+    ``depth`` the GOSUB PROG nesting it happened at (only 0 is resumable).
+    """
+
+    def __init__(self, area: int, block: int, line, loops: tuple = (), depth: int = 0):
+        super().__init__(area, block, line)
+        self.loops, self.depth = loops, depth
+
+
+class DirectJump(BaseException):
+    """GOTO/THEN n typed in direct mode: continue the program at line n."""
+
+    def __init__(self, line: int):
+        super().__init__(line)
+        self.line = line
+
+
+END = ProgramEnd()
+
+
+def to_basic_error(exc: BaseException) -> BasicError:
+    """The BASIC error for an exception raised inside compiled code or a Python area."""
+    if isinstance(exc, BasicError):
+        return exc
+    if isinstance(exc, KeyboardInterrupt):
+        return BasicError("Break", BREAK)
+    if isinstance(exc, ZeroDivisionError):
+        return BasicError("Division by zero", DIVISION_BY_ZERO)
+    if isinstance(exc, OverflowError):
+        return BasicError("Overflow", OVERFLOW)
+    if isinstance(exc, (RecursionError, MemoryError)):
+        return BasicError("Out of memory", OUT_OF_MEMORY)
+    if isinstance(exc, ValueError):
+        return BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+    if isinstance(exc, IndexError):
+        return BasicError("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
+    if isinstance(exc, TypeError) and "subscript" in str(exc):
+        return BasicError("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
+    return BasicError(f"Internal error ({type(exc).__name__}: {exc})", INTERNAL_ERROR)
+
+
+class ErrorTrapping:
+    """ON ERROR GOTO, RESUME, ERROR n: the error handler of area ``on_error`` and the
+    point (``error_point``) RESUME goes back to.  A mixin of ``Machine``, on its state."""
+
+    def resume(self, next_statement: bool) -> int:
+        """RESUME / RESUME NEXT: the block of the failed statement, or of the one after it."""
+        if not self.in_handler:
+            raise _resume_without_error()
+        area, block = self.error_point
+        self.in_handler = False
+        self.err = 0.0
+        if next_statement:
+            return self._compiled(area).block_next.get(block, block + 1)
+        return block
+
+    def resume_at(self, block: int) -> int:
+        """RESUME n: leave the error handler and go to ``block``."""
+        if not self.in_handler:
+            raise _resume_without_error()
+        self.in_handler = False
+        self.err = 0.0
+        return block
+
+    def error_trapping_off(self) -> None:
+        """ON ERROR GOTO 0: no more trapping; inside a handler the pending error stops the run."""
+        self.on_error = None
+        if self.in_handler:
+            raise self.pending_error
+
+    @staticmethod
+    def raise_error(code: float) -> None:
+        """ERROR n: raise error n (1..255; anything else is Illegal function call)."""
+        n = runtime.cint(code)
+        if not 1 <= n <= 255:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        raise BasicError.of_code(n)
+
+    def _trap(self, err: BasicError, area: int, block: int) -> int | None:
+        """The handler block for ``err`` if ON ERROR GOTO of this area catches it."""
+        if self.on_error is None or self.in_handler or err.code == BREAK or not err.trappable:
+            return None
+        handler_area, handler_block = self.on_error
+        if handler_area != area:
+            return None
+        self.err = float(err.code)
+        self.erl = float(err.line or 0)
+        for stream in self.streams:
+            stream.row = []
+        self.in_handler = True
+        self.pending_error = err
+        self.error_point = (area, block)
+        return handler_block
+
+
+def _resume_without_error() -> BasicError:
+    """RESUME outside an error handler: it stops the run even under ON ERROR GOTO (GW-BASIC)."""
+    err = BasicError("RESUME without error", RESUME_WITHOUT_ERROR)
+    err.trappable = False
+    return err
+

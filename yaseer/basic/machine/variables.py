@@ -1,0 +1,116 @@
+"""The BASIC machine's variables: scalars and arrays as Python program areas see
+them, DIM, ERASE, OPTION BASE, FRE and CLEAR, and the array budget (the
+:class:`Variables` mixin of :class:`yaseer.basic.machine.machine.Machine`)."""
+
+from __future__ import annotations
+
+import math
+
+from yaseer.basic.machine import runtime
+from yaseer.basic.errors import BasicError, DUPLICATE_DEFINITION, ILLEGAL_FUNCTION_CALL, OUT_OF_MEMORY
+from yaseer.basic.compile.number_models import initial_value
+
+# Array limits (each exceeded limit is "Out of memory in N").
+MAX_ARRAY_ELEMENTS = 2_000_000  # per array
+MAX_TOTAL_ELEMENTS = 8_000_000  # all arrays together (about 64 MB)
+
+
+def _new_array(dims: tuple, fill):
+    if len(dims) == 1:
+        return [fill] * (dims[0] + 1)
+    return [_new_array(dims[1:], fill) for _ in range(dims[0] + 1)]
+
+
+class Variables:
+    """Scalars (``scalars``: name -> float or str) and arrays (``arrays``: name -> list,
+    nested for more than one dimension).  A mixin of ``Machine``, on its state."""
+
+    def scalar(self, name: str):
+        """The value of scalar ``name`` (0.0, or "" for a string, if unset)."""
+        name = name.upper()
+        return self.scalars.get(name, initial_value(name))
+
+    def set_scalar(self, name: str, value) -> None:
+        name = name.upper()
+        self.scalars[name] = str(value) if name.endswith("$") else float(value)
+
+    def array(self, name: str) -> list:
+        """The 1-D array ``name`` as a mutable list indexed by subscript."""
+        return self.array_nd(name.upper(), 1)
+
+    def array_nd(self, name: str, ndim: int) -> list:
+        """Array ``name``; created with its implicit dimension(s) if the program has none."""
+        found = self.arrays.get(name)
+        if found is not None:
+            return found
+        dims = (self.dialect.implicit_size(name, ndim),) * ndim
+        self._reserve(name, dims)
+        created = _new_array(dims, initial_value(name))
+        self.arrays[name] = created
+        self.array_dims[name] = dims
+        return created
+
+    def _reserve(self, name: str, dims: tuple) -> None:
+        """Check the array limits for ``name`` with ``dims`` (replacing its old size)."""
+        count = math.prod(d + 1 for d in dims)
+        old = self.array_dims.get(name)
+        total = self.array_elements + count - (math.prod(d + 1 for d in old) if old else 0)
+        if count > MAX_ARRAY_ELEMENTS or total > MAX_TOTAL_ELEMENTS:
+            raise BasicError("Out of memory", OUT_OF_MEMORY)
+        self.array_elements = total
+
+    def dim(self, name: str, sizes: tuple) -> None:
+        """DIM name(sizes): replaces an implicit array; a second DIM is an error."""
+        if name in self.explicit_arrays:
+            raise BasicError("Duplicate definition", DUPLICATE_DEFINITION)
+        dims = tuple(runtime.cint(s) for s in sizes)
+        if any(d < 0 for d in dims):
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self._reserve(name, dims)
+        self.arrays[name] = _new_array(dims, initial_value(name))
+        self.array_dims[name] = dims
+        self.explicit_arrays.add(name)
+
+    def erase(self, name: str) -> None:
+        """ERASE name: forget the array (a later DIM may size it again); not there: Illegal function call."""
+        dims = self.array_dims.get(name)
+        if name not in self.arrays or dims is None:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self.array_elements -= math.prod(d + 1 for d in dims)
+        del self.arrays[name], self.array_dims[name]
+        self.explicit_arrays.discard(name)
+
+    def option_base(self, base: int) -> None:
+        """OPTION BASE 0 or 1: the lowest subscript; once an array exists: Duplicate Definition."""
+        if self.arrays:
+            raise BasicError("Duplicate Definition", DUPLICATE_DEFINITION)
+        self.set_subscript_base(base)
+
+    def set_subscript_base(self, base: int) -> None:
+        self.subscript_base = base
+        check = runtime.subscript if base == 0 else runtime.subscript_from_one
+        for ns in list(self.namespaces.values()):
+            ns["_ix"] = check
+
+    def free_memory(self, _any) -> float:
+        """FRE(x): bytes left in the array budget (8 bytes an element), whatever x is."""
+        return float(8 * (MAX_TOTAL_ELEMENTS - self.array_elements))
+
+    def clear(self) -> None:
+        """CLEAR: every variable to 0 or "", arrays back to their implicit state, no FN."""
+        for name in self.scalars:
+            self.scalars[name] = initial_value(name)
+        self.arrays.clear()
+        self.array_dims.clear()
+        self.array_elements = 0
+        self.explicit_arrays.clear()
+        self.fns.clear()
+        for rt in self.runtimes.values():
+            rt.data_index = 0
+
+
+def _check_clear_arguments(*sizes) -> None:
+    """CLEAR n, m, k: the memory sizes are not used; a negative first one is Illegal function call."""
+    if sizes and sizes[0] is not None and sizes[0] < 0:
+        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+

@@ -1,0 +1,556 @@
+"""Tokens -> AST: the lark LALR parser over ``grammar.lark``, built once and cached.
+
+The scanner's token list is fed to lark through a pass-through custom lexer;
+a :class:`lark.Transformer` applied during the parse builds ``syntax_tree``
+nodes directly.  :func:`parse_line` is the one entry point: it returns a
+:class:`~yaseer.basic.source.syntax_tree.Line` whose ``error`` holds the
+``BasicError`` when the text is not a valid line (the machine raises it when
+the line is reached, as the period interpreters did).
+"""
+
+from __future__ import annotations
+
+import functools
+import sys
+from pathlib import Path
+
+
+def _import_lark_without_regex():
+    """Import lark without the third-party ``regex`` module it would load (~35 ms of start-up).
+
+    We never ask lark for ``regex=True``; the block is lifted again at once.
+    """
+    if "regex" in sys.modules or "lark" in sys.modules:
+        return
+    sys.modules["regex"] = None  # makes ``import regex`` fail inside lark.utils
+    try:
+        import lark  # noqa: F401
+    finally:
+        del sys.modules["regex"]
+
+
+_import_lark_without_regex()
+
+from lark import Lark, Token, Transformer  # noqa: E402
+from lark.exceptions import LarkError, UnexpectedInput  # noqa: E402
+from lark.lexer import Lexer  # noqa: E402
+
+from yaseer.basic.source import syntax_tree as ast
+from yaseer.basic.dialects.dialect import CASIO, Dialect
+from yaseer.basic.errors import BasicError, MISSING_OPERAND, SYNTAX_ERROR
+from yaseer.basic.dialects.reserved import UNSUPPORTED, mark_unsupported, unsupported_message
+from yaseer.basic.source.scanner import tokenize
+
+GRAMMAR_PATH = Path(__file__).with_name("grammar.lark")
+
+
+class _TokenListLexer(Lexer):
+    """Hands lark the scanner's ready-made tokens."""
+
+    def __init__(self, lexer_conf):  # noqa: D401 - lark's interface
+        pass
+
+    def lex(self, data, *_):
+        tokens = getattr(data, "text", data)
+        if hasattr(tokens, "text"):  # lark >= 1.2 wraps input in a TextSlice
+            tokens = tokens.text
+        return iter(tokens)
+
+
+def _number_value(token: Token):
+    """A NUMBER token's value (typed scanners give ``(value, type)``)."""
+    value = token.value
+    return value[0] if type(value) is tuple else value
+
+
+def _line_number(token: Token) -> int:
+    value = _number_value(token)
+    if value != int(value) or value < 0:
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+    return int(value)
+
+
+_OPERATOR_NAMES = {
+    "PLUS": "+", "MINUS": "-", "STAR": "*", "SLASH": "/", "BSLASH": "\\", "CARET": "^",
+    "MOD": "MOD", "AND": "AND", "OR": "OR", "XOR": "XOR", "EQV": "EQV", "IMP": "IMP",
+    "EQ": "=", "LT": "<", "GT": ">", "LE": "<=", "GE": ">=", "NE": "<>",
+}
+
+
+def _values(children) -> list:
+    """The children that are not punctuation tokens."""
+    return [c for c in children if not (isinstance(c, Token) and c.type in ("COMMA", "SEMI", "EQ"))]
+
+
+class _LineThenRest:
+    """A branch ``n: statements``: a jump, then statements that can never run."""
+
+    def __init__(self, line: int, rest: list):
+        self.line, self.rest = line, rest
+
+
+def _if(condition, then, otherwise) -> ast.If:
+    unreachable = []
+    if isinstance(then, _LineThenRest):
+        then, unreachable = then.line, unreachable + then.rest
+    if isinstance(otherwise, _LineThenRest):
+        otherwise, unreachable = otherwise.line, unreachable + otherwise.rest
+    return ast.If(condition, then, otherwise, unreachable)
+
+
+class _ToAst(Transformer):
+    """lark tree -> syntax_tree nodes (called bottom-up during the parse)."""
+
+    # -- structure
+    def start(self, c):
+        return c[0]
+
+    def seq(self, c):
+        out = []
+        for s in c:
+            if s is None:
+                continue
+            if isinstance(s, list):
+                out.extend(s)
+            else:
+                out.append(s)
+        return out
+
+    def item(self, c):
+        return c[0] if c else None
+
+    def branch_line(self, c):
+        return _line_number(c[0])
+
+    def branch_line_rest(self, c):
+        return _LineThenRest(_line_number(c[0]), c[1])
+
+    def branch_seq(self, c):
+        return c[0]
+
+    def if_stmt(self, c):
+        return _if(c[1], c[3], c[5] if len(c) > 5 else None)
+
+    def if_goto(self, c):
+        return _if(c[1], _line_number(c[3]), c[5] if len(c) > 5 else None)
+
+    # -- statements
+    def let_stmt(self, c):
+        target, value = _values(c)[-2:]
+        return ast.Let(target, value)
+
+    def var(self, c):
+        return ast.Var(c[0].value)
+
+    def elem(self, c):
+        return ast.Elem(c[0].value, tuple(c[1]))
+
+    def args(self, c):
+        return _values(c)
+
+    def print_stmt(self, c):
+        return ast.Print(c[0].type == "LPRINT", [i for i in c[1:]])
+
+    def print_using(self, c):
+        return ast.Print(c[0].type == "LPRINT", list(c[4:]), using=c[2])
+
+    def print_item(self, c):
+        item = c[0]
+        if isinstance(item, Token) and item.type in ("COMMA", "SEMI"):
+            return "," if item.type == "COMMA" else ";"
+        return item
+
+    def tab_item(self, c):
+        return ast.Tab(c[1])
+
+    def spc_item(self, c):
+        return ast.Spc(c[1])
+
+    def for_stmt(self, c):
+        v = _values(c)
+        step = v[6] if len(v) > 6 else None
+        return ast.For(v[1], v[2], v[4], step)
+
+    def next_stmt(self, c):
+        names = _values(c)[1:]
+        if not names:
+            return ast.Next(None)
+        return [ast.Next(n) for n in names]  # NEXT J, I is NEXT J: NEXT I
+
+    def goto_stmt(self, c):
+        return ast.Goto(_line_number(c[1]))
+
+    def gosub_stmt(self, c):
+        return ast.Gosub(_line_number(c[1]))
+
+    def gosub_prog(self, c):
+        return ast.GosubProg(_line_number(c[2]))
+
+    def return_stmt(self, c):
+        return ast.Return()
+
+    def on_jump(self, c):
+        v = _values(c)
+        targets = [_line_number(t) for t in v[3:]]
+        return ast.OnJump(v[1], targets, v[2].type == "GOSUB")
+
+    def on_error(self, c):
+        return ast.OnError(_line_number(c[3]))
+
+    def end_stmt(self, c):
+        return ast.End()
+
+    def stop_stmt(self, c):
+        return ast.Stop()
+
+    def rem_stmt(self, c):
+        return ast.Rem(c[0].value)
+
+    def dim_stmt(self, c):
+        return ast.Dim(_values(c)[1:])
+
+    def dim_item(self, c):
+        return (c[0].value, tuple(c[1]))
+
+    def dim_scalar(self, c):
+        return (c[0].value, (ast.Num(10.0),))  # GW-BASIC: DIM A is DIM A(10)
+
+    def clear_stmt(self, c):
+        return ast.Clear([x for x in c[1:] if not isinstance(x, Token)])
+
+    # -- GW-BASIC statements
+    def while_stmt(self, c):
+        return ast.While(c[1])
+
+    def wend_stmt(self, c):
+        return ast.Wend()
+
+    def swap_stmt(self, c):
+        return ast.Swap(c[1], c[3])
+
+    def mid_stmt(self, c):
+        if c[0].value != "MID$":
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        v = _values(c)
+        count = v[3] if len(v) > 4 else None
+        return ast.MidAssign(v[1], v[2], count, v[-1])
+
+    def erase_stmt(self, c):
+        return ast.Erase([t.value for t in _values(c)[1:]])
+
+    def option_base(self, c):
+        base = _line_number(c[2])
+        if c[1].value != "BASE" or base not in (0, 1):
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return ast.OptionBase(base)
+
+    def line_input(self, c):
+        prompt, rest = None, c[2:]
+        if isinstance(rest[0], Token) and rest[0].type == "STRING":
+            prompt, rest = rest[0].value, rest[2:]
+        return ast.LineInput(prompt, rest[0])
+
+    def write_stmt(self, c):
+        return ast.Write(_values(c)[1:])
+
+    # -- sequential files
+    def open_short(self, c):
+        v = [x for x in c[1:] if not (isinstance(x, Token) and x.type in ("COMMA", "HASH"))]
+        return ast.Open(v[0], v[1], v[2])
+
+    def open_long(self, c):
+        mode, word = c[3], c[4]
+        if (mode.type == "NAME" and mode.value != "OUTPUT") or word.value not in ("AS", "AS#"):
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return ast.Open(ast.Str(mode.value), c[-1], c[1])
+
+    def close_stmt(self, c):
+        return ast.Close([x for x in c[1:] if not isinstance(x, Token)])
+
+    def kill_stmt(self, c):
+        return ast.Kill(c[1])
+
+    def name_stmt(self, c):
+        if c[2].value != "AS":
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return ast.Rename(c[1], c[3])
+
+    def files_stmt(self, c):
+        return ast.Files(c[1] if len(c) > 1 else None)
+
+    def print_file(self, c):
+        return ast.Print(False, list(c[4:]), channel=c[2])
+
+    def print_file_using(self, c):
+        return ast.Print(False, list(c[7:]), using=c[5], channel=c[2])
+
+    def write_file(self, c):
+        return ast.Write(_values(c)[3:], channel=c[2])
+
+    def input_file(self, c):
+        return ast.Input(None, False, _values(c)[3:], channel=c[2])
+
+    def line_input_file(self, c):
+        return ast.LineInput(None, c[5], channel=c[3])
+
+    def return_line(self, c):
+        return ast.ReturnTo(_line_number(c[1]))
+
+    def data_stmt(self, c):
+        return ast.Data(c[0].value)
+
+    def read_stmt(self, c):
+        return ast.Read(_values(c)[1:])
+
+    def restore_stmt(self, c):
+        return ast.Restore(_line_number(c[1]) if len(c) > 1 else None)
+
+    def input_stmt(self, c):
+        prompt = None
+        question = True
+        rest = c[1:]
+        if rest and isinstance(rest[0], Token) and rest[0].type == "STRING":
+            prompt = rest[0].value
+            question = rest[1].type == "SEMI"
+            rest = rest[2:]
+        return ast.Input(prompt, question, _values(rest))
+
+    def def_stmt(self, c):
+        name = c[2].value
+        params = c[3] if isinstance(c[3], list) else []
+        return ast.DefFn(name, params, c[-1])
+
+    def params(self, c):
+        return [t.value for t in _values(c)]
+
+    def resume_stmt(self, c):
+        if len(c) == 1:
+            return ast.Resume("retry")
+        if c[1].type == "NEXT":
+            return ast.Resume("next")
+        target = _line_number(c[1])
+        return ast.Resume("retry") if target == 0 else ast.Resume("line", target)
+
+    def error_stmt(self, c):
+        return ast.Error(c[1])
+
+    def randomize_stmt(self, c):
+        return ast.Randomize(c[1] if len(c) > 1 else None)
+
+    def angle_stmt(self, c):
+        return ast.Angle(c[0].type)
+
+    def trace_stmt(self, c):
+        return ast.Trace(c[0].type == "TRON")
+
+    def cls_stmt(self, c):
+        return ast.Cls()
+
+    def width_stmt(self, c):
+        return ast.Width(c[-1], len(c) == 3)  # WIDTH LPRINT n: the printer's
+
+    def width_device(self, c):
+        return ast.Width(c[-1], device=c[1])  # WIDTH "LPT1:", n
+
+    def deftype_stmt(self, c):
+        return ast.DefType(c[0].value[3:], _values(c)[1:])
+
+    def letters(self, c):
+        first, last = c[0].value, c[-1].value
+        if len(first) != 1 or len(last) != 1 or not first.isalpha() or not last.isalpha() or last < first:
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return first + last
+
+    # -- expressions
+    def binop(self, c):
+        left, op, right = c
+        return ast.Binary(_OPERATOR_NAMES[op.type], left, right)
+
+    def unop(self, c):
+        return ast.Unary(_OPERATOR_NAMES.get(c[0].type, c[0].type), c[1])
+
+    def call(self, c):
+        name = c[0].value
+        if len(c) == 1:
+            return ast.Call(name, ())
+        if len(c) > 2:  # INPUT$(n, #f)
+            return ast.Call(name, (c[1], c[4]))
+        arg = c[1]
+        return ast.Call(name, tuple(arg) if isinstance(arg, list) else (arg,))
+
+    def fn_call(self, c):
+        args = tuple(c[2]) if len(c) > 2 else ()
+        return ast.FnCall(c[1].value, args)
+
+    def number(self, c):
+        value = c[0].value
+        if type(value) is tuple:
+            return ast.Num(value[0], value[1])
+        return ast.Num(value)
+
+    def string(self, c):
+        return ast.Str(c[0].value)
+
+    def sysvar(self, c):
+        return ast.SysVar(c[0].value)
+
+
+
+
+@functools.lru_cache(maxsize=1)
+def _parser() -> Lark:
+    """The LALR parser (built once per process)."""
+    options = dict(parser="lalr", lexer=_TokenListLexer, transformer=_ToAst(), maybe_placeholders=False)
+    grammar = GRAMMAR_PATH.read_text()
+    try:  # lark keeps the LALR tables in a temp-dir cache keyed by the grammar's hash
+        return Lark(grammar, cache=True, **options)
+    except (OSError, ValueError, TypeError):
+        return Lark(grammar, **options)
+
+
+def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
+    """The statements of one line's text as ``dialect`` reads it; raises ``BasicError`` (Syntax error)."""
+    tokens = mark_unsupported(tokenize(text, dialect))
+    if not tokens:
+        return []
+    _check_nesting(tokens)
+    try:
+        return _parser().parse(tokens)
+    except BasicError:
+        raise
+    except (UnexpectedInput, LarkError) as exc:
+        inner = getattr(exc, "orig_exc", None)
+        if isinstance(inner, BasicError):
+            raise inner from None
+        raise _grammar_error(exc, dialect) from None
+
+
+# Terminals that can start an operand: an expression expected here and the
+# statement ended instead is GW-BASIC's "Missing operand" (``X =``, ``PRINT 1 +``).
+_OPERAND_STARTS = frozenset(("NAME", "STRNAME", "_LPAR"))
+_STATEMENT_ENDS = frozenset(("$END", "_COLON", "ELSE"))
+
+
+def _grammar_error(exc, dialect: Dialect) -> BasicError:
+    """The BASIC error for a token list the grammar refuses (``Missing operand`` only
+    where the dialect reports errors when reached, as GW-BASIC)."""
+    token = getattr(exc, "token", None)
+    kind = getattr(token, "type", "$END")
+    if kind == UNSUPPORTED:
+        return BasicError(unsupported_message(token.value), SYNTAX_ERROR)
+    expected = set(getattr(exc, "expected", ()) or ())
+    if dialect.errors_when_reached and kind in _STATEMENT_ENDS and expected & _OPERAND_STARTS:
+        return BasicError("Missing operand", MISSING_OPERAND)
+    return BasicError("Syntax error", SYNTAX_ERROR)
+
+
+def _statements_before_error(tokens: list) -> tuple[list, int]:
+    """The statements of the longest run of whole statements at the start of a bad line,
+    and the index of the token where the bad statement starts.
+
+    GW-BASIC runs a line statement by statement and finds a bad token only when it
+    gets there, so the statements before it run first (``10 PRINT 50: X`` prints 50).
+    """
+    colons = [k for k, t in enumerate(tokens) if t.type == "_COLON"]
+    best: list = []
+    bad_start = 0
+    for k in colons:
+        try:
+            best = _parser().parse(tokens[:k])
+        except (BasicError, UnexpectedInput, LarkError):
+            break
+        bad_start = k + 1
+    return best, bad_start
+
+
+def _statements_after_error(tokens: list, bad_start: int, dialect: Dialect) -> list:
+    """The statements after the bad one (from the colon that ends it), each bad one
+    again its error: ``RESUME NEXT`` goes on with them (GW-BASIC).  None follow a bad
+    statement that holds an IF (the rest of the line is its branch)."""
+    for k in range(bad_start, len(tokens)):
+        kind = tokens[k].type
+        if kind == "IF":
+            return []
+        if kind == "_COLON":
+            rest = tokens[k + 1:]
+            if not rest:
+                return []
+            try:
+                return _parser().parse(rest)
+            except (UnexpectedInput, LarkError) as exc:
+                inner = getattr(exc, "orig_exc", None)
+                err = inner if isinstance(inner, BasicError) else _grammar_error(exc, dialect)
+            except BasicError as exc:
+                err = exc
+            return _recover_tokens(rest, err, dialect) or [err]
+    return []
+
+
+def _place_error(statements: list, err: BasicError) -> list:
+    """``statements`` followed by ``err`` (raised when reached); after an IF whose last
+    branch runs to the end of the line the error belongs to that branch."""
+    if statements and isinstance(statements[-1], ast.If):
+        last = statements[-1]
+        for field in ("otherwise", "then"):
+            branch = getattr(last, field)
+            if isinstance(branch, list) and branch:
+                setattr(last, field, _place_error(list(branch), err))
+                return statements
+            if branch is not None:  # a line number: the rest of the line never runs
+                last.unreachable = list(last.unreachable) + [err]
+                return statements
+    return statements + [err]
+
+
+def _recover(text: str, err: BasicError, dialect: Dialect):
+    """The statements of a bad line with ``err`` in place of its first bad statement
+    (see :func:`_recover_tokens`); None when the line cannot even be scanned."""
+    try:
+        tokens = mark_unsupported(tokenize(text, dialect))
+    except BasicError:
+        return None
+    return _recover_tokens(tokens, err, dialect)
+
+
+def _recover_tokens(tokens: list, err: BasicError, dialect: Dialect) -> list:
+    """The statements before the first bad one, ``err``, then the statements after it."""
+    good, bad_start = _statements_before_error(tokens)
+    if good and isinstance(good[-1], ast.If):
+        return _place_error(good, err)
+    return good + [err] + _statements_after_error(tokens, bad_start, dialect)
+
+
+MAX_NESTING = 60  # IFs in one line, or parentheses inside each other
+
+
+def _check_nesting(tokens: list) -> None:
+    """Refuse absurdly deep lines before parsing: ``Out of memory`` (the period's answer)."""
+    depth = deepest = ifs = 0
+    for token in tokens:
+        kind = token.type
+        if kind == "_LPAR":
+            depth += 1
+            deepest = max(deepest, depth)
+        elif kind == "_RPAR":
+            depth -= 1
+        elif kind == "IF":
+            ifs += 1
+    if deepest > MAX_NESTING or ifs > MAX_NESTING:
+        from yaseer.basic.errors import OUT_OF_MEMORY
+        raise BasicError("Out of memory", OUT_OF_MEMORY)
+
+
+def parse_line(number: int, text: str, dialect: Dialect = CASIO) -> ast.Line:
+    """Parse one numbered line; a syntax error is stored in ``Line.error`` or, where the
+    dialect finds errors when execution reaches them, after the statements before it."""
+    try:
+        statements = parse_statements(text, dialect)
+    except BasicError as err:
+        statements = _recover(text, err, dialect) if dialect.errors_when_reached else None
+        if statements is None or statements == [err]:
+            return ast.Line(number, [], text, error=err)
+        return ast.Line(number, statements, text)
+    except RecursionError:
+        from yaseer.basic.errors import OUT_OF_MEMORY
+        return ast.Line(number, [], text, error=BasicError("Out of memory", OUT_OF_MEMORY))
+    return ast.Line(number, statements, text)

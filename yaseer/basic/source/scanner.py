@@ -1,0 +1,480 @@
+"""Source text -> tokens, the way the dialect's tokeniser reads a line.
+
+Casio (``Dialect.keyword_first``): keywords are recognised first, wherever they start inside a run of letters:
+``COST`` is ``COS T``, ``GOSUBPROG1`` is ``GOSUB PROG 1``, ``IFX<0THEN`` is
+``IF X < 0 THEN``.  A variable name is a letter followed by letters and digits
+up to the next place where a keyword starts; a trailing ``$`` makes it a
+string variable.  Case does not matter outside string literals.
+
+GW-BASIC reads a run of name characters as one word (``COST`` is a variable,
+``FORI=1TO3`` a syntax error) and, with ``Dialect.typed_numbers``, number
+literals carry their type (``(value, "%" | "!" | "#")``; see
+:func:`_scan_typed_number`); names keep their type character (``A%``, ``B#``).
+
+The scanner also splits a listing into lines: a physical line that does not
+begin with a line number continues the previous line (the paper wraps long
+lines); see :func:`split_lines`.
+
+Token types are the terminal names declared in ``grammar.lark``.
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+
+from yaseer.basic.dialects.dialect import CASIO, Dialect
+from yaseer.basic.errors import BasicError, OVERFLOW, SYNTAX_ERROR
+from yaseer.basic.dialects.reserved import GW_RESERVED_WORDS
+
+# Statement and operator keywords every dialect reserves: each is its own terminal type.
+STATEMENT_KEYWORDS = (
+    "LET", "PRINT", "LPRINT", "USING", "FOR", "TO", "STEP", "NEXT", "GOTO", "GOSUB",
+    "RETURN", "IF", "THEN", "ELSE", "ON", "END", "STOP", "DIM", "CLEAR",
+    "READ", "RESTORE", "INPUT", "DEF", "FN", "ERROR", "RESUME", "RANDOMIZE",
+    "AND", "OR", "NOT", "MOD", "TAB", "SPC", "TRON", "TROFF", "CLS", "WIDTH",
+)
+# GW-BASIC's statements, in both dialects.
+GW_STATEMENT_KEYWORDS = (
+    "WHILE", "WEND", "SWAP", "ERASE", "OPTION", "LINE", "WRITE", "OPEN", "CLOSE", "KILL",
+    "FILES", "APPEND",
+)
+RENAME_KEYWORD = "NAME"  # NAME old AS new (token RENAME: NAME is the variables' terminal)
+# Functions of one argument (parentheses optional: ``COS T``).
+UNARY_FUNCTIONS = (
+    "SIN", "COS", "TAN", "ATN", "SQR", "ABS", "INT", "FIX", "SGN", "EXP", "LOG", "RND",
+    "LEN", "STR$", "VAL", "CHR$", "ASC", "CINT", "CSNG", "CDBL",
+    "SPACE$", "HEX$", "OCT$", "MKI$", "MKS$", "MKD$", "CVI", "CVS", "CVD", "FRE", "POS",
+    "LPOS", "EOF", "LOF", "LOC",
+)
+# Functions that need a parenthesised argument list.
+LIST_FUNCTIONS = ("LEFT$", "RIGHT$", "MID$", "INSTR", "STRING$", "INPUT$")
+# Values without arguments.
+SYSTEM_VARIABLES = ("ERR", "ERL", "TIMER", "DATE$", "TIME$")
+COMMENT_KEYWORD = "REM"
+DATA_KEYWORD = "DATA"
+# Words some dialects reserve (Dialect.own_words, pi_keyword, program_areas) -> token type.
+DIALECT_WORDS = {
+    "PROG": "PROG", "DEG": "DEG", "RAD": "RAD", "PI": "SYSVAR", "XOR": "XOR", "EQV": "EQV",
+    "IMP": "IMP", "DEFINT": "DEFTYPE", "DEFSNG": "DEFTYPE", "DEFDBL": "DEFTYPE", "DEFSTR": "DEFTYPE",
+}
+# GW-BASIC reads these keywords even when name characters follow (``FNA``, ``TAB(``).
+_GW_PREFIX_KEYWORDS = ("FN",)
+
+_COMMON_TYPES: dict[str, str] = {}
+for _word in STATEMENT_KEYWORDS + GW_STATEMENT_KEYWORDS:
+    _COMMON_TYPES[_word] = _word
+_COMMON_TYPES[RENAME_KEYWORD] = "RENAME"
+for _word in UNARY_FUNCTIONS:
+    _COMMON_TYPES[_word] = "FUNC"
+for _word in LIST_FUNCTIONS:
+    _COMMON_TYPES[_word] = "FUNCN"
+for _word in SYSTEM_VARIABLES:
+    _COMMON_TYPES[_word] = "SYSVAR"
+_COMMON_TYPES[COMMENT_KEYWORD] = "REMARK"
+_COMMON_TYPES[DATA_KEYWORD] = "DATA_TEXT"
+_KEYWORD_TYPES = {**_COMMON_TYPES, **DIALECT_WORDS}  # every word some dialect reserves
+
+
+class _Keywords:
+    """One dialect's keyword table: word -> token type, and the words by first letter
+    (longest first, so that INPUT wins over INT and ERROR over ERR)."""
+
+    def __init__(self, dialect: Dialect):
+        words = dict(_COMMON_TYPES)
+        own = list(dialect.own_words)
+        own += ["PI"] if dialect.pi_keyword else []
+        own += ["PROG"] if dialect.program_areas else []
+        for word in own:
+            words[word] = DIALECT_WORDS[word]
+        self.types = words
+        self.by_letter: dict[str, tuple[str, ...]] = {}
+        for word in sorted(words, key=len, reverse=True):
+            self.by_letter[word[0]] = self.by_letter.get(word[0], ()) + (word,)
+
+    def at(self, upper: str, i: int) -> str | None:
+        """The longest keyword that starts at position ``i`` of the upper-cased text
+        (none where a longer reserved word begins with it: see ``_LONGER_RESERVED``)."""
+        for word in self.by_letter.get(upper[i], ()):
+            if upper.startswith(word, i):
+                if any(upper.startswith(longer, i) for longer in _LONGER_RESERVED.get(word, ())):
+                    return None
+                return word
+        return None
+
+
+# Keyword-first reading must not split a longer GW-BASIC reserved word that begins with
+# one of GW-BASIC's statement keywords (LOCATE is not LOC ATE, LOCK not LOC K): it stays one name,
+# which the parser reports as an unsupported word.
+_ADDED_KEYWORDS = set(GW_STATEMENT_KEYWORDS) | {RENAME_KEYWORD} | {
+    "SPACE$", "HEX$", "OCT$", "MKI$", "MKS$", "MKD$", "CVI", "CVS", "CVD", "FRE", "POS", "LPOS",
+    "EOF", "LOF", "LOC", "INSTR", "STRING$", "INPUT$", "TIMER", "DATE$", "TIME$"}
+_LONGER_RESERVED = {
+    word: tuple(r for r in GW_RESERVED_WORDS if r.startswith(word) and r != word and r not in _KEYWORD_TYPES)
+    for word in _ADDED_KEYWORDS
+}
+
+
+@functools.lru_cache(maxsize=None)
+def _keywords(dialect: Dialect) -> _Keywords:
+    return _Keywords(dialect)
+
+
+_OPERATORS = {
+    "+": "PLUS", "-": "MINUS", "*": "STAR", "/": "SLASH", "\\": "BSLASH", "^": "CARET",
+    "(": "_LPAR", ")": "_RPAR", ",": "COMMA", ";": "SEMI", ":": "_COLON", "#": "HASH",
+}
+_RELATIONS = {
+    "=": "EQ", "<": "LT", ">": "GT", "<=": "LE", "=<": "LE", ">=": "GE", "=>": "GE",
+    "<>": "NE", "><": "NE",
+}
+_NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)(E[+-]?\d+)?")
+_LINE_NUMBER = re.compile(r"\s*(\d+)(?=[\sA-Za-z'?]|$)\s?")
+
+
+def _syntax_error() -> BasicError:
+    return BasicError("Syntax error", SYNTAX_ERROR)
+
+
+def _scan_string(text: str, i: int) -> tuple[str, int]:
+    """A string literal starting at the quote at ``i``; an unclosed one ends the line."""
+    end = text.find('"', i + 1)
+    if end < 0:
+        return text[i + 1:], len(text)
+    return text[i + 1:end], end + 1
+
+
+def _scan_data(text: str, i: int) -> tuple[str, int]:
+    """The raw text of a DATA statement: up to the first ``:`` outside quotes."""
+    j = i
+    quoted = False
+    while j < len(text):
+        ch = text[j]
+        if ch == '"':
+            quoted = not quoted
+        elif ch == ":" and not quoted:
+            break
+        j += 1
+    return text[i:j], j
+
+
+def _scan_word(upper: str, i: int, keywords: _Keywords) -> tuple[str, str, int]:
+    """Keyword-first (the pocket computers): a keyword wherever one starts; otherwise a
+    name of letters and digits up to the next place a keyword starts; ``$`` ends it.
+
+    Returns ``(token type, value, end)``.
+    """
+    word = keywords.at(upper, i)
+    if word is not None:
+        return keywords.types[word], word, i + len(word)
+    j = i + 1
+    while j < len(upper) and upper[j].isalnum() and upper[j].isascii() and keywords.at(upper, j) is None:
+        j += 1
+    if j < len(upper) and upper[j] == "$":
+        return "STRNAME", upper[i:j + 1], j + 1
+    return "NAME", upper[i:j], j
+
+
+_NAME_CHARS = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789.")
+
+
+def _scan_word_whole(upper: str, i: int, keywords: _Keywords) -> tuple[str, str, int]:
+    """GW-BASIC: letters, digits and ``.`` are read as one word; the word is a keyword
+    when the characters read so far spell one and no name character follows (``FN``
+    excepted: ``FNA`` is ``FN A``), so ``COST`` and ``FORI`` are names; a name may end
+    in a type character ``% ! # $``.  (PC-BASIC 2.0.8's tokeniser, checked on it.)
+    """
+    n = len(upper)
+    j = i
+    while j < n:
+        ch = upper[j]
+        j += 1
+        word = upper[i:j]
+        if word == "GO" and (upper.startswith(" SUB", j) or (upper.startswith(" TO", j) and (
+                j + 3 >= n or upper[j + 3] not in _NAME_CHARS))):
+            word = "GOSUB" if upper[j + 1] == "S" else "GOTO"
+            return word, word, j + len(word) - 1
+        kind = keywords.types.get(word)
+        if kind is not None and j < n and upper[j] == "$" and word + "$" in keywords.types:
+            return keywords.types[word + "$"], word + "$", j + 1  # INPUT$, not INPUT
+        if kind is not None and (word in _GW_PREFIX_KEYWORDS or j >= n or upper[j] not in _NAME_CHARS):
+            return kind, word, j
+        if ch not in _NAME_CHARS:
+            j -= 1
+            break
+    name = upper[i:j]
+    if j < n and upper[j] in "%!#$":
+        return ("STRNAME" if upper[j] == "$" else "NAME"), name + upper[j], j + 1
+    return "NAME", name, j
+
+
+def _scan_number(upper: str, i: int) -> tuple[float, int]:
+    match = _NUMBER.match(upper, i)
+    if match is None:
+        raise _syntax_error()
+    value = float(match.group(0))
+    if value == float("inf"):
+        raise BasicError("Overflow", OVERFLOW)
+    return value, match.end()
+
+
+# a type character may follow a number without exponent only (``1E2!`` is 1E2, then a bad ``!``)
+_TYPED_NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)(?:([ED])([+-]?\d*)|([%!#]?))")
+_RADIX_NUMBER = re.compile(r"&(H[0-9A-F]*|O?[0-7]*)")
+SINGLE_DIGITS = 7  # a literal with more significant digits is double precision (GW-BASIC)
+
+
+def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[tuple, int]:
+    """A GW-BASIC number literal: ``((value, type), end)`` with type ``%``, ``!`` or ``#``.
+
+    Without a suffix a whole number below 32768 is an integer, a ``D`` exponent or
+    more than 7 digits makes a double, anything else is single precision.
+    ``&H1F`` / ``&O17`` / ``&17`` are 16-bit integers (``&HFFFF`` is -1).
+    A decimal literal beyond MBF's range (``1E+39``, ``1D+39``) is the largest number of
+    its type, and ``"Overflow"`` is added to ``notes``: GW-BASIC's tokeniser prints it
+    when the line is entered (PC-BASIC 2.0.8: when a program is loaded), not when the
+    line runs; see :func:`entry_messages`.
+    """
+    from yaseer.basic.arithmetic.values import DOUBLE_LARGEST, MBF_SMALLEST, SINGLE_LARGEST, single_literal, to_single
+
+    if upper[i] == "&":
+        match = _RADIX_NUMBER.match(upper, i)
+        digits = match.group(1)
+        hexadecimal = digits.startswith("H")
+        digits = digits[1:] if digits[:1] in ("H", "O") else digits
+        value = int(digits, 16 if hexadecimal else 8) if digits else 0
+        if value > 0xFFFF:
+            raise BasicError("Overflow", OVERFLOW)
+        return (value - 0x10000 if value >= 0x8000 else value, "%"), match.end()
+    match = _TYPED_NUMBER.match(upper, i)
+    if match is None:
+        raise _syntax_error()
+    mantissa, letter, exponent, suffix = match.groups()
+    value = float(mantissa + ("E" + (exponent if exponent.strip("+-") else "0") if letter else ""))
+    plain = letter is None and "." not in mantissa
+    if suffix == "%" or (not suffix and plain and value < 32768):
+        if not value.is_integer() and suffix == "%":
+            return (to_single(value), "!"), match.end()
+        if value == 32768:  # only as -32768%: a single until the minus makes it an integer
+            return (32768.0, "!"), match.end()
+        if value > 32768:
+            raise _syntax_error()
+        return (int(value), "%"), match.end()
+    digits = len(mantissa.replace(".", "").lstrip("0").rstrip("0") if "." in mantissa else mantissa.lstrip("0"))
+    if suffix == "#" or (not suffix and (letter == "D" or digits > SINGLE_DIGITS)):
+        if value > DOUBLE_LARGEST:  # MBF's double range ends where the single's does
+            value = _overflowed(DOUBLE_LARGEST, notes)
+        elif value < MBF_SMALLEST:  # ... and begins there too: below it a literal is 0
+            value = 0.0
+        return (value, "#"), match.end()
+    single = to_single(value)
+    if not single - single:  # in range: the value GW-BASIC's conversion gives (values.mbf_single)
+        single = single_literal(match.group(0).rstrip("!#%"))
+    if single - single:  # beyond the single range
+        single = _overflowed(SINGLE_LARGEST, notes)
+    return (single, "!"), match.end()
+
+
+def _overflowed(largest: float, notes: list | None) -> float:
+    """The value of a literal beyond the range: ``largest``, noting GW's message."""
+    if notes is not None:
+        notes.append("Overflow")
+    return largest
+
+
+# Only a literal with an exponent of two digits or more, or with 30 digits in a row, can
+# pass 1.7E+38: lines without one are not scanned for entry messages.
+_MAY_OVERFLOW = re.compile(r"[EDed][+]?\d\d|\d{30}")
+
+
+def entry_messages(text: str, dialect: Dialect = CASIO) -> list[str]:
+    """The messages GW-BASIC prints when the line ``text`` is entered or loaded: one
+    ``Overflow`` for each number literal beyond the range (GWMAIN.ASM's tokeniser reads
+    numbers as it stores the line; PC-BASIC 2.0.8 prints them when it loads a program,
+    before RUN).  Literals in strings, remarks and DATA are text and print nothing."""
+    if not dialect.typed_numbers or not _MAY_OVERFLOW.search(text):
+        return []
+    notes: list[str] = []
+    try:
+        for _ in _lexemes(text, dialect, notes):
+            pass
+    except BasicError:
+        pass  # a character no token starts with: the line's error is reported when it runs
+    return notes
+
+
+def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
+    """``(token type, value, start, end)`` for each token of one line, in order, as
+    ``dialect`` reads it (see ``Dialect.keyword_first`` and ``Dialect.typed_numbers``);
+    ``notes`` collects the messages of literals beyond the range (see :func:`entry_messages`).
+
+    ``start:end`` is the token's span in ``text``.  A remark (``REM`` or ``'``)
+    is the last lexeme: type ``REMARK``, value the text after it.  Raises
+    ``BasicError("Syntax error")`` at a character no token can start with.
+    """
+    keywords = _keywords(dialect)
+    scan_word = _scan_word if dialect.keyword_first else _scan_word_whole
+    typed = dialect.typed_numbers
+    upper = _upper_outside_strings(text)
+    i = 0
+    n = len(text)
+    while i < n:
+        ch = upper[i]
+        start = i
+        if ch in " \t\r\n":
+            i += 1
+            continue
+        if ch == '"':
+            value, i = _scan_string(text, i)
+            yield "STRING", value, start, i
+        elif ch == "'":
+            yield "REMARK", text[i + 1:], start, n
+            return
+        elif ch.isdigit() or (ch == "." and i + 1 < n and upper[i + 1].isdigit()) or (ch == "&" and typed):
+            value, i = _scan_typed_number(upper, i, notes) if typed else _scan_number(upper, i)
+            yield "NUMBER", value, start, i
+        elif ch.isascii() and ch.isalpha():
+            kind, word, end = scan_word(upper, i, keywords)
+            if kind == "REMARK":
+                yield "REMARK", text[end:], start, n
+                return
+            if kind == "DATA_TEXT":
+                raw, i = _scan_data(text, end)
+                yield "DATA_TEXT", raw, start, i
+            else:
+                i = end
+                yield kind, word, start, i
+        elif ch in "<>=":
+            pair = upper[i:i + 2]
+            symbol = pair if pair in _RELATIONS else ch
+            i += len(symbol)
+            yield _RELATIONS[symbol], symbol, start, i
+        elif ch in _OPERATORS:
+            i += 1
+            yield _OPERATORS[ch], ch, start, i
+        elif ch == "?":
+            i += 1
+            yield "PRINT", "PRINT", start, i
+        else:
+            raise _syntax_error()
+
+
+def tokenize(text: str, dialect: Dialect = CASIO) -> list:
+    """The tokens of one line's statements (the text after its line number), as ``dialect`` reads them.
+
+    A ``'`` remark after a statement is dropped (no colon is needed before it).
+    Raises ``BasicError("Syntax error")`` for a character no token can start with.
+    """
+    from lark import Token  # here, not at the top: loading a listing (split_lines) needs no lark
+
+    tokens: list = []  # lark Tokens
+    for kind, value, start, _ in _lexemes(text, dialect):
+        if kind == "REMARK" and tokens and text[start] == "'":
+            break
+        if _joins_go(tokens, kind, value):
+            tokens[-1] = Token(_GO_JOINED[value], "GO" + value)
+            continue
+        tokens.append(Token(kind, value))
+    return tokens
+
+
+_GO_JOINED = {"TO": "GOTO", "SUB": "GOSUB"}
+_STATEMENT_STARTS = (None, "_COLON", "THEN", "ELSE")
+
+
+def _joins_go(tokens: list, kind: str, value) -> bool:
+    """Keyword-first reading: is this ``TO`` or ``SUB`` the second word of ``GO TO`` /
+    ``GO SUB`` at a statement start?  (GW-BASIC's whole-word reading joins them itself.)"""
+    if value not in _GO_JOINED or kind not in ("TO", "NAME") or not tokens:
+        return False
+    last = tokens[-1]
+    before = tokens[-2].type if len(tokens) > 1 else None
+    return last.type == "NAME" and last.value == "GO" and before in _STATEMENT_STARTS
+
+
+# Lexemes listed as words: a space separates two of them (``FOR J``, ``1 TO``, ``COS T``).
+_WORDS = {"NAME", "STRNAME", "NUMBER", "STRING", "SYSVAR", "_RPAR"}
+# Keywords followed by ``(`` without a space: functions and TAB/SPC.
+_FUNCTION_TYPES = {"FUNC", "FUNCN", "TAB", "SPC"}
+_TIGHT_AFTER = {"_COLON", "SEMI", "COMMA", "_RPAR"}
+
+
+def detokenize(text: str, dialect: Dialect = CASIO) -> str:
+    """A line's statements as the pocket computer lists them (LIST).
+
+    Keywords are found as the scanner finds them and shown in capitals, with a
+    space between a keyword and a neighbouring word (name, number, string, or
+    another keyword), none around operators and separators; names in
+    capitals; numbers, strings, remarks and DATA as typed.  Typed
+    ``L=X/COST`` lists as ``L=X/COS T``, ``forj=1to3:printj;:nextj`` as
+    ``FOR J=1 TO 3:PRINT J;:NEXT J``.  A line the scanner cannot read is
+    returned as typed.
+    """
+    try:
+        lexemes = list(_lexemes(text, dialect))
+    except BasicError:
+        return text.strip()
+    out: list[str] = []
+    previous = None  # type of the lexeme before
+    for kind, value, start, end in lexemes:
+        if kind == "REMARK":
+            piece = text[start:end] if text[start] == "'" else "REM" + value
+        elif kind == "DATA_TEXT":
+            piece = "DATA " + value.lstrip()
+        elif kind in ("NAME", "STRNAME"):
+            piece = value
+        elif kind in ("NUMBER", "STRING") or kind in _OPERATORS.values() or kind in _RELATIONS.values():
+            piece = text[start:end].upper() if kind == "NUMBER" else text[start:end]
+        else:
+            piece = value  # a keyword
+        if previous is not None and _spaced(previous, kind):
+            out.append(" ")
+        out.append(piece)
+        previous = kind
+    return "".join(out)
+
+
+def _is_keyword(kind: str) -> bool:
+    return kind in _KEYWORD_TYPES.values() and kind not in ("REMARK", "DATA_TEXT", "SYSVAR")
+
+
+def _spaced(left: str, right: str) -> bool:
+    """Is there a space between lexemes of types ``left`` and ``right`` in a listing?"""
+    if right in _TIGHT_AFTER or left == "FN":
+        return False
+    if _is_keyword(left):
+        return not (left in _FUNCTION_TYPES and right == "_LPAR")
+    if _is_keyword(right) or right in ("REMARK", "DATA_TEXT"):
+        return left in _WORDS or _is_keyword(left)
+    return left in _WORDS and right in _WORDS and left != "_RPAR"
+
+
+def _upper_outside_strings(text: str) -> str:
+    """Upper-case everything but string literals (same length as ``text``)."""
+    parts = text.split('"')
+    for k in range(0, len(parts), 2):
+        parts[k] = parts[k].upper()
+    return '"'.join(parts)
+
+
+def split_lines(source: str) -> list[tuple[int, str, int]]:
+    """Split a listing into ``(line number, statement text, physical line index)``.
+
+    A physical line that begins with a number followed by a space, a letter or
+    the end of the line starts a new program line; any other non-blank line
+    continues the previous one (joined with one space).  Text before the first
+    numbered line is a syntax error (``BasicError`` with no line).
+    """
+    lines: list[tuple[int, str, int]] = []
+    for index, physical in enumerate(source.splitlines()):
+        if not physical.strip():
+            continue
+        match = _LINE_NUMBER.match(physical)
+        if match:
+            lines.append((int(match.group(1)), physical[match.end():].strip(), index))
+        elif lines:
+            number, text, first = lines[-1]
+            lines[-1] = (number, (text + " " + physical.strip()).strip(), first)
+        else:
+            raise BasicError(f"Syntax error (no line number: {physical.strip()[:30]!r})", SYNTAX_ERROR)
+    return lines
