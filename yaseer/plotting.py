@@ -77,8 +77,8 @@ def draw_tables(tables: Sequence, spec: FigureSpec, subtitle: str = ""):
     The main table (the first) is labelled by ``spec``; each of its series is a
     line in every panel (a legend names them when there are several); every other
     table gets panels of its own below, labelled by its printed label and names.
-    A line breaks where the crank angle steps back or jumps a gap
-    (:func:`yaseer.series.broken`).  ``subtitle`` (e.g. the methods chosen) goes
+    A line breaks only where the sweep restarts or jumps a gap (positions that
+    cannot be assembled; :func:`yaseer.series.broken`).  ``subtitle`` (e.g. the methods chosen) goes
     under the title.
     """
     from matplotlib.figure import Figure  # free-standing: no pyplot, the user's backend untouched

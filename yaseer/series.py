@@ -15,9 +15,12 @@ series of their own rather than being folded into the main rows:
   panels), one per label and length; a label naming as many quantities as the
   row has (split at commas) names its columns.
 
-Within a series, a step back in the crank angle (a second pass) or a gap wider
-than 1.5 times the usual step (positions that cannot be assembled) breaks the
-line: :func:`broken` puts a NaN there.  Only the standard library is imported.
+Within a series the line breaks only where the mechanism's motion did: a step
+against the sweep's own direction (a second pass, or another assembly branch
+started over; a sweep ``STEP -20`` steps back at every row and is one line), a
+repeated crank angle, or a gap wider than 1.5 times the usual step (positions
+that cannot be assembled): :func:`broken` puts a NaN there.  Only the standard
+library is imported.
 """
 
 from __future__ import annotations
@@ -130,14 +133,19 @@ def _label_names(label: str, width: int) -> tuple[str, ...] | None:
 
 
 def broken(xs: Sequence[float], ys: Sequence[float]) -> tuple[list[float], list[float]]:
-    """``xs``, ``ys`` with a NaN point wherever x steps back or jumps a gap, so a line breaks there."""
-    steps = [b - a for a, b in zip(xs, xs[1:]) if b > a]
+    """``xs``, ``ys`` with a NaN point wherever the sweep restarts, repeats or jumps a gap, so a line breaks there.
+
+    The sweep's direction and usual step are those of the median step (a listing may
+    sweep its crank angle down as well as up); a step the other way, a zero step, or
+    one longer than :data:`GAP` usual steps breaks the line.
+    """
+    steps = [b - a for a, b in zip(xs, xs[1:]) if b != a]
     usual = sorted(steps)[len(steps) // 2] if steps else 0.0
     out_x, out_y = [], []
     for index, (x, y) in enumerate(zip(xs, ys)):
         if index:
-            step = x - xs[index - 1]
-            if step <= 0 or (usual > 0 and step > GAP * usual):
+            along = (x - xs[index - 1]) * (1.0 if usual >= 0 else -1.0)  # the step in the sweep's direction
+            if along <= 0 or (usual != 0 and along > GAP * abs(usual)):
                 out_x.append(math.nan)
                 out_y.append(math.nan)
         out_x.append(x)
