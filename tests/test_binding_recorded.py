@@ -162,3 +162,68 @@ def test_an_array_of_another_length_is_read_as_the_plain_code_reads_it():
     recorded, plain = runs
     assert recorded == plain
     assert recorded[2] != recorded[1]  # the shorter array does change the forces
+
+
+def pattern_inputs(m: Machine, j: int) -> None:
+    """Pattern ``j`` of 32 (as the benchmark's mix): Q(2) 1..4, Z(2) 0 or 2, L(10) 0 or 1, crank turning or at rest."""
+    moving = j // 16 % 2
+    m.array("Q")[2], m.array("Z")[2], m.array("L")[10] = j % 4 + 1, 2.0 * (j // 4 % 2), float(j // 8 % 2)
+    m.array("W")[5], m.array("A")[5], m.array("D")[2], m.array("E")[2] = 4.0 * moving, -moving, moving / 10, moving / 5
+
+
+def test_a_call_runs_the_one_path_its_inputs_take_whatever_the_mix():
+    # 32 input patterns cycled: equal to the plain code call by call, and once every
+    # pattern was met, each call runs exactly one recorded path (chosen by its key),
+    # never a path whose guards fail first
+    def scenario():
+        m = machine(2, 2.0, 1)
+        row = []
+        for call in range(96):
+            pattern_inputs(m, call % 32)
+            m.array("T")[12] = 7.5 * call
+            row.append(outcome(m, 2))
+        return row
+
+    recorded, plain = recorded_and_plain(scenario)
+    assert recorded == plain
+    binding._recordings.clear()
+    binding._calls.clear()
+    scenario()
+    recordings = binding._recordings[(2, None)]
+    assert 8 <= len(recordings) <= 32  # Q(2) only matters with forces
+    runs = []
+    for k, path in enumerate(recordings._paths):
+        def counted(machine, path=path, k=k):
+            runs.append(k)
+            return path(machine)
+        recordings._chosen = {key: counted if chosen is path else chosen for key, chosen in recordings._chosen.items()}
+        recordings._paths[k] = counted
+    m = machine(2, 2.0, 1)
+    for call in range(96):  # the first pass over the patterns on a fresh machine finds the paths of its keys
+        pattern_inputs(m, call % 32)
+        m.array("T")[12] = 3.0 * call
+        outcome(m, 2)
+        if call == 31:
+            runs.clear()
+    assert len(runs) == 64
+
+
+def test_a_recorded_call_never_enters_numpy_errstate(monkeypatch):
+    # numpy imported by something else (a notebook): the plain code is run under
+    # numpy.errstate (methods may use numpy), a recorded path, which uses none, is not
+    np = pytest.importorskip("numpy")
+    entered = []
+    real = np.errstate
+
+    def errstate(**kwargs):
+        entered.append(kwargs)
+        return real(**kwargs)
+
+    monkeypatch.setattr(np, "errstate", errstate)
+    binding._recordings.clear()
+    binding._calls.clear()
+    m = machine(2, 2.0, 1)
+    for call in range(10):
+        m.array("T")[12] = 10.0 * call
+        outcome(m, 2)
+    assert len(entered) == 2  # the first call (plain) and the second (recorded while it ran)

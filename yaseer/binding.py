@@ -38,6 +38,8 @@ TYPE_CHECKING = False
 if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up time)
     from typing import Callable
 
+    from yaseer.linkages.recordings import Recordings
+
 LINKAGES = {1: "slider_crank", 2: "fourbar", 3: "inverted_slider_crank", 5: "virtual_link"}
 
 Element = tuple[str, int]  # an array element, e.g. ("F", 27)
@@ -147,19 +149,21 @@ class _RecordingFrame(_Frame):
         super().__init__(machine, area)
         self.recorder = recorder
         self._arrays: dict[str, int] = {}  # array read -> its length (the recording holds for it only)
+        recorder.lines.append("_arrays = _M.arrays")
 
     def get(self, name: str, index: int):
         value = super().get(name, index)
         array = f"_a_{name}"
         if name not in self._arrays:
             self._arrays[name] = length = len(self.machine.array(name))
-            self.recorder.lines += [f"{array} = _M.array({name!r})", f"if len({array}) != {length}: raise _Retrace"]
+            self.recorder.lines.append(f"{array} = {_fetch(name)}")
+            self.recorder.pin(f"len({array})", length)
         if index >= self._arrays[name]:
             return value  # beyond the dimension: 0, as long as the length is the same
-        return self.recorder.emit(value, f"float({array}[{index}])")
+        return self.recorder.read(value, f"float({array}[{index}])")
 
     def scalar(self, name: str):
-        return self.recorder.emit(super().scalar(name), f"float(_M.scalar({name!r}))")
+        return self.recorder.read(super().scalar(name), f"float(_M.scalar({name!r}))")
 
     def choice(self, name: str, index: int) -> float:
         from yaseer.linkages.tracing import NotTraceable, Traced
@@ -179,19 +183,20 @@ class _RecordingFrame(_Frame):
         self._scalars[name] = value
 
     def recorded(self):
-        """The compiled recording of this call: ``run(machine)`` computes the outputs
+        """The compiled recording of this call, ``run(machine)``, which computes the outputs
         from the machine's inputs and commits them as :meth:`_Frame.commit` does
-        (Retrace where the inputs take another path)."""
+        (Retrace where the inputs take another path), and the tests of its input
+        guards (:meth:`tracing.Recorder.keys`)."""
         recorder, area = self.recorder, self.area
         outputs = list(self._elements.values()) + list(self._scalars.values())
-        finite = " and ".join(f"_isfinite({recorder.operand(value)})" for value in outputs) or "True"
-        lines = [f"if not ({finite}): raise _error('Overflow', {OVERFLOW})"]
+        finite = "".join(f"{recorder.operand(value)}, " for value in outputs)
+        lines = [f"if not _all(_map(_isfinite, ({finite}))): raise _error('Overflow', {OVERFLOW})"]
         largest: dict[str, int] = {}
         for name, index in self._elements:
             largest[name] = max(index, largest.get(name, -1))
             if name not in self._arrays:
                 self._arrays[name] = -1  # written only
-                lines.append(f"_a_{name} = _M.array({name!r})")
+                lines.append(f"_a_{name} = {_fetch(name)}")
         if largest:  # an array's elements are all numbers, all strings or all rows: one look each
             lines += [f"if {' or '.join(f'len(_a_{n}) <= {i}' for n, i in largest.items())}: "
                       f"raise _error('Subscript out of range', {SUBSCRIPT_OUT_OF_RANGE})",
@@ -203,7 +208,7 @@ class _RecordingFrame(_Frame):
             lines.append(f"_M.set_scalar({name!r}, {_as_float(recorder, value)})")
         recorder.names.update(_isfinite=math.isfinite,
                               _error=lambda message, code: BasicError(f"{message} (PROG {area})", code))
-        return recorder.compile(lines, f"PROG {area}")
+        return recorder.compile(lines, f"PROG {area}"), recorder.keys()
 
     def plain(self) -> _Frame:
         """This call's outputs as a plain frame (concrete numbers)."""
@@ -215,14 +220,21 @@ class _RecordingFrame(_Frame):
         return frame
 
 
+def _fetch(name: str) -> str:
+    """The recorded text reading array ``name`` as ``machine.array(name)`` does (the
+    dictionary first: a method call for each array would cost a recorded call a
+    tenth of its time)."""
+    return f"_arrays.get({name!r}) or _M.array({name!r})"
+
+
 def _as_float(recorder, value) -> str:
     """The recorded text of output ``value`` as a float (as :meth:`_Frame.put` stores it)."""
     text = recorder.operand(value)
     return text if isinstance(getattr(value, "value", value), float) else f"float({text})"
 
 
-MAX_RECORDINGS = 16  # variants kept per program and method (forces or not, Q(n), ...)
-_recordings: dict[tuple, list] = {}  # (program, method) -> compiled recordings run(machine)
+MAX_RECORDINGS = 64  # paths kept per program and method (forces or not, Q(n), zero loads, ...)
+_recordings: dict[tuple, Recordings] = {}  # (program, method) -> its recorded paths
 _calls: dict[tuple, int] = {}
 
 
@@ -233,29 +245,32 @@ def _call_program(machine, number: int, method: str | None) -> _Frame | None:
     From the second call of a program on, each call is recorded once per path
     it takes (:mod:`yaseer.linkages.tracing`) and later calls on the same path run
     the recording: the same operations on the same values, without the objects
-    around them.  A path that cannot be recorded (branch tracking, another
-    method) runs the plain code."""
+    around them (:mod:`yaseer.linkages.recordings` finds the path of a call).  A
+    path that cannot be recorded (branch tracking, another method) runs the plain
+    code."""
     key = (number, method)
-    from yaseer.linkages.tracing import NotTraceable, Recorder, Retrace
-
-    recordings = _recordings.setdefault(key, [])
-    for recording in recordings:
-        try:
-            return recording(machine)
-        except Retrace:
-            continue
+    recordings = _recordings.get(key)
+    if recordings is not None and recordings.run(machine):
+        return None
     _calls[key] = calls = _calls.get(key, 0) + 1
-    if method is None and calls > 1 and len(recordings) < MAX_RECORDINGS:
+    if method is None and calls > 1 and (0 if recordings is None else len(recordings)) < MAX_RECORDINGS:
+        from yaseer.linkages.recordings import Recordings
+        from yaseer.linkages.tracing import NotTraceable, Recorder
+
         frame = _RecordingFrame(machine, number, Recorder())
         try:
-            PROGRAMS[number](frame, method)
+            with _quiet_numpy():
+                PROGRAMS[number](frame, method)
         except NotTraceable:
             pass
         else:
-            recordings.append(frame.recorded())
-            return frame.plain()
+            plain = frame.plain()
+            run, tests = frame.recorded()
+            _recordings.setdefault(key, Recordings()).add(run, tests, machine)
+            return plain
     frame = _Frame(machine, number)
-    PROGRAMS[number](frame, method)
+    with _quiet_numpy():
+        PROGRAMS[number](frame, method)
     return frame
 
 
@@ -458,7 +473,9 @@ PROGRAMS: dict[int, Callable[[_Frame, str | None], None]] = {1: program_1, 2: pr
 
 def _quiet_numpy():
     """numpy's floating-point warnings silenced while numpy is in use (non-finite
-    results are caught by :meth:`_Frame.commit`); nothing to silence otherwise."""
+    results are caught by :meth:`_Frame.commit`); nothing to silence otherwise.
+    Only the plain code needs it (methods and branch tracking may use numpy): a
+    recorded path uses none, and entering numpy.errstate would cost it a tenth of its time."""
     numpy = sys.modules.get("numpy")
     return numpy.errstate(all="ignore") if numpy is not None else contextlib.nullcontext()
 
@@ -469,8 +486,7 @@ def make_area(number: int, method: str | None = None) -> Callable[[object], None
 
     def area(machine) -> None:
         try:
-            with _quiet_numpy():
-                frame = _call_program(machine, number, method)
+            frame = _call_program(machine, number, method)
         except BasicError:
             raise
         except (ArithmeticError, ValueError, TypeError) as error:

@@ -23,6 +23,8 @@ from __future__ import annotations
 
 import cmath
 import math
+import operator
+import re
 from types import SimpleNamespace
 
 from yaseer.linkages import numerics
@@ -39,11 +41,26 @@ class NotTraceable(Exception):
 _LITERALS = (bool, int, float, complex)
 
 
+class Guard:
+    """A guard line of a recording (``if ...: raise _Retrace``) and, when its test
+    reads nothing but inputs, ``key``: the Python text of what it tests (a call
+    can then be matched to the path it takes before running one,
+    :mod:`yaseer.linkages.recordings`)."""
+
+    __slots__ = ("line", "key")
+
+    def __init__(self, line: str, key: str | None = None):
+        self.line, self.key = line, key
+
+    def __str__(self) -> str:
+        return self.line
+
+
 class Recorder:
     """The lines of one recording, the names it calls, and its inputs."""
 
     def __init__(self):
-        self.lines: list[str] = []
+        self.lines: list[str | Guard] = []
         self.names: dict[str, object] = {"_Retrace": Retrace}
         self._count = 0
         self._known: dict[str, Traced] = {}  # expression -> the value that holds it (computed once)
@@ -58,17 +75,29 @@ class Recorder:
         self.names[name] = value
         return name
 
-    def emit(self, value, expression: str) -> "Traced":
+    def emit(self, value, expression: str, source: str | None = None) -> "Traced":
         """A traced value ``value`` computed by ``expression`` (an expression met
-        before gives the value computed then: every expression is pure)."""
+        before gives the value computed then: every expression is pure).
+        ``source``: the same value as Python text reading inputs alone, where it is
+        one (an input read, or an input compared with a literal)."""
         known = self._known.get(expression)
         if known is not None:
             return known
         name = f"t{self._count}"
         self._count += 1
         self.lines.append(f"{name} = {expression}")
-        traced = self._known[expression] = Traced(self, value, name)
+        traced = self._known[expression] = Traced(self, value, name, source)
         return traced
+
+    def read(self, value, expression: str) -> "Traced":
+        """A traced input ``value`` read by ``expression`` (the recorded function's argument ``_M``)."""
+        traced = self.emit(value, expression, expression)
+        traced.leaf = True
+        return traced
+
+    def pin(self, subject: str, value) -> None:
+        """Re-check at run time that the input ``subject`` (Python text) equals ``value``."""
+        self.lines.append(Guard(f"if {subject} != {value!r}: raise _Retrace", subject))
 
     def function(self, name: str, function) -> str:
         """Bind ``function`` under ``name`` in the compiled record."""
@@ -77,16 +106,90 @@ class Recorder:
 
     def guard(self, traced: "Traced", truth: bool) -> None:
         """Re-check at run time that ``traced`` is ``truth``."""
-        self.lines.append(f"if {'not ' if truth else ''}{traced.name}: raise _Retrace")
+        key = f"bool({traced.source})" if traced.source is not None else None
+        self.lines.append(Guard(f"if {'not ' if truth else ''}{traced.name}: raise _Retrace", key))
+
+    def keys(self) -> tuple[str, ...]:
+        """The tests of the guards that read inputs alone, in order (see :class:`Guard`)."""
+        return tuple(dict.fromkeys(line.key for line in self.lines if isinstance(line, Guard) and line.key))
 
     def compile(self, epilogue: list[str], label: str):
         """The record as a function ``run(_M)`` (``_M``: what the recorded lines
-        read their inputs from): the recorded lines, then ``epilogue``."""
-        text = "def run(_M):\n" + "".join(f"    {line}\n" for line in self.lines + epilogue)
-        namespace = dict(self.names, __builtins__={"float": float, "complex": complex, "len": len, "abs": abs,
-                                                    "isinstance": isinstance, "list": list, "str": str})
+        read their inputs from): the recorded lines, then ``epilogue``.
+
+        The lines are compiled as recorded but for two rewritings that keep every
+        value and every guard: the reads of one array are made together where the
+        first of them was (:func:`_batched_reads`), and runs of finiteness guards
+        become one guard (:func:`_batched_finite_guards`)."""
+        lines = _batched_finite_guards(_batched_reads([str(line) for line in self.lines + epilogue], self.names))
+        text = "def run(_M):\n" + "".join(f"    {line}\n" for line in lines)
+        namespace = dict(self.names, _all=all, _map=map, _float=float,
+                         __builtins__={"float": float, "complex": complex, "len": len, "abs": abs,
+                                       "isinstance": isinstance, "list": list, "str": str})
         exec(compile(text, f"<traced {label}>", "exec"), namespace)
         return namespace["run"]
+
+
+_READ = re.compile(r"(t\d+) = float\((_a_\w+)\[(\d+)\]\)$")
+
+
+def _batched_reads(lines: list[str], names: dict) -> list[str]:
+    """``lines`` with every element read of an array (``tN = float(_a_X[i])``) moved to
+    the first read of that array, all of them in one statement (one C call for the
+    elements, one for the conversions).  Reads are pure and the array's length guard
+    comes before its first read, so moving a read earlier changes nothing but time."""
+    reads: dict[str, list[tuple[str, str]]] = {}
+    for line in lines:
+        found = _READ.match(line)
+        if found:
+            reads.setdefault(found.group(2), []).append((found.group(1), found.group(3)))
+    out = []
+    for line in lines:
+        found = _READ.match(line)
+        if not found:
+            out.append(line)
+            continue
+        elements = reads.pop(found.group(2), None)
+        if elements is None:  # already read with the first
+            continue
+        if len(elements) == 1:
+            out.append(line)
+            continue
+        indexes = tuple(int(index) for _, index in elements)
+        getter = f"_get_{'_'.join(map(str, indexes))}"
+        names.setdefault(getter, operator.itemgetter(*indexes))
+        out.append(f"{', '.join(name for name, _ in elements)} = _map(_float, {getter}({found.group(2)}))")
+    return out
+
+
+_FINITE = re.compile(r"(t\d+) = _isfinite\((\w+)\)$")
+
+
+def _batched_finite_guards(lines: list[str]) -> list[str]:
+    """``lines`` with each run of ``tN = _isfinite(x)`` + ``if not tN: raise _Retrace``
+    pairs (tN used nowhere else) made one guard over all the values."""
+    used: dict[str, int] = {}
+    for line in lines:
+        for name in re.findall(r"\bt\d+\b", line):
+            used[name] = used.get(name, 0) + 1
+    out: list[str] = []
+    run: list[str] = []
+    k = 0
+    while k < len(lines):
+        found = _FINITE.match(lines[k])
+        if (found and k + 1 < len(lines) and lines[k + 1] == f"if not {found.group(1)}: raise _Retrace"
+                and used[found.group(1)] == 2):
+            run.append(found.group(2))
+            k += 2
+            continue
+        if run:
+            out.append(f"if not _all(_map(_isfinite, ({', '.join(run)},))): raise _Retrace")
+            run = []
+        out.append(lines[k])
+        k += 1
+    if run:
+        out.append(f"if not _all(_map(_isfinite, ({', '.join(run)},))): raise _Retrace")
+    return out
 
 
 def _value(x):
@@ -99,6 +202,9 @@ _IDENTITIES = {("*", 1.0), ("/", 1.0), ("+", 0.0), ("-", 0.0)}
 _LEFT_IDENTITIES = {("*", 1.0), ("+", 0.0)}
 
 
+_COMPARISONS = {"<", "<=", ">", ">=", "==", "!="}
+
+
 def _binary(symbol: str, operation):
     def forward(self, other):
         if isinstance(other, (Traced, *_LITERALS)):
@@ -107,7 +213,11 @@ def _binary(symbol: str, operation):
                 return self
             if symbol == "**" and type(other) in (int, float) and other == 2:
                 return self.recorder.emit(value, f"{self.name} * {self.name}")
-            return self.recorder.emit(value, f"{self.name} {symbol} {self.recorder.operand(other)}")
+            operand = self.recorder.operand(other)
+            source = None
+            if symbol in _COMPARISONS and self.leaf and (type(other) in (int, float) or getattr(other, "leaf", False)):
+                source = f"({self.source} {symbol} {other.source if isinstance(other, Traced) else operand})"
+            return self.recorder.emit(value, f"{self.name} {symbol} {operand}", source)
         return NotImplemented
 
     def backward(self, other):
@@ -122,13 +232,15 @@ def _binary(symbol: str, operation):
 
 
 class Traced:
-    """A number of a recording: its concrete value and its variable's name."""
+    """A number of a recording: its concrete value and its variable's name;
+    ``source``: the Python text computing it from the inputs alone, where it is an
+    input (``leaf``) or an input compared with a literal or another input (else None)."""
 
-    __slots__ = ("recorder", "value", "name")
+    __slots__ = ("recorder", "value", "name", "source", "leaf")
     math_namespace: SimpleNamespace  # numerics.math_for picks it (set below)
 
-    def __init__(self, recorder: Recorder, value, name: str):
-        self.recorder, self.value, self.name = recorder, value, name
+    def __init__(self, recorder: Recorder, value, name: str, source: str | None = None):
+        self.recorder, self.value, self.name, self.source, self.leaf = recorder, value, name, source, False
 
     __add__, __radd__ = _binary("+", lambda a, b: a + b)
     __sub__, __rsub__ = _binary("-", lambda a, b: a - b)
@@ -214,14 +326,40 @@ def _zero_like(value):
     return 0j if isinstance(_value(value), complex) else 0.0
 
 
+def _maximum(a, b):
+    """max(a, b) recorded inline: ``b if b > a else a`` is what max does (NaN and
+    signed zeros included), without a call."""
+    if not isinstance(a, Traced) and not isinstance(b, Traced):
+        return max(a, b)
+    recorder = (a if isinstance(a, Traced) else b).recorder
+    first, second = recorder.operand(a), recorder.operand(b)
+    return recorder.emit(max(_value(a), _value(b)), f"({second} if {second} > {first} else {first})")
+
+
+def _unit(angle):
+    """u(angle) recorded as the C call that numerics.SCALAR.unit wraps (cmath.rect(1.0, angle))."""
+    if not isinstance(angle, Traced):
+        return _S.unit(angle)
+    callee = angle.recorder.function("_rect", cmath.rect)
+    return angle.recorder.emit(_S.unit(angle.value), f"{callee}(1.0, {angle.name})")
+
+
+def _angle(vector):
+    """The angle of a complex number recorded as numerics.SCALAR.angle computes it (atan2 of its parts)."""
+    if not isinstance(vector, Traced):
+        return _S.angle(vector)
+    callee = vector.recorder.function("_atan2", math.atan2)
+    return vector.recorder.emit(_S.angle(vector.value), f"{callee}({vector.name}.imag, {vector.name}.real)")
+
+
 _S = numerics.SCALAR
 
 #: The :mod:`numerics` namespace of a recording.
 TRACE = SimpleNamespace(
     scalar=True, pi=math.pi, float=_as(float), complex=_as(complex),
     **{name: _call(name, getattr(_S, name)) for name in
-       ("sqrt", "cos", "sin", "arctan", "radians", "degrees", "angle", "unit", "unit_degrees", "isfinite")},
-    exp=_call("exp", cmath.exp), maximum=_call("max", max),
+       ("sqrt", "cos", "sin", "arctan", "radians", "degrees", "unit_degrees", "isfinite")},
+    exp=_call("exp", cmath.exp), maximum=_maximum, unit=_unit, angle=_angle,
     where=_where, any=lambda value: value, all=lambda value: value, real=lambda value: value.real,
     imag=lambda value: value.imag, zeros_like=_zero_like, ones_like=lambda value: 1.0,
 )

@@ -1,0 +1,97 @@
+"""The recorded paths of one program, and how a call finds the one it takes.
+
+A program recorded by :mod:`yaseer.linkages.tracing` has one compiled path per
+way its inputs lead it (forces or not, each ``Q(n)``, loads that are zero or not,
+a crank at rest or turning, ...).  Trying the paths in turn until one's guards
+hold costs every failed path the work it did before its failing guard: a listing
+cycling through four choices pays several calls a call.  Most guards test the
+inputs alone (an input's value, whether it is zero, an array's length): their
+tests (:meth:`tracing.Recorder.keys`) are gathered into one small compiled
+function giving the call's *key*, and each key remembers the path that ran for
+it.  A call computes its key, runs that path, and falls back to trying every path
+only for a key not met before (or one whose path failed a guard on a computed
+value).  The key only chooses: every path still checks all its guards, so a
+wrong choice costs time, never a wrong number.
+"""
+
+from __future__ import annotations
+
+import re
+
+from yaseer.linkages.tracing import Retrace
+
+MEMORY = 4096  # keys remembered (a listing whose every call has a new key starts over)
+_ARRAY = re.compile(r"\b_a_(\w+)\b")
+
+
+def _no_key(machine) -> tuple:
+    return ()
+
+
+class Recordings:
+    """The compiled paths of one program (``len``: how many) and the key that picks one."""
+
+    def __init__(self) -> None:
+        self._paths: list = []
+        self._tests: list[str] = []
+        self._key = _no_key
+        self._chosen: dict = {}  # key -> the path that ran for it
+
+    def __len__(self) -> int:
+        return len(self._paths)
+
+    def add(self, run, tests: tuple[str, ...], machine) -> None:
+        """Add the compiled path ``run`` whose input guards test ``tests``; the
+        call on ``machine`` that was recorded takes it."""
+        self._paths.append(run)
+        new = [test for test in tests if test not in self._tests]
+        if new:
+            self._tests += new
+            self._key = _compile_key(self._tests)
+            self._chosen.clear()
+        key = self._key_of(machine)
+        if key is not None:
+            self._chosen[key] = run
+
+    def _key_of(self, machine):
+        try:
+            return self._key(machine)
+        except (LookupError, TypeError, ValueError):  # an input missing or not a number: no key, every path tried
+            return None
+
+    def run(self, machine) -> bool:
+        """Run the path ``machine``'s inputs take (it commits its outputs); False when
+        none of the paths holds for them."""
+        key = self._key_of(machine)
+        chosen = self._chosen.get(key)
+        if chosen is not None:
+            try:
+                chosen(machine)
+                return True
+            except Retrace:
+                pass
+        for path in self._paths:
+            if path is chosen:
+                continue
+            try:
+                path(machine)
+            except Retrace:
+                continue
+            if key is not None:
+                if len(self._chosen) >= MEMORY:
+                    self._chosen.clear()
+                self._chosen[key] = path
+            return True
+        return False
+
+
+def _compile_key(tests: list[str]):
+    """The function ``key(_M)``: the tuple of ``tests``' values (Python texts reading
+    ``_M``'s arrays as ``_a_X`` and its scalars)."""
+    arrays = dict.fromkeys(name for test in tests for name in _ARRAY.findall(test))
+    lines = ["_arrays = _M.arrays"] + [f"_a_{name} = _arrays[{name!r}]" for name in arrays]
+    lines.append(f"return ({''.join(test + ', ' for test in tests)})")
+    text = "def key(_M):\n" + "".join(f"    {line}\n" for line in lines)
+    namespace = {"__builtins__": {"float": float, "bool": bool, "len": len}}
+    exec(compile(text, "<recorded paths' key>", "exec"), namespace)
+    return namespace["key"]
