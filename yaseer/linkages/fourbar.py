@@ -14,6 +14,7 @@ function elsewhere; here the branch is given per position.
 
 from __future__ import annotations
 
+from yaseer.linkages.chunks import chunked
 from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.kinetostatics import ForceResult, Joint, Load, MassProps, analyse, loads_at_point, rigid_body
 from yaseer.linkages.numerics import math_for
@@ -96,6 +97,7 @@ class FourBar(CrankedLinkage):
         return analyse(bodies, joints, catalogue, loads, unknown, gravity)
 
 
+@chunked
 def fourbar(*args, method: str | None = None, **kwargs) -> FourBar:
     """Four-bar kinematics by ``method`` (default ``"closed"``); see
     :func:`fourbar_closed` for the arguments.

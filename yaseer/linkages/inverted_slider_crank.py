@@ -10,6 +10,7 @@ A' = L5' u + L5 T9' i u (one 2x2 solve), singular only where A reaches Bo.
 
 from __future__ import annotations
 
+from yaseer.linkages.chunks import chunked
 from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, loads_at_point, rigid_body
 from yaseer.linkages.numerics import math_for
@@ -80,6 +81,7 @@ class InvertedSliderCrank(CrankedLinkage):
         return analyse(bodies, joints, catalogue, loads, unknown, gravity)
 
 
+@chunked
 def inverted_slider_crank(*args, method: str | None = None, **kwargs) -> InvertedSliderCrank:
     """FISC kinematics by ``method`` (default ``"closed"``); see
     :func:`inverted_slider_crank_closed` for the arguments."""

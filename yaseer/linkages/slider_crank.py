@@ -12,6 +12,7 @@ Units: lengths in any unit, angles in degrees at the interface, rates in rad/s.
 
 from __future__ import annotations
 
+from yaseer.linkages.chunks import chunked
 from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.kinetostatics import Body, ForceResult, Joint, Load, MassProps, analyse, loads_at_point, rigid_body
 from yaseer.linkages.numerics import math_for
@@ -89,6 +90,7 @@ class SliderCrank(CrankedLinkage):
         return analyse(bodies, joints, catalogue, loads, unknown, gravity)
 
 
+@chunked
 def slider_crank(*args, method: str | None = None, **kwargs) -> SliderCrank:
     """Slider-crank kinematics by ``method`` (default ``"closed"``); see
     :func:`slider_crank_closed` for the arguments."""

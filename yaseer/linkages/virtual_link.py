@@ -21,6 +21,7 @@ from __future__ import annotations
 
 from collections import namedtuple  # not typing.NamedTuple: importing typing costs start-up
 
+from yaseer.linkages.chunks import chunked
 from yaseer.linkages.errors import AssemblyError, MethodDivisionByZero
 from yaseer.linkages.numerics import math_for
 from yaseer.linkages.planar import dot
@@ -35,6 +36,7 @@ class VirtualLink(namedtuple("VirtualLink", "angle_deg length angle_rate angle_a
     __slots__ = ()
 
 
+@chunked
 def virtual_link(x, y, vx=0.0, vy=0.0, ax=0.0, ay=0.0, *, method: str | None = None) -> VirtualLink:
     """The virtual link Ao->(x, y) by ``method`` (default ``"polar"``)."""
     return lookup("virtual_link", method)(x, y, vx, vy, ax, ay)
