@@ -58,6 +58,52 @@ def test_operations_round_the_exact_result_to_13_digits(name, exact):
         assert operation(float(a), float(b)) == round13(exact(a, b)), (a, b)
 
 
+def random_eighths(rng: random.Random) -> Fraction:
+    """Counts and multiples of 1/8 up to 1E10 in size (at most 13 digits; either sign,
+    zero included), and now and then a decimal that is neither: the operands of loops."""
+    if rng.random() < 0.1:
+        return random_decimal(rng)
+    size = rng.choice([10, 1000, 10**6, 10**9 - 1, 10**9, 10**10])
+    return Fraction(rng.randint(-8 * size, 8 * size), 8) if rng.random() < 0.5 else Fraction(rng.randint(-size, size))
+
+
+@pytest.mark.parametrize("name, exact", [
+    ("add", lambda a, b: a + b), ("subtract", lambda a, b: a - b),
+    ("multiply", lambda a, b: a * b), ("divide", lambda a, b: a / b),
+])
+def test_counts_and_fractions_of_eighths_round_as_any_other_decimal(name, exact):
+    # the operands for which the arithmetic takes its short cut (multiples of 1/8 below
+    # 1E9) and their neighbours: the same exactly rounded results
+    rng = random.Random(8)
+    operation = getattr(D, name)
+    for _ in range(4000):
+        a, b = random_eighths(rng), random_eighths(rng)
+        if b == 0 and name == "divide":
+            continue
+        expected = round13(exact(a, b))
+        assert operation(float(a), float(b)) == expected, (a, b)
+    for a, b in [(0.5, 0.25), (-0.125, 8.0), (999999999.875, 0.125), (1e9 - 1, 1.0), (3.0, 7.0), (1.0, 3.0)]:
+        assert operation(a, b) == round13(exact(Fraction(a), Fraction(b))), (a, b)
+
+
+def test_a_square_is_the_exact_square_rounded_once():
+    rng = random.Random(2)
+    for _ in range(2000):
+        a = random_eighths(rng)
+        assert D.power(float(a), 2.0) == round13(a * a), a
+
+
+def test_signed_zeros_are_the_decimal_modules():
+    for a, b in [(0.0, -0.0), (-0.0, -0.0), (-0.0, 0.0), (0.0, -5.0), (-0.0, 5.0), (2.0, -2.0)]:
+        for name in ("add", "subtract", "multiply", "divide"):
+            if name == "divide" and b == 0:
+                continue
+            got = getattr(D, name)(a, b)
+            decimal_result = float(getattr(D.CONTEXT, name)(D.dec(a), D.dec(b)))
+            assert math.copysign(1.0, got) == math.copysign(1.0, decimal_result) and got == decimal_result, \
+                (name, a, b)
+
+
 @pytest.mark.parametrize("function", ["sqrt", "exp", "log", "sin", "cos", "tan", "atn"])
 def test_functions_agree_with_mpmath_to_13_digits(function):
     mpmath.mp.dps = 40

@@ -15,7 +15,11 @@
    skipped with one line.  Reported: seconds and the ratio bwbasic / yaseer, both
    in process (yaseer's compile + run) and as whole processes (``python -m
    yaseer run``, which adds Python's start-up).
-3. Start-up: whole process to the first byte of output of a paper listing (wall time).
+3. ``--arith decimal`` (casio's 13-digit decimal arithmetic, yaseer/basic/arithmetic/
+   decimal_arith.py) against binary on the same classic programs, loop counts
+   multiplied by ``--decimal-scale``, in process (compile + run); needs no bwbasic.
+   Goal (issue 22): decimal at most 3x binary.
+4. Start-up: whole process to the first byte of output of a paper listing (wall time).
 
 Times are CPU seconds (user + system, best of N), which other jobs on a shared
 machine disturb far less than wall time.  Every ratio is measured in this one run;
@@ -41,13 +45,15 @@ EXTRA_CLASSIC = Path(os.environ.get("YASEER_CLASSIC", ROOT.parent / "shared" / "
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from classic_workloads import from_directory, in_repo, scaled  # noqa: E402
+from classic_workloads import BWBASIC_PEER, from_directory, in_repo, scaled  # noqa: E402
 from yaseer.basic.machine.machine import Machine  # noqa: E402
 
 TIGHT_LOOP = "10 FOR I=1 TO {n}: A=A+1: NEXT\n"
 TIGHT_LOOP_BW = "10 FOR I=1 TO {n}\n20 A=A+1\n30 NEXT I\n40 SYSTEM\n"
 MAX_SCALE = 20_000
 PROCESS_GOAL = 20.0  # issue 15: the whole process at least 20x faster than bwbasic
+DECIMAL_GOAL = 3.0  # issue 22: --arith decimal at most 3x binary on the classic programs
+BWBASIC_ONLY = set(BWBASIC_PEER.values())  # the forms written for bwbasic alone
 
 
 def cpu_seconds() -> float:
@@ -75,6 +81,24 @@ def yaseer_in_process(text: str, dialect: str = "casio") -> None:
     machine = Machine(screen=io.StringIO(), printer=io.StringIO(), dialect=dialect)
     machine.load(text)
     machine.run()
+
+
+def decimal_against_binary(scale: float, repeat: int) -> None:
+    """Print each classic program's time in casio with --arith decimal beside binary."""
+    from yaseer.basic.dialects.dialect import CASIO
+
+    decimal = CASIO.with_arithmetic("decimal")
+    print(f"\nclassic benchmarks in casio, loop counts x{scale:g}, in process: --arith decimal against binary")
+    print(f"{'program':8} {'binary s':>9} {'decimal s':>10} {'ratio':>7}  goal: at most {DECIMAL_GOAL:g}")
+    for workload in in_repo():
+        if workload.name in BWBASIC_ONLY:
+            continue
+        program = scaled(workload.text, scale)
+        t_binary = best_of(repeat, lambda: yaseer_in_process(program, "casio"))
+        t_decimal = best_of(repeat, lambda: yaseer_in_process(program, decimal))
+        ratio = t_decimal / t_binary
+        print(f"{workload.name:8} {t_binary:9.4f} {t_decimal:10.4f} {ratio:7.1f}  "
+              f"{'met' if ratio <= DECIMAL_GOAL else 'NOT met'}")
 
 
 def plain_python_while(n: int) -> float:
@@ -144,7 +168,13 @@ def main() -> int:
     parser.add_argument("--extra", type=Path, default=EXTRA_CLASSIC,
                         help="a directory of other copies of the classic programs (NAME.bas + bw_NAME.bas); "
                              "default $YASEER_CLASSIC or ../shared/bench/classic beside the checkout")
+    parser.add_argument("--decimal-scale", type=float, default=10.0,
+                        help="loop count factor of the classic programs for --arith decimal against binary")
+    parser.add_argument("--decimal-only", action="store_true", help="only --arith decimal against binary")
     args = parser.parse_args()
+    if args.decimal_only:
+        decimal_against_binary(args.decimal_scale, args.repeat)
+        return 0
     have_bwbasic = shutil.which("bwbasic") is not None
 
     n = 100_000
@@ -194,6 +224,8 @@ def main() -> int:
             print(f"{name:8} {factor:6.0f} {t_bw:10.3f} {t_y:9.4f} {t_bw / t_y:9.1f} {t_p:10.3f} {t_bw / t_p:11.1f}  {verdict}")
     else:
         print("bwbasic not found on PATH: the classic comparisons are skipped")
+
+    decimal_against_binary(args.decimal_scale, args.repeat)
 
     listing = ROOT / "listings" / "example1.bas"
     if listing.exists():

@@ -40,21 +40,45 @@ def _checked(operation, *args) -> float:
         raise BasicError("Overflow", OVERFLOW) from None
 
 
+# A multiple of 1/8 below 1E9 in size is exactly its own decimal (at most 9 + 3
+# digits) and exactly a float.  The sum or difference of two such numbers is another
+# (exact in both arithmetics), and so is a product or quotient that is again a multiple
+# of 1/8 below 1E9 (its binary value is then exact, so it is the decimal result):
+# loop counters, counts and halves take these few float operations instead of the
+# decimal module's conversions (about 20 times their cost).  The results are the
+# decimal arithmetic's to the last digit (at most 12 digits: also with DIGITS = 12).
+_SMALL = 1e9
+
+
 def add(a, b) -> float:
+    if -_SMALL < a < _SMALL and -_SMALL < b < _SMALL and not (a * 8.0 % 1.0 or b * 8.0 % 1.0):
+        return float(a + b)
     return _checked(CONTEXT.add, dec(a), dec(b))
 
 
 def subtract(a, b) -> float:
+    if -_SMALL < a < _SMALL and -_SMALL < b < _SMALL and not (a * 8.0 % 1.0 or b * 8.0 % 1.0):
+        return float(a - b)
     return _checked(CONTEXT.subtract, dec(a), dec(b))
 
 
 def multiply(a, b) -> float:
+    if -_SMALL < a < _SMALL and -_SMALL < b < _SMALL and not (a * 8.0 % 1.0 or b * 8.0 % 1.0):
+        product = a * b  # exact when it is below 1E9: the multiples of 1/64 below 1E9 are floats
+        if -_SMALL < product < _SMALL and not product * 8.0 % 1.0:
+            return float(product)
     return _checked(CONTEXT.multiply, dec(a), dec(b))
 
 
 def divide(a, b) -> float:
     if b == 0:
         raise BasicError("Division by zero", DIVISION_BY_ZERO)
+    if -_SMALL < a < _SMALL and -_SMALL < b < _SMALL and not (a * 8.0 % 1.0 or b * 8.0 % 1.0):
+        quotient = a / b
+        # quotient * b is exact (both multiples of 1/8, product near a, below 1E9):
+        # equal to a only when the quotient is exact
+        if -_SMALL < quotient < _SMALL and not quotient * 8.0 % 1.0 and quotient * b == a:
+            return float(quotient)
     return _checked(CONTEXT.divide, dec(a), dec(b))
 
 
@@ -67,6 +91,8 @@ def rounded(x) -> float:
 
 def power(a, b) -> float:
     """a ^ b: 0 ^ negative is Division by zero, negative ^ fraction Illegal function call."""
+    if b == 2:  # the exact square rounded once: the product a * a
+        return multiply(a, a)
     da, db = dec(a), dec(b)
     if da == 0 and db < 0:
         raise BasicError("Division by zero", DIVISION_BY_ZERO)
