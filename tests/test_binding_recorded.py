@@ -7,6 +7,7 @@ assembly failures, overflow, and inputs that move from one path to another."""
 from __future__ import annotations
 
 import io
+import math
 import random
 import sys
 from pathlib import Path
@@ -227,3 +228,23 @@ def test_a_recorded_call_never_enters_numpy_errstate(monkeypatch):
         m.array("T")[12] = 10.0 * call
         outcome(m, 2)
     assert len(entered) == 2  # the first call (plain) and the second (recorded while it ran)
+
+
+def test_the_compiled_recording_drops_only_unused_values_that_cannot_raise():
+    # a division, an abs and a call can raise (ZeroDivisionError, OverflowError, a domain
+    # error): kept even when unused, as the plain code would raise there; an unused
+    # product or part of a complex number is not computed
+    from yaseer.linkages.tracing import _registers, _without_dead_lines
+
+    lines = ["t0 = float(_a_L[1])", "t1 = t0 * 2.0", "t2 = t0 / t1", "t3 = abs(t0)", "t4 = _sqrt(t0)",
+             "t5 = t0 - 1.0", "t6 = t5.real", "t7 = (t0 if t0 > t5 else t5)", "_a_X[1] = t7"]
+    kept = _without_dead_lines(lines)
+    assert kept == ["t0 = float(_a_L[1])", "t1 = t0 * 2.0", "t2 = t0 / t1", "t3 = abs(t0)", "t4 = _sqrt(t0)",
+                    "t5 = t0 - 1.0", "t7 = (t0 if t0 > t5 else t5)", "_a_X[1] = t7"]
+    renamed = _registers(kept)
+    assert renamed[-1] == "_a_X[1] = " + renamed[-2].split(" = ")[0]  # the value written is the one computed
+    names = {line.split(" = ")[0] for line in renamed if not line.startswith("_a_")}
+    assert len(names) < 7  # variables taken again once their values are used no more
+    namespace = {"_a_L": [0.0, 4.0], "_a_X": [0.0, 0.0], "_sqrt": math.sqrt}
+    exec("\n".join(renamed), namespace)
+    assert namespace["_a_X"][1] == 4.0

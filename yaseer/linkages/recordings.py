@@ -33,7 +33,8 @@ class Recordings:
 
     def __init__(self) -> None:
         self._paths: list = []
-        self._tests: list[str] = []
+        self._tests: list[str] = []  # every input guard's test, of every path
+        self._outcomes: list[tuple] = []  # per path: the tests' values for the call recorded
         self._key = _no_key
         self._chosen: dict = {}  # key -> the path that ran for it
 
@@ -42,16 +43,31 @@ class Recordings:
 
     def add(self, run, tests: tuple[str, ...], machine) -> None:
         """Add the compiled path ``run`` whose input guards test ``tests``; the
-        call on ``machine`` that was recorded takes it."""
+        call on ``machine`` that was recorded takes it.
+
+        The key holds only the tests on which the paths differ (a test every path
+        passes alike chooses nothing and would cost every call its reading)."""
         self._paths.append(run)
-        new = [test for test in tests if test not in self._tests]
-        if new:
-            self._tests += new
-            self._key = _compile_key(self._tests)
-            self._chosen.clear()
-        key = self._key_of(machine)
-        if key is not None:
-            self._chosen[key] = run
+        self._tests += [test for test in tests if test not in self._tests]
+        every = _compile_key(self._tests)
+        self._outcomes = [self._outcome(every, machine if path is run else None, k)
+                          for k, path in enumerate(self._paths)]
+        differing = [k for k in range(len(self._tests))
+                     if len({outcome[k] if k < len(outcome) else None for outcome in self._outcomes}) > 1]
+        self._key = _compile_key([self._tests[k] for k in differing]) if differing else _no_key
+        self._chosen.clear()
+        for path, outcome in zip(self._paths, self._outcomes):
+            self._chosen.setdefault(tuple(outcome[k] if k < len(outcome) else None for k in differing), path)
+
+    def _outcome(self, every, machine, index: int) -> tuple:
+        """The tests' values for path ``index``: computed on ``machine`` for the path
+        just recorded, else those known (a test added since is unknown: None)."""
+        if machine is None:
+            return self._outcomes[index]
+        try:
+            return every(machine)
+        except (LookupError, TypeError, ValueError):
+            return ()
 
     def _key_of(self, machine):
         try:

@@ -117,11 +117,15 @@ class Recorder:
         """The record as a function ``run(_M)`` (``_M``: what the recorded lines
         read their inputs from): the recorded lines, then ``epilogue``.
 
-        The lines are compiled as recorded but for two rewritings that keep every
-        value and every guard: the reads of one array are made together where the
-        first of them was (:func:`_batched_reads`), and runs of finiteness guards
-        become one guard (:func:`_batched_finite_guards`)."""
+        The lines are compiled as recorded but for rewritings that keep every value
+        and every guard: the reads of one array are made together where the first
+        of them was (:func:`_batched_reads`), runs of finiteness guards become one
+        guard (:func:`_batched_finite_guards`), values nothing uses are not computed
+        where computing them could raise nothing (:func:`_without_dead_lines`), and
+        the values share a few variables (:func:`_registers`: a frame of hundreds of
+        locals costs every call its clearing)."""
         lines = _batched_finite_guards(_batched_reads([str(line) for line in self.lines + epilogue], self.names))
+        lines = _registers(_without_dead_lines(lines))
         text = "def run(_M):\n" + "".join(f"    {line}\n" for line in lines)
         namespace = dict(self.names, _all=all, _map=map, _float=float,
                          __builtins__={"float": float, "complex": complex, "len": len, "abs": abs,
@@ -159,6 +163,69 @@ def _batched_reads(lines: list[str], names: dict) -> list[str]:
         getter = f"_get_{'_'.join(map(str, indexes))}"
         names.setdefault(getter, operator.itemgetter(*indexes))
         out.append(f"{', '.join(name for name, _ in elements)} = _map(_float, {getter}({found.group(2)}))")
+    return out
+
+
+_NAME = re.compile(r"\bt\d+\b")
+_DEFINED = re.compile(r"^((?:t\d+, )*t\d+) = (.*)$")
+_OPERAND = r"(?:t\d+|-?[\d.]+(?:e[-+]?\d+)?j?|\(-?[\d.]+[-+][\d.]+j\))"
+# Expressions that raise nothing whatever the numbers (no division, no call, no abs):
+# + - * and comparisons of two operands, a negation, a part of a complex number, a choice.
+_HARMLESS = re.compile(rf"^(?:{_OPERAND} (?:[-+*]|[<>]=?|[=!]=) {_OPERAND}|-t\d+|t\d+\.(?:real|imag)"
+                       rf"|\({_OPERAND} if {_OPERAND}(?: [<>] {_OPERAND})? else {_OPERAND}\))$")
+
+
+def _without_dead_lines(lines: list[str]) -> list[str]:
+    """``lines`` without the harmless lines (:data:`_HARMLESS`) whose value nothing uses."""
+    while True:
+        used: dict[str, int] = {}
+        for line in lines:
+            found = _DEFINED.match(line)
+            for name in _NAME.findall(found.group(2) if found else line):
+                used[name] = used.get(name, 0) + 1
+        kept = []
+        for line in lines:
+            found = _DEFINED.match(line)
+            if found and "," not in found.group(1) and found.group(1) not in used and _HARMLESS.match(found.group(2)):
+                continue
+            kept.append(line)
+        if len(kept) == len(lines):
+            return lines
+        lines = kept
+
+
+def _registers(lines: list[str]) -> list[str]:
+    """``lines`` with the recorded values ``tN`` renamed to as few variables ``vK`` as
+    they need: a variable is taken again once the value it held is used no more (the
+    right-hand side of a line is evaluated before its names are bound)."""
+    last: dict[str, int] = {}
+    for number, line in enumerate(lines):
+        for name in _NAME.findall(line):
+            last[name] = number
+    free: list[str] = []
+    count = 0
+    register: dict[str, str] = {}
+    out = []
+    for number, line in enumerate(lines):
+        found = _DEFINED.match(line)
+        targets = found.group(1).split(", ") if found else []
+        used = _NAME.findall(found.group(2) if found else line)
+        text = _NAME.sub(lambda m: register[m.group(0)], found.group(2) if found else line)
+        for name in dict.fromkeys(used):
+            if last[name] == number and name not in targets:
+                free.append(register[name])
+        for name in targets:
+            if free:
+                register[name] = free.pop()
+            else:
+                register[name] = f"v{count}"
+                count += 1
+        if found:
+            text = f"{', '.join(register[name] for name in targets)} = {text}"
+        for name in targets:
+            if last[name] == number:  # never used: its variable is free again at once
+                free.append(register[name])
+        out.append(text)
     return out
 
 
@@ -211,6 +278,8 @@ def _binary(symbol: str, operation):
             value = operation(self.value, _value(other))
             if type(other) in (int, float) and (symbol, other) in _IDENTITIES:
                 return self
+            if symbol == "*" and type(other) is float and other == -1.0 and type(self.value) is float:
+                return -self  # x * -1.0 is -x for a float (not for a complex: its zero parts' signs)
             if symbol == "**" and type(other) in (int, float) and other == 2:
                 return self.recorder.emit(value, f"{self.name} * {self.name}")
             operand = self.recorder.operand(other)
@@ -225,6 +294,8 @@ def _binary(symbol: str, operation):
             value = operation(other, self.value)
             if type(other) in (int, float) and (symbol, other) in _LEFT_IDENTITIES:
                 return self
+            if symbol == "*" and type(other) is float and other == -1.0 and type(self.value) is float:
+                return -self
             return self.recorder.emit(value, f"{self.recorder.operand(other)} {symbol} {self.name}")
         return NotImplemented
 
@@ -236,11 +307,12 @@ class Traced:
     ``source``: the Python text computing it from the inputs alone, where it is an
     input (``leaf``) or an input compared with a literal or another input (else None)."""
 
-    __slots__ = ("recorder", "value", "name", "source", "leaf")
+    __slots__ = ("recorder", "value", "name", "source", "leaf", "negated")
     math_namespace: SimpleNamespace  # numerics.math_for picks it (set below)
 
     def __init__(self, recorder: Recorder, value, name: str, source: str | None = None):
         self.recorder, self.value, self.name, self.source, self.leaf = recorder, value, name, source, False
+        self.negated = None  # the value this one is the negation of (-(-x) is recorded as x)
 
     __add__, __radd__ = _binary("+", lambda a, b: a + b)
     __sub__, __rsub__ = _binary("-", lambda a, b: a - b)
@@ -259,7 +331,12 @@ class Traced:
     __hash__ = None  # type: ignore[assignment]  # never a dictionary key
 
     def __neg__(self):
-        return self.recorder.emit(-self.value, f"-{self.name}")
+        if self.negated is not None:  # -(-x) is x exactly
+            return self.negated
+        negative = self.recorder.emit(-self.value, f"-{self.name}")
+        if negative.negated is None and negative is not self:
+            negative.negated = self
+        return negative
 
     def __pos__(self):
         return self
