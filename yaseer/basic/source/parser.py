@@ -1,8 +1,9 @@
-"""Tokens -> AST: the lark LALR parser over ``grammar.lark``, built once and cached.
+"""Tokens -> AST: an LALR(1) parser over ``grammar.lark``.
 
-The scanner's token list is fed to lark through a pass-through custom lexer;
-a :class:`lark.Transformer` applied during the parse builds ``syntax_tree``
-nodes directly.  :func:`parse_line` is the one entry point: it returns a
+The tables are ``parse_tables.py``, computed from the grammar by lark when the grammar
+changes (tools/make_parse_tables.py), so no run imports lark or reads a table cache;
+the driver here shifts the scanner's tokens and, at each reduction, calls the method
+of :class:`_ToAst` that builds the ``syntax_tree`` node.  :func:`parse_line` is the one entry point: it returns a
 :class:`~yaseer.basic.source.syntax_tree.Line` whose ``error`` holds the
 ``BasicError`` when the text is not a valid line (the machine raises it when
 the line is reached, as the period interpreters did).
@@ -10,51 +11,15 @@ the line is reached, as the period interpreters did).
 
 from __future__ import annotations
 
-import functools
-import sys
-from pathlib import Path
+from itertools import chain
 
-
-def _import_lark_without_regex():
-    """Import lark without the third-party ``regex`` module it would load (~35 ms of start-up).
-
-    We never ask lark for ``regex=True``; the block is lifted again at once.
-    """
-    if "regex" in sys.modules or "lark" in sys.modules:
-        return
-    sys.modules["regex"] = None  # makes ``import regex`` fail inside lark.utils
-    try:
-        import lark  # noqa: F401
-    finally:
-        del sys.modules["regex"]
-
-
-_import_lark_without_regex()
-
-from lark import Lark, Token, Transformer  # noqa: E402
-from lark.exceptions import LarkError, UnexpectedInput  # noqa: E402
-from lark.lexer import Lexer  # noqa: E402
 
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.dialects.dialect import CASIO, Dialect
 from yaseer.basic.errors import BasicError, MISSING_OPERAND, SYNTAX_ERROR
+from yaseer.basic.source.parse_tables import ACTIONS, END, RULES, START
 from yaseer.basic.dialects.reserved import UNSUPPORTED, mark_unsupported, unsupported_message
-from yaseer.basic.source.scanner import tokenize
-
-GRAMMAR_PATH = Path(__file__).with_name("grammar.lark")
-
-
-class _TokenListLexer(Lexer):
-    """Hands lark the scanner's ready-made tokens."""
-
-    def __init__(self, lexer_conf):  # noqa: D401 - lark's interface
-        pass
-
-    def lex(self, data, *_):
-        tokens = getattr(data, "text", data)
-        if hasattr(tokens, "text"):  # lark >= 1.2 wraps input in a TextSlice
-            tokens = tokens.text
-        return iter(tokens)
+from yaseer.basic.source.scanner import Token, tokenize
 
 
 def _number_value(token: Token):
@@ -98,8 +63,8 @@ def _if(condition, then, otherwise) -> ast.If:
     return ast.If(condition, then, otherwise, unreachable)
 
 
-class _ToAst(Transformer):
-    """lark tree -> syntax_tree nodes (called bottom-up during the parse)."""
+class _ToAst:
+    """A rule's kept children -> its syntax_tree node (called bottom-up, at each reduction)."""
 
     # -- structure
     def start(self, c):
@@ -397,15 +362,87 @@ class _ToAst(Transformer):
 
 
 
-@functools.lru_cache(maxsize=1)
-def _parser() -> Lark:
-    """The LALR parser (built once per process)."""
-    options = dict(parser="lalr", lexer=_TokenListLexer, transformer=_ToAst(), maybe_placeholders=False)
-    grammar = GRAMMAR_PATH.read_text()
-    try:  # lark keeps the LALR tables in a temp-dir cache keyed by the grammar's hash
-        return Lark(grammar, cache=True, **options)
-    except (OSError, ValueError, TypeError):
-        return Lark(grammar, **options)
+class GrammarError(Exception):
+    """The grammar refuses ``token`` (type ``$END``: the statements ended early);
+    ``expected``: the terminals it would have taken there."""
+
+    def __init__(self, token: Token, expected: frozenset):
+        super().__init__(f"unexpected {token.type}")
+        self.token, self.expected = token, expected
+
+
+def _reduction(size: int, method, keep, single):
+    """The function that turns a rule's ``size`` stack values into its value: the kept
+    children (``keep``: ``(index, splice)`` pairs, None for all), one child standing for a
+    ``?rule`` (``single``), else ``method(children)`` (None: the list, for the parent to splice)."""
+    if keep is None and not single:
+        return method or list
+    method = method or (lambda children: children)
+
+    def reduce(children: list):
+        if keep is not None:
+            kept: list = []
+            for i, splice in keep:
+                if not splice:
+                    kept.append(children[i])
+                elif kept:
+                    kept += children[i]
+                else:  # left recursion: the spliced list is fresh, so it becomes the kept list
+                    kept = children[i]
+            children = kept
+        if single and len(children) == 1:
+            return children[0]
+        return method(children)
+
+    return reduce
+
+
+def _missing(rule: str):
+    def missing(children: list):
+        raise AssertionError(f"grammar rule {rule} has no _ToAst method")
+    return missing
+
+
+def _reductions() -> tuple:
+    """``(name, size, reduce)`` per grammar rule, their methods bound to one _ToAst
+    (a ``?rule`` needs one only where it can keep more than one child)."""
+    builder = _ToAst()
+    return tuple((name, size, _reduction(size, callback and getattr(builder, callback, None) or
+                                         (callback and _missing(callback)), keep, single))
+                 for name, size, callback, keep, single in RULES)
+
+
+_REDUCTIONS = _reductions()
+_END_OF_LINE = Token("$END", "")
+
+
+def _parse(tokens: list) -> list:
+    """The statements of a token list (LALR(1): shift, or reduce and go to), or GrammarError."""
+    actions, reductions = ACTIONS, _REDUCTIONS
+    states: list = [START]
+    values: list = []
+    for token in chain(tokens, (_END_OF_LINE,)):
+        kind = token.type
+        while True:
+            code = actions[states[-1]].get(kind)
+            if code is None:
+                raise GrammarError(token, frozenset(s for s in actions[states[-1]] if s.isupper()))
+            if code >= 0:
+                states.append(code)
+                values.append(token)
+                break
+            name, size, reduce = reductions[-1 - code]
+            if size:
+                children = values[-size:]
+                del states[-size:], values[-size:]
+            else:
+                children = []
+            values.append(reduce(children))
+            state = actions[states[-1]][name]
+            states.append(state)
+            if state == END:
+                return values[-1]
+    raise AssertionError("the end of the line was shifted")  # the tables never shift $END
 
 
 def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
@@ -415,13 +452,8 @@ def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
         return []
     _check_nesting(tokens)
     try:
-        return _parser().parse(tokens)
-    except BasicError:
-        raise
-    except (UnexpectedInput, LarkError) as exc:
-        inner = getattr(exc, "orig_exc", None)
-        if isinstance(inner, BasicError):
-            raise inner from None
+        return _parse(tokens)
+    except GrammarError as exc:
         raise _grammar_error(exc, dialect) from None
 
 
@@ -431,15 +463,13 @@ _OPERAND_STARTS = frozenset(("NAME", "STRNAME", "_LPAR"))
 _STATEMENT_ENDS = frozenset(("$END", "_COLON", "ELSE"))
 
 
-def _grammar_error(exc, dialect: Dialect) -> BasicError:
+def _grammar_error(exc: GrammarError, dialect: Dialect) -> BasicError:
     """The BASIC error for a token list the grammar refuses (``Missing operand`` only
     where the dialect reports errors when reached, as GW-BASIC)."""
-    token = getattr(exc, "token", None)
-    kind = getattr(token, "type", "$END")
+    kind = exc.token.type
     if kind == UNSUPPORTED:
-        return BasicError(unsupported_message(token.value), SYNTAX_ERROR)
-    expected = set(getattr(exc, "expected", ()) or ())
-    if dialect.errors_when_reached and kind in _STATEMENT_ENDS and expected & _OPERAND_STARTS:
+        return BasicError(unsupported_message(exc.token.value), SYNTAX_ERROR)
+    if dialect.errors_when_reached and kind in _STATEMENT_ENDS and exc.expected & _OPERAND_STARTS:
         return BasicError("Missing operand", MISSING_OPERAND)
     return BasicError("Syntax error", SYNTAX_ERROR)
 
@@ -456,8 +486,8 @@ def _statements_before_error(tokens: list) -> tuple[list, int]:
     bad_start = 0
     for k in colons:
         try:
-            best = _parser().parse(tokens[:k])
-        except (BasicError, UnexpectedInput, LarkError):
+            best = _parse(tokens[:k])
+        except (BasicError, GrammarError):
             break
         bad_start = k + 1
     return best, bad_start
@@ -476,10 +506,9 @@ def _statements_after_error(tokens: list, bad_start: int, dialect: Dialect) -> l
             if not rest:
                 return []
             try:
-                return _parser().parse(rest)
-            except (UnexpectedInput, LarkError) as exc:
-                inner = getattr(exc, "orig_exc", None)
-                err = inner if isinstance(inner, BasicError) else _grammar_error(exc, dialect)
+                return _parse(rest)
+            except GrammarError as exc:
+                err = _grammar_error(exc, dialect)
             except BasicError as exc:
                 err = exc
             return _recover_tokens(rest, err, dialect) or [err]

@@ -359,15 +359,30 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
             raise _syntax_error()
 
 
+class Token:
+    """One lexeme as the parser takes it: ``type``, its terminal's name in grammar.lark, and
+    ``value``, its text (a number: its value, or ``(value, type)`` where the dialect types it)."""
+
+    __slots__ = ("type", "value")
+
+    def __init__(self, type: str, value) -> None:  # noqa: A002 - the grammar's word for it
+        self.type, self.value = type, value
+
+    def update(self, type: str | None = None, value=None) -> "Token":  # noqa: A002
+        """A copy with another type or value."""
+        return Token(self.type if type is None else type, self.value if value is None else value)
+
+    def __repr__(self) -> str:
+        return f"Token({self.type!r}, {self.value!r})"
+
+
 def tokenize(text: str, dialect: Dialect = CASIO) -> list:
     """The tokens of one line's statements (the text after its line number), as ``dialect`` reads them.
 
     A ``'`` remark after a statement is dropped (no colon is needed before it).
     Raises ``BasicError("Syntax error")`` for a character no token can start with.
     """
-    from lark import Token  # here, not at the top: loading a listing (split_lines) needs no lark
-
-    tokens: list = []  # lark Tokens
+    tokens: list = []
     for kind, value, start, _ in _lexemes(text, dialect):
         if kind == "REMARK" and tokens and text[start] == "'":
             break

@@ -7,7 +7,7 @@ everything else is a number (``"n"``).
 
 from __future__ import annotations
 
-from typing import Union
+TYPE_CHECKING = False  # type checkers read the aliases below; a run does not import typing for them
 
 
 class Node:
@@ -125,8 +125,11 @@ class SysVar:
     name: str  # "ERR", "ERL"
 
 
-Expr = Union[Num, Str, Var, Elem, Unary, Binary, Call, FnCall, SysVar]
-LValue = Union[Var, Elem]
+if TYPE_CHECKING:
+    from typing import Union
+
+    Expr = Union[Num, Str, Var, Elem, Unary, Binary, Call, FnCall, SysVar]
+    LValue = Union[Var, Elem]
 
 STRING_FUNCTIONS = frozenset({"STR$", "CHR$", "LEFT$", "RIGHT$", "MID$"})
 
