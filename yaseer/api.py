@@ -136,13 +136,17 @@ class Result:
         return listing_title(self.listing, self.name)
 
     def row_groups(self):
-        """The printed rows by shape (:class:`yaseer.table.RowGroup`), each with its column names."""
+        """The printed rows by shape (:class:`yaseer.table.RowGroup`), each with its column names.
+
+        The last PRINT's expressions can name only the main table (the shape with most
+        rows), as the plot's panels are named."""
         from yaseer.describe import column_names
         from yaseer.table import group_rows
 
         groups = group_rows(self.lines)
+        main = max(groups, key=lambda g: len(g.rows)) if groups else None
         for group in groups:
-            group.names = column_names(self.name, group.width, group.names)
+            group.names = column_names(self.name, group.width, group.names, self.listing if group is main else "")
         return groups
 
     def _main_group(self):
@@ -169,17 +173,12 @@ class Result:
     def look(self, size: tuple[int, int] | None = None, title: str | None = None):
         """How this run's frames look (:class:`yaseer.animation.Look`): title, column names, unit, size.
 
-        The columns are named as in :attr:`columns`, else by the expressions of
-        the listing's last PRINT when they are as many as the main table's.
+        The columns are named as in :attr:`columns` (as ``rows.names`` and the plot name them).
         """
         from yaseer.animation.draw import DEFAULT_SIZE, Look
-        from yaseer.describe import length_unit, printed_expressions
+        from yaseer.describe import length_unit
 
         names = self.columns
-        group = self._main_group()
-        if names is None and group is not None:  # else the expressions of the last PRINT, if they fit
-            expressions = printed_expressions(self.listing)
-            names = tuple(expressions) if len(expressions) == group.width else None
         return Look(title=self.title if title is None else title, names=names,
                     unit=length_unit(self.name), size=size or DEFAULT_SIZE)
 

@@ -155,12 +155,18 @@ def listing_title(listing_text: str, name: str | None) -> str:
     return name or "listing"
 
 
-def column_names(name: str | None, width: int, header: Sequence[str] | None) -> tuple[str, ...] | None:
-    """Names of a ``width``-column table: the paper's meanings for its examples, else ``header``."""
+def column_names(name: str | None, width: int, header: Sequence[str] | None,
+                 listing_text: str = "") -> tuple[str, ...] | None:
+    """Names of a ``width``-column table, the one naming that the rows, the plot and the animation share:
+    the paper's meanings and units for its examples, else the listing's printed ``header``, else the
+    expressions of its last PRINT (``X(2)``, ``V(3)``) when they are as many as the columns, else None."""
     known = PAPER_EXAMPLES.get((name or "").lower())
     if known is not None and len(known.columns) == width - 1:
         return tuple(q.axis_label() for q in (known.x, *known.columns))
-    return tuple(header) if header is not None else None
+    if header is not None:
+        return tuple(header)
+    expressions = printed_expressions(listing_text) if listing_text else []
+    return tuple(expressions) if len(expressions) == width else None
 
 
 # The length unit each paper example works in (docs: Examples 1 and 4 mm, 3 cm, 2 and 5 m).

@@ -5,8 +5,8 @@
     10 FOR QQ = 0 TO 90 STEP 30: X(10) = COS(QQ): Y(10) = SIN(QQ): GOSUB PROG 5
     20 PRINT QQ; T; L: NEXT QQ
 
-The cell runs through :func:`yaseer.run`.  Its screen is the cell's output as
-printed; an error is one red line (no traceback); ``--plot`` shows
+The cell runs through :func:`yaseer.run`.  Its screen is the cell's output, shown
+as the program prints it; an error is one red line (no traceback); ``--plot`` shows
 ``result.plot()`` inline, ``--animate`` the mechanism as a self-contained HTML
 player.  The :class:`yaseer.api.Result` is stored in the notebook as ``_basic``
 (or the name given with ``-o``) for the next cells: ``_basic.rows``,
@@ -16,10 +16,23 @@ player.  The :class:`yaseer.api.Result` is stored in the notebook as ``_basic``
 from __future__ import annotations
 
 import html
+import sys
 from pathlib import Path
 
 from IPython.core.magic import Magics, line_cell_magic, magics_class
-from IPython.core.magic_arguments import argument, magic_arguments, parse_argstring
+from IPython.core.magic_arguments import argument, magic_arguments
+
+
+def _words(line: str) -> list[str]:
+    """The magic's line split as a shell splits it (quotes removed: ``--input "3, 4"`` gives ``3, 4``),
+    except that a backslash stays itself, so ``--input 3\\n4`` keeps its ``\\n`` for the line break."""
+    import shlex
+
+    lexer = shlex.shlex(line, posix=True)
+    lexer.whitespace_split = True
+    lexer.escape = ""
+    lexer.commenters = ""
+    return list(lexer)
 
 
 def _pair(text: str) -> tuple[int, str]:
@@ -54,7 +67,7 @@ class BasicMagics(Magics):
         from yaseer.animation.draw import parse_size
 
         try:
-            args = parse_argstring(self.basic, line)
+            args = self.basic.parser.parse_args(_words(line))
             methods = dict(_pair(text) for text in args.method)
             areas = dict(_pair(text) for text in args.prog)
             size = parse_size(args.size)
@@ -75,9 +88,9 @@ def run_magic(listing, args, methods: dict, areas: dict, shell):
 
     if isinstance(listing, str) and "\n" not in listing:
         listing += "\n"  # a one-line cell is program text, never a file name
-    try:
+    try:  # the screen streams into the cell as the program prints (the kernel sends it every moment)
         result = run(listing, dialect=args.dialect, method=methods, prog=areas, angle=args.angle,
-                     input=args.input.replace("\\n", "\n") if args.input else None)
+                     input=args.input.replace("\\n", "\n") if args.input else None, screen=sys.stdout)
     except ValueError as error:  # an unknown dialect
         from IPython.core.error import UsageError
 
@@ -89,11 +102,12 @@ def run_magic(listing, args, methods: dict, areas: dict, shell):
 
 def show(result, plot: bool = False, animate: bool = False, fps: float = 6.0, size=(960, 540),
          max_frames: int = 120) -> None:
-    """The screen as printed, an error as one red line, then the plot and the player if asked for."""
+    """After the screen (printed as the program ran): an error as one red line, then the plot and the player."""
     from IPython.display import HTML, Image, display
 
-    if result.text:
-        print(result.text, end="" if result.text.endswith("\n") else "\n")
+    if result.text and not result.text.endswith("\n"):
+        print()  # end the line the program left open
+    sys.stdout.flush()  # the screen before the red line, the plot and the player
     if result.error is not None:
         _red_line(result.error)
     if plot:

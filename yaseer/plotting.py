@@ -18,7 +18,7 @@ from collections import Counter
 from pathlib import Path
 from typing import Sequence
 
-from yaseer.describe import DEG, PAPER_EXAMPLES, FigureSpec, Quantity, printed_expressions  # noqa: F401
+from yaseer.describe import DEG, PAPER_EXAMPLES, FigureSpec, Quantity, column_names, printed_expressions  # noqa: F401
 
 
 def numeric_rows(csv_text: str) -> list[list[float]]:
@@ -56,10 +56,8 @@ def spec_for(name: str | None, listing_text: str, n_columns: int, title: str | N
     known = PAPER_EXAMPLES.get((name or "").lower())
     if known is not None and len(known.columns) == n_columns - 1:
         return known
-    names = list(header) if header is not None and len(header) == n_columns else \
-        printed_expressions(listing_text)
-    if len(names) != n_columns:
-        names = [f"column {k + 1}" for k in range(n_columns)]
+    names = column_names(None, n_columns, header if header is not None and len(header) == n_columns else None,
+                         listing_text) or [f"column {k + 1}" for k in range(n_columns)]
     return FigureSpec(title or name or "listing", Quantity(names[0]), tuple(Quantity(e) for e in names[1:]))
 
 
