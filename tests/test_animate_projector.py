@@ -118,8 +118,9 @@ def test_the_command_takes_size_and_refuses_a_bad_one(tmp_path):
 def test_unnamed_columns_are_shown_under_the_expressions_of_the_last_print():
     result = yaseer.run("10 FOR Q = 0 TO 90 STEP 45: X(10) = COS(Q): Y(10) = SIN(Q): GOSUB PROG 5\n"
                         "20 PRINT Q; T; L * 2: NEXT Q\n")
-    assert result.columns is None  # no header printed
-    assert result.look().names == ("Q", "T", "L * 2")
+    # No header printed: the rows, the plot and the frames all name the columns by the PRINT's expressions.
+    assert result.columns == result.rows.names == result.look().names == ("Q", "T", "L * 2")
+    assert [ax.get_ylabel() for ax in result.plot().axes] == ["T", "L * 2"]
     scene = build_scene(result.frames)
     figure, ax = make_figure(scene, result.look())
     from yaseer.animation import draw_moving
