@@ -10,7 +10,7 @@ as the program prints it; an error is one red line (no traceback); ``--plot`` sh
 ``result.plot()`` inline, ``--animate`` the mechanism as a self-contained HTML
 player.  The :class:`yaseer.api.Result` is stored in the notebook as ``_basic``
 (or the name given with ``-o``) for the next cells: ``_basic.rows``,
-``_basic.error``...  Needs IPython (``pip install 'yaseer[jupyter]'``).
+``_basic.error``...  Needs IPython (``pip install -e '.[jupyter]'`` in the repository: the README's *Teaching with yaseer*).
 """
 
 from __future__ import annotations
