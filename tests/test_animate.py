@@ -222,7 +222,7 @@ def test_render_gif_html_and_png(tmp_path):
     render(frames, png, frame_number=2)
     with Image.open(png) as image:
         assert image.size[0] > 100
-    with pytest.raises(AnimationError, match="Frame 9 does not exist"):
+    with pytest.raises(AnimationError, match=r"Frame 9 does not exist: the run has 6 frames, numbered from 0 to 5$"):
         render(frames, tmp_path / "x.png", frame_number=9)
     with pytest.raises(AnimationError, match="Unknown animation format"):
         render(frames, tmp_path / "x.avi")

@@ -353,7 +353,9 @@ class Session:
         write = write or self.write
         first, last = parse_range(argument)
         if not self.program and self.area in LIBRARY_AREAS:
-            write(f"PROG {self.area}: library program (Python)\n")
+            from yaseer.library_text import LIBRARY_TEXT
+
+            write(LIBRARY_TEXT[self.area] + "(typed lines replace it for this session; NEW brings it back)\n")
             return
         for number in lines_in_range(self.program, first, last):
             write(self.listed(number) + "\n")
@@ -626,7 +628,7 @@ class MachineEngine:
     def direct(self, statement: str, areas: dict[int, Program]) -> None:
         """Execute one direct-mode statement (a GOTO in it runs the typed program)."""
         self.sync(areas)
-        self._finish(self._guard(lambda: self.machine.execute_direct(statement)))
+        self._finish(self._guard(lambda: self.machine.execute_direct(statement)), direct=True)
 
     def sync(self, areas: dict[int, Program]) -> None:
         """Give the machine every typed area whose program it does not have yet.
@@ -644,9 +646,12 @@ class MachineEngine:
 
                 binding.install(machine)
 
-    def _finish(self, outcome: str) -> None:
+    def _finish(self, outcome: str, direct: bool = False) -> None:
         if outcome == "stop":
-            raise BasicError("Break", BREAK, line=self.machine.line)
+            line = self.machine.line
+            if direct and not line and 0 not in (self.machine.programs.get(0) or {}):
+                line = None  # a STOP typed without a line number: a plain "Break", as GW-BASIC prints it
+            raise BasicError("Break", BREAK, line=line)
 
     def _guard(self, action: Callable[[], str]) -> str:
         """Run ``action``; a line left open (``PRINT 1;``, TRON's ``[30]``) is ended

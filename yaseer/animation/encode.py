@@ -46,7 +46,9 @@ def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0
     check_size(look.size)
     scene = build_scene(frames)
     if suffix == ".png" and not 0 <= frame_number < len(scene.frames):
-        raise AnimationError(f"Frame {frame_number} does not exist: the run has {len(scene.frames)}")
+        count = len(scene.frames)
+        raise AnimationError(f"Frame {frame_number} does not exist: the run has {count} frames, "
+                             f"numbered from 0 to {count - 1}")
     if suffix == ".mp4" and ffmpeg_program() is None:
         raise AnimationError("Writing .mp4 needs ffmpeg, which is not installed here; use .gif or .html")
     if suffix == ".png":
