@@ -88,7 +88,10 @@ def test_the_third_command_opens_the_notebook_in_the_browser(tmp_path):
     command = shlex.split(README_COMMANDS[2]) + [f"--port={port}", "--ServerApp.port_retries=0"]
     if os.geteuid() == 0:  # Jupyter refuses root unless told; a teacher's account is not root
         command.append("--allow-root")
-    server = subprocess.Popen(command, cwd=ROOT, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+    # The class's copy of the notebook: Jupyter keeps checkpoints beside the notebook it opens.
+    (tmp_path / "clone" / "notebooks").mkdir(parents=True)
+    shutil.copyfile(ROOT / "notebooks" / "classroom.ipynb", tmp_path / "clone" / "notebooks" / "classroom.ipynb")
+    server = subprocess.Popen(command, cwd=tmp_path / "clone", env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                               text=True, start_new_session=True)
     try:
         deadline = time.monotonic() + 240
