@@ -58,7 +58,7 @@ def runs_of(values: list[float], keep) -> list[list[float]]:
 def seed004_listing() -> str:
     """The README's ``%%basic`` cell: seed 004's change-point four-bar, tracked through its change point."""
     readme = (ROOT / "README.md").read_text()
-    cell = re.search(r"%%basic[^\n]*\n(.*?)```", readme, re.S)
+    cell = re.search(r"```\n%%basic[^\n]*\n(.*?)```", readme, re.S)
     return cell[1]
 
 
