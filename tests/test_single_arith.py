@@ -253,6 +253,49 @@ def test_the_inline_sum_of_the_compiled_code_is_the_helpers():
     assert run_gw(text).split() == ["-1", "0"] * len(values)
 
 
+COMPILED = {  # an expression of singles A! and B!, and what the helpers make of it
+    "A!*B!": lambda a, b: sa.multiply(a, b),
+    "A!/B!": lambda a, b: sa.divide(a, b),
+    "A!+B!": lambda a, b: sa.add(a, b),
+    "A!-B!": lambda a, b: sa.subtract(a, b),
+    "A!^2": lambda a, b: sa.power_by_integer(a, 2),
+    "SQR(ABS(A!))": lambda a, b: sa.nearest(math.sqrt(abs(a))),
+    "(A!*B!)+(A!/B!)*3": lambda a, b: sa.add(sa.multiply(a, b), sa.multiply(sa.divide(a, b), 3.0)),
+    "(A!-B!)^2-A!*(B!+1)": lambda a, b: sa.subtract(sa.power_by_integer(sa.subtract(a, b), 2),
+                                                    sa.multiply(a, sa.add(b, 1.0))),
+}
+
+
+def test_the_compiled_code_gives_what_the_helpers_give():
+    """``+ - * /``, ``X^2`` and SQR between singles, as the compiled code computes them
+    (tested inline where it can be: number_models._tested), give what the helpers give
+    (each checked against PC-BASIC or the exact value above), on operands of every shape:
+    plain, through scratch locals, and products in GW's own rounding band."""
+    rng = random.Random(9)
+    lines = []
+    for k in range(400):
+        a, b = random_single(rng), rng.choice([random_single(rng), random_single(rng), 3.0, 0.1, -7.5])
+        if not 1e-18 < abs(a) < 1e18 or not 1e-18 < abs(b) < 1e18:
+            continue  # (the range's ends are test_the_range_ends_as_mbfs's)
+        results = ": ".join(f"R{k}X{n}!={expression.replace('A!', f'A{k}!').replace('B!', f'B{k}!')}"
+                            for n, expression in enumerate(COMPILED))
+        lines.append(f"{10 + k} A{k}!={a:.9E}: B{k}!={b:.9E}: {results}")
+    machine = Machine(screen=io.StringIO(), dialect="gw")
+    machine.load("\n".join(lines) + "\n")
+    machine.run()
+    checked = banded = 0
+    for line in lines:
+        k = int(line.split()[0]) - 10
+        a, b = machine.scalars[f"A{k}!"], machine.scalars[f"B{k}!"]  # as the literals were read
+        for n, helper in enumerate(COMPILED.values()):
+            assert machine.scalars[f"R{k}X{n}!"] == helper(a, b), (a, b, list(COMPILED)[n])
+            checked += 1
+        banded += sa.multiply(a, b) != sa.nearest(a * b)  # GW's product rounding is not the nearest
+    assert checked > 2400 and banded > 5
+    code = machine.compiled[0].source
+    assert "_sv if" in code and "_sh if" in code and "_sfn(_sv)" in code  # the inline tests are there
+
+
 def test_a_widened_single_prints_pcbasics_sixteen_digits():
     """A double holding a single (``B#=A!``, CDBL) or an integer is exact in GW's 56 bits:
     its 16 digits are those of GW's output routine (PC-BASIC's ``Double``), which

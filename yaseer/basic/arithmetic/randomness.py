@@ -135,8 +135,8 @@ class GwRandom:
             # the 24-bit mantissa of x as a single (hidden bit included); the exponent is
             # ignored, so RND(-1), RND(-2) and RND(-0.5) start the same sequence
             self.state = single_mantissa(x)
-        if x != 0:
-            self._advance()
+        if x != 0:  # (the step of _advance, written out: this is the common path)
+            self.state = (self.state * _MULTIPLIER + _INCREMENT) % _PERIOD
         return self.state / _PERIOD
 
     def randomize(self, value, kind: str = "!") -> None:

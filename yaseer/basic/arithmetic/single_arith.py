@@ -46,8 +46,8 @@ from math import frexp, inf, ldexp
 
 _TOP = 1 << 32  # a 32-bit working mantissa is below this
 _HALF_TOP = 1 << 31  # ... and, normalised, at least this
-_TINY = 2.0 ** -128  # the least MBF single; anything smaller is 0
-_LIMIT = 2.0 ** 127  # a rounded result this large overflows (exponent byte 256)
+TINY = 2.0 ** -128  # the least MBF single; anything smaller is 0
+LIMIT = 2.0 ** 127  # a rounded result this large overflows (exponent byte 256)
 _SAFE_LOW = 2.0 ** -125  # IEEE singles keep all 24 bits from 2**-126 up
 # A constant below this in size, added to a single, cannot carry the sum beyond the
 # range: it is less than half a unit of the largest single (2**103, about 1E+31).
@@ -63,7 +63,7 @@ def nearest(x) -> float:
             r = _unpack(_pack(x))[0]
         except OverflowError:
             return -inf if x < 0 else inf
-        if -_LIMIT < r < _LIMIT:
+        if -LIMIT < r < LIMIT:
             return r
         return -inf if r < 0 else inf
     if not x or x != x:
@@ -75,7 +75,7 @@ def nearest(x) -> float:
     if below > 0.5 or (below == 0.5 and q % 2.0):
         q += 1.0
     r = ldexp(q, e - 24)
-    if r < _TINY:
+    if r < TINY:
         return 0.0
     return -r if x < 0 else r
 
@@ -124,32 +124,33 @@ def add(a, b) -> float:
     smaller operand is shifted out, the guard byte's low 5 bits are 0) and for an
     addition, unless the carry shifted out a 1 below a guard byte of exactly 0x80
     (the sum is then 0.5 + 1/512 of a unit above the 24 bits: IEEE rounds up, GW
-    half to even)."""
+    half to even).  The nearest single is the split's cut where the sum is not
+    halfway (:func:`_units_below`); a halfway sum and every other goes the long way."""
     if not a:
         return b + 0.0
     if not b:
         return a + 0.0
+    total = a + b
+    if not total:
+        return 0.0
     x = a if a > 0 else -a
     y = b if b > 0 else -b
-    small, large = (a, b) if x <= y else (b, a)
-    if x > y:
-        x, y = y, x
-    if x * 536870912.0 >= y:
-        total = a + b
-        if not total:
-            return 0.0
-        if total >= _SAFE_LOW or total <= -_SAFE_LOW:
-            split = total * 536870913.0
-            if split - (split - total) == total:
-                if -_LIMIT < total < _LIMIT:
-                    return total
-                return -inf if total < 0 else inf
+    if (total >= _SAFE_LOW or total <= -_SAFE_LOW) and (x * 536870912.0 >= y if x <= y else y * 536870912.0 >= x):
+        split = total * 536870913.0
+        cut = split - (split - total)
+        if cut == total:
+            if -LIMIT < total < LIMIT:
+                return total
+            return -inf if total < 0 else inf
+        q = total * 4503599627370497.0  # (see _units_below, written out here: the common path)
+        below = (total - cut) / (q - 0.9999999999999999 * q) * 8388608.0
+        if -LIMIT < cut < LIMIT:
             if (a > 0) == (b > 0):
-                r = nearest(total)
-                if (frexp(total)[0] * 16777216.0) % 1.0 not in (0.501953125, 0.498046875):
-                    return r
-            elif x * 8.0 >= y:
-                return nearest(total)
+                if -0.498046875 < below < 0.498046875:
+                    return cut
+            elif -0.5 < below < 0.5 and (x * 8.0 >= y if x <= y else y * 8.0 >= x):
+                return cut
+    small, large = (a, b) if x <= y else (b, a)
     small_exponent, small_mantissa = working_parts(small)
     exponent, mantissa = working_parts(large)
     return _rounded(*working_sum(small_exponent, small_mantissa, small < 0, exponent, mantissa, large < 0))
@@ -184,13 +185,32 @@ def subtract(a, b) -> float:
     return add(a, -b)
 
 
+def _units_below(x, cut) -> float:
+    """How far ``x`` lies from its 24-bit cut ``cut`` (a rounding of ``x`` to 24 bits:
+    within one unit of its last place), in units of that place, signed so that a
+    positive value means ``cut`` is nearer zero than ``x``.  Float operations only:
+    ``q - (1 - 2**-53) * q`` with ``q = x * (2**52 + 1)`` is the largest power of two
+    not above ``|x|`` with ``x``'s sign (Rump, Ogita and Oishi's ufp), whose 2**-23 is
+    the unit; every step is exact."""
+    q = x * 4503599627370497.0
+    return (x - cut) / (q - 0.9999999999999999 * q) * 8388608.0
+
+
 def product(p) -> float:
     """The single GW-BASIC's ``$FMULS`` gives for the exact product ``p`` of two singles
     (or integers; any product of two values of at most 24 bits is exact in a Python
     float): ``p`` truncated to 28 bits, whose 4 low bits round the 24 half to even
     (``1001`` counts as a half): up when the part below the 24 bits is at least
-    10/16 of a unit, or at least 8/16 over an odd mantissa."""
-    if -_TINY < p < _TINY:
+    10/16 of a unit, or at least 8/16 over an odd mantissa.  That is the nearest
+    single unless that part is from 8/16 to 10/16: the nearest, found with float
+    operations (Veltkamp's split and :func:`_units_below`), is returned at once
+    outside that band and inside the range; the band and the edges go the long way."""
+    split = p * 536870913.0  # Veltkamp: ``cut`` is p rounded to 24 bits (to nearest)
+    cut = split - (split - p)
+    if TINY <= cut < LIMIT or -LIMIT < cut <= -TINY:
+        if -0.375 <= _units_below(p, cut) < 0.5:  # GW's rounding is the nearest outside [0.5, 0.625)
+            return cut
+    if -TINY < p < TINY:
         return 0.0
     if p in (inf, -inf):  # a power's product after an overflow
         return p
@@ -201,7 +221,7 @@ def product(p) -> float:
     if below >= 0.625 or (below >= 0.5 and q % 2.0):
         q += 1.0
     r = ldexp(q, e - 24)
-    if r >= _LIMIT:
+    if r >= LIMIT:
         return -inf if p < 0 else inf
     return -r if p < 0 else r
 
@@ -251,7 +271,7 @@ def from_double(x) -> float:
     if e + 128 <= 0:
         return 0.0
     r = ldexp(q, e - 24)
-    if r >= _LIMIT:
+    if r >= LIMIT:
         return -inf if x < 0 else inf
     return -r if x < 0 else r
 

@@ -173,7 +173,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         if (target_kind == "s") != (value_kind == "s"):
             raise type_mismatch()
         if value_kind != "s":
-            value_code = self.numbers.convert(value_code, value_kind, target_kind)
+            value_code = self.numbers.stored(value_code, value_kind, target_kind)
         if isinstance(target, ast.Var):
             name = scope.scalar(target.name, write=True)
             if check:  # checked before the store: a trapped Overflow leaves the variable as it was

@@ -254,7 +254,7 @@ class ExpressionCompiler:
         if op in ("+", "-", "*", "/"):
             # a left-leaning chain (A+B+C...) stays flat: Python groups + - and * / the same way
             group = ("+", "-") if op in ("+", "-") else ("*", "/")
-            # (not a gw double's range-checked result, "(_w if ...)": number_models)
+            # (not a gw double's range-checked or a single's tested result, "(_w if ...)": number_models)
             if (isinstance(node.left, ast.Binary) and node.left.op in group and left.startswith("(")
                     and not left.startswith(RANGE_CHECKED)):
                 left = left[1:-1]

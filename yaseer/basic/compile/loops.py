@@ -226,9 +226,13 @@ class LoopCompiler:
 
         Only for a scalar FOR with constant bounds and fewer than 16 passes (the short
         loops :meth:`loop_mode` would run as ``while``, and those that never run) whose numbers are plain doubles
-        stepped by a plain ``+`` (the casio dialect's); None for any other loop.
+        stepped by a plain ``+`` (the casio dialect's), or gw singles whose values are all whole numbers below
+        2**24; None for any other loop.
         """
-        if self.numbers.typed or self.numbers.loop_helpers("n")[1] != "{var} + {step}":
+        whole_singles = self.numbers.typed  # gw: a single loop whose values are whole and exact in 24 bits
+        if whole_singles and self.kind_of(stmt.var) != "!":
+            return None
+        if not whole_singles and self.numbers.loop_helpers("n")[1] != "{var} + {step}":
             return None
         if not isinstance(stmt.var, ast.Var) or self.kind_of(stmt.var) == "s":
             return None
@@ -240,6 +244,8 @@ class LoopCompiler:
         while (value <= limit) if step > 0 else (value >= limit):
             values.append(value)
             value = value + step
+        if whole_singles and not all(v == int(v) and abs(v) < 2.0 ** 24 for v in values + [value]):
+            return None  # (a single sum of whole numbers below 2**24 is exact: GW's sum is the double's)
         return values, value
 
     def native_loop(self, i: int) -> int:

@@ -17,7 +17,7 @@ expression; :func:`number_model` picks the model from ``Dialect.typed_numbers``.
 
 from __future__ import annotations
 
-from yaseer.basic.arithmetic.single_arith import SMALL_CONSTANT
+from yaseer.basic.arithmetic.single_arith import LIMIT, SMALL_CONSTANT, TINY
 
 NUMERIC = frozenset("n%!#?")
 _RANK = {"%": 0, "!": 1, "?": 1.5, "#": 2}
@@ -96,6 +96,10 @@ class PlainNumbers:
     def convert(self, code: str, source: str, target: str) -> str:
         return code
 
+    def stored(self, code: str, source: str, target: str) -> str:
+        """``code`` converted to be stored in a variable of type ``target``."""
+        return self.convert(code, source, target)
+
     def call(self, name: str, helper: str, codes: list[str], kinds: list[str], result: str) -> tuple[str, str]:
         """A built-in function call: ``helper`` (its runtime callable) applied to ``codes``
         (arguments of types ``kinds``); ``result`` is "s" or "n" from the function table."""
@@ -136,6 +140,7 @@ class TypedNumbers(PlainNumbers):
 
     def __init__(self, def_types=None):
         self.letters: dict[str, str] = dict(def_types or {})
+        self._temps = 0
 
     def def_types(self) -> dict:
         return dict(self.letters)
@@ -165,24 +170,53 @@ class TypedNumbers(PlainNumbers):
         kind = lkind if _RANK[lkind] >= _RANK[rkind] else rkind
         if kind == "?":  # VAL's with a single or integer: the type VAL's text gave (val_numbers.py)
             return (f"_vdv({left}, {right})" if op == "/" else f"_vop({op!r}, {left}, {right})"), "?"
-        if op == "/":  # through the dialect's division-by-zero policy (arith_policy.py)
-            if kind == "#":
-                return f"_ddv({left}, {right})", "#"
-            return f"_dv({left}, {right})", "!"
+        if op == "/":  # through the dialect's division-by-zero policy (arith_policy.py); of integers: single
+            return (f"_ddv({left}, {right})", "#") if kind == "#" else (self._single(op, left, right), "!")
         if kind == "%":
             return f"_ia({left} {op} {right})", "%"
         if kind == "!":  # rounded as GW-BASIC's MBF routines round (single_arith.py)
-            if op == "*":
-                return f"_sp({left} * {right})", "!"
-            helper = "_sadd" if op == "+" else "_ssub"
-            if _plain_operand(left) and _plain_operand(right) and (_small_literal(left) or _small_literal(right)):
-                # the tight loop's A=A+1: a sum that needs at most 24 bits is GW's result
-                # (and cannot leave the range); tested inline by Veltkamp's split, which
-                # gives the sum cut to 24 bits (no Python frame); any other through the helper
-                return (f"(_sv if (_sv := {left} {op} {right}) == (_sc := _sv * 536870913.0) - (_sc - _sv) "
-                        f"else {helper}({left}, {right}))"), "!"
-            return f"{helper}({left}, {right})", "!"
+            return self._single(op, left, right), "!"
         return _in_double_range(f"{left} {op} {right}"), "#"
+
+    def _temp(self) -> int:
+        """A fresh number for the scratch locals of one operation (``_x{n}``, ``_y{n}``)."""
+        self._temps += 1
+        return self._temps
+
+    def _single(self, op: str, left: str, right: str) -> str:
+        """The code of a single ``left op right`` (``+ - * /``), rounded as GW-BASIC rounds,
+        tested inline where it can be, with no Python frame (see :func:`_tested`).
+
+        A result that needs at most 24 bits and lies in MBF's range is GW's result: the
+        routines round nothing when no bit is lost (a product of two singles is exact in a
+        double, and so is a quotient that a double holds in 24 bits; a sum whose double is
+        24 bits is GW's sum, see ``single_arith.add``).  A product or a quotient that needs
+        rounding is the nearest single, found inline too, outside the cases where GW's
+        rounding differs from it or cannot be told from it at a glance; a sum that needs
+        rounding, and those cases, go to the helper.  The range test is left out where it
+        cannot fail: a sum with a constant below ``SMALL_CONSTANT`` (module single_arith).
+        Each operand is evaluated once, in order: one that is not a local or a literal is
+        kept in a scratch local for the helper."""
+        if op == "*":  # the exact product: the helper rounds it
+            return _tested(f"{left} * {right}", "_sp(_sv)", _PRODUCT_BAND)
+        if op == "/":  # through the dialect's division-by-zero policy (arith_policy.py) when not tested
+            if not _plain_operand(right):
+                return f"_dv({left}, {right})"
+            kept, first = left, ""
+            if not _plain_operand(left):  # evaluated first, whatever the divisor
+                kept = f"_x{self._temp()}"
+                first = f"({kept} := {left}) is {kept} and "
+            divisor = "" if _small_literal(right) and float(right) else f"{right} and "  # 0: the policy's
+            return _tested(f"{first}{divisor}{kept} / {right}", f"_dv({kept}, {right})", _NEAREST_BAND)
+        helper = "_sadd" if op == "+" else "_ssub"
+        small = _small_literal(left) or _small_literal(right)
+        if _plain_operand(left) and _plain_operand(right):
+            return _tested(f"{left} {op} {right}", f"{helper}({left}, {right})", in_range=not small)
+        n = self._temp()
+        first = left if _plain_operand(left) else f"(_x{n} := {left})"
+        second = right if _plain_operand(right) else f"(_y{n} := {right})"
+        return _tested(f"{first} {op} {second}", f"{helper}({left if first is left else f'_x{n}'}, "
+                       f"{right if second is right else f'_y{n}'})", in_range=not small)
 
     def helper(self, op: str, left: str, right: str) -> tuple[str, str]:
         names = {"\\": "_idiv", "MOD": "_mod", "AND": "_and", "OR": "_or", "XOR": "_xor",
@@ -192,7 +226,14 @@ class TypedNumbers(PlainNumbers):
     def power(self, left: str, lkind: str, right: str, rkind: str) -> tuple[str, str]:
         """``^``: single precision, also of doubles (GW-BASIC's ``$FPWR`` makes both
         operands single: ``2#^.5`` is 1.414214); ``_spow`` in arith_policy.py."""
-        return f"_spow({self.convert(left, lkind, '!')}, {self.convert(right, rkind, '!')})", "!"
+        left, right = self.convert(left, lkind, '!'), self.convert(right, rkind, '!')
+        if right in ("2", "2.0"):  # $FPWR's X^2 is one $FMULS, X*X: exact products inline (see _single)
+            first = kept = left
+            if not _plain_operand(left):
+                kept = f"_x{self._temp()}"
+                first = f"({kept} := {left}) is {kept} and {kept}"
+            return _tested(f"{first} * {kept}", f"_spow({kept}, 2.0)", _PRODUCT_BAND), "!"
+        return f"_spow({left}, {right})", "!"
 
     def negate(self, operand: str, kind: str) -> tuple[str, str]:
         if kind == "%":
@@ -222,6 +263,13 @@ class TypedNumbers(PlainNumbers):
             return code
         return f"_sfd({code})"
 
+    def stored(self, code: str, source: str, target: str) -> str:
+        """An integer literal stored in a single or double variable is a float from the start
+        (``K=0``): sums with it then stay floats, without mixing int and float."""
+        if source == "%" and target != "%" and _is_int_literal(code):
+            return repr(float(int(code)))
+        return self.convert(code, source, target)
+
     def call(self, name: str, helper: str, codes: list[str], kinds: list[str], result: str) -> tuple[str, str]:
         code = f"{helper}({', '.join(codes)})"
         if result == "s":
@@ -235,9 +283,13 @@ class TypedNumbers(PlainNumbers):
                 return f"_vlike({code}, {codes[0]})", "?"
             return code, kind
         if kind == "!":
+            if name == "RND":  # already a single: the generator's 24-bit state over 2**24 (randomness.py)
+                return code, "!"
             if name in self._SINGLE_FUNCTIONS and kinds and kinds[0] in "#?":  # computed on the single
                 code = f"{helper}({', '.join([self.convert(codes[0], '#', '!')] + codes[1:])})"
-            return f"_sfn({code})", "!"
+            # the nearest single (single_arith.function_result), found inline where it is clear
+            split = f"(_sc := (_sv := {code}) * 536870913.0)"
+            return f"(_sh if {_cut_in_range(split)} and {_NEAREST_BAND} else _sfn(_sv))", "!"
         return code, kind
 
     def printable(self, code: str, kind: str) -> str:
@@ -249,8 +301,8 @@ class TypedNumbers(PlainNumbers):
     def loop_helpers(self, kind: str) -> tuple[str, str]:
         if kind == "%":
             return "_irange", "_ci({var} + {step})"
-        if kind == "!":
-            return "_frange", "_sadd({var}, {step})"
+        if kind == "!":  # NEXT's sum rounded as any single sum, tested inline first (see _single)
+            return "_frange", self._single("+", "_VAR", "_STEP").replace("_VAR", "{var}").replace("_STEP", "{step}")
         return "_frange", "_dk({var} + {step})"
 
     def may_iterate(self, stmt, kind: str) -> bool:
@@ -264,7 +316,42 @@ class TypedNumbers(PlainNumbers):
         return whole(stmt.start) and whole(stmt.step)
 
 
-RANGE_CHECKED = "(_w if "  # how the code of a range-checked double result starts
+# The tests of a single result ``_sv`` written into the compiled code (see _tested).
+_IN_RANGE = f"({TINY!r} <= _sv < {LIMIT!r} or {-LIMIT!r} < _sv <= {-TINY!r})"
+
+
+def _cut_in_range(split: str = "_sc") -> str:
+    """Is ``_sh``, ``_sv`` cut to 24 bits from its ``split`` (``_sv * (2**29 + 1)``), in MBF's range?"""
+    return f"({TINY!r} <= (_sh := {split} - (_sc - _sv)) < {LIMIT!r} or {-LIMIT!r} < _sh <= {-TINY!r})"
+
+
+# how far ``_sv`` is from its cut ``_sh``, in units of 2**-23 of its leading power of two
+# (single_arith._units_below without the last scaling)
+_BELOW = "(_sv - _sh) / ((_sq := _sv * 4503599627370497.0) - 0.9999999999999999 * _sq)"
+# where the cut is GW's result: not halfway (and, for a product, outside GW's band of 0.5 to 0.625
+# units above the cut, where its 28-bit product rounds otherwise: single_arith.product)
+_NEAREST_BAND = f"{-0.5 * 2.0 ** -23!r} < {_BELOW} < {0.5 * 2.0 ** -23!r}"
+_PRODUCT_BAND = f"{-0.375 * 2.0 ** -23!r} <= {_BELOW} < {0.5 * 2.0 ** -23!r}"
+
+
+def _tested(value: str, helper: str, band: str | None = None, in_range: bool = True) -> str:
+    """The code of a single result: ``value`` (a double) where it is GW's result, else ``helper``
+    (code reading ``_sv``, the double, or the scratch locals of the operands).
+
+    First: does ``_sv`` need at most 24 bits (Veltkamp's split, ``v * (2**29 + 1)``, gives
+    ``v`` cut to 24 bits; three float operations) and lie in MBF's range (``in_range``)?
+    Then, with a ``band``: the cut ``_sh``, in the range, where ``_sv`` lies inside the band
+    around it.  Scratch locals ``_sv _sc _sh _sq`` are each read before anything else can
+    assign them."""
+    exact = f"(_sv := {value}) == (_sc := _sv * 536870913.0) - (_sc - _sv)"
+    if in_range:
+        exact += f" and {_IN_RANGE}"
+    if band is not None:
+        helper = f"(_sh if {_cut_in_range()} and {band} else {helper})"
+    return f"(_sv if {exact} else {helper})"
+
+RANGE_CHECKED = ("(_w if ", "(_sv if ", "(_sh if ")  # how a range-checked double's and a tested single's code start
+"""(Their parentheses hold a conditional expression: a chain like ``A+B+C`` may not drop them.)"""
 
 
 def _in_double_range(code: str) -> str:
@@ -272,7 +359,7 @@ def _in_double_range(code: str) -> str:
     beyond it ``_dk`` gives the overflow policy's value.  The test is inline (a
     chained comparison, no call: twice as fast in a double loop); ``_w`` is a scratch
     local, each use read before the next assignment."""
-    return f"{RANGE_CHECKED}{-2.0 ** 127!r} <= (_w := {code}) <= {2.0 ** 127!r} else _dk(_w))"
+    return f"{RANGE_CHECKED[0]}{-2.0 ** 127!r} <= (_w := {code}) <= {2.0 ** 127!r} else _dk(_w))"
 
 
 def _small_literal(code: str) -> bool:
