@@ -296,6 +296,35 @@ def test_the_compiled_code_gives_what_the_helpers_give():
     assert "_sv if" in code and "_sh if" in code and "_sfn(_sv)" in code  # the inline tests are there
 
 
+def test_compiled_sums_near_a_tie_after_the_carry_are_the_helpers():
+    """Sums of singles whose exponents are close, as the compiled code tests them inline,
+    against ``add``: among them sums 1/512 of a unit from halfway, where GW's carry rounds
+    otherwise than the nearest (test_sums_near_a_tie_after_the_carry_are_pcbasics)."""
+    rng = random.Random(10)
+    lines, near_tie = [], 0
+    for k in range(2000):
+        exponent = rng.randrange(-30, 10)
+        if k % 2:  # a carry that shifts out a 1 below a guard byte of 0x80: 1/512 of a unit above halfway
+            m = rng.randrange((1 << 24) - (1 << 15), 1 << 24)
+            n = rng.randrange((1 << 24) - m, (1 << 16) - 2)
+            n += (m + n + 1) % 2  # m + n odd
+            a, b = math.ldexp(m, exponent), math.ldexp(256 * n + 1, exponent - 8)
+        else:
+            a = math.ldexp(rng.randrange(1 << 23, 1 << 24), exponent)
+            b = math.ldexp(rng.randrange(1 << 23, 1 << 24), exponent - rng.randrange(0, 12))
+        a, b = (-a, -b) if rng.random() < 0.5 else (a, b)
+        b = -b if rng.random() < 0.3 else b
+        near_tie += (math.frexp(a + b)[0] * 16777216.0) % 1.0 in (0.501953125, 0.498046875)
+        lines.append(f"{10 + k} A{k}!={a:.9E}: B{k}!={b:.9E}: S{k}!=A{k}!+B{k}!: D{k}!=A{k}!-B{k}!")
+    machine = Machine(screen=io.StringIO(), dialect="gw")
+    machine.load("\n".join(lines) + "\n")
+    machine.run()
+    for k in range(len(lines)):
+        a, b = machine.scalars[f"A{k}!"], machine.scalars[f"B{k}!"]
+        assert (machine.scalars[f"S{k}!"], machine.scalars[f"D{k}!"]) == (sa.add(a, b), sa.subtract(a, b)), (a, b)
+    assert near_tie > 100
+
+
 def test_a_widened_single_prints_pcbasics_sixteen_digits():
     """A double holding a single (``B#=A!``, CDBL) or an integer is exact in GW's 56 bits:
     its 16 digits are those of GW's output routine (PC-BASIC's ``Double``), which

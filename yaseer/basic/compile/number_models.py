@@ -192,8 +192,8 @@ class TypedNumbers(PlainNumbers):
         double, and so is a quotient that a double holds in 24 bits; a sum whose double is
         24 bits is GW's sum, see ``single_arith.add``).  A product or a quotient that needs
         rounding is the nearest single, found inline too, outside the cases where GW's
-        rounding differs from it or cannot be told from it at a glance; a sum that needs
-        rounding, and those cases, go to the helper.  The range test is left out where it
+        rounding differs from it or cannot be told from it at a glance, and so is a sum of
+        two numbers of one sign; those cases and the other sums go to the helper.  The range test is left out where it
         cannot fail: a sum with a constant below ``SMALL_CONSTANT`` (module single_arith).
         Each operand is evaluated once, in order: one that is not a local or a literal is
         kept in a scratch local for the helper."""
@@ -210,13 +210,17 @@ class TypedNumbers(PlainNumbers):
             return _tested(f"{first}{divisor}{kept} / {right}", f"_dv({kept}, {right})", _NEAREST_BAND)
         helper = "_sadd" if op == "+" else "_ssub"
         small = _small_literal(left) or _small_literal(right)
+        first = second = a = b = None
         if _plain_operand(left) and _plain_operand(right):
-            return _tested(f"{left} {op} {right}", f"{helper}({left}, {right})", in_range=not small)
-        n = self._temp()
-        first = left if _plain_operand(left) else f"(_x{n} := {left})"
-        second = right if _plain_operand(right) else f"(_y{n} := {right})"
-        return _tested(f"{first} {op} {second}", f"{helper}({left if first is left else f'_x{n}'}, "
-                       f"{right if second is right else f'_y{n}'})", in_range=not small)
+            first, second, a, b = left, right, left, right
+        else:
+            n = self._temp()
+            first, a = (left, left) if _plain_operand(left) else (f"(_x{n} := {left})", f"_x{n}")
+            second, b = (right, right) if _plain_operand(right) else (f"(_y{n} := {right})", f"_y{n}")
+        # a sum of two numbers of one sign (whatever their exponents: single_arith.add) that is not
+        # near halfway is the nearest single
+        same_sign = f"({a} > 0) {'==' if op == '+' else '!='} ({b} > 0) and {_SUM_BAND}"
+        return _tested(f"{first} {op} {second}", f"{helper}({a}, {b})", same_sign, in_range=not small)
 
     def helper(self, op: str, left: str, right: str) -> tuple[str, str]:
         names = {"\\": "_idiv", "MOD": "_mod", "AND": "_and", "OR": "_or", "XOR": "_xor",
@@ -289,6 +293,10 @@ class TypedNumbers(PlainNumbers):
                 code = f"{helper}({', '.join([self.convert(codes[0], '#', '!')] + codes[1:])})"
             # the nearest single (single_arith.function_result), found inline where it is clear
             split = f"(_sc := (_sv := {code}) * 536870913.0)"
+            # a single's square root is never halfway between singles (the square of a 25-bit odd
+            # number needs 48 bits), nor is its double: any cut of it is the nearest
+            if name == "SQR":
+                return f"(_sh if {_cut_in_range(split)} else _sfn(_sv))", "!"
             return f"(_sh if {_cut_in_range(split)} and {_NEAREST_BAND} else _sfn(_sv))", "!"
         return code, kind
 
@@ -320,9 +328,11 @@ class TypedNumbers(PlainNumbers):
 _IN_RANGE = f"({TINY!r} <= _sv < {LIMIT!r} or {-LIMIT!r} < _sv <= {-TINY!r})"
 
 
-def _cut_in_range(split: str = "_sc") -> str:
-    """Is ``_sh``, ``_sv`` cut to 24 bits from its ``split`` (``_sv * (2**29 + 1)``), in MBF's range?"""
-    return f"({TINY!r} <= (_sh := {split} - (_sc - _sv)) < {LIMIT!r} or {-LIMIT!r} < _sh <= {-TINY!r})"
+def _cut_in_range(split: str | None = None) -> str:
+    """Is ``_sh``, ``_sv`` cut to 24 bits (from its ``split``, ``_sv * (2**29 + 1)``; None: ``_sh``
+    is that cut already), in MBF's range?"""
+    cut = "_sh" if split is None else f"(_sh := {split} - (_sc - _sv))"
+    return f"({TINY!r} <= {cut} < {LIMIT!r} or {-LIMIT!r} < _sh <= {-TINY!r})"
 
 
 # how far ``_sv`` is from its cut ``_sh``, in units of 2**-23 of its leading power of two
@@ -332,6 +342,8 @@ _BELOW = "(_sv - _sh) / ((_sq := _sv * 4503599627370497.0) - 0.9999999999999999 
 # units above the cut, where its 28-bit product rounds otherwise: single_arith.product)
 _NEAREST_BAND = f"{-0.5 * 2.0 ** -23!r} < {_BELOW} < {0.5 * 2.0 ** -23!r}"
 _PRODUCT_BAND = f"{-0.375 * 2.0 ** -23!r} <= {_BELOW} < {0.5 * 2.0 ** -23!r}"
+# (a sum: not within 1/512 of a unit of halfway, where a carry can make GW round otherwise)
+_SUM_BAND = f"{-0.498046875 * 2.0 ** -23!r} < {_BELOW} < {0.498046875 * 2.0 ** -23!r}"
 
 
 def _tested(value: str, helper: str, band: str | None = None, in_range: bool = True) -> str:
@@ -340,10 +352,10 @@ def _tested(value: str, helper: str, band: str | None = None, in_range: bool = T
 
     First: does ``_sv`` need at most 24 bits (Veltkamp's split, ``v * (2**29 + 1)``, gives
     ``v`` cut to 24 bits; three float operations) and lie in MBF's range (``in_range``)?
-    Then, with a ``band``: the cut ``_sh``, in the range, where ``_sv`` lies inside the band
+    Then, with a ``band``: that cut ``_sh``, in the range, where ``_sv`` lies inside the band
     around it.  Scratch locals ``_sv _sc _sh _sq`` are each read before anything else can
     assign them."""
-    exact = f"(_sv := {value}) == (_sc := _sv * 536870913.0) - (_sc - _sv)"
+    exact = f"(_sv := {value}) == (_sh := (_sc := _sv * 536870913.0) - (_sc - _sv))"
     if in_range:
         exact += f" and {_IN_RANGE}"
     if band is not None:
