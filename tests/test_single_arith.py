@@ -325,6 +325,19 @@ def test_compiled_sums_near_a_tie_after_the_carry_are_the_helpers():
     assert near_tie > 100
 
 
+def test_an_expression_too_deep_for_the_inline_tests_is_the_helpers():
+    """Nested 55 deep, the inline tests would pass Python's nesting limit: the statement is
+    compiled with the helper calls alone, and still gives what they give."""
+    expression, value = "A!", 1.0
+    for _ in range(55):
+        expression, value = f"({expression}*1.5!+.1!)", sa.add(sa.multiply(value, 1.5), sa.nearest(0.1))
+    machine = Machine(screen=io.StringIO(), dialect="gw")
+    machine.load(f"10 A!=1: B!={expression}\n")
+    machine.run()
+    assert machine.scalars["B!"] == value
+    assert "_sadd(_sp(" in machine.compiled[0].source
+
+
 def test_a_widened_single_prints_pcbasics_sixteen_digits():
     """A double holding a single (``B#=A!``, CDBL) or an integer is exact in GW's 56 bits:
     its 16 digits are those of GW's output routine (PC-BASIC's ``Double``), which

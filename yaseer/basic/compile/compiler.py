@@ -160,6 +160,12 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             return
         if self.cur is block and _too_deep(block.code[mark:]):
             del block.code[mark:]  # Python could not compile it: the statement's own error
+            if self.numbers.tests_inline:  # unless the plain helper calls, which nest least, fit
+                self.numbers.tests_inline = False
+                try:
+                    return self.statement(stmt)
+                finally:
+                    self.numbers.tests_inline = True
             self.emit(f"raise _err('Out of memory', {OUT_OF_MEMORY})")
             return
         if scope.uses_fn:

@@ -52,6 +52,7 @@ class PlainNumbers:
     """The pocket computer's numbers: every value a double, type ``"n"``."""
 
     typed = False
+    tests_inline = False  # (TypedNumbers: single results tested inline; off, only helper calls)
     square_by_product = True  # X^2 may compile to X*X (exact in binary)
     loop_types = frozenset("n")  # the types a FOR variable may have
     widest = "n"  # the type of a number read by READ or INPUT (converted to the target's)
@@ -141,6 +142,7 @@ class TypedNumbers(PlainNumbers):
     def __init__(self, def_types=None):
         self.letters: dict[str, str] = dict(def_types or {})
         self._temps = 0
+        self.tests_inline = True
 
     def def_types(self) -> dict:
         return dict(self.letters)
@@ -197,6 +199,9 @@ class TypedNumbers(PlainNumbers):
         cannot fail: a sum with a constant below ``SMALL_CONSTANT`` (module single_arith).
         Each operand is evaluated once, in order: one that is not a local or a literal is
         kept in a scratch local for the helper."""
+        if not self.tests_inline:  # the helpers alone (their calls nest least)
+            return {"*": f"_sp({left} * {right})", "/": f"_dv({left}, {right})",
+                    "+": f"_sadd({left}, {right})", "-": f"_ssub({left}, {right})"}[op]
         if op == "*":  # the exact product: the helper rounds it
             return _tested(f"{left} * {right}", "_sp(_sv)", _PRODUCT_BAND)
         if op == "/":  # through the dialect's division-by-zero policy (arith_policy.py) when not tested
@@ -231,7 +236,7 @@ class TypedNumbers(PlainNumbers):
         """``^``: single precision, also of doubles (GW-BASIC's ``$FPWR`` makes both
         operands single: ``2#^.5`` is 1.414214); ``_spow`` in arith_policy.py."""
         left, right = self.convert(left, lkind, '!'), self.convert(right, rkind, '!')
-        if right in ("2", "2.0"):  # $FPWR's X^2 is one $FMULS, X*X: exact products inline (see _single)
+        if right in ("2", "2.0") and self.tests_inline:  # $FPWR's X^2 is one $FMULS, X*X: exact products inline (see _single)
             first = kept = left
             if not _plain_operand(left):
                 kept = f"_x{self._temp()}"
@@ -295,6 +300,8 @@ class TypedNumbers(PlainNumbers):
             split = f"(_sc := (_sv := {code}) * 536870913.0)"
             # a single's square root is never halfway between singles (the square of a 25-bit odd
             # number needs 48 bits), nor is its double: any cut of it is the nearest
+            if not self.tests_inline:
+                return f"_sfn({code})", "!"
             if name == "SQR":
                 return f"(_sh if {_cut_in_range(split)} else _sfn(_sv))", "!"
             return f"(_sh if {_cut_in_range(split)} and {_NEAREST_BAND} else _sfn(_sv))", "!"
