@@ -129,6 +129,33 @@ def test_functions_agree_with_mpmath_to_13_digits(function):
     assert mismatches == 0
 
 
+EDGES = ["1", "2", "7", "89", "91", "179.9999999999", "180.0000000001", "0.000001", "359.9999999", "1000",
+         "123456789.1234", "1.000000000001", "0.9999999999999", "45", "30", "60", "0.5", "3.1415926",
+         "99999.99999999", "1E-7", "2.718281828459"]
+
+
+@pytest.mark.parametrize("function", ["sqrt", "exp", "log", "sin", "cos", "sin radians", "cos radians"])
+def test_functions_at_the_edges_agree_with_mpmath(function):
+    # where the float functions lose digits (near zeros of SIN and COS, LOG near 1,
+    # large angles) and the counts of BM8: the decimal result, correctly rounded
+    mpmath.mp.dps = 40
+    name, _, unit = function.partition(" ")
+    for text in EDGES + [str(k) for k in range(1, 1001, 7)]:
+        for sign in (1, -1):
+            x = Fraction(text) * sign
+            if name in ("sqrt", "log") and x <= 0 or name == "exp" and abs(x) > 200:
+                continue
+            arg = mpmath.mpf(x.numerator) / x.denominator
+            angle = arg if unit else arg * mpmath.pi / 180
+            reference = {"sqrt": mpmath.sqrt, "exp": mpmath.exp, "log": mpmath.log, "sin": mpmath.sin,
+                         "cos": mpmath.cos}[name](arg if name in ("sqrt", "exp", "log") else angle)
+            expected = round13(Fraction(mpmath.nstr(reference, 35, min_fixed=-40, max_fixed=40)))
+            if name in ("sin", "cos") and not unit and x % 90 == 0:
+                expected = round(float(reference))  # exact at right angles, as the manual's degree mode
+            ours = getattr(D, name)(float(x), not unit) if name in ("sin", "cos") else getattr(D, name)(float(x))
+            assert ours == expected, (function, text, sign)
+
+
 def run(program: str, dialect=DECIMAL) -> str:
     screen = io.StringIO()
     machine = Machine(screen=screen, dialect=dialect)
