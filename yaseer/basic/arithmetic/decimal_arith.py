@@ -118,9 +118,15 @@ def _own_decimal(x) -> bool:
 
 def _surely(value: float, error: float):
     """``value`` rounded to DIGITS digits as a float when every number within ``error``
-    of it rounds to the same, else None."""
-    low = CONTEXT.plus(Decimal(value - error))
-    return float(low) if low == CONTEXT.plus(Decimal(value + error)) else None
+    of it rounds to the same, else None.  (The ends' roundings agree only when no
+    halfway point lies between them, so half up and half even agree there.)"""
+    if not 1e-90 < abs(value) < 1e90:
+        return None
+    low = format(value - error, _DIGITS_FORMAT)
+    return float(low) if low == format(value + error, _DIGITS_FORMAT) else None
+
+
+_DIGITS_FORMAT = f".{DIGITS - 1}e"
 
 
 def sqrt(x) -> float:
@@ -158,15 +164,32 @@ def log(x) -> float:
 
 def _float_sine_or_cosine(x, degrees: bool, which: int):
     """SIN (``which`` 0) or COS (1) of ``x`` from the float functions when sure (see
-    :func:`_surely`), else None (also at multiples of 90 degrees, which are exact)."""
+    :func:`_surely`), else None (also at multiples of 90 degrees, which are exact).
+
+    In degrees the angle is first brought to at most 45 degrees with exact float
+    steps (a remainder, and differences within a factor of two of each other), so
+    the float angle in radians is off by a few parts in 10^16 of itself."""
     if not _own_decimal(x) or abs(x) > 1e9 or (degrees and x % 90.0 == 0.0):
         return None
-    if degrees:  # the remainder is exact; radians() errs by a few units of its last place
-        angle, error = math.radians(math.fmod(x, 360.0)), abs(x) * 2.2e-18 + 4e-15
-    else:
-        angle, error = x, abs(x) * 1.2e-16 + 4e-16
-    value = math.cos(angle) if which else math.sin(angle)
-    return _surely(value, error + abs(value) * 4e-16)
+    if not degrees:
+        value = math.cos(x) if which else math.sin(x)
+        return _surely(value, abs(x) * 1.2e-16 + 4e-16 + abs(value) * 4e-16)
+    angle = math.fmod(x, 360.0)
+    if angle > 180.0:
+        angle -= 360.0
+    elif angle < -180.0:
+        angle += 360.0
+    sign = 1.0
+    if angle < 0.0:
+        angle = -angle
+        sign = 1.0 if which else -1.0  # cos is even, sin odd
+    if angle > 90.0:
+        angle = 180.0 - angle
+        sign = -sign if which else sign  # cos(180 - a) = -cos a, sin(180 - a) = sin a
+    if angle > 45.0:  # the other function of the complement
+        angle, which = 90.0 - angle, 1 - which
+    value = sign * (math.cos(math.radians(angle)) if which else math.sin(math.radians(angle)))
+    return _surely(value, abs(value) * 6e-16 + abs(x) * 2.2e-18)
 
 
 # ------------------------------------------------------------------ trigonometry
