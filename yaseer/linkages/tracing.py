@@ -121,11 +121,12 @@ class Recorder:
         and every guard: the reads of one array are made together where the first
         of them was (:func:`_batched_reads`), runs of finiteness guards become one
         guard (:func:`_batched_finite_guards`), values nothing uses are not computed
-        where computing them could raise nothing (:func:`_without_dead_lines`), and
-        the values share a few variables (:func:`_registers`: a frame of hundreds of
-        locals costs every call its clearing)."""
+        where computing them could raise nothing (:func:`_without_dead_lines`), a value
+        used once is computed where it is used (:func:`_fused`), and the values share a
+        few variables (:func:`_registers`: a frame of hundreds of locals costs every
+        call its clearing)."""
         lines = _batched_finite_guards(_batched_reads([str(line) for line in self.lines + epilogue], self.names))
-        lines = _registers(_without_dead_lines(lines))
+        lines = _registers(_fused(_without_dead_lines(lines)))
         text = "def run(_M):\n" + "".join(f"    {line}\n" for line in lines)
         namespace = dict(self.names, _all=all, _map=map, _float=float,
                          __builtins__={"float": float, "complex": complex, "len": len, "abs": abs,
@@ -192,6 +193,36 @@ def _without_dead_lines(lines: list[str]) -> list[str]:
         if len(kept) == len(lines):
             return lines
         lines = kept
+
+
+_NESTING = 40  # parentheses a fused line may hold (the parser allows 200)
+
+
+def _fused(lines: list[str]) -> list[str]:
+    """``lines`` with each value used by one later line only computed inside that line
+    (``t5 = t3 * t4`` and ``t6 = t5 - t2`` become ``t6 = (t3 * t4) - t2``): the same
+    operations on the same values, without storing and loading the value between them.
+    A value is only ever moved later, past guards: where a guard then fails first, the
+    plain code run instead computes the value itself (and raises what it would)."""
+    uses: dict[str, int] = {}
+    for line in lines:
+        found = _DEFINED.match(line)
+        for name in _NAME.findall(found.group(2) if found else line):
+            uses[name] = uses.get(name, 0) + 1
+    pending: dict[str, str] = {}  # single-use value -> its expression, not yet written
+    out = []
+    for line in lines:
+        found = _DEFINED.match(line)
+        head, body = (f"{found.group(1)} = ", found.group(2)) if found else ("", line)
+        body = _NAME.sub(lambda m: f"({pending.pop(m.group(0))})" if m.group(0) in pending else m.group(0), body)
+        if (found and "," not in found.group(1) and uses.get(found.group(1)) == 1
+                and body.count("(") < _NESTING and "_a_" not in body and "_M" not in body):  # reads stay in place
+            pending[found.group(1)] = body
+            continue
+        out.append(head + body)
+    if pending:  # used by nothing after (cannot happen: every value written is used)
+        raise ValueError(f"values never used: {', '.join(pending)}")
+    return out
 
 
 def _registers(lines: list[str]) -> list[str]:
