@@ -107,13 +107,13 @@ def power(a, b) -> float:
 # SQR, EXP, LOG, SIN and COS from the float functions, where that gives the decimal
 # result for sure: the float function's value is within a known error of the exact
 # value for the decimal operand (the float's own error and the operand's distance
-# from its decimal); when every number that close rounds to the same 13 digits, that
+# from its decimal); when every number that close rounds to the same DIGITS digits, that
 # is the correctly rounded result the decimal module gives, at a twentieth of its cost
 # (a few in a thousand lie too near a rounding boundary and take the decimal module).
 
 def _own_decimal(x) -> bool:
     """Is ``x`` the nearest float to its decimal (every value the arithmetic makes is)?"""
-    return x == x and abs(x) != math.inf and float(format(x, ".13g")) == x
+    return x == x and abs(x) != math.inf and float(format(x, _OWN_FORMAT)) == x
 
 
 def _surely(value: float, error: float):
@@ -126,7 +126,8 @@ def _surely(value: float, error: float):
     return float(low) if low == format(value + error, _DIGITS_FORMAT) else None
 
 
-_DIGITS_FORMAT = f".{DIGITS - 1}e"
+_DIGITS_FORMAT = f".{DIGITS - 1}e"  # DIGITS significant digits
+_OWN_FORMAT = f".{DIGITS}g"
 
 
 def sqrt(x) -> float:
