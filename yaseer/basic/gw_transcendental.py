@@ -1,0 +1,401 @@
+"""GW-BASIC's transcendental functions, step by step as its math package computes them.
+
+GW-BASIC evaluates SIN, COS, TAN, ATN, LOG, EXP and ``^`` with a fractional (or
+large) exponent in single precision with Hart's polynomials (MATH1.ASM: ``$SIN``,
+``$COS``, ``$TAN``, ``$ATAN``, ``$EXP``, ``$FPWR``; MATH2.ASM: ``$LOG``, ``$POLY``,
+``$POLYX``).  Every step is one of the package's single-precision operations,
+whose rounding :mod:`yaseer.basic.single_arith` gives (``$FADDS`` :func:`add`,
+``$FMULS`` :func:`product`, ``$FDIVS`` :func:`divide`, ``$CSD``
+:func:`from_double`), so the last bit is GW's and not the nearest single to the
+true value (``ATN(1)`` is .7853983, the true value rounds to .7853982).
+
+SIN, COS and TAN reduce their argument in MBF double precision (56-bit
+mantissas): the angle times a 56-bit 1/(2*pi) (``$FMULD``: the exact product
+rounded half to even), its fraction (exact), for COS plus a quarter turn
+(``$FADDD``, which truncates the smaller operand as it aligns it).
+:class:`_Double` models those steps on integers.
+
+Values are Python floats holding singles (24-bit mantissas, MBF's range).  A
+result beyond the range is handed to ``overflow(negative)`` (GW-BASIC's
+``$OVFLS``: the caller's policy prints ``Overflow`` and gives the largest single,
+or raises); by default it is an infinity.  A domain error raises ValueError
+(GW's ``Illegal function call``), zero to a negative power and a TAN whose
+cosine is 0 raise ZeroDivisionError (``Division by zero``).
+"""
+
+from __future__ import annotations
+
+from math import floor, frexp, inf, ldexp
+
+from yaseer.basic.single_arith import add, divide, from_double, power_by_integer, product, subtract
+
+
+def _mbf(word: int) -> float:
+    """A single from its four MBF bytes read as one number, exponent byte first
+    (``0x81000000`` is 1.0): exponent byte, sign bit, 23 mantissa bits below the
+    hidden one."""
+    exponent = word >> 24
+    if not exponent:
+        return 0.0
+    mantissa = (word & 0x7FFFFF) | 0x800000
+    value = ldexp(mantissa, exponent - 152)
+    return -value if word & 0x800000 else value
+
+
+def _exponent_byte(x: float) -> int:
+    """The MBF exponent byte of a single (0 for zero): ``x`` = m * 2**(byte - 128), 0.5 <= m < 1."""
+    return frexp(x)[1] + 128 if x else 0
+
+
+# Constants of MATH1.ASM's table (CON86) and of the routines' immediate operands.
+_ONE = 1.0
+_TWO_PI = _mbf(0x83490FDB)  # 6.283185
+_HALF_PI = _mbf(0x81490FDB)  # 1.570796
+_SIXTH_PI = _mbf(0x80060A92)  # .5235988
+_TAN_TWELFTH_PI = _mbf(0x7F0930A2)  # .2679492
+_SQR3 = _mbf(0x815DB3D7)  # 1.732051
+_LN2 = _mbf(0x80317218)  # .6931472
+_LOG2_E = _mbf(0x8138AA3B)  # 1.442695
+
+# Polynomial coefficients, highest power first (as $POLY reads them).
+_SIN_COEFFICIENTS = tuple(map(_mbf, (  # Hart 3341, in turns: sin(2*pi*t) = t * P(t*t)
+    0x861ED7FB,  # 39.71092
+    0x87992665,  # -76.57498
+    0x87233458,  # 81.60223
+    0x86A55DE1,  # -41.34168
+    0x83490FDB,  # 6.283185
+)))
+_ATN_REDUCTION = tuple(map(_mbf, (0x815DB3D7, 0x81800000)))  # x*SQR(3) - 1
+_ATN_COEFFICIENTS = tuple(map(_mbf, (  # Hart 4940: atn(x) = x * P(x*x)
+    0x7E833562,  # -.1281333
+    0x7E4C2450,  # .1993573
+    0x7FAAA979,  # -.3333324
+    0x81000000,  # 1
+)))
+_LOG_NUMERATOR = tuple(map(_mbf, (  # Hart 2524: log2(m) = P(m) / Q(m), .5 <= m < 1
+    0x8319F79A,  # 4.811475
+    0x83436324,  # 6.105852
+    0x848DCD75,  # -8.86266
+    0x82837FA9,  # -2.054667
+)))
+_LOG_DENOMINATOR = tuple(map(_mbf, (
+    0x81000000,  # 1
+    0x834DB0E2,  # 6.427842
+    0x8311720A,  # 4.545171
+    0x7F3504F4,  # .3535534
+)))
+_EXP_COEFFICIENTS = tuple(map(_mbf, (  # Hart 1302: 2**z, 0 <= z < 1
+    0x7459887C,  # 2.074558E-04
+    0x772697E0,  # 1.271006E-03
+    0x7A1E1DC4,  # 9.650651E-03
+    0x7C63505E,  # .05549657
+    0x7E75FE1A,  # .2402271
+    0x80317218,  # .6931472
+    0x81000000,  # 1
+)))
+
+
+def _poly(x: float, coefficients) -> float:
+    """``$POLY``: Horner's rule from the highest coefficient, each step ``$FMULS`` then ``$FADDS``."""
+    total = coefficients[0]
+    for c in coefficients[1:]:
+        total = add(product(total * x), c)
+    return total
+
+
+def _polyx(x: float, coefficients) -> float:
+    """``$POLYX``: ``x * P(x*x)``, each product ``$FMULS``."""
+    return product(_poly(product(x * x), coefficients) * x)
+
+
+class _Double:
+    """An MBF double as the math package's double accumulator holds it: sign, exponent
+    byte (0: the number is 0) and a 56-bit mantissa whose top bit is set; the value
+    is ``mantissa * 2**(exponent - 184)``."""
+
+    __slots__ = ("negative", "exponent", "mantissa")
+
+    def __init__(self, negative: bool, exponent: int, mantissa: int):
+        self.negative, self.exponent, self.mantissa = negative, exponent, mantissa
+
+    @classmethod
+    def from_single(cls, x: float) -> "_Double":
+        """``$CDS``: a single widened (the 32 low mantissa bits are 0)."""
+        if not x:
+            return _ZERO
+        m, e = frexp(abs(x))
+        return cls(x < 0, e + 128, int(ldexp(m, 56)))
+
+    def to_single(self) -> float:
+        """``$CSD``: the top 24 bits, rounded up when the 25th is 1."""
+        if not self.exponent:
+            return 0.0
+        return from_double(ldexp(self.mantissa >> 29, self.exponent - 155) * (-1.0 if self.negative else 1.0))
+
+    def scaled(self, change: int) -> "_Double":
+        """The exponent byte changed by ``change`` (a multiplication by a power of 2, as the
+        SIN code adds to or subtracts from ``$FAC``); below the range: 0."""
+        if not self.exponent:
+            return self
+        exponent = self.exponent + change
+        return _Double(self.negative, exponent, self.mantissa) if exponent > 0 else _ZERO
+
+    def times(self, other: "_Double") -> "_Double":
+        """``$FMULD``: the exact product of the mantissas, rounded to 56 bits (guard byte,
+        and a sticky bit for the rest: half to even)."""
+        if not self.exponent or not other.exponent:
+            return _ZERO
+        full = self.mantissa * other.mantissa  # 2**110 <= full < 2**112
+        exponent = self.exponent + other.exponent - 128
+        if full >> 111:
+            rest_bits = 56
+        else:
+            rest_bits = 55
+            exponent -= 1
+        mantissa, rest = full >> rest_bits, full & ((1 << rest_bits) - 1)
+        half = 1 << (rest_bits - 1)
+        if rest > half or (rest == half and mantissa & 1):
+            mantissa += 1
+            if mantissa >> 56:
+                mantissa >>= 1
+                exponent += 1
+        return _Double(self.negative != other.negative, exponent, mantissa)
+
+    def floor(self) -> "_Double":
+        """``$DINT``: the largest integer not above the number."""
+        if not self.exponent:
+            return self
+        shift = 184 - self.exponent
+        if shift <= 0:
+            return self
+        if self.negative:
+            whole = -((-self.mantissa) >> shift)
+        else:
+            whole = self.mantissa >> shift
+        if not whole:
+            return _ZERO
+        return _normalised(self.negative, 184, whole)
+
+    def plus(self, arg: "_Double") -> "_Double":
+        """``$FADDD`` (``FAC := ARG + FAC``, ``self`` the FAC): the operand with the smaller
+        exponent is shifted right in a 64-bit register (mantissa and guard byte) by
+        ``$SHRA`` (whole bytes first, keeping of a dropped byte only its bit 5 as the
+        sticky bit; then bit by bit, a bit shifted into bit 4 setting bit 5), the two
+        are added or subtracted, normalised (``$NORMD``) and rounded (``$ROUND``)."""
+        if not arg.exponent:
+            return self
+        if not self.exponent:
+            return arg
+        fac, other = (self, arg) if self.exponent >= arg.exponent else (arg, self)
+        shift = fac.exponent - other.exponent
+        if shift >= 57:
+            return fac
+        register = other.mantissa << 8
+        while shift >= 8:
+            sticky = register & 0x20
+            register = (register >> 8) | sticky
+            shift -= 8
+        while shift:
+            register >>= 1
+            if register & 0x10:
+                register |= 0x20
+            shift -= 1
+        exponent, negative = fac.exponent, fac.negative
+        if fac.negative == other.negative:
+            total = (fac.mantissa << 8) + register
+            if total >> 64:
+                total >>= 1
+                exponent += 1
+        else:
+            total = (fac.mantissa << 8) - register
+            if total < 0:
+                total, negative = -total, not negative
+            for _ in range(57):
+                if total >> 63:
+                    break
+                total <<= 1
+                exponent -= 1
+                if exponent <= 0:
+                    return _ZERO
+            else:
+                return _ZERO
+        return _rounded(negative, exponent, total)
+
+    def minus_from(self, arg: "_Double") -> "_Double":
+        """``$FSUBD``: ``ARG - FAC`` (``self`` the FAC)."""
+        if not self.exponent:
+            return arg
+        return _Double(not self.negative, self.exponent, self.mantissa).plus(arg)
+
+    def negated(self) -> "_Double":
+        """``$NEG``: the sign flipped."""
+        return _Double(not self.negative, self.exponent, self.mantissa)
+
+
+_ZERO = _Double(False, 0, 0)
+
+
+def _normalised(negative: bool, exponent: int, mantissa: int) -> _Double:
+    """An integer mantissa (at most 56 bits) made a normalised double, exactly."""
+    shift = 56 - mantissa.bit_length()
+    return _Double(negative, exponent - shift, mantissa << shift)
+
+
+def _rounded(negative: bool, exponent: int, register: int) -> _Double:
+    """``$ROUND``: a normalised 64-bit register (mantissa and guard byte) rounded to 56
+    bits: up when the guard byte is at least 0x80, to even when it is exactly 0x80."""
+    guard = register & 0xFF
+    mantissa = register >> 8
+    if guard >= 0x80:
+        mantissa += 1
+        if guard == 0x80:
+            mantissa &= ~1
+        if mantissa >> 56:
+            mantissa >>= 1
+            exponent += 1
+    return _Double(negative, exponent, mantissa)
+
+
+_ONE_DOUBLE = _Double(False, 129, 1 << 55)
+_QUARTER_DOUBLE = _Double(False, 127, 1 << 55)
+_INVERSE_TWO_PI = _Double(False, 126, 0xA2F9836E4E440B)  # 1/(2*pi), $IN2PI
+
+
+def _turns(x: float) -> _Double:
+    """The fraction of ``x`` radians (``x`` >= 0) in whole turns: ``RR`` (double
+    product with 1/(2*pi), minus its integer part)."""
+    product_ = _Double.from_single(x).times(_INVERSE_TWO_PI)
+    return _fraction(product_)
+
+
+def _fraction(d: _Double) -> _Double:
+    """``RR1``: ``X - INT(X)`` as the routine forms it (``INT(X) - X``, negated)."""
+    return d.minus_from(d.floor()).negated()
+
+
+def _sine_of_turns(turns: _Double) -> float:
+    """``SIN30`` onwards: the sine of ``turns`` (0 <= turns < 1, a fraction of a turn)."""
+    quarters = turns.scaled(2)
+    quadrant = quarters.floor()
+    negative = quadrant.exponent == 130  # quadrant 2 or 3
+    odd = bool(quadrant.exponent & 1) or (quadrant.exponent == 130 and quadrant.mantissa >> 54 & 1)
+    angle = _fraction(quarters)
+    if odd:
+        angle = angle.minus_from(_ONE_DOUBLE)
+    t = angle.scaled(-2).to_single()
+    if _exponent_byte(t) < 116:  # below 2**-13: sin(2*pi*t) is 2*pi*t
+        result = product(t * _TWO_PI)
+    else:
+        result = _polyx(t, _SIN_COEFFICIENTS)
+    return -result if negative and result else result
+
+
+def sin(x) -> float:
+    """SIN as ``$SIN``: below 2**-10 in size the argument itself; else the sine of the
+    angle reduced to a quarter turn, by Hart 3341, with the sign of ``x``."""
+    if _exponent_byte(x) < 119:
+        return x + 0.0
+    result = _sine_of_turns(_turns(-x if x < 0 else x))
+    return -result if x < 0 and result else result
+
+
+def cos(x) -> float:
+    """COS as ``$COS``: the sine of the reduced angle plus a quarter turn (a double sum)."""
+    turns = _turns(-x if x < 0 else x)
+    return _sine_of_turns(_fraction(turns.plus(_QUARTER_DOUBLE)))
+
+
+def tan(x) -> float:
+    """TAN as ``$TAN``: ``$SIN`` divided by ``$COS`` (``$FDIVS``); a cosine of 0 raises
+    ZeroDivisionError."""
+    return divide(sin(x), cos(x))
+
+
+def atn(x) -> float:
+    """ATN as ``$ATAN``: for ``x`` >= 1, pi/2 - ATN(1/x); above tan(pi/12), pi/6 +
+    ATN((x*SQR(3) - 1) / (x + SQR(3))); the rest by Hart 4940; odd."""
+    negative = x < 0
+    y = -x if negative else x + 0.0
+    inverted = y >= _ONE
+    if inverted:
+        y = divide(_ONE, y)
+    shifted = y >= _TAN_TWELFTH_PI
+    if shifted:
+        y = divide(_poly(y, _ATN_REDUCTION), add(y, _SQR3))
+    result = _polyx(y, _ATN_COEFFICIENTS)
+    if shifted:
+        result = add(result, _SIXTH_PI)
+    if inverted:
+        result = subtract(_HALF_PI, result)
+    return -result if negative and result else result
+
+
+def log(x) -> float:
+    """LOG as ``$LOG``: ``x`` = m * 2**e (.5 <= m < 1); (e + P(m)/Q(m)) * LN(2) by Hart
+    2524; LOG(1) is 0.  ``x`` <= 0 raises ValueError."""
+    if x <= 0:
+        raise ValueError("LOG of a number not above 0")
+    if x == 1:
+        return 0.0
+    m, e = frexp(x)
+    ratio = divide(_poly(m, _LOG_NUMERATOR), _poly(m, _LOG_DENOMINATOR))
+    return product(add(float(e), ratio) * _LN2)
+
+
+def _overflowed(negative: bool) -> float:
+    return -inf if negative else inf
+
+
+def exp(x, overflow=_overflowed) -> float:
+    """EXP as ``$EXP``: y = x*LOG2(e); 2**y as 2**INT(y) times Hart 1302's 2**(y - INT(y));
+    |y| below 2**-25: 1; from 128 up: overflow, from -128 down: 0."""
+    y = product(x * _LOG2_E)
+    if y in (inf, -inf):
+        return overflow(False)
+    exponent = _exponent_byte(y)
+    if exponent < 104:
+        return 1.0
+    if exponent >= 136:
+        return 0.0 if y < 0 else overflow(False)
+    whole = floor(y)
+    if whole == 127:  # 2**127 has no exponent byte
+        return overflow(False)
+    fraction = subtract(y, float(whole))
+    result = product(_poly(fraction, _EXP_COEFFICIENTS) * ldexp(1.0, whole))
+    return overflow(False) if result == inf else result
+
+
+def power(x, y, overflow=_overflowed) -> float:
+    """``x ^ y`` of two singles as ``$FPWR``.
+
+    ``y`` = 0: 1.  ``x`` = 0: 0, or ZeroDivisionError for ``y`` < 0.  A negative ``x``
+    needs an integral ``y`` below 2**24 in size (else ValueError).  A negative ``y``:
+    1 / ``x ^ -y`` (a power that underflowed to 0 overflows instead, signed as the
+    power would be).  An integral ``y`` below 32768: binary powering (``XTON``,
+    :func:`single_arith.power_by_integer`); any other: EXP(y * LOG(|x|)), negated for a
+    negative ``x`` and odd ``y``."""
+    if not y:
+        return 1.0
+    if not x:
+        if y < 0:
+            raise ZeroDivisionError("zero to a negative power")
+        return 0.0
+    if x < 0 and (_exponent_byte(y) >= 153 or y != floor(y)):
+        raise ValueError("negative number to a fractional power")
+    if y < 0:
+        result = _positive_power(x, -y, overflow)
+        if not result:
+            return overflow(x < 0 and floor(-y) % 2 == 1)
+        return divide(_ONE, result)
+    return _positive_power(x, y, overflow)
+
+
+def _positive_power(x: float, y: float, overflow) -> float:
+    if y < 32768 and y == floor(y):
+        result = power_by_integer(x, int(y))
+        if result in (inf, -inf):
+            return overflow(result < 0)
+        return result
+    odd = x < 0 and floor(y) % 2 == 1
+    result = exp(product(y * log(-x if x < 0 else x)), overflow)
+    return -result if odd else result
