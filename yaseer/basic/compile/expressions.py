@@ -125,6 +125,16 @@ def _is_relation(node) -> bool:
     return False
 
 
+def _without_effects(node) -> bool:
+    """Can evaluating ``node`` neither draw RND, call anything nor fail (relations,
+    AND/OR/NOT of scalar variables and literals only)?"""
+    if isinstance(node, (ast.Num, ast.Str, ast.Var)):
+        return True
+    if isinstance(node, ast.Binary) and (node.op in _PY_RELATIONS or node.op in ("AND", "OR")):
+        return _without_effects(node.left) and _without_effects(node.right)
+    return isinstance(node, ast.Unary) and node.op == "NOT" and _without_effects(node.operand)
+
+
 def _is_constant(node) -> bool:
     return isinstance(node, ast.Num) or (isinstance(node, ast.Unary) and _is_constant(node.operand))
 
@@ -316,7 +326,10 @@ class ExpressionCompiler:
                 raise type_mismatch()
             return f"{left} {_PY_RELATIONS[node.op]} {right}"
         if isinstance(node, ast.Binary) and node.op in ("AND", "OR") and _is_relation(node):
-            word = node.op.lower()
+            # AND and OR are operators, not control flow: both sides run (an RND or an
+            # error on the right happens whatever the left gives); Python's short-cut
+            # words only where the right side can have no effect
+            word = node.op.lower() if _without_effects(node.right) else {"AND": "&", "OR": "|"}[node.op]
             return f"({self.condition(node.left, scope)}) {word} ({self.condition(node.right, scope)})"
         if isinstance(node, ast.Unary) and node.op == "NOT" and _is_relation(node.operand):
             return f"not ({self.condition(node.operand, scope)})"

@@ -268,6 +268,10 @@ class TypedNumbers(PlainNumbers):
             if code.startswith("_ia(") and code.endswith(")"):
                 code = code[4:-1]  # to_int checks the 16-bit range itself
             return f"_ci({code})"
+        if source == "%" and target == "!":
+            # a single holds a float even when its value is whole: PRINT and STR$ show
+            # 16777216 in a single as 1.677722E+07 (they tell the types apart by the value)
+            return repr(float(code)) if _is_int_literal(code) else f"float({code})"
         if source == target or target == "#" or source == "%":
             return code
         return f"_sfd({code})"

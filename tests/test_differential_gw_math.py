@@ -1,0 +1,74 @@
+"""``--dialect gw`` against PC-BASIC 2.0.8 where GW-BASIC's operators and number types
+decide what a program prints: AND and OR evaluate both sides (an RND on the right is
+drawn whatever the left gives), a single holding a whole number of 1E7 or more
+prints as a single.  Generated and seeded (``YASEER_DIFF_SEED``, ``YASEER_DIFF_CASES``).
+"""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+
+from test_differential_gw_runtime import assert_generated_match
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+
+
+# ---------------------------------------------------------------- AND and OR
+
+def relation(rng: random.Random) -> str:
+    """A relation that may draw RND, read an array element or divide."""
+    left = rng.choice(["RND(1)", "RND", "A", "B", "A(I)", "1", "0", "X / Y", "A + 1"])
+    return f"{left} {rng.choice(['<', '>', '=', '<>', '<=', '>='])} {rng.choice(['.5', '0', '1', 'A', 'RND(1)'])}"
+
+
+def condition(rng: random.Random, depth: int = 0) -> str:
+    if depth > 1 or rng.random() < 0.4:
+        text = relation(rng)
+    else:
+        text = f"{condition(rng, depth + 1)} {rng.choice(['AND', 'OR'])} {condition(rng, depth + 1)}"
+        if rng.random() < 0.3:
+            text = f"({text})"
+    return f"NOT ({text})" if rng.random() < 0.15 else text
+
+
+def and_or_program(rng: random.Random) -> str:
+    lines = [f"DIM A(3): A = {rng.randint(0, 1)}: B = {rng.random():.2f}: I = {rng.randint(0, 4)}: "
+             f"X = 1: Y = {rng.choice([0, 2])}"]
+    for _ in range(rng.randint(1, 4)):
+        kind = rng.random()
+        if kind < 0.6:
+            lines.append(f'IF {condition(rng)} THEN PRINT "T"; ELSE PRINT "F";')
+        elif kind < 0.8:
+            lines.append(f"Z = {condition(rng)}: PRINT Z;")
+        else:
+            lines.append(f'K = 0: WHILE K < 2 AND ({condition(rng)}): K = K + 1: WEND: PRINT "W"; K;')
+        lines.append("PRINT INT(RND * 1000)")
+    return "\n".join(f"{10 * (k + 1)} {text}" for k, text in enumerate(lines)) + "\n"
+
+
+def test_and_or_evaluate_both_sides_as_pcbasic(pc):
+    assert_generated_match(pc, and_or_program, 41, 80)
+
+
+# ---------------------------------------------------------------- whole singles of 1E7 and more
+
+def whole_single_program(rng: random.Random) -> str:
+    n = rng.choice([rng.randint(9_999_990, 10_000_010), rng.randint(1, 2 ** 24), 2 ** rng.randint(20, 30)])
+    half = n // 2
+    routes = [
+        f"A = {n}: PRINT A",
+        f"A = {half}: A = A + A: PRINT A; STR$(A)",
+        f"A% = {min(half, 32767)}: A = A% * {rng.randint(300, 1000)}: PRINT A",
+        f"A = 1: FOR I = 1 TO {rng.randint(20, 30)}: A = A + A: NEXT: PRINT A",
+        f"FOR I = {min(n, 2 ** 24 - 3)} TO {min(n, 2 ** 24 - 3) + 2}: PRINT I;: NEXT: PRINT",  # +1 stays exact
+        f"DEF FNA(X) = {n}: PRINT FNA(0)",
+        f"A# = {n}: PRINT A#: B = A#: PRINT B",
+    ]
+    lines = rng.sample(routes, rng.randint(1, 3))
+    return "\n".join(f"{10 * (k + 1)} {text}" for k, text in enumerate(lines)) + "\n"
+
+
+def test_whole_singles_print_as_pcbasic(pc):
+    assert_generated_match(pc, whole_single_program, 42, 80)
