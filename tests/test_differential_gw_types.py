@@ -185,16 +185,22 @@ def test_single_precision_arithmetic_prints_as_pcbasic(pc):
 
 def test_single_precision_functions_print_as_pcbasic_to_the_last_digits(pc):
     """SQR, SIN, LOG, EXP, ATN, ``/`` and powers: yaseer gives the nearest single where
-    GW's source rounds so (``/``, SQR) or where it evaluates its own series (LOG, EXP,
-    SIN, ATN, fractional powers); PC-BASIC cuts a function's double result to 24 bits
-    (23 below 2**23) and divides with a divisor that loses bits.  So the 7th digit may
-    differ by a few units, never more (finding F-MBF in docs/differential-findings.md)."""
+    GW's source rounds so (``/``, SQR) and evaluates GW's own polynomials step by step
+    (LOG, EXP, SIN, ATN, fractional powers: gw_transcendental.py, checked against real
+    GW-BASIC's digits in test_gw_transcendental.py); PC-BASIC cuts a function's double
+    result to 24 bits (23 below 2**23) and divides with a divisor that loses bits.  So
+    the 7th digit may differ by a few units, never more (finding F-MBF in
+    docs/differential-findings.md).  EXP's argument stays below 10 in size here: GW
+    multiplies it by LOG2(e) in single precision first, so for larger ones its result
+    drifts further from PC-BASIC's (true) value, by design of the source; LOG's
+    argument stays away from 1, where GW's polynomial cancels to a few units of the
+    last place of 1."""
     rng = random.Random(base_seed() + 16)
     cases = []
     for _ in range(case_count() // 2):
         a, b = random_single(rng).lstrip("-"), random_single(rng)
-        cases.append(rng.choice([f"A={a}: PRINT SQR(A); LOG(A); ATN(A)", f"A={a}: PRINT SIN(A); COS(A)",
-                                 f"A={a}: PRINT A^-{rng.randint(1, 4)}; A^.5; EXP(A/100)",
+        cases.append(rng.choice([f"A={a}: PRINT SQR(A); LOG(A + 2); ATN(A)", f"A={a}: PRINT SIN(A); COS(A)",
+                                 f"A={a}: PRINT A^-{rng.randint(1, 4)}; A^.5; EXP({rng.randint(-600, 600) / 64})",
                                  f"A={a}: B={b}: PRINT A / B; B / A"]))
     assert_mostly_exact(differing_rows(pc, cases), len(cases), share=1.0, units=3)
 

@@ -22,9 +22,9 @@ from fractions import Fraction
 import mpmath
 import pytest
 
-from yaseer.basic import gw_transcendental as gw
-from yaseer.basic import single_arith
-from yaseer.basic.numbers import SINGLE_LARGEST, str_dollar
+from yaseer.basic.arithmetic import gw_transcendental as gw
+from yaseer.basic.arithmetic import single_arith
+from yaseer.basic.arithmetic.values import SINGLE_LARGEST, str_dollar
 
 # ---------------------------------------------------------------- real GW-BASIC
 

@@ -19,8 +19,6 @@ dialect whose policy continues.
 
 from __future__ import annotations
 
-import math
-
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
 from yaseer.basic.arithmetic.values import DOUBLE_LARGEST, SINGLE_LARGEST
 
@@ -59,11 +57,16 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
     """The compiled code's helpers for a typed dialect: ``_dk`` (a double ``+ - *``
     result, or VAL's, kept in MBF's range: beyond it the policy's value), ``_dv`` and
     ``_ddv`` (single and double ``/``), ``_spow`` (``^``, single precision), and
-    ``\\`` ``MOD`` ``^`` ``EXP`` that give the policy's value instead of failing.  (A
+    ``\\`` ``MOD`` ``^`` that give the policy's value instead of failing, and the
+    transcendental functions (:func:`transcendental_functions`).  (A
     ``\\`` or ``MOD`` by zero gives a single 1.701412E+38 with the dividend's sign, as
     PC-BASIC 2.0.8 shows.)"""
-    from yaseer.basic.arithmetic import single_arith
+    from yaseer.basic.arithmetic import gw_transcendental, single_arith
     result = policy.result
+    transcendental = transcendental_functions(policy)
+
+    def single_overflow(negative: bool) -> float:
+        return result(OVERFLOW, negative, "!")
 
     def double(x):
         if -DOUBLE_LARGEST <= x <= DOUBLE_LARGEST:
@@ -80,15 +83,19 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
         return divide
 
     def single_power(a, b):
-        """``a ^ b`` of two singles as GW-BASIC's ``$FPWR`` (single_arith.py): an integral
-        exponent multiplies, any other is the nearest single to the double power."""
+        """``a ^ b`` of two singles as GW-BASIC's ``$FPWR``: an integral exponent
+        multiplies (single_arith.py), any other is EXP(b * LOG(a)) as GW computes them
+        (gw_transcendental.py)."""
         if single_arith.is_integral_power(b):
             try:
                 r = single_arith.power_by_integer(a, b)
             except ZeroDivisionError:
                 return result(DIVISION_BY_ZERO, False, "!")  # zero to a negative power: positive
             return r if r - r == 0 else result(OVERFLOW, r < 0, "!")
-        return single_arith.nearest(raise_to(a, b))
+        try:
+            return gw_transcendental.power(a, b, single_overflow)
+        except ZeroDivisionError:
+            return result(DIVISION_BY_ZERO, False, "!")
 
     def by_integer(operation):
         """``\\`` or MOD: a division by zero gives the policy's value."""
@@ -116,13 +123,27 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
         except OverflowError:
             return result(OVERFLOW, a < 0 and float(b).is_integer() and int(b) % 2 == 1, "!")
 
-    def exponential(x):
-        try:
-            r = math.exp(x)
-        except OverflowError:
-            r = math.inf
-        return r if r <= largest else result(OVERFLOW, False, "!")
-
     return {"_dk": double, "_dv": divider(single_arith.divide, "!"), "_ddv": divider(lambda a, b: double(a / b), "#"),
-            "_idiv": by_integer(int_divide), "_mod": by_integer(int_modulo), "_pow": raise_to, "_exp": exponential,
-            "_spow": single_power}
+            "_idiv": by_integer(int_divide), "_mod": by_integer(int_modulo), "_pow": raise_to,
+            "_spow": single_power, **transcendental}
+
+
+def transcendental_functions(policy: ArithmeticPolicy) -> dict:
+    """The compiled code's ``_sin _cos _tan _atn _log _exp`` for a typed dialect:
+    GW-BASIC's single-precision routines step by step (gw_transcendental.py), an
+    overflow (EXP) or a TAN whose cosine is 0 through the policy."""
+    from yaseer.basic.arithmetic import gw_transcendental
+
+    result = policy.result
+
+    def exp(x):
+        return gw_transcendental.exp(x, lambda negative: result(OVERFLOW, negative, "!"))
+
+    def tan(x):
+        try:
+            return gw_transcendental.tan(x)
+        except ZeroDivisionError:  # $FDIVS by 0: the infinity has the sine's sign
+            return result(DIVISION_BY_ZERO, gw_transcendental.sin(x) < 0, "!")
+
+    return {"_sin": gw_transcendental.sin, "_cos": gw_transcendental.cos, "_tan": tan,
+            "_atn": gw_transcendental.atn, "_log": gw_transcendental.log, "_exp": exp}

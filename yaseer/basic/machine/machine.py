@@ -392,6 +392,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput):
         }
 
     def _trig_functions(self) -> dict:
+        if self.dialect.typed_numbers:  # MBF singles: GW-BASIC's own routines, radians only
+            return arith_policy.transcendental_functions(self.arith)
         if self.dialect.arithmetic == "decimal":
             from yaseer.basic.arithmetic import decimal_arith
             return decimal_arith.trig_functions(self.angle != "RAD")

@@ -27,7 +27,7 @@ from __future__ import annotations
 
 from math import floor, frexp, inf, ldexp
 
-from yaseer.basic.single_arith import add, divide, from_double, power_by_integer, product, subtract
+from yaseer.basic.arithmetic.single_arith import add, divide, from_double, power_by_integer, product, subtract
 
 
 def _mbf(word: int) -> float:
