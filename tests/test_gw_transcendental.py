@@ -236,7 +236,7 @@ def random_singles(seed: int, count: int, low: int, high: int):
 
 
 @pytest.mark.parametrize(("function", "reference", "low", "high"), [
-    (gw.sin, reference_sin, -12, 20), (gw.cos, reference_cos, -12, 20), (gw.atn, reference_atn, -20, 20),
+    (gw.sin, reference_sin, -12, 40), (gw.cos, reference_cos, -12, 40), (gw.atn, reference_atn, -20, 20),
 ])
 def test_trigonometry_follows_the_algorithm(function, reference, low, high):
     for x in random_singles(7, 400, low, high):
@@ -334,3 +334,19 @@ def test_domain_and_range_errors():
     assert gw.power(0.0, 0.5) == 0.0 and gw.power(5.0, 0.0) == 1.0
     assert gw.power(-2.0, 3.0) == -8.0  # integral: multiplied
     assert gw.power(-2.0, 40000.0, overflow=lambda negative: negative) is False  # even: positive overflow
+
+
+# ---------------------------------------------------------------- in a program
+
+
+def test_a_gw_program_prints_the_machines_digits():
+    from test_differential_support import run_gw
+
+    assert run_gw("10 PRINT ATN(1); 4*ATN(1); COS(1.5); TAN(1.5#)\n") == " .7853983  3.141593  7.073721E-02  14.10142 \n"
+    assert run_gw("10 PRINT EXP(100): PRINT EXP(-100); LOG(1)\n") == "Overflow\n 1.701412E+38 \n 0  0 \n"
+    assert run_gw("10 ON ERROR GOTO 30: PRINT LOG(0)\n20 END\n30 PRINT ERR: RESUME 20\n") == " 5 \n"
+    half = Fraction(single_arith.nearest(0.5))
+    root = reference_exp(fmuls(half, reference_log(Fraction(2))))  # the source's steps
+    inverse = fdivs(Fraction(1), reference_exp(fmuls(half, reference_log(Fraction(4)))))
+    expected = f"{str_dollar(float(root))} -512 {str_dollar(float(inverse))} \n"
+    assert run_gw("10 PRINT 2^.5; (-8)^3; 4^-.5\n") == expected

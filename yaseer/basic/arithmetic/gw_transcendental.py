@@ -13,7 +13,7 @@ SIN, COS and TAN reduce their argument in MBF double precision (56-bit
 mantissas): the angle times a 56-bit 1/(2*pi) (``$FMULD``: the exact product
 rounded half to even), its fraction (exact), for COS plus a quarter turn
 (``$FADDD``, which truncates the smaller operand as it aligns it).
-:class:`_Double` models those steps on integers.
+:func:`_turns` and :func:`_quarter_turn_added` do those steps on integers.
 
 Values are Python floats holding singles (24-bit mantissas, MBF's range).  A
 result beyond the range is handed to ``overflow(negative)`` (GW-BASIC's
@@ -96,10 +96,22 @@ _EXP_COEFFICIENTS = tuple(map(_mbf, (  # Hart 1302: 2**z, 0 <= z < 1
 
 
 def _poly(x: float, coefficients) -> float:
-    """``$POLY``: Horner's rule from the highest coefficient, each step ``$FMULS`` then ``$FADDS``."""
+    """``$POLY``: Horner's rule from the highest coefficient, each step ``$FMULS`` then
+    ``$FADDS``.  (``$FMULS`` is written out here, :func:`single_arith.product`'s rule,
+    because this loop is where SIN, LOG and EXP spend their time.)"""
     total = coefficients[0]
     for c in coefficients[1:]:
-        total = add(product(total * x), c)
+        p = total * x
+        if -_TINY < p < _TINY:
+            total = c
+            continue
+        m, e = frexp(p)
+        q = m * 16777216.0 if m > 0 else m * -16777216.0  # the 24 bits and the rest, exact
+        below = q % 1.0
+        q -= below
+        if below >= 0.625 or (below >= 0.5 and q % 2.0):
+            q += 1.0
+        total = add(ldexp(q if p > 0 else -q, e - 24), c)
     return total
 
 
@@ -108,201 +120,105 @@ def _polyx(x: float, coefficients) -> float:
     return product(_poly(product(x * x), coefficients) * x)
 
 
-class _Double:
-    """An MBF double as the math package's double accumulator holds it: sign, exponent
-    byte (0: the number is 0) and a 56-bit mantissa whose top bit is set; the value
-    is ``mantissa * 2**(exponent - 184)``."""
-
-    __slots__ = ("negative", "exponent", "mantissa")
-
-    def __init__(self, negative: bool, exponent: int, mantissa: int):
-        self.negative, self.exponent, self.mantissa = negative, exponent, mantissa
-
-    @classmethod
-    def from_single(cls, x: float) -> "_Double":
-        """``$CDS``: a single widened (the 32 low mantissa bits are 0)."""
-        if not x:
-            return _ZERO
-        m, e = frexp(abs(x))
-        return cls(x < 0, e + 128, int(ldexp(m, 56)))
-
-    def to_single(self) -> float:
-        """``$CSD``: the top 24 bits, rounded up when the 25th is 1."""
-        if not self.exponent:
-            return 0.0
-        return from_double(ldexp(self.mantissa >> 29, self.exponent - 155) * (-1.0 if self.negative else 1.0))
-
-    def scaled(self, change: int) -> "_Double":
-        """The exponent byte changed by ``change`` (a multiplication by a power of 2, as the
-        SIN code adds to or subtracts from ``$FAC``); below the range: 0."""
-        if not self.exponent:
-            return self
-        exponent = self.exponent + change
-        return _Double(self.negative, exponent, self.mantissa) if exponent > 0 else _ZERO
-
-    def times(self, other: "_Double") -> "_Double":
-        """``$FMULD``: the exact product of the mantissas, rounded to 56 bits (guard byte,
-        and a sticky bit for the rest: half to even)."""
-        if not self.exponent or not other.exponent:
-            return _ZERO
-        full = self.mantissa * other.mantissa  # 2**110 <= full < 2**112
-        exponent = self.exponent + other.exponent - 128
-        if full >> 111:
-            rest_bits = 56
-        else:
-            rest_bits = 55
-            exponent -= 1
-        mantissa, rest = full >> rest_bits, full & ((1 << rest_bits) - 1)
-        half = 1 << (rest_bits - 1)
-        if rest > half or (rest == half and mantissa & 1):
-            mantissa += 1
-            if mantissa >> 56:
-                mantissa >>= 1
-                exponent += 1
-        return _Double(self.negative != other.negative, exponent, mantissa)
-
-    def floor(self) -> "_Double":
-        """``$DINT``: the largest integer not above the number."""
-        if not self.exponent:
-            return self
-        shift = 184 - self.exponent
-        if shift <= 0:
-            return self
-        if self.negative:
-            whole = -((-self.mantissa) >> shift)
-        else:
-            whole = self.mantissa >> shift
-        if not whole:
-            return _ZERO
-        return _normalised(self.negative, 184, whole)
-
-    def plus(self, arg: "_Double") -> "_Double":
-        """``$FADDD`` (``FAC := ARG + FAC``, ``self`` the FAC): the operand with the smaller
-        exponent is shifted right in a 64-bit register (mantissa and guard byte) by
-        ``$SHRA`` (whole bytes first, keeping of a dropped byte only its bit 5 as the
-        sticky bit; then bit by bit, a bit shifted into bit 4 setting bit 5), the two
-        are added or subtracted, normalised (``$NORMD``) and rounded (``$ROUND``)."""
-        if not arg.exponent:
-            return self
-        if not self.exponent:
-            return arg
-        fac, other = (self, arg) if self.exponent >= arg.exponent else (arg, self)
-        shift = fac.exponent - other.exponent
-        if shift >= 57:
-            return fac
-        register = other.mantissa << 8
-        while shift >= 8:
-            sticky = register & 0x20
-            register = (register >> 8) | sticky
-            shift -= 8
-        while shift:
-            register >>= 1
-            if register & 0x10:
-                register |= 0x20
-            shift -= 1
-        exponent, negative = fac.exponent, fac.negative
-        if fac.negative == other.negative:
-            total = (fac.mantissa << 8) + register
-            if total >> 64:
-                total >>= 1
-                exponent += 1
-        else:
-            total = (fac.mantissa << 8) - register
-            if total < 0:
-                total, negative = -total, not negative
-            for _ in range(57):
-                if total >> 63:
-                    break
-                total <<= 1
-                exponent -= 1
-                if exponent <= 0:
-                    return _ZERO
-            else:
-                return _ZERO
-        return _rounded(negative, exponent, total)
-
-    def minus_from(self, arg: "_Double") -> "_Double":
-        """``$FSUBD``: ``ARG - FAC`` (``self`` the FAC)."""
-        if not self.exponent:
-            return arg
-        return _Double(not self.negative, self.exponent, self.mantissa).plus(arg)
-
-    def negated(self) -> "_Double":
-        """``$NEG``: the sign flipped."""
-        return _Double(not self.negative, self.exponent, self.mantissa)
+# The angle reduction of $SIN and $COS (RR, RR1, RR2, RR3) in MBF double precision,
+# here on integers: a fraction of a turn is ``(numerator, bits)``, numerator / 2**bits.
+_INVERSE_TWO_PI = 0xA2F9836E4E440B  # $IN2PI's 56-bit mantissa: 1/(2*pi) = it * 2**-58
+_TINY = 2.0 ** -128
 
 
-_ZERO = _Double(False, 0, 0)
+def _turns(x: float) -> tuple[int, int]:
+    """``RR``: the fraction of ``x`` radians (``x`` > 0) in whole turns.  The product
+    with 1/(2*pi) is ``$FMULD``'s (the exact product rounded half to even to 56 bits);
+    taking its integer part away (``$DINT``, ``$FSUBD``) is exact."""
+    if not x:
+        return 0, 2
+    m, e = frexp(x)
+    full = int(m * 16777216.0) * _INVERSE_TWO_PI  # * 2**(e - 82): 79 or 80 bits
+    drop = full.bit_length() - 56
+    mantissa, rest = full >> drop, full & ((1 << drop) - 1)
+    half = 1 << (drop - 1)
+    if rest > half or (rest == half and mantissa & 1):
+        mantissa += 1
+    bits = 82 - e - drop
+    if mantissa.bit_length() - bits <= -128 or bits <= 0:  # below MBF's range ($AEXPS), or whole
+        return 0, 2
+    if bits < 2:
+        return (mantissa & 1) << 1, 2
+    return mantissa & ((1 << bits) - 1), bits
 
 
-def _normalised(negative: bool, exponent: int, mantissa: int) -> _Double:
-    """An integer mantissa (at most 56 bits) made a normalised double, exactly."""
-    shift = 56 - mantissa.bit_length()
-    return _Double(negative, exponent - shift, mantissa << shift)
-
-
-def _rounded(negative: bool, exponent: int, register: int) -> _Double:
-    """``$ROUND``: a normalised 64-bit register (mantissa and guard byte) rounded to 56
-    bits: up when the guard byte is at least 0x80, to even when it is exactly 0x80."""
-    guard = register & 0xFF
-    mantissa = register >> 8
+def _quarter_turn_added(numerator: int, bits: int) -> tuple[int, int]:
+    """``$FADDD`` of a fraction of a turn and the quarter turn ``$COS`` adds.  From a
+    quarter up the quarter's one bit is shifted and the sum is exact; below it the
+    fraction is shifted right in the 64-bit register (mantissa and guard byte) by
+    ``$SHRA``: whole bytes first, keeping of a dropped byte only its bit 5 as the
+    sticky bit, then bit by bit, a bit shifted into bit 4 setting bit 5; then
+    ``$ROUND`` rounds the guard byte half to even."""
+    if not numerator:
+        return 1, 2
+    if numerator >> (bits - 2):
+        return numerator + (1 << (bits - 2)), bits
+    length = numerator.bit_length()
+    register = numerator << (64 - length)  # the fraction's mantissa and a zero guard byte
+    shift = bits - length - 1  # its exponent below the quarter's
+    if shift >= 57:
+        return 1, 2
+    while shift >= 8:
+        register = (register >> 8) | (register & 0x20)
+        shift -= 8
+    while shift:
+        register >>= 1
+        if register & 0x10:
+            register |= 0x20
+        shift -= 1
+    register += 1 << 63
+    guard, mantissa = register & 0xFF, register >> 8
     if guard >= 0x80:
         mantissa += 1
         if guard == 0x80:
             mantissa &= ~1
-        if mantissa >> 56:
-            mantissa >>= 1
-            exponent += 1
-    return _Double(negative, exponent, mantissa)
+    return mantissa, 57  # the quarter's exponent: 0.25 is 2**55 / 2**57
 
 
-_ONE_DOUBLE = _Double(False, 129, 1 << 55)
-_QUARTER_DOUBLE = _Double(False, 127, 1 << 55)
-_INVERSE_TWO_PI = _Double(False, 126, 0xA2F9836E4E440B)  # 1/(2*pi), $IN2PI
-
-
-def _turns(x: float) -> _Double:
-    """The fraction of ``x`` radians (``x`` >= 0) in whole turns: ``RR`` (double
-    product with 1/(2*pi), minus its integer part)."""
-    product_ = _Double.from_single(x).times(_INVERSE_TWO_PI)
-    return _fraction(product_)
-
-
-def _fraction(d: _Double) -> _Double:
-    """``RR1``: ``X - INT(X)`` as the routine forms it (``INT(X) - X``, negated)."""
-    return d.minus_from(d.floor()).negated()
-
-
-def _sine_of_turns(turns: _Double) -> float:
-    """``SIN30`` onwards: the sine of ``turns`` (0 <= turns < 1, a fraction of a turn)."""
-    quarters = turns.scaled(2)
-    quadrant = quarters.floor()
-    negative = quadrant.exponent == 130  # quadrant 2 or 3
-    odd = bool(quadrant.exponent & 1) or (quadrant.exponent == 130 and quadrant.mantissa >> 54 & 1)
-    angle = _fraction(quarters)
-    if odd:
-        angle = angle.minus_from(_ONE_DOUBLE)
-    t = angle.scaled(-2).to_single()
-    if _exponent_byte(t) < 116:  # below 2**-13: sin(2*pi*t) is 2*pi*t
+def _sine_of_turns(numerator: int, bits: int) -> float:
+    """``SIN30`` onwards: the sine of ``numerator / 2**bits`` turns (below one turn).
+    Four times it (the exponent byte plus 2) splits into the quadrant (``RR3``) and the
+    angle in it; in quadrants 1 and 3 the angle is taken from a quarter turn (``$FSUBD``,
+    exact here); a quarter of it (the exponent byte minus 2) made single (``$CSD``:
+    the 25th bit rounds up) is the argument of Hart 3341 (below 2**-13: times 2*pi)."""
+    quadrant = numerator >> (bits - 2)
+    angle = numerator & ((1 << (bits - 2)) - 1)  # / 2**(bits - 2): a fraction of a quadrant
+    if quadrant & 1:
+        angle = (1 << (bits - 2)) - angle
+    if not angle:
+        t = 0.0
+    else:
+        extra = angle.bit_length() - 25
+        if extra >= 0:
+            angle = (angle >> extra) + 1 >> 1  # the top 24 bits, rounded up on the 25th
+            t = ldexp(angle, extra + 1 - bits)
+        else:
+            t = ldexp(angle, -bits)
+    if t < 1.220703125e-04:  # 2**-13
         result = product(t * _TWO_PI)
     else:
         result = _polyx(t, _SIN_COEFFICIENTS)
-    return -result if negative and result else result
+    return -result if quadrant >= 2 and result else result
 
 
 def sin(x) -> float:
     """SIN as ``$SIN``: below 2**-10 in size the argument itself; else the sine of the
     angle reduced to a quarter turn, by Hart 3341, with the sign of ``x``."""
-    if _exponent_byte(x) < 119:
+    if -9.765625e-04 < x < 9.765625e-04:  # 2**-10
         return x + 0.0
-    result = _sine_of_turns(_turns(-x if x < 0 else x))
+    result = _sine_of_turns(*_turns(-x if x < 0 else x))
     return -result if x < 0 and result else result
 
 
 def cos(x) -> float:
     """COS as ``$COS``: the sine of the reduced angle plus a quarter turn (a double sum)."""
-    turns = _turns(-x if x < 0 else x)
-    return _sine_of_turns(_fraction(turns.plus(_QUARTER_DOUBLE)))
+    numerator, bits = _quarter_turn_added(*_turns(-x if x < 0 else x))
+    return _sine_of_turns(numerator & ((1 << bits) - 1), bits)
 
 
 def tan(x) -> float:
