@@ -72,3 +72,25 @@ def whole_single_program(rng: random.Random) -> str:
 
 def test_whole_singles_print_as_pcbasic(pc):
     assert_generated_match(pc, whole_single_program, 42, 80)
+
+
+# ---------------------------------------------------------------- INPUT of a number without digits
+
+def test_input_of_a_sign_point_or_exponent_alone_is_zero():
+    """GW's number reader ($FIN) takes ``D``, ``E``, ``-D``, ``.`` whole as the number 0
+    (D and E start an exponent); what cannot continue a number still asks again."""
+    from test_gw_language import with_answers
+
+    answers = ["D", "E", "-D", "+E", ".", "-", "E+", "1D-", "-.", "e", "ED", "1E2E"] + ["7"] * 4
+    program = f"10 FOR I=1 TO {len(answers) - 4}\n20 INPUT A\n30 PRINT A\n40 NEXT\n"
+    ours, theirs = with_answers(program, answers, "gw")
+    assert ours == theirs
+    assert ours.count("?Redo from start") == 2
+
+
+def test_input_of_an_exponent_without_a_mantissa_is_zero():
+    """``D5`` is 0 times 10^5 to GW's $FIN (PC-BASIC reads 1.469368E-34 there)."""
+    from test_gw_language import with_answers
+
+    ours, _ = with_answers("10 INPUT A, B\n20 PRINT A; B\n", ["D5, e-2"], "gw")
+    assert ours.endswith(" 0  0 \n")

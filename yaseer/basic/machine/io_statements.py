@@ -6,6 +6,7 @@ screen's settings (CLS, WIDTH, TRON's ``[n]``) and the file statements' I/O
 
 from __future__ import annotations
 
+import re
 import sys
 
 from yaseer.basic.arithmetic import formatting, values
@@ -344,7 +345,15 @@ def _parse_input(text: str, kinds: str, largest: float | None = None):
         except BasicError:  # beyond the double range
             return None
         if value is None:
-            return None
+            if not _NUMBER_WITHOUT_DIGITS.fullmatch("".join(field_text.split()).upper()):
+                return None
+            value = 0.0
         values.append(value)
     return values
+
+
+# An answer the number reader ($FIN, MATH1.ASM) reads whole although it has no digit:
+# a sign, a point, an exponent letter (D or E, with its sign and digits) make a number
+# of value 0 (``D``, ``-D``, ``.``, ``E+``, ``D5``)
+_NUMBER_WITHOUT_DIGITS = re.compile(r"[+-]?\.?(?:[DE][+-]?\d*)?")
 
