@@ -94,3 +94,30 @@ def test_input_of_an_exponent_without_a_mantissa_is_zero():
 
     ours, _ = with_answers("10 INPUT A, B\n20 PRINT A; B\n", ["D5, e-2"], "gw")
     assert ours.endswith(" 0  0 \n")
+
+
+# ---------------------------------------------------------------- what GW's evaluator lets through
+
+EVALUATED_AS_GW = [
+    '10 PRINT ABS("ABC"); LEN(ABS("ABCD")); -"Q"; +"R"\n',  # $VABS, $VNEG leave a string as it is
+    '10 A$ = "X": PRINT -A$: B$ = -A$ + "Y": PRINT B$; LEN(-B$)\n',
+    '10 PRINT POS("A"): PRINT "XYZ"; POS(A$)\n',  # POS's argument is a dummy of any type
+    '10 PRINT ABS(-3); -(-2); ABS(-2.5#); -ABS(-4)\n',
+    '10 A = -"X"\n',  # a string where a number must be: Type mismatch
+    '10 PRINT .: A = .: PRINT A; .#; -.; . + 1; .5\n',  # a lone point is the number 0
+    '10 PRINT 1 + .: PRINT ., .5: A.B = 3: PRINT A.B\n',
+]
+
+
+@pytest.mark.parametrize("source", EVALUATED_AS_GW)
+def test_evaluated_as_pcbasic(pc, source):
+    from test_differential_support import run_gw
+
+    assert run_gw(source) == pc.program(source)
+
+
+def test_casio_keeps_the_type_checks():
+    from test_differential_support import run_yaseer
+
+    for source in ('10 PRINT ABS("ABC")\n', '10 A$ = "X": PRINT -A$\n'):
+        assert "Type mismatch" in run_yaseer(source, dialect="casio")

@@ -38,7 +38,7 @@ _FUNCTIONS = {
     "SPACE$": (("n",), "s", "_space"), "HEX$": (("n",), "s", "_hex"), "OCT$": (("n",), "s", "_oct"),
     "MKI$": (("n",), "s", "_mki"), "MKS$": (("n",), "s", "_mks"), "MKD$": (("n",), "s", "_mkd"),
     "CVI": (("s",), "n", "_cvi"), "CVS": (("s",), "n", "_cvs"), "CVD": (("s",), "n", "_cvd"),
-    "FRE": (("x",), "n", "_fre"), "POS": (("n",), "n", "_pos"), "LPOS": (("n",), "n", "_lpos"),
+    "FRE": (("x",), "n", "_fre"), "POS": (("x",), "n", "_pos"), "LPOS": (("n",), "n", "_lpos"),
     "EOF": (("n",), "n", "_eof"), "LOF": (("n",), "n", "_lof"), "LOC": (("n",), "n", "_loc"),
     "INPUT$": (("n", "nn"), "s", "_input_chars"),
 }
@@ -244,6 +244,10 @@ class ExpressionCompiler:
         return code
 
     def expr_Unary(self, node, scope):
+        if node.op != "NOT" and self.numbers.typed:
+            operand, kind = self.expr(node.operand, scope)
+            if kind == "s":  # GW's $VNEG flips a sign bit beside a string's descriptor: the string
+                return operand, kind
         operand, kind = self.typed(node.operand, scope)
         if node.op == "NOT":
             return self.numbers.logical_not(operand)
@@ -282,6 +286,8 @@ class ExpressionCompiler:
         args = list(node.args)
         if node.name == "RND" and (not args or (len(args) == 1 and (constant_value(args[0]) or 0) > 0)):
             return self.numbers.call("RND", "_rndf", [], [], "n")  # the next number (the generator's drawer)
+        if node.name == "ABS" and self.numbers.typed and len(args) == 1 and ast.expr_type(args[0]) == "s":
+            return self.string(args[0], scope), "s"  # $VABS leaves a string as it is (MATH1.ASM)
         form = _call_form(forms, [ast.expr_type(arg) for arg in args])
         codes, kinds = [], []
         for arg, want in zip(args, form):

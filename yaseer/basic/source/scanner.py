@@ -221,6 +221,7 @@ def _scan_number(upper: str, i: int) -> tuple[float, int]:
 # a type character may follow a number without exponent only (``1E2!`` is 1E2, then a bad ``!``)
 _TYPED_NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)(?:([ED])([+-]?\d*)|([%!#]?))")
 _RADIX_NUMBER = re.compile(r"&(H[0-9A-F]*|O?[0-7]*)")
+_LONE_POINT = re.compile(r"\.(?:[ED][+-]?\d*)?([!#]?)")
 SINGLE_DIGITS = 7  # a literal with more significant digits is double precision (GW-BASIC)
 
 
@@ -248,7 +249,10 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
         return (value - 0x10000 if value >= 0x8000 else value, "%"), match.end()
     match = _TYPED_NUMBER.match(upper, i)
     if match is None:
-        raise _syntax_error()
+        point = _LONE_POINT.match(upper, i)  # no digit: the number reader's 0 ($FIN)
+        if point is None:
+            raise _syntax_error()
+        return (0.0, "#" if point.group(1) == "#" else "!"), point.end()
     mantissa, letter, exponent, suffix = match.groups()
     value = float(mantissa + ("E" + (exponent if exponent.strip("+-") else "0") if letter else ""))
     plain = letter is None and "." not in mantissa
@@ -330,7 +334,7 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
         elif ch == "'":
             yield "REMARK", text[i + 1:], start, n
             return
-        elif ch.isdigit() or (ch == "." and i + 1 < n and upper[i + 1].isdigit()) or (ch == "&" and typed):
+        elif ch.isdigit() or (ch == "." and i + 1 < n and upper[i + 1].isdigit()) or (ch in "&." and typed):
             value, i = _scan_typed_number(upper, i, notes) if typed else _scan_number(upper, i)
             yield "NUMBER", value, start, i
         elif ch.isascii() and ch.isalpha():

@@ -140,8 +140,12 @@ def expr_type(node) -> str:
         return "s"
     if isinstance(node, (Var, Elem, FnCall)):
         return "s" if node.name.endswith("$") else "n"
+    if isinstance(node, Call) and node.name == "ABS" and len(node.args) == 1:
+        return expr_type(node.args[0])  # (ABS of a string is the string in GW, a mismatch in casio)
     if isinstance(node, (Call, SysVar)):
         return "s" if node.name.endswith("$") else "n"
+    if isinstance(node, Unary) and node.op in "+-":  # (-A$ is A$ in GW)
+        return expr_type(node.operand)
     if isinstance(node, Binary) and node.op == "+":
         return expr_type(node.left)
     return "n"
