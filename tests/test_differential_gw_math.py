@@ -106,6 +106,8 @@ EVALUATED_AS_GW = [
     '10 A = -"X"\n',  # a string where a number must be: Type mismatch
     '10 PRINT .: A = .: PRINT A; .#; -.; . + 1; .5\n',  # a lone point is the number 0
     '10 PRINT 1 + .: PRINT ., .5: A.B = 3: PRINT A.B\n',
+    '10 OPTION BASE 1: DIM A(1), B(3, 0)\n',  # a dimension without an element
+    '10 OPTION BASE 1: DIM A(1): A(1) = 5: PRINT A(1): DIM C(0)\n',
 ]
 
 

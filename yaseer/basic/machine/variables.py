@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 
 from yaseer.basic.machine import runtime
-from yaseer.basic.errors import BasicError, DUPLICATE_DEFINITION, ILLEGAL_FUNCTION_CALL, OUT_OF_MEMORY
+from yaseer.basic.errors import BasicError, DUPLICATE_DEFINITION, ILLEGAL_FUNCTION_CALL, OUT_OF_MEMORY, SUBSCRIPT_OUT_OF_RANGE
 from yaseer.basic.compile.number_models import initial_value
 
 # Array limits (each exceeded limit is "Out of memory in N").
@@ -66,6 +66,8 @@ class Variables:
         dims = tuple(runtime.cint(s) for s in sizes)
         if any(d < 0 for d in dims):
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        if any(d < self.subscript_base for d in dims):  # DIM A(0) under OPTION BASE 1: no element
+            raise BasicError("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
         self._reserve(name, dims)
         self.arrays[name] = _new_array(dims, initial_value(name))
         self.array_dims[name] = dims
