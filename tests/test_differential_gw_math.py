@@ -108,6 +108,16 @@ EVALUATED_AS_GW = [
     '10 PRINT 1 + .: PRINT ., .5: A.B = 3: PRINT A.B\n',
     '10 OPTION BASE 1: DIM A(1), B(3, 0)\n',  # a dimension without an element
     '10 OPTION BASE 1: DIM A(1): A(1) = 5: PRINT A(1): DIM C(0)\n',
+    # a READ that fails leaves the DATA pointer on its item
+    '10 ON ERROR GOTO 100\n20 READ A: PRINT A\n30 END\n100 PRINT ERR: READ B$: PRINT B$: RESUME 30\n'
+    '200 DATA ABC, DEF\n',
+    '10 ON ERROR GOTO 100\n20 READ A, B: PRINT A; B\n30 END\n100 PRINT ERR; ERL: READ B$: PRINT B$: RESUME 30\n'
+    '200 DATA 5, X1, 7\n',
+    # CLEAR ends error trapping: ON ERROR off, ERR and ERL 0, the handler left
+    '10 ON ERROR GOTO 100: CLEAR: ERROR 5\n20 END\n100 PRINT "trapped": RESUME 20\n',
+    '10 ON ERROR GOTO 100: ERROR 5\n20 PRINT "back": END\n100 PRINT ERR; ERL: CLEAR: PRINT ERR; ERL: '
+    'ON ERROR GOTO 200: ERROR 7\n200 PRINT "h2"; ERR; ERL: RESUME 20\n',
+    '10 ON ERROR GOTO 100\n20 A = 1/0: PRINT A\n30 END\n100 PRINT ERR: CLEAR: PRINT "Y": RESUME NEXT\n',
 ]
 
 

@@ -104,12 +104,17 @@ class _AreaRuntime:
         return item
 
     def read_number(self) -> float:
+        """The next DATA item as a number; an item that is not one is a Syntax error in
+        the DATA line, and the pointer stays on it (a READ of a string, in an error
+        handler, reads it again, as GW-BASIC does)."""
         text, line = self.read_item()
         try:
             value = gwfunctions.number_field(text, self.machine.dialect.largest_number)
         except BasicError as err:
+            self.data_index -= 1
             raise err.at(line, self.number) from None
         if value is None:
+            self.data_index -= 1
             raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number)
         return value
 

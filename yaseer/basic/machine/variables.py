@@ -99,7 +99,9 @@ class Variables:
         return float(8 * (MAX_TOTAL_ELEMENTS - self.array_elements))
 
     def clear(self) -> None:
-        """CLEAR: every variable to 0 or "", arrays back to their implicit state, no FN."""
+        """CLEAR: every variable to 0 or "", arrays back to their implicit state, no FN;
+        no error trapping either (ON ERROR off, ERR and ERL 0, an error handler left:
+        its RESUME is then RESUME without error, as PC-BASIC shows)."""
         for name in self.scalars:
             self.scalars[name] = initial_value(name)
         self.arrays.clear()
@@ -109,6 +111,9 @@ class Variables:
         self.fns.clear()
         for rt in self.runtimes.values():
             rt.data_index = 0
+        self.on_error = None
+        self.in_handler = False
+        self.err = self.erl = 0.0
 
 
 def _check_clear_arguments(*sizes) -> None:
