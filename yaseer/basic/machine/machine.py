@@ -397,7 +397,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput):
         }
 
     def _trig_functions(self) -> dict:
-        if self.dialect.typed_numbers:  # MBF singles: GW-BASIC's own routines, radians only
+        if self.dialect.typed_numbers and self.angle == "RAD":  # MBF singles: GW-BASIC's own routines
             return arith_policy.transcendental_functions(self.arith)
         if self.dialect.arithmetic == "decimal":
             from yaseer.basic.arithmetic import decimal_arith
