@@ -96,22 +96,10 @@ _EXP_COEFFICIENTS = tuple(map(_mbf, (  # Hart 1302: 2**z, 0 <= z < 1
 
 
 def _poly(x: float, coefficients) -> float:
-    """``$POLY``: Horner's rule from the highest coefficient, each step ``$FMULS`` then
-    ``$FADDS``.  (``$FMULS`` is written out here, :func:`single_arith.product`'s rule,
-    because this loop is where SIN, LOG and EXP spend their time.)"""
+    """``$POLY``: Horner's rule from the highest coefficient, each step ``$FMULS`` then ``$FADDS``."""
     total = coefficients[0]
     for c in coefficients[1:]:
-        p = total * x
-        if -_TINY < p < _TINY:
-            total = c
-            continue
-        m, e = frexp(p)
-        q = m * 16777216.0 if m > 0 else m * -16777216.0  # the 24 bits and the rest, exact
-        below = q % 1.0
-        q -= below
-        if below >= 0.625 or (below >= 0.5 and q % 2.0):
-            q += 1.0
-        total = add(ldexp(q if p > 0 else -q, e - 24), c)
+        total = add(product(total * x), c)
     return total
 
 
@@ -123,7 +111,6 @@ def _polyx(x: float, coefficients) -> float:
 # The angle reduction of $SIN and $COS (RR, RR1, RR2, RR3) in MBF double precision,
 # here on integers: a fraction of a turn is ``(numerator, bits)``, numerator / 2**bits.
 _INVERSE_TWO_PI = 0xA2F9836E4E440B  # $IN2PI's 56-bit mantissa: 1/(2*pi) = it * 2**-58
-_TINY = 2.0 ** -128
 
 
 def _turns(x: float) -> tuple[int, int]:
