@@ -1,0 +1,169 @@
+"""The machine's display: a grid of character cells with a cursor, one model for every dialect.
+
+A :class:`Display` is ``columns`` x ``rows`` cells (the *virtual screen*), of which
+``shown`` rows are visible at a time: a window that follows the cursor.  The
+geometry is the dialect's (``Dialect.display``):
+
+* casio: 32 columns x 8 rows, 2 of them shown - the FX-850P/880P's 32-column,
+  2-line LCD over its 32 x 8 virtual screen (owner's manual, part 6 "Virtual
+  screen function"; LOCATE's page: 0 <= x <= 31, 0 <= y <= 7 in its picture);
+* gw: 80 x 25 with all 25 rows shown (GW-BASIC's text screen), for the text-screen
+  statements LOCATE, CLS, CSRLIN, POS and SCREEN(row, col).
+
+Writing text puts each character at the cursor and moves it right; past the last
+column the cursor goes to the start of the next row, and below the last row the
+whole virtual screen scrolls up one row, the new bottom row blank (PRINT's page:
+"A line feed results when the cursor reaches the last column on the last line of
+the screen ..., scrolling the entire screen upwards").  Control codes (below 32)
+do what the dialect's ``controls`` table says (:data:`CASIO_CONTROLS`: the
+character code table's parenthesised codes); a code with no action there is not
+shown.  The window moves only as far as needed to keep the cursor's row visible.
+
+A display is *drawn* once a program placed text itself (LOCATE, CLS, a cursor
+control code): from then on a transcript shows its screens (:meth:`shown_lines`)
+instead of the streamed text.  Columns and rows are 0-based.
+"""
+
+from __future__ import annotations
+
+# What each control code does on the Casio (owner's manual, part 12 character code table,
+# the codes in parentheses; the arrows are the cursor keys' codes &H1C-&H1F).
+CASIO_CONTROLS = {
+    2: "line_top", 5: "line_cancel", 6: "line_end", 8: "backspace", 10: "line_feed",
+    11: "home", 12: "clear", 13: "carriage_return", 28: "right", 29: "left", 30: "up", 31: "down",
+}
+# Codes that place text where the program chooses: once one is written the display is "drawn".
+DRAWING_ACTIONS = frozenset(("line_top", "line_cancel", "line_end", "backspace", "home", "clear",
+                             "right", "left", "up", "down"))
+
+
+class Display:
+    """``columns`` x ``rows`` character cells, ``shown`` rows visible (see module docstring)."""
+
+    __slots__ = ("columns", "rows", "shown", "controls", "cells", "x", "y", "top", "drawn")
+
+    def __init__(self, columns: int, rows: int, shown: int | None = None, controls: dict | None = None):
+        self.columns = columns
+        self.rows = rows
+        self.shown = rows if shown is None else shown
+        self.controls = controls if controls is not None else {}
+        self.cells = [[" "] * columns for _ in range(rows)]
+        self.x = 0
+        self.y = 0
+        self.top = 0  # the first row shown
+        self.drawn = False
+
+    # ------------------------------------------------------------ the cursor
+    def locate(self, x: int, y: int) -> None:
+        """Put the cursor at column ``x`` of row ``y`` (the caller checked the ranges)."""
+        self.x, self.y = x, y
+        self.drawn = True
+        self._follow()
+
+    def clear(self) -> None:
+        """Blank every cell; the cursor and the window go home (CLS, ``CHR$(12)``)."""
+        for row in self.cells:
+            row[:] = [" "] * self.columns
+        self.x = self.y = self.top = 0
+        self.drawn = True
+
+    def new_line(self) -> None:
+        """The cursor to the start of the next row, scrolling at the bottom."""
+        self.x = 0
+        self._down()
+
+    # ------------------------------------------------------------ text
+    def write(self, text: str) -> None:
+        """Show ``text`` from the cursor on: characters, line ends and control codes."""
+        cells, columns, controls = self.cells, self.columns, self.controls
+        for ch in text:
+            code = ord(ch)
+            if code < 32 or ch == "\n":
+                action = "carriage_return" if ch == "\n" else controls.get(code)
+                if action is not None:
+                    getattr(self, "_" + action)()
+                    if action in DRAWING_ACTIONS:
+                        self.drawn = True
+                continue
+            cells[self.y][self.x] = ch
+            self.x += 1
+            if self.x >= columns:
+                self.new_line()
+        self._follow()
+
+    def _carriage_return(self) -> None:
+        self.new_line()
+
+    def _line_feed(self) -> None:
+        self._down()
+
+    def _home(self) -> None:
+        self.x = self.y = 0
+
+    def _clear(self) -> None:
+        self.clear()
+
+    def _line_cancel(self) -> None:
+        """Blank the row from the cursor to its end (the cursor stays)."""
+        row = self.cells[self.y]
+        row[self.x:] = [" "] * (self.columns - self.x)
+
+    def _line_top(self) -> None:
+        self.x = 0
+
+    def _line_end(self) -> None:
+        row = self.cells[self.y]
+        end = len("".join(row).rstrip(" "))
+        self.x = min(end, self.columns - 1)
+
+    def _backspace(self) -> None:
+        if self.x > 0:
+            self.x -= 1
+            self.cells[self.y][self.x] = " "
+
+    def _right(self) -> None:
+        if self.x < self.columns - 1:
+            self.x += 1
+
+    def _left(self) -> None:
+        if self.x > 0:
+            self.x -= 1
+
+    def _up(self) -> None:
+        if self.y > 0:
+            self.y -= 1
+
+    def _down(self) -> None:
+        if self.y < self.rows - 1:
+            self.y += 1
+        else:
+            self.scroll()
+
+    def scroll(self) -> None:
+        """Move every row up one; the bottom row becomes blank."""
+        del self.cells[0]
+        self.cells.append([" "] * self.columns)
+
+    def _follow(self) -> None:
+        """Move the window just far enough to show the cursor's row."""
+        if self.y < self.top:
+            self.top = self.y
+        elif self.y >= self.top + self.shown:
+            self.top = self.y - self.shown + 1
+
+    # ------------------------------------------------------------ reading it
+    def char_at(self, x: int, y: int) -> str:
+        """The character in column ``x`` of row ``y``."""
+        return self.cells[y][x]
+
+    def lines(self) -> list[str]:
+        """Every row of the virtual screen, trailing blanks dropped."""
+        return ["".join(row).rstrip(" ") for row in self.cells]
+
+    def shown_lines(self) -> list[str]:
+        """The rows in the window (what the LCD shows), trailing blanks dropped."""
+        return self.lines()[self.top:self.top + self.shown]
+
+    def screen_text(self) -> str:
+        """The shown rows as text, one line each (a transcript's picture of the display)."""
+        return "".join(line + "\n" for line in self.shown_lines())
