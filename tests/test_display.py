@@ -1,8 +1,9 @@
-"""The shared display model (yaseer/basic/display.py): the Casio's 32 x 8 virtual screen with
+"""The shared display model (yaseer/basic/machine/display.py): the Casio's 32 x 8 virtual screen with
 its 2-line window, and an 80 x 25 text screen, as the owner's manual describes the LCD (part 6,
 LOCATE, CLS and PRINT pages).  Expected screens are written out by hand from those pages."""
 
-from yaseer.basic.display import CASIO_CONTROLS, Display
+from yaseer.basic.dialects.charset import CASIO_CONTROLS
+from yaseer.basic.machine.display import Display
 
 
 def casio():

@@ -39,12 +39,19 @@ def outcome(program: str, dialect: str) -> tuple[str, str]:
     return screen.getvalue(), ""
 
 
-@pytest.mark.parametrize("dialect", ["casio", "gw"])
-@pytest.mark.parametrize("program, word", [
+CASIO_MACHINE_WORDS = ("PEEK", "INKEY$", "LOCATE")  # the FX-850P's display, keyboard and memory
+
+
+UNIMPLEMENTED = [
     ("10 PRINT PEEK(10)", "PEEK"), ("10 PRINT INKEY$", "INKEY$"), ("10 PRINT VARPTR(7)", "VARPTR"),
     ("10 PRINT CSRLIN", "CSRLIN"), ("10 X = STICK(0)", "STICK"), ("10 LOCATE 1, 1", "LOCATE"),
     ("10 DIM KEY(3)", "KEY"),
-])
+]
+
+
+@pytest.mark.parametrize("program, word, dialect", [
+    (program, word, dialect) for program, word in UNIMPLEMENTED for dialect in ("casio", "gw")
+    if not (dialect == "casio" and word in CASIO_MACHINE_WORDS)])
 def test_unimplemented_word_stops_with_its_name(program, word, dialect):
     assert outcome(program, dialect) == ("", f"Unsupported word {word} in 10")
 
@@ -54,4 +61,4 @@ def test_gw_runs_the_statements_before_it():
 
 
 def test_names_that_only_contain_a_reserved_word_are_names():
-    assert outcome("10 XPEEK = 2: HEXA = 3: PRINT XPEEK + HEXA", "casio") == (" 5 \n", "")
+    assert outcome("10 XVARPTR = 2: HEXA = 3: PRINT XVARPTR + HEXA", "casio") == (" 5 \n", "")

@@ -80,7 +80,9 @@ class Result:
     None.  ``status``: ``"end"``, ``"stop"`` (STOP), or ``"error"`` (``Break``
     after Ctrl-C is an error line too).  ``frames``: the recorded positions of
     the mechanism, one :class:`yaseer.animation.Frame` per printed line after a
-    library call.  ``name``: the listing's file stem (None for program text).
+    library call.  ``screens``: for a program that drew on the display (LOCATE, CLS),
+    the display's shown rows (one text of a line each) every time it waited for a key
+    and when it ended, as the output shows them.  ``name``: the listing's file stem (None for program text).
 
     Compared and shown by its fields as a dataclass would be, but a plain class:
     importing dataclasses costs every start several milliseconds.
@@ -90,7 +92,8 @@ class Result:
 
     def __init__(self, listing: str, name: str | None = None, text: str = "", error: str | None = None,
                  status: str = "end", line: int | None = None, exception: Exception | None = None,
-                 frames: list | None = None, lines: list | None = None, _rows: object = None) -> None:
+                 frames: list | None = None, lines: list | None = None, _rows: object = None,
+                 screens: list | None = None) -> None:
         self.listing = listing
         self.name = name
         self.text = text
@@ -101,6 +104,7 @@ class Result:
         self.frames = frames if frames is not None else []
         self.lines = lines if lines is not None else []  # values printed per line (yaseer.table)
         self._rows = _rows
+        self.screens = screens if screens is not None else []  # the LCD's screens shown (console.py)
 
     def __repr__(self) -> str:
         return f"Result({', '.join(f'{name}={getattr(self, name)!r}' for name in self._SHOWN)})"
@@ -219,7 +223,9 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
     result = Result(listing="")
     opened: list[IO[str]] = []
     try:
-        result.listing, result.name = _source(listing)
+        from yaseer.basic.dialects.dialect import get_dialect
+
+        result.listing, result.name = _source(listing, get_dialect(dialect or "casio").charset)
         areas = {int(n): _source(text)[0] for n, text in (prog or {}).items()}
         input_stream = _input_stream(input, opened)
     except BasicError as error:
@@ -277,6 +283,7 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
             if stream is not None:
                 stream.close_line()
     result.text = out.text
+    result.screens = machine.screens
     if recorder is not None:
         result.frames = recorder.finish()
 
@@ -288,8 +295,9 @@ def _failed(result: Result, error, raise_errors: bool) -> Result:
     return result
 
 
-def _source(listing: Listing) -> tuple[str, str | None]:
-    """(program text, file stem or None): a path-like, or a one-line str that is no BASIC line, is a file."""
+def _source(listing: Listing, charset=None) -> tuple[str, str | None]:
+    """(program text, file stem or None): a path-like, or a one-line str that is no BASIC line, is a file
+    (read as UTF-8 or, with a ``charset`` (yaseer/basic/dialects/charset.py), in the machine's codes when it is not)."""
     from yaseer.basic.errors import DEVICE_IO_ERROR, FILE_NOT_FOUND, BasicError
 
     if isinstance(listing, str) and not os.path.isfile(listing) \
@@ -298,6 +306,10 @@ def _source(listing: Listing) -> tuple[str, str | None]:
     if not isinstance(listing, (str, os.PathLike)):
         raise TypeError(f"a listing is a path or the program text, not {type(listing).__name__}")
     try:
+        if charset is not None:
+            with open(listing, "rb") as binary:
+                text = charset.program_text(binary.read())
+            return text.replace("\r\n", "\n").replace("\r", "\n"), _stem(listing)  # as text mode reads lines
         with open(listing, encoding="utf-8", errors="replace") as file:
             return file.read(), _stem(listing)
     except FileNotFoundError:

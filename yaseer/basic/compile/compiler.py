@@ -81,6 +81,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
                  dynamic_loops=(), dialect=CASIO, def_types=None):
         self.area = area
         self.numbers = number_model(dialect, def_types)
+        self.program_areas = dialect.program_areas  # GOSUB PROG n, #n, "file:label"
         self.direct = direct
         self.trace = trace and not direct
         self.dynamic_loops = set(dynamic_loops)
@@ -241,6 +242,28 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit(f"_call({stmt.area}, _ln)")
         self.emit("#RELOAD#")
 
+    def stmt_GosubArea(self, stmt, scope):
+        self._call_program(f"_call({stmt.area}, _ln)")
+
+    def stmt_GotoArea(self, stmt, scope):
+        self._call_program(f"_call({stmt.area}, _ln)")
+        self.emit("raise _END")
+
+    def stmt_GosubFile(self, stmt, scope):
+        self._call_program(f"_call_file({self.string(stmt.name, scope)}, _ln)")
+
+    def stmt_GotoFile(self, stmt, scope):
+        self._call_program(f"_call_file({self.string(stmt.name, scope)}, _ln)")
+        self.emit("raise _END")
+
+    def _call_program(self, call: str) -> None:
+        """Run another program (area or file) where the dialect has them; else Syntax error."""
+        if not self.program_areas:
+            raise syntax_error()
+        self.emit("#FLUSH#")
+        self.emit(call)
+        self.emit("#RELOAD#")
+
     def stmt_Return(self, stmt, scope):
         # the common case inline: a GOSUB's return block on top of the stack
         self.emit("if _stk and type(_stk[-1]) is int: return _stk.pop()")
@@ -290,6 +313,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
 
     def stmt_Cls(self, stmt, scope):
         self.emit("_M.clear_screen()")
+
+    def stmt_Locate(self, stmt, scope):
+        self.emit(f"_locate({self.numeric(stmt.x, scope)}, {self.numeric(stmt.y, scope)})")
 
     def stmt_Width(self, stmt, scope):
         if stmt.device is not None:

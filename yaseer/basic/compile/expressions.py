@@ -41,12 +41,13 @@ _FUNCTIONS = {
     "FRE": (("x",), "n", "_fre"), "POS": (("x",), "n", "_pos"), "LPOS": (("n",), "n", "_lpos"),
     "EOF": (("n",), "n", "_eof"), "LOF": (("n",), "n", "_lof"), "LOC": (("n",), "n", "_loc"),
     "INPUT$": (("n", "nn"), "s", "_input_chars"),
+    "PEEK": (("n",), "n", "_peek"),
 }
 
 # Values without arguments: name -> (Python expression, "s" or None for the integer type).
 _SYSTEM_VARIABLES = {
     "ERR": ("_M.err", None), "ERL": ("_M.erl", None), "TIMER": ("_timer()", "n"),
-    "DATE$": ("_date()", "s"), "TIME$": ("_time()", "s"),
+    "DATE$": ("_date()", "s"), "TIME$": ("_time()", "s"), "INKEY$": ("_inkey()", "s"),
 }
 
 

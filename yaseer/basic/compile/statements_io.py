@@ -126,7 +126,10 @@ class InputOutputCompiler:
         values = self.new_temp()
         self.emit(f"{values} = _input({stmt.prompt!r}, {stmt.question_mark}, {kinds!r}, {self.asking_again()})")
         for n, target in enumerate(stmt.targets):
-            self.assign(target, f"{values}[{n}]", "s" if kinds[n] == "s" else self.numbers.widest,
+            value = f"{values}[{n}]"
+            if kinds[n] == "n" and not self.numbers.typed:  # None: an empty answer keeps the value
+                value = f"({value} if {value} is not None else {self.expr(target, scope)[0]})"
+            self.assign(target, value, "s" if kinds[n] == "s" else self.numbers.widest,
                         scope, self.numbers.typed and kinds[n] != "s")
 
     def stmt_LineInput(self, stmt, scope):

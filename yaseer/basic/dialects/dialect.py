@@ -26,6 +26,7 @@ from collections import namedtuple
 
 from yaseer.basic.arithmetic.values import DOUBLE_LARGEST
 from yaseer.basic.arithmetic.randomness import GwRandom, RepeatableRandom
+from yaseer.basic.dialects.charset import CASIO as CASIO_CHARACTERS, CASIO_CONTROLS, LATIN1
 
 # The paper's universal line 2: these arrays exist with these sizes from the start
 # (one dimension, subscripts 0..size).
@@ -59,8 +60,13 @@ FIELDS = (
     "arithmetic",  # str: binary
     "largest_number",  # float | None: None
     "printer_width",  # int | None: None
+    "display",  # tuple[int, int, int] | None: None
+    "controls",  # tuple[tuple[int, str], ...]: ()
+    "charset",  # CharacterSet: LATIN1
+    "enter_key",  # str: "\n"
+    "empty_input_keeps",  # bool: False
 )
-DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None)
+DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -136,6 +142,19 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         (``DOUBLE_LARGEST``, printed 1.701411834604692D+38); a double result, or
         a number read by VAL, INPUT or READ, beyond it follows ``on_overflow``.
 
+    Display and keyboard
+        ``display``: ``(columns, rows, shown)`` of the machine's screen model
+        (yaseer/basic/display.py): casio's 32 x 8 virtual screen with its 2-line
+        LCD; None: no screen model (PRINT is a stream of text, as gw today).
+        ``controls``: ``(code, action)`` pairs, what each control code does on
+        that display.  ``charset``: the machine's character codes
+        (yaseer/basic/charset.py): what CHR$ and ASC answer, how program and data
+        files' bytes read.  ``enter_key``: the character INPUT$ and INKEY$ read for
+        a line break of the key stream (casio: EXE, ``CHR$(13)``).
+        ``empty_input_keeps``: True (casio, the INPUT page: "a numeric variable
+        retains its current value") makes an empty answer to INPUT keep the
+        numeric variables' values; False reads it as 0 (GW-BASIC).
+
     Start-up environment
         ``angle``: ``"DEG"`` or ``"RAD"``, the unit of SIN COS TAN ATN at RUN.
         ``implicit_arrays``: ``(name, size)`` pairs of one-dimensional arrays
@@ -174,11 +193,14 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
 
 
 CASIO = Dialect(
-    name="casio", keyword_first=True, pi_keyword=True, own_words=("DEG", "RAD", "XOR", "EQV", "IMP"),
+    name="casio", keyword_first=True, pi_keyword=True,
+    own_words=("DEG", "RAD", "XOR", "EQV", "IMP", "LOCATE", "INKEY$", "PEEK"),
     typed_numbers=False,
     print_digits=10,
     width=None, zone=14, on_division_by_zero="stop", on_overflow="stop", angle="DEG",
     implicit_arrays=AL_YASEER_DIMENSIONS, default_dimension=10, program_areas=True,
+    display=(32, 8, 2), controls=tuple(sorted(CASIO_CONTROLS.items())), charset=CASIO_CHARACTERS, enter_key="\r",
+    empty_input_keeps=True,
 )
 
 GW = Dialect(

@@ -15,6 +15,7 @@ from yaseer.basic.machine import gwfunctions, runtime
 from yaseer.basic.errors import (
     BasicError, BAD_FILE_NAME, FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END,
 )
+from yaseer.basic.machine.console import end_of_keys
 from yaseer.basic.machine.signals import BreakPoint
 from yaseer.basic.machine.screen import DEVICE_WIDTHS, SCREEN_WIDTHS, OutputStream
 
@@ -49,6 +50,8 @@ class InputOutput:
         """CLS: clear the screen if the screen can be cleared; the next PRINT starts at column 1."""
         if self.on_clear_screen is not None:
             self.on_clear_screen()
+        if self.display is not None:
+            self.display.clear()
         self.screen.column = 0
 
     def set_width(self, columns, printer: bool = False) -> None:
@@ -197,6 +200,8 @@ class InputOutput:
         """
         while True:
             line = self._read_line((prompt or "") + ("? " if question_mark or prompt is None else ""), again)
+            if not line and len(kinds) == 1 and self.dialect.empty_input_keeps:
+                return [None if kind == "n" else "" for kind in kinds]
             values = _parse_input(line, kinds, self.dialect.largest_number)
             if values is not None:
                 return values
@@ -223,6 +228,7 @@ class InputOutput:
             if self._break_armed is not None and again is not None:
                 raise KeyboardInterrupt  # a Ctrl-C came just before: the break lands here
             self.screen.write(prompt)
+            self.show_screen()
             self.screen.flush()
             line = stream.readline()
         except KeyboardInterrupt:
@@ -232,7 +238,8 @@ class InputOutput:
         finally:
             self._reading_input = False
         if not line:
-            raise BasicError("Input past end", INPUT_PAST_END)
+            raise end_of_keys()
+        self.last_input_key = 13  # EXE (PEEK: console.LAST_INPUT_KEY)
         if self.input_stream is not None:
             self.screen.write(line if line.endswith("\n") else line + "\n")
         else:
@@ -282,11 +289,7 @@ class InputOutput:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         if n is not None:
             return self.files.get(n).read_chars(k)
-        stream = self.input_stream if self.input_stream is not None else sys.stdin
-        text = stream.read(k)
-        if len(text) < k:
-            raise BasicError("Input past end", INPUT_PAST_END)
-        return text
+        return self.input_keys(k)
 
     def list_files(self, pattern) -> None:
         """FILES [pattern]: GW-BASIC's listing: the directory (``C:\\``, the sandbox as

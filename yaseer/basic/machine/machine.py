@@ -56,6 +56,7 @@ from yaseer.basic.machine.files import FileTable, Sandbox
 from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
     BasicError, OutputError, BREAK, INPUT_PAST_END, OUT_OF_DATA, OUT_OF_MEMORY, SYNTAX_ERROR, UNDEFINED_PROGRAM_AREA,
 )
+from yaseer.basic.machine.console import Console
 from yaseer.basic.machine.breaks import Breaks, _interrupt_handler
 from yaseer.basic.machine.signals import (  # noqa: F401  (the run-time exceptions are re-exported)
     END, INTERNAL_ERROR, BreakPoint, DirectJump, ErrorTrapping, ProgramEnd, ProgramStop, to_basic_error,
@@ -140,7 +141,10 @@ class _AreaRuntime:
         self.data_index = min(later) if later else len(self.compiled.data)
 
 
-class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput):
+FIRST_FILE_AREA = 1000  # the program areas of program files (GOSUB "file:label") are numbered from here
+
+
+class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Console):
     """A pocket-computer BASIC machine (see the module docstring)."""
 
     def __init__(self, screen: TextIO | None = None, printer: TextIO | None = None,
@@ -154,7 +158,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput):
         # how PRINT shows a number: typed (GW: integers, 7-digit singles, 16-digit D doubles) or not
         self._printed_number, self._number_text = (
             (_same, values.number_to_text) if self.dialect.typed_numbers else (_as_number, formatting.number_to_text))
-        self.screen = OutputStream(screen if screen is not None else sys.stdout, self.dialect.width)
+        self.screen = self._init_console(screen if screen is not None else sys.stdout)
         self.printer = OutputStream(printer if printer is not None else self.screen.stream,
                                     self.dialect.printer_width, moves_items=False)
         if printer is None:
@@ -165,6 +169,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput):
         self.input_stream = input_stream
         self.programs: dict[int, dict[int, str]] = {}
         self.python_areas: dict[int, Callable] = {}
+        self.file_areas: dict[str, int] = {}  # "file:label" -> the area its program was loaded in
         self.compiled: dict[int, CompiledArea] = {}
         self.runtimes: dict[int, _AreaRuntime] = {}
         self.namespaces: dict[int, dict] = {}
@@ -337,7 +342,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput):
             "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_END": END, "_DirectJump": DirectJump,
             "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
             "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,
-            "_oom": self._out_of_memory, "_call": self.call_area,
+            "_oom": self._out_of_memory, "_call": self.call_area, "_call_file": self.call_file,
             "_on": self.on_index, "_for": self.for_push, "_next": self.next_frame,
             "_pop": self.stack.pop, "_next_any": self.next_any, "_stop": self._stopper(area),
             "_dim": self.dim, "_clear": self.clear, "_read_n": rt.read_number,
@@ -357,6 +362,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput):
             "_csng": float, "_cdbl": float,
         }
         ns.update(self._gw_functions())
+        ns.update(self.character_functions())
         if self.dialect.typed_numbers:
             ns.update(values.RUNTIME)
             ns.update(arith_policy.helpers(self.arith, ns["_idiv"], ns["_mod"], ns["_pow"]))
@@ -393,7 +399,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput):
             "_eof": lambda n: -1.0 if self.files.get(n).at_end() else 0.0,
             "_lof": lambda n: float(self.files.get(n).length()),
             "_loc": lambda n: float(self.files.get(n).records()),
-            "_input_chars": self.input_chars,
+            "_input_chars": self.input_chars, "_inkey": self.inkey, "_input_keys": self.input_keys,
+            "_peek": self.peek, "_poke": self.poke, "_defseg": self.set_segment, "_locate": self.locate,
         }
 
     def _trig_functions(self) -> dict:
@@ -450,6 +457,20 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput):
         for hook in self.area_hooks:
             self.line = line
             hook(self, n)
+
+    def call_file(self, name: str, line=None) -> None:
+        """GOSUB "file:label" (and GOTO, which ends when it comes back): run the program
+        file ``name`` names (program_files.py) as a program area of its own, sharing the
+        variables, until its RETURN."""
+        area = self.file_areas.get(name)
+        if area is None:
+            from yaseer.basic.machine import program_files  # here: only programs that call files load it
+
+            text = program_files.read_program(name, self.files.sandbox, self.dialect.charset)
+            area = FIRST_FILE_AREA + len(self.file_areas)
+            self.load(text, area)
+            self.file_areas[name] = area
+        self.call_area(area, line)
 
     def _call_basic_area(self, n: int) -> None:
         """Run BASIC program area ``n`` until its RETURN (its own line numbers, shared variables)."""
@@ -559,6 +580,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput):
                 self.files.close()
             if self.csv:  # a last line left open (PRINT A;) is still a row
                 self.end_line()
+            self.show_screen(final=True)
             self.flush()
         return "end"
 

@@ -151,6 +151,22 @@ class _ToAst:
     def gosub_prog(self, c):
         return ast.GosubProg(_line_number(c[2]))
 
+    def goto_area(self, c):  # GOTO #n: the FX-850P's program areas
+        return ast.GotoArea(_line_number(c[2]))
+
+    def gosub_area(self, c):  # GOSUB #n
+        return ast.GosubArea(_line_number(c[2]))
+
+    def goto_file(self, c):  # GOTO "file:label" / GOTO r$
+        return ast.GotoFile(self.atom_of(c[1]))
+
+    def gosub_file(self, c):
+        return ast.GosubFile(self.atom_of(c[1]))
+
+    @staticmethod
+    def atom_of(token):
+        return ast.Str(token.value) if token.type == "STRING" else ast.Var(token.value)
+
     def return_stmt(self, c):
         return ast.Return()
 
@@ -311,6 +327,12 @@ class _ToAst:
     def cls_stmt(self, c):
         return ast.Cls()
 
+    def locate_stmt(self, c):
+        return ast.Locate(c[1], c[3])
+
+    def input_at(self, c):  # INPUT @n; v: the library's form; no "?" of its own
+        return ast.Input("", False, _values(c[4:]), at=_number_value(c[2]))
+
     def width_stmt(self, c):
         return ast.Width(c[-1], len(c) == 3)  # WIDTH LPRINT n: the printer's
 
@@ -342,6 +364,9 @@ class _ToAst:
             return ast.Call(name, (c[1], c[4]))
         arg = c[1]
         return ast.Call(name, tuple(arg) if isinstance(arg, list) else (arg,))
+
+    def call_keys(self, c):  # INPUT$(n, @): n keys
+        return ast.Call(c[0].value, (c[1],))
 
     def fn_call(self, c):
         args = tuple(c[2]) if len(c) > 2 else ()
@@ -469,7 +494,8 @@ def _grammar_error(exc: GrammarError, dialect: Dialect) -> BasicError:
     kind = exc.token.type
     if kind == UNSUPPORTED:
         return BasicError(unsupported_message(exc.token.value), SYNTAX_ERROR)
-    if dialect.errors_when_reached and kind in _STATEMENT_ENDS and exc.expected & _OPERAND_STARTS:
+    jump_target = "HASH" in exc.expected and "NAME" not in exc.expected  # GOTO / GOSUB without a line: no operand
+    if dialect.errors_when_reached and kind in _STATEMENT_ENDS and exc.expected & _OPERAND_STARTS and not jump_target:
         return BasicError("Missing operand", MISSING_OPERAND)
     return BasicError("Syntax error", SYNTAX_ERROR)
 

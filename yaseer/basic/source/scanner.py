@@ -57,6 +57,7 @@ DATA_KEYWORD = "DATA"
 DIALECT_WORDS = {
     "PROG": "PROG", "DEG": "DEG", "RAD": "RAD", "PI": "SYSVAR", "XOR": "XOR", "EQV": "EQV",
     "IMP": "IMP", "DEFINT": "DEFTYPE", "DEFSNG": "DEFTYPE", "DEFDBL": "DEFTYPE", "DEFSTR": "DEFTYPE",
+    "LOCATE": "LOCATE", "INKEY$": "SYSVAR", "PEEK": "FUNC",
 }
 # GW-BASIC reads these keywords even when name characters follow (``FNA``, ``TAB(``).
 _GW_PREFIX_KEYWORDS = ("FN",)
@@ -123,6 +124,7 @@ def _keywords(dialect: Dialect) -> _Keywords:
 _OPERATORS = {
     "+": "PLUS", "-": "MINUS", "*": "STAR", "/": "SLASH", "\\": "BSLASH", "^": "CARET",
     "(": "_LPAR", ")": "_RPAR", ",": "COMMA", ";": "SEMI", ":": "_COLON", "#": "HASH",
+    "@": "AT",
 }
 _RELATIONS = {
     "=": "EQ", "<": "LT", ">": "GT", "<=": "LE", "=<": "LE", ">=": "GE", "=>": "GE",

@@ -207,6 +207,30 @@ class GosubProg:
 
 
 @_node
+class GotoArea:
+    """GOTO #n: run program area n; the program ends when it does."""
+    area: int
+
+
+@_node
+class GosubArea:
+    """GOSUB #n: run program area n and come back (as GOSUB PROG n)."""
+    area: int
+
+
+@_node
+class GotoFile:
+    """GOTO "file:label" (a string expression): run that program; the program ends when it does."""
+    name: object
+
+
+@_node
+class GosubFile:
+    """GOSUB "file:label": run that program until its RETURN and come back."""
+    name: object
+
+
+@_node
 class Return:
     pass
 
@@ -352,6 +376,7 @@ class Input:
     question_mark: bool
     targets: list
     channel: object = None  # INPUT #n
+    at: int | None = None  # INPUT @n; (the FX-850P library's form)
 
 
 @_node
@@ -391,6 +416,13 @@ class Trace:
 @_node
 class Cls:
     pass
+
+
+@_node
+class Locate:
+    """LOCATE x, y: the cursor to column x of row y of the display."""
+    x: object
+    y: object
 
 
 @_node

@@ -15,8 +15,8 @@ column the cursor goes to the start of the next row, and below the last row the
 whole virtual screen scrolls up one row, the new bottom row blank (PRINT's page:
 "A line feed results when the cursor reaches the last column on the last line of
 the screen ..., scrolling the entire screen upwards").  Control codes (below 32)
-do what the dialect's ``controls`` table says (:data:`CASIO_CONTROLS`: the
-character code table's parenthesised codes); a code with no action there is not
+do what the dialect's ``controls`` table says (casio: ``dialects.charset.CASIO_CONTROLS``,
+the character code table's parenthesised codes); a code with no action there is not
 shown.  The window moves only as far as needed to keep the cursor's row visible.
 
 A display is *drawn* once a program placed text itself (LOCATE, CLS, a cursor
@@ -26,12 +26,6 @@ instead of the streamed text.  Columns and rows are 0-based.
 
 from __future__ import annotations
 
-# What each control code does on the Casio (owner's manual, part 12 character code table,
-# the codes in parentheses; the arrows are the cursor keys' codes &H1C-&H1F).
-CASIO_CONTROLS = {
-    2: "line_top", 5: "line_cancel", 6: "line_end", 8: "backspace", 10: "line_feed",
-    11: "home", 12: "clear", 13: "carriage_return", 28: "right", 29: "left", 30: "up", 31: "down",
-}
 # Codes that place text where the program chooses: once one is written the display is "drawn".
 DRAWING_ACTIONS = frozenset(("line_top", "line_cancel", "line_end", "backspace", "home", "clear",
                              "right", "left", "up", "down"))
@@ -40,7 +34,7 @@ DRAWING_ACTIONS = frozenset(("line_top", "line_cancel", "line_end", "backspace",
 class Display:
     """``columns`` x ``rows`` character cells, ``shown`` rows visible (see module docstring)."""
 
-    __slots__ = ("columns", "rows", "shown", "controls", "cells", "x", "y", "top", "drawn")
+    __slots__ = ("columns", "rows", "shown", "controls", "cells", "x", "y", "top", "drawn", "changed")
 
     def __init__(self, columns: int, rows: int, shown: int | None = None, controls: dict | None = None):
         self.columns = columns
@@ -52,12 +46,13 @@ class Display:
         self.y = 0
         self.top = 0  # the first row shown
         self.drawn = False
+        self.changed = False  # anything written, located or cleared since the last screen shown
 
     # ------------------------------------------------------------ the cursor
     def locate(self, x: int, y: int) -> None:
         """Put the cursor at column ``x`` of row ``y`` (the caller checked the ranges)."""
         self.x, self.y = x, y
-        self.drawn = True
+        self.drawn = self.changed = True
         self._follow()
 
     def clear(self) -> None:
@@ -65,7 +60,7 @@ class Display:
         for row in self.cells:
             row[:] = [" "] * self.columns
         self.x = self.y = self.top = 0
-        self.drawn = True
+        self.drawn = self.changed = True
 
     def new_line(self) -> None:
         """The cursor to the start of the next row, scrolling at the bottom."""
@@ -76,6 +71,7 @@ class Display:
     def write(self, text: str) -> None:
         """Show ``text`` from the cursor on: characters, line ends and control codes."""
         cells, columns, controls = self.cells, self.columns, self.controls
+        self.changed = True
         for ch in text:
             code = ord(ch)
             if code < 32 or ch == "\n":

@@ -1,0 +1,134 @@
+"""Manfred Becker's program library for the Casio FX-850P/880P, run on yaseer's casio dialect.
+
+The library (142 programs; github urbancamo/casio-basic, folder
+src/main/basic/MB-Casio-Basic-Library/sources) is not part of this repository: point
+``YASEER_CASIO_LIBRARY`` at a local copy of that ``sources`` folder.  Without it this
+script prints one line and exits 0.
+
+    YASEER_CASIO_LIBRARY=/path/to/sources python tests/casio_library.py [-v] [PROGRAM ...]
+
+For every program it counts (1) whether every line parses (no ``Syntax error`` and no
+``Unsupported word``: the program *loads*), and (2) whether it runs with its key script
+(tests/casio_library/keys.txt, our own inputs) to its first result: ``yaseer run
+--input KEYS --files LIBRARY PROGRAM`` shows a screen that matches the script's result
+pattern, and stops with no error line other than ``Input past end`` (the key script is
+over: the program was waiting for the next key, as it does on the machine).
+Each run is a process of its own with a time limit (:data:`SECONDS`).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+KEYS = HERE / "casio_library" / "keys.txt"
+ENVIRONMENT = "YASEER_CASIO_LIBRARY"
+SECONDS = 20
+NOT_PROGRAMS = {"LIB_INFO.BAS"}  # the library's table of contents, not a program
+DEFAULT_RESULT = r"=\s*-?\d|=\s*-?\.\d"  # a number after "=": the way its programs show a result
+END_OF_KEYS = "Input past end"
+
+
+def library() -> Path | None:
+    """The library's ``sources`` folder (``YASEER_CASIO_LIBRARY``), or None."""
+    where = os.environ.get(ENVIRONMENT)
+    return Path(where) if where and Path(where).is_dir() else None
+
+
+def programs(folder: Path) -> list[Path]:
+    return sorted(p for p in folder.iterdir() if p.suffix.lower() == ".bas" and p.name.upper() not in NOT_PROGRAMS)
+
+
+def key_scripts(path: Path = KEYS) -> dict[str, tuple[str, str]]:
+    """PROGRAM -> (keys, result pattern) from the key-script file.
+
+    One program a line: ``NAME | keys | pattern``; in keys ``\\n`` is EXE (a line
+    break) and other backslash escapes are Python's; an empty pattern is the default
+    (a number after ``=``).  ``#`` starts a comment line."""
+    scripts = {}
+    for raw in path.read_text(encoding="utf-8").splitlines():
+        if not raw.strip() or raw.lstrip().startswith("#"):
+            continue
+        name, keys, pattern = (part.strip() for part in raw.split("|", 2))
+        scripts[name.upper()] = (keys.encode("latin-1", "backslashreplace").decode("unicode_escape"),
+                                 pattern or DEFAULT_RESULT)
+    return scripts
+
+
+def syntax_errors(program: Path) -> list[str]:
+    """The lines of ``program`` that do not parse, as ``line: error``."""
+    from yaseer.basic.dialects.charset import CASIO as CHARACTERS
+    from yaseer.basic.dialects.dialect import CASIO
+    from yaseer.basic.source.parser import parse_line
+    from yaseer.basic.source.scanner import split_lines
+
+    text = CHARACTERS.program_text(program.read_bytes()).replace("\r\n", "\n")
+    errors = []
+    for number, statement, _ in split_lines(text):
+        line = parse_line(number, statement, CASIO)
+        if line.error is not None:
+            errors.append(f"{number}: {line.error}")
+    return errors
+
+
+def run(program: Path, keys: str, folder: Path, extra: tuple = ()) -> tuple[str, str, int]:
+    """(standard output, standard error, status) of ``yaseer run`` with ``keys``."""
+    with tempfile.TemporaryDirectory() as scratch:
+        key_file = Path(scratch) / "keys.txt"
+        key_file.write_text(keys, encoding="utf-8")
+        try:
+            done = subprocess.run([sys.executable, "-m", "yaseer", "run", "--input", str(key_file),
+                                   "--files", str(folder), *extra, str(program)],
+                                  capture_output=True, text=True, timeout=SECONDS, cwd=str(HERE.parent))
+        except subprocess.TimeoutExpired as late:
+            out = late.stdout.decode() if isinstance(late.stdout, bytes) else (late.stdout or "")
+            return out, f"timed out after {SECONDS} s", -1
+    return done.stdout, done.stderr, done.returncode
+
+
+def verdict(stdout: str, stderr: str, status: int, pattern: str) -> str | None:
+    """None when the run reached its result without an error line; else what went wrong."""
+    lines = [line for line in stderr.splitlines() if line.strip()]
+    errors = [line for line in lines if not line.startswith(END_OF_KEYS)]
+    if status < 0:
+        return stderr
+    if errors:
+        return errors[0]
+    if not re.search(pattern, stdout):
+        return f"no result matching {pattern!r} on the screen"
+    return None
+
+
+def main(argv: list[str]) -> int:
+    folder = library()
+    if folder is None:
+        print(f"casio library: skipped ({ENVIRONMENT} is not set to the library's sources folder)")
+        return 0
+    verbose = "-v" in argv
+    wanted = {a.upper().removesuffix(".BAS") for a in argv if not a.startswith("-")}
+    scripts = key_scripts()
+    chosen = [p for p in programs(folder) if not wanted or p.stem.upper() in wanted]
+    loaded = ran = 0
+    for program in chosen:
+        errors = syntax_errors(program)
+        if not errors:
+            loaded += 1
+        keys, pattern = scripts.get(program.stem.upper(), ("\n", DEFAULT_RESULT))
+        problem = verdict(*run(program, keys, folder), pattern)
+        if problem is None and not errors:  # a bad line an ON ERROR handler hid is no run
+            ran += 1
+        if verbose and (errors or problem):
+            print(f"{program.name}: {'load: ' + errors[0] + ' ' if errors else ''}"
+                  f"{'run: ' + problem if problem else ''}")
+    print(f"casio library: {len(chosen)} programs, {loaded} load without a syntax error, "
+          f"{ran} run to their first result without an error line")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

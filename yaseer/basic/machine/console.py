@@ -1,0 +1,192 @@
+"""The machine's display and keyboard: the screen model behind PRINT, LOCATE and CLS, the
+screens a transcript shows, the key stream INKEY$ and INPUT$ read, and the memory PEEK reads.
+
+The :class:`Console` mixin of :class:`yaseer.basic.machine.Machine`.  Where the dialect
+has a display (``Dialect.display``; casio's 32 x 8 virtual screen with its 2-line LCD),
+the screen stream is a :class:`DisplayStream`: text goes to the display model
+(yaseer/basic/machine/display.py) and, until the program first places text itself (LOCATE, CLS,
+a cursor control code), on to the output as before, so a program that only PRINTs
+prints exactly what it always did.  Once drawn, the output gets the display's shown rows
+(a *screen*) each time the program waits for a key and when it ends, and
+``Machine.screens`` keeps them (the API's ``Result.screens``).
+
+The key stream is the input (``--input FILE``, or the keyboard): INPUT reads a line,
+INKEY$ and INPUT$ take characters, a line break being the dialect's ``enter_key``
+(casio: EXE, ``CHR$(13)``).
+"""
+
+from __future__ import annotations
+
+import sys
+
+from yaseer.basic.machine import runtime
+from yaseer.basic.dialects.charset import LATIN1
+from yaseer.basic.machine.display import Display
+from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END
+from yaseer.basic.machine.screen import OutputStream
+
+# Memory the FX-850P's programs read (Becker's library): the code of the key that ended
+# the last INPUT (EXE: 13; its programs test PEEK(&H65B)-13), and a byte that is 0 while no
+# shift key is held (PEEK(206) after INPUT$).  Every other address holds what POKE left, 0 at first.
+LAST_INPUT_KEY = 0x65B
+EMPTY_POLLS = 1000  # INKEY$ answers "" this many times at the end of the key stream, then Input past end
+
+
+def end_of_keys() -> BasicError:
+    """The key stream is over: the run ends (no ON ERROR handler can catch it, since no key
+    will ever come: a program's handler that asks again would wait for ever)."""
+    err = BasicError("Input past end", INPUT_PAST_END)
+    err.trappable = False
+    return err
+
+
+class DisplayStream(OutputStream):
+    """The screen stream of a machine with a display: the model gets every character (see
+    the module docstring); the text is streamed on until the program has drawn."""
+
+    def __init__(self, stream, display: Display, width: int | None = None):
+        super().__init__(stream, width)
+        self.display = display
+
+    def write(self, text: str) -> None:
+        if not text:
+            return
+        display = self.display
+        display.write(text)
+        if display.drawn:  # drawn, before or by this text: screens from now on, not streamed text
+            self.column = display.x
+            return
+        super().write(text)
+
+    def new_row(self) -> None:
+        self.write("\n")
+
+
+class Console:
+    """The display, the screens shown, the key stream and PEEK/POKE memory (a mixin of Machine)."""
+
+    def _init_console(self, screen) -> OutputStream:
+        """The screen stream for output ``screen``; sets up the display, memory and keys."""
+        self.screens: list[str] = []  # the screens shown so far (see module docstring)
+        self.memory: dict[int, int] = {}
+        self.segment = 0  # DEFSEG
+        self.last_input_key = 13
+        self._empty_polls = 0
+        geometry = self.dialect.display
+        if geometry is None:
+            self.display = None
+            return OutputStream(screen, self.dialect.width)
+        columns, rows, shown = geometry
+        self.display = Display(columns, rows, shown, dict(self.dialect.controls))
+        return DisplayStream(screen, self.display, self.dialect.width)
+
+    # ------------------------------------------------------------ the display
+    def locate(self, x, y) -> None:
+        """LOCATE x, y: the cursor to column x of row y of the virtual screen (0-based;
+        beyond the screen is Illegal function call, the manual's FC error)."""
+        display = self.display
+        if display is None:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        column, row = runtime.cint(runtime.fix(x)), runtime.cint(runtime.fix(y))
+        if not (0 <= column < display.columns and 0 <= row < display.rows):
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        display.locate(column, row)
+        self.screen.column = column
+
+    def show_screen(self, final: bool = False) -> None:
+        """Show the display's screen on the output (a program that drew waits for a key, or
+        ends: ``final``, shown only when something changed since the last screen)."""
+        display = self.display
+        if display is None or not display.drawn or self.csv:
+            return
+        text = display.screen_text()
+        if final and self.screens and self.screens[-1] == text and not display.changed:
+            return
+        display.changed = False
+        self.screens.append(text)
+        stream = self.screen.stream
+        stream.write(text)
+        stream.flush()
+
+    # ------------------------------------------------------------ the keys
+    def _keys(self):
+        return self.input_stream if self.input_stream is not None else sys.stdin
+
+    def _key_text(self, text: str) -> str:
+        """Keys as read: a line break is the dialect's enter key (EXE)."""
+        enter = self.dialect.enter_key
+        return text if enter == "\n" else text.replace("\n", enter)
+
+    def inkey(self) -> str:
+        """INKEY$: the next key of the stream, or "" (a key script's end answers "" a while,
+        then is Input past end, so a program polling for a key does not spin forever)."""
+        self.show_screen()
+        key = self._keys().read(1)
+        if key:
+            self._empty_polls = 0
+            return self._key_text(key)
+        self._empty_polls += 1
+        if self._empty_polls > EMPTY_POLLS:
+            raise end_of_keys()
+        return ""
+
+    def input_keys(self, count) -> str:
+        """INPUT$(n) and INPUT$(n, @) from the keyboard: n keys (0..256), not shown."""
+        k = runtime.cint(count)
+        if not 0 <= k <= 256:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self.show_screen()
+        text = self._keys().read(k)
+        if len(text) < k:
+            raise end_of_keys()
+        return self._key_text(text)
+
+    # ------------------------------------------------------------ the character set
+    def character_functions(self) -> dict:
+        """CHR$ and ASC in the machine's codes (only where they are not Latin-1's)."""
+        charset = self.dialect.charset
+        if charset is LATIN1:
+            return {}
+
+        def chr_dollar(n):
+            k = runtime.cint(n)
+            if not 0 <= k <= 255:
+                raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+            return charset.char(k)
+
+        def asc(s):
+            if not s:
+                raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+            code = charset.code(s[0])
+            return float(code if code is not None else 63)
+
+        return {"_chr": chr_dollar, "_asc": asc}
+
+    # ------------------------------------------------------------ memory
+    def peek(self, address) -> float:
+        """PEEK(address): the byte at segment * 16 + address (a negative address counts from
+        65536, as the manual's PEEK page says)."""
+        where = self._address(address)
+        if where == LAST_INPUT_KEY:
+            return float(self.last_input_key)
+        return float(self.memory.get(where, 0))
+
+    def poke(self, address, value) -> None:
+        """POKE address, value: the byte (0..255) at segment * 16 + address."""
+        byte = runtime.cint(value)
+        if not 0 <= byte <= 255:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self.memory[self._address(address)] = byte
+
+    def set_segment(self, segment) -> None:
+        """DEFSEG = segment (-32768 < segment < 65536; negative counts from 65536)."""
+        value = int(runtime.fix(segment))
+        if not -32768 < value < 65536:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self.segment = value % 65536
+
+    def _address(self, address) -> int:
+        offset = int(runtime.fix(address))
+        if not -32769 < offset < 65536:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        return (self.segment * 16 + offset % 65536) % 0x100000
