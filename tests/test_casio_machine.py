@@ -1,0 +1,130 @@
+"""The FX-850P/880P as a machine (casio dialect): its LCD, keyboard, memory, program areas and
+program files, each checked against what the owner's manual describes (page named per test).
+The programs are our own, written in the manner of Becker's library (LOCATE0,1: CHR$(5),
+INPUT @n;, INPUT$(1,@)), so CI covers what the library needs without the library."""
+
+from __future__ import annotations
+
+import yaseer
+from yaseer.basic.charset import CASIO as CHARACTERS
+
+
+def screens(program: str, keys: str = "", **options) -> tuple[list[str], str | None]:
+    result = yaseer.run(program, input=keys, **options)
+    return result.screens, result.error
+
+
+def test_a_program_that_only_prints_streams_its_text_as_before():
+    result = yaseer.run('10 PRINT "A";1\n20 PRINT "B"')
+    assert result.text == "A 1 \nB\n" and result.screens == []
+
+
+def test_locate_and_cls_draw_on_the_two_line_lcd():
+    # LOCATE's page: (0,0) upper left, x to the right, y down; CLS's page: cleared, cursor home
+    program = '10 PRINT "OLD";\n20 CLS: PRINT "TITLE";\n30 LOCATE 5,1: PRINT "X=";7;'
+    result = yaseer.run(program)
+    assert result.screens == ["TITLE\n     X= 7\n"]
+    assert result.text == "OLD" + "TITLE\n     X= 7\n"  # the streamed text up to the first CLS, then the screen
+
+
+def test_each_key_wait_shows_the_screen_once():
+    program = ('10 CLS: PRINT "Area of a circle";\n'
+               '20 LOCATE 0,1: PRINT CHR$(5);"r=";R;"?";: INPUT @42; R: LOCATE 0,0\n'
+               '30 LOCATE 0,1: PRINT CHR$(5);"Area =";PI*R*R;: Z$=INPUT$(1,@): GOTO 20\n')
+    shown, error = screens(program, "2\n\n3\n")  # r=2, EXE, r=3
+    assert shown == [
+        "Area of a circle\nr= 0 ?\n",
+        "Area of a circle\nArea = 12.56637061\n",   # PI*4 to the display's 10 digits
+        "Area of a circle\nr= 2 ?\n",
+        "Area of a circle\nArea = 28.27433388\n",  # PI*9
+    ]
+    assert error == "Input past end in 30"  # the key script is over while the program waits for a key
+
+
+def test_input_moves_the_cursor_to_the_next_row_as_exe_does():
+    # without the library's LOCATE 0,0 after INPUT the window follows the cursor down
+    shown, _ = screens('10 CLS: PRINT "TOP";: LOCATE 0,1: INPUT @1; R: PRINT "NEXT";', "5\n")
+    assert shown == ["TOP\n\n", "5\nNEXT\n"]
+
+
+def test_the_window_follows_the_cursor_over_the_virtual_screen():
+    # part 6 "Virtual screen function": 8 lines, 2 shown; LOCATE's range 0..31, 0..7
+    program = '10 CLS: FOR I=0 TO 7: LOCATE 0,I: PRINT "LINE";I;: NEXT\n20 LOCATE 0,3: A$=INPUT$(1)'
+    shown, _ = screens(program, "x")
+    assert shown[0] == "LINE 3\nLINE 4\n"  # the window moved up to the cursor's row 3
+    program = '10 CLS: LOCATE 31,7: PRINT "Z";: LOCATE 0,7: PRINT "BOTTOM";'
+    shown, _ = screens(program)
+    # the last cell written: the screen scrolled up (PRINT's page, item 4)
+    assert shown == [" " * 31 + "Z\nBOTTOM\n"]
+
+
+def test_locate_beyond_the_screen_is_an_error():
+    assert screens("10 LOCATE 32,0")[1] == "Illegal function call in 10"
+    assert screens("10 LOCATE 0,8")[1] == "Illegal function call in 10"
+
+
+def test_print_chr12_clears_as_cls_does():
+    assert screens('10 PRINT "GONE";CHR$(12);"NEW";')[0] == ["NEW\n\n"]
+
+
+def test_input_dollar_reads_keys_and_a_line_break_is_exe():
+    # INPUT$'s page: characters of the keyboard buffer, not shown; the library tests 13 for EXE
+    program = '10 A$=INPUT$(3): PRINT ASC(MID$(A$,1,1));ASC(MID$(A$,2,1));ASC(MID$(A$,3,1))'
+    result = yaseer.run(program, input="a\nb")
+    assert result.text == " 97  13  98 \n"
+
+
+def test_inkey_takes_one_key_and_is_empty_when_none_is_left():
+    program = '10 K$=INKEY$: IF K$="" THEN PRINT "NONE": END\n20 PRINT K$;: GOTO 10'
+    # the API ends a text input with a line break: the third key is EXE, CHR$(13), a new line
+    assert yaseer.run(program, input="OK").text == "OK\nNONE\n"
+
+
+def test_empty_input_answer_keeps_the_numeric_value():
+    # INPUT's page, item 7: EXE alone keeps a numeric variable's value, gives "" to a string
+    program = '10 A=5: A$="X": INPUT A: INPUT A$: PRINT A; LEN(A$)'
+    assert yaseer.run(program, input="\n\n").text.splitlines()[-1] == " 5  0 "
+
+
+def test_peek_of_the_last_input_key_is_exe():
+    program = "10 INPUT @3; Z: W=PEEK(1627)-13: PRINT Z; W"  # &H65B: the key that ended INPUT
+    assert yaseer.run(program, input="4\n").text.splitlines()[-1] == " 4  0 "
+
+
+def test_input_at_shows_no_question_mark_of_its_own():
+    result = yaseer.run('10 PRINT "N";: INPUT @10; N: PRINT N*2', input="21\n")
+    assert result.text == "N21\n 42 \n"
+
+
+def test_goto_and_gosub_a_program_area(tmp_path):
+    # GOSUB's and GOTO's pages: "# program area number", a single character 0-9
+    area = tmp_path / "p3.bas"
+    area.write_text('10 PRINT "IN AREA";X: X=X+1: RETURN\n')
+    result = yaseer.run('10 X=1: GOSUB #3: GOSUB #3: PRINT "BACK";X', prog={3: area})
+    assert result.text == "IN AREA 1 \nIN AREA 2 \nBACK 3 \n"
+    result = yaseer.run('10 X=7: GOTO #3\n20 PRINT "NOT REACHED"', prog={3: area})
+    assert result.text == "IN AREA 7 \n" and result.error is None
+
+
+def test_gosub_a_library_program_file(tmp_path):
+    # The library's form: GOSUB "LIB0:S6210" runs its subprogram file LIBS6210.bas
+    (tmp_path / "LIBS0001.bas").write_text("10 p=x*x: RETURN\n")
+    (tmp_path / "LIB0002.bas").write_text('10 PRINT "MENU ITEM";x\n')
+    program = '10 x=3: GOSUB "LIB0:S0001": PRINT p\n20 r$="LIB0:0002": GOTO r$\n30 PRINT "NOT REACHED"'
+    result = yaseer.run(program, files=tmp_path)
+    assert result.text == " 9 \nMENU ITEM 3 \n" and result.error is None
+    missing = yaseer.run('10 GOSUB "LIB0:S9999"', files=tmp_path)
+    assert missing.error == "File not found: LIB0:S9999 in 10"
+
+
+def test_the_character_codes_are_the_manuals_table():
+    # part 12's table, and its example: PRINT CHR$(132) displays the sigma sign
+    assert yaseer.run("10 PRINT CHR$(132);CHR$(&HE1 - 0);CHR$(177)".replace("&HE1 - 0", "225")).text == "∑≤ｱ\n"
+    assert yaseer.run('10 PRINT ASC("π"); ASC("A")').text == " 231  65 \n"
+    assert all(CHARACTERS.code(CHARACTERS.char(n)) == n for n in range(256))
+
+
+def test_a_program_file_saved_on_the_machine_reads_in_its_codes(tmp_path):
+    listing = tmp_path / "casio.bas"
+    listing.write_bytes(b'10 PRINT "0<x\xe170 ";CHR$(225)="\xe1"\n')  # &HE1 is the less-or-equal sign
+    assert yaseer.run(listing).text == "0<x≤70 -1 \n"
