@@ -607,6 +607,7 @@ class MachineEngine:
             self._machine = create_machine(self._screen, self._printer, dialect=self._dialect, files=self._files)
             self._machine.on_clear_screen = self._clear_screen
             self._machine.resumable_breaks = True  # Ctrl-C, then CONT goes on exactly
+            self._machine.boxed_screens = True  # a program that draws shows the LCD in its frame
         return self._machine
 
     def reset(self) -> None:

@@ -21,13 +21,14 @@ import sys
 
 from yaseer.basic.machine import runtime
 from yaseer.basic.dialects.charset import LATIN1
-from yaseer.basic.machine.display import Display
+from yaseer.basic.machine.display import Display, boxed
 from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END
 from yaseer.basic.machine.screen import OutputStream
 
 # Memory the FX-850P's programs read (Becker's library): the code of the key that ended
 # the last INPUT (EXE: 13; its programs test PEEK(&H65B)-13), and a byte that is 0 while no
 # shift key is held (PEEK(206) after INPUT$).  Every other address holds what POKE left, 0 at first.
+# (POKE and DEFSEG are the casio words' statements; they share ``memory`` and ``segment``.)
 LAST_INPUT_KEY = 0x65B
 EMPTY_POLLS = 1000  # INKEY$ answers "" this many times at the end of the key stream, then Input past end
 
@@ -63,14 +64,15 @@ class DisplayStream(OutputStream):
 
 
 class Console:
-    """The display, the screens shown, the key stream and PEEK/POKE memory (a mixin of Machine)."""
+    """The display, the screens shown, the key stream and what PEEK reads (a mixin of Machine)."""
 
     def _init_console(self, screen) -> OutputStream:
         """The screen stream for output ``screen``; sets up the display, memory and keys."""
         self.screens: list[str] = []  # the screens shown so far (see module docstring)
-        self.memory: dict[int, int] = {}
-        self.segment = 0  # DEFSEG
+        self.memory: dict[int, int] = {}  # address -> the byte POKE left there
+        self.segment = 0  # DEFSEG's segment: 0 at power-on
         self.last_input_key = 13
+        self.boxed_screens = False  # True: screens are drawn in an LCD's frame (the interactive session)
         self._empty_polls = 0
         geometry = self.dialect.display
         if geometry is None:
@@ -105,8 +107,18 @@ class Console:
         display.changed = False
         self.screens.append(text)
         stream = self.screen.stream
-        stream.write(text)
+        stream.write(boxed(display.shown_lines(), display.columns) if self.boxed_screens else text)
         stream.flush()
+
+    def end_drawing(self) -> None:
+        """After a direct statement: a screen it drew (anything on it) is shown, and the
+        next output streams again (the session's prompt is not on the LCD)."""
+        display = self.display
+        if display is None or not display.drawn:
+            return
+        if any(display.lines()):
+            self.show_screen(final=True)
+        display.drawn = False
 
     # ------------------------------------------------------------ the keys
     def _keys(self):
@@ -170,20 +182,6 @@ class Console:
         if where == LAST_INPUT_KEY:
             return float(self.last_input_key)
         return float(self.memory.get(where, 0))
-
-    def poke(self, address, value) -> None:
-        """POKE address, value: the byte (0..255) at segment * 16 + address."""
-        byte = runtime.cint(value)
-        if not 0 <= byte <= 255:
-            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-        self.memory[self._address(address)] = byte
-
-    def set_segment(self, segment) -> None:
-        """DEFSEG = segment (-32768 < segment < 65536; negative counts from 65536)."""
-        value = int(runtime.fix(segment))
-        if not -32768 < value < 65536:
-            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-        self.segment = value % 65536
 
     def _address(self, address) -> int:
         offset = int(runtime.fix(address))

@@ -163,3 +163,10 @@ class Display:
     def screen_text(self) -> str:
         """The shown rows as text, one line each (a transcript's picture of the display)."""
         return "".join(line + "\n" for line in self.shown_lines())
+
+
+def boxed(lines: list[str], columns: int) -> str:
+    """``lines`` drawn as an LCD in a frame ``columns`` wide (the interactive session's screen)."""
+    edge = "\u2500" * columns
+    rows = "".join(f"\u2502{line[:columns].ljust(columns)}\u2502\n" for line in lines)
+    return f"\u250c{edge}\u2510\n{rows}\u2514{edge}\u2518\n"

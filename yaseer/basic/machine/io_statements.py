@@ -244,6 +244,8 @@ class InputOutput:
             self.screen.write(line if line.endswith("\n") else line + "\n")
         else:
             self.screen.column = 0
+            if self.display is not None and self.display.drawn:  # the keys typed show on the LCD too
+                self.display.write(line if line.endswith("\n") else line + "\n")
         return line.rstrip("\r\n")
 
     def end_line(self) -> None:

@@ -400,7 +400,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_lof": lambda n: float(self.files.get(n).length()),
             "_loc": lambda n: float(self.files.get(n).records()),
             "_input_chars": self.input_chars, "_inkey": self.inkey, "_input_keys": self.input_keys,
-            "_peek": self.peek, "_poke": self.poke, "_defseg": self.set_segment, "_locate": self.locate,
+            "_peek": self.peek, "_locate": self.locate,
         }
 
     def _trig_functions(self) -> dict:
@@ -521,6 +521,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.set_subscript_base(0)
         self.files.close()
         self.random.reset()
+        if self.display is not None:
+            self.display.drawn = False  # the new run's text streams until it draws
 
     def run(self, line: int | None = None) -> str:
         """RUN (from ``line``): returns "end" or "stop"; raises BasicError on an error."""
@@ -607,6 +609,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         finally:
             if self.csv:  # a last line left open (PRINT A;) is still a row
                 self.end_line()
+            self.end_drawing()
             self.flush()
 
     # ------------------------------------------------------------ RND
