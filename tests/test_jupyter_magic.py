@@ -53,3 +53,21 @@ def test_wrong_options_are_one_usage_error(shell, line, cell, says):
 def test_an_unknown_method_is_the_red_error_line_not_an_exception(shell, capsys):
     shell.run_cell_magic("basic", "--method 2=bogus", "10 PRINT 1\n")
     assert shell.user_ns["_basic"].error.startswith("Unknown method 'bogus' for PROG 2")
+
+
+def test_a_program_that_draws_shows_its_lcd(shell, tmp_path):
+    """A program in the library's manner, saved in the machine's codes (&HE1 is <=), calling
+    a subprogram file as GOSUB "LIB0:..." does (&H92 is the superscript 2): the cell shows the LCD."""
+    from IPython.utils.capture import capture_output
+
+    (tmp_path / "LIBS0001.bas").write_bytes(b"10 y=x*x:RETURN\n")
+    (tmp_path / "LIB0001.bas").write_bytes(
+        b'10 CLS:PRINT"Square (x\xe199)";\n'
+        b'20 LOCATE0,1:PRINTCHR$(5);"x=";x;"?";:INPUT@10;x:LOCATE0,0:GOSUB"LIB0:S0001"\n'
+        b'30 LOCATE0,1:PRINTCHR$(5);"x\x92 =";y;:z$=INPUT$(1,@):GOTO20\n')
+    with capture_output() as shown:
+        shell.run_line_magic("basic", f"{tmp_path / 'LIB0001.bas'} --files {tmp_path} --input 12\\n")
+    result = shell.user_ns["_basic"]
+    assert result.screens == ["Square (x≤99)\nx= 0 ?\n", "Square (x≤99)\nx² = 144\n"]
+    html = shown.outputs[0].data["text/html"]
+    assert "Square (x≤99)" in html and "x² = 144" in html

@@ -1,14 +1,16 @@
 """The Jupyter magics: ``%load_ext yaseer``, then ``%%basic`` (a cell of BASIC) or ``%basic FILE``.
 
     %%basic [--dialect casio|gw] [--method N=NAME] [--prog N=FILE] [--angle deg|rad]
-            [--input TEXT] [--plot] [--animate] [--fps F] [--size WxH] [--max-frames N] [-o NAME]
+            [--input TEXT] [--files DIR] [--plot] [--animate] [--fps F] [--size WxH] [--max-frames N] [-o NAME]
     10 FOR QQ = 0 TO 90 STEP 30: X(10) = COS(QQ): Y(10) = SIN(QQ): GOSUB PROG 5
     20 PRINT QQ; T; L: NEXT QQ
 
 The cell runs through :func:`yaseer.run`.  Its screen is the cell's output, shown
-as the program prints it; an error is one red line (no traceback); ``--plot`` shows
-``result.plot()`` inline, ``--animate`` the mechanism as a self-contained HTML
-player.  The :class:`yaseer.api.Result` is stored in the notebook as ``_basic``
+as the program prints it, and for a program that drew on the LCD (a program of
+Becker's library: ``%basic LIB5615.bas --files DIR --input 2\\n``) its LCD panels,
+each time it waited for a key and at its end; an error is one red line (no
+traceback); ``--plot`` shows ``result.plot()`` inline, ``--animate`` the mechanism
+as a self-contained HTML player.  The :class:`yaseer.api.Result` is stored in the notebook as ``_basic``
 (or the name given with ``-o``) for the next cells: ``_basic.rows``,
 ``_basic.error``...  Needs IPython (``pip install -e '.[jupyter]'`` in the repository: the README's *Teaching with yaseer*).
 """
@@ -53,6 +55,7 @@ class BasicMagics(Magics):
     @argument("--prog", action="append", default=[], metavar="N=FILE", help="load program area N from FILE")
     @argument("--angle", choices=("deg", "rad"), default=None, help="unit of SIN COS TAN ATN at start")
     @argument("--input", default=None, help="what INPUT reads (lines separated by \\n)")
+    @argument("--files", default=None, metavar="DIR", help="the directory of the program's files and program files")
     @argument("--plot", action="store_true", help="plot the printed columns")
     @argument("--animate", action="store_true", help="animate the mechanism")
     @argument("--fps", type=float, default=6.0, help="frames per second of the animation")
@@ -90,7 +93,8 @@ def run_magic(listing, args, methods: dict, areas: dict, shell):
         listing += "\n"  # a one-line cell is program text, never a file name
     try:  # the screen streams into the cell as the program prints (the kernel sends it every moment)
         result = run(listing, dialect=args.dialect, method=methods, prog=areas, angle=args.angle,
-                     input=args.input.replace("\\n", "\n") if args.input else None, screen=sys.stdout)
+                     input=args.input.replace("\\n", "\n") if args.input else None, screen=sys.stdout,
+                     files=args.files)
     except ValueError as error:  # an unknown dialect
         from IPython.core.error import UsageError
 
@@ -108,6 +112,8 @@ def show(result, plot: bool = False, animate: bool = False, fps: float = 6.0, si
     if result.text and not result.text.endswith("\n"):
         print()  # end the line the program left open
     sys.stdout.flush()  # the screen before the red line, the plot and the player
+    if result.screens:  # a program that drew: its LCD, each time it waited for a key and at its end
+        display({"text/plain": "", "text/html": lcd_html(result.screens)}, raw=True)
     if result.error is not None:
         _red_line(result.error)
     if plot:
@@ -122,6 +128,22 @@ def show(result, plot: bool = False, animate: bool = False, fps: float = 6.0, si
             display(HTML(html_player(result.frames, result.look(size), fps=fps, max_frames=max_frames)))
         except AnimationError as error:
             _red_line(str(error))
+
+
+LCD_STYLE = ("display:inline-block;margin:2px 4px 2px 0;padding:4px 6px;background:#c8d4b0;"
+             "color:#1c2414;border:3px solid #4a4a4a;border-radius:4px;font:14px/1.2 monospace;"
+             "white-space:pre")
+
+
+def lcd_html(screens: list[str]) -> str:
+    """The screens as the pocket computer's LCD (one grey-green panel each), in order."""
+    panels = []
+    for screen in screens:
+        rows = screen.split("\n")[:-1] if screen.endswith("\n") else screen.split("\n")
+        width = max([32] + [len(row) for row in rows])
+        panels.append(f'<div style="{LCD_STYLE}">'
+                      + "\n".join(html.escape(row.ljust(width)) for row in rows) + "</div>")
+    return "<div>" + "".join(panels) + "</div>"
 
 
 def _red_line(text: str) -> None:
