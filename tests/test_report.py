@@ -102,3 +102,12 @@ def test_in_chromium_a_screenshot_is_not_blank(example1, tmp_path):
         assert image.size == (1280, 2400)
         assert dark > 0.005 * 1280 * 2400  # text, table, plot: not an empty white page
         assert len(image.convert("RGB").getcolors(1 << 20)) > 50
+
+
+def test_a_program_that_draws_gets_its_lcd_on_the_page(tmp_path):
+    listing = tmp_path / "lcd.bas"
+    listing.write_text('10 CLS: PRINT "REPORT";\n20 LOCATE 2,1: PRINT "SHOWN";CHR$(231);\n')
+    done, page = report(tmp_path, listing)
+    assert done.returncode == 0, done.stderr
+    text = page.read_text()
+    assert '<h2>The LCD</h2>' in text and "REPORT" in text and "  SHOWNπ" in text

@@ -113,6 +113,8 @@ def show(result, plot: bool = False, animate: bool = False, fps: float = 6.0, si
         print()  # end the line the program left open
     sys.stdout.flush()  # the screen before the red line, the plot and the player
     if result.screens:  # a program that drew: its LCD, each time it waited for a key and at its end
+        from yaseer.lcd import lcd_html
+
         display({"text/plain": "", "text/html": lcd_html(result.screens)}, raw=True)
     if result.error is not None:
         _red_line(result.error)
@@ -128,22 +130,6 @@ def show(result, plot: bool = False, animate: bool = False, fps: float = 6.0, si
             display(HTML(html_player(result.frames, result.look(size), fps=fps, max_frames=max_frames)))
         except AnimationError as error:
             _red_line(str(error))
-
-
-LCD_STYLE = ("display:inline-block;margin:2px 4px 2px 0;padding:4px 6px;background:#c8d4b0;"
-             "color:#1c2414;border:3px solid #4a4a4a;border-radius:4px;font:14px/1.2 monospace;"
-             "white-space:pre")
-
-
-def lcd_html(screens: list[str]) -> str:
-    """The screens as the pocket computer's LCD (one grey-green panel each), in order."""
-    panels = []
-    for screen in screens:
-        rows = screen.split("\n")[:-1] if screen.endswith("\n") else screen.split("\n")
-        width = max([32] + [len(row) for row in rows])
-        panels.append(f'<div style="{LCD_STYLE}">'
-                      + "\n".join(html.escape(row.ljust(width)) for row in rows) + "</div>")
-    return "<div>" + "".join(panels) + "</div>"
 
 
 def _red_line(text: str) -> None:

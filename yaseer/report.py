@@ -39,6 +39,10 @@ def build_page(result, listing_path: Path | None = None, printed_program_5: bool
     parts.append(f"<pre>{html.escape(result.listing)}</pre>")
     parts.append("<h2>What it printed</h2>")
     parts.append(f'<pre id="screen">{html.escape(result.text)}</pre>')
+    if result.screens:  # a program that drew on the display: the LCD as it showed it
+        from yaseer.lcd import lcd_html
+
+        parts.append(f'<h2>The LCD</h2>\n<div id="lcd">{lcd_html(result.screens)}</div>')
     if result.error is not None:
         parts.append(f'<p class="error" id="error">{html.escape(result.error)}</p>')
     parts += _tables(result)
