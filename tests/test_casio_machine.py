@@ -6,7 +6,7 @@ INPUT @n;, INPUT$(1,@)), so CI covers what the library needs without the library
 from __future__ import annotations
 
 import yaseer
-from yaseer.basic.charset import CASIO as CHARACTERS
+from yaseer.basic.dialects.charset import CASIO as CHARACTERS
 
 
 def screens(program: str, keys: str = "", **options) -> tuple[list[str], str | None]:
