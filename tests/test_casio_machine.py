@@ -128,3 +128,14 @@ def test_a_program_file_saved_on_the_machine_reads_in_its_codes(tmp_path):
     listing = tmp_path / "casio.bas"
     listing.write_bytes(b'10 PRINT "0<x\xe170 ";CHR$(225)="\xe1"\n')  # &HE1 is the less-or-equal sign
     assert yaseer.run(listing).text == "0<x≤70 -1 \n"
+
+
+def test_input_at_takes_at_most_n_characters():
+    # LIB5260's form: LOCATE 2,1: INPUT @3; n$ into a three-column field
+    assert yaseer.run("10 INPUT @3; N$: PRINT N$", input="12345\n").text.splitlines()[-1] == "123"
+
+
+def test_then_star_ends_the_program_as_the_library_writes_it():
+    assert yaseer.run('10 SR=1: IF SR THEN *\n20 PRINT "GOES ON"').text == ""
+    assert yaseer.run('10 IF 0 THEN * ELSE PRINT "ELSE"').text == "ELSE\n"
+    assert yaseer.run("10 IF 1 THEN *", dialect="gw").error == "Syntax error in 10"  # gw has no such form

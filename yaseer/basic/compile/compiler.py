@@ -82,6 +82,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.area = area
         self.numbers = number_model(dialect, def_types)
         self.program_areas = dialect.program_areas  # GOSUB PROG n, #n, "file:label"
+        self.library_forms = dialect.library_forms  # THEN *
         self.direct = direct
         self.trace = trace and not direct
         self.dynamic_loops = set(dynamic_loops)
@@ -295,6 +296,11 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.emit(self.jump(stmt.target))
             return
         self.emit(f"_M.on_error = ({self.area}, {block})")
+
+    def stmt_EndMark(self, stmt, scope):
+        if not self.library_forms:
+            raise syntax_error()
+        self.emit("raise _END")
 
     def stmt_End(self, stmt, scope):
         self.emit("raise _END")

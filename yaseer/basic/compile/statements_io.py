@@ -124,7 +124,8 @@ class InputOutputCompiler:
             return
         kinds = "".join("s" if self.kind_of(t) == "s" else "n" for t in stmt.targets)
         values = self.new_temp()
-        self.emit(f"{values} = _input({stmt.prompt!r}, {stmt.question_mark}, {kinds!r}, {self.asking_again()})")
+        limit = f", {stmt.at}" if stmt.at is not None else ""  # INPUT @n;: at most n characters
+        self.emit(f"{values} = _input({stmt.prompt!r}, {stmt.question_mark}, {kinds!r}, {self.asking_again()}{limit})")
         for n, target in enumerate(stmt.targets):
             value = f"{values}[{n}]"
             if kinds[n] == "n" and not self.numbers.typed:  # None: an empty answer keeps the value

@@ -65,8 +65,9 @@ FIELDS = (
     "charset",  # CharacterSet: LATIN1
     "enter_key",  # str: "\n"
     "empty_input_keeps",  # bool: False
+    "library_forms",  # bool: False
 )
-DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False)
+DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -154,6 +155,9 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         ``empty_input_keeps``: True (casio, the INPUT page: "a numeric variable
         retains its current value") makes an empty answer to INPUT keep the
         numeric variables' values; False reads it as 0 (GW-BASIC).
+        ``library_forms``: True (casio) accepts what Becker's library for the
+        FX-850P writes and the manual does not describe: ``THEN *`` (the program
+        ends there; docs/compatibility.md).
 
     Start-up environment
         ``angle``: ``"DEG"`` or ``"RAD"``, the unit of SIN COS TAN ATN at RUN.
@@ -200,7 +204,7 @@ CASIO = Dialect(
     width=None, zone=14, on_division_by_zero="stop", on_overflow="stop", angle="DEG",
     implicit_arrays=AL_YASEER_DIMENSIONS, default_dimension=10, program_areas=True,
     display=(32, 8, 2), controls=tuple(sorted(CASIO_CONTROLS.items())), charset=CASIO_CHARACTERS, enter_key="\r",
-    empty_input_keeps=True,
+    empty_input_keeps=True, library_forms=True,
 )
 
 GW = Dialect(

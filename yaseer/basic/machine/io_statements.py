@@ -193,13 +193,18 @@ class InputOutput:
         stream.row = []
         stream.column = 0
 
-    def input_values(self, prompt, question_mark: bool, kinds: str, again: tuple | None = None) -> list:
+    def input_values(self, prompt, question_mark: bool, kinds: str, again: tuple | None = None,
+                     limit: int | None = None) -> list:
         """INPUT: prompt, read one line, split at commas; wrong values ask again.
 
         ``again``: (the block of area 0 this INPUT starts, its line); see :meth:`_read_line`.
+        ``limit``: the most characters the answer takes (the library's ``INPUT @n;``: the
+        keys past the field are not taken, as a field of n columns would refuse them).
         """
         while True:
             line = self._read_line((prompt or "") + ("? " if question_mark or prompt is None else ""), again)
+            if limit is not None:
+                line = line[:limit]
             if not line and len(kinds) == 1 and self.dialect.empty_input_keeps:
                 return [None if kind == "n" else "" for kind in kinds]
             values = _parse_input(line, kinds, self.dialect.largest_number)

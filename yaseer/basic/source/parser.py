@@ -93,6 +93,9 @@ class _ToAst:
     def branch_seq(self, c):
         return c[0]
 
+    def branch_end(self, c):  # THEN *: where Becker's library stops after a break (casio; see compatibility.md)
+        return [ast.EndMark()]
+
     def if_stmt(self, c):
         return _if(c[1], c[3], c[5] if len(c) > 5 else None)
 

@@ -419,6 +419,11 @@ class Cls:
 
 
 @_node
+class EndMark:
+    """``THEN *`` / ``ELSE *``: Becker's library writes it where a program stops (casio only)."""
+
+
+@_node
 class Locate:
     """LOCATE x, y: the cursor to column x of row y of the display."""
     x: object
