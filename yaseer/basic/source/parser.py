@@ -334,7 +334,7 @@ class _ToAst:
         return ast.Locate(c[1], c[3])
 
     def input_at(self, c):  # INPUT @n; v: the library's form; no "?" of its own
-        return ast.Input("", False, _values(c[4:]), at=_number_value(c[2]))
+        return ast.Input("", False, _values(c[4:]), at=int(_number_value(c[2])))
 
     def width_stmt(self, c):
         return ast.Width(c[-1], len(c) == 3)  # WIDTH LPRINT n: the printer's
