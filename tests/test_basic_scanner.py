@@ -81,7 +81,7 @@ def test_question_mark_is_print():
 
 def test_unknown_character_is_a_syntax_error():
     with pytest.raises(BasicError, match="Syntax error"):
-        tokenize("A = 1 @ 2")
+        tokenize("A = 1 ` 2")  # (@ is a token: INPUT @n; and INPUT$(n, @))
 
 
 def test_huge_literal_is_overflow():

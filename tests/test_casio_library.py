@@ -1,0 +1,188 @@
+"""Becker's FX-850P/880P library programs, run with our own keys, against independent values.
+
+The library is not in this repository: set ``YASEER_CASIO_LIBRARY`` to a local copy of
+its ``sources`` folder (github urbancamo/casio-basic, src/main/basic/MB-Casio-Basic-Library).
+Each case types its inputs as the program asks for them (a line break is EXE; ``\\x1f``
+is the cursor-down key the programs read to show the next root or value) and reads the
+number the LCD shows after a label; the expected value is a closed form or mpmath's.  The
+programs round their results themselves (``ROUND(x, LOG(ABS x)-7)``: 8 digits; the
+distributions 7), so the tolerance is the program's own rounding, or its method's
+accuracy where it approximates (named per case).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from fractions import Fraction
+
+import pytest
+
+import yaseer
+from casio_library import ENVIRONMENT, library
+
+mpmath = pytest.importorskip("mpmath")
+
+LIBRARY = library()
+if LIBRARY is None:
+    pytest.skip(f"{ENVIRONMENT} does not name the library's sources folder", allow_module_level=True)
+DOWN = "\x1f"  # the cursor-down key (code 31)
+NUMBER = r"(-?(?:\d+\.?\d*|\.\d+)(?:E[-+]?\d+)?)"
+
+
+def screens(program: str, keys: str) -> list[str]:
+    result = yaseer.run(LIBRARY / f"{program}.bas", input=keys, files=LIBRARY)
+    assert result.error in (None, f"Input past end in {result.line}"), result.error
+    return result.screens
+
+
+def shown(program: str, keys: str, label: str) -> list[float]:
+    """Every number shown after ``label`` (a regular expression) on the program's screens, in order."""
+    values = []
+    for screen in screens(program, keys):
+        for match in re.finditer(label + r"\s*" + NUMBER, screen):
+            values.append(float(match.group(1)))
+    assert values, f"{program}: nothing shown after {label!r}"
+    return values
+
+
+def first(program: str, keys: str, label: str) -> float:
+    return shown(program, keys, label)[0]
+
+
+pi = math.pi
+CLOSED_FORMS = [  # program, keys, label, value (exact closed form), relative tolerance
+    ("LIB5615", "2\n", "Area =", 4 * pi, 1e-9),  # circle, r=2
+    ("LIB5630", "2\n3\n", "Area =", 6 * pi, 1e-9),  # ellipse a=2, b=3
+    ("LIB5650", "2\n", "Surface =", 16 * pi, 1e-9),  # sphere r=2
+    ("LIB5700", "3\n", "Volume =", 36 * pi, 1e-9),  # sphere r=3
+    ("LIB5715", "2\n5\n", "Volume =", 20 * pi, 1e-9),  # cylinder r=2, h=5
+    ("LIB5720", "3\n4\n", "Volume =", 12 * pi, 1e-9),  # cone r=3, h=4
+    ("LIB5745", "1\n2\n3\n", "Volume =", 8 * pi, 1e-9),  # ellipsoid 1, 2, 3
+    ("LIB5605", "3\n5\n2\n", "Area =", 8.0, 1e-12),  # trapezoid (3+5)*2/2
+    ("LIB5600", "3" "3\n4\n5\n", "Area =", 6.0, 1e-9),  # Heron's formula, the 3-4-5 triangle
+    ("LIB5610", "2" "3\n4\n30\n", "Area =", 6.0, 1e-9),  # 3*4*sin 30 degrees
+    ("LIB5620", "2" "2\n90\n", "Area =", pi, 1e-9),  # sector r=2, 90 degrees
+    ("LIB5625", "2\n1\n", "Area =", (2 - math.sin(2)) / 2, 1e-9),  # segment l=2, r=1 (radians)
+    ("LIB5250", "5\n", r"\) =", 24.0, 1e-12),  # Gamma(5) = 4!
+    ("LIB5200", "1" "x^2\n0\n1\n", r"dx =", 1 / 3, 1e-7),  # Romberg: integral of x^2 over [0,1]
+]
+
+
+@pytest.mark.parametrize("program, keys, label, value, tolerance", CLOSED_FORMS,
+                         ids=[case[0] for case in CLOSED_FORMS])
+def test_closed_forms(program, keys, label, value, tolerance):
+    assert first(program, keys, label) == pytest.approx(value, rel=tolerance)
+
+
+def test_gamma_of_a_half_is_the_root_of_pi():
+    # the program's series, rounded to 8 digits
+    assert first("LIB5250", "0.5\n", r"\) =") == pytest.approx(math.sqrt(pi), rel=1e-7)
+
+
+def test_greatest_common_measure_and_least_common_multiple():
+    screen = "".join(screens("LIB5020", "84\n360\n"))
+    assert float(re.search(r"G\.C\.M\.=\s*" + NUMBER, screen).group(1)) == math.gcd(84, 360)
+    assert float(re.search(r"L\.C\.M\.=\s*" + NUMBER, screen).group(1)) == 84 * 360 // math.gcd(84, 360)
+
+
+def test_prime_factors_multiply_back_to_the_base():
+    screen = [s for s in screens("LIB5010", "360360\n") if "^" in s or "*" in s][0]
+    factors = screen.split("=", 1)[1].split("\n")[0].split("*")
+    product = 1
+    for factor in factors:
+        base, _, power = factor.strip().partition("^")
+        assert all(int(base) % d for d in range(2, int(int(base) ** 0.5) + 1))  # each base a prime
+        product *= int(base) ** int(power or 1)
+    assert product == 360360
+
+
+def test_quadratic_roots():
+    roots = shown("LIB5050", "1\n-3\n2\n" + DOWN, "[αβ] =")
+    assert sorted(roots) == [1.0, 2.0]
+
+
+def test_cubic_with_three_real_roots():
+    roots = shown("LIB5060", "1\n-6\n11\n-6\n" + DOWN + DOWN, "[αβγ] =")
+    assert sorted(roots) == pytest.approx([1.0, 2.0, 3.0], rel=1e-8)
+
+
+def test_simultaneous_equations():
+    # 2x + y = 5, x - y = 1: x = 2, y = 1 (Gauss-Jordan)
+    solution = shown("LIB5040", "2\n" "2\n1\n5\n" "1\n-1\n1\n" + DOWN, r"x\d =")
+    assert solution[:2] == pytest.approx([2.0, 1.0], rel=1e-8)
+
+
+def test_straight_line_through_two_points():
+    # (1,2) and (3,6): y = 2x + 0
+    assert shown("LIB5510", "1\n2\n3\n6\n" + DOWN, "[ab] =")[:2] == [2.0, 0.0]
+
+
+def test_circle_through_three_points():
+    # (0,0), (2,0), (0,2): centre (1,1), radius sqrt 2
+    a, b, r = shown("LIB5550", "0\n0\n2\n0\n0\n2\n" + DOWN + DOWN, "[abr] =")[:3]
+    assert (a, b) == (1.0, 1.0) and r == pytest.approx(math.sqrt(2), rel=1e-9)
+
+
+def test_regular_polygon_radii():
+    # a square of area 16: inscribed circle 2, circumscribed 2*sqrt 2, side 4
+    r, big_r, side = shown("LIB5750", "16\n4\n" + DOWN + DOWN, "[rRl] =")[:3]
+    assert (r, big_r, side) == pytest.approx((2.0, 2 * math.sqrt(2), 4.0), rel=1e-9)
+
+
+BESSEL = [  # program, n, x, label, mpmath's value
+    ("LIB5260", 0, 1, "J=", mpmath.besselj(0, 1)),
+    ("LIB5260", 3, 2.5, "J=", mpmath.besselj(3, 2.5)),
+    ("LIB5270", 1, 2, "Y=", mpmath.bessely(1, 2)),
+    ("LIB5280", 1, 1, "I=", mpmath.besseli(1, 1)),
+    ("LIB5290", 0, 1, "K=", mpmath.besselk(0, 1)),
+    ("LIB5290", 2, 3, "K=", mpmath.besselk(2, 3)),
+]
+
+
+@pytest.mark.parametrize("program, n, x, label, value", BESSEL, ids=[f"{c[0]}-{c[1]}-{c[2]}" for c in BESSEL])
+def test_bessel_functions(program, n, x, label, value):
+    # J, Y, I by recurrences (8 digits shown); K's polynomial approximations hold 7 digits
+    assert first(program, f"{n}\n{x}\n", label) == pytest.approx(float(value), rel=2e-7)
+
+
+def upper_t(n: int, x: float) -> float:
+    return float(mpmath.betainc(n / 2, 0.5, 0, n / (n + x * x), regularized=True) / 2)
+
+
+def upper_f(n: int, m: int, x: float) -> float:
+    return float(mpmath.betainc(m / 2, n / 2, 0, m / (m + n * x), regularized=True))
+
+
+def binomial_tail(n: int, p: Fraction, x: int) -> float:
+    return float(sum(math.comb(n, k) * p ** k * (1 - p) ** (n - k) for k in range(x, n + 1)))
+
+
+def hypergeometric_tail(big_n: int, big_m: int, n: int, x: int) -> float:
+    total = math.comb(big_n, n)
+    return float(sum(Fraction(math.comb(big_m, k) * math.comb(big_n - big_m, n - k), total)
+                     for k in range(x, min(n, big_m) + 1)))
+
+
+DISTRIBUTIONS = [  # program, keys, label, value, relative tolerance (7 digits shown; the method's accuracy)
+    ("LIB6210", "1.96\n", "p=", float(mpmath.ncdf(-1.96)), 1e-5),  # normal, upper tail
+    ("LIB6220", "4\n5\n", "p=", float(mpmath.gammainc(2, 2.5, regularized=True)), 1e-6),  # chi-square, 4 df
+    ("LIB6220", "3\n2\n", "p=", float(mpmath.gammainc(1.5, 1, regularized=True)), 1e-5),  # chi-square, 3 df
+    ("LIB6230", "10\n2\n", "p=", upper_t(10, 2), 1e-6),  # Student's t, 10 df
+    ("LIB6230", "5\n1.5\n", "p=", upper_t(5, 1.5), 1e-6),
+    ("LIB6240", "4\n10\n3\n", "p=", upper_f(4, 10, 3), 1e-6),  # F(4, 10)
+    ("LIB6240", "3\n7\n2\n", "p=", upper_f(3, 7, 2), 1e-6),  # F(3, 7): both odd
+    ("LIB6310", "10\n0.3\n4\n", "p=", binomial_tail(10, Fraction(3, 10), 4), 1e-6),  # binomial, P(X >= 4)
+    ("LIB6320", "2\n3\n", "p=", 1 - math.exp(-2) * (1 + 2 + 2), 1e-6),  # Poisson, P(X >= 3)
+    ("LIB6330", "20\n7\n5\n2\n", "p=", hypergeometric_tail(20, 7, 5, 2), 1e-6),  # hypergeometric
+    ("LIB6410", "0.025\n", "x=", float(-mpmath.sqrt(2) * mpmath.erfinv(2 * 0.025 - 1)), 1e-5),  # normal point
+    ("LIB6420", "4\n0.05\n", "x²=",  # chi-square point, 4 df: the x with upper probability .05
+     float(mpmath.findroot(lambda t: mpmath.gammainc(2, t / 2, regularized=True) - 0.05, 9)), 1e-5),
+]
+
+
+@pytest.mark.parametrize("program, keys, label, value, tolerance", DISTRIBUTIONS,
+                         ids=[f"{c[0]}-{c[1].strip()}".replace("\n", ",") for c in DISTRIBUTIONS])
+def test_distributions(program, keys, label, value, tolerance):
+    assert first(program, keys, label) == pytest.approx(value, rel=tolerance)
+
