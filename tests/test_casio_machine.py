@@ -139,3 +139,12 @@ def test_then_star_ends_the_program_as_the_library_writes_it():
     assert yaseer.run('10 SR=1: IF SR THEN *\n20 PRINT "GOES ON"').text == ""
     assert yaseer.run('10 IF 0 THEN * ELSE PRINT "ELSE"').text == "ELSE\n"
     assert yaseer.run("10 IF 1 THEN *", dialect="gw").error == "Syntax error in 10"  # gw has no such form
+
+
+def test_files_on_the_cassette_are_in_the_programs_directory_in_the_machines_codes(tmp_path):
+    # OPEN's samples: "CAS0:TEST" FOR OUTPUT, PRINT #1, CLOSE; then FOR INPUT, INPUT #1
+    program = ('10 OPEN "CAS0:TEST" FOR OUTPUT AS #1\n20 PRINT #1, "X";CHR$(225);"Y"\n30 CLOSE\n'
+               '40 OPEN "CAS0:TEST" FOR INPUT AS #1\n50 INPUT #1, A$\n60 CLOSE: PRINT A$; LEN(A$)')
+    result = yaseer.run(program, files=tmp_path)
+    assert result.text == "X≤Y 3 \n" and result.error is None
+    assert (tmp_path / "TEST").read_bytes().startswith(b"X\xe1Y\r\n")  # &HE1: the machine's code

@@ -41,7 +41,7 @@ class CharacterSet:
     """The characters standing for codes 0..255 (``high``: the 128 for codes 128..255, or None
     for Latin-1)."""
 
-    __slots__ = ("name", "_chars", "_codes", "_own_files")
+    __slots__ = ("name", "_chars", "_codes", "_own_files", "_codec")
 
     def __init__(self, name: str, high: str | None = None, own_files: bool = True):
         self.name = name
@@ -51,6 +51,7 @@ class CharacterSet:
             raise ValueError(f"character set {name}: 256 distinct characters needed")
         self._chars = chars
         self._codes = {ch: n for n, ch in enumerate(chars)}
+        self._codec = None
 
     def __repr__(self) -> str:  # stable across processes: the program cache keys on the dialect's repr
         return f"CharacterSet({self.name!r})"
@@ -72,6 +73,39 @@ class CharacterSet:
         """Text as bytes in the machine's codes; a character it has no code for is ``?``."""
         codes = self._codes
         return bytes([codes.get(ch, 63) for ch in text])
+
+    @property
+    def encoding(self) -> str:
+        """A name ``open()`` and ``bytes.decode`` accept for these codes (registered with
+        :mod:`codecs` on first use; ``latin-1`` for Latin-1)."""
+        if not self._own_files:
+            return "latin-1"
+        if self._codec is None:
+            import codecs
+
+            table = "".join(self._chars)
+            mapping = codecs.charmap_build(table)
+            codec_name = f"yaseer-{self.name}"
+
+            def encode(text, errors="strict"):
+                return codecs.charmap_encode(text, errors, mapping)
+
+            def decode(data, errors="strict"):
+                return codecs.charmap_decode(data, errors, table)
+
+            class Encoder(codecs.IncrementalEncoder):
+                def encode(self, text, final=False):
+                    return codecs.charmap_encode(text, self.errors, mapping)[0]
+
+            class Decoder(codecs.IncrementalDecoder):
+                def decode(self, data, final=False):
+                    return codecs.charmap_decode(data, self.errors, table)[0]
+
+            info = codecs.CodecInfo(encode, decode, name=codec_name,
+                                    incrementalencoder=Encoder, incrementaldecoder=Decoder)
+            codecs.register(lambda name: info if name in (codec_name, codec_name.replace("-", "_")) else None)
+            self._codec = codec_name
+        return self._codec
 
     def program_text(self, data: bytes) -> str:
         """A program file's text: UTF-8 when it is UTF-8, else the machine's codes (a file

@@ -66,8 +66,9 @@ FIELDS = (
     "enter_key",  # str: "\n"
     "empty_input_keeps",  # bool: False
     "library_forms",  # bool: False
+    "file_devices",  # tuple[str, ...]: ()
 )
-DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False)
+DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, ())
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -158,6 +159,8 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         ``library_forms``: True (casio) accepts what Becker's library for the
         FX-850P writes and the manual does not describe: ``THEN *`` (the program
         ends there; docs/compatibility.md).
+        ``file_devices``: device names a file name may start with that mean the
+        program's one directory (casio: ``CAS0:``, ``CAS1:``, the cassette).
 
     Start-up environment
         ``angle``: ``"DEG"`` or ``"RAD"``, the unit of SIN COS TAN ATN at RUN.
@@ -204,7 +207,7 @@ CASIO = Dialect(
     width=None, zone=14, on_division_by_zero="stop", on_overflow="stop", angle="DEG",
     implicit_arrays=AL_YASEER_DIMENSIONS, default_dimension=10, program_areas=True,
     display=(32, 8, 2), controls=tuple(sorted(CASIO_CONTROLS.items())), charset=CASIO_CHARACTERS, enter_key="\r",
-    empty_input_keeps=True, library_forms=True,
+    empty_input_keeps=True, library_forms=True, file_devices=("CAS0:", "CAS1:"),
 )
 
 GW = Dialect(

@@ -204,7 +204,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.tracing = False  # TRON: lines run are shown as [n]
         self.subscript_base = 0  # OPTION BASE
         # the program's sequential files, all in one directory (``files``; default the current one)
-        self.files = FileTable(Sandbox(files))
+        self.files = FileTable(Sandbox(files), self.dialect.charset.encoding, self.dialect.file_devices)
         # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
         # ``yaseer run`` stops at once): see _on_interrupt.
         self.resumable_breaks = False
