@@ -30,7 +30,11 @@ KEYS = HERE / "casio_library" / "keys.txt"
 ENVIRONMENT = "YASEER_CASIO_LIBRARY"
 SECONDS = 20
 NOT_PROGRAMS = {"LIB_INFO.BAS"}  # the library's table of contents, not a program
-DEFAULT_RESULT = r"=\s*-?\d|=\s*-?\.\d"  # a number after "=": the way its programs show a result
+# A number after "=" on a screen line that is not a prompt (prompts end with "?"): how the
+# library's programs show a result.
+DEFAULT_RESULT = r"(?m)^(?!.*\?\s*$).*=\s*-?\.?\d"
+# Keys for a program without a script of its own: a menu's first choice, then 2 for each number.
+DEFAULT_KEYS = "1" + "2\n" * 8
 END_OF_KEYS = "Input past end"
 
 
@@ -48,8 +52,9 @@ def key_scripts(path: Path = KEYS) -> dict[str, tuple[str, str]]:
     """PROGRAM -> (keys, result pattern) from the key-script file.
 
     One program a line: ``NAME | keys | pattern``; in keys ``\\n`` is EXE (a line
-    break) and other backslash escapes are Python's; an empty pattern is the default
-    (a number after ``=``).  ``#`` starts a comment line."""
+    break) and other backslash escapes are Python's (``\\x1f``: the cursor-down key); an
+    empty pattern is the default (a number after ``=`` on a line that is no prompt).  ``#``
+    starts a comment line.  A program without a line gets :data:`DEFAULT_KEYS`."""
     scripts = {}
     for raw in path.read_text(encoding="utf-8").splitlines():
         if not raw.strip() or raw.lstrip().startswith("#"):
@@ -118,7 +123,7 @@ def main(argv: list[str]) -> int:
         errors = syntax_errors(program)
         if not errors:
             loaded += 1
-        keys, pattern = scripts.get(program.stem.upper(), ("\n", DEFAULT_RESULT))
+        keys, pattern = scripts.get(program.stem.upper(), (DEFAULT_KEYS, DEFAULT_RESULT))
         problem = verdict(*run(program, keys, folder), pattern)
         if problem is None and not errors:  # a bad line an ON ERROR handler hid is no run
             ran += 1
