@@ -148,3 +148,18 @@ def test_files_on_the_cassette_are_in_the_programs_directory_in_the_machines_cod
     result = yaseer.run(program, files=tmp_path)
     assert result.text == "X≤Y 3 \n" and result.error is None
     assert (tmp_path / "TEST").read_bytes().startswith(b"X\xe1Y\r\n")  # &HE1: the machine's code
+
+
+def test_the_data_bank_writes_searches_reads_saves_and_loads(tmp_path):
+    # WRITE#'s sample: every item beginning with YOU becomes SHE (RESTORE# "YOU", 0, 50 jumps
+    # to 50 when none is left); READ# reads items across records; SAVE#/LOAD# keep them in a file
+    program = ('10 NEW#: WRITE# "YOU": WRITE# "HE", 12: WRITE# "YOUR DOG"\n'
+               '20 RESTORE#\n30 RESTORE# "YOU", 0, 50\n40 WRITE# "SHE": GOTO 30\n'
+               '50 LIST#: RESTORE#: READ# A$, B$, N, C$: PRINT A$; B$; N * 2; C$\n'
+               '60 SAVE# "CAS0:BANK": NEW#: LOAD# "BANK": LOAD# "BANK", M\n'
+               '70 RESTORE# "E", 1: RESTORE# "HE": READ# D$, M: PRINT D$; M\n'
+               '80 RESTORE# "DOG"')
+    result = yaseer.run(program, files=tmp_path)
+    assert result.text == "SHE\nHE, 12\nSHE\nSHEHE 24 SHE\nHE 12 \n"
+    assert result.error == "Out of DATA in 80"  # the manual's DA error: no item begins with DOG
+    assert (tmp_path / "BANK").read_text() == "SHE\nHE, 12\nSHE\n"

@@ -36,6 +36,9 @@ def _jump_targets(stmt) -> list:
         return [stmt.target] if stmt.target else []
     if isinstance(stmt, ast.Resume) and stmt.mode == "line":
         return [stmt.target]
+    if isinstance(stmt, ast.Bank) and stmt.word == "RESTORE#" and len(stmt.args) == 3 \
+            and isinstance(stmt.args[2], ast.Num):  # RESTORE# "text", mode, line: where "not found" goes
+        return [int(stmt.args[2].value)]
     if isinstance(stmt, ast.If):
         out = []
         for branch in (stmt.then, stmt.otherwise):

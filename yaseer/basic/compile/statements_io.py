@@ -6,8 +6,8 @@ mixes it in).  The machine's helpers they call are in runtime.py and files.py.
 from __future__ import annotations
 
 from yaseer.basic.source import syntax_tree as ast
-from yaseer.basic.compile.expressions import CompileError
-from yaseer.basic.errors import UNDEFINED_LINE
+from yaseer.basic.compile.expressions import CompileError, syntax_error
+from yaseer.basic.errors import OUT_OF_DATA, UNDEFINED_LINE
 
 
 def _is_safe_item(item) -> bool:
@@ -132,6 +132,49 @@ class InputOutputCompiler:
                 value = f"({value} if {value} is not None else {self.expr(target, scope)[0]})"
             self.assign(target, value, "s" if kinds[n] == "s" else self.numbers.widest,
                         scope, self.numbers.typed and kinds[n] != "s")
+
+    def stmt_Bank(self, stmt, scope):
+        """The DATA BANK's statements (yaseer/basic/machine/databank.py), casio only."""
+        word, args = stmt.word, stmt.args
+        if word == "WRITE#":
+            pieces = "".join((self.string(a, scope) if self.kind_of(a) == "s" else
+                              f"_strs({self.numeric(a, scope)})") + ", " for a in args)
+            self.emit(f"_M.bank.write(({pieces}))")
+        elif word == "READ#":
+            if not args or not all(isinstance(a, (ast.Var, ast.Elem)) for a in args):
+                raise syntax_error()
+            for target in args:
+                text = self.kind_of(target) == "s"
+                self.assign(target, "_M.bank.read()" if text else "_M.bank_read_number()",
+                            "s" if text else self.numbers.widest, scope, False)
+        elif word == "RESTORE#":
+            self._bank_restore(args, scope)
+        elif word in ("LIST#", "NEW#") and not args:
+            self.emit("_M.bank_list()" if word == "LIST#" else "_M.bank.clear()")
+        elif word == "SAVE#" and len(args) == 1:
+            self.emit(f"_M.bank_save({self.string(args[0], scope)})")
+        elif word == "LOAD#" and len(args) in (1, 2):
+            if len(args) == 2 and not (isinstance(args[1], ast.Var) and args[1].name == "M"):
+                raise syntax_error()  # LOAD# "file", M: append
+            self.emit(f"_M.bank_load({self.string(args[0], scope)}, {len(args) == 2})")
+        else:
+            raise syntax_error()
+
+    def _bank_restore(self, args, scope) -> None:
+        """RESTORE#; RESTORE# "text"[, mode][, line]: not found is Out of DATA, or a jump to line."""
+        if not args:
+            self.emit("_M.bank.restore()")
+            return
+        if len(args) > 3:
+            raise syntax_error()
+        mode = f"int({self.numeric(args[1], scope)})" if len(args) >= 2 else "0"
+        found = f"_M.bank.find({self.string(args[0], scope)}, {mode})"
+        if len(args) == 3:
+            if not isinstance(args[2], ast.Num):
+                raise syntax_error()
+            self.emit(f"if not {found}: {self.jump(int(args[2].value))}")
+            return
+        self.emit(f"if not {found}: raise _err('Out of DATA', {OUT_OF_DATA})")
 
     def stmt_LineInput(self, stmt, scope):
         if stmt.channel is not None:

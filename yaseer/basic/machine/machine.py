@@ -57,6 +57,7 @@ from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
     BasicError, OutputError, BREAK, INPUT_PAST_END, OUT_OF_DATA, OUT_OF_MEMORY, SYNTAX_ERROR, UNDEFINED_PROGRAM_AREA,
 )
 from yaseer.basic.machine.console import Console
+from yaseer.basic.machine.databank import DataBankStatements
 from yaseer.basic.machine.breaks import Breaks, _interrupt_handler
 from yaseer.basic.machine.signals import (  # noqa: F401  (the run-time exceptions are re-exported)
     END, INTERNAL_ERROR, BreakPoint, DirectJump, ErrorTrapping, ProgramEnd, ProgramStop, to_basic_error,
@@ -144,7 +145,7 @@ class _AreaRuntime:
 FIRST_FILE_AREA = 1000  # the program areas of program files (GOSUB "file:label") are numbered from here
 
 
-class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Console):
+class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Console, DataBankStatements):
     """A pocket-computer BASIC machine (see the module docstring)."""
 
     def __init__(self, screen: TextIO | None = None, printer: TextIO | None = None,

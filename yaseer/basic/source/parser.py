@@ -330,6 +330,9 @@ class _ToAst:
     def cls_stmt(self, c):
         return ast.Cls()
 
+    def bank_stmt(self, c):
+        return ast.Bank(c[0].value, _values(c[1:]))
+
     def locate_stmt(self, c):
         return ast.Locate(c[1], c[3])
 

@@ -58,6 +58,8 @@ DIALECT_WORDS = {
     "PROG": "PROG", "DEG": "DEG", "RAD": "RAD", "PI": "SYSVAR", "XOR": "XOR", "EQV": "EQV",
     "IMP": "IMP", "DEFINT": "DEFTYPE", "DEFSNG": "DEFTYPE", "DEFDBL": "DEFTYPE", "DEFSTR": "DEFTYPE",
     "LOCATE": "LOCATE", "INKEY$": "SYSVAR", "PEEK": "FUNC",
+    "WRITE#": "BANK", "READ#": "BANK", "RESTORE#": "BANK", "LIST#": "BANK", "NEW#": "BANK",
+    "SAVE#": "BANK", "LOAD#": "BANK",
 }
 # GW-BASIC reads these keywords even when name characters follow (``FNA``, ``TAB(``).
 _GW_PREFIX_KEYWORDS = ("FN",)

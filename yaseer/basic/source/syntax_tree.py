@@ -419,6 +419,13 @@ class Cls:
 
 
 @_node
+class Bank:
+    """A DATA BANK statement (``WRITE#`` ... ``LOAD#``) and its expressions."""
+    word: str
+    args: list
+
+
+@_node
 class EndMark:
     """``THEN *`` / ``ELSE *``: Becker's library writes it where a program stops (casio only)."""
 
