@@ -163,3 +163,11 @@ def test_the_data_bank_writes_searches_reads_saves_and_loads(tmp_path):
     assert result.text == "SHE\nHE, 12\nSHE\nSHEHE 24 SHE\nHE 12 \n"
     assert result.error == "Out of DATA in 80"  # the manual's DA error: no item begins with DOG
     assert (tmp_path / "BANK").read_text() == "SHE\nHE, 12\nSHE\n"
+
+
+def test_text_printed_before_the_first_drawing_is_on_the_display():
+    # a long stream of text, then LOCATE: the rows the virtual screen still holds are shown
+    program = '10 FOR I=1 TO 500: PRINT "ROW";I: NEXT\n20 LOCATE 0,7: PRINT "END";'
+    result = yaseer.run(program)
+    assert result.screens == ["ROW 500\nEND\n"]
+    assert result.text.startswith("ROW 1 \nROW 2 \n")  # streamed until the LOCATE

@@ -17,6 +17,7 @@ INKEY$ and INPUT$ take characters, a line break being the dialect's ``enter_key`
 
 from __future__ import annotations
 
+import re
 import sys
 
 from yaseer.basic.machine import runtime
@@ -30,7 +31,10 @@ from yaseer.basic.machine.screen import OutputStream
 # shift key is held (PEEK(206) after INPUT$).  Every other address holds what POKE left, 0 at first.
 # (POKE and DEFSEG are the casio words' statements; they share ``memory`` and ``segment``.)
 LAST_INPUT_KEY = 0x65B
-EMPTY_POLLS = 1000  # INKEY$ answers "" this many times at the end of the key stream, then Input past end
+EMPTY_POLLS = 1000
+TAIL_PIECES = 1024  # pieces of streamed text kept before they are cut to the screen's last rows
+# Control codes that place text where the program chooses (the display's DRAWING_ACTIONS).
+_DRAWING = re.compile("[\x02\x05\x06\x08\x0b\x0c\x1c-\x1f]")  # INKEY$ answers "" this many times at the end of the key stream, then Input past end
 
 
 def end_of_keys() -> BasicError:
@@ -42,17 +46,29 @@ def end_of_keys() -> BasicError:
 
 
 class DisplayStream(OutputStream):
-    """The screen stream of a machine with a display: the model gets every character (see
-    the module docstring); the text is streamed on until the program has drawn."""
+    """The screen stream of a machine with a display (see the module docstring).
+
+    Until the program draws, the text is streamed on and only its last rows are kept
+    (``_tail``): the display is brought up to date from them when the program first
+    draws, so a program that only PRINTs pays almost nothing for the model."""
 
     def __init__(self, stream, display: Display, width: int | None = None):
         super().__init__(stream, width)
         self.display = display
+        self._tail: list[str] = []
 
     def write(self, text: str) -> None:
         if not text:
             return
         display = self.display
+        if not display.drawn and (text.isprintable() or not _DRAWING.search(text)):
+            tail = self._tail
+            tail.append(text)
+            if len(tail) > TAIL_PIECES:
+                self._shorten_tail()
+            OutputStream.write(self, text)
+            return
+        self.catch_up()
         display.write(text)
         if display.drawn:  # drawn, before or by this text: screens from now on, not streamed text
             self.column = display.x
@@ -61,6 +77,30 @@ class DisplayStream(OutputStream):
 
     def new_row(self) -> None:
         self.write("\n")
+
+    def catch_up(self) -> None:
+        """Put the streamed text kept so far on the display (before it is drawn on)."""
+        if self._tail:
+            text = "".join(self._tail)
+            self._tail.clear()
+            self.display.write(text)
+
+    def _shorten_tail(self) -> None:
+        """Keep only the text that can still be on the virtual screen: its last rows."""
+        display = self.display
+        text = "".join(self._tail)
+        cut = len(text)
+        for _ in range(display.rows + 1):  # the starts of the last lines
+            cut = max(text.rfind("\n", 0, cut), text.rfind("\r", 0, cut))
+            if cut < 0:
+                break
+        kept = text[cut + 1:] if cut >= 0 else text
+        if cut < 0:  # one long line: drop whole rows from its start, keeping the columns aligned
+            screen = display.columns * display.rows
+            extra = len(kept) - screen
+            if extra > 0:
+                kept = kept[extra - extra % display.columns + display.columns:]
+        self._tail = [kept]
 
 
 class Console:
@@ -92,6 +132,7 @@ class Console:
         column, row = runtime.cint(runtime.fix(x)), runtime.cint(runtime.fix(y))
         if not (0 <= column < display.columns and 0 <= row < display.rows):
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self.screen.catch_up()
         display.locate(column, row)
         self.screen.column = column
 

@@ -26,7 +26,10 @@ instead of the streamed text.  Columns and rows are 0-based.
 
 from __future__ import annotations
 
+import re
+
 # Codes that place text where the program chooses: once one is written the display is "drawn".
+_CONTROL = re.compile("[\x00-\x1f]")
 DRAWING_ACTIONS = frozenset(("line_top", "line_cancel", "line_end", "backspace", "home", "clear",
                              "right", "left", "up", "down"))
 
@@ -70,22 +73,33 @@ class Display:
     # ------------------------------------------------------------ text
     def write(self, text: str) -> None:
         """Show ``text`` from the cursor on: characters, line ends and control codes."""
-        cells, columns, controls = self.cells, self.columns, self.controls
         self.changed = True
-        for ch in text:
-            code = ord(ch)
-            if code < 32 or ch == "\n":
-                action = "carriage_return" if ch == "\n" else controls.get(code)
-                if action is not None:
-                    getattr(self, "_" + action)()
-                    if action in DRAWING_ACTIONS:
-                        self.drawn = True
-                continue
-            cells[self.y][self.x] = ch
-            self.x += 1
+        start = 0
+        for match in _CONTROL.finditer(text):
+            if match.start() > start:
+                self._put(text[start:match.start()])
+            ch = match.group()
+            action = "carriage_return" if ch == "\n" else self.controls.get(ord(ch))
+            if action is not None:
+                getattr(self, "_" + action)()
+                if action in DRAWING_ACTIONS:
+                    self.drawn = True
+            start = match.end()
+        if start < len(text):
+            self._put(text[start:])
+        self._follow()
+
+    def _put(self, run: str) -> None:
+        """Characters without control codes, row by row (a full row wraps at once)."""
+        columns = self.columns
+        while run:
+            room = columns - self.x
+            piece = run[:room]
+            self.cells[self.y][self.x:self.x + len(piece)] = piece
+            self.x += len(piece)
+            run = run[room:]
             if self.x >= columns:
                 self.new_line()
-        self._follow()
 
     def _carriage_return(self) -> None:
         self.new_line()

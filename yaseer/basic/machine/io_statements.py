@@ -51,6 +51,7 @@ class InputOutput:
         if self.on_clear_screen is not None:
             self.on_clear_screen()
         if self.display is not None:
+            self.screen.catch_up()
             self.display.clear()
         self.screen.column = 0
 
