@@ -4,9 +4,7 @@ when it ends, typed on a real pseudo-terminal (pexpect)."""
 
 from __future__ import annotations
 
-import pytest
-
-from test_interactive import Terminal
+from test_interactive import terminal  # noqa: F401  (the pseudo-terminal fixture)
 
 TOP = "\u250c" + "\u2500" * 32 + "\u2510"
 BOTTOM = "\u2514" + "\u2500" * 32 + "\u2518"
@@ -14,14 +12,6 @@ BOTTOM = "\u2514" + "\u2500" * 32 + "\u2518"
 
 def lcd(first: str, second: str) -> str:
     return f"{TOP}\n\u2502{first.ljust(32)}\u2502\n\u2502{second.ljust(32)}\u2502\n{BOTTOM}\n"
-
-
-@pytest.fixture
-def terminal(tmp_path):
-    term = Terminal(tmp_path)
-    yield term
-    if term.child.isalive():
-        term.child.terminate(force=True)
 
 
 def test_a_drawing_program_shows_the_lcd_at_each_key_and_at_its_end(terminal):
