@@ -1,9 +1,12 @@
 """A machine's character codes (0..255) and the Unicode characters yaseer holds for them.
 
-Inside yaseer a string is Python text; a :class:`CharacterSet` says which character
-stands for each of the machine's 256 codes, so that ``CHR$``/``ASC`` answer in the
-machine's codes, a program file or data file written on the machine (bytes) reads
-as text, and a file yaseer writes holds the machine's bytes again.
+Inside the machine a string holds the machine's codes, one character each (``chr(0)`` to
+``chr(255)``), so CHR$, ASC, PEEK, the files' bytes and GW's byte functions agree; a
+:class:`CharacterSet` says which Unicode character *shows* each code.  Text crosses
+between the two at the machine's edges: a program's text and typed keys are turned into
+codes (:meth:`CharacterSet.codes`) as they come in, and what the screen, the printer and
+the LCD's screens show is turned into symbols (:meth:`CharacterSet.symbols`) as it goes
+out.
 
 * :data:`LATIN1`: code n is ``chr(n)`` (GW-BASIC as yaseer has always run it).
 * :data:`CASIO`: the FX-850P/880P's codes as the owner's manual's character code
@@ -38,83 +41,59 @@ _CASIO_HIGH = (
 
 
 class CharacterSet:
-    """The characters standing for codes 0..255 (``high``: the 128 for codes 128..255, or None
-    for Latin-1)."""
+    """The characters that show codes 128..255 (``high``; None: Latin-1, shown as they are)."""
 
-    __slots__ = ("name", "_chars", "_codes", "_own_files", "_codec")
+    __slots__ = ("name", "_chars", "_codes", "_to_symbols", "_to_codes")
 
-    def __init__(self, name: str, high: str | None = None, own_files: bool = True):
+    def __init__(self, name: str, high: str | None = None):
         self.name = name
-        self._own_files = own_files  # False: a program file that is not UTF-8 reads with U+FFFD for its bad bytes
         chars = [chr(n) for n in range(128)] + (list(high) if high else [chr(n) for n in range(128, 256)])
         if len(chars) != 256 or len(set(chars)) != 256:
             raise ValueError(f"character set {name}: 256 distinct characters needed")
         self._chars = chars
         self._codes = {ch: n for n, ch in enumerate(chars)}
-        self._codec = None
+        self._to_symbols = {n: chars[n] for n in range(128, 256)} if high else None
+        self._to_codes = {ord(ch): n for n, ch in enumerate(chars) if n >= 128} if high else None
 
     def __repr__(self) -> str:  # stable across processes: the program cache keys on the dialect's repr
         return f"CharacterSet({self.name!r})"
 
+    @property
+    def own_symbols(self) -> bool:
+        """True when codes 128..255 are shown as symbols of their own (not Latin-1)."""
+        return self._to_symbols is not None
+
     def char(self, code: int) -> str:
-        """The character of ``code`` (0..255)."""
+        """The character that shows ``code`` (0..255)."""
         return self._chars[code]
 
     def code(self, ch: str) -> int | None:
-        """The code of character ``ch``, None if the machine has none."""
+        """The code character ``ch`` shows, None if the machine has none."""
         return self._codes.get(ch)
 
-    def decode(self, data: bytes) -> str:
-        """Bytes in the machine's codes as text."""
-        chars = self._chars
-        return "".join([chars[b] for b in data])
+    def symbols(self, text: str) -> str:
+        """Text in the machine's codes (``chr(0..255)``) as it is shown: 128..255 as symbols."""
+        if self._to_symbols is None or text.isascii():
+            return text
+        return text.translate(self._to_symbols)
 
-    def encode(self, text: str) -> bytes:
-        """Text as bytes in the machine's codes; a character it has no code for is ``?``."""
-        codes = self._codes
-        return bytes([codes.get(ch, 63) for ch in text])
-
-    @property
-    def encoding(self) -> str:
-        """A name ``open()`` and ``bytes.decode`` accept for these codes (registered with
-        :mod:`codecs` on first use; ``latin-1`` for Latin-1)."""
-        if not self._own_files:
-            return "latin-1"
-        if self._codec is None:
-            import codecs
-
-            table = "".join(self._chars)
-            mapping = codecs.charmap_build(table)
-            codec_name = f"yaseer-{self.name}"
-
-            def encode(text, errors="strict"):
-                return codecs.charmap_encode(text, errors, mapping)
-
-            def decode(data, errors="strict"):
-                return codecs.charmap_decode(data, errors, table)
-
-            class Encoder(codecs.IncrementalEncoder):
-                def encode(self, text, final=False):
-                    return codecs.charmap_encode(text, self.errors, mapping)[0]
-
-            class Decoder(codecs.IncrementalDecoder):
-                def decode(self, data, final=False):
-                    return codecs.charmap_decode(data, self.errors, table)[0]
-
-            info = codecs.CodecInfo(encode, decode, name=codec_name,
-                                    incrementalencoder=Encoder, incrementaldecoder=Decoder)
-            codecs.register(lambda name: info if name in (codec_name, codec_name.replace("-", "_")) else None)
-            self._codec = codec_name
-        return self._codec
+    def codes(self, text: str) -> str:
+        """Text as typed or shown (symbols) in the machine's codes; other characters stay."""
+        if self._to_codes is None or text.isascii():
+            return text
+        return text.translate(self._to_codes)
 
     def program_text(self, data: bytes) -> str:
-        """A program file's text: UTF-8 when it is UTF-8, else the machine's codes (a file
-        saved on the machine itself)."""
+        """A program file's text, shown: UTF-8 when it is UTF-8, else bytes in the machine's
+        codes (a file saved on the machine) as their symbols; Latin-1's machine reads a bad
+        byte as U+FFFD."""
         try:
             return data.decode("utf-8")
         except UnicodeDecodeError:
-            return self.decode(data) if self._own_files else data.decode("utf-8", errors="replace")
+            if self._to_symbols is None:
+                return data.decode("utf-8", errors="replace")
+            return self.symbols(data.decode("latin-1"))
 
 
-LATIN1 = CharacterSet("latin-1", own_files=False)  # gw reads program files as it always has
+LATIN1 = CharacterSet("latin-1")  # gw reads and shows characters as it always has
 CASIO = CharacterSet("casio", _CASIO_HIGH)

@@ -21,7 +21,6 @@ import re
 import sys
 
 from yaseer.basic.machine import runtime
-from yaseer.basic.dialects.charset import LATIN1
 from yaseer.basic.machine.display import Display, boxed
 from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END
 from yaseer.basic.machine.screen import OutputStream
@@ -43,6 +42,27 @@ def end_of_keys() -> BasicError:
     err = BasicError("Input past end", INPUT_PAST_END)
     err.trappable = False
     return err
+
+
+class SymbolStream:
+    """An output stream that shows the machine's codes 128..255 as its character set's symbols."""
+
+    def __init__(self, stream, charset):
+        self.stream = stream
+        self.charset = charset
+
+    def write(self, text: str):
+        return self.stream.write(self.charset.symbols(text))
+
+    def flush(self) -> None:
+        self.stream.flush()
+
+    def isatty(self) -> bool:
+        isatty = getattr(self.stream, "isatty", None)
+        return bool(isatty is not None and isatty())
+
+    def __getattr__(self, name):  # getvalue, close ...: the stream's own
+        return getattr(self.stream, name)
 
 
 class DisplayStream(OutputStream):
@@ -114,6 +134,7 @@ class Console:
         self.last_input_key = 13
         self.boxed_screens = False  # True: screens are drawn in an LCD's frame (the interactive session)
         self._empty_polls = 0
+        screen = self.shown(screen)
         geometry = self.dialect.display
         if geometry is None:
             self.display = None
@@ -121,6 +142,12 @@ class Console:
         columns, rows, shown = geometry
         self.display = Display(columns, rows, shown, dict(self.dialect.controls))
         return DisplayStream(screen, self.display, self.dialect.width)
+
+    def shown(self, stream):
+        """``stream`` as the machine's output reaches it: codes 128..255 as the dialect's
+        symbols (casio), or as they are."""
+        charset = self.dialect.charset
+        return SymbolStream(stream, charset) if charset.own_symbols else stream
 
     # ------------------------------------------------------------ the display
     def locate(self, x, y) -> None:
@@ -143,10 +170,11 @@ class Console:
         if display is None or not display.drawn or self.csv:
             return
         text = display.screen_text()
-        if final and self.screens and self.screens[-1] == text and not display.changed:
+        shown = self.dialect.charset.symbols(text)
+        if final and self.screens and self.screens[-1] == shown and not display.changed:
             return
         display.changed = False
-        self.screens.append(text)
+        self.screens.append(shown)
         stream = self.screen.stream
         stream.write(boxed(display.shown_lines(), display.columns) if self.boxed_screens else text)
         stream.flush()
@@ -166,8 +194,9 @@ class Console:
         return self.input_stream if self.input_stream is not None else sys.stdin
 
     def _key_text(self, text: str) -> str:
-        """Keys as read: a line break is the dialect's enter key (EXE)."""
+        """Keys as read, in the machine's codes: a line break is the dialect's enter key (EXE)."""
         enter = self.dialect.enter_key
+        text = self.dialect.charset.codes(text)
         return text if enter == "\n" else text.replace("\n", enter)
 
     def inkey(self) -> str:
@@ -193,27 +222,6 @@ class Console:
         if len(text) < k:
             raise end_of_keys()
         return self._key_text(text)
-
-    # ------------------------------------------------------------ the character set
-    def character_functions(self) -> dict:
-        """CHR$ and ASC in the machine's codes (only where they are not Latin-1's)."""
-        charset = self.dialect.charset
-        if charset is LATIN1:
-            return {}
-
-        def chr_dollar(n):
-            k = runtime.cint(n)
-            if not 0 <= k <= 255:
-                raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-            return charset.char(k)
-
-        def asc(s):
-            if not s:
-                raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-            code = charset.code(s[0])
-            return float(code if code is not None else 63)
-
-        return {"_chr": chr_dollar, "_asc": asc}
 
     # ------------------------------------------------------------ memory
     def peek(self, address) -> float:

@@ -132,13 +132,13 @@ class DataBankStatements:
     def bank_save(self, name: str) -> None:
         path = self.files.sandbox.path(self._bank_file(name))
         try:
-            path.write_bytes(self.bank.text().encode(self.files.encoding))
+            path.write_bytes(self.bank.text().encode("latin-1"))  # the codes are the bytes
         except OSError:
             raise BasicError("Path/File access error", PATH_FILE_ACCESS_ERROR) from None
 
     def bank_load(self, name: str, append: bool) -> None:
         path = self.files.sandbox.existing(self._bank_file(name))
-        self.bank.load(path.read_bytes().decode(self.files.encoding), append)
+        self.bank.load(path.read_bytes().decode("latin-1"), append)
 
     def _bank_file(self, name: str) -> str:
         for device in self.files.devices:

@@ -159,10 +159,10 @@ def directory_entry(name: tuple[str, str], is_dir: bool) -> str:
 class OpenFile:
     """One open sequential file: ``mode`` "I", "O" or "A"."""
 
-    def __init__(self, path: Path, mode: str, encoding: str = "latin-1"):
+    def __init__(self, path: Path, mode: str):
         self.path, self.mode = path, mode
         if mode == "I":
-            data = path.read_bytes().decode(encoding)
+            data = path.read_bytes().decode("latin-1")
             cut = data.find(END_OF_FILE)
             self.data = data if cut < 0 else data[:cut]
             self.size = len(data)
@@ -170,10 +170,10 @@ class OpenFile:
             self.stream = None
         else:
             if mode == "A" and path.is_file():
-                old = path.read_bytes().decode(encoding)
+                old = path.read_bytes().decode("latin-1")
                 cut = old.find(END_OF_FILE)
-                path.write_bytes((old if cut < 0 else old[:cut]).encode(encoding))
-            handle = open(path, "a" if mode == "A" else "w", encoding=encoding, newline="\r\n")
+                path.write_bytes((old if cut < 0 else old[:cut]).encode("latin-1"))
+            handle = open(path, "a" if mode == "A" else "w", encoding="latin-1", newline="\r\n")
             self.stream = OutputStream(handle)
             self.written = handle.tell()
 
@@ -266,10 +266,9 @@ class OpenFile:
 class FileTable:
     """The open files of a machine, by file number, all inside one :class:`Sandbox`."""
 
-    def __init__(self, sandbox: Sandbox | None = None, encoding: str = "latin-1", devices: tuple = ()):
+    def __init__(self, sandbox: Sandbox | None = None, devices: tuple = ()):
         self.sandbox = sandbox or Sandbox()
         self.open_files: dict[int, OpenFile] = {}
-        self.encoding = encoding  # the machine's character codes in its files (casio: dialects.charset)
         self.devices = devices  # device names that mean the sandbox ("CAS0:" on the Casio)
 
     @staticmethod
@@ -296,7 +295,7 @@ class FileTable:
                for f in self.open_files.values()):
             raise _error(FILE_ALREADY_OPEN)
         try:
-            self.open_files[k] = OpenFile(path, kind, self.encoding)
+            self.open_files[k] = OpenFile(path, kind)
         except IsADirectoryError:
             raise _error(PATH_FILE_ACCESS_ERROR) from None
         except OSError:

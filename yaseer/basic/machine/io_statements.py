@@ -245,6 +245,7 @@ class InputOutput:
             self._reading_input = False
         if not line:
             raise end_of_keys()
+        line = self.dialect.charset.codes(line)  # keys typed as symbols: the machine's codes
         self.last_input_key = 13  # EXE (PEEK: console.LAST_INPUT_KEY)
         if self.input_stream is not None:
             self.screen.write(line if line.endswith("\n") else line + "\n")

@@ -160,7 +160,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self._printed_number, self._number_text = (
             (_same, values.number_to_text) if self.dialect.typed_numbers else (_as_number, formatting.number_to_text))
         self.screen = self._init_console(screen if screen is not None else sys.stdout)
-        self.printer = OutputStream(printer if printer is not None else self.screen.stream,
+        self.printer = OutputStream(self.shown(printer) if printer is not None else self.screen.stream,
                                     self.dialect.printer_width, moves_items=False)
         if printer is None:
             self.printer = self.screen
@@ -205,7 +205,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.tracing = False  # TRON: lines run are shown as [n]
         self.subscript_base = 0  # OPTION BASE
         # the program's sequential files, all in one directory (``files``; default the current one)
-        self.files = FileTable(Sandbox(files), self.dialect.charset.encoding, self.dialect.file_devices)
+        self.files = FileTable(Sandbox(files), self.dialect.file_devices)
         # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
         # ``yaseer run`` stops at once): see _on_interrupt.
         self.resumable_breaks = False
@@ -222,6 +222,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         it reads a line are shown (``Overflow`` of a literal: :func:`scanner.entry_messages`);
         False for lines entered before (the session hands its typed program over at RUN)."""
         program: dict[int, str] = {}
+        text = self.dialect.charset.codes(text)  # symbols typed or read (a UTF-8 file's) as the machine's codes
         for number, statement_text, _ in split_lines(text):
             if statement_text:
                 program[number] = statement_text
@@ -236,6 +237,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
     def set_line(self, number: int, text: str, area: int = 0) -> None:
         """Enter (or, with empty text, delete) one program line, as typed."""
         program = self.programs.setdefault(area, {})
+        text = self.dialect.charset.codes(text)
         if text.strip():
             program[number] = text.strip()
         else:
@@ -363,7 +365,6 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_csng": float, "_cdbl": float,
         }
         ns.update(self._gw_functions())
-        ns.update(self.character_functions())
         if self.dialect.typed_numbers:
             ns.update(values.RUNTIME)
             ns.update(arith_policy.helpers(self.arith, ns["_idiv"], ns["_mod"], ns["_pow"]))
@@ -589,6 +590,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
 
     def execute_direct(self, text: str) -> str:
         """Run statements typed without a line number against the same variables."""
+        text = self.dialect.charset.codes(text)
         self.show_messages(entry_messages(text, self.dialect))
         compiled = self._compile("direct", {0: text}, direct=True)
         self.namespaces.pop("direct", None)
