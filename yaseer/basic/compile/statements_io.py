@@ -139,36 +139,36 @@ class InputOutputCompiler:
         if word == "WRITE#":
             pieces = "".join((self.string(a, scope) if self.kind_of(a) == "s" else
                               f"_strs({self.numeric(a, scope)})") + ", " for a in args)
-            self.emit(f"_M.bank.write(({pieces}))")
+            self.emit(f"_bank().write(({pieces}))")
         elif word == "READ#":
             if not args or not all(isinstance(a, (ast.Var, ast.Elem)) for a in args):
                 raise syntax_error()
             for target in args:
                 text = self.kind_of(target) == "s"
-                self.assign(target, "_M.bank.read()" if text else "_M.bank_read_number()",
+                self.assign(target, "_bank().read()" if text else "_bank().read_number(_M)",
                             "s" if text else self.numbers.widest, scope, False)
         elif word == "RESTORE#":
             self._bank_restore(args, scope)
         elif word in ("LIST#", "NEW#") and not args:
-            self.emit("_M.bank_list()" if word == "LIST#" else "_M.bank.clear()")
+            self.emit("_bank().list(_M)" if word == "LIST#" else "_bank().clear()")
         elif word == "SAVE#" and len(args) == 1:
-            self.emit(f"_M.bank_save({self.string(args[0], scope)})")
+            self.emit(f"_bank().save(_M, {self.string(args[0], scope)})")
         elif word == "LOAD#" and len(args) in (1, 2):
             if len(args) == 2 and not (isinstance(args[1], ast.Var) and args[1].name == "M"):
                 raise syntax_error()  # LOAD# "file", M: append
-            self.emit(f"_M.bank_load({self.string(args[0], scope)}, {len(args) == 2})")
+            self.emit(f"_bank().load_file(_M, {self.string(args[0], scope)}, {len(args) == 2})")
         else:
             raise syntax_error()
 
     def _bank_restore(self, args, scope) -> None:
         """RESTORE#; RESTORE# "text"[, mode][, line]: not found is Out of DATA, or a jump to line."""
         if not args:
-            self.emit("_M.bank.restore()")
+            self.emit("_bank().restore()")
             return
         if len(args) > 3:
             raise syntax_error()
         mode = f"int({self.numeric(args[1], scope)})" if len(args) >= 2 else "0"
-        found = f"_M.bank.find({self.string(args[0], scope)}, {mode})"
+        found = f"_bank().find({self.string(args[0], scope)}, {mode})"
         if len(args) == 3:
             if not isinstance(args[2], ast.Num):
                 raise syntax_error()

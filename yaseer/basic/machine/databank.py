@@ -105,43 +105,38 @@ class DataBank:
         self.records = (self.records if append else []) + records
         self.restore()
 
-
-class DataBankStatements:
-    """WRITE#, READ#, RESTORE#, LIST#, NEW#, SAVE#, LOAD# on the machine (a mixin of Machine)."""
-
-    @property
-    def bank(self) -> DataBank:
-        bank = self.__dict__.get("_bank")
-        if bank is None:
-            bank = self.__dict__["_bank"] = DataBank()
-        return bank
-
-    def bank_read_number(self) -> float:
+    # -- the statements on a machine (its screen, files and number reading)
+    def read_number(self, machine) -> float:
+        """READ# into a numeric variable: the item as a number (a text is Type mismatch, TM)."""
         from yaseer.basic.machine.gwfunctions import number_field
 
-        value = number_field(self.bank.read(), self.dialect.largest_number)
+        value = number_field(self.read(), machine.dialect.largest_number)
         if value is None:
-            raise BasicError("Type mismatch", TYPE_MISMATCH)  # the manual's TM error
+            raise BasicError("Type mismatch", TYPE_MISMATCH)
         return value
 
-    def bank_list(self) -> None:
+    def list(self, machine) -> None:
         """LIST#: each record on a line of its own."""
-        for record in self.bank.records:
-            self.print_items(0, (record,), True)
+        for record in self.records:
+            machine.print_items(0, (record,), True)
 
-    def bank_save(self, name: str) -> None:
-        path = self.files.sandbox.path(self._bank_file(name))
+    def save(self, machine, name: str) -> None:
+        """SAVE# "name": the records into the file (its bytes are the machine's codes)."""
+        path = machine.files.sandbox.path(_file_name(machine, name))
         try:
-            path.write_bytes(self.bank.text().encode("latin-1"))  # the codes are the bytes
+            path.write_bytes(self.text().encode("latin-1"))
         except OSError:
             raise BasicError("Path/File access error", PATH_FILE_ACCESS_ERROR) from None
 
-    def bank_load(self, name: str, append: bool) -> None:
-        path = self.files.sandbox.existing(self._bank_file(name))
-        self.bank.load(path.read_bytes().decode("latin-1"), append)
+    def load_file(self, machine, name: str, append: bool) -> None:
+        """LOAD# "name"[, M]."""
+        path = machine.files.sandbox.existing(_file_name(machine, name))
+        self.load(path.read_bytes().decode("latin-1"), append)
 
-    def _bank_file(self, name: str) -> str:
-        for device in self.files.devices:
-            if name.upper().startswith(device):
-                return name[len(device):]
-        return name
+
+def _file_name(machine, name: str) -> str:
+    """``name`` without a device that means the program's directory (``CAS0:``)."""
+    for device in machine.files.devices:
+        if name.upper().startswith(device):
+            return name[len(device):]
+    return name

@@ -57,7 +57,6 @@ from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
     BasicError, OutputError, BREAK, INPUT_PAST_END, OUT_OF_DATA, OUT_OF_MEMORY, SYNTAX_ERROR, UNDEFINED_PROGRAM_AREA,
 )
 from yaseer.basic.machine.console import Console
-from yaseer.basic.machine.databank import DataBankStatements
 from yaseer.basic.machine.breaks import Breaks, _interrupt_handler
 from yaseer.basic.machine.signals import (  # noqa: F401  (the run-time exceptions are re-exported)
     END, INTERNAL_ERROR, BreakPoint, DirectJump, ErrorTrapping, ProgramEnd, ProgramStop, to_basic_error,
@@ -145,7 +144,7 @@ class _AreaRuntime:
 FIRST_FILE_AREA = 1000  # the program areas of program files (GOSUB "file:label") are numbered from here
 
 
-class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Console, DataBankStatements):
+class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Console):
     """A pocket-computer BASIC machine (see the module docstring)."""
 
     def __init__(self, screen: TextIO | None = None, printer: TextIO | None = None,
@@ -346,6 +345,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
             "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,
             "_oom": self._out_of_memory, "_call": self.call_area, "_call_file": self.call_file,
+            "_bank": self.data_bank,
             "_on": self.on_index, "_for": self.for_push, "_next": self.next_frame,
             "_pop": self.stack.pop, "_next_any": self.next_any, "_stop": self._stopper(area),
             "_dim": self.dim, "_clear": self.clear, "_read_n": rt.read_number,
@@ -473,6 +473,15 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             self.load(text, area)
             self.file_areas[name] = area
         self.call_area(area, line)
+
+    def data_bank(self):
+        """The Casio's DATA BANK (machine/databank.py), made when a program first uses it."""
+        bank = self.__dict__.get("_data_bank")
+        if bank is None:
+            from yaseer.basic.machine.databank import DataBank  # here: only programs that use it load it
+
+            bank = self._data_bank = DataBank()
+        return bank
 
     def _call_basic_area(self, n: int) -> None:
         """Run BASIC program area ``n`` until its RETURN (its own line numbers, shared variables)."""
