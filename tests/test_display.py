@@ -100,3 +100,19 @@ def test_screen_text_is_the_window_one_line_each():
     d = casio()
     d.write("TOP\nSECOND")
     assert d.screen_text() == "TOP\nSECOND\n"
+
+
+def test_a_view_scrolls_only_its_rows():
+    # gw's VIEW PRINT 2 TO 4 (rows 1..3 here, 0-based): the rows outside stay
+    d = Display(80, 25)
+    d.locate(0, 0)
+    d.write("KEPT ABOVE")
+    d.locate(0, 24)
+    d.write("KEPT BELOW")
+    d.set_view(1, 3)
+    for k in range(5):
+        d.write(f"V{k}\n")
+    assert d.lines()[:5] == ["KEPT ABOVE", "V3", "V4", "", ""]
+    assert d.lines()[24] == "KEPT BELOW"
+    d.clear()
+    assert d.lines()[:4] == ["KEPT ABOVE", "", "", ""] and (d.x, d.y) == (0, 1)

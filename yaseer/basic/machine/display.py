@@ -37,7 +37,8 @@ DRAWING_ACTIONS = frozenset(("line_top", "line_cancel", "line_end", "backspace",
 class Display:
     """``columns`` x ``rows`` character cells, ``shown`` rows visible (see module docstring)."""
 
-    __slots__ = ("columns", "rows", "shown", "controls", "cells", "x", "y", "top", "drawn", "changed")
+    __slots__ = ("columns", "rows", "shown", "controls", "cells", "x", "y", "top", "drawn", "changed",
+                 "view_top", "view_bottom")
 
     def __init__(self, columns: int, rows: int, shown: int | None = None, controls: dict | None = None):
         self.columns = columns
@@ -48,6 +49,7 @@ class Display:
         self.x = 0
         self.y = 0
         self.top = 0  # the first row shown
+        self.view_top, self.view_bottom = 0, rows - 1  # the rows that scroll (gw's VIEW PRINT)
         self.drawn = False
         self.changed = False  # anything written, located or cleared since the last screen shown
 
@@ -59,11 +61,20 @@ class Display:
         self._follow()
 
     def clear(self) -> None:
-        """Blank every cell; the cursor and the window go home (CLS, ``CHR$(12)``)."""
-        for row in self.cells:
+        """Blank the rows that scroll (every row unless a view is set); the cursor goes to
+        their first row and the window home (CLS, ``CHR$(12)``)."""
+        for row in self.cells[self.view_top:self.view_bottom + 1]:
             row[:] = [" "] * self.columns
-        self.x = self.y = self.top = 0
+        self.x, self.y, self.top = 0, self.view_top, 0
+        self._follow()
         self.drawn = self.changed = True
+
+    def set_view(self, first: int, last: int) -> None:
+        """Only rows ``first``..``last`` scroll (and CLS clears them); the cursor goes to
+        ``first`` (the caller checked the rows).  ``set_view(0, rows - 1)`` is the whole screen."""
+        self.view_top, self.view_bottom = first, last
+        self.x, self.y = 0, first
+        self._follow()
 
     def new_line(self) -> None:
         """The cursor to the start of the next row, scrolling at the bottom."""
@@ -144,15 +155,15 @@ class Display:
             self.y -= 1
 
     def _down(self) -> None:
-        if self.y < self.rows - 1:
+        if self.y != self.view_bottom and self.y < self.rows - 1:
             self.y += 1
         else:
             self.scroll()
 
     def scroll(self) -> None:
-        """Move every row up one; the bottom row becomes blank."""
-        del self.cells[0]
-        self.cells.append([" "] * self.columns)
+        """Move the rows that scroll up one; the last of them becomes blank."""
+        del self.cells[self.view_top]
+        self.cells.insert(self.view_bottom, [" "] * self.columns)
 
     def _follow(self) -> None:
         """Move the window just far enough to show the cursor's row."""
