@@ -171,3 +171,13 @@ def test_text_printed_before_the_first_drawing_is_on_the_display():
     result = yaseer.run(program)
     assert result.screens == ["ROW 500\nEND\n"]
     assert result.text.startswith("ROW 1 \nROW 2 \n")  # streamed until the LOCATE
+
+
+def test_defchr_defines_the_dots_of_a_user_character():
+    # the library's form: DEFCHR$(255)="82FE8280C0" (five columns of dots); codes &HFC-&HFF only
+    result = yaseer.run('10 DEFCHR$(255)="82FE8280C0": PRINT CHR$(255)')
+    assert result.text == "➃\n" and result.error is None
+    assert yaseer.run('10 DEFCHR$(250)="82FE8280C0"').error == "Illegal function call in 10"
+    assert yaseer.run('10 DEFCHR$(252)="82FE"').error == "Illegal function call in 10"
+    # gw reads DEFCHR$ as an array name, as it always did
+    assert yaseer.run('10 DEFCHR$(255)="82FE8280C0"', dialect="gw").error == "Subscript out of range in 10"

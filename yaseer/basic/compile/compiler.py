@@ -320,6 +320,11 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
     def stmt_Cls(self, stmt, scope):
         self.emit("_M.clear_screen()")
 
+    def stmt_DefChr(self, stmt, scope):
+        if not self.library_forms:
+            raise syntax_error()
+        self.emit(f"_M.define_character({self.numeric(stmt.code, scope)}, {self.string(stmt.pattern, scope)})")
+
     def stmt_Locate(self, stmt, scope):
         self.emit(f"_locate({self.numeric(stmt.x, scope)}, {self.numeric(stmt.y, scope)})")
 

@@ -132,6 +132,7 @@ class Console:
         self.memory: dict[int, int] = {}  # address -> the byte POKE left there
         self.segment = 0  # DEFSEG's segment: 0 at power-on
         self.last_input_key = 13
+        self.user_characters: dict[int, str] = {}  # DEFCHR$: code -> its dots as hex digits
         self.boxed_screens = False  # True: screens are drawn in an LCD's frame (the interactive session)
         self._empty_polls = 0
         screen = self.shown(screen)
@@ -188,6 +189,16 @@ class Console:
         if any(display.lines()):
             self.show_screen(final=True)
         display.drawn = False
+
+    def define_character(self, code, pattern: str) -> None:
+        """DEFCHR$(code) = pattern: the dots of user-defined character ``code`` (&HFC-&HFF, the
+        character code table's user-defined ones): 10 hexadecimal digits, five columns of 8
+        dots.  Kept (``user_characters``); the LCD's text still shows the table's symbol."""
+        k = runtime.cint(runtime.fix(code))
+        digits = pattern.strip()
+        if not 252 <= k <= 255 or len(digits) != 10 or any(ch not in "0123456789ABCDEFabcdef" for ch in digits):
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self.user_characters[k] = digits.upper()
 
     # ------------------------------------------------------------ the keys
     def _keys(self):

@@ -333,6 +333,11 @@ class _ToAst:
     def bank_stmt(self, c):
         return ast.Bank(c[0].value, _values(c[1:]))
 
+    def defchr_stmt(self, c):  # DEFCHR$(n) = "hex digits": a user-defined character's dots
+        if c[1].value != "CHR$":
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return ast.DefChr(c[2], c[4])
+
     def locate_stmt(self, c):
         return ast.Locate(c[1], c[3])
 

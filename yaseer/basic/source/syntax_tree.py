@@ -426,6 +426,13 @@ class Bank:
 
 
 @_node
+class DefChr:
+    """``DEFCHR$(code) = pattern``: the dots of a user-defined character (casio)."""
+    code: object
+    pattern: object
+
+
+@_node
 class EndMark:
     """``THEN *`` / ``ELSE *``: Becker's library writes it where a program stops (casio only)."""
 
