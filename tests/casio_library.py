@@ -54,7 +54,9 @@ def key_scripts(path: Path = KEYS) -> dict[str, tuple[str, str]]:
     One program a line: ``NAME | keys | pattern``; in keys ``\\n`` is EXE (a line
     break) and other backslash escapes are Python's (``\\x1f``: the cursor-down key); an
     empty pattern is the default (a number after ``=`` on a line that is no prompt).  ``#``
-    starts a comment line.  A program without a line gets :data:`DEFAULT_KEYS`."""
+    starts a comment line.  A program without a line gets :data:`DEFAULT_KEYS`.  Keys
+    ``@CALLER keys``: a subprogram is run by its caller (LIBS6210 by LIB6210's
+    ``GOSUB "LIB0:S6210"``) with those keys."""
     scripts = {}
     for raw in path.read_text(encoding="utf-8").splitlines():
         if not raw.strip() or raw.lstrip().startswith("#"):
@@ -124,7 +126,11 @@ def main(argv: list[str]) -> int:
         if not errors:
             loaded += 1
         keys, pattern = scripts.get(program.stem.upper(), (DEFAULT_KEYS, DEFAULT_RESULT))
-        problem = verdict(*run(program, keys, folder), pattern)
+        runs = program
+        if keys.startswith("@"):  # a subprogram: run by the program that calls it (GOSUB "LIB0:...")
+            caller, _, keys = keys[1:].partition(" ")
+            runs = folder / f"{caller}.bas"
+        problem = verdict(*run(runs, keys, folder), pattern)
         if problem is None and not errors:  # a bad line an ON ERROR handler hid is no run
             ran += 1
         if verbose and (errors or problem):
