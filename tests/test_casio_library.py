@@ -5,9 +5,9 @@ its ``sources`` folder (github urbancamo/casio-basic, src/main/basic/MB-Casio-Ba
 Each case types its inputs as the program asks for them (a line break is EXE; ``\\x1f``
 is the cursor-down key the programs read to show the next root or value) and reads the
 number the LCD shows after a label; the expected value is a closed form or mpmath's.  The
-programs round their results themselves (``ROUND(x, LOG(ABS x)-7)``: 8 digits; the
-distributions 7), so the tolerance is the program's own rounding, or its method's
-accuracy where it approximates (named per case).
+programs round their results themselves (``ROUND(x, LOG(ABS x)-7)`` keeps 6 or 7
+significant digits, the distributions' ``-6`` 5 or 6: ROUND's page rounds *at* the digit
+given), so the tolerance is that rounding, or the method's accuracy where it is coarser.
 """
 
 from __future__ import annotations
@@ -65,7 +65,7 @@ CLOSED_FORMS = [  # program, keys, label, value (exact closed form), relative to
     ("LIB5620", "2" "2\n90\n", "Area =", pi, 1e-9),  # sector r=2, 90 degrees
     ("LIB5625", "2\n1\n", "Area =", (2 - math.sin(2)) / 2, 1e-9),  # segment l=2, r=1 (radians)
     ("LIB5250", "5\n", r"\) =", 24.0, 1e-12),  # Gamma(5) = 4!
-    ("LIB5200", "1" "x^2\n0\n1\n", r"dx =", 1 / 3, 1e-7),  # Romberg: integral of x^2 over [0,1]
+    ("LIB5200", "1" "x^2\n0\n1\n", r"dx =", 1 / 3, 5e-6),  # Romberg: integral of x^2 over [0,1]
 ]
 
 
@@ -77,7 +77,7 @@ def test_closed_forms(program, keys, label, value, tolerance):
 
 def test_gamma_of_a_half_is_the_root_of_pi():
     # the program's series, rounded to 8 digits
-    assert first("LIB5250", "0.5\n", r"\) =") == pytest.approx(math.sqrt(pi), rel=1e-7)
+    assert first("LIB5250", "0.5\n", r"\) =") == pytest.approx(math.sqrt(pi), rel=5e-6)
 
 
 def test_greatest_common_measure_and_least_common_multiple():
@@ -88,7 +88,7 @@ def test_greatest_common_measure_and_least_common_multiple():
 
 def test_prime_factors_multiply_back_to_the_base():
     screen = [s for s in screens("LIB5010", "360360\n") if "^" in s or "*" in s][0]
-    factors = screen.split("=", 1)[1].split("\n")[0].split("*")
+    factors = screen.split("=", 1)[1].replace("\n", "").split("*")  # the row wraps onto the next
     product = 1
     for factor in factors:
         base, _, power = factor.strip().partition("^")
@@ -110,24 +110,24 @@ def test_cubic_with_three_real_roots():
 def test_simultaneous_equations():
     # 2x + y = 5, x - y = 1: x = 2, y = 1 (Gauss-Jordan)
     solution = shown("LIB5040", "2\n" "2\n1\n5\n" "1\n-1\n1\n" + DOWN, r"x\d =")
-    assert solution[:2] == pytest.approx([2.0, 1.0], rel=1e-8)
+    assert solution[-2:] == pytest.approx([2.0, 1.0], rel=1e-8)  # the last screen: x1 and x2
 
 
 def test_straight_line_through_two_points():
     # (1,2) and (3,6): y = 2x + 0
-    assert shown("LIB5510", "1\n2\n3\n6\n" + DOWN, "[ab] =")[:2] == [2.0, 0.0]
+    assert shown("LIB5510", "1\n2\n3\n6\n" + DOWN, "[ab] =")[-2:] == [2.0, 0.0]
 
 
 def test_circle_through_three_points():
     # (0,0), (2,0), (0,2): centre (1,1), radius sqrt 2
-    a, b, r = shown("LIB5550", "0\n0\n2\n0\n0\n2\n" + DOWN + DOWN, "[abr] =")[:3]
+    a, b, r = shown("LIB5550", "0\n0\n2\n0\n0\n2\n" + DOWN + DOWN, "[abr] =")[-3:]
     assert (a, b) == (1.0, 1.0) and r == pytest.approx(math.sqrt(2), rel=1e-9)
 
 
 def test_regular_polygon_radii():
     # a square of area 16: inscribed circle 2, circumscribed 2*sqrt 2, side 4
-    r, big_r, side = shown("LIB5750", "16\n4\n" + DOWN + DOWN, "[rRl] =")[:3]
-    assert (r, big_r, side) == pytest.approx((2.0, 2 * math.sqrt(2), 4.0), rel=1e-9)
+    r, big_r, side = shown("LIB5750", "16\n4\n" + DOWN + DOWN, "(?:inside|outside|side) =")[-3:]
+    assert (r, big_r, side) == pytest.approx((2.0, 2 * math.sqrt(2), 4.0), rel=5e-6)
 
 
 BESSEL = [  # program, n, x, label, mpmath's value
@@ -142,8 +142,8 @@ BESSEL = [  # program, n, x, label, mpmath's value
 
 @pytest.mark.parametrize("program, n, x, label, value", BESSEL, ids=[f"{c[0]}-{c[1]}-{c[2]}" for c in BESSEL])
 def test_bessel_functions(program, n, x, label, value):
-    # J, Y, I by recurrences (8 digits shown); K's polynomial approximations hold 7 digits
-    assert first(program, f"{n}\n{x}\n", label) == pytest.approx(float(value), rel=2e-7)
+    # J, Y, I by recurrences, K by polynomial approximations; 6 or 7 digits shown
+    assert first(program, f"{n}\n{x}\n", label) == pytest.approx(float(value), rel=5e-6)
 
 
 def upper_t(n: int, x: float) -> float:
@@ -164,20 +164,20 @@ def hypergeometric_tail(big_n: int, big_m: int, n: int, x: int) -> float:
                      for k in range(x, min(n, big_m) + 1)))
 
 
-DISTRIBUTIONS = [  # program, keys, label, value, relative tolerance (7 digits shown; the method's accuracy)
-    ("LIB6210", "1.96\n", "p=", float(mpmath.ncdf(-1.96)), 1e-5),  # normal, upper tail
-    ("LIB6220", "4\n5\n", "p=", float(mpmath.gammainc(2, 2.5, regularized=True)), 1e-6),  # chi-square, 4 df
-    ("LIB6220", "3\n2\n", "p=", float(mpmath.gammainc(1.5, 1, regularized=True)), 1e-5),  # chi-square, 3 df
-    ("LIB6230", "10\n2\n", "p=", upper_t(10, 2), 1e-6),  # Student's t, 10 df
-    ("LIB6230", "5\n1.5\n", "p=", upper_t(5, 1.5), 1e-6),
-    ("LIB6240", "4\n10\n3\n", "p=", upper_f(4, 10, 3), 1e-6),  # F(4, 10)
-    ("LIB6240", "3\n7\n2\n", "p=", upper_f(3, 7, 2), 1e-6),  # F(3, 7): both odd
-    ("LIB6310", "10\n0.3\n4\n", "p=", binomial_tail(10, Fraction(3, 10), 4), 1e-6),  # binomial, P(X >= 4)
-    ("LIB6320", "2\n3\n", "p=", 1 - math.exp(-2) * (1 + 2 + 2), 1e-6),  # Poisson, P(X >= 3)
-    ("LIB6330", "20\n7\n5\n2\n", "p=", hypergeometric_tail(20, 7, 5, 2), 1e-6),  # hypergeometric
-    ("LIB6410", "0.025\n", "x=", float(-mpmath.sqrt(2) * mpmath.erfinv(2 * 0.025 - 1)), 1e-5),  # normal point
+DISTRIBUTIONS = [  # program, keys, label, value, relative tolerance (5 or 6 digits shown; the method's accuracy)
+    ("LIB6210", "1.96\n", "p=", float(mpmath.ncdf(-1.96)), 5e-5),  # normal, upper tail
+    ("LIB6220", "4\n5\n", "p=", float(mpmath.gammainc(2, 2.5, regularized=True)), 5e-5),  # chi-square, 4 df
+    ("LIB6220", "3\n2\n", "p=", float(mpmath.gammainc(1.5, 1, regularized=True)), 5e-5),  # chi-square, 3 df
+    ("LIB6230", "10\n2\n", "p=", upper_t(10, 2), 5e-5),  # Student's t, 10 df
+    ("LIB6230", "5\n1.5\n", "p=", upper_t(5, 1.5), 5e-5),
+    ("LIB6240", "4\n10\n3\n", "p=", upper_f(4, 10, 3), 5e-5),  # F(4, 10)
+    ("LIB6240", "3\n7\n2\n", "p=", upper_f(3, 7, 2), 5e-5),  # F(3, 7): both odd
+    ("LIB6310", "10\n0.3\n4\n", "p=", binomial_tail(10, Fraction(3, 10), 4), 5e-5),  # binomial, P(X >= 4)
+    ("LIB6320", "2\n3\n", "p=", 1 - math.exp(-2) * (1 + 2 + 2), 5e-5),  # Poisson, P(X >= 3)
+    ("LIB6330", "20\n7\n5\n2\n", "p=", hypergeometric_tail(20, 7, 5, 2), 5e-5),  # hypergeometric
+    ("LIB6410", "0.025\n", "x=", float(-mpmath.sqrt(2) * mpmath.erfinv(2 * 0.025 - 1)), 5e-5),  # normal point
     ("LIB6420", "4\n0.05\n", "x²=",  # chi-square point, 4 df: the x with upper probability .05
-     float(mpmath.findroot(lambda t: mpmath.gammainc(2, t / 2, regularized=True) - 0.05, 9)), 1e-5),
+     float(mpmath.findroot(lambda t: mpmath.gammainc(2, t / 2, regularized=True) - 0.05, 9)), 5e-5),
 ]
 
 

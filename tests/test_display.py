@@ -60,12 +60,12 @@ def test_cls_blanks_and_homes():
     assert d.lines() == [""] * 8
 
 
-def test_line_cancel_blanks_to_the_end_of_the_row():
+def test_line_cancel_blanks_the_row_and_starts_it_again():
     d = casio()
     d.write("OLD TEXT ON LINE")
     d.locate(4, 0)
     d.write("\x05new")
-    assert d.shown_lines()[0] == "OLD new"
+    assert d.shown_lines()[0] == "new"
 
 
 def test_cursor_codes_and_backspace():

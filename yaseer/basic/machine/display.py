@@ -125,9 +125,10 @@ class Display:
         self.clear()
 
     def _line_cancel(self) -> None:
-        """Blank the row from the cursor to its end (the cursor stays)."""
-        row = self.cells[self.y]
-        row[self.x:] = [" "] * (self.columns - self.x)
+        """Blank the cursor's row; the cursor to its start (the library prints CHR$(5) before
+        each value it shows in the same place: the value before must go)."""
+        self.cells[self.y][:] = [" "] * self.columns
+        self.x = 0
 
     def _line_top(self) -> None:
         self.x = 0
