@@ -167,7 +167,7 @@ def test_multidimensional_arrays():
 
 
 def test_second_dim_is_a_duplicate_definition():
-    assert error_of("10 DIM M(5): DIM M(6)") == "Duplicate definition in 10"
+    assert error_of("10 DIM M(5): DIM M(6)") == "Duplicate Definition in 10"
 
 
 def test_subscripts_round():

@@ -1,5 +1,7 @@
 """Fuzzing the file statements (issue 12): random OPEN / PRINT # / WRITE # / INPUT # /
-LINE INPUT # / INPUT$ / EOF / LOF / LOC / CLOSE / KILL / NAME / FILES programs, with
+LINE INPUT # / INPUT$ / EOF / LOF / LOC / CLOSE / KILL / NAME / FILES programs, and the
+random-access files' OPEN ... LEN / FIELD / GET / PUT / LSET / RSET / RESET, and
+CHAIN / MERGE / COMMON / SAVE / LOAD, with
 names that try to leave the directory (absolute, ``..``, a symbolic link out), run in
 both dialects.  Each ends normally or with a BASIC error line, and no file ever
 appears, changes or disappears outside the program's directory.
@@ -35,6 +37,14 @@ def statement(data) -> str:
         f"A$ = INPUT$(2, #{number})", f"X = EOF({number}) + LOF({number}) + LOC({number})",
         f"CLOSE {n}", "CLOSE", f"KILL {name}", f"NAME {name} AS {other}",
         f"FILES {name}", "FILES",
+        # random-access files
+        f"OPEN {name} AS {n} LEN = {data.draw(st.sampled_from(['1', '16', '0', '40000']))}",
+        f"OPEN {name} FOR RANDOM AS {n}", f"OPEN \"R\", {n}, {name}, 8", f"FIELD {n}, 4 AS A$, 2 AS B$",
+        f"GET {n}, {data.draw(st.sampled_from(['1', '3', '0', '32768']))}", f"PUT {n}", f"GET {n}",
+        f"LSET A$ = {value}", f"RSET B$ = {value}", "RESET",
+        # programs read from files (the chained program is this one again, or a file there)
+        f"CHAIN {name}", f"CHAIN MERGE {name}, 999, ALL", f"MERGE {name}", "COMMON A$, X",
+        f"SAVE {name}", f"SAVE {name}, A", f"LOAD {name}", "LIST", "DELETE 10-20", "NEW",
     ]
     return data.draw(st.sampled_from(choices))
 

@@ -45,7 +45,7 @@ CASIO_MACHINE_WORDS = ("PEEK", "INKEY$", "LOCATE")  # the FX-850P's display, key
 UNIMPLEMENTED = [
     ("10 PRINT PEEK(10)", "PEEK"), ("10 PRINT INKEY$", "INKEY$"), ("10 PRINT VARPTR(7)", "VARPTR"),
     ("10 PRINT CSRLIN", "CSRLIN"), ("10 X = STICK(0)", "STICK"), ("10 LOCATE 1, 1", "LOCATE"),
-    ("10 DIM KEY(3)", "KEY"),
+    ("10 DIM SOUND(3)", "SOUND"),
 ]
 
 

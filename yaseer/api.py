@@ -273,6 +273,7 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
         result.status = machine.run()
         if result.status == "stop":
             result.line = machine.line
+            machine.end_line()  # Break in N starts on a new row, as after an error
     except BasicError as error:
         machine.end_line()
         result.status, result.error, result.exception = "error", str(error), error
@@ -305,13 +306,12 @@ def _source(listing: Listing, charset=None) -> tuple[str, str | None]:
         return listing, None
     if not isinstance(listing, (str, os.PathLike)):
         raise TypeError(f"a listing is a path or the program text, not {type(listing).__name__}")
+    from yaseer.basic.machine.program_file import program_text
+
     try:
-        if charset is not None:
-            with open(listing, "rb") as binary:
-                text = charset.program_text(binary.read())
-            return text.replace("\r\n", "\n").replace("\r", "\n"), _stem(listing)  # as text mode reads lines
-        with open(listing, encoding="utf-8", errors="replace") as file:
-            return file.read(), _stem(listing)
+        with open(listing, "rb") as binary:
+            text = program_text(binary.read(), charset.program_text if charset is not None else None)
+        return text.replace("\r\n", "\n").replace("\r", "\n"), _stem(listing)  # as text mode reads lines
     except FileNotFoundError:
         raise BasicError(f"File not found: {_shown(listing)}", FILE_NOT_FOUND) from None
     except OSError as error:

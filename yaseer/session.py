@@ -202,8 +202,10 @@ def read_listing_file(name: str, directory: Path) -> Program:
     path = sandbox.path(name)
     if not path.exists() and not path.suffix:
         path = sandbox.path(name + ".bas")
+    from yaseer.basic.machine.program_file import program_text
+
     try:
-        text = path.read_text(encoding="utf-8", errors="replace")
+        text = program_text(path.read_bytes())
     except (FileNotFoundError, IsADirectoryError, NotADirectoryError):
         raise BasicError("File not found", FILE_NOT_FOUND) from None
     except OSError:

@@ -35,6 +35,7 @@ MISSING_OPERAND = 22
 FOR_WITHOUT_NEXT = 26
 WHILE_WITHOUT_WEND = 29
 WEND_WITHOUT_WHILE = 30
+FIELD_OVERFLOW = 50
 BAD_FILE_NUMBER = 52
 FILE_NOT_FOUND = 53
 BAD_FILE_MODE = 54
@@ -42,7 +43,9 @@ FILE_ALREADY_OPEN = 55
 DEVICE_IO_ERROR = 57
 FILE_ALREADY_EXISTS = 58
 INPUT_PAST_END = 62
+BAD_RECORD_NUMBER = 63
 BAD_FILE_NAME = 64
+DIRECT_STATEMENT_IN_FILE = 66
 PATH_FILE_ACCESS_ERROR = 75
 UNDEFINED_PROGRAM_AREA = 252  # yaseer's own: GOSUB PROG n with nothing in area n
 BREAK = 253  # yaseer's own: Ctrl-C (not trappable)
@@ -71,6 +74,12 @@ MESSAGES = {
 def error_message(code: int) -> str:
     """The message GW-BASIC prints for error ``code`` (1..255)."""
     return MESSAGES.get(code, "Unprintable error")
+
+
+def undefined_line_message(line: int, names_line: bool) -> str:
+    """``Undefined line number``, naming the missing ``line`` when ``names_line``
+    (``Dialect.names_missing_line``)."""
+    return f"{MESSAGES[UNDEFINED_LINE]} {line}" if names_line else MESSAGES[UNDEFINED_LINE]
 
 
 class BasicError(Exception):

@@ -291,10 +291,13 @@ def _files_directory(path: str | None) -> str | None:
 
 
 def read_text(path: str) -> str:
-    """A listing's text (``-`` is standard input); undecodable bytes become U+FFFD."""
+    """A listing's text (``-`` is standard input), read as a program file
+    (yaseer.basic.machine.program_file: ASCII up to a Ctrl-Z, tokenised or protected)."""
     import sys
 
+    from yaseer.basic.machine.program_file import program_text
+
     if path == "-":
-        return sys.stdin.buffer.read().decode("utf-8", errors="replace")
-    with open(path, encoding="utf-8", errors="replace") as handle:
-        return handle.read()
+        return program_text(sys.stdin.buffer.read())
+    with open(path, "rb") as handle:
+        return program_text(handle.read())

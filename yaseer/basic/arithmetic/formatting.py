@@ -411,10 +411,15 @@ def using(fmt: str, values: Sequence[float | str]) -> str:
 
     The format is reused from its start while values remain; after the last
     value, literal text is copied up to the next field or the end of the format.
+    An error (a format without a field, a string for a numeric field) carries the
+    text printed before it as ``printed``: GW-BASIC prints as it goes
+    (``PRINT USING "abc"; 1`` prints ``abc``, then ``Illegal function call``).
     """
     tokens = _parsed(fmt)
     if not any(not isinstance(token, Literal) for token in tokens):
-        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        error = BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        error.printed = "".join(token.text for token in tokens)
+        raise error
     out: list[str] = []
     next_value = 0
     position = 0
@@ -425,7 +430,11 @@ def using(fmt: str, values: Sequence[float | str]) -> str:
         elif next_value == len(values):
             break
         else:
-            out.append(_format_value(values[next_value], token))
+            try:
+                out.append(_format_value(values[next_value], token))
+            except BasicError as error:
+                error.printed = "".join(out)
+                raise
             next_value += 1
         position += 1
         if position == len(tokens):

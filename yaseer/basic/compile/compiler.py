@@ -37,7 +37,9 @@ from yaseer.basic.compile.loops import LoopCompiler
 from yaseer.basic.dialects.dialect import CASIO
 from yaseer.basic.compile.number_models import array_local, local_name, number_model
 from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  (re-exported)
-from yaseer.basic.errors import BasicError, OUT_OF_MEMORY, UNDEFINED_LINE, WEND_WITHOUT_WHILE, WHILE_WITHOUT_WEND
+from yaseer.basic.errors import (
+    BasicError, OUT_OF_MEMORY, UNDEFINED_LINE, WEND_WITHOUT_WHILE, WHILE_WITHOUT_WEND, undefined_line_message,
+)
 
 
 class _Block:
@@ -83,6 +85,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.numbers = number_model(dialect, def_types)
         self.program_areas = dialect.program_areas  # GOSUB PROG n, #n, "file:label"
         self.library_forms = dialect.library_forms  # THEN *
+        self.names_missing_line = dialect.names_missing_line
         self.direct = direct
         self.trace = trace and not direct
         self.dynamic_loops = set(dynamic_loops)
@@ -140,7 +143,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         if block is None:
             if self.direct:
                 return f"raise _DirectJump({line})"
-            return f"raise _err('Undefined line number {line}', {UNDEFINED_LINE})"
+            return f"raise _err({undefined_line_message(line, self.names_missing_line)!r}, {UNDEFINED_LINE})"
         return f"return {block}"
 
     # -- statements

@@ -53,6 +53,11 @@ class LoopCompiler:
         if isinstance(stmt.var, ast.Elem) and stmt.var.indices and not all(
                 isinstance(i, ast.Num) for i in stmt.var.indices):
             raise syntax_error()  # a computed subscript would be re-evaluated each pass
+        bound = self.bound_next(stmt)
+        if bound is None or not bound[2]:
+            # GW-BASIC's FOR keeps the start value aside until its scan has found the NEXT
+            # (GWMAIN.ASM FOR, NXTSCN): no NEXT, or one of another loop, leaves the variable as it was
+            self.emit(f"_M.bound_next({bound!r})")
         self.emit(f"{var} = _v{n}")
         if native_next is not None:
             step_value = stmt.step.value if isinstance(stmt.step, ast.Num) else (

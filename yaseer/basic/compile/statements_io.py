@@ -6,8 +6,8 @@ mixes it in).  The machine's helpers they call are in runtime.py and files.py.
 from __future__ import annotations
 
 from yaseer.basic.source import syntax_tree as ast
-from yaseer.basic.compile.expressions import CompileError, syntax_error
-from yaseer.basic.errors import OUT_OF_DATA, UNDEFINED_LINE
+from yaseer.basic.compile.expressions import CompileError, syntax_error, type_mismatch
+from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, OUT_OF_DATA, UNDEFINED_LINE, undefined_line_message
 
 
 def _is_safe_item(item) -> bool:
@@ -65,6 +65,10 @@ class InputOutputCompiler:
     def stmt_Print(self, stmt, scope):
         """PRINT / LPRINT [USING]: items are printed as they are evaluated, so an item
         that fails leaves the ones before it on the screen (as GW-BASIC does)."""
+        if stmt.lead:  # PRINT items USING ...: the items first, the line left open
+            lead = list(stmt.lead) + ([] if stmt.lead[-1] in (",", ";") else [";"])
+            self.stmt_Print(ast.Print(stmt.printer, lead, channel=stmt.channel), scope)
+            stmt = ast.Print(stmt.printer, stmt.items, using=stmt.using, channel=stmt.channel)
         device, pr, pru = 1 if stmt.printer else 0, "_pr", "_pru"
         if stmt.channel is not None:  # PRINT #n: the file's stream, found once
             device, pr, pru = self.new_temp(), "_prf", "_pruf"
@@ -198,13 +202,77 @@ class InputOutputCompiler:
 
     def stmt_Restore(self, stmt, scope):
         if stmt.target is not None and stmt.target not in self.line_first:
-            self.emit(f"raise _err('Undefined line number {stmt.target}', {UNDEFINED_LINE})")
+            message = undefined_line_message(stmt.target, self.names_missing_line)
+            self.emit(f"raise _err({message!r}, {UNDEFINED_LINE})")
             return
         self.emit(f"_restore({stmt.target!r})")
 
     def stmt_Open(self, stmt, scope):
+        length = "None" if stmt.length is None else self.numeric(stmt.length, scope)
         self.emit(f"_open({self.string(stmt.mode, scope)}, {self.numeric(stmt.number, scope)}, "
-                  f"{self.string(stmt.name, scope)})")
+                  f"{self.string(stmt.name, scope)}, {length})")
+
+    # -- random-access files (random_files.py): a fielded variable is named by its scalar key
+    def field_key(self, target) -> str:
+        """The scalars' key of a FIELD or LSET variable (a string scalar; an array element
+        is not emulated: Illegal function call)."""
+        if self.kind_of(target) != "s":
+            raise type_mismatch()
+        if not isinstance(target, ast.Var):
+            raise CompileError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        return self.numbers.name(target.name)
+
+    def stmt_Field(self, stmt, scope):
+        pairs = "".join(f"({self.numeric(width, scope)}, {self.field_key(target)!r}), "
+                        for width, target in stmt.fields)
+        for _, target in stmt.fields:
+            scope.scalar(target.name)  # known to the machine from the start
+        number = self.new_temp()
+        self.emit(f"{number} = ({self.numeric(stmt.number, scope)}, ({pairs}))")
+        self.emit("#FLUSH#")  # FIELD stores the variables' slices in the machine's scalars
+        self.emit(f"_field(*{number})")
+        self.emit("#RELOAD#")
+
+    def stmt_GetPut(self, stmt, scope):
+        record = "None" if stmt.record is None else self.numeric(stmt.record, scope)
+        if stmt.put:
+            self.emit(f"_put({self.numeric(stmt.number, scope)}, {record})")
+            return
+        number = self.new_temp()
+        self.emit(f"{number} = ({self.numeric(stmt.number, scope)}, {record})")
+        self.emit("#FLUSH#")  # GET stores the fielded variables in the machine's scalars
+        self.emit(f"_get(*{number})")
+        self.emit("#RELOAD#")
+
+    # -- CHAIN, MERGE (chaining.py): the machine reads the file here (an error is this
+    # statement's, trappable), then ends the block with the program to go on with
+    def stmt_Chain(self, stmt, scope):
+        line = "None" if stmt.line is None else self.numeric(stmt.line, scope)
+        self.emit("#FLUSH#")  # the variables a CHAIN keeps are the machine's
+        self.emit(f"_chain({self.string(stmt.file, scope)}, {stmt.merge}, {line}, {stmt.everything}, "
+                  f"{stmt.delete!r}, {stmt.run})")
+
+    def stmt_Command(self, stmt, scope):
+        """RUN, LIST, LOAD, SAVE ... in a program: the machine's ``program_command``."""
+        argument = stmt.argument
+        if argument is not None and not isinstance(argument, (int, tuple)):
+            argument = self.string(argument, scope)
+        else:
+            argument = repr(argument)
+        self.emit("#FLUSH#")
+        self.emit(f"_command({stmt.name!r}, {argument}, {stmt.option!r})")
+        self.emit("#RELOAD#")
+
+    def stmt_Common(self, stmt, scope):
+        for name, is_array in stmt.names:
+            if not is_array:
+                scope.scalar(name)  # a COMMON scalar exists (0 or "") for the CHAIN to keep
+
+    def stmt_LSet(self, stmt, scope):
+        value = self.string(stmt.value, scope)
+        key = self.field_key(stmt.target)
+        current = scope.scalar(stmt.target.name)
+        self.assign(stmt.target, f"_lset({key!r}, {value}, {current}, {stmt.right})", "s", scope, False)
 
     def stmt_Close(self, stmt, scope):
         self.emit(f"_close(({''.join(self.numeric(n, scope) + ', ' for n in stmt.numbers)}))")

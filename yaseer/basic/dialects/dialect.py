@@ -37,6 +37,13 @@ AL_YASEER_DIMENSIONS = (
 )
 
 
+# GW-BASIC's random-access file statements (yaseer/basic/machine/random_files.py)
+RANDOM_FILE_WORDS = ("FIELD", "GET", "PUT", "LSET", "RSET", "RESET")
+# ... and the statements that load other programs into a running one (yaseer/basic/machine/chaining.py)
+CHAIN_WORDS = ("CHAIN", "COMMON", "MERGE", "DELETE")
+# ... the commands a program may also run (LIST, SAVE, RUN "file"...) and KEY ON/OFF
+COMMAND_WORDS = ("RUN", "LIST", "LLIST", "LOAD", "SAVE", "NEW", "EDIT", "KEY", "OFF", "SYSTEM")
+
 FIELDS = (
     "name",  # str: casio, gw
     "keyword_first",  # bool
@@ -67,8 +74,13 @@ FIELDS = (
     "empty_input_keeps",  # bool: False
     "library_forms",  # bool: False
     "file_devices",  # tuple[str, ...]: ()
+    "joins_unnumbered_lines",  # bool: True
+    "names_missing_line",  # bool: True
+    "spaced_relations",  # bool: False
+    "bracket_subscripts",  # bool: False
 )
-DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, ())
+DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
+            True, True, False, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -80,6 +92,11 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         as the pocket computers' tokenisers do; False reads a name whole, as
         GW-BASIC does (``COST`` is a variable; a keyword counts only when the
         run of letters does not continue it into a longer name).
+        ``spaced_relations``: True reads two relation characters with blanks between
+        them as one operator (``A = > B`` is ``A >= B``, ``< =`` is ``<=``: GW-BASIC's
+        evaluator skips blanks while it collects ``<`` ``=`` ``>``, GWEVAL.ASM).
+        ``bracket_subscripts``: True lets ``[`` and ``]`` stand for the parentheses of a
+        subscript (``A[2]``, even ``A[2)``), but nowhere else (GW-BASIC's PTRGET).
         ``pi_keyword``: True makes ``PI`` the constant pi (a Casio keyword);
         False leaves it an ordinary variable name (GW-BASIC has no PI).
         ``own_words``: keywords only this dialect reserves, on top of the
@@ -117,6 +134,17 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         ``random``: the class of RND's generator (yaseer/basic/arithmetic/randomness.py):
         ``RepeatableRandom`` (Python's, seed 0 at RUN) or ``GwRandom``
         (GW-BASIC's own 24-bit sequence, as PC-BASIC reproduces it).
+
+    Program files
+        ``joins_unnumbered_lines``: True (Casio, as the paper prints its listings)
+        joins a line of a program file that has no line number onto the line
+        before; False (GW-BASIC's LOAD, DSKCOM.ASM) stops loading there with
+        ``Direct statement in file``, the lines before it loaded.
+
+    Messages
+        ``names_missing_line``: True (Casio, as yaseer has always named it) says which
+        line a jump missed (``Undefined line number 5200 in 5030``); False prints
+        GW-BASIC's message as its table has it (``Undefined line number in 5030``).
 
     Syntax errors
         ``errors_when_reached``: True (GW-BASIC) runs a line statement by
@@ -213,11 +241,13 @@ CASIO = Dialect(
 
 GW = Dialect(
     name="gw", keyword_first=False, pi_keyword=False,
-    own_words=("DEFINT", "DEFSNG", "DEFDBL", "DEFSTR", "XOR", "EQV", "IMP"), typed_numbers=True, print_digits=7,
+    own_words=("DEFINT", "DEFSNG", "DEFDBL", "DEFSTR", "XOR", "EQV", "IMP") + RANDOM_FILE_WORDS + CHAIN_WORDS + COMMAND_WORDS,
+    typed_numbers=True, print_digits=7,
     width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
     implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,
     errors_when_reached=True, comma_trims_number=True, for_binds_next=True, largest_number=DOUBLE_LARGEST,
-    printer_width=80,
+    printer_width=80, joins_unnumbered_lines=False, names_missing_line=False, spaced_relations=True,
+    bracket_subscripts=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -29,13 +29,15 @@ from yaseer.basic.errors import (
     BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
     FILE_NOT_FOUND, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, BasicError, error_message,
 )
+from yaseer.basic.machine import random_files
 from yaseer.basic.machine.runtime import cint
 from yaseer.basic.machine.screen import OutputStream
 
 MAX_FILES = 3
 END_OF_FILE = "\x1a"  # Ctrl-Z
 RECORD = 128  # bytes: LOC counts these
-_MODES = {"I": "I", "O": "O", "A": "A", "INPUT": "I", "OUTPUT": "O", "APPEND": "A"}
+LINE_LIMIT = 255  # characters LINE INPUT # reads into one string
+_MODES = {"I": "I", "O": "O", "A": "A", "R": "R", "INPUT": "I", "OUTPUT": "O", "APPEND": "A", "RANDOM": "R"}
 
 
 def _error(code: int) -> BasicError:
@@ -137,6 +139,33 @@ class Sandbox:
         return shutil.disk_usage(self.root).free
 
 
+def dos_name(sandbox: Sandbox, name: str) -> str:
+    """``name``, or, when no file has it exactly, the name of the one file in its folder
+    whose name differs from it only in case (DOS ignores case: ``"data.txt"`` opens
+    ``DATA.TXT``); the sandbox's rules apply to ``name`` first."""
+    path = sandbox.path(name)
+    if path.exists():
+        return name
+    try:
+        entries = [p.name for p in path.parent.iterdir()]
+    except OSError:
+        return name
+    matches = [entry for entry in entries if entry.upper() == path.name.upper()]
+    if len(matches) != 1:
+        return name
+    folder = name.replace("\\", "/").rpartition("/")[0]
+    return (folder + "/" if folder else "") + matches[0]
+
+
+def read_program(sandbox: Sandbox, name: str) -> bytes:
+    """The bytes of program file ``name`` in the sandbox (CHAIN, MERGE; case as DOS)."""
+    path = sandbox.existing(dos_name(sandbox, name))
+    try:
+        return path.read_bytes()
+    except OSError:
+        raise _error(PATH_FILE_ACCESS_ERROR) from None
+
+
 def dos_split(name: str) -> tuple[str, str]:
     """A name as DOS shows it: (name, extension) split at the first ``.``, clipped to
     8 and 3 characters with ``+`` marking a clipped one (``LONGNAME1.DAT`` is
@@ -206,15 +235,29 @@ class OpenFile:
         return text
 
     def read_line(self) -> str:
-        """LINE INPUT #: the text up to the line end (CR LF, or LF), which is consumed."""
+        """LINE INPUT #: the characters up to a CR, which ends the line (and a LF right after
+        it is consumed); a LF that follows no CR belongs to the line, and so does a CR right
+        after such a LF; zero bytes are dropped; at most 255 characters (the rest is the next
+        line).  DSKCOM.ASM ``DLINE`` (PC-BASIC 2.0.8 ends a line at a lone LF too)."""
         data = self._input()
-        if self.position >= len(data):
+        n = len(data)
+        i = self.position
+        if i >= n:
             raise _error(INPUT_PAST_END)
-        end = data.find("\n", self.position)
-        end = len(data) if end < 0 else end
-        line = data[self.position:end]
-        self.position = end + 1
-        return line[:-1] if line.endswith("\r") else line
+        out: list[str] = []
+        after_lf = False
+        while i < n and len(out) < LINE_LIMIT:
+            ch = data[i]
+            i += 1
+            if ch == "\r" and not after_lf:
+                if i < n and data[i] == "\n":
+                    i += 1
+                break
+            after_lf = ch == "\n"
+            if ch != "\0":
+                out.append(ch)
+        self.position = i
+        return "".join(out)
 
     def read_field(self, numeric: bool) -> str:
         """One INPUT # field: blanks and line ends before it skipped; a number ends at a
@@ -234,12 +277,23 @@ class OpenFile:
             text, i = data[i + 1:close], close + 1
             while i < n and data[i] == " ":
                 i += 1
-        else:
-            stops = " ,\r\n" if numeric else ",\r\n"
+        elif numeric:
             start = i
-            while i < n and data[i] not in stops:
+            while i < n and data[i] not in " ,\r\n":
                 i += 1
-            text = data[start:i] if numeric else data[start:i].rstrip(" ")
+            text = data[start:i]
+        else:  # DSKCOM.ASM DLINE: a LF is dropped, and a CR right after it does not end the field
+            out = []
+            while i < n and data[i] not in ",\r":
+                if data[i] == "\n":
+                    while i < n and data[i] == "\n":
+                        i += 1
+                    if i < n and data[i] == "\r":
+                        i += 1
+                    continue
+                out.append(data[i])
+                i += 1
+            text = "".join(out).rstrip(" ")
         while numeric and i < n and data[i] == " ":
             i += 1
         if i < n and data[i] == "\r":
@@ -278,8 +332,9 @@ class FileTable:
             raise _error(BAD_FILE_NUMBER)
         return k
 
-    def open(self, mode: str, n, name: str) -> None:
-        """OPEN: ``mode`` "I"/"O"/"A" (or INPUT, OUTPUT, APPEND) as file number ``n``."""
+    def open(self, mode: str, n, name: str, length=None) -> None:
+        """OPEN: ``mode`` "I"/"O"/"A"/"R" (or INPUT, OUTPUT, APPEND, RANDOM) as file number
+        ``n``; ``length``: a random file's record length (yaseer.basic.random_files)."""
         kind = _MODES.get(mode.strip().upper())
         if kind is None:
             raise _error(BAD_FILE_MODE)
@@ -290,12 +345,14 @@ class FileTable:
             if name.upper().startswith(device):
                 name = name[len(device):]
                 break
+        size = random_files.record_length(length) if kind == "R" else None
+        name = dos_name(self.sandbox, name)
         path = self.sandbox.existing(name) if kind == "I" else self.sandbox.path(name)
-        if any(f.path.resolve() == path.resolve() and (kind != "I" or f.mode != "I")
+        if any(f.path.resolve() == path.resolve() and (kind != f.mode or kind not in "IR")
                for f in self.open_files.values()):
             raise _error(FILE_ALREADY_OPEN)
         try:
-            self.open_files[k] = OpenFile(path, kind)
+            self.open_files[k] = random_files.RandomFile(path, size) if size else OpenFile(path, kind)
         except IsADirectoryError:
             raise _error(PATH_FILE_ACCESS_ERROR) from None
         except OSError:
@@ -307,6 +364,27 @@ class FileTable:
             raise _error(BAD_FILE_NUMBER)
         return f
 
+    # -- random-access files (random_files.py)
+    def random(self, n) -> random_files.RandomFile:
+        """Open file ``n``, which must be a random one (else ``Bad file mode``)."""
+        f = self.get(n)
+        if f.mode != "R":
+            raise _error(BAD_FILE_MODE)
+        return f
+
+
+    def put(self, n, record=None) -> None:
+        """PUT #n[, record]."""
+        self.random(n).put(record)
+
+    def justify(self, key: str, value: str, current: str, right: bool) -> str:
+        """LSET / RSET of variable ``key`` (now holding ``current``): the value it gets; a
+        variable fielded on an open file also fills its slice of that file's buffer."""
+        for f in self.open_files.values():
+            if f.mode == "R" and f.bound(key, current):
+                return f.store(key, value, right)
+        return random_files.justified(value, len(current), right)
+
     def close(self, numbers=()) -> None:
         """CLOSE [n, ...]: the files named (no error for one not open), or all."""
         for k in ([self.number(n) for n in numbers] if numbers else list(self.open_files)):
@@ -314,7 +392,12 @@ class FileTable:
             if f is not None:
                 f.close()
 
+    def rename(self, old: str, new: str) -> None:
+        """NAME old AS new (``old`` found as DOS finds it, whatever its case)."""
+        self.sandbox.rename(dos_name(self.sandbox, old), new)
+
     def kill(self, name: str) -> None:
+        name = dos_name(self.sandbox, name)
         path = self.sandbox.existing(name)
         if any(f.path.resolve() == path.resolve() for f in self.open_files.values()):
             raise _error(FILE_ALREADY_OPEN)

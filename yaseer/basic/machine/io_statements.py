@@ -157,10 +157,16 @@ class InputOutput:
             return text
         return text[:-1] if (end + 1) % zone == 0 else text
 
+    def _using_values(self, items) -> list:
+        """PRINT USING's values as floats and strings (a typed single as its 7 digits)."""
+        singles = self.dialect.typed_numbers
+        return [(_single_decimal(v) if singles and v == v and v - v == 0 else v) if type(v) is float
+                else v if type(v) is str else _as_number(v) for v in items]
+
     def print_using(self, device: int, fmt: str, values: tuple, newline: bool) -> None:
         """PRINT USING fmt; values (the format rules live in ``formatting.using``)."""
         stream = self.streams[device]
-        values = [v if type(v) is float or type(v) is str else _as_number(v) for v in values]
+        values = self._using_values(values)
         for v in values:
             if type(v) is float and v - v:
                 runtime.overflow()
@@ -171,7 +177,7 @@ class InputOutput:
             if newline:
                 self._csv_row(stream)
             return
-        stream.write(formatting.using(fmt, values))
+        stream.write(_formatted(fmt, values, stream))
         if newline:
             stream.write("\n")
 
@@ -278,8 +284,7 @@ class InputOutput:
 
     def print_using_to(self, stream, fmt: str, values: tuple, newline: bool) -> None:
         """PRINT #n, USING."""
-        stream.write(formatting.using(fmt, [v if type(v) is float or type(v) is str else _as_number(v)
-                                            for v in values]))
+        stream.write(_formatted(fmt, self._using_values(values), stream))
         if newline:
             stream.write("\n")
 
@@ -299,6 +304,15 @@ class InputOutput:
         if n is not None:
             return self.files.get(n).read_chars(k)
         return self.input_keys(k)
+
+    def get_record(self, n, record=None) -> None:
+        """GET #n[, record]: read the record; its fielded variables take their slices."""
+        self.scalars.update(self.files.random(n).get(self.scalars, record))
+
+    def field_variables(self, n, pairs) -> None:
+        """FIELD #n, width AS variable, ...: ``pairs`` of (width, variable key); each
+        variable holds its slice of the buffer at once."""
+        self.scalars.update(self.files.random(n).field(pairs))
 
     def list_files(self, pattern) -> None:
         """FILES [pattern]: GW-BASIC's listing: the directory (``C:\\``, the sandbox as
@@ -329,6 +343,22 @@ def _printed_value(value):
 
 def _same(value):
     return value
+
+
+def _formatted(fmt: str, values: list, stream) -> str:
+    """``formatting.using``; on an error the text before it is written to ``stream`` first."""
+    try:
+        return formatting.using(fmt, values)
+    except BasicError as error:
+        stream.write(getattr(error, "printed", ""))
+        raise
+
+
+def _single_decimal(x: float) -> float:
+    """A single as the decimal of its 7 digits (GW-BASIC's PRINT USING rounds those, not
+    the binary value: ``2.675`` is 2.68, ``1/3`` .3333334000 with ten places)."""
+    text = values.unsigned_text(x, values.SINGLE_DIGITS, "E")
+    return -float(text) if x < 0 else float(text)
 
 
 def _as_number(value):

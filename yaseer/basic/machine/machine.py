@@ -54,9 +54,11 @@ from yaseer.basic.dialects import dialect as dialects
 from yaseer.basic.machine import gwfunctions, runtime, val_numbers
 from yaseer.basic.machine.files import FileTable, Sandbox
 from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
-    BasicError, OutputError, BREAK, INPUT_PAST_END, OUT_OF_DATA, OUT_OF_MEMORY, SYNTAX_ERROR, UNDEFINED_PROGRAM_AREA,
+    BasicError, OutputError, BREAK, INPUT_PAST_END, OUT_OF_DATA, OUT_OF_MEMORY, SYNTAX_ERROR, UNDEFINED_LINE,
+    UNDEFINED_PROGRAM_AREA, undefined_line_message,
 )
 from yaseer.basic.machine.console import Console
+from yaseer.basic.machine.chaining import ChainTo, Chaining, RunAgain
 from yaseer.basic.machine.breaks import Breaks, _interrupt_handler
 from yaseer.basic.machine.signals import (  # noqa: F401  (the run-time exceptions are re-exported)
     END, INTERNAL_ERROR, BreakPoint, DirectJump, ErrorTrapping, ProgramEnd, ProgramStop, to_basic_error,
@@ -68,7 +70,7 @@ from yaseer.basic.machine.stack import AREA_MARK, ControlStack, ForFrame  # noqa
 from yaseer.basic.machine.variables import (  # noqa: F401  (the array limits are re-exported)
     MAX_ARRAY_ELEMENTS, MAX_TOTAL_ELEMENTS, Variables, _check_clear_arguments,
 )
-from yaseer.basic.source.scanner import entry_messages, split_lines
+from yaseer.basic.source.scanner import DirectStatementInFile, entry_messages, split_lines
 from yaseer.basic.machine.screen import OutputStream
 
 TYPE_CHECKING = False
@@ -144,7 +146,7 @@ class _AreaRuntime:
 FIRST_FILE_AREA = 1000  # the program areas of program files (GOSUB "file:label") are numbered from here
 
 
-class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Console):
+class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Console, Chaining):
     """A pocket-computer BASIC machine (see the module docstring)."""
 
     def __init__(self, screen: TextIO | None = None, printer: TextIO | None = None,
@@ -222,7 +224,12 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         False for lines entered before (the session hands its typed program over at RUN)."""
         program: dict[int, str] = {}
         text = self.dialect.charset.codes(text)  # symbols typed or read (a UTF-8 file's) as the machine's codes
-        for number, statement_text, _ in split_lines(text):
+        stopped = None
+        try:
+            lines = split_lines(text, self.dialect.joins_unnumbered_lines)
+        except DirectStatementInFile as error:  # the lines before it are loaded
+            lines, stopped = error.lines, error
+        for number, statement_text, _ in lines:
             if statement_text:
                 program[number] = statement_text
                 if entered:
@@ -232,6 +239,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.programs[area] = program
         self.python_areas.pop(area, None)
         self._invalidate(area)
+        if stopped is not None:
+            raise stopped
 
     def set_line(self, number: int, text: str, area: int = 0) -> None:
         """Enter (or, with empty text, delete) one program line, as typed."""
@@ -392,8 +401,9 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_erase": self.erase, "_option_base": self.option_base, "_line_input": self.line_input,
             "_write": self.write_values, "_clear_args": _check_clear_arguments,
             # sequential files (files.py)
-            "_open": self.files.open, "_close": self.files.close, "_kill": self.files.kill,
-            "_rename": self.files.sandbox.rename, "_files": self.list_files,
+            "_open": self.files.open, "_close": self.files.close, "_field": self.field_variables,
+            "_get": self.get_record, "_put": self.files.put, "_lset": self.files.justify, "_kill": self.files.kill,
+            "_rename": self.files.rename, "_chain": self.chain, "_command": self.program_command, "_files": self.list_files,
             "_fout": lambda n: self.files.get(n).output(), "_prf": self.print_to,
             "_pruf": self.print_using_to, "_writef": self.write_to,
             "_fin_n": self.file_number, "_fin_s": lambda n: self.files.get(n).read_field(False),
@@ -551,7 +561,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
     def _line_block(self, line: int) -> int:
         """The block that starts at ``line`` of area 0 (recompiling so that one does)."""
         if line not in self.programs.get(0, {}):
-            raise BasicError(f"Undefined line number {line}", 8)
+            raise BasicError(undefined_line_message(line, self.dialect.names_missing_line), UNDEFINED_LINE)
         block = self._compiled(0).line_blocks.get(line)
         if block is None:
             self._extra_entries.add(line)
@@ -570,7 +580,16 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
     def _execute_loop(self, area: int, block: int) -> str:
         stopped = False
         try:
-            self._run_area(area, self._compiled(area), block)
+            while True:
+                try:
+                    self._run_area(area, self._compiled(area), block)
+                    break
+                except ChainTo as chain:  # CHAIN: on in the new program (MERGE: stop)
+                    area, block = 0, self.chained(chain)
+                    if block is None:
+                        return "end"
+                except RunAgain as again:  # RUN in the program
+                    area, block = 0, self.run_again(again)
         except ProgramEnd:
             return "end"
         except BreakPoint as stop:
@@ -612,6 +631,11 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
                     err.line = None
                 raise
             return "end"
+        except ChainTo as chain:
+            block = self.chained(chain)
+            return "end" if block is None else self._execute(0, block)
+        except RunAgain as again:
+            return self._execute(0, self.run_again(again))
         except ProgramEnd:
             return "end"
         except ProgramStop:

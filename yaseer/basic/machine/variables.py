@@ -62,7 +62,7 @@ class Variables:
     def dim(self, name: str, sizes: tuple) -> None:
         """DIM name(sizes): replaces an implicit array; a second DIM is an error."""
         if name in self.explicit_arrays:
-            raise BasicError("Duplicate definition", DUPLICATE_DEFINITION)
+            raise BasicError.of_code(DUPLICATE_DEFINITION)
         dims = tuple(runtime.cint(s) for s in sizes)
         if any(d < 0 for d in dims):
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)

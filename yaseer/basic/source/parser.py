@@ -120,7 +120,16 @@ class _ToAst:
         return ast.Print(c[0].type == "LPRINT", [i for i in c[1:]])
 
     def print_using(self, c):
+        if not any(item not in (",", ";") for item in c[4:]):
+            raise BasicError("Missing operand", MISSING_OPERAND)  # USING needs a value (GW-BASIC)
         return ast.Print(c[0].type == "LPRINT", list(c[4:]), using=c[2])
+
+    def print_items_using(self, c):
+        """``PRINT "X="; USING f; v``: the items before USING print first (GW-BASIC)."""
+        at = next(k for k, x in enumerate(c) if isinstance(x, Token) and x.type == "USING")
+        using = self.print_using([c[0]] + list(c[at:]))
+        using.lead = list(c[1:at])
+        return using
 
     def print_item(self, c):
         item = c[0]
@@ -240,13 +249,122 @@ class _ToAst:
     # -- sequential files
     def open_short(self, c):
         v = [x for x in c[1:] if not (isinstance(x, Token) and x.type in ("COMMA", "HASH"))]
-        return ast.Open(v[0], v[1], v[2])
+        return ast.Open(v[0], v[1], v[2], v[3] if len(v) > 3 else None)
 
     def open_long(self, c):
-        mode, word = c[3], c[4]
-        if (mode.type == "NAME" and mode.value != "OUTPUT") or word.value not in ("AS", "AS#"):
+        mode = c[3]
+        if mode.type == "NAME" and mode.value not in ("OUTPUT", "RANDOM"):
             raise BasicError("Syntax error", SYNTAX_ERROR)
-        return ast.Open(ast.Str(mode.value), c[-1], c[1])
+        return self._open_as(ast.Str(mode.value), c[1], c[4:])
+
+    def open_as(self, c):
+        return self._open_as(ast.Str("R"), c[1], c[2:])  # no FOR: a random file (GW-BASIC)
+
+    @staticmethod
+    def _open_as(mode, name, rest):
+        """OPEN ... AS [#]n [LEN = length]: ``rest`` from the AS on."""
+        if rest[0].value not in ("AS", "AS#"):
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        rest = [x for x in rest[1:] if not (isinstance(x, Token) and x.type == "HASH")]
+        if len(rest) > 1 and rest[1].value != "LEN":
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return ast.Open(mode, rest[0], name, rest[3] if len(rest) > 1 else None)
+
+    # -- random-access files
+    def field_stmt(self, c):
+        v = [x for x in c[1:] if not (isinstance(x, Token) and x.type in ("COMMA", "HASH"))]
+        if any(word.value != "AS" for word in v[2::3]):
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return ast.Field(v[0], list(zip(v[1::3], v[3::3])))
+
+    def get_put(self, c):
+        v = [x for x in c[1:] if not (isinstance(x, Token) and x.type in ("COMMA", "HASH"))]
+        return ast.GetPut(c[0].type == "PUT", v[0], v[1] if len(v) > 1 else None)
+
+    def lset_stmt(self, c):
+        return ast.LSet(c[0].value == "RSET", c[1], c[3])
+
+    def reset_stmt(self, c):
+        return ast.Close([])
+
+    # -- CHAIN, COMMON, MERGE
+    def chain_stmt(self, c):
+        merge = isinstance(c[1], Token) and c[1].type == "MERGE"
+        options = c[2 + merge:]
+        values = [o for o in options if o[0] == "value"]
+        deletes = [o[1] for o in options if o[0] == "delete"]
+        # [, line] [, ALL] [, DELETE range] (FIVEO.ASM CHAIN): at most two values, the second
+        # ALL; DELETE last, after a line or its comma (a first ALL is a variable: the line)
+        if len(values) > 2 or len(deletes) > 1 or (deletes and (options[-1][0] != "delete" or not values)):
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        line = values[0][1] if values else None
+        everything = len(values) > 1 and isinstance(values[1][1], ast.Var) and values[1][1].name == "ALL"
+        if len(values) > 1 and not everything:
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return ast.Chain(merge, c[1 + merge], line, everything, deletes[0] if deletes else None)
+
+    def chain_value(self, c):
+        return ("value", c[1] if len(c) > 1 else None)
+
+    def chain_delete(self, c):
+        return ("delete", c[2])
+
+    def line_range(self, c):
+        numbers = [_line_number(t) if t.type == "NUMBER" else t.type for t in c]
+        first = numbers[0] if numbers[0] != "MINUS" else None
+        last = numbers[-1] if numbers[-1] != "MINUS" else None
+        return (first, last)
+
+    def line_range_one(self, c):
+        return (_line_number(c[0]),) * 2
+
+    def common_stmt(self, c):
+        return ast.Common([x for x in c[1:] if not isinstance(x, Token)])
+
+    def common_item(self, c):
+        return (c[0].value, len(c) > 1)
+
+    # -- commands a program runs (chaining.py)
+    @staticmethod
+    def _option(c, letters: str):
+        """The letter after a comma (``,R``), which must be one of ``letters``."""
+        if len(c) < 4:
+            return None
+        word = c[3].value
+        if word not in tuple(letters):
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return word
+
+    def run_stmt(self, c):
+        if len(c) == 2 and isinstance(c[1], ast.Num):  # RUN n: a line number
+            if c[1].value != int(c[1].value) or c[1].value < 0:
+                raise BasicError("Syntax error", SYNTAX_ERROR)
+            return ast.Command("RUN", int(c[1].value))
+        return ast.Command("RUN", c[1] if len(c) > 1 else None, self._option(c, "R"))
+
+    def list_stmt(self, c):
+        return ast.Command(c[0].value, c[1] if len(c) > 1 else (None, None))
+
+    def load_stmt(self, c):
+        return ast.Command("LOAD", c[1], self._option(c, "R"))
+
+    def save_stmt(self, c):
+        return ast.Command("SAVE", c[1], self._option(c, "AP"))
+
+    def new_stmt(self, c):
+        return ast.Command(c[0].value)
+
+    def delete_stmt(self, c):
+        return ast.Command("DELETE", c[1])
+
+    def edit_stmt(self, c):
+        return ast.Command("EDIT", _line_number(c[1]))
+
+    def key_stmt(self, c):
+        return ast.Command("KEY", None, c[1].type)
+
+    def merge_stmt(self, c):
+        return ast.Chain(True, c[1], None, True, None, run=False)
 
     def close_stmt(self, c):
         return ast.Close([x for x in c[1:] if not isinstance(x, Token)])
@@ -493,9 +611,11 @@ def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
         raise _grammar_error(exc, dialect) from None
 
 
-# Terminals that can start an operand: an expression expected here and the
-# statement ended instead is GW-BASIC's "Missing operand" (``X =``, ``PRINT 1 +``).
-_OPERAND_STARTS = frozenset(("NAME", "STRNAME", "_LPAR"))
+# Terminals only an expression starts with: one expected here and the statement ended
+# instead is GW-BASIC's "Missing operand" (``X =``, ``PRINT 1 +``: GWEVAL.ASM EVAL raises
+# MOERR); where only a name or a line number may come (``FOR``, ``DIM``, ``GOTO``) the
+# statement's own scan finds nothing: "Syntax error".
+_OPERAND_STARTS = frozenset(("STRING", "FUNC", "FUNCN", "MINUS", "NOT"))
 _STATEMENT_ENDS = frozenset(("$END", "_COLON", "ELSE"))
 
 
@@ -583,7 +703,39 @@ def _recover_tokens(tokens: list, err: BasicError, dialect: Dialect) -> list:
     good, bad_start = _statements_before_error(tokens)
     if good and isinstance(good[-1], ast.If):
         return _place_error(good, err)
-    return good + [err] + _statements_after_error(tokens, bad_start, dialect)
+    return good + _printed_before_error(tokens, bad_start) + [err] + _statements_after_error(tokens, bad_start, dialect)
+
+
+# Tokens that begin another PRINT item after a complete one (``PRINT "a" "b"``), and those
+# a ``(`` after which continues (a subscript, a function's arguments).
+_ITEM_STARTS = frozenset(("SEMI", "COMMA", "NAME", "STRNAME", "NUMBER", "STRING", "_LPAR", "FUNC", "FUNCN",
+                          "FN", "SYSVAR", "TAB", "SPC"))
+_CALLED = frozenset(("NAME", "STRNAME", "FUNC", "FUNCN", "TAB", "SPC"))
+
+
+def _printed_before_error(tokens: list, start: int) -> list:
+    """A bad PRINT's longest good start, as a PRINT that leaves the line open: GW-BASIC
+    prints each item as it reads it (``PRINT "a"; ERL(`` prints ``a 0``, then ``Missing
+    operand``: ``(`` begins another item).  Empty for any other statement."""
+    if start >= len(tokens) or tokens[start].type not in ("PRINT", "LPRINT"):
+        return []
+    end = next((k for k in range(start, len(tokens)) if tokens[k].type == "_COLON"), len(tokens))
+    for k in range(end - 1, start, -1):
+        after, last = tokens[k + 1].type if k + 1 < end else None, tokens[k].type
+        if after is not None and after not in _ITEM_STARTS or (after == "_LPAR" and last in _CALLED) \
+                or after == last == "NUMBER":
+            continue  # the prefix ends inside an item (``1+``, ``A(``, ``1 2``: GW reads 12)
+        try:
+            found = _parse(tokens[start:k + 1])
+        except (BasicError, GrammarError):
+            continue
+        if len(found) == 1 and isinstance(found[0], ast.Print) and found[0].using is None:
+            printed = found[0]
+            if printed.items and printed.items[-1] not in (",", ";"):
+                printed.items = list(printed.items) + [";"]
+            return [printed]
+        return []
+    return []
 
 
 MAX_NESTING = 60  # IFs in one line, or parentheses inside each other

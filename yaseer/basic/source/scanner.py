@@ -24,7 +24,7 @@ import functools
 import re
 
 from yaseer.basic.dialects.dialect import CASIO, Dialect
-from yaseer.basic.errors import BasicError, OVERFLOW, SYNTAX_ERROR
+from yaseer.basic.errors import DIRECT_STATEMENT_IN_FILE, BasicError, OVERFLOW, SYNTAX_ERROR, error_message
 from yaseer.basic.dialects.reserved import GW_RESERVED_WORDS
 
 # Statement and operator keywords every dialect reserves: each is its own terminal type.
@@ -60,6 +60,10 @@ DIALECT_WORDS = {
     "LOCATE": "LOCATE", "INKEY$": "SYSVAR", "PEEK": "FUNC",
     "WRITE#": "BANK", "READ#": "BANK", "RESTORE#": "BANK", "LIST#": "BANK", "NEW#": "BANK",
     "SAVE#": "BANK", "LOAD#": "BANK",
+    "FIELD": "FIELD", "GET": "GET", "PUT": "PUT", "LSET": "LSET", "RSET": "LSET", "RESET": "RESET",
+    "CHAIN": "CHAIN", "COMMON": "COMMON", "MERGE": "MERGE", "DELETE": "DELETE",
+    "RUN": "RUN", "LIST": "LIST", "LLIST": "LIST", "LOAD": "LOAD", "SAVE": "SAVE", "NEW": "NEW",
+    "EDIT": "EDIT", "KEY": "KEY", "OFF": "OFF", "SYSTEM": "SYSTEM",
 }
 # GW-BASIC reads these keywords even when name characters follow (``FNA``, ``TAB(``).
 _GW_PREFIX_KEYWORDS = ("FN",)
@@ -353,13 +357,21 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
                 i = end
                 yield kind, word, start, i
         elif ch in "<>=":
-            pair = upper[i:i + 2]
+            pair, after = upper[i:i + 2], i + 2
+            if dialect.spaced_relations and pair not in _RELATIONS:
+                j = i + 1
+                while j < n and upper[j] == " ":
+                    j += 1
+                pair, after = ch + upper[j:j + 1], j + 1
             symbol = pair if pair in _RELATIONS else ch
-            i += len(symbol)
+            i = after if symbol == pair else i + 1
             yield _RELATIONS[symbol], symbol, start, i
         elif ch in _OPERATORS:
             i += 1
             yield _OPERATORS[ch], ch, start, i
+        elif ch in "[]" and dialect.bracket_subscripts:  # checked by _subscript_brackets
+            i += 1
+            yield ("_LPAR" if ch == "[" else "_RPAR"), ch, start, i
         elif ch == "?":
             i += 1
             yield "PRINT", "PRINT", start, i
@@ -398,7 +410,27 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
             tokens[-1] = Token(_GO_JOINED[value], "GO" + value)
             continue
         tokens.append(Token(kind, value))
+    if dialect.bracket_subscripts:
+        _subscript_brackets(tokens)
     return tokens
+
+
+def _subscript_brackets(tokens: list) -> None:
+    """GW-BASIC's ``[ ]``: either may stand for a parenthesis of a subscript (the one after
+    a name), nowhere else (a Syntax error)."""
+    subscripts: list[bool] = []
+    previous = None
+    for token in tokens:
+        if token.type == "_LPAR":
+            subscripts.append(previous in ("NAME", "STRNAME"))
+            if token.value == "[" and not subscripts[-1]:
+                raise _syntax_error()
+        elif token.type == "_RPAR":
+            if token.value == "]" and not (subscripts and subscripts[-1]):
+                raise _syntax_error()
+            if subscripts:
+                subscripts.pop()
+        previous = token.type
 
 
 _GO_JOINED = {"TO": "GOTO", "SUB": "GOSUB"}
@@ -480,12 +512,27 @@ def _upper_outside_strings(text: str) -> str:
     return '"'.join(parts)
 
 
-def split_lines(source: str) -> list[tuple[int, str, int]]:
+class DirectStatementInFile(BasicError):
+    """A program file's line without a line number, where the dialect does not join it onto
+    the line before: loading stops there; ``lines`` holds the lines read before it."""
+
+    def __init__(self, lines: list):
+        super().__init__(error_message(DIRECT_STATEMENT_IN_FILE), DIRECT_STATEMENT_IN_FILE)
+        self.lines = lines
+
+    def at(self, line, area: int = 0) -> "DirectStatementInFile":
+        """Never placed at a line: GW-BASIC names none (the line is the file's, not the program's)."""
+        return self
+
+
+def split_lines(source: str, joins_unnumbered: bool = True) -> list[tuple[int, str, int]]:
     """Split a listing into ``(line number, statement text, physical line index)``.
 
     A physical line that begins with a number followed by a space, a letter or
     the end of the line starts a new program line; any other non-blank line
-    continues the previous one (joined with one space).  Text before the first
+    continues the previous one (joined with one space), or, when not
+    ``joins_unnumbered`` (``Dialect.joins_unnumbered_lines``), ends the reading with
+    :class:`DirectStatementInFile` (GW-BASIC's LOAD).  Text before the first
     numbered line is a syntax error (``BasicError`` with no line).
     """
     lines: list[tuple[int, str, int]] = []
@@ -495,6 +542,8 @@ def split_lines(source: str) -> list[tuple[int, str, int]]:
         match = _LINE_NUMBER.match(physical)
         if match:
             lines.append((int(match.group(1)), physical[match.end():].strip(), index))
+        elif not joins_unnumbered:
+            raise DirectStatementInFile(lines)
         elif lines:
             number, text, first = lines[-1]
             lines[-1] = (number, (text + " " + physical.strip()).strip(), first)

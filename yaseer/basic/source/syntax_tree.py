@@ -166,6 +166,7 @@ class Print:
     items: list  # expressions, "," ";" separators, Tab, Spc
     using: object = None  # format expression for PRINT USING
     channel: object = None  # PRINT #n: the file number expression
+    lead: list = _LIST  # PRINT items USING ...: the items printed before the USING
 
 
 @_node
@@ -322,10 +323,63 @@ class Write:
 
 @_node
 class Open:
-    """OPEN: mode ("I"/"O"/"A", or INPUT/OUTPUT/APPEND) expression, file number, name."""
+    """OPEN: mode ("I"/"O"/"A"/"R", or INPUT/OUTPUT/APPEND/RANDOM) expression, file number,
+    name, and the record length (None: not given)."""
     mode: object
     number: object
     name: object
+    length: object = None
+
+
+@_node
+class Field:
+    """FIELD #n, width AS variable, ...: ``fields`` of (width expression, variable)."""
+    number: object
+    fields: list
+
+
+@_node
+class GetPut:
+    """GET #n[, record] (``put`` False) or PUT #n[, record]."""
+    put: bool
+    number: object
+    record: object = None
+
+
+@_node
+class Chain:
+    """CHAIN [MERGE] file [, line] [, ALL] [, DELETE first-last]; MERGE file (``run`` False:
+    merge, then stop)."""
+    merge: bool
+    file: object
+    line: object  # expression or None
+    everything: bool  # ALL: every variable kept (else only COMMON ones)
+    delete: object  # (first or None, last or None) or None
+    run: bool = True
+
+
+@_node
+class Command:
+    """A command run by a program: ``name`` RUN LIST LLIST LOAD SAVE NEW SYSTEM DELETE EDIT
+    KEY; ``argument`` its file name expression, line or line range; ``option`` the
+    letter after the comma (``,R`` ``,A`` ``,P``) or KEY's ON/OFF."""
+    name: str
+    argument: object = None
+    option: object = None
+
+
+@_node
+class Common:
+    """COMMON: ``names`` of (name, is an array) kept by a CHAIN; nothing when it runs."""
+    names: list
+
+
+@_node
+class LSet:
+    """LSET variable = value (``right`` False) or RSET."""
+    right: bool
+    target: object
+    value: object
 
 
 @_node

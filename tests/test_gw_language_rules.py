@@ -1,0 +1,126 @@
+"""GW-BASIC's rules for statements that run (issue 24's language items) against PC-BASIC
+2.0.8 where it agrees with GW-BASIC's source, and against the source where they differ
+(docs/compatibility.md names the routine): a FOR that finds no NEXT leaves its variable
+as it was (GWMAIN.ASM FOR keeps the start value aside until NXTSCN has found the NEXT),
+the messages are the table's texts, ...
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from test_differential_support import PcBasic
+from test_gw_files import yaseer_run
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+
+
+@pytest.fixture(scope="module")
+def pc():
+    session = PcBasic()
+    yield session
+    session.close()
+
+
+AGREED = {
+    # FOR keeps its start value aside until its NEXT is found (GWMAIN.ASM FOR, NXTSCN)
+    "for without next leaves the variable": (
+        "10 ON ERROR GOTO 100\n20 I=5: FOR I=1 TO 3\n30 PRINT I\n40 J=7: FOR J=1 TO 2: NEXT K\n"
+        "50 PRINT J: END\n100 PRINT ERR; ERL; I; J: RESUME NEXT\n"),
+    "for without next in a branch": "10 I=5: IF 1 THEN FOR I=1 TO 3\n",
+    # the message table's texts
+    "undefined line": "10 GOTO 50\n",
+    "undefined line by gosub": "10 GOSUB 50\n",
+    "undefined line by then": "10 IF 1 THEN 50\n",
+    "restore to a missing line": "10 RESTORE 50\n",
+    "duplicate definition": "10 DIM A(2): DIM A(3)\n",
+    # relations with blanks inside (GWEVAL.ASM collects < = > skipping blanks)
+    "spaced relations": ('10 A=3: B=2\n20 IF A = > B THEN PRINT "ge"\n30 IF B < = A THEN PRINT "le"\n'
+                         '40 IF A >  < B THEN PRINT "ne"\n50 PRINT A = > 3, A < > 3\n'),
+    # [ ] for a subscript's parentheses, nowhere else
+    "bracket subscripts": "10 DIM A[3]: A[2]=5: PRINT A[2]; A(2); A[2); A(2]\n20 PRINT [1+2]\n",
+    "brackets are no parentheses": "10 PRINT (1+2]\n",
+    # a statement runs left to right: what it printed stays before its error
+    "print items before a bad one": '10 PRINT "a"; ERL(\n',
+    "print items before a bad expression": '10 PRINT "b", 5; 1+\n',
+    "print using literal before its error": '10 PRINT USING "abc";1\n',
+    "print using a string into a number field": '10 PRINT USING "x##y##"; 5; "s"\n',
+    # PRINT ... USING after other items; a single's 7 digits are what USING rounds
+    "using after items": '10 PRINT "X="; USING "##.#"; 3.14159\n20 PRINT 1, USING "#"; 2\n',
+    "using rounds the single's digits": ('10 PRINT USING "#.##"; 2.675; 1.005; 0.125#; 2.675#\n'
+                                          '20 PRINT USING "#.##########"; 1/3\n'),
+}
+
+
+@pytest.mark.parametrize("name", list(AGREED))
+def test_agrees_with_pcbasic(pc, tmp_path, name):
+    source = AGREED[name]
+    pc.statement("ON ERROR GOTO 0")
+    assert yaseer_run(source, tmp_path) == pc.program(source)
+
+
+# Statements cut after each of their tokens: the error each cut gives (Syntax error where
+# the statement's own scan wants a name or a line number, Missing operand where an
+# expression must start: GWEVAL.ASM EVAL's MOERR), as PC-BASIC 2.0.8 reports it.
+CUT_STATEMENTS = [
+    'PRINT 1+2*3', 'GOTO 100', 'GOSUB 100', 'IF A=1 THEN 100 ELSE 100', 'FOR I=1 TO 3 STEP 1: NEXT I',
+    'DIM A(3), B$(2)', 'X=ABS(-3)+LEN("AB")', 'READ X', 'LET Y=2', 'SWAP A, B',
+    'WIDTH 80', 'RESTORE 100', 'CLEAR 100', 'ERROR 5', 'CLOSE #1', 'KILL "X"',
+    'ERASE A', 'OPTION BASE 1', 'RESUME NEXT', 'A$=MID$("ABC",2,1)', 'PRINT USING "##";5',
+    'X=INSTR(1,"AB","B")', 'X=NOT 1', 'X=-1', 'X=(1+2)', 'X=2^3', 'X=5 MOD 2', 'X=5\\2', 'ON ERROR GOTO 100',
+    'DEFINT A-C', 'RETURN 100', 'X=1 AND 2', 'OPEN "O", #1, "F"', 'OPEN "F" FOR OUTPUT AS #1', 'X=FRE(0)',
+    'X=VAL("5")', 'X=STRING$(3,65)', 'LSET A$="X"', 'X=A(1)', 'X=A(1,2)', 'DEF',
+]
+# Where the two still differ (not generated): a DEF FN body is checked when DEF runs
+# (GW-BASIC: when the function is called); GW checks the file number of PRINT #, FIELD #,
+# GET # and NAME's file before the rest of the statement; MID$ checks its arguments as it
+# reads them; ON n GOTO with n = 0 reads no further; WHILE scans for its WEND first;
+# WRITE prints its items and commas before the one that fails.
+
+
+def _cuts(statement: str) -> list[str]:
+    import re
+
+    ends = [m.end() for m in re.finditer(r'[A-Z$]+|\d+|"[^"]*"|\S', statement)]
+    return [statement[:end] for end in ends[:-1]]
+
+
+def test_cut_statements_give_pcbasics_errors(pc, tmp_path):
+    found = []
+    for statement in CUT_STATEMENTS:
+        for text in _cuts(statement):
+            source = f"10 {text}\n20 PRINT \"ok\"\n100 RETURN\n"
+            pc.statement("CLOSE")
+            pc.statement("ON ERROR GOTO 0")
+            theirs, ours = pc.program(source), yaseer_run(source, tmp_path)
+            if theirs != ours:
+                found.append((text, theirs, ours))
+    assert not found, found
+
+
+def test_stop_leaves_its_break_on_a_new_row(pc):
+    """PC-BASIC 2.0.8 prints ``A`` then ``Break in 10`` on the next row; yaseer run prints the
+    Break on standard error, after ending the open row of standard output."""
+    from yaseer.api import run
+
+    source = '10 PRINT "A";: STOP\n20 PRINT "B"\n'
+    result = run(source, dialect="gw")
+    assert (result.status, result.line) == ("stop", 10)
+    assert result.text + f"Break in {result.line}\n" == pc.program(source)
+
+
+def test_line_input_keeps_a_lone_line_feed_as_the_source_reads_it(tmp_path):
+    """DSKCOM.ASM DLINE: LINE INPUT # ends at a CR (a LF after it consumed); a LF after no
+    CR is stored, and so is a CR right after it; INPUT # of an unquoted string drops the LF
+    and reads on through such a CR.  (PC-BASIC 2.0.8 ends both at the LF.)"""
+    (tmp_path / "D.TXT").write_bytes(b"ab\ncd\r\nef\n\r\ngh\r\nx\ny\r\n\x1a")
+    source = ('10 OPEN "I", 1, "D.TXT": LINE INPUT #1, A$: LINE INPUT #1, B$: INPUT #1, C$\n'
+              '20 PRINT LEN(A$); LEN(B$); C$; EOF(1); INSTR(A$, CHR$(10)); INSTR(B$, CHR$(13))\n')
+    assert yaseer_run(source, tmp_path) == " 5  7 xy-1  3  4 \n"
+
+
+def test_line_input_reads_at_most_255_characters(tmp_path):
+    """DSKCOM.ASM DLINE fills a 255-character buffer; the rest is the next line (PC-BASIC 2.0.8: the same)."""
+    (tmp_path / "L.TXT").write_bytes(b"x" * 300 + b"\r\n")
+    source = '10 OPEN "I", 1, "L.TXT": LINE INPUT #1, A$: LINE INPUT #1, B$: PRINT LEN(A$); LEN(B$)\n'
+    assert yaseer_run(source, tmp_path) == " 255  45 \n"

@@ -1,0 +1,169 @@
+"""Program files as GW-BASIC's LOAD reads them (yaseer/basic/program_file.py), against
+PC-BASIC 2.0.8: generated programs SAVEd by PC-BASIC tokenised (``SAVE "f"``) and
+protected (``SAVE "f",P``) read back as the text PC-BASIC LISTs and run as PC-BASIC
+runs them; an ASCII file ends at its first Ctrl-Z; a line without a number stops
+loading with ``Direct statement in file`` (the lines before it loaded).  The
+protection's scrambling is GIODSK.ASM's PDECOD (checked here by PC-BASIC's files,
+which GW-BASIC loads too).
+"""
+
+from __future__ import annotations
+
+import io
+import random
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from test_differential_programgen import random_program
+from test_differential_support import base_seed, case_count, clean_output
+
+from yaseer.basic.errors import BasicError
+from yaseer.basic.machine.machine import Machine
+from yaseer.basic.machine.program_file import detokenise, program_text, unprotect
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+
+# Every kind of token a line can hold: numbers of each type and form, keywords of the
+# one- and two-byte tables, ELSE and ' (stored after a ':'), WHILE (stored with a +),
+# DATA and REM text that is not tokenised, strings holding keywords.
+TOKEN_PROGRAM = """\
+10 A#=1.5D+20: B!=3.25: C%=-300: D=&H1F: E=&O17: F=70000: G=1.1: H=100000!: J=12345678#
+20 PRINT "PRINT FOR";A#;B!;C%;D;E;F;G;H;J;32767;255;9;10;.5;1E-20;2.5#
+30 IF A THEN 20 ELSE GOTO 40
+40 X$=MID$("ABC",2): PRINT X$, LEFT$(X$,1); RIGHT$(X$,1); CHR$(65) ' a remark: PRINT
+50 DEF FNA(X)=X^2+SIN(X)-COS(X)*TAN(X)/ATN(X)\\2 MOD 3: Y=FNA(2)
+60 WHILE 0: WEND: DATA 1,"two:", PRINT ,4: READ P, Q$
+70 REM PRINT "not a token"
+80 Z=CVI(MKI$(1))+CVS(MKS$(2))+CVD(MKD$(3)): OPEN "O",1,"X": CLOSE: KILL "X"
+90 ON ERROR GOTO 100: SWAP A,B: ERASE: RANDOMIZE 1: R=RND(1) AND 3 OR NOT 4 XOR 5 EQV 6 IMP 7
+100 W=LEN(STR$(VAL("12")))+ASC("A")+INSTR("AB","B")+FIX(-1.5)+INT(2.5)+SGN(-3)+ABS(-4)+SQR(4)
+110 PRINT USING "##.#";W;: PRINT TAB(5);SPC(2);STRING$(3,"*");SPACE$(2);HEX$(255);OCT$(8)
+120 LINE INPUT "x";S$: INPUT #1, T: WRITE #1, T: PRINT #1, T: FIELD #1, 2 AS U$: GET #1, 1
+130 IF A<>B AND A<=B OR A>=B THEN 140 ELSE 150
+140 GOSUB 150: RETURN
+150 FOR I=1 TO 10 STEP 2: NEXT I: STOP: END
+"""
+
+
+@pytest.fixture(scope="module")
+def pc(tmp_path_factory):
+    """A PC-BASIC session with drive C: on a fresh directory: (session, directory)."""
+    import pcbasic
+
+    directory = tmp_path_factory.mktemp("pcbasic")
+    session = pcbasic.Session(output_streams=None, input_streams=None,
+                              devices={"C:": str(directory)}, current_device="C:")
+    session.start()
+    yield session, directory
+    session.close()
+
+
+def saved(pc, source: str, name: str, option: str = "") -> tuple[bytes, str]:
+    """``source`` entered in PC-BASIC and SAVEd as ``name`` (``option`` ",A" or ",P");
+    the file's bytes and PC-BASIC's LIST of the program."""
+    session, directory = pc
+    session.execute("NEW")
+    session.execute(source.rstrip("\n"))
+    listed = clean_output(session.execute("LIST"))
+    session.execute(f'SAVE "{name}"{option}')
+    return (directory / f"{name}.BAS").read_bytes(), listed
+
+
+def yaseer_output(text: str, directory: Path | None = None) -> str:
+    screen = io.StringIO()
+    machine = Machine(screen=screen, dialect="gw", files=directory)
+    try:
+        machine.load(text)
+        machine.run()
+    except BasicError as err:
+        machine.end_line()
+        return screen.getvalue() + str(err) + "\n"
+    return screen.getvalue()
+
+
+def test_a_tokenised_file_reads_as_pcbasic_lists_it(pc):
+    data, listed = saved(pc, TOKEN_PROGRAM, "TOKENS")
+    assert data[0] == 0xFF
+    assert program_text(data) == listed
+
+
+def test_a_protected_file_unscrambles_to_the_tokenised_one(pc):
+    tokenised, listed = saved(pc, TOKEN_PROGRAM, "PLAIN")
+    protected, _ = saved(pc, TOKEN_PROGRAM, "SECRET", ",P")
+    assert protected[0] == 0xFE and protected[1:] != tokenised[1:]
+    assert unprotect(protected[1:-1]) == tokenised[1:-1]  # the Ctrl-Z after the program is not scrambled
+    assert program_text(protected) == listed
+
+
+def test_generated_programs_saved_by_pcbasic_read_back_and_run_alike(pc):
+    """Seeded programs (the differential tests' generator) SAVEd plain and protected by
+    PC-BASIC: yaseer reads PC-BASIC's LIST back, and runs them to PC-BASIC's output."""
+    session, directory = pc
+    rng = random.Random(base_seed() + 24)
+    for k in range(case_count(8)):
+        source = random_program(rng).source()
+        tokenised, listed = saved(pc, source, f"GEN{k}")
+        protected, _ = saved(pc, source, f"GENP{k}", ",P")
+        assert detokenise(tokenised[1:]) == listed, source
+        assert program_text(protected) == listed, source
+        session.execute("NEW")
+        theirs = clean_output(session.execute(f'RUN "GEN{k}"'))
+        assert yaseer_output(program_text(tokenised)) == theirs, source
+
+
+def test_an_ascii_file_ends_at_ctrl_z(pc):
+    session, directory = pc
+    (directory / "CTRLZ.BAS").write_bytes(b'10 PRINT 1\r\n20 PRINT "A\x1a B"\r\n30 PRINT 4\r\n\x1a')
+    session.execute("NEW")
+    session.execute('LOAD "CTRLZ"')
+    listed = clean_output(session.execute("LIST"))
+    text = program_text((directory / "CTRLZ.BAS").read_bytes())
+    assert text.replace("\r\n", "\n") + "\n" == listed  # the last line ends at the Ctrl-Z
+    assert yaseer_output(text) == " 1 \nA\n"
+
+
+def test_a_line_without_number_stops_loading(pc):
+    session, directory = pc
+    (directory / "DIRECT.BAS").write_bytes(b"10 PRINT 1\r\n\r\n20 PRINT 2\r\nPRINT 3\r\n30 PRINT 4\r\n")
+    session.execute("NEW")
+    message = clean_output(session.execute('LOAD "DIRECT"'))
+    listed = clean_output(session.execute("LIST"))
+    machine = Machine(screen=io.StringIO(), dialect="gw")
+    with pytest.raises(BasicError) as caught:
+        machine.load((directory / "DIRECT.BAS").read_bytes().decode())
+    assert str(caught.value) + "\n" == message == "Direct statement in file\n"
+    assert caught.value.code == 66
+    assert "".join(f"{n} {t}\n" for n, t in sorted(machine.programs[0].items())) == listed
+
+
+def test_casio_still_joins_a_wrapped_line():
+    machine = Machine(screen=io.StringIO())
+    machine.load("10 PRINT 1;\n  X\n")
+    assert machine.programs[0] == {10: "PRINT 1; X"}
+
+
+def test_a_byte_order_mark_is_dropped_and_latin1_kept():
+    assert program_text(b"\xef\xbb\xbf10 PRINT 1\r\n") == "10 PRINT 1\r\n"
+    assert program_text(b'10 PRINT "\x82"\r\n\x1a') == '10 PRINT "\x82"\r\n'
+
+
+@pytest.mark.parametrize("data", [b"\xff", b"\xff\x01", b"\xfe\x00\x00\x0a", b"\xff\x10\x00\x0a\x00\x1d\x00",
+                                  bytes(range(255, -1, -1))])
+def test_a_cut_or_strange_binary_file_reads_without_a_traceback(data):
+    assert isinstance(program_text(data), str)
+
+
+def test_yaseer_run_reads_a_tokenised_file(tmp_path, pc):
+    data, _ = saved(pc, '10 PRINT "HI";2+3\n20 END\n', "RUNME")
+    path = tmp_path / "RUNME.BAS"
+    path.write_bytes(data)
+    done = subprocess.run([sys.executable, "-m", "yaseer", "run", "--dialect", "gw", str(path)],
+                          capture_output=True, text=True, cwd=tmp_path)
+    assert (done.stdout, done.stderr, done.returncode) == ("HI 5 \n", "", 0)
+    path.write_bytes(b"10 PRINT 1\r\nPRINT 2\r\n")
+    done = subprocess.run([sys.executable, "-m", "yaseer", "run", "--dialect", "gw", str(path)],
+                          capture_output=True, text=True, cwd=tmp_path)
+    assert (done.stdout, done.stderr, done.returncode) == ("", "Direct statement in file\n", 1)

@@ -1,0 +1,135 @@
+"""Random-access files (yaseer/basic/machine/random_files.py) against PC-BASIC 2.0.8: seeded
+generated programs (OPEN in its three forms with a record length, FIELD, LSET, RSET,
+PUT and GET with and without a record number, LOC, LOF, EOF, a field variable detached
+by LET) print the same text and leave the same bytes in the same files; and the one
+place where GW-BASIC's source decides against PC-BASIC: more FIELD bytes than a
+record is ``FIELD overflow`` (DSKCOM.ASM ``FIELD`` jumps to ``DERFOV``; PC-BASIC 2.0.8
+says nothing).
+"""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+
+from test_differential_support import base_seed, case_count
+from test_gw_files import contents, pcbasic_run, yaseer_run
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+
+# Prints S$ with its zero bytes as "~" (a record never written reads as zero bytes).
+SHOW = """\
+1000 FOR K=1 TO LEN(S$): Z$=MID$(S$,K,1): IF Z$=CHR$(0) THEN Z$="~"
+1010 PRINT Z$;: NEXT: PRINT "|";: RETURN
+"""
+
+
+def random_text(rng: random.Random) -> str:
+    return "".join(rng.choice("abcXYZ 09-") for _ in range(rng.randint(0, 14)))
+
+
+def random_file_program(rng: random.Random) -> str:
+    length = rng.choice([8, 16, 20, 32, 128])
+    names = ["A$", "B$", "C$", "D$"][:rng.randint(1, 4)]
+    widths, left = [], length
+    for _ in names:
+        width = rng.randint(2, max(2, min(12, left // len(names))))
+        widths.append(width)
+        left -= width
+    opening = rng.choice([f'OPEN "R", #1, "R.DAT", {length}', f'OPEN "R.DAT" AS #1 LEN = {length}',
+                          f'OPEN "R.DAT" FOR RANDOM AS 1 LEN={length}'])
+    lines = [opening, "FIELD #1, " + ", ".join(f"{w} AS {n}" for w, n in zip(widths, names))]
+    size = last = 0  # records in the file, the last one read or written
+    for _ in range(rng.randint(4, 14)):
+        kind = rng.random()
+        name = rng.choice(names)
+        if kind < 0.35:
+            lines.append(f'{rng.choice(["LSET", "RSET"])} {name} = "{random_text(rng)}"')
+        elif kind < 0.55:
+            # PUT without a number after a GET beyond the end: the source's next record,
+            # PC-BASIC's end of file (a known difference, not generated)
+            record = rng.randint(1, 6) if rng.random() < 0.7 or last > size else None
+            lines.append("PUT #1" + (f", {record}" if record else ""))
+            last = record or last + 1
+            size = max(size, last)
+        elif kind < 0.75:
+            record = rng.randint(1, 7) if rng.random() < 0.7 else None
+            lines.append("GET #1" + (f", {record}" if record else ""))
+            last = record or last + 1
+        elif kind < 0.92:
+            lines.append("PRINT LOC(1); LOF(1); EOF(1);: " + ": ".join(f"S$={n}: GOSUB 1000" for n in names)
+                         + ": PRINT")
+        elif kind < 0.96:
+            lines.append(f'{name} = "{random_text(rng)}!"')  # detached from the buffer
+        else:
+            lines.append(f'Q$ = "{random_text(rng)}": {rng.choice(["LSET", "RSET"])} Q$ = "{random_text(rng)}": '
+                         'S$ = Q$: GOSUB 1000: PRINT')
+    lines += ["CLOSE", "END"]
+    return "".join(f"{10 * (k + 1)} {text}\n" for k, text in enumerate(lines)) + SHOW
+
+
+def test_generated_random_file_programs_match_pcbasic(tmp_path):
+    rng = random.Random(base_seed() + 3)
+    for k in range(case_count(25)):
+        source = random_file_program(rng)
+        theirs_dir, ours_dir = tmp_path / f"pc{k}", tmp_path / f"ya{k}"
+        theirs_dir.mkdir()
+        ours_dir.mkdir()
+        assert yaseer_run(source, ours_dir) == pcbasic_run(source, theirs_dir), source
+        assert contents(ours_dir) == contents(theirs_dir), source
+
+
+FIXED = """\
+10 OPEN "R", #1, "R.DAT", 16
+20 FIELD #1, 4 AS A$, 6 AS B$
+30 LSET A$ = "ab": RSET B$ = "xyz"
+40 PUT #1, 3: PRINT LOC(1); LOF(1); EOF(1)
+50 LSET A$ = "toolongvalue": PUT #1: PRINT LOC(1); LOF(1)
+60 GET #1, 3: PRINT "[";A$;"][";B$;"]"; LOC(1); EOF(1)
+70 GET #1, 9: PRINT LOC(1); EOF(1); LEN(A$); ASC(A$)
+80 C$ = "hello": LSET C$ = "ab": PRINT "[";C$;"]": RSET C$="x": PRINT "[";C$;"]"
+90 A$ = "plain": GET #1, 3: PRINT "[";A$;"]": LSET A$="q": PUT #1,1: GET #1,1: PRINT "[";A$;"]"
+100 CLOSE: OPEN "R.DAT" AS #2 LEN = 8: PRINT LOF(2): FIELD #2, 8 AS D$: GET #2, 7: PRINT "[";D$;"]"
+110 OPEN "R.DAT" FOR RANDOM AS 3: PRINT LOF(3): RESET: OPEN "R.DAT" FOR INPUT AS 1: CLOSE
+120 OPEN "R", 1, "R.DAT": FIELD 1, 128 AS E$: GET 1: PRINT LEN(E$); LOC(1): CLOSE
+"""
+
+
+def test_random_file_statements_match_pcbasic(tmp_path):
+    theirs_dir, ours_dir = tmp_path / "pc", tmp_path / "ya"
+    theirs_dir.mkdir()
+    ours_dir.mkdir()
+    assert yaseer_run(FIXED, ours_dir) == pcbasic_run(FIXED, theirs_dir)
+    assert contents(ours_dir) == contents(theirs_dir)
+
+
+@pytest.mark.parametrize("source, message", [
+    ('10 OPEN "R", 1, "F", 16: FIELD #1, 9 AS A$, 8 AS B$', "FIELD overflow in 10"),  # the source: DERFOV
+    ('10 OPEN "R", 1, "F", 0', "Illegal function call in 10"),
+    ('10 OPEN "R", 1, "F", 16: GET #1, 0', "Bad record number in 10"),
+    ('10 OPEN "R", 1, "F", 16: PUT #1, -1', "Bad record number in 10"),
+    ('10 OPEN "R", 1, "F", 16: PUT #1, 40000', "Bad record number in 10"),  # DSKRND: signed
+    ('10 OPEN "R", 1, "F", 16: PUT #1, 70000', "Overflow in 10"),  # ADRGET: 16 bits
+    ('10 OPEN "O", 1, "F": FIELD #1, 2 AS A$', "Bad file mode in 10"),
+    ('10 OPEN "O", 1, "F": GET #1', "Bad file mode in 10"),
+    ('10 GET #2', "Bad file number in 10"),
+    ('10 OPEN "R", 1, "F", 16: FIELD #1, 2 AS A', "Type mismatch in 10"),
+    ('10 OPEN "F" AS 1 SIZE 4', "Syntax error in 10"),
+    ('10 OPEN "R", 1, "F": INPUT #1, A', "Bad file mode in 10"),
+])
+def test_random_file_errors(tmp_path, source, message):
+    assert yaseer_run(source + "\n", tmp_path).splitlines()[-1] == message
+
+
+def test_casio_has_no_random_file_words(tmp_path):
+    assert yaseer_run('10 OPEN "R", 1, "F", 16: FIELD #1, 2 AS A$\n', tmp_path, "casio") \
+        == "Unsupported word FIELD in 10\n"
+
+
+def test_put_after_a_get_beyond_the_end_takes_the_next_record(tmp_path):
+    """GIODSK.ASM DSKRND: GET and PUT without a number use the logical record + 1, also after
+    a GET beyond the end (PC-BASIC 2.0.8 writes the PUT at the file's end: LOF 24)."""
+    source = ('10 OPEN "R.DAT" AS #1 LEN = 8: FIELD #1, 2 AS A$: PUT #1, 2: GET #1: PRINT LOC(1); EOF(1)\n'
+              '20 PUT #1: PRINT LOC(1); LOF(1)\n')
+    assert yaseer_run(source, tmp_path) == " 3 -1 \n 4  32 \n"

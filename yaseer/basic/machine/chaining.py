@@ -1,0 +1,246 @@
+"""CHAIN, MERGE and COMMON: a running program hands over to another program file
+(the :class:`Chaining` mixin of :class:`yaseer.basic.machine.Machine`).
+
+``CHAIN [MERGE] file [, line] [, ALL] [, DELETE first-last]`` (FIVEO.ASM ``CHAIN``):
+the file (``.BAS`` added to a name without a ``.``, read from the program's directory
+as LOAD reads it: yaseer.basic.program_file) replaces the program, or with MERGE is
+merged into it (an ASCII file only: ``Bad file mode``), after the lines of the DELETE
+range are removed (the range must end on an existing line: ``Illegal function call``).
+The variables named in the program's COMMON statements (wherever they are, run or
+not, but not after an IF's THEN: CHAIN scans the statements for them), or with ALL every variable, keep their
+values; the others are cleared, as are DEF FN functions (unless MERGE with ALL), the
+GOSUB/FOR stack and ON ERROR.  Open files stay open and OPTION BASE stays.  The new
+program runs from its start or from ``line``.  ``MERGE file`` merges the file and
+then stops the program (GW-BASIC returns to direct mode).
+
+The file is read when the statement runs, so a missing file is the statement's error
+(``File not found``, trappable); what follows is done by the run loop, which catches
+:class:`ChainTo`.
+"""
+
+from __future__ import annotations
+
+from yaseer.basic.machine.files import read_program
+from yaseer.basic.errors import (
+    BAD_FILE_MODE, ILLEGAL_FUNCTION_CALL, PATH_FILE_ACCESS_ERROR, UNDEFINED_LINE, BasicError, error_message,
+)
+from yaseer.basic.machine.signals import ProgramEnd
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from yaseer.basic.source import syntax_tree
+
+
+class ChainTo(ProgramEnd):
+    """The program is being replaced (CHAIN) or merged into (MERGE): what to do next."""
+
+    def __init__(self, lines: dict, merge: bool, line, everything: bool, delete, run: bool):
+        super().__init__()
+        self.lines, self.merge, self.line = lines, merge, line
+        self.everything, self.delete, self.run = everything, delete, run
+
+
+class RunAgain(ProgramEnd):
+    """RUN in a program: start again, from ``line`` (None: the start), with ``lines`` as the
+    program (None: the same one); ``keep_files``: RUN "file",R and LOAD "file",R leave
+    the files open."""
+
+    def __init__(self, lines: dict | None, line: int | None, keep_files: bool):
+        super().__init__()
+        self.lines, self.line, self.keep_files = lines, line, keep_files
+
+
+def _error(code: int) -> BasicError:
+    return BasicError(error_message(code), code)
+
+
+class Chaining:
+    """CHAIN and MERGE on the machine's programs and variables (a mixin of ``Machine``)."""
+
+    def _program_lines(self, name: str, merge: bool = False) -> dict[int, str]:
+        """The lines of program file ``name`` (``.BAS`` added to a name without ``.``), read
+        as LOAD reads it; MERGE reads ASCII files only (``Bad file mode``)."""
+        from yaseer.basic.machine.program_file import TOKENISED, program_text
+        from yaseer.basic.source.scanner import split_lines
+
+        if "." not in name:
+            name += ".BAS"  # GIO86.ASM NAMBAS
+        data = read_program(self.files.sandbox, name)
+        if merge and data[:1] >= bytes((TOKENISED - 1,)):
+            raise _error(BAD_FILE_MODE)  # DSKCOM.ASM OKGET2
+        text = program_text(data)
+        return {number: line for number, line, _ in split_lines(text, self.dialect.joins_unnumbered_lines)}
+
+    def program_command(self, name: str, argument, option) -> None:
+        """A command run by a program (GW-BASIC runs them and, but for RUN, returns to
+        direct mode: the run ends): RUN [line | "file"[,R]], LIST/LLIST [range], LOAD
+        "file"[,R], SAVE "file"[,A|,P] (always as an ASCII listing), NEW, SYSTEM, DELETE
+        range, EDIT line (ends the run: there is no editor in a run), KEY ON/OFF (the
+        function-key line is the screen's: nothing where output is not a terminal)."""
+        if name == "KEY":
+            return
+        if name == "RUN":
+            if isinstance(argument, str):
+                raise RunAgain(self._program_lines(argument), None, option == "R")
+            raise RunAgain(None, argument, False)
+        program = self.programs.get(0, {})
+        if name == "LOAD":
+            lines = self._program_lines(argument)
+            if option == "R":
+                raise RunAgain(lines, None, True)
+            raise ChainTo(lines, False, None, True, None, False)
+        if name in ("LIST", "LLIST"):
+            self._list_lines(program, argument, 1 if name == "LLIST" else 0)
+        elif name == "SAVE":
+            self._save(program, argument)
+        elif name == "NEW":
+            raise ChainTo({}, False, None, True, None, False)
+        elif name == "DELETE":
+            first, last = argument
+            doomed = [n for n in program if (first or 0) <= n <= (65529 if last is None else last)]
+            if not doomed or (first is not None and first not in program and first == last):
+                raise _error(ILLEGAL_FUNCTION_CALL)
+            raise ChainTo({n: t for n, t in program.items() if n not in doomed}, False, None, True, None, False)
+        elif name == "EDIT" and argument not in program:
+            raise _error(UNDEFINED_LINE)
+        raise ProgramEnd()
+
+    def _list_lines(self, program: dict, line_range, device: int) -> None:
+        """LIST / LLIST: the lines in ``line_range`` as LIST shows them."""
+        from yaseer.basic.source.scanner import detokenize
+
+        first, last = line_range
+        for number in sorted(program):
+            if (first or 0) <= number <= (65529 if last is None else last):
+                self.print_items(device, (f"{number} {detokenize(program[number], self.dialect)}",), True)
+
+    def _save(self, program: dict, name: str) -> None:
+        """SAVE: the program as an ASCII listing (CR LF lines, a Ctrl-Z at the end) in the
+        program's directory; GW-BASIC's tokenised and protected forms are not written."""
+        from yaseer.basic.machine.files import dos_name
+        from yaseer.basic.source.scanner import detokenize
+
+        if "." not in name:
+            name += ".BAS"
+        path = self.files.sandbox.path(dos_name(self.files.sandbox, name))
+        text = "".join(f"{n} {detokenize(program[n], self.dialect)}\r\n" for n in sorted(program)) + "\x1a"
+        try:
+            path.write_bytes(text.encode("latin-1", errors="replace"))
+        except OSError:
+            raise _error(PATH_FILE_ACCESS_ERROR) from None
+
+    def run_again(self, again: RunAgain) -> int:
+        """Carry out RUN: the program (a new one from a file), fresh variables, the files
+        closed unless ``keep_files``; the block of area 0 to start from."""
+        if again.lines is not None:
+            self.programs[0] = dict(again.lines)
+            self._invalidate(0)
+            self._extra_entries.clear()
+        kept = dict(self.files.open_files) if again.keep_files else {}
+        for number in kept:
+            del self.files.open_files[number]
+        self._compiled(0)
+        self.reset()  # closes the files not kept
+        self.files.open_files.update(kept)
+        if again.line is None:
+            return 0
+        if again.line not in self.programs.get(0, {}):
+            raise _error(UNDEFINED_LINE)  # RUN has left the line it was in: none is named
+        return self._line_block(again.line)
+
+    def chain(self, name: str, merge: bool, line, everything: bool, delete, run: bool = True) -> None:
+        """CHAIN / MERGE as the statement runs: the file is read (its errors are this
+        statement's) and the range checked, then :class:`ChainTo` ends the block."""
+        lines = self._program_lines(name, merge)
+        if line is not None:
+            line = self._chain_line(line)
+        if delete is not None:
+            self._check_range(delete)
+        raise ChainTo(lines, merge, line, everything, delete, run)
+
+    @staticmethod
+    def _chain_line(line) -> int:
+        """CHAIN's line number: an unsigned 16-bit number (GWMAIN.ASM ``FRQINT``)."""
+        n = round(line)
+        if not -32768 <= n <= 65535:
+            raise _error(6)
+        return n & 0xFFFF
+
+    def _check_range(self, delete) -> None:
+        """The DELETE range of a CHAIN MERGE: its last line must exist, its first not after it."""
+        first, last = delete
+        program = self.programs.get(0, {})
+        if last is None:
+            last = max(program, default=0)
+        if last not in program or (first is not None and first > last):
+            raise _error(ILLEGAL_FUNCTION_CALL)
+
+    def chained(self, chain: ChainTo) -> int | None:
+        """Carry out a CHAIN or MERGE: the program and variables it leaves; the block of area
+        0 to run from (None: MERGE, which stops)."""
+        program = dict(self.programs.get(0, {}))
+        keep = None if chain.everything else self.common_names()
+        if chain.delete is not None:
+            first, last = chain.delete
+            first = 0 if first is None else first
+            last = max(program, default=0) if last is None else last
+            program = {n: t for n, t in program.items() if not first <= n <= last}
+        if chain.merge:
+            program.update(chain.lines)
+        else:
+            program = dict(chain.lines)
+        self.programs[0] = program
+        self._invalidate(0)
+        self._extra_entries.clear()
+        if not chain.run:
+            return None
+        kept_scalars = {k: v for k, v in self.scalars.items() if keep is None or k in keep}
+        kept_arrays = {k: (self.arrays[k], self.array_dims.get(k), k in self.explicit_arrays)
+                       for k in self.arrays if keep is None or k in keep}
+        functions = dict(self.fns) if chain.merge and chain.everything else {}
+        base = self.subscript_base
+        block = 0
+        if chain.line:  # line 0: the start (FIVEO.ASM CHNRET)
+            if chain.line not in program:
+                raise _error(UNDEFINED_LINE).at(self.line)
+            block = self._line_block(chain.line)
+        self._compiled(0)
+        self.clear()
+        self.stack.clear()
+        self.on_error = None
+        self.in_handler = False
+        self.pending_error = None
+        self.scalars.update(kept_scalars)
+        for name, (values, dims, explicit) in kept_arrays.items():
+            self.arrays[name] = values
+            if dims is not None:
+                self.array_dims[name] = dims
+                self._reserve(name, dims)
+            if explicit:
+                self.explicit_arrays.add(name)
+        self.fns.update(functions)
+        self.set_subscript_base(base)
+        return block
+
+    def common_names(self) -> set[str]:
+        """The variables (typed names, as the machine keeps them) of the COMMON statements
+        of program area 0, wherever they are, but not inside an IF (FIVEO.ASM scans the
+        statements' first tokens)."""
+        from yaseer.basic.source import syntax_tree as ast
+        from yaseer.basic.source.parser import parse_line
+
+        compiled = self.compiled.get(0)
+        letters = compiled.def_types if compiled is not None else {}
+        names = set()
+        for number, text in self.programs.get(0, {}).items():
+            for stmt in parse_line(number, text, self.dialect).statements or ():
+                if isinstance(stmt, ast.Common):
+                    names.update(_typed(name, letters, self.dialect.typed_numbers) for name, _ in stmt.names)
+        return names
+
+
+def _typed(name: str, letters: dict, typed: bool) -> str:
+    """A name as the machine keys it: with its type character (the DEF letter's, or ``!``)."""
+    if not typed or name[-1] in "$%!#":
+        return name
+    return name + letters.get(name[0], "!")

@@ -1,0 +1,190 @@
+"""A program file's bytes -> the program's text, as GW-BASIC's LOAD reads a file.
+
+Three kinds of file, told apart by the first byte (DSKCOM.ASM, the LOAD code after
+``NOTINI``):
+
+* ``0xFF``: a tokenised program (GW-BASIC's plain ``SAVE``): lines of a 2-byte
+  link, a 2-byte line number, the tokens and a 0 byte; a zero link ends it.
+  :func:`detokenise` turns it back into the text LIST would show.
+* ``0xFE``: a protected program (``SAVE "f",P``): a tokenised one whose bytes are
+  scrambled with two tables of 11 and 13 bytes (GIODSK.ASM ``PENCOD``/``PDECOD``);
+  :func:`unprotect` undoes it.
+* anything else: ASCII text (``SAVE "f",A`` or an editor); reading stops at the
+  first Ctrl-Z (``chr(26)``, GIODSK.ASM ``DSKEOF``/``CHKCTZ``: the end-of-file mark
+  DOS editors leave); a UTF-8 byte-order mark before the first line is dropped
+  (GW-BASIC would call that line a direct statement; an editor's mark is no part
+  of the program).  Text that is not UTF-8 is read byte for byte (latin-1, the
+  byte values CHR$ gives).
+"""
+
+from __future__ import annotations
+
+from yaseer.basic.machine.gwfunctions import _from_mbf
+from yaseer.basic.arithmetic.values import DOUBLE_DIGITS, SINGLE_DIGITS, unsigned_text
+
+END_OF_FILE = 0x1A  # Ctrl-Z
+TOKENISED = 0xFF
+PROTECTED = 0xFE
+BYTE_ORDER_MARK = b"\xef\xbb\xbf"
+
+# The token values, in the order of IBMRES.ASM's tables (``R``/``T`` macros count up
+# from the table's start); "" marks a padding entry.  PCOPY LOCK UNLOCK EXTERR are
+# GW-BASIC 3.2's additions (their values as PC-BASIC 2.0.8 saves them).
+_STATEMENTS = (  # 0x81 ...
+    "END FOR NEXT DATA INPUT DIM READ LET GOTO RUN IF RESTORE GOSUB RETURN REM STOP PRINT "
+    "CLEAR LIST NEW ON WAIT DEF POKE CONT _ _ OUT LPRINT LLIST _ WIDTH ELSE TRON TROFF SWAP "
+    "ERASE EDIT ERROR RESUME DELETE AUTO RENUM DEFSTR DEFINT DEFSNG DEFDBL LINE WHILE WEND "
+    "CALL _ _ _ WRITE OPTION RANDOMIZE OPEN CLOSE LOAD MERGE SAVE COLOR CLS MOTOR BSAVE "
+    "BLOAD SOUND BEEP PSET PRESET SCREEN KEY LOCATE _ TO THEN TAB( STEP USR FN SPC( NOT ERL "
+    "ERR STRING$ USING INSTR ' VARPTR CSRLIN POINT OFF INKEY$ _ _ _ _ _ _ _ > = < + - * / ^ "
+    "AND OR XOR EQV IMP MOD \\"
+)
+_FUNCTIONS = (  # 0xFF 0x81 ...
+    "LEFT$ RIGHT$ MID$ SGN INT ABS SQR RND SIN LOG EXP COS TAN ATN FRE INP POS LEN STR$ VAL "
+    "ASC CHR$ PEEK SPACE$ OCT$ HEX$ LPOS CINT CSNG CDBL FIX PEN STICK STRIG EOF LOC LOF"
+)
+_EXTENDED = (  # 0xFE 0x81 ...
+    "FILES FIELD SYSTEM NAME LSET RSET KILL PUT GET RESET COMMON CHAIN DATE$ TIME$ PAINT COM "
+    "CIRCLE DRAW PLAY TIMER ERDEV IOCTL CHDIR MKDIR RMDIR SHELL ENVIRON VIEW WINDOW PMAP "
+    "PALETTE LCOPY CALLS _ _ _ PCOPY _ LOCK UNLOCK"
+)
+_EXTENDED_FUNCTIONS = "CVI CVS CVD MKI$ MKS$ MKD$ _ _ _ _ EXTERR"  # 0xFD 0x81 ...
+
+
+def _table(words: str, first: int) -> dict[int, str]:
+    return {first + k: word for k, word in enumerate(words.split(" ")) if word != "_"}
+
+
+TOKENS: dict[int, str] = _table(_STATEMENTS, 0x81)
+TWO_BYTE_TOKENS: dict[int, dict[int, str]] = {
+    0xFF: _table(_FUNCTIONS, 0x81), 0xFE: _table(_EXTENDED, 0x81), 0xFD: _table(_EXTENDED_FUNCTIONS, 0x81),
+}
+_REM, _ELSE, _QUOTE_REM, _DATA, _WHILE, _PLUS = 0x8F, 0xA1, 0xD9, 0x84, 0xB1, 0xE9
+
+# GIODSK.ASM PDECOD: the key bytes are those of two coefficient tables of MATH1.ASM,
+# $EXPCN (bytes 1..11) and $LOGP (bytes 1..13), indexed by counters running down.
+_EXPCN = bytes((0o174, 0o210, 0o131, 0o164, 0o340, 0o227, 0o046, 0o167, 0o304, 0o035, 0o036))
+_LOGP = bytes((0o232, 0o367, 0o031, 0o203, 0o044, 0o143, 0o103, 0o203, 0o165, 0o315, 0o215, 0o204, 0o251))
+
+
+def program_text(data: bytes, decode=None) -> str:
+    """The text of a program file's ``data`` (any of the three kinds, see the module docstring);
+    ``decode`` reads an ASCII file's bytes (a character set's, yaseer/basic/dialects/charset.py;
+    default: UTF-8, else byte for byte)."""
+    if data[:1] == bytes((PROTECTED,)):
+        return detokenise(unprotect(data[1:]))
+    if data[:1] == bytes((TOKENISED,)):
+        return detokenise(data[1:])
+    if data.startswith(BYTE_ORDER_MARK):
+        data = data[len(BYTE_ORDER_MARK):]
+    cut = data.find(END_OF_FILE)
+    if cut >= 0:
+        data = data[:cut]
+    if decode is not None:
+        return decode(data)
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError:
+        return data.decode("latin-1")
+
+
+def unprotect(data: bytes) -> bytes:
+    """A protected program's bytes (after the 0xFE) as the tokenised bytes they scramble:
+    each byte less counter 1, XORed with the two tables' entries, plus counter 2 (counter 1
+    runs 11..1, counter 2 13..1, each starting again after 1)."""
+    out = bytearray(len(data))
+    one, two = 11, 13
+    for i, byte in enumerate(data):
+        out[i] = (((byte - one) & 0xFF) ^ _LOGP[two - 1] ^ _EXPCN[one - 1]) + two & 0xFF
+        one = one - 1 or 11
+        two = two - 1 or 13
+    return bytes(out)
+
+
+def detokenise(data: bytes) -> str:
+    """A tokenised program (after the 0xFF) as numbered text lines; a file cut short ends
+    with its last whole line."""
+    lines = []
+    i = 0
+    while i + 4 <= len(data):
+        if data[i] == 0 and data[i + 1] == 0:  # the zero link: the end
+            break
+        number = data[i + 2] | data[i + 3] << 8
+        text, i = _line_text(data, i + 4)
+        lines.append(f"{number} {text}")
+    return "".join(line + "\n" for line in lines)
+
+
+def _line_text(body: bytes, i: int) -> tuple[str, int]:
+    """The tokens of the line that starts at ``body[i]``, as LIST shows them, and the index
+    after the 0 byte that ends it (a number's bytes may hold zeros: tokens are read one by one)."""
+    out: list[str] = []
+    n = len(body)
+    quoted = False  # inside a string
+    text = None  # after REM: "rem" (the rest of the line); after DATA: "data" (up to a ':' outside quotes)
+    while i < n:
+        byte = body[i]
+        if byte == 0:
+            i += 1
+            break
+        if byte == ord('"') and text != "rem":
+            quoted = not quoted
+        if quoted or text == "rem" or (text == "data" and byte != 0x3A) or byte == ord('"'):
+            out.append(chr(byte))
+            i += 1
+            continue
+        text = None
+        if byte == 0x3A and i + 1 < n and body[i + 1] == _ELSE:  # ELSE is stored as ":ELSE"
+            i += 1
+            continue
+        if byte == 0x3A and body[i + 1:i + 3] == bytes((_REM, _QUOTE_REM)):  # ' is ":REM'"
+            out.append("'")
+            text, i = "rem", i + 3
+            continue
+        word, i = _token(body, i)
+        if word is None:
+            out.append(chr(byte))
+            i += 1
+            continue
+        if word[:1].isalpha() and out and (out[-1][-1:].isalnum() or out[-1][-1:] == "."):
+            out.append(" ")  # keep a keyword apart from the name before it
+        out.append(word)
+        if word in ("REM", "DATA"):
+            text = word.lower()
+        elif word == "WHILE" and i < n and body[i] == _PLUS:
+            i += 1  # GW-BASIC stores WHILE with a + token LIST does not show
+        if word[-1:].isalpha() and word != "FN" and i < n and (chr(body[i]).isalnum() or body[i] == ord(".")):
+            out.append(" ")  # ... and from the name after it
+    return "".join(out), i
+
+
+def _token(body: bytes, i: int) -> tuple[str | None, int]:
+    """The text of the token or number at ``body[i]`` and the index after it (None: a plain byte)."""
+    byte = body[i]
+    rest = body[i + 1:]
+    if byte in TWO_BYTE_TOKENS and rest:
+        word = TWO_BYTE_TOKENS[byte].get(rest[0])
+        return (word, i + 2) if word is not None else (None, i)
+    if byte in TOKENS:
+        return TOKENS[byte], i + 1
+    if 0x11 <= byte <= 0x1A:
+        return str(byte - 0x11), i + 1
+    sizes = {0x0B: 2, 0x0C: 2, 0x0D: 2, 0x0E: 2, 0x0F: 1, 0x1C: 2, 0x1D: 4, 0x1F: 8}
+    size = sizes.get(byte)
+    if size is None or len(rest) < size:
+        return None, i
+    value = rest[:size]
+    if byte == 0x0B:
+        return f"&O{int.from_bytes(value, 'little'):o}", i + 3
+    if byte == 0x0C:
+        return f"&H{int.from_bytes(value, 'little'):X}", i + 3
+    if byte in (0x0D, 0x0E, 0x0F):
+        return str(int.from_bytes(value, "little")), i + 1 + size
+    if byte == 0x1C:
+        return str(int.from_bytes(value, "little", signed=True)), i + 3
+    number = _from_mbf(value)
+    if byte == 0x1D:
+        text = unsigned_text(number, SINGLE_DIGITS, "E")
+        return (text if "." in text or "E" in text else text + "!"), i + 5
+    text = unsigned_text(number, DOUBLE_DIGITS, "D")
+    return (text if "D" in text else text + "#"), i + 9

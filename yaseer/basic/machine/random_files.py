@@ -1,0 +1,192 @@
+"""GW-BASIC's random-access files: records of a fixed length read and written through a
+buffer that FIELD divides among string variables.
+
+``OPEN "R", #n, name, length`` (or ``OPEN name [FOR RANDOM] AS #n LEN = length``) opens
+or creates the file with records of ``length`` bytes (default 128, 1..32767); ``FIELD``
+binds variables to slices of the record buffer (more bytes than a record is ``FIELD
+overflow``, DSKCOM.ASM ``FIELD``); ``LSET``/``RSET`` store a string into a variable,
+padded with blanks or cut to its length (the field's for a fielded variable, which then
+writes the buffer: DSKCOM.ASM ``LSET``); ``GET #n[, r]`` reads record ``r`` (or the next)
+into the buffer, and every fielded variable takes its slice; ``PUT #n[, r]`` writes the
+buffer as record ``r`` (or the next).  A record beyond the end reads as zero bytes and
+``EOF`` is then true; writing beyond the end extends the file with zero bytes.  ``LOC``
+is the last record read or written, ``LOF`` the file's length in bytes.  GET and PUT
+without a number take the record after the last one read or written (GIODSK.ASM
+``DSKRND``: the logical record ``FD_LOG`` + 1), also after a GET beyond the end, where
+PC-BASIC 2.0.8 writes at the end of the file instead.
+
+Characters are bytes (latin-1), as in the sequential files.  A fielded variable is
+named by its key in the machine's scalars (``A$``).  GW-BASIC's field variables point
+into the buffer itself, so a ``LET`` to one detaches it from the buffer: GET no longer
+changes it and LSET pads to its own length.  Here a fielded variable stays bound while
+it holds the very string object the file last gave it (FIELD, GET, LSET give them);
+any other value was stored by the program, which detaches it.
+"""
+
+from __future__ import annotations
+
+import math
+
+from yaseer.basic.errors import (
+    BAD_FILE_MODE, BAD_RECORD_NUMBER, FIELD_OVERFLOW, ILLEGAL_FUNCTION_CALL, OVERFLOW, BasicError, error_message,
+)
+
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from pathlib import Path
+
+DEFAULT_LENGTH = 128  # bytes per record without LEN (GW-BASIC's /S default)
+MAX_LENGTH = 32767
+MAX_RECORD = 32767  # the largest record number (a signed 16-bit number above 0)
+
+
+def _error(code: int) -> BasicError:
+    return BasicError(error_message(code), code)
+
+
+def record_length(length) -> int:
+    """A record length given to OPEN (None: the default); outside 1..32767 ``Illegal function call``."""
+    if length is None:
+        return DEFAULT_LENGTH
+    from yaseer.basic.machine.runtime import cint
+
+    n = cint(length)
+    if not 1 <= n <= MAX_LENGTH:
+        raise _error(ILLEGAL_FUNCTION_CALL)
+    return n
+
+
+class RandomFile:
+    """One file open for random access: its handle, record buffer and fields."""
+
+    mode = "R"
+    stream = None  # no sequential output stream
+
+    def __init__(self, path: Path, length: int):
+        self.path = path
+        self.length_of_record = length
+        self.handle = open(path, "r+b" if path.exists() else "w+b")
+        self.buffer = bytearray(length)
+        self.fields: dict[str, tuple[int, int]] = {}  # variable key -> (offset, width)
+        self.given: dict[str, str] = {}  # variable key -> the string object it was last given
+        self.last = 0  # LOC: the record last read or written
+        self.past_end = False  # the last GET read beyond the end
+
+    # -- FIELD, LSET, RSET
+    def field(self, pairs) -> dict[str, str]:
+        """FIELD: ``pairs`` of (width, variable key) from the buffer's start; the variables'
+        new values (their slices of the buffer)."""
+        offset = 0
+        for width, key in pairs:
+            from yaseer.basic.machine.runtime import cint
+
+            width = cint(width)
+            if not 0 <= width <= 255:
+                raise _error(ILLEGAL_FUNCTION_CALL)
+            if offset + width > self.length_of_record:
+                raise _error(FIELD_OVERFLOW)
+            self.fields[key] = (offset, width)
+            offset += width
+        return {key: self._give(key) for _, key in pairs}
+
+    def _give(self, key: str, text: str | None = None) -> str:
+        text = self.field_value(key) if text is None else text
+        self.given[key] = text
+        return text
+
+    def bound(self, key: str, current) -> bool:
+        """Whether variable ``key``, now holding ``current``, is still a field of this file
+        (a field variable the program has stored another string in is not: it is unbound)."""
+        if key not in self.fields:
+            return False
+        if self.given.get(key) is current:
+            return True
+        del self.fields[key]
+        self.given.pop(key, None)
+        return False
+
+    def field_value(self, key: str) -> str:
+        offset, width = self.fields[key]
+        return self.buffer[offset:offset + width].decode("latin-1")
+
+    def store(self, key: str, value: str, right: bool) -> str:
+        """LSET (``right`` False) or RSET into fielded variable ``key``: the buffer's new
+        slice, which is also the variable's new value."""
+        offset, width = self.fields[key]
+        text = justified(value, width, right)
+        self.buffer[offset:offset + width] = text.encode("latin-1", errors="replace")
+        return self._give(key, text)
+
+    # -- GET, PUT
+    def _record(self, record) -> int:
+        """The record a GET or PUT names: the next one, or ``record`` read as an unsigned
+        16-bit number (GIO86.ASM ``DPUTG`` -> ``ADRGET``: beyond -32768..65535 ``Overflow``)
+        that GIODSK.ASM ``DSKRND`` takes as signed: above 0, so 1..32767, else ``Bad record
+        number``."""
+        if record is None:
+            return self.last + 1
+        n = math.floor(abs(record) + 0.5) * (1 if record >= 0 else -1)
+        if not -32768 <= n <= 65535:
+            raise _error(OVERFLOW)
+        if not 1 <= n <= MAX_RECORD:
+            raise _error(BAD_RECORD_NUMBER)
+        return n
+
+    def get(self, scalars: dict, record=None) -> dict[str, str]:
+        """GET: read a record into the buffer; the new values of the variables (in
+        ``scalars``) still fielded."""
+        n = self._record(record)
+        self.handle.seek((n - 1) * self.length_of_record)
+        data = self.handle.read(self.length_of_record)
+        self.past_end = len(data) < self.length_of_record
+        self.buffer[:] = data + bytes(self.length_of_record - len(data))
+        self.last = n
+        return {key: self._give(key) for key in list(self.fields) if self.bound(key, scalars.get(key))}
+
+    def put(self, record=None) -> None:
+        """PUT: write the buffer as a record (a gap before it filled with zero bytes)."""
+        n = self._record(record)
+        start = (n - 1) * self.length_of_record
+        end = self.handle.seek(0, 2)
+        if end < start:
+            self.handle.write(bytes(start - end))
+        self.handle.seek(start)
+        self.handle.write(self.buffer)
+        self.last = n
+        self.past_end = False
+
+    # -- what the file functions and statements ask of any open file
+    def output(self):
+        raise _error(BAD_FILE_MODE)  # PRINT # / WRITE # into a record buffer: not emulated
+
+    def _input(self):
+        raise _error(BAD_FILE_MODE)  # INPUT # from a record buffer: not emulated
+
+    def read_chars(self, n: int) -> str:
+        return self._input()
+
+    def read_line(self) -> str:
+        return self._input()
+
+    def read_field(self, numeric: bool) -> str:
+        return self._input()
+
+    def at_end(self) -> bool:
+        return self.past_end
+
+    def length(self) -> int:
+        self.handle.flush()
+        return self.handle.seek(0, 2)
+
+    def records(self) -> int:
+        return self.last
+
+    def close(self) -> None:
+        self.handle.close()
+
+
+def justified(value: str, width: int, right: bool) -> str:
+    """``value`` cut to ``width`` characters (its first ones) or padded with blanks: on the
+    right for LSET, on the left for RSET."""
+    value = value[:width]
+    return value.rjust(width) if right else value.ljust(width)
