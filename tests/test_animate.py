@@ -217,7 +217,7 @@ def test_render_gif_html_and_png(tmp_path):
     html = tmp_path / "cycle.html"
     assert render(frames, html) == 6
     page = html.read_text()
-    assert page.count("data:image/png;base64,") == 6 + 1  # every frame, and the first shown at once
+    assert page.count("data:image/png;base64,") == 6 + 2  # every frame, the first shown at once, the background
     png = tmp_path / "frame.png"
     render(frames, png, frame_number=2)
     with Image.open(png) as image:

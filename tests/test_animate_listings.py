@@ -17,6 +17,7 @@ from pathlib import Path
 import pytest
 
 from yaseer.animation import build_scene, distance
+from yaseer.animation.draw import make_figure
 from yaseer.recorded_run import record_listing
 
 REPO = Path(__file__).resolve().parents[1]
@@ -60,11 +61,52 @@ def test_example_4_second_four_bar_is_driven_by_the_virtual_link():
         assert distance(second.bars[2].start, second.bars[2].end) == pytest.approx(17.5)
 
 
-@pytest.mark.parametrize("name", ["tk_slider_crank.bas", "fortran_fourbar.bas"])
-def test_seed_listings_animate(name):
-    frames = record_listing((LISTINGS / name).read_text())
-    assert len(frames) > 10
-    assert all(frame.snapshots for frame in frames)
+def test_the_slider_crank_seed_animates_a_frame_per_position():
+    frames = record_listing((LISTINGS / "tk_slider_crank.bas").read_text())
+    # row C at -30 degrees, open and crossed together, a cycle of each assembly, then the backsolve's crank
+    assert [f.crank_angle for f in frames[:-1]] == pytest.approx([-30.0] + [15.0 * k for k in range(24)] * 2)
+    assert frames[-1].crank_angle == pytest.approx(-30.0, abs=0.1) and frames[-1].printed.startswith("BACKSOLVE")
+    assert [s.alternative for s in frames[0].snapshots] == [False, True]
+
+
+def test_each_position_of_seed_003_shows_both_assemblies_in_one_frame():
+    """The Fortran prints each angle's crossed row, then the uncrossed one under it: one frame each angle,
+    the crossed branch (the first call) in black, the other drawn with it (not in a frame of its own)."""
+    import math
+
+    frames = record_listing((LISTINGS / "fortran_fourbar.bas").read_text())
+    assert [f.crank_angle for f in frames] == [0.0, 30.0, 60.0, 90.0, 270.0, 300.0, 330.0]
+    for frame in frames:
+        first, other = frame.snapshots
+        assert (first.alternative, other.alternative) == (False, True)
+        # the same crank, the two solutions of the dyad: B mirrored in the line A->Bo
+        assert first.bars[0] == other.bars[0]
+        a, bo, b1, b2 = first.bars[0].end, first.bars[2].end, first.bars[1].end, other.bars[1].end
+        ux, uy = bo[0] - a[0], bo[1] - a[1]
+        side = [ux * (b[1] - a[1]) - uy * (b[0] - a[0]) for b in (b1, b2)]
+        assert side[0] * side[1] < 0 and math.isclose(abs(side[0]), abs(side[1]), rel_tol=1e-9)
+        assert len(frame.printed.splitlines()) == 2
+
+
+def test_every_frame_of_seed_003_names_both_rows_values():
+    import yaseer
+    from yaseer.animation import draw_moving
+
+    result = yaseer.run(LISTINGS / "fortran_fourbar.bas")
+    scene = build_scene(result.frames)
+    figure, ax = make_figure(scene, result.look())
+    for number in range(len(scene.frames)):
+        artists = draw_moving(ax, scene, number, result.look())
+        texts = [t.get_text() for t in figure.texts if t in artists]
+        upper, lower = scene.frames[number].printed.splitlines()
+        for k, name in enumerate(("PHI", "BETA", "VELC", "VELB", "ACCC", "ACCB")):
+            assert texts[texts.index(name) + 1] == f"{upper.split()[k + 1]} / {lower.split()[k]}"
+        if number == 0:  # the joints lettered as the Fortran names them, whose letters VELB, VELC use
+            assert sorted(t.get_text() for t in ax.texts) == ["A", "B", "C", "D"]
+        for artist in artists:
+            artist.remove()
+    legend = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert legend == ["link", "fixed pivot", "other assembly, same angle"]
 
 
 def test_seed_004_change_point_four_bar_animates_over_two_turns():

@@ -23,13 +23,26 @@ GOLDEN = ROOT / "tests" / "golden"
 
 
 @pytest.fixture(scope="module")
-def cells():
-    """The executed notebook's cells by tag."""
+def executed():
+    """The notebook executed by a real kernel."""
     notebook = nbformat.read(NOTEBOOK, as_version=4)
-    client = nbclient.NotebookClient(notebook, timeout=300, kernel_name="python3",
+    client = nbclient.NotebookClient(notebook, timeout=600, kernel_name="python3",
                                      resources={"metadata": {"path": str(NOTEBOOK.parent)}})
     client.execute()
-    return {cell.metadata["tags"][0]: cell for cell in notebook.cells if cell.cell_type == "code"}
+    return notebook
+
+
+@pytest.fixture(scope="module")
+def cells(executed):
+    """The executed notebook's cells by tag."""
+    return {cell.metadata["tags"][0]: cell for cell in executed.cells if cell.cell_type == "code"}
+
+
+def test_with_six_animations_the_executed_notebook_stays_under_3_mb(executed, cells):
+    players = [tag for tag, cell in cells.items() if any('class="yaseer-player"' in html for html in
+                                                          data(cell, "text/html"))]
+    assert players == ["example1", "example2", "example3", "example4", "example5", "seed004"]
+    assert len(nbformat.writes(executed).encode()) < 3_000_000
 
 
 def stdout(cell) -> str:
@@ -57,7 +70,7 @@ def test_example_1_is_animated_in_a_self_contained_player(cells):
     (player,) = data(cells["example1"], "text/html")
     rows = len((GOLDEN / "example1.txt").read_text().splitlines())
     assert 'class="yaseer-player"' in player and "<script" in player
-    assert player.count("data:image/png;base64,") == rows + 1  # every frame, and the first shown at once
+    assert player.count("data:image/png;base64,") == rows + 2  # every frame, the first shown at once, the background
     assert "http" not in player  # nothing fetched from a network
 
 

@@ -180,11 +180,11 @@ class Result:
         The columns are named as in :attr:`columns` (as ``rows.names`` and the plot name them).
         """
         from yaseer.animation.draw import DEFAULT_SIZE, Look
-        from yaseer.describe import length_unit
+        from yaseer.describe import joint_letters, length_unit
 
         names = self.columns
         return Look(title=self.title if title is None else title, names=names,
-                    unit=length_unit(self.name), size=size or DEFAULT_SIZE)
+                    unit=length_unit(self.name), size=size or DEFAULT_SIZE, letters=joint_letters(self.name))
 
     def animate(self, size: tuple[int, int] | None = None, fps: float = 6.0, max_frames: int | None = None):
         """A matplotlib ``FuncAnimation`` of the mechanism, ``size`` pixels (default 1280 x 720)."""
@@ -199,7 +199,7 @@ class Result:
 def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, str] | None = None,
         prog: Mapping[int, Listing] | None = None, input=None, angle: str | None = None,
         raise_errors: bool = False, screen: IO[str] | None = None, printer: IO[str] | None = None,
-        output_format: str = "text", keep: bool = True, files=None) -> Result:
+        output_format: str = "text", keep: bool = True, files=None, finer: int = 1) -> Result:
     """Run ``listing`` (a path, or the program text) once on a fresh machine.
 
     ``method``: the method of library program n (``{2: "newton"}``); ``prog``:
@@ -210,6 +210,8 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
     SIN COS TAN ATN at start (default: the dialect's); ``dialect``: ``"casio"``
     (the default, the paper's pocket computer) or ``"gw"`` (GW-BASIC 3.23);
     ``files``: the one directory OPEN, KILL, NAME and FILES use (default: the current one).
+    ``finer``: run every ``FOR ... STEP s`` loop with the step s/finer, so the listing itself
+    computes that many times as many positions (:mod:`yaseer.finer`; for smoother animations).
     A BASIC error (and a missing file) is ``result.error``,
     one line; with ``raise_errors`` it is raised.
 
@@ -226,6 +228,10 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
         from yaseer.basic.dialects.dialect import get_dialect
 
         result.listing, result.name = _source(listing, get_dialect(dialect or "casio").charset)
+        if finer != 1:
+            from yaseer.finer import finer_steps
+
+            result.listing = finer_steps(result.listing, finer)
         areas = {int(n): _source(text)[0] for n, text in (prog or {}).items()}
         input_stream = _input_stream(input, opened)
     except BasicError as error:

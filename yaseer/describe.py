@@ -173,6 +173,17 @@ def column_names(name: str | None, width: int, header: Sequence[str] | None,
 LENGTH_UNITS = {"example1": "mm", "example2": "m", "example3": "cm", "example4": "mm", "example5": "m"}
 
 
+# Joints a listing's own text names otherwise than the contract (AoABBo): seed 003's Fortran calls
+# the crank pivot A, the crank pin B, the coupler-follower joint C and the follower pivot D, and
+# prints VELB, VELC, ... by those letters (listings/fortran_fourbar.bas, lines 20-60).
+JOINT_LETTERS = {"fortran_fourbar": (("Ao", "A"), ("A", "B"), ("B", "C"), ("Bo", "D"))}
+
+
+def joint_letters(name: str | None) -> tuple[tuple[str, str], ...]:
+    """(contract letter, the listing's letter) pairs for a listing that names its joints itself, else ()."""
+    return JOINT_LETTERS.get((name or "").lower(), ())
+
+
 def length_unit(name: str | None) -> str:
     """The unit of the mechanism's lengths where it is known (the paper's examples), else ""."""
     return LENGTH_UNITS.get((name or "").lower(), "")

@@ -60,7 +60,9 @@ class BasicMagics(Magics):
     @argument("--animate", action="store_true", help="animate the mechanism")
     @argument("--fps", type=float, default=6.0, help="frames per second of the animation")
     @argument("--size", default="960x540", help="frame size of the animation, WxH pixels (default 960x540)")
-    @argument("--max-frames", type=int, default=120, help="at most this many frames in the player (default 120)")
+    @argument("--finer", type=int, default=1, metavar="K",
+              help="run every FOR ... STEP s loop with the step s/K: K times as many positions (smoother)")
+    @argument("--max-frames", type=int, default=90, help="at most this many frames in the player (default 90)")
     @argument("-o", "--output", default="_basic", help="the name the result is stored under (default _basic)")
     @line_cell_magic
     def basic(self, line: str, cell: str | None = None):
@@ -94,7 +96,7 @@ def run_magic(listing, args, methods: dict, areas: dict, shell):
     try:  # the screen streams into the cell as the program prints (the kernel sends it every moment)
         result = run(listing, dialect=args.dialect, method=methods, prog=areas, angle=args.angle,
                      input=args.input.replace("\\n", "\n") if args.input else None, screen=sys.stdout,
-                     files=args.files)
+                     files=args.files, finer=args.finer)
     except ValueError as error:  # an unknown dialect
         from IPython.core.error import UsageError
 
@@ -105,7 +107,7 @@ def run_magic(listing, args, methods: dict, areas: dict, shell):
 
 
 def show(result, plot: bool = False, animate: bool = False, fps: float = 6.0, size=(960, 540),
-         max_frames: int = 120) -> None:
+         max_frames: int = 90) -> None:
     """After the screen (printed as the program ran): an error as one red line, then the plot and the player."""
     from IPython.display import HTML, Image, display
 

@@ -25,6 +25,7 @@ TRACE_COLOURS = ("tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple",
 DPI = 100
 DEFAULT_SIZE = (1280, 720)
 PANEL_LEFT = 0.655  # the values' panel starts here (figure fraction)
+ALTERNATIVE_INK = "#9a9a9a"  # the other assembly branch at the same position
 
 
 @dataclass(frozen=True)
@@ -35,6 +36,7 @@ class Look:
     names: tuple[str, ...] | None = None
     unit: str = ""
     size: tuple[int, int] = DEFAULT_SIZE
+    letters: tuple[tuple[str, str], ...] = ()  # (contract letter, the listing's own) where they differ
 
     @property
     def scale(self) -> float:
@@ -57,7 +59,7 @@ def make_figure(scene: Scene, look: Look):
     width, height = look.size
     figure = Figure(figsize=(width / DPI, height / DPI), dpi=DPI, facecolor="white")
     s = look.scale
-    top = 0.87 if look.title else 0.95
+    top = 0.80 if look.title else 0.88  # room above the mechanism for its legend
     axes = figure.add_axes((0.08, 0.1, PANEL_LEFT - 0.1, top - 0.1))
     if look.title:  # 22 pt at 720 pixels high, smaller if a long title would not fit the width
         figure.text(0.5, 1.0 - 0.025, look.title, ha="center", va="top", weight="bold",
@@ -82,51 +84,133 @@ def draw_background(ax, scene: Scene, look: Look | None = None) -> None:
     for colour, path in zip(_colours(), scene.paths):
         for segment in path_segments(path, span):
             ax.plot(*zip(*segment), color=colour, linewidth=2.0 * s, alpha=0.55)
+    _legend(ax, scene, look)
+    if scene.zoom is not None:
+        _make_inset(ax, scene, look)
+
+
+INSET = 0.34  # the magnifying inset's side, a share of the mechanism's axes
+
+
+def _make_inset(ax, scene: Scene, look: Look) -> None:
+    """An inset in ``scene.zoom``'s corner showing the small link's surroundings magnified, and its frame
+    marked on the picture."""
+    (cx, cy), radius, (right, top) = scene.zoom
+    span = max(scene.bounds[1] - scene.bounds[0], scene.bounds[3] - scene.bounds[2])
+    inset = ax.inset_axes((0.02 + right * (0.96 - INSET), 0.02 + top * (0.96 - INSET), INSET, INSET), label="zoom")
+    inset.set_xlim(cx - radius, cx + radius)
+    inset.set_ylim(cy - radius, cy + radius)
+    inset.set_aspect("equal", adjustable="box")
+    inset.set_xticks([])
+    inset.set_yticks([])
+    inset.grid(False)
+    inset.set_title(f"x{span / (2 * radius):.0f}", fontsize=11 * look.scale, pad=2, loc="left")
+    ax.indicate_inset((cx - radius, cy - radius, 2 * radius, 2 * radius), inset, edgecolor="0.45")
+
+
+def _legend(ax, scene: Scene, look: Look) -> None:
+    """One row over the mechanism naming what its marks mean: links, virtual links, fixed pivots,
+    the other assembly branch and each traced path (only those the run draws)."""
+    from matplotlib.lines import Line2D
+
+    s = look.scale
+    snapshots = [snapshot for frame in scene.frames for snapshot in frame.snapshots]
+    handles = [Line2D([], [], color="black", linewidth=4 * s, label="link")]
+    if any(bar.virtual for snapshot in snapshots for bar in snapshot.bars):
+        handles.append(Line2D([], [], color="0.4", linewidth=2 * s, linestyle="--", label="virtual link"))
+    if any(snapshot.ground for snapshot in snapshots):
+        handles.append(Line2D([], [], color="0.65", marker="^", markersize=10 * s, linestyle="", label="fixed pivot"))
+    if any(snapshot.alternative for snapshot in snapshots):
+        handles.append(Line2D([], [], color=ALTERNATIVE_INK, linewidth=3 * s, label="other assembly, same angle"))
+    seen: dict[str, int] = {}
+    for colour, path in zip(_colours(), scene.paths):
+        name = path.label.split(" ", 2)[-1]  # "PROG 2 X(4),Y(4)" -> "X(4),Y(4)"
+        seen[name] = seen.get(name, 0) + 1
+        call = f" (call {seen[name]})" if seen[name] > 1 else ""
+        handles.append(Line2D([], [], color=colour, linewidth=2 * s, alpha=0.55, label=f"path of {name}{call}"))
+    ax.legend(handles=handles, loc="lower left", bbox_to_anchor=(0.0, 1.0), ncol=min(len(handles), 3),
+              fontsize=10 * s, frameon=False, borderaxespad=0.2, handlelength=1.8, columnspacing=1.0)
 
 
 def draw_moving(ax, scene: Scene, number: int, look: Look | str | None = None, animated: bool = False) -> list:
-    """Add frame ``number``'s mechanism, letters, angle and printed values; returns the artists."""
-    from matplotlib import patheffects
-    from matplotlib.patches import Circle, Polygon
+    """Add frame ``number``'s mechanism, letters, angle and printed values; returns the artists.
 
+    With a magnified small link (``scene.zoom``) its surroundings are drawn again in the
+    inset, lettered there; the main picture then letters only the joint at its centre.
+    """
     look = Look(title=look) if isinstance(look, str) or look is None else look
     s = look.scale
     frame = scene.frames[number]
+    artists = _mechanism(ax, frame, s, scene.size)
+    for colour, path in zip(_colours(), scene.paths):
+        position = path.positions[number]
+        if position is not None:
+            artists += ax.plot(*position, marker="o", markersize=9 * s, color=colour, zorder=6)
+    renamed = dict(look.letters)
+    lettered = [(position, renamed.get(name, name)) for position, name in lettered_joints(scene, frame)]
+    span = max(scene.bounds[1] - scene.bounds[0], scene.bounds[3] - scene.bounds[2])
+    inset = _inset(ax)
+    if inset is not None:
+        centre, radius, _ = scene.zoom
+        near = [(p, name) for p, name in lettered if _apart(p, centre) <= radius]
+        keep = min(near, key=lambda item: _apart(item[0], centre)) if near else None
+        artists += _mechanism(inset, frame, s, scene.size * 2 * radius / span)
+        artists += _letters(inset, near, 2 * radius, s)
+        lettered = [item for item in lettered if item not in near or item == keep]
+    artists += _letters(ax, lettered, span, s)
+    artists += _panel(ax.figure, frame, look)
+    for artist in artists:
+        artist.set_animated(animated)
+    return artists
+
+
+def _apart(p: Point, q: Point) -> float:
+    return ((p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2) ** 0.5
+
+
+def _inset(ax):
+    """The magnifying inset of ``ax`` (made by :func:`draw_background`), or None."""
+    return next((child for child in getattr(ax, "child_axes", ()) if child.get_label() == "zoom"), None)
+
+
+def _mechanism(ax, frame: Frame, s: float, size: float) -> list:
+    """The links, joints, pivots and sliders of ``frame`` on ``ax``, symbols ``size`` long (the scene's units)."""
+    from matplotlib.patches import Circle, Polygon
+
     artists: list = []
     for snapshot in frame.snapshots:
         for pivot in snapshot.ground:
-            artists.append(ax.add_patch(Polygon(_ground_triangle(pivot, scene.size), closed=True,
+            artists.append(ax.add_patch(Polygon(_ground_triangle(pivot, size), closed=True,
                                                 color="0.65", zorder=2)))
         for slider in snapshot.sliders:
             if slider.axis is not None:
                 artists.append(ax.axline(slider.axis, plus(slider.axis, polar(1.0, slider.angle_deg)),
                                          color="0.5", linewidth=1.2 * s, linestyle="-.", zorder=1))
-            artists.append(ax.add_patch(Polygon(_block(slider, scene.size), closed=True, facecolor="#c9d6e8",
+            artists.append(ax.add_patch(Polygon(_block(slider, size), closed=True, facecolor="#c9d6e8",
                                                 edgecolor="black", linewidth=1.6 * s, zorder=4)))
         for traced in snapshot.points:  # the rigid link carried on to its point of interest
             artists += ax.plot(*zip(traced.joint, traced.position), color="0.3", linewidth=3.5 * s,
                                solid_capstyle="round", zorder=3)
+        ink, weight = (ALTERNATIVE_INK, 0.55) if snapshot.alternative else ("black", 1.0)
         for bar in snapshot.bars:
             style = dict(color="0.4", linewidth=2.2 * s, linestyle="--") if bar.virtual else \
-                dict(color="black", linewidth=5.5 * s, solid_capstyle="round")
-            artists += ax.plot(*zip(bar.start, bar.end), zorder=3, **style)
+                dict(color=ink, linewidth=5.5 * s * weight, solid_capstyle="round")
+            artists += ax.plot(*zip(bar.start, bar.end), zorder=2.5 if snapshot.alternative else 3, **style)
         for joint in (*snapshot.joints, *snapshot.ground):
-            artists.append(ax.add_patch(Circle(joint, 0.33 * scene.size, facecolor="white", edgecolor="black",
-                                               linewidth=1.8 * s, zorder=5)))
-    for colour, path in zip(_colours(), scene.paths):
-        position = path.positions[number]
-        if position is not None:
-            artists += ax.plot(*position, marker="o", markersize=9 * s, color=colour, zorder=6)
-    outline = [patheffects.withStroke(linewidth=4 * s, foreground="white")]
-    lettered = lettered_joints(scene, frame)
-    for (position, name), (dx, dy) in zip(lettered, _label_offsets(scene, [p for p, _ in lettered])):
-        artists.append(ax.annotate(name, position, xytext=(dx * 16 * s, dy * 16 * s), textcoords="offset points",
-                                   fontsize=19 * s, weight="bold", color="#1f3a93", zorder=7, ha="center",
-                                   va="center", path_effects=outline, annotation_clip=False))
-    artists += _panel(ax.figure, frame, look)
-    for artist in artists:
-        artist.set_animated(animated)
+            artists.append(ax.add_patch(Circle(joint, 0.33 * size * weight, facecolor="white", edgecolor=ink,
+                                               linewidth=1.8 * s, zorder=4.6 if snapshot.alternative else 5)))
     return artists
+
+
+def _letters(ax, lettered: list, span: float, s: float) -> list:
+    """The joints' letters on ``ax``, each placed away from the joints and the letters before it."""
+    from matplotlib import patheffects
+
+    outline = [patheffects.withStroke(linewidth=4 * s, foreground="white")]
+    return [ax.annotate(name, position, xytext=(dx * 16 * s, dy * 16 * s), textcoords="offset points",
+                        fontsize=19 * s, weight="bold", color="#1f3a93", zorder=7, ha="center", va="center",
+                        path_effects=outline, annotation_clip=False)
+            for (position, name), (dx, dy) in zip(lettered, _label_offsets(span, [p for p, _ in lettered]))]
 
 
 def draw_frame(ax, scene: Scene, number: int, title: str = "") -> None:
@@ -141,6 +225,8 @@ def lettered_joints(scene: Scene, frame: Frame) -> list[tuple[Point, str]]:
     letters = scene.letters if scene.letters is not None else letter_joints(frame.snapshots, span)
     placed: dict[str, Point] = {}
     for index, snapshot in enumerate(frame.snapshots):
+        if snapshot.alternative:
+            continue  # the other branch shares the letters of the joints it moves
         for joint in joints(snapshot):
             name = letters.get((index, joint.role))
             if name is not None and name not in placed:
@@ -152,9 +238,9 @@ DIRECTIONS = ((0.7, 0.7), (-0.7, 0.7), (0.7, -0.7), (-0.7, -0.7), (0.0, 1.0), (1
 LABEL_ROOM = 0.035  # share of the scene's span a label keeps clear of other labels and joints
 
 
-def _label_offsets(scene: Scene, positions: list[Point]) -> list[tuple[float, float]]:
-    """A direction for each label (unit vector): away from the joints and the labels placed before it."""
-    span = max(scene.bounds[1] - scene.bounds[0], scene.bounds[3] - scene.bounds[2])
+def _label_offsets(span: float, positions: list[Point]) -> list[tuple[float, float]]:
+    """A direction for each label (unit vector): away from the joints and the labels placed before it;
+    ``span`` is the size of the picture in the mechanism's units."""
     reach = 0.04 * span  # the label's centre, roughly, in the scene's units
     taken: list[Point] = list(positions)
     chosen = []
@@ -177,9 +263,9 @@ def _panel(figure, frame: Frame, look: Look) -> list:
                figure.text(x, y - 0.045, f"{frame.crank_angle:.1f}\N{DEGREE SIGN}", fontsize=30 * s,
                            weight="bold", va="top")]
     y -= 0.15
-    values = _printed_values(frame.printed)
+    values = _column_values(frame.printed, look.names)
     names = look.names
-    if names is not None and values is not None and len(values) == len(names):
+    if names is not None and values is not None:
         shown = [(name, value) for name, value in zip(names, values)]
         if shown and _same_angle(shown[0][1], frame.crank_angle):
             shown = shown[1:]  # the first column is the crank angle, shown above
@@ -200,6 +286,22 @@ def _panel(figure, frame: Frame, look: Look) -> list:
         artists.append(figure.text(x, y - 0.045, "\n".join(lines), fontsize=16 * s, family="monospace",
                                    va="top"))
     return artists
+
+
+def _column_values(printed: str, names: tuple[str, ...] | None) -> list[str] | None:
+    """Each named column's printed values at this position, as printed: the first line's, and a
+    second branch's shorter line under the last columns (``-114.62 / 114.62``); None if they do not fit."""
+    first = _printed_values(printed)
+    if names is None or first is None or len(first) != len(names):
+        return None
+    columns = [[value] for value in first]
+    for line in printed.splitlines()[1:]:
+        more = _printed_values(line)
+        if more is None or len(more) > len(names):
+            return None
+        for column, value in zip(columns[len(names) - len(more):], more):
+            column.append(value)
+    return [" / ".join(column) for column in columns]
 
 
 def _printed_values(printed: str) -> list[str] | None:

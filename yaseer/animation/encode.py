@@ -111,18 +111,21 @@ def _paint_all(painter: Painter, numbers: list[int], progress_file) -> list:
     return [painter.image(n) for n in track(numbers, description="rendering", unit="frame", file=progress_file)]
 
 
+FAST_OCTREE = 2  # Image.Quantize.FASTOCTREE (a plain number for Pillow before 9.1)
 GIF_COLOURS = 64  # line art in a few colours: plenty, and a quarter of the time of an adaptive 256
 
 
 def write_gif(images: list, out: Path, fps: float) -> None:
     """An endlessly looping GIF, ``fps`` frames a second (Pillow; 64 colours, fast octree palette)."""
-    fast_octree = 2  # Image.Quantize.FASTOCTREE (a plain number for Pillow before 9.1)
-    frames = [image.quantize(colors=GIF_COLOURS, method=fast_octree) for image in images]
+    frames = [image.quantize(colors=GIF_COLOURS, method=FAST_OCTREE) for image in images]
     frames[0].save(out, save_all=True, append_images=frames[1:], duration=round(1000.0 / fps), loop=0)
 
 
 PLAYER = """<div class="yaseer-player" id="{id}" style="font-family: sans-serif; max-width: {width}px">
-<img src="{first}" alt="{title}" style="width: 100%; height: auto; display: block">
+<div style="position: relative">
+<img src="{background}" alt="{title}" style="width: 100%; height: auto; display: block">
+<img class="yaseer-frame" src="{first}" alt="" style="position: absolute; left: 0; top: 0; width: 100%; height: auto">
+</div>
 <div style="display: flex; align-items: center; gap: 0.6em; margin-top: 0.3em">
 <button type="button" style="min-width: 5em">pause</button>
 <input type="range" min="0" max="{last}" value="0" style="flex: 1">
@@ -132,7 +135,7 @@ PLAYER = """<div class="yaseer-player" id="{id}" style="font-family: sans-serif;
 (function () {{
   const root = document.getElementById("{id}");
   const frames = {frames};
-  const img = root.querySelector("img"), slider = root.querySelector("input");
+  const img = root.querySelector("img.yaseer-frame"), slider = root.querySelector("input");
   const number = root.querySelector("output"), play = root.querySelector("button");
   let current = 0, timer = null;
   function show(n) {{ current = n; img.src = frames[n]; slider.value = n; number.textContent = n;
@@ -156,11 +159,40 @@ HTML_PAGE = """<!DOCTYPE html>
 """
 
 
+PLAYER_COLOURS = 32  # line art, bold type and a few trace colours: what a frame's moving parts need
+BACKGROUND_SAMPLES = 15  # frames the player's background is the median of
+
+
+def player_layers(images: list) -> tuple:
+    """(background, layers): what the frames mostly show, once, and per frame only the pixels that differ.
+
+    The background is, pixel by pixel, the median of up to :data:`BACKGROUND_SAMPLES` frames
+    spread over the run: the picture without the moving parts, where each part covers a
+    pixel in few frames.  Each frame's layer is opaque where the frame differs from it and
+    transparent elsewhere, in a palette of :data:`PLAYER_COLOURS` colours; a frame is its
+    layer over the background.
+    """
+    import numpy as np
+    from PIL import Image
+
+    step = max(1, len(images) // BACKGROUND_SAMPLES)
+    sample = np.stack([np.asarray(image.convert("RGB")) for image in images[::step]])
+    background = np.median(sample, axis=0).astype(np.uint8)
+    layers = []
+    for image in images:
+        frame = np.asarray(image.convert("RGB"))
+        differs = (frame != background).any(axis=2)
+        rgba = np.dstack([np.where(differs[..., None], frame, 0).astype(np.uint8), (differs * 255).astype(np.uint8)])
+        layers.append(Image.fromarray(rgba, "RGBA").quantize(colors=PLAYER_COLOURS, method=FAST_OCTREE))
+    return Image.fromarray(background, "RGB"), layers
+
+
 def player_html(images: list, fps: float, title: str = "") -> str:
     """A self-contained player (one ``<div>``): the frames as PNG data, play/pause and a frame slider.
 
-    Several players may share a page (each keeps to its own ``<div>``); the
-    ``data-frame`` attribute of the ``<div>`` is the frame shown.
+    The frames are layers over one background (:func:`player_layers`).  Several players
+    may share a page (each keeps to its own ``<div>``); the ``data-frame`` attribute of
+    the ``<div>`` is the frame shown.
     """
     import base64
     import html
@@ -168,14 +200,16 @@ def player_html(images: list, fps: float, title: str = "") -> str:
     import json
     import uuid
 
-    urls = []
-    for image in images:
+    def url(image) -> str:
         buffer = io.BytesIO()
-        image.save(buffer, format="PNG")
-        urls.append("data:image/png;base64," + base64.b64encode(buffer.getvalue()).decode("ascii"))
+        image.save(buffer, format="PNG", optimize=True)
+        return "data:image/png;base64," + base64.b64encode(buffer.getvalue()).decode("ascii")
+
+    background, layers = player_layers(images)
+    urls = [url(layer) for layer in layers]
     return PLAYER.format(id=f"yaseer-{uuid.uuid4().hex[:12]}", title=html.escape(title), first=urls[0],
-                         last=len(urls) - 1, frames=json.dumps(urls), interval=round(1000.0 / fps),
-                         width=images[0].size[0])
+                         background=url(background), last=len(urls) - 1, frames=json.dumps(urls),
+                         interval=round(1000.0 / fps), width=images[0].size[0])
 
 
 def write_html(images: list, out: Path, fps: float, title: str = "") -> None:

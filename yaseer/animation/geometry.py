@@ -63,7 +63,9 @@ class Snapshot:
     """What one call of program ``area`` computed, as geometry.
 
     ``crank`` is the index in ``bars`` of the driving crank (None for
-    Program 5), ``crank_angle`` its angle in degrees.
+    Program 5), ``crank_angle`` its angle in degrees.  ``alternative``: a call
+    at the same crank angle as the frame's first, printed on the next line (the
+    other branch of seed 003's four-bar).
     """
 
     area: int
@@ -74,6 +76,7 @@ class Snapshot:
     sliders: tuple[Slider, ...] = ()
     points: tuple[TracedPoint, ...] = ()
     crank: int | None = 0
+    alternative: bool = False  # another assembly at the same position (drawn lighter, not lettered)
 
     def key(self) -> tuple:
         """Identity of the drawn geometry (two calls with equal keys draw the same)."""

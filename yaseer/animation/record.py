@@ -160,7 +160,7 @@ class Recorder:
         if self._pending:
             self.frames.append(Frame(tuple(self._pending), ""))
             self._pending = []
-        return [prepare_frame(frame) for frame in self.frames]
+        return merge_positions([prepare_frame(frame) for frame in self.frames])
 
 
 # --- assembling frames ------------------------------------------------------------
@@ -179,6 +179,29 @@ def prepare_frame(frame: Frame) -> Frame:
     virtual_ends = [s.bars[0].end for s in unique if s.area == 5]
     marked = tuple(_mark_virtual_crank(s, virtual_ends) for s in unique)
     return Frame(marked, frame.printed)
+
+
+def merge_positions(frames: Sequence[Frame]) -> list[Frame]:
+    """One frame per position: a frame at the same crank angle as the one before (the other
+    assembly branch, printed on the next line) joins it, its calls marked ``alternative``.
+
+    So every branch of one position is drawn together, instead of the branches
+    alternating from frame to frame.
+    """
+    merged: list[Frame] = []
+    for frame in frames:
+        before = merged[-1] if merged else None
+        if before is not None and frame.printed and _same_angle(before.crank_angle, frame.crank_angle) \
+                and [s.area for s in before.snapshots if not s.alternative] == [s.area for s in frame.snapshots]:
+            others = tuple(replace(s, alternative=True) for s in frame.snapshots)
+            merged[-1] = prepare_frame(Frame(before.snapshots + others, before.printed + "\n" + frame.printed))
+        else:
+            merged.append(frame)
+    return merged
+
+
+def _same_angle(a: float, b: float) -> bool:
+    return abs(a - b) <= 1e-9 * max(1.0, abs(a))
 
 
 def _mark_virtual_crank(snapshot: Snapshot, virtual_ends: Sequence[Point]) -> Snapshot:

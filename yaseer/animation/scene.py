@@ -101,6 +101,7 @@ class Scene:
     paths: list[Path2D]
     size: float  # a length in the mechanism's units used for blocks and ground symbols
     letters: dict | None = None  # (call index, role) -> the joint's letter (see .labels)
+    zoom: tuple | None = None  # ((x, y), radius, corner): a small link's surroundings, magnified in a corner
 
 
 def steady_followers(frames: Sequence[Frame]) -> list[Frame]:
@@ -142,4 +143,29 @@ def build_scene(frames: Sequence[Frame]) -> Scene:
     margin = 0.12 * span
     bounds = (xmin - margin, xmax + margin, ymin - margin, ymax + margin)
     return Scene(list(frames), bounds, traced_paths(frames, span), 0.035 * span,
-                 letter_joints(frames[0].snapshots, span))
+                 letter_joints(frames[0].snapshots, span), small_link_zoom(frames, bounds, span))
+
+
+SMALL_LINK = 0.03  # a crank shorter than this share of the scene is magnified in an inset (Example 1: 0.045, not)
+CORNERS = ((1, 0), (0, 0), (1, 1), (0, 1))  # (x, y) of an inset corner, in axes fractions
+
+
+def small_link_zoom(frames: Sequence[Frame], bounds, span: float) -> tuple | None:
+    """Where to magnify a crank too short to see at the scene's scale (Example 5's 0.075 m crank in a
+    2.5 m picture): its fixed pivot, a radius twice the crank, and the corner of the picture farthest
+    from every joint of the run (the inset sits there); None when every crank is long enough."""
+    short = [(bar.start, distance(bar.start, bar.end)) for snapshot in frames[0].snapshots
+             if snapshot.crank is not None and not (bar := snapshot.bars[snapshot.crank]).virtual
+             and 0.0 < distance(bar.start, bar.end) < SMALL_LINK * span]
+    if not short:
+        return None
+    pivot, length = min(short, key=lambda item: item[1])
+    xmin, xmax, ymin, ymax = bounds
+    points = [p for frame in frames for snapshot in frame.snapshots for p in _all_points(snapshot)]
+
+    def clearance(corner):
+        cx = xmin + (xmax - xmin) * (0.15 + 0.7 * corner[0])
+        cy = ymin + (ymax - ymin) * (0.15 + 0.7 * corner[1])
+        return min((math.hypot(px - cx, py - cy) for px, py in points), default=span)
+
+    return pivot, 2.0 * length, max(CORNERS, key=clearance)

@@ -32,9 +32,21 @@ def add_arguments(parser) -> None:
                         help="with --out FILE.png: which frame to draw (from 0; default 0); refused otherwise")
     parser.add_argument("--title", default=None,
                         help="a title over every frame (default: the paper's title, or the listing's first REM)")
+    parser.add_argument("--finer", type=_whole, default=1, metavar="K",
+                        help="smoother motion: run every FOR ... STEP s loop with the step s/K, so the listing "
+                             "computes K times as many positions (default 1: the listing as written)")
     parser.add_argument("--max-frames", type=int, default=360,
                         help="show at most this many evenly spaced frames of a long run (default 360)")
     add_run_options(parser)
+
+
+def _whole(text: str) -> int:
+    """``--finer 4`` -> 4; a usage error for anything but a whole number of 1 or more."""
+    import argparse
+
+    if not text.strip().isdigit() or int(text) < 1:
+        raise argparse.ArgumentTypeError(f"expected a whole number of 1 or more, got {text!r}")
+    return int(text)
 
 
 def _size(text: str) -> tuple[int, int]:
@@ -68,7 +80,7 @@ def main(args) -> int:
     settings = run_settings(args)
     options = settings.run_arguments()
     try:
-        result = record_run(listing, options.pop("method"), angle=options.pop("angle"), **options)
+        result = record_run(listing, options.pop("method"), angle=options.pop("angle"), finer=args.finer, **options)
     finally:
         settings.close()
     raise_if_interrupted(result.exception)  # Ctrl-C: nothing is drawn
