@@ -214,3 +214,20 @@ def test_angle_option_sets_the_unit_of_the_trigonometric_functions():
     (degrees,) = record_run(text).frames
     assert radians.crank_angle == pytest.approx(math.pi)
     assert degrees.crank_angle == pytest.approx(180.0)
+
+
+@pytest.mark.parametrize("name", ["example1", "example2", "example3", "example4", "example5", "tk_slider_crank",
+                                  "fortran_fourbar"])
+def test_every_frame_of_a_numeric_row_shows_its_values_under_column_names(name):
+    """No frame falls back to unnamed numbers: the paper's names, the listing's header, or the expressions
+    of the PRINT that printed the table (seed 001: T(2), X(2), ... though a labelled line is printed last)."""
+    import yaseer
+    from yaseer.animation.draw import _column_values
+
+    result = yaseer.run(LISTINGS / f"{name}.bas")
+    names = result.look().names
+    assert names is not None and names == result.columns
+    numeric = [frame for frame in result.frames if not frame.printed[:1].isalpha()]
+    assert len(numeric) >= len(result.frames) - 1  # seed 001's backsolve line is labelled: its own text
+    for frame in numeric:
+        assert _column_values(frame.printed, names) is not None, frame.printed

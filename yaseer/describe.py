@@ -88,8 +88,10 @@ PAPER_EXAMPLES: dict[str, FigureSpec] = {
 }
 
 
-def printed_expressions(listing_text: str) -> list[str]:
-    """The expressions of the last ``PRINT``/``LPRINT`` statement of a listing, as written.
+def printed_expressions(listing_text: str, width: int | None = None) -> list[str]:
+    """The expressions of the last ``PRINT``/``LPRINT`` statement of a listing, as written
+    (with ``width``: of the last one that prints ``width`` items, the one a table of that
+    many columns comes from, when a labelled line is printed after it).
 
     ``60 PRINT USING "###.##"; QQ; Y(2): NEXT QQ`` gives ``["QQ", "Y(2)"]``.  Only what
     is needed for labels: the statement ends at a ``:`` outside strings and parentheses,
@@ -99,7 +101,7 @@ def printed_expressions(listing_text: str) -> list[str]:
     for line in listing_text.splitlines():
         for statement in _split_top_level(line, ":"):
             items = _print_items(statement)
-            if items is not None:
+            if items is not None and (width is None or len(items) == width):
                 last = items
     return last
 
@@ -165,7 +167,7 @@ def column_names(name: str | None, width: int, header: Sequence[str] | None,
         return tuple(q.axis_label() for q in (known.x, *known.columns))
     if header is not None:
         return tuple(header)
-    expressions = printed_expressions(listing_text) if listing_text else []
+    expressions = printed_expressions(listing_text, width) if listing_text else []
     return tuple(expressions) if len(expressions) == width else None
 
 
