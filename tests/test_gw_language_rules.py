@@ -124,3 +124,13 @@ def test_line_input_reads_at_most_255_characters(tmp_path):
     (tmp_path / "L.TXT").write_bytes(b"x" * 300 + b"\r\n")
     source = '10 OPEN "I", 1, "L.TXT": LINE INPUT #1, A$: LINE INPUT #1, B$: PRINT LEN(A$); LEN(B$)\n'
     assert yaseer_run(source, tmp_path) == " 255  45 \n"
+
+
+@pytest.mark.parametrize("source, expected", [
+    ('10 OPEN "O", 1, "X": PRINT EOF(1)\n', "Bad file mode in 10\n"),  # GIODSK.ASM DSKEOF: output mode
+    ('10 PRINT EOF(-1)\n', "Illegal function call in 10\n"),  # a file number is a byte (PC-BASIC agrees)
+    ('10 CLOSE 5: PRINT 1\n', " 1 \n"),  # a number not open: nothing (PC-BASIC agrees)
+    ('10 CLOSE 300\n', "Illegal function call in 10\n"),
+])
+def test_file_number_errors(tmp_path, source, expected):
+    assert yaseer_run(source, tmp_path) == expected

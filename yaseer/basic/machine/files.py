@@ -27,7 +27,7 @@ if TYPE_CHECKING:  # pathlib is imported where a file is used, not at start-up
 
 from yaseer.basic.errors import (
     BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
-    FILE_NOT_FOUND, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, BasicError, error_message,
+    FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, BasicError, error_message,
 )
 from yaseer.basic.machine import random_files
 from yaseer.basic.machine.runtime import cint
@@ -224,7 +224,9 @@ class OpenFile:
         return self.data
 
     def at_end(self) -> bool:
-        return self.position >= len(self._input())
+        """EOF: an output file is Bad file mode (GIODSK.ASM DSKEOF)."""
+        data = self._input()
+        return self.position >= len(data)
 
     def read_chars(self, n: int) -> str:
         data = self._input()
@@ -317,6 +319,15 @@ class OpenFile:
         return self.position // RECORD + 1
 
 
+def file_byte(n) -> int:
+    """A file number as a byte: outside 0..255 ``Illegal function call`` (a CLOSE of a
+    number in range that is not open does nothing)."""
+    k = cint(n)
+    if not 0 <= k <= 255:
+        raise _error(ILLEGAL_FUNCTION_CALL)
+    return k
+
+
 class FileTable:
     """The open files of a machine, by file number, all inside one :class:`Sandbox`."""
 
@@ -327,7 +338,9 @@ class FileTable:
 
     @staticmethod
     def number(n) -> int:
-        k = cint(n)
+        """A file number: outside 0..255 ``Illegal function call``, else outside 1..MAX_FILES
+        ``Bad file number`` (GW-BASIC checks the byte before the file table)."""
+        k = file_byte(n)
         if not 1 <= k <= MAX_FILES:
             raise _error(BAD_FILE_NUMBER)
         return k
@@ -387,7 +400,7 @@ class FileTable:
 
     def close(self, numbers=()) -> None:
         """CLOSE [n, ...]: the files named (no error for one not open), or all."""
-        for k in ([self.number(n) for n in numbers] if numbers else list(self.open_files)):
+        for k in ([file_byte(n) for n in numbers] if numbers else list(self.open_files)):
             f = self.open_files.pop(k, None)
             if f is not None:
                 f.close()
