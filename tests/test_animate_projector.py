@@ -119,7 +119,7 @@ def test_the_command_takes_size_and_refuses_a_bad_one(tmp_path):
     bad = run_cli(str(LISTINGS / "example5.bas"), "--out", "s.png", "--size", "wide", cwd=tmp_path)
     assert bad.returncode == 2 and "WIDTHxHEIGHT" in bad.stderr and "Traceback" not in bad.stderr
     small = run_cli(str(LISTINGS / "example5.bas"), "--out", "s.png", "--size", "20x20", cwd=tmp_path)
-    assert small.returncode == 1 and small.stderr.strip().endswith("not 20x20")
+    assert small.returncode == 2 and small.stderr.strip().endswith("not 20x20")  # refused before the run
 
 
 def test_unnamed_columns_are_shown_under_the_expressions_of_the_last_print():

@@ -50,9 +50,12 @@ def test_wrong_options_are_one_usage_error(shell, line, cell, says):
             shell.run_cell_magic("basic", line, cell)
 
 
-def test_an_unknown_method_is_the_red_error_line_not_an_exception(shell, capsys):
-    shell.run_cell_magic("basic", "--method 2=bogus", "10 PRINT 1\n")
-    assert shell.user_ns["_basic"].error.startswith("Unknown method 'bogus' for PROG 2")
+def test_an_unknown_method_is_one_usage_error_as_on_the_command_line(shell):
+    from IPython.core.error import UsageError
+
+    with pytest.raises(UsageError, match="unknown method 'bogus' for PROG 2"):
+        shell.run_cell_magic("basic", "--method 2=bogus", "10 PRINT 1\n")
+
 
 
 def test_a_program_that_draws_shows_its_lcd(shell, tmp_path):

@@ -213,31 +213,38 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
     ``finer``: run every ``FOR ... STEP s`` loop with the step s/finer, so the listing itself
     computes that many times as many positions (:mod:`yaseer.finer`; for smoother animations).
     A BASIC error (and a missing file) is ``result.error``,
-    one line; with ``raise_errors`` it is raised.
+    one line; with ``raise_errors`` it is raised.  An argument the command line
+    would refuse (area 0 or 10, an area without RETURN, an unknown dialect,
+    angle, method or output format, ``files`` that is no directory) raises
+    :class:`yaseer.run_arguments.ArgumentError` (a ValueError), one line.
 
     For the command line: ``screen`` / ``printer`` also receive PRINT / LPRINT
     output as it is printed (a printer takes LPRINT off the screen and out of
     ``text``), ``output_format="csv"`` prints full-precision rows, and
     ``keep=False`` keeps neither text, rows nor frames (a long streamed run).
     """
+    from yaseer import run_arguments as check
     from yaseer.basic.errors import BasicError
 
+    dialect, angle = check.dialect_choice(dialect), check.angle_choice(angle)
+    output_format, files = check.output_format_choice(output_format), check.files_directory(files)
+    methods = dict(check.method_choice(n, name) for n, name in (method or {}).items())
+    numbers = {check.area_number(n): text for n, text in (prog or {}).items()}
     result = Result(listing="")
     opened: list[IO[str]] = []
     try:
         from yaseer.basic.dialects.dialect import get_dialect
 
-        result.listing, result.name = _source(listing, get_dialect(dialect or "casio").charset)
+        result.listing, result.name = _source(listing, get_dialect(dialect).charset)
         if finer != 1:
             from yaseer.finer import finer_steps
 
             result.listing = finer_steps(result.listing, finer)
-        areas = {int(n): _source(text)[0] for n, text in (prog or {}).items()}
+        areas = {n: _area_text(n, _source(text)[0]) for n, text in numbers.items()}
         input_stream = _input_stream(input, opened)
     except BasicError as error:
         return _failed(result, error, raise_errors)
-    execute(result, areas, dict(method or {}), input_stream, angle, dialect or "casio", screen, printer,
-            output_format, keep, files)
+    execute(result, areas, methods, input_stream, angle, dialect, screen, printer, output_format, keep, files)
     for handle in opened:
         handle.close()
     if result.exception is not None and raise_errors:
@@ -293,6 +300,16 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
     result.screens = machine.screens
     if recorder is not None:
         result.frames = recorder.finish()
+
+
+def _area_text(number: int, text: str) -> str:
+    """Program area ``number``'s text, refused (ArgumentError naming the area) as ``--prog`` refuses it."""
+    from yaseer.run_arguments import ArgumentError, area_text
+
+    try:
+        return area_text(number, text)
+    except ArgumentError as error:
+        raise ArgumentError(f"prog {number}: {error}") from None
 
 
 def _failed(result: Result, error, raise_errors: bool) -> Result:

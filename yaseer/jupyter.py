@@ -69,13 +69,14 @@ class BasicMagics(Magics):
         """Run BASIC: the cell's text, or the file named on the line."""
         from IPython.core.error import UsageError
 
-        from yaseer.animation.draw import parse_size
+        from yaseer.run_arguments import frame_size, frames_per_second, max_frames
 
         try:
             args = self.basic.parser.parse_args(_words(line))
             methods = dict(_pair(text) for text in args.method)
             areas = dict(_pair(text) for text in args.prog)
-            size = parse_size(args.size)
+            size = frame_size(args.size)
+            args.fps, args.max_frames = frames_per_second(args.fps), max_frames(args.max_frames)
         except ValueError as error:
             raise UsageError(str(error)) from None
         if cell is None and not args.file:
@@ -97,7 +98,7 @@ def run_magic(listing, args, methods: dict, areas: dict, shell):
         result = run(listing, dialect=args.dialect, method=methods, prog=areas, angle=args.angle,
                      input=args.input.replace("\\n", "\n") if args.input else None, screen=sys.stdout,
                      files=args.files, finer=args.finer)
-    except ValueError as error:  # an unknown dialect
+    except ValueError as error:  # an argument yaseer.run refuses (yaseer.run_arguments): one line
         from IPython.core.error import UsageError
 
         raise UsageError(str(error)) from None

@@ -44,14 +44,6 @@ class Look:
         return self.size[1] / 720.0
 
 
-def parse_size(text: str) -> tuple[int, int]:
-    """``"1280x720"`` -> (1280, 720); ValueError for anything else (the range is checked when drawing)."""
-    width, _, height = text.lower().partition("x")
-    if not (width.strip().isdigit() and height.strip().isdigit()):
-        raise ValueError(f"expected WIDTHxHEIGHT in pixels, got {text!r}")
-    return int(width), int(height)
-
-
 def make_figure(scene: Scene, look: Look):
     """A free-standing Figure of ``look.size`` with the background drawn; returns (figure, axes)."""
     from matplotlib.figure import Figure

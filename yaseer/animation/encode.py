@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import math
 import shutil
 from pathlib import Path
 from typing import Sequence
@@ -10,6 +9,7 @@ from typing import Sequence
 from yaseer.animation.draw import Look, Painter, draw_moving, make_figure
 from yaseer.animation.geometry import Frame
 from yaseer.animation.scene import AnimationError, build_scene
+from yaseer.run_arguments import ArgumentError, frame_size, frames_per_second
 
 SUFFIXES = (".gif", ".mp4", ".html", ".png")
 
@@ -41,9 +41,11 @@ def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0
     suffix = out.suffix.lower()
     if suffix not in SUFFIXES:
         raise AnimationError(f"Unknown animation format {out.suffix!r}: use {', '.join(SUFFIXES)}")
-    if not (math.isfinite(fps) and fps > 0):
-        raise AnimationError(f"Frames per second must be a positive number, not {fps:g}")
-    check_size(look.size)
+    try:
+        fps = frames_per_second(fps)
+        frame_size(look.size)
+    except ArgumentError as error:
+        raise AnimationError(str(error)) from None
     scene = build_scene(frames)
     if suffix == ".png" and not 0 <= frame_number < len(scene.frames):
         count = len(scene.frames)
@@ -60,17 +62,6 @@ def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0
     else:
         WRITERS[suffix](images, out, fps)
     return len(images)
-
-
-MIN_SIZE, MAX_SIZE = (160, 120), (7680, 4320)
-
-
-def check_size(size: tuple[int, int]) -> None:
-    """An AnimationError unless ``size`` (pixels) is between 160 x 120 and 7680 x 4320."""
-    width, height = size
-    if not (MIN_SIZE[0] <= width <= MAX_SIZE[0] and MIN_SIZE[1] <= height <= MAX_SIZE[1]):
-        raise AnimationError(f"A frame size must be from {MIN_SIZE[0]}x{MIN_SIZE[1]} to "
-                             f"{MAX_SIZE[0]}x{MAX_SIZE[1]} pixels, not {width}x{height}")
 
 
 def paint(frames: Sequence[Frame], look: Look, max_frames: int = MAX_FRAMES, progress_file=None,

@@ -16,7 +16,8 @@ from pathlib import Path
 
 def add_arguments(parser) -> None:
     """FILE, --out, --fps, --size, --frame, --title, --max-frames and the run options of ``yaseer run``."""
-    from yaseer.commands.parsers import add_run_options
+    from yaseer.commands.parsers import add_run_options, checked
+    from yaseer.run_arguments import frame_size, frames_per_second, max_frames
 
     parser.epilog = ("Exit status: 0 written, 1 an error (one line on standard error; a run that fails part-way "
                      "is still drawn up to the failure), 2 a wrong command line (also --frame without a .png), "
@@ -25,8 +26,8 @@ def add_arguments(parser) -> None:
     parser.add_argument("--out", metavar="FILE",
                         help="the file to write (its directory is created): .gif, .html, .mp4 (H.264 via ffmpeg) "
                              "or .png (one frame); default: <stem>.gif in the current directory")
-    parser.add_argument("--fps", type=float, default=6.0, help="frames per second (default 6)")
-    parser.add_argument("--size", type=_size, default=(1280, 720), metavar="WxH",
+    parser.add_argument("--fps", type=checked(frames_per_second), default=6.0, help="frames per second (default 6)")
+    parser.add_argument("--size", type=checked(frame_size), default=(1280, 720), metavar="WxH",
                         help="frame size in pixels (default 1280x720, for a projector)")
     parser.add_argument("--frame", type=int, default=None,
                         help="with --out FILE.png: which frame to draw (from 0; default 0); refused otherwise")
@@ -35,7 +36,7 @@ def add_arguments(parser) -> None:
     parser.add_argument("--finer", type=_whole, default=1, metavar="K",
                         help="smoother motion: run every FOR ... STEP s loop with the step s/K, so the listing "
                              "computes K times as many positions (default 1: the listing as written)")
-    parser.add_argument("--max-frames", type=int, default=360,
+    parser.add_argument("--max-frames", type=checked(max_frames), default=360,
                         help="show at most this many evenly spaced frames of a long run (default 360)")
     add_run_options(parser)
 
@@ -47,18 +48,6 @@ def _whole(text: str) -> int:
     if not text.strip().isdigit() or int(text) < 1:
         raise argparse.ArgumentTypeError(f"expected a whole number of 1 or more, got {text!r}")
     return int(text)
-
-
-def _size(text: str) -> tuple[int, int]:
-    """``--size 1280x720`` -> (1280, 720); a usage error naming what was given otherwise."""
-    import argparse
-
-    from yaseer.animation.draw import parse_size
-
-    try:
-        return parse_size(text)
-    except ValueError as error:
-        raise argparse.ArgumentTypeError(str(error)) from None
 
 
 def main(args) -> int:

@@ -39,15 +39,14 @@ is empty or has no ``RETURN`` is an error naming the file (exit status 1).
 
 from __future__ import annotations
 
-import re
 from types import SimpleNamespace
+
+from yaseer.run_arguments import ANGLES, DIALECTS
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up time)
     from argparse import Namespace
     from typing import Callable, Sequence, TextIO
-
-AREAS = range(1, 10)  # --prog N: areas 1-9 (area 0 is the listing itself)
 
 
 class OptionValueError(ValueError):
@@ -144,55 +143,43 @@ class UsageError(CommandError):
 
 
 def area_file(text: str) -> tuple[int, str]:
-    """``"5=prog5.bas"`` -> ``(5, "prog5.bas")``; areas 1-9 only."""
+    """``"5=prog5.bas"`` -> ``(5, "prog5.bas")``; areas 1-9 only (:func:`yaseer.run_arguments.area_number`)."""
+    from yaseer.run_arguments import area_number
+
     number, _, path = text.partition("=")
     if not number.strip().isdigit() or not path:
         raise OptionValueError(f"expected N=FILE, got {text!r}")
-    area = int(number)
-    if area == 0:
-        raise OptionValueError(f"area 0 is the listing itself; --prog takes areas 1-9, got {text!r}")
-    if area not in AREAS:
-        raise OptionValueError(f"program areas are 1-9, got {text!r}")
-    return area, path
+    try:
+        return area_number(int(number), text), path
+    except ValueError as error:
+        raise OptionValueError(str(error)) from None
 
 
 def method_pair(text: str) -> tuple[int, str]:
-    """``"5=paper"`` -> ``(5, "paper")``, checked against the method registry."""
+    """``"5=paper"`` -> ``(5, "paper")``, checked against the method registry
+    (:func:`yaseer.run_arguments.method_choice`)."""
+    from yaseer.run_arguments import method_choice
+
     number, _, name = text.partition("=")
     if not number.strip().isdigit() or not name.strip():
         raise OptionValueError(f"expected N=NAME, got {text!r}")
-    area, name = int(number), name.strip()
-    known = method_choices()
-    if area not in known:
-        raise OptionValueError(
-            f"no library program {area} to choose a method for (programs: {', '.join(map(str, known))})")
-    if name not in known[area]:
-        raise OptionValueError(f"unknown method {name!r} for PROG {area} (known: {', '.join(known[area])})")
-    return area, name
-
-
-def method_choices() -> dict[int, list[str]]:
-    """Program number -> its method names, the default first (from ``yaseer.linkages.registry``)."""
-    from yaseer.binding import LINKAGES
-    from yaseer.linkages.registry import default_method, method_names
-
-    choices = {}
-    for number, linkage in LINKAGES.items():
-        names = method_names(linkage)
-        default = default_method(linkage)
-        choices[number] = [default] + [n for n in names if n != default]
-    return choices
+    try:
+        return method_choice(int(number), name)
+    except ValueError as error:
+        raise OptionValueError(str(error)) from None
 
 
 def method_help() -> str:
     """``--method``'s help, listing every program's methods (computed only when help is shown:
     building the list imports the numerics, and a plain ``yaseer run`` must not)."""
+    from yaseer.run_arguments import method_choices
+
     listed = "; ".join(f"{n}: {', '.join(names)}" for n, names in method_choices().items())
     return f"the method library program N uses, the first named being the default ({listed}); may be repeated"
 
 
 DIALECT = Option("--dialect", "casio: the paper's pocket computer (default); gw: GW-BASIC 3.23",
-                 choices=("casio", "gw"), default="casio")
+                 choices=DIALECTS, default="casio")
 """``--dialect casio|gw`` (a run option, and the interactive session's)."""
 
 RUN_OPTIONS = ("running the listing (the same in run, diff, plot, animate and report)", (
@@ -202,7 +189,7 @@ RUN_OPTIONS = ("running the listing (the same in run, diff, plot, animate and re
     Option("--method", method_help, metavar="N=NAME", convert=method_pair, repeated=True),
     DIALECT,
     Option("--angle", "unit of SIN COS TAN ATN at the start (default: the dialect's: casio deg, gw rad)",
-           choices=("deg", "rad")),
+           choices=ANGLES),
     Option("--arith", "casio's arithmetic: binary (IEEE doubles, default) or decimal (13 digits inside, "
                       "as the FX-850P family's BCD)", choices=("binary", "decimal"), default="binary"),
     Option("--input", "answer INPUT statements with the lines of FILE (default: standard input)", metavar="FILE"),
@@ -261,33 +248,25 @@ def run_settings(args: Namespace) -> RunSettings:
                        files=_files_directory(args.files))
 
 
-_STRINGS = re.compile(r'"[^"]*("|$)')
-
-
 def read_area(number: int, path: str) -> str:
-    """The text of ``--prog N=path``; :class:`CommandError` if it holds no lines or no RETURN."""
-    from yaseer.basic.errors import BasicError
-    from yaseer.basic.source.scanner import split_lines
+    """The text of ``--prog N=path``; :class:`CommandError` if it holds no lines or no RETURN
+    (:func:`yaseer.run_arguments.area_text`, the check the API makes)."""
+    from yaseer.run_arguments import area_text
 
-    text = read_text(path)
     try:
-        lines = [statement for _, statement, _ in split_lines(text) if statement]
-    except BasicError as error:
+        return area_text(number, read_text(path))
+    except ValueError as error:
         raise CommandError(f"--prog {number}={path}: {error}") from None
-    if not lines:
-        raise CommandError(f"--prog {number}={path}: the file holds no numbered program lines")
-    if not any("RETURN" in _STRINGS.sub("", line).upper() for line in lines):
-        raise CommandError(f"--prog {number}={path}: no RETURN, so GOSUB PROG {number} could never come back")
-    return text
 
 
 def _files_directory(path: str | None) -> str | None:
     """``--files DIR``: DIR must be an existing directory (CommandError otherwise)."""
-    import os
+    from yaseer.run_arguments import files_directory
 
-    if path is not None and not os.path.isdir(path):
-        raise CommandError(f"--files {path}: no such directory")
-    return path
+    try:
+        return files_directory(path)
+    except ValueError as error:
+        raise CommandError(f"--files {error}") from None
 
 
 def read_text(path: str) -> str:

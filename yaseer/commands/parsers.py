@@ -13,6 +13,7 @@ import argparse
 import functools
 
 from yaseer.commands.options import DIALECT, RUN_OPTIONS, Option, OptionValueError
+from yaseer.run_arguments import ArgumentError
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:  # annotations only
@@ -49,15 +50,21 @@ def add_option(parser, option: Option) -> None:
                         choices=option.choices, default=[] if option.repeated else option.default)
 
 
-def _argparse_type(convert):
-    """``convert`` for argparse: the text of an :class:`OptionValueError` is shown as the whole message
+def checked(check):
+    """An argparse ``type`` converting with ``check``, one of :mod:`yaseer.run_arguments` (the checks
+    the API and the magic make): a value it refuses is a usage error with its message."""
+    return _argparse_type(check, ArgumentError)
+
+
+def _argparse_type(convert, shown=OptionValueError):
+    """``convert`` for argparse: the text of a ``shown`` error is shown as the whole message
     (argparse's ``ArgumentTypeError``); any other ValueError as argparse's ``invalid NAME value``."""
 
     @functools.wraps(convert)
     def converted(text: str):
         try:
             return convert(text)
-        except OptionValueError as error:
+        except shown as error:
             raise argparse.ArgumentTypeError(str(error)) from None
 
     return converted

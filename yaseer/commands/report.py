@@ -14,15 +14,15 @@ from pathlib import Path
 
 def add_arguments(parser) -> None:
     """FILE, --out, --fps, --size, --max-frames and the run options of ``yaseer run``."""
-    from yaseer.commands.animate import _size
-    from yaseer.commands.parsers import add_run_options
+    from yaseer.commands.parsers import add_run_options, checked
+    from yaseer.run_arguments import frame_size, frames_per_second, max_frames
 
     parser.add_argument("file", help="the BASIC listing")
     parser.add_argument("--out", metavar="FILE", help="the page to write (default: <stem>.html here)")
-    parser.add_argument("--fps", type=float, default=6.0, help="frames per second of the player (default 6)")
-    parser.add_argument("--size", type=_size, default=(1280, 720), metavar="WxH",
+    parser.add_argument("--fps", type=checked(frames_per_second), default=6.0, help="frames per second of the player (default 6)")
+    parser.add_argument("--size", type=checked(frame_size), default=(1280, 720), metavar="WxH",
                         help="frame size of the player in pixels (default 1280x720)")
-    parser.add_argument("--max-frames", type=int, default=120,
+    parser.add_argument("--max-frames", type=checked(max_frames), default=120,
                         help="at most this many evenly spaced frames in the player (default 120)")
     add_run_options(parser)
 
