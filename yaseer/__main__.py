@@ -1,3 +1,3 @@
-from yaseer.cli import main
+from yaseer.entry import main
 
 raise SystemExit(main())

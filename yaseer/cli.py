@@ -153,6 +153,14 @@ def guarded(command: str, call) -> int:
     ``OSError`` into status 1 (a ``UsageError`` into 2), Ctrl-C into 130 and a
     closed pipe into a quiet 0.
     """
+    try:
+        return _guarded(command, call)
+    except KeyboardInterrupt:  # also while the command's first modules are being imported
+        _report(f"yaseer {command}: interrupted (Ctrl-C)")
+        return 130
+
+
+def _guarded(command: str, call) -> int:
     from yaseer.commands.options import CommandError, UsageError
     from yaseer.commands.output import NamedStream
 
@@ -162,9 +170,6 @@ def guarded(command: str, call) -> int:
         status = call()
         sys.stdout.flush()
         return status
-    except KeyboardInterrupt:
-        _report(f"yaseer {command}: interrupted (Ctrl-C)")
-        return 130
     except BrokenPipeError:  # the reader went away (`| head`): stop quietly
         _silence(stdout)
         return 0

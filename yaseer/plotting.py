@@ -134,8 +134,11 @@ def _wrap(label: str, width: int = 24) -> str:
 
 def save_figure(figure, out_dir: Path, stem: str) -> list[Path]:
     """Write ``stem.png`` and ``stem.svg`` into ``out_dir`` (created if needed)."""
+    from yaseer.whole_files import staged
+
     out_dir.mkdir(parents=True, exist_ok=True)
     paths = [out_dir / f"{stem}.png", out_dir / f"{stem}.svg"]
-    figure.savefig(paths[0], dpi=110)
-    figure.savefig(paths[1])
+    with staged() as place:  # both appear, or neither (Ctrl-C while drawing the SVG)
+        figure.savefig(place(paths[0]), dpi=110)
+        figure.savefig(place(paths[1]))
     return paths

@@ -10,6 +10,7 @@ from yaseer.animation.draw import Look, Painter, draw_moving, make_figure
 from yaseer.animation.geometry import Frame
 from yaseer.animation.scene import AnimationError, build_scene
 from yaseer.run_arguments import ArgumentError, frame_size, frames_per_second
+from yaseer.whole_files import staged
 
 SUFFIXES = (".gif", ".mp4", ".html", ".png")
 
@@ -53,14 +54,15 @@ def render(frames: Sequence[Frame], out: Path, title: str = "", fps: float = 6.0
                              f"numbered from 0 to {count - 1}")
     if suffix == ".mp4" and ffmpeg_program() is None:
         raise AnimationError("Writing .mp4 needs ffmpeg, which is not installed here; use .gif or .html")
-    if suffix == ".png":
-        Painter(scene, look).image(frame_number).save(out)
-        return 1
-    images = paint(frames, look, max_frames, progress_file, scene)
-    if suffix == ".html":
-        write_html(images, out, fps, look.title)
-    else:
-        WRITERS[suffix](images, out, fps)
+    with staged() as place:  # the file appears whole or not at all (Ctrl-C while painting or encoding)
+        if suffix == ".png":
+            Painter(scene, look).image(frame_number).save(place(out))
+            return 1
+        images = paint(frames, look, max_frames, progress_file, scene)
+        if suffix == ".html":
+            write_html(images, place(out), fps, look.title, out.stem)
+        else:
+            WRITERS[suffix](images, place(out), fps)
     return len(images)
 
 
@@ -203,11 +205,12 @@ def player_html(images: list, fps: float, title: str = "") -> str:
                          interval=round(1000.0 / fps), width=images[0].size[0])
 
 
-def write_html(images: list, out: Path, fps: float, title: str = "") -> None:
-    """A self-contained page holding one :func:`player_html`."""
+def write_html(images: list, out: Path, fps: float, title: str = "", name: str | None = None) -> None:
+    """A self-contained page holding one :func:`player_html`; ``name`` titles a page without a title
+    (default: ``out``'s stem)."""
     import html
 
-    out.write_text(HTML_PAGE.format(title=html.escape(title or out.stem), player=player_html(images, fps, title)),
+    out.write_text(HTML_PAGE.format(title=html.escape(title or name or out.stem), player=player_html(images, fps, title)),
                    encoding="utf-8")
 
 

@@ -28,6 +28,7 @@ def main(args) -> int:
     from yaseer.commands.options import CommandError
     from yaseer.commands.output import output_directory
     from yaseer.evaluation import benchmark as bench
+    from yaseer.whole_files import staged
 
     out = output_directory(args.out)
     ways = tuple(w for w in bench.WAYS if not (args.no_listing and w.startswith("listing")))
@@ -41,15 +42,18 @@ def main(args) -> int:
     summary = bench.aggregate(rows)
     newton_curve = bench.newton_summary(newton)
     laziness = bench.laziness_rows(positions=361 if args.quick else 3601, repeat=repeat)
-    bench.write_csv(out / "bench.csv", rows + newton, bench.FIELDS)
-    bench.write_csv(out / "bench_summary.csv", summary, list(summary[0]))
-    bench.write_csv(out / "bench_newton.csv", newton_curve, list(newton_curve[0]))
-    bench.write_csv(out / "bench_laziness.csv", laziness, list(laziness[0]))
-    (out / "bench_results.md").write_text(
-        "### Per method and way (the chart's points)\n\n" + bench.format_summary_markdown(summary)
-        + "\n### Newton over its tolerance\n\n" + bench.format_newton_markdown(newton_curve)
-        + "\n### Laziness\n\n" + bench.format_laziness_markdown(laziness)
-        + "\n### Every case: worst error (time per position)\n\n" + bench.format_markdown(rows))
+    with staged() as place:  # every table and the chart appear together, or none of them (Ctrl-C)
+        bench.write_csv(out / "bench.csv", rows + newton, bench.FIELDS, place)
+        bench.write_csv(out / "bench_summary.csv", summary, list(summary[0]), place)
+        bench.write_csv(out / "bench_newton.csv", newton_curve, list(newton_curve[0]), place)
+        bench.write_csv(out / "bench_laziness.csv", laziness, list(laziness[0]), place)
+        with open(place(out / "bench_results.md"), "w") as results:
+            results.write(
+                "### Per method and way (the chart's points)\n\n" + bench.format_summary_markdown(summary)
+                + "\n### Newton over its tolerance\n\n" + bench.format_newton_markdown(newton_curve)
+                + "\n### Laziness\n\n" + bench.format_laziness_markdown(laziness)
+                + "\n### Every case: worst error (time per position)\n\n" + bench.format_markdown(rows))
+        charts = bench.draw_chart(summary, newton_curve, out / "bench", place) if not args.no_chart else []
     print(bench.format_table(summary))
     print()
     print("Newton over its tolerance (array way; median time, worst error over the cases):")
@@ -61,8 +65,7 @@ def main(args) -> int:
     for r in laziness:
         print(f"  {r['linkage']:<13} {r['level']:<32} {r['way']:<13} {r['seconds_per_position'] * 1e6:10.3f} us"
               f"  x{r['ratio_to_positions_array']:.1f}")
-    if not args.no_chart:
-        for path in bench.draw_chart(summary, newton_curve, out / "bench"):
-            print(f"wrote {path}")
+    for path in charts:
+        print(f"wrote {path}")
     print(f"wrote {out / 'bench.csv'}")
     return 0

@@ -63,6 +63,7 @@ def draw(out: Path, step_deg: float = 0.05) -> list[Path]:
     import numpy as np
 
     from yaseer.linkages.centrode import SEED004, collinear_centres, jumps, space_centrode
+    from yaseer.whole_files import staged
 
     angles = np.arange(0.0, 720.0 + 1e-9, step_deg)
     _, centre = space_centrode(crank_angles_deg=angles)
@@ -100,8 +101,9 @@ def draw(out: Path, step_deg: float = 0.05) -> list[Path]:
     axes.legend(loc="lower right", fontsize=8)
     out.mkdir(parents=True, exist_ok=True)
     paths = [out / "centrode.png", out / "centrode.svg"]
-    for path in paths:
-        figure.savefig(path, dpi=120)
+    with staged() as place:  # both appear, or neither
+        for path in paths:
+            figure.savefig(place(path), dpi=120)
     plt.close(figure)
     return paths
 

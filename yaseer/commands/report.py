@@ -34,6 +34,7 @@ def main(args) -> int:
     from yaseer.commands.options import run_settings
     from yaseer.commands.output import output_file
     from yaseer.commands.run import raise_if_interrupted, report
+    from yaseer.whole_files import staged
     from yaseer.report import build_page
 
     listing = Path(args.file)
@@ -49,6 +50,7 @@ def main(args) -> int:
     printed_program_5 = any(Path(path).name == "prog5.bas" for n, path in args.prog if n == 5)
     page = build_page(result, listing, printed_program_5, fps=args.fps, size=args.size,
                       max_frames=args.max_frames)
-    output_file(out).write_text(page, encoding="utf-8")
+    with staged() as place, open(place(output_file(out)), "w", encoding="utf-8") as written:
+        written.write(page)  # the page appears whole, or not at all
     print(out)
     return report(result)

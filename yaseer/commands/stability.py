@@ -20,14 +20,16 @@ def add_arguments(parser) -> None:
 def main(args) -> int:
     from yaseer.commands.output import output_directory
     from yaseer.evaluation import stability
+    from yaseer.whole_files import staged
 
     out = output_directory(args.out)
     points = stability.sweep_points()
     summary = stability.summarise(points)
     print(stability.format_table(summary))
-    written = stability.write_all(out, points, summary)
-    if not args.no_chart:
-        written += stability.draw_chart(points, out / "stability")
+    with staged() as place:  # the tables and the charts appear together, or none of them (Ctrl-C)
+        written = stability.write_all(out, points, summary, place)
+        if not args.no_chart:
+            written += stability.draw_chart(points, out / "stability", place)
     for path in written:
         print(f"wrote {path}")
     return 0

@@ -110,8 +110,12 @@ def aggregate(rows) -> list[dict]:
     return sorted(summary, key=lambda s: (s["linkage"], s["method"], WAYS.index(s["way"]) if s["way"] in WAYS else 9))
 
 
-def write_csv(path: Path, rows, fields) -> None:
-    with open(path, "w", newline="") as handle:
+def write_csv(path: Path, rows, fields, place=None) -> None:
+    """``rows`` (dicts) as CSV with the columns ``fields``; floats as their repr.  ``place``: the
+    :class:`yaseer.whole_files.Staging` of a set of outputs this file belongs to (default: its own)."""
+    from yaseer.whole_files import staged
+
+    with staged(place) as place, open(place(path), "w", newline="") as handle:
         writer = csv.DictWriter(handle, fieldnames=list(fields))
         writer.writeheader()
         for row in rows:
@@ -178,7 +182,7 @@ def format_markdown(rows) -> str:
     return "\n".join(lines) + "\n"
 
 
-def draw_chart(summary, newton_summary, path_stem: Path) -> list[Path]:
+def draw_chart(summary, newton_summary, path_stem: Path, place=None) -> list[Path]:
     """Time per position (log) against worst error (log), a panel per linkage: PNG and SVG.
 
     Colour: the method; marker: the way of running; grey line: Newton over its
@@ -223,19 +227,25 @@ def draw_chart(summary, newton_summary, path_stem: Path) -> list[Path]:
         axis.set_title(linkage.replace("_", " "))
         axis.grid(True, which="major", alpha=0.3)
     figure.suptitle("yaseer bench: speed against accuracy per method and way of running", fontsize=10)
-    return save_figure(figure, path_stem, dpi=110)
+    return save_figure(figure, path_stem, dpi=110, place=place)
 
 
-def save_figure(figure, path_stem: Path, dpi: int) -> list[Path]:
-    """Write ``figure`` as PNG and SVG next to each other, close it, return the paths."""
+def save_figure(figure, path_stem: Path, dpi: int, place=None) -> list[Path]:
+    """Write ``figure`` as PNG and SVG next to each other, close it, return the paths.
+
+    Both appear or neither (``place``: the staging of a larger set of outputs, see
+    :mod:`yaseer.whole_files`)."""
     import matplotlib.pyplot as plt
+
+    from yaseer.whole_files import staged
 
     figure.tight_layout()
     paths = []
-    for suffix in (".png", ".svg"):
-        path = path_stem.with_suffix(suffix)
-        figure.savefig(path, dpi=dpi)
-        paths.append(path)
+    with staged(place) as place:
+        for suffix in (".png", ".svg"):
+            path = path_stem.with_suffix(suffix)
+            figure.savefig(place(path), dpi=dpi)
+            paths.append(path)
     plt.close(figure)
     return paths
 

@@ -111,7 +111,7 @@ def format_markdown(summary) -> str:
     return "\n".join(lines) + "\n"
 
 
-def draw_chart(points, path_stem: Path) -> list[Path]:
+def draw_chart(points, path_stem: Path, place=None) -> list[Path]:
     """Error against distance from the singularity, one panel per group, a line per method."""
     import matplotlib
 
@@ -158,11 +158,16 @@ def draw_chart(points, path_stem: Path) -> list[Path]:
         axis.set_visible(False)
     figure.suptitle("yaseer stability: solid = positions and velocities, dashed = accelerations (drawn at most 1e3); "
                     "above: + unverifiable, x exception, v NaN/inf, diamond wrong branch; dotted line 1e-6", fontsize=10)
-    return save_figure(figure, path_stem, dpi=100)
+    return save_figure(figure, path_stem, dpi=100, place=place)
 
 
-def write_all(out: Path, points, summary) -> list[Path]:
-    write_csv(out / "stability_points.csv", points, POINT_FIELDS)
-    write_csv(out / "stability.csv", summary, list(summary[0]))
-    (out / "stability_table.md").write_text(format_markdown(summary))
+def write_all(out: Path, points, summary, place=None) -> list[Path]:
+    """The two CSV files and the Markdown table in ``out`` (all or none: ``place``, see :mod:`yaseer.whole_files`)."""
+    from yaseer.whole_files import staged
+
+    with staged(place) as place:
+        write_csv(out / "stability_points.csv", points, POINT_FIELDS, place)
+        write_csv(out / "stability.csv", summary, list(summary[0]), place)
+        with open(place(out / "stability_table.md"), "w") as table:
+            table.write(format_markdown(summary))
     return [out / "stability_points.csv", out / "stability.csv", out / "stability_table.md"]
