@@ -112,14 +112,14 @@ def test_the_key_follows_program_area_entries_and_sources(cache, monkeypatch, tm
 
 
 def test_the_sources_hash_is_remembered_for_their_sizes_and_times(cache, monkeypatch, tmp_path):
-    """The text of the sources is hashed once; later starts read the hash kept beside their
-    bytecode while no source's size or time changes (an edit, or a damaged hash, is hashed again)."""
+    """The text of the sources is hashed once; later starts read the hash kept in the cache
+    while no source's size or time changes (an edit, or a damaged hash, is hashed again)."""
     program = {10: "PRINT 1"}
     base = program_cache.key(0, program)
-    monkeypatch.setattr(sys, "dont_write_bytecode", False)
     sources = copied_sources(tmp_path, monkeypatch)
+    before = set(cache.glob("toolchain-*.key"))
     assert program_cache.key(0, program) == base  # the same text: the same key
-    (remembered,) = (sources / "__pycache__").glob("toolchain-*.key")
+    (remembered,) = set(cache.glob("toolchain-*.key")) - before
     remembered.write_bytes(b"short")
     monkeypatch.setattr(program_cache, "_fingerprint", None)
     assert program_cache.key(0, program) == base  # damaged: hashed again and replaced
@@ -139,15 +139,17 @@ def test_the_sources_hash_is_remembered_for_their_sizes_and_times(cache, monkeyp
         program_cache.key(0, program)
     monkeypatch.setattr(program_cache, "_text_fingerprint", text_fingerprint)
     assert program_cache.key(0, program) != base
-    assert len(list((sources / "__pycache__").glob("toolchain-*.key"))) == 2
+    assert len(set(cache.glob("toolchain-*.key")) - before) == 2
 
 
-def test_the_sources_hash_is_not_written_where_python_writes_no_bytecode(cache, monkeypatch, tmp_path):
+@pytest.mark.parametrize("bytecode", [True, False])
+def test_nothing_is_written_inside_the_package(cache, monkeypatch, tmp_path, bytecode):
     base = program_cache.key(0, {10: "PRINT 1"})
-    monkeypatch.setattr(sys, "dont_write_bytecode", True)
+    monkeypatch.setattr(sys, "dont_write_bytecode", not bytecode)
     sources = copied_sources(tmp_path, monkeypatch)
+    listed = sorted(p.name for p in sources.iterdir())
     assert program_cache.key(0, {10: "PRINT 1"}) == base
-    assert not (sources / "__pycache__").exists()
+    assert sorted(p.name for p in sources.iterdir()) == listed
 
 
 @pytest.mark.parametrize("damage", [b"", b"not marshal data", b"\x00" * 40])
@@ -200,4 +202,108 @@ def test_concurrent_first_runs_all_print_right_and_leave_one_entry(cache, tmp_pa
     outputs = [process.communicate(timeout=120)[0] for process in processes]
     assert outputs == [EXPECTED] * 6
     assert len(entries(cache)) == 1
-    assert [path.name for path in cache.iterdir() if not path.name.endswith(".bin")] == []  # no temporary left
+    assert [path.name for path in cache.iterdir()
+            if not path.name.endswith(".bin") and not path.name.startswith("toolchain-")] == []  # no temporary left
+
+
+# ---------------------------------------------------------------- damaged, crowded and shared caches
+
+FLIP_LISTINGS = {  # listing -> its output, worked out by hand
+    "10 FOR I = 1 TO 3: PRINT I * 2: NEXT I\n": " 2 \n 4 \n 6 \n",
+    "10 A$ = \"AB\": FOR K = 1 TO 2: A$ = A$ + \"C\": NEXT\n20 PRINT A$; LEN(A$)\n": "ABCC 4 \n",
+    "10 DIM X(3): FOR I = 0 TO 3: X(I) = I * I: NEXT\n20 S = 0: FOR I = 0 TO 3: S = S + X(I): NEXT: PRINT S\n"
+    "30 GOSUB 50: PRINT \"B\"\n40 END\n50 PRINT \"A\";: RETURN\n": " 14 \nAB\n",
+}
+
+FLIPPER = """
+import os, random, sys
+os.environ["YASEER_CACHE_DIR"] = sys.argv[1]
+os.makedirs(sys.argv[1], mode=0o700)
+import yaseer
+from yaseer.basic import program_cache
+listings = {listings!r}
+pristine = {{}}
+for text, expected in listings.items():
+    before = set(os.listdir(sys.argv[1]))
+    assert yaseer.run(text).text == expected
+    (name,) = [n for n in set(os.listdir(sys.argv[1])) - before if n.endswith(".bin")]
+    path = os.path.join(sys.argv[1], name)
+    with open(path, "rb") as f:
+        pristine[text] = (path, f.read())
+chance = random.Random(21)
+for n in range({flips}):
+    text = list(listings)[n % len(listings)]
+    path, data = pristine[text]
+    damaged = bytearray(data)
+    if n % 25 == 24:
+        damaged = damaged[:chance.randrange(len(damaged))]  # cut short
+    else:
+        for _ in range(chance.choice((1, 2))):
+            damaged[chance.randrange(len(damaged))] ^= chance.randrange(1, 256)
+    with open(path, "wb") as f:
+        f.write(bytes(damaged))
+    result = yaseer.run(text)
+    if (result.text, result.error) != (listings[text], None):
+        print("WRONG", n, repr(result.text), result.error)
+        sys.exit(1)
+    name = os.path.basename(path)[:-4]
+    assert program_cache.load(name) is not None, "the damaged entry was not replaced by a good one"
+print("ran", {flips})
+"""
+
+
+def test_flipped_bytes_in_entries_never_crash_hang_or_mislead(tmp_path):
+    """Hundreds of entries damaged by 1-2 flipped bytes (or cut short), each then run: a fresh
+    process (a crash or a hang would show as its status or its timeout) that always prints the
+    listing's right output and leaves a good entry behind."""
+    cache = tmp_path / "cache"
+    flips = 300
+    done = subprocess.run([sys.executable, "-c", FLIPPER.format(listings=FLIP_LISTINGS, flips=flips), str(cache)],
+                          capture_output=True, text=True, timeout=600, cwd=ROOT)
+    assert (done.returncode, done.stdout, done.stderr) == (0, f"ran {flips}\n", "")
+
+
+def test_the_cache_is_pruned_to_its_limit_oldest_first(cache, monkeypatch):
+    listings = [f"10 PRINT {n}\n" for n in range(12)]
+    assert run(listings[0]) == " 0 \n"
+    (first,) = entries(cache)
+    size = first.stat().st_size
+    monkeypatch.setattr(program_cache, "LIMIT", 4 * size + 500)
+    written = []
+    for number, text in enumerate(listings):
+        before = set(entries(cache))
+        assert run(text) == f" {number} \n"
+        (new,) = set(entries(cache)) - before if number else (first,)
+        os.utime(new, ns=(number * 10**9, number * 10**9))  # distinct ages, whatever the clock's grain
+        written.append(new)
+    total = sum(path.stat().st_size for path in cache.iterdir())
+    assert total <= program_cache.LIMIT
+    kept = [path for path in written if path.exists()]
+    assert kept == written[-len(kept):] and len(kept) >= 3  # the newest kept, the oldest gone
+
+
+def test_an_entry_too_big_for_the_cache_is_not_kept(cache, monkeypatch):
+    monkeypatch.setattr(program_cache, "LIMIT", 400)
+    assert run() == EXPECTED
+    assert entries(cache) == []
+
+
+def test_a_directory_others_can_write_is_not_used(cache):
+    assert run() == EXPECTED
+    (entry,) = entries(cache)
+    good = entry.read_bytes()
+    cache.chmod(0o777)
+    try:
+        assert program_cache.key(0, {10: "PRINT 1"}) is None
+        entry.unlink()
+        assert run() == EXPECTED
+        assert entries(cache) == []  # nothing stored, and so nothing read, in a shared directory
+    finally:
+        cache.chmod(0o700)
+    assert good and run() == EXPECTED and len(entries(cache)) == 1
+
+
+def test_the_directory_is_made_private(tmp_path, monkeypatch):
+    monkeypatch.setenv("YASEER_CACHE_DIR", str(tmp_path / "new" / "cache"))
+    assert run() == EXPECTED
+    assert (tmp_path / "new" / "cache").stat().st_mode & 0o777 == 0o700

@@ -289,7 +289,7 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
             machine.end_line()  # Break in N starts on a new row, as after an error
     except BasicError as error:
         machine.end_line()
-        result.status, result.error, result.exception = "error", str(error), error
+        result.status, result.error, result.exception = "error", str(error), _detached(error)
         result.line = error.line
     finally:
         machine.flush()
@@ -310,6 +310,13 @@ def _area_text(number: int, text: str) -> str:
         return area_text(number, text)
     except ArgumentError as error:
         raise ArgumentError(f"prog {number}: {error}") from None
+
+
+def _detached(error: BaseException) -> BaseException:
+    """``error`` without its traceback and the exception it replaced: their frames hold the
+    machine, which a result kept for its error line must not keep alive."""
+    error.__traceback__ = error.__context__ = error.__cause__ = None
+    return error
 
 
 def _failed(result: Result, error, raise_errors: bool) -> Result:

@@ -6,27 +6,35 @@ Key: a BLAKE2 hash of the area's lines and every other input of the compile
 runs it (bytecode is version-specific), and of the text of every source file
 that turns text into compiled code (every ``.py`` and ``.lark`` of ``yaseer/basic`` and its wings),
 so editing the grammar or the compiler invalidates every entry.  Reading and
-hashing that text cost every start about 0.8 ms, so its hash is
-remembered beside the sources' bytecode, where Python keeps what it derives from
-them: ``yaseer/basic/__pycache__/toolchain-<S>.key`` holds it for the sources
-whose names, sizes and modification times (in nanoseconds) hash to ``S`` (Python's
-own bytecode cache trusts size and modification time the same way).  A start then
-only asks the sources' sizes and times (about 0.05 ms) and reads that one file.  Sources
-copied elsewhere or reinstalled are hashed again once (and give the same key when
-their text is the same); a file rewritten with new text of the same size in the
-same nanosecond would go unnoticed.  The hash is not written where Python writes no
-bytecode (``-B``, ``PYTHONDONTWRITEBYTECODE``) or cannot (a read-only install): the
-sources are then hashed at every start, as before.  Value: the
-:class:`~yaseer.basic.compile.compiled.CompiledArea` fields and the code object of each
-generated function, stored with :mod:`marshal`.
+hashing that text cost every start about 0.8 ms, so its hash is remembered in
+the cache directory itself: ``toolchain-<S>.key`` holds it for the sources whose
+names, sizes and modification times (in nanoseconds) hash to ``S`` (Python's own
+bytecode cache trusts size and modification time the same way).  A start then
+only asks the sources' sizes and times (about 0.05 ms) and reads that one file.
+Sources copied elsewhere or reinstalled are hashed again once (and give the same
+key when their text is the same); a file rewritten with new text of the same size
+in the same nanosecond would go unnoticed.  Nothing is written inside the
+installed package.
+
+Value: the :class:`~yaseer.basic.compile.compiled.CompiledArea` fields and the code object
+of each generated function, stored with :mod:`marshal` behind a header of
+:data:`MAGIC` and a BLAKE2 hash of the marshalled bytes keyed with the entry's own
+key.  :mod:`marshal` trusts its input (damaged code objects can crash or mislead
+the interpreter), so the hash is checked before ``marshal.loads`` sees a byte: a
+damaged, truncated or renamed entry is never loaded, the area is compiled again and
+the entry rewritten.
 
 Where: ``$YASEER_CACHE_DIR`` if set (empty: no cache), else
 ``$XDG_CACHE_HOME/yaseer/compiled`` (an absolute XDG_CACHE_HOME; default
 ``~/.cache/yaseer/compiled``; no cache without a home directory); never inside
-the checkout.  Safe under concurrent runs: an entry is written to
-a temporary file in the same directory and renamed into place (atomic), and an
-entry that cannot be read or does not carry its own key is ignored.  Any
-OSError (read-only home, full disk) just means no cache.
+the checkout.  The directory is made private (mode 0700) and used only while it
+is owned by the user and writable by no one else: compiled code is never read
+from a place another user could write.  It is kept under :data:`LIMIT` bytes:
+after an entry is written, the oldest entries are removed until the rest fit
+(an area whose entry alone would take over a quarter of it is not kept).
+Safe under concurrent runs: an entry is written to a temporary file in the same
+directory and renamed into place (atomic).  Any OSError (read-only home, full
+disk) just means no cache.
 """
 
 from __future__ import annotations
@@ -80,6 +88,27 @@ def cache_dir() -> str | None:
     return os.path.join(base, "yaseer", "compiled")
 
 
+LIMIT = 64 * 1024 * 1024  # bytes: the most the cache directory holds
+MAGIC = b"yaseer-compiled\n"
+_DIGEST = 32  # bytes of the entry's hash
+
+
+def private_dir() -> str | None:
+    """The cache directory, created private (0700) if missing; None when the cache is off or the
+    directory belongs to someone else or is writable by others (its contents cannot be trusted)."""
+    directory = cache_dir()
+    if directory is None:
+        return None
+    try:
+        os.makedirs(directory, mode=0o700, exist_ok=True)
+        status = os.stat(directory)
+    except OSError:
+        return None
+    if status.st_uid != os.getuid() or status.st_mode & 0o022:
+        return None
+    return directory
+
+
 _fingerprint: bytes | None = None
 
 
@@ -92,15 +121,17 @@ def toolchain_fingerprint() -> bytes:
         signature = _toolchain_digest()
         for name, status in sources:
             signature.update(f"{name}\0{status.st_size}\0{status.st_mtime_ns}\0".encode("utf-8", "surrogateescape"))
-        remembered = os.path.join(_SOURCES, "__pycache__", f"toolchain-{signature.hexdigest()}.key")
-        try:
-            with open(remembered, "rb") as stored:
-                _fingerprint = stored.read()
-        except OSError:
-            pass
+        directory = private_dir()
+        remembered = os.path.join(directory, f"toolchain-{signature.hexdigest()}.key") if directory else None
+        if remembered is not None:
+            try:
+                with open(remembered, "rb") as stored:
+                    _fingerprint = stored.read()
+            except OSError:
+                pass
         if _fingerprint is None or len(_fingerprint) != signature.digest_size:
             _fingerprint = _text_fingerprint(name for name, _ in sources)
-            if not sys.dont_write_bytecode:
+            if remembered is not None:
                 _write_atomically(remembered, _fingerprint)
     return _fingerprint
 
@@ -121,9 +152,9 @@ def _text_fingerprint(names) -> bytes:
 
 def key(area, program: dict[int, str], entry_lines=(), dialect=None) -> str | None:
     """The cache key of compiling ``program`` (line -> text) as ``area`` in
-    ``dialect`` (its repr: every field); None when the cache is switched off or
-    its sources cannot be read."""
-    if cache_dir() is None:
+    ``dialect`` (its repr: every field); None when the cache is switched off, cannot be
+    trusted (see :func:`private_dir`) or its sources cannot be read."""
+    if private_dir() is None:
         return None
     try:
         digest = blake2b(toolchain_fingerprint())
@@ -135,27 +166,63 @@ def key(area, program: dict[int, str], entry_lines=(), dialect=None) -> str | No
     return digest.hexdigest()
 
 
+def _seal(entry: str, data: bytes) -> bytes:
+    """The hash an entry's marshalled bytes are stored under, keyed with the entry's key."""
+    return blake2b(data, digest_size=_DIGEST, key=bytes.fromhex(entry)[:64]).digest()
+
+
 def load(entry: str) -> tuple[CompiledArea, list] | None:
-    """The compiled area and its code objects stored under ``entry``, or None."""
+    """The compiled area and its code objects stored under ``entry``, or None (no entry, or one
+    whose bytes do not hash to the hash stored with them: nothing of it is unmarshalled)."""
     try:
         with open(os.path.join(cache_dir(), f"{entry}.bin"), "rb") as stored:
             data = stored.read()
-        stored_key, fields, codes = marshal.loads(data)
-    except (OSError, EOFError, ValueError, TypeError):
+    except OSError:
         return None
-    if stored_key != entry or len(codes) != len(fields[1]):
+    header = len(MAGIC) + _DIGEST
+    if not data.startswith(MAGIC) or data[len(MAGIC):header] != _seal(entry, data[header:]):
         return None
-    return CompiledArea.from_plain(fields), codes
+    try:
+        stored_key, fields, codes = marshal.loads(data[header:])
+        if stored_key != entry or len(codes) != len(fields[1]):
+            return None
+        return CompiledArea.from_plain(fields), codes
+    except (EOFError, ValueError, TypeError, IndexError, KeyError):  # another yaseer's layout
+        return None
 
 
 def store(entry: str, compiled: CompiledArea, codes: list) -> None:
     """Keep ``compiled`` and its code objects (None for a piece that could not be
-    compiled) under ``entry``; failures are ignored."""
+    compiled) under ``entry``, then prune the cache to :data:`LIMIT`; failures are ignored."""
     try:
         data = marshal.dumps((entry, compiled.as_plain(), codes))
     except ValueError:
         return
-    _write_atomically(os.path.join(cache_dir(), f"{entry}.bin"), data)
+    if len(data) > LIMIT // 4:
+        return
+    directory = cache_dir()
+    _write_atomically(os.path.join(directory, f"{entry}.bin"), MAGIC + _seal(entry, data) + data)
+    prune(directory, LIMIT)
+
+
+def prune(directory: str, limit: int) -> None:
+    """Remove the oldest files of ``directory`` (by modification time) until the rest
+    take at most ``limit`` bytes."""
+    try:
+        with os.scandir(directory) as found:
+            files = [(entry.stat().st_mtime_ns, entry.stat().st_size, entry.path) for entry in found
+                     if entry.is_file(follow_symlinks=False)]
+    except OSError:
+        return
+    total = sum(size for _, size, _ in files)
+    for _, size, path in sorted(files):
+        if total <= limit:
+            break
+        try:
+            os.unlink(path)
+        except OSError:
+            continue
+        total -= size
 
 
 def _write_atomically(path: str, data: bytes) -> None:

@@ -48,7 +48,8 @@ class DirectJump(BaseException):
         self.line = line
 
 
-END = ProgramEnd()
+END = ProgramEnd  # raised as a class: a new instance each time (one shared instance would gather every
+# run's frames in its growing __traceback__ and keep every machine alive)
 
 
 def to_basic_error(exc: BaseException) -> BasicError:
