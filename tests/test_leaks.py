@@ -14,7 +14,7 @@ import weakref
 import pytest
 
 import yaseer
-from yaseer.basic.machine import Machine
+from yaseer.basic.machine.machine import Machine
 from yaseer.session import MachineEngine, Session
 
 PROGRAMS = ("10 PRINT 1: END\n", "10 PRINT 1/0\n", "10 STOP\n",
