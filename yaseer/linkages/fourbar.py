@@ -142,6 +142,10 @@ def fourbar_closed(
     span = abs(diagonal)
     if xp.any(span == 0):
         raise AssemblyError("the crank pin falls on the follower pivot")
+    # lengths in a unit of the diagonal's size (a power of two: exact, the same bits as before):
+    # squares of lengths measured in 1E-165 units would underflow to 0
+    unit = xp.unit_of(span)
+    b, c, span = b / unit, c / unit, span / unit
     along = (b**2 - c**2 + span**2) / (2 * span)
     height_squared = b**2 - along**2
     if xp.any(height_squared < 0):

@@ -65,13 +65,20 @@ def _unit_degrees(angle_deg) -> complex:
     return exact if exact is not None else _unit(math.radians(angle_deg))
 
 
+def _unit_of(length: float) -> float:
+    """The power of two nearest above ``length``'s size (1.0 for 0, inf or nan): dividing by it is exact."""
+    if length == 0 or not math.isfinite(length):
+        return 1.0
+    return math.ldexp(1.0, math.frexp(length)[1])
+
+
 #: One position: Python numbers (``float``, ``complex``), ``math`` and ``cmath``.
 SCALAR = SimpleNamespace(
     scalar=True, pi=math.pi,
     float=float, complex=complex, sqrt=math.sqrt, cos=math.cos, sin=math.sin, arctan=math.atan,
     radians=math.radians, degrees=math.degrees, angle=_angle, unit=_unit, unit_degrees=_unit_degrees, exp=cmath.exp,
     where=_where, any=bool, all=bool, isfinite=_isfinite, real=_real, imag=_imag,
-    zeros_like=_zeros_like, ones_like=_ones_like, maximum=max,
+    zeros_like=_zeros_like, ones_like=_ones_like, maximum=max, unit_of=_unit_of,
 )
 
 _numpy_math: SimpleNamespace | None = None
@@ -91,6 +98,8 @@ def array_math() -> SimpleNamespace:
             angle=np.angle, unit=lambda angle: np.exp(1j * np.asarray(angle, dtype=float)), exp=np.exp,
             where=np.where, any=np.any, all=np.all, isfinite=np.isfinite, real=np.real, imag=np.imag,
             zeros_like=np.zeros_like, ones_like=np.ones_like, maximum=np.maximum,
+            unit_of=lambda length: np.ldexp(1.0, np.frexp(np.where(np.isfinite(length) & (length != 0),
+                                                                    length, 1.0))[1]),
         )
     return _numpy_math
 

@@ -76,10 +76,15 @@ def solve_two_directions(rhs, first, second, xp=None):
     Raises :class:`LockedError` where ``first`` and ``second`` are parallel: the
     loop has no unique rate there (a toggle or branch point).
     """
+    xp = xp or math_for(first, second)
+    # Each direction in a unit of its own size (a power of two: exact, the same bits as before):
+    # |first| * |second| of a mechanism measured in 1E-165 units would underflow to 0.
+    unit_1, unit_2 = xp.unit_of(abs(first)), xp.unit_of(abs(second))
+    first, second = first / unit_1, second / unit_2
     determinant = cross(first, second)
-    if (xp or math_for(determinant)).any(abs(determinant) <= PARALLEL_TOLERANCE * abs(first) * abs(second)):
+    if xp.any(abs(determinant) <= PARALLEL_TOLERANCE * abs(first) * abs(second)):
         raise LockedError("the velocity directions are parallel (toggle or branch point)")
-    return cross(rhs, second) / determinant, cross(first, rhs) / determinant
+    return cross(rhs, second) / determinant / unit_1, cross(first, rhs) / determinant / unit_2
 
 
 class Motion(namedtuple("Motion", "pos vel acc")):

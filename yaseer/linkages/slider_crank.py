@@ -130,10 +130,13 @@ def slider_crank_closed(
     if xp.any(b <= 0):
         raise AssemblyError("connecting rod of zero length")
     across = -(e + dot(pin_a.pos, 1j * n))  # component of A->B along u(phi + 90)
-    discriminant = b**2 - across**2
+    # in a unit of the rod's size (a power of two: exact, the same bits as before): the squares
+    # of lengths measured in 1E-165 units would underflow to 0
+    unit = xp.unit_of(b)
+    discriminant = (b / unit) ** 2 - (across / unit) ** 2
     if xp.any(discriminant < 0):
         raise AssemblyError("the rod cannot reach the cylinder axis")
-    along = xp.sqrt(discriminant)
+    along = xp.sqrt(discriminant) * unit
     s = dot(pin_a.pos, n) + along
     b_pos = -e * 1j * n + s * n
     rod_angle = xp.angle(n * (along + 1j * across))

@@ -466,7 +466,7 @@ _S = numerics.SCALAR
 TRACE = SimpleNamespace(
     scalar=True, pi=math.pi, float=_as(float), complex=_as(complex),
     **{name: _call(name, getattr(_S, name)) for name in
-       ("sqrt", "cos", "sin", "arctan", "radians", "degrees", "unit_degrees", "isfinite")},
+       ("sqrt", "cos", "sin", "arctan", "radians", "degrees", "unit_degrees", "isfinite", "unit_of")},
     exp=_call("exp", cmath.exp), maximum=_maximum, unit=_unit, angle=_angle,
     where=_where, any=lambda value: value, all=lambda value: value, real=lambda value: value.real,
     imag=lambda value: value.imag, zeros_like=_zero_like, ones_like=lambda value: 1.0,

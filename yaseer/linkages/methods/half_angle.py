@@ -37,6 +37,7 @@ from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.fourbar import UNCROSSED, FourBar
 from yaseer.linkages.registry import register
 
+from yaseer.linkages.numerics import array_math
 from yaseer.linkages.planar import driven_crank
 
 from .assemble import fourbar_result, ground_pivot, side_of
@@ -93,14 +94,18 @@ fourbar_half_angle = _half_angle_method(
 
 
 class _Frame:
-    """The linkage turned so that the fixed link lies along +x (angles in radians)."""
+    """The linkage turned so that the fixed link lies along +x (angles in radians), its lengths
+    in a unit of the mechanism's size: a power of two near its largest length, so that the
+    quadratic's coefficients (products of two lengths) neither underflow nor overflow for a
+    mechanism measured in 1E-165 or 1E+165 units; a power of two divides exactly, so every
+    other mechanism gives the same bits as in its own unit."""
 
     def __init__(self, ground_length, ground_angle_deg, crank_length, coupler_length, follower_length, crank_angle_deg):
-        self.d = np.asarray(ground_length, float)
+        lengths = [np.asarray(length, float) for length in (ground_length, crank_length, coupler_length,
+                                                              follower_length)]
+        unit = array_math().unit_of(np.maximum.reduce([np.abs(length) for length in lengths]))
+        self.d, self.a, self.b, self.c = (length / unit for length in lengths)
         self.turn = np.radians(np.asarray(ground_angle_deg, float))
-        self.a = np.asarray(crank_length, float)
-        self.b = np.asarray(coupler_length, float)
-        self.c = np.asarray(follower_length, float)
         self.theta = np.radians(np.asarray(crank_angle_deg, float)) - self.turn
 
     def pick(self, phi_one, phi_other, branch):

@@ -25,6 +25,7 @@ from yaseer.linkages.fourbar import UNCROSSED, FourBar
 from yaseer.linkages.registry import register
 from yaseer.linkages.slider_crank import SliderCrank
 
+from yaseer.linkages.numerics import array_math
 from yaseer.linkages.planar import driven_crank
 
 from .assemble import NoConvergenceError, first_index, fourbar_result, ground_pivot, side_of, slider_crank_result
@@ -63,7 +64,7 @@ def slider_crank_newton(eccentricity, crank_length, rod_length, crank_angle_deg,
     def columns(beta, s):
         return 1j * b * np.exp(1j * beta), -axis + 0.0 * s
 
-    beta, s = _iterate(residual, columns, beta, s, b, tol, max_iter, "Newton (slider-crank)")
+    beta, s = _iterate(residual, columns, beta, s, b, tol, max_iter, "Newton (slider-crank)", length=array_math().unit_of(b))
     return slider_crank_result(crank, e, b, phi, beta, s)
 
 
@@ -103,23 +104,27 @@ def fourbar_newton(ground_length, ground_angle_deg, crank_length, coupler_length
     def columns(beta, gamma):
         return 1j * b * np.exp(1j * beta), -1j * c * np.exp(1j * gamma)
 
-    beta, gamma = _iterate(residual, columns, beta, gamma, 1.0, tol, max_iter, "Newton (four-bar)")
+    beta, gamma = _iterate(residual, columns, beta, gamma, 1.0, tol, max_iter, "Newton (four-bar)", length=array_math().unit_of(b))
     return fourbar_result(crank, pivot, beta, gamma, b)
 
 
-def _iterate(residual, columns, x, y, y_scale, tol, max_iter, name):
+def _iterate(residual, columns, x, y, y_scale, tol, max_iter, name, length=1.0):
     """Newton on two real unknowns of one complex residual, element-wise.
 
     ``columns(x, y)`` gives the residual's derivatives in x and y (complex).  Each
-    element stops when its step max(|dx|, |dy|/y_scale) <= tol.
+    element stops when its step max(|dx|, |dy|/y_scale) <= tol.  The residual and its
+    derivatives are taken in units of ``length`` (a power of two near the mechanism's
+    size: exact, the same bits as in its own unit): the determinant, a product of two
+    lengths, would underflow to 0 for a mechanism measured in 1E-165 units, or overflow
+    for one in 1E+165 units.
     """
     x = np.array(x, float, copy=True)
     y = np.array(y, float, copy=True)
     active = np.ones(np.shape(x), bool)
     with np.errstate(all="ignore"):
         for _ in range(max_iter):
-            r = residual(x, y)
-            jx, jy = columns(x, y)
+            r = residual(x, y) / length
+            jx, jy = (column / length for column in columns(x, y))
             det = jx.real * jy.imag - jx.imag * jy.real
             dx = (r.real * jy.imag - r.imag * jy.real) / det
             dy = (jx.real * r.imag - jx.imag * r.real) / det

@@ -26,6 +26,7 @@ from yaseer.linkages.errors import AssemblyError
 from yaseer.linkages.registry import register
 from yaseer.linkages.slider_crank import SliderCrank
 
+from yaseer.linkages.numerics import array_math
 from yaseer.linkages.planar import driven_crank
 
 from .assemble import slider_crank_result
@@ -48,10 +49,13 @@ def slider_crank_pseudographic(eccentricity, crank_length, rod_length, crank_ang
     pin = crank.pin.pos * to_axis
     x_a, y_a, y_b = pin.real, pin.imag, -np.asarray(eccentricity, float)
     with np.errstate(all="ignore"):
-        span = b**2 - (y_b - y_a) ** 2
+        # TK's sqrt(b^2 - (yB - yA)^2) in a unit of the rod's size (a power of two: exact, the
+        # same bits): the squares of lengths measured in 1E-165 units would underflow to 0
+        unit = array_math().unit_of(b)
+        span = (b / unit) ** 2 - ((y_b - y_a) / unit) ** 2
         if np.any(span < 0):
             raise AssemblyError("pseudographic: the rod cannot reach the slider line")
-        x_b = x_a + (1.0 if branch == "open" else -1.0) * np.sqrt(span)
+        x_b = x_a + (1.0 if branch == "open" else -1.0) * np.sqrt(span) * unit
         theta_ab = np.degrees(np.arctan2(y_a - y_b, x_a - x_b))  # direction B->A, TK's atan2d
         m2 = -1.0 / np.tan(np.radians(theta_ab))
         horizontal = (theta_ab == 180.0) | (theta_ab == 360.0)
