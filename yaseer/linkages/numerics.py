@@ -66,9 +66,7 @@ def _unit_degrees(angle_deg) -> complex:
 
 
 def _unit_of(length: float) -> float:
-    """The power of two nearest above ``length``'s size (1.0 for 0, inf or nan): dividing by it is exact."""
-    if length == 0 or not math.isfinite(length):
-        return 1.0
+    """The power of two just above ``length``'s size (1.0 for 0, inf or nan): dividing by it is exact."""
     return math.ldexp(1.0, math.frexp(length)[1])
 
 
@@ -98,8 +96,7 @@ def array_math() -> SimpleNamespace:
             angle=np.angle, unit=lambda angle: np.exp(1j * np.asarray(angle, dtype=float)), exp=np.exp,
             where=np.where, any=np.any, all=np.all, isfinite=np.isfinite, real=np.real, imag=np.imag,
             zeros_like=np.zeros_like, ones_like=np.ones_like, maximum=np.maximum,
-            unit_of=lambda length: np.ldexp(1.0, np.frexp(np.where(np.isfinite(length) & (length != 0),
-                                                                    length, 1.0))[1]),
+            unit_of=lambda length: np.ldexp(1.0, np.frexp(length)[1]),
         )
     return _numpy_math
 

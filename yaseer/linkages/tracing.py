@@ -460,14 +460,23 @@ def _angle(vector):
     return vector.recorder.emit(_S.angle(vector.value), f"{callee}({vector.name}.imag, {vector.name}.real)")
 
 
+def _unit_of(length):
+    """numerics.SCALAR.unit_of recorded as its two C calls (ldexp(1.0, frexp(length)[1])), without a Python call."""
+    if not isinstance(length, Traced):
+        return _S.unit_of(length)
+    recorder = length.recorder
+    ldexp, frexp = recorder.function("_ldexp", math.ldexp), recorder.function("_frexp", math.frexp)
+    return recorder.emit(_S.unit_of(length.value), f"{ldexp}(1.0, {frexp}({length.name})[1])")
+
+
 _S = numerics.SCALAR
 
 #: The :mod:`numerics` namespace of a recording.
 TRACE = SimpleNamespace(
     scalar=True, pi=math.pi, float=_as(float), complex=_as(complex),
     **{name: _call(name, getattr(_S, name)) for name in
-       ("sqrt", "cos", "sin", "arctan", "radians", "degrees", "unit_degrees", "isfinite", "unit_of")},
-    exp=_call("exp", cmath.exp), maximum=_maximum, unit=_unit, angle=_angle,
+       ("sqrt", "cos", "sin", "arctan", "radians", "degrees", "unit_degrees", "isfinite")},
+    exp=_call("exp", cmath.exp), maximum=_maximum, unit=_unit, angle=_angle, unit_of=_unit_of,
     where=_where, any=lambda value: value, all=lambda value: value, real=lambda value: value.real,
     imag=lambda value: value.imag, zeros_like=_zero_like, ones_like=lambda value: 1.0,
 )
