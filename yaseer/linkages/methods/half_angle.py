@@ -103,7 +103,10 @@ class _Frame:
     def __init__(self, ground_length, ground_angle_deg, crank_length, coupler_length, follower_length, crank_angle_deg):
         lengths = [np.asarray(length, float) for length in (ground_length, crank_length, coupler_length,
                                                               follower_length)]
-        unit = array_math().unit_of(np.maximum.reduce([np.abs(length) for length in lengths]))
+        largest = np.abs(lengths[0])
+        for length in lengths[1:]:  # each may be one number or an array over the positions
+            largest = np.maximum(largest, np.abs(length))
+        unit = array_math().unit_of(largest)
         self.d, self.a, self.b, self.c = (length / unit for length in lengths)
         self.turn = np.radians(np.asarray(ground_angle_deg, float))
         self.theta = np.radians(np.asarray(crank_angle_deg, float)) - self.turn
