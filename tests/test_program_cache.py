@@ -220,7 +220,7 @@ import os, random, sys
 os.environ["YASEER_CACHE_DIR"] = sys.argv[1]
 os.makedirs(sys.argv[1], mode=0o700)
 import yaseer
-from yaseer.basic import program_cache
+from yaseer.basic.compile import program_cache
 listings = {listings!r}
 pristine = {{}}
 for text, expected in listings.items():
@@ -268,7 +268,7 @@ def test_the_cache_is_pruned_to_its_limit_oldest_first(cache, monkeypatch):
     assert run(listings[0]) == " 0 \n"
     (first,) = entries(cache)
     size = first.stat().st_size
-    monkeypatch.setattr(program_cache, "LIMIT", 4 * size + 500)
+    monkeypatch.setattr(program_cache, "LIMIT", 4 * size + 500)  # every store prunes: its chance is over 1
     written = []
     for number, text in enumerate(listings):
         before = set(entries(cache))

@@ -227,6 +227,13 @@ def scan_for_next(statements: list, start: int, branch_for=None):
     return None
 
 
+MAX_NATIVE_DEPTH = 8
+"""Native loops nested deeper than this are run by the FOR stack instead: each native loop is
+a Python ``while`` (or ``for``) block, and Python refuses a function with more than 20
+statically nested blocks.  So loops nest as deep as the FOR stack allows (10,000), the
+innermost eight at native speed."""
+
+
 def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
     """Decide the blocks of an area (see :class:`Plan`); the FORs at ``dynamic_loops``
     (statement indices) are never native."""
@@ -247,11 +254,13 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
                 targets.add(first_index[line])
     for_next, next_for = _match_loops(flat)
     native: dict[int, int] = {}
+    depth: dict[int, int] = {}  # native FOR index -> how many native loops deep its body is, itself included
     if not fine:
         # innermost loops first, so a loop knows whether the loops inside it are native
         for f in sorted(for_next, key=lambda k: for_next[k] - k):
             j = for_next[f]
             body_ok = True
+            depth[f] = 1
             k = f + 1
             while k < j:
                 stmt = statements[k]
@@ -259,6 +268,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
                     if k not in native:
                         body_ok = False
                         break
+                    depth[f] = max(depth[f], depth[k] + 1)
                     k = native[k] + 1
                     continue
                 if isinstance(stmt, BasicError) or not _native_statement(stmt, bare_returns):
@@ -267,7 +277,8 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
                 k += 1
             bound = scan_for_next(statements, f + 1)
             same_pair = bound is not None and bound[0] == j  # GW-BASIC's FOR binds the same NEXT
-            if body_ok and same_pair and f not in dynamic_loops and not any(f < t <= j for t in targets):
+            if body_ok and same_pair and depth[f] <= MAX_NATIVE_DEPTH and f not in dynamic_loops \
+                    and not any(f < t <= j for t in targets):
                 native[f] = j
     entries = {0, n} | targets
     bounds = []  # (statement index, NEXT) of each FOR's scan

@@ -29,9 +29,10 @@ Where: ``$YASEER_CACHE_DIR`` if set (empty: no cache), else
 ``~/.cache/yaseer/compiled``; no cache without a home directory); never inside
 the checkout.  The directory is made private (mode 0700) and used only while it
 is owned by the user and writable by no one else: compiled code is never read
-from a place another user could write.  It is kept under :data:`LIMIT` bytes:
-after an entry is written, the oldest entries are removed until the rest fit
-(an area whose entry alone would take over a quarter of it is not kept).
+from a place another user could write.  It is kept near :data:`LIMIT` bytes:
+now and then after an entry is written (on average once for every sixteenth of
+the limit written) the oldest entries are removed until the rest fit; an area
+whose entry alone would take over a quarter of it is not kept.
 Safe under concurrent runs: an entry is written to a temporary file in the same
 directory and renamed into place (atomic).  Any OSError (read-only home, full
 disk) just means no cache.
@@ -202,7 +203,11 @@ def store(entry: str, compiled: CompiledArea, codes: list) -> None:
         return
     directory = cache_dir()
     _write_atomically(os.path.join(directory, f"{entry}.bin"), MAGIC + _seal(entry, data) + data)
-    prune(directory, LIMIT)
+    # Pruning reads the size of every entry (thousands of files: tens of ms), so a store prunes
+    # with the chance len(data) / (LIMIT / 16), drawn from the entry's own hash: on average once
+    # for every sixteenth of the limit written, by all processes together.
+    if int(entry[:8], 16) < len(data) / (LIMIT // 16) * 0x100000000:
+        prune(directory, LIMIT)
 
 
 def prune(directory: str, limit: int) -> None:
