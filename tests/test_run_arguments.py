@@ -104,9 +104,9 @@ IPython = pytest.importorskip("IPython", reason="the magic needs yaseer[jupyter]
 
 @pytest.fixture(scope="module")
 def shell():
-    from IPython.testing.globalipapp import start_ipython
+    from IPython.testing.globalipapp import get_ipython, start_ipython
 
-    ip = start_ipython()
+    ip = start_ipython() or get_ipython()  # one shell per process: another module may have started it
     ip.run_line_magic("load_ext", "yaseer")
     return ip
 

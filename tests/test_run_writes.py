@@ -22,14 +22,14 @@ def every_file(directory: Path) -> dict[str, int]:
 
 
 def test_a_run_writes_only_its_output_and_the_documented_cache(tmp_path):
-    home, work, files = tmp_path / "home", tmp_path / "work", tmp_path / "files"
-    for directory in (home, work, files):
+    home, work, files, temporary = tmp_path / "home", tmp_path / "work", tmp_path / "files", tmp_path / "tmp"
+    for directory in (home, work, files, temporary):
         directory.mkdir()
     listing = work / "w.bas"
     listing.write_text('10 OPEN "O", #1, "OUT.TXT": PRINT #1, 5: CLOSE\n20 PRINT 6: LPRINT 7\n')
     env = {k: v for k, v in os.environ.items() if k not in ("YASEER_CACHE_DIR", "XDG_CACHE_HOME")}
     env.pop("PYTHONDONTWRITEBYTECODE", None)
-    env["HOME"] = str(home)
+    env.update(HOME=str(home), TMPDIR=str(temporary))
     package_before = every_file(PACKAGE)
     for _ in range(2):  # cold, then warm
         done = subprocess.run([sys.executable, "-m", "yaseer", "run", str(listing), "--printer", "paper.txt",
@@ -38,6 +38,7 @@ def test_a_run_writes_only_its_output_and_the_documented_cache(tmp_path):
     assert every_file(PACKAGE) == package_before
     assert sorted(every_file(work)) == ["paper.txt", "w.bas"]
     assert sorted(every_file(files)) == ["OUT.TXT"]
+    assert list(temporary.iterdir()) == []  # no parser tables, no probe file
     cache = home / ".cache" / "yaseer" / "compiled"
     written = sorted(every_file(home))
     assert written and all(name.startswith(".cache/yaseer/compiled/") for name in written)

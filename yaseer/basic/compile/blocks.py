@@ -204,27 +204,48 @@ def scan_for_next(statements: list, start: int, branch_for=None):
     Returns ``(index of the statement holding it, the NEXT)``, or None when the
     program has none (``FOR without NEXT``).  PC-BASIC 2.0.8 binds the loop to that
     NEXT when the FOR runs; a NEXT naming another variable is ``NEXT without FOR``.
+    (One scan; a compiler asking for many holds a :class:`NextScan`.)
     """
-    depth = 0
-    first = start
-    if branch_for is not None:
-        first = start - 1
-    for k in range(first, len(statements)):
-        stmt = statements[k]
-        if isinstance(stmt, BasicError):
-            continue
-        inners = walk_statements(stmt)
-        if k < start:  # the rest of the IF statement after the FOR in its branch
-            inners = list(inners)
-            inners = inners[next(n for n, s in enumerate(inners) if s is branch_for) + 1:]
-        for inner in inners:
-            if isinstance(inner, ast.For):
-                depth += 1
-            elif isinstance(inner, ast.Next):
-                if depth == 0:
-                    return k, inner
-                depth -= 1
-    return None
+    return NextScan(statements).find(start, branch_for)
+
+
+class NextScan:
+    """:func:`scan_for_next` answered for every start at once, in one pass over the program
+    (scanning anew for each FOR made compiling n nested loops cost n**2).
+
+    With ``level[p]`` the FORs minus the NEXTs before inner statement ``p`` (the
+    statements and their IF branches in text order), the scan from ``p`` stops at the
+    first NEXT ``q >= p`` with ``level[q] == level[p]``: the one it meets at depth 0.
+    """
+
+    def __init__(self, statements: list):
+        self.inners: list[tuple[int, object]] = []  # (statement index, inner statement), text order
+        self.first: list[int] = []  # statement index -> position of its first inner statement (or the next's)
+        for k, stmt in enumerate(statements):
+            self.first.append(len(self.inners))
+            if not isinstance(stmt, BasicError):
+                self.inners.extend((k, inner) for inner in walk_statements(stmt))
+        self.first.append(len(self.inners))
+        self.position = {id(inner): p for p, (_, inner) in enumerate(self.inners)}
+        levels, level = [], 0
+        for _, inner in self.inners:
+            levels.append(level)
+            level += 1 if isinstance(inner, ast.For) else -1 if isinstance(inner, ast.Next) else 0
+        self.answer: list[int | None] = [None] * (len(self.inners) + 1)
+        nearest: dict[int, int] = {}  # level -> the nearest NEXT at or after the position, at that level
+        for p in range(len(self.inners) - 1, -1, -1):
+            if isinstance(self.inners[p][1], ast.Next):
+                nearest[levels[p]] = p
+            self.answer[p] = nearest.get(levels[p])
+
+    def find(self, start: int, branch_for=None):
+        """``scan_for_next(statements, start, branch_for)`` for these statements."""
+        if branch_for is not None:
+            p = self.position[id(branch_for)] + 1
+        else:
+            p = self.first[min(start, len(self.first) - 1)]
+        q = self.answer[p]
+        return None if q is None else self.inners[q]
 
 
 MAX_NATIVE_DEPTH = 8
@@ -253,6 +274,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
             if line in first_index:
                 targets.add(first_index[line])
     for_next, next_for = _match_loops(flat)
+    scan = NextScan(statements)
     native: dict[int, int] = {}
     depth: dict[int, int] = {}  # native FOR index -> how many native loops deep its body is, itself included
     if not fine:
@@ -275,7 +297,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
                     body_ok = False
                     break
                 k += 1
-            bound = scan_for_next(statements, f + 1)
+            bound = scan.find(f + 1)
             same_pair = bound is not None and bound[0] == j  # GW-BASIC's FOR binds the same NEXT
             if body_ok and same_pair and depth[f] <= MAX_NATIVE_DEPTH and f not in dynamic_loops \
                     and not any(f < t <= j for t in targets):
@@ -293,7 +315,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
             entries.add(i + 1)
             if i in for_next:
                 entries.add(for_next[i] + 1)
-            bound = scan_for_next(statements, i + 1)
+            bound = scan.find(i + 1)
             if bound is not None:
                 entries.add(bound[0] + 1)  # where GW-BASIC goes when the loop runs zero times
                 bounds.append(bound)
@@ -301,7 +323,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
             entries.add(i + 1)
         if isinstance(stmt, ast.If):
             for loop in walk_statements(stmt):
-                bound = scan_for_next(statements, i + 1, loop) if isinstance(loop, ast.For) else None
+                bound = scan.find(i + 1, loop) if isinstance(loop, ast.For) else None
                 if bound is not None:
                     entries.add(bound[0] + 1)  # likewise for a FOR in an IF branch
                     bounds.append(bound)
@@ -309,6 +331,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
     dynamic_for_next = {f: j for f, j in for_next.items() if f not in native}
     branch_for_next = _branch_loops(statements, entries, for_next)  # adds the entries it needs
     result = Plan(sorted(entries), native, dynamic_for_next, next_for, fine, branch_for_next, bare_returns)
+    result.next_scan = scan  # the compiler asks it again for each FOR
     result.branch_nexts = {id(found) for k, found in bounds if found is not statements[k] and any(
         s is found for s in walk_statements(statements[k], unreachable=False))}
     _plan_while_loops(statements, result)

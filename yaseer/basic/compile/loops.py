@@ -10,7 +10,7 @@ and its NEXT steps through it (``stmt_For``, ``stmt_Next``).
 from __future__ import annotations
 
 from yaseer.basic.source import syntax_tree as ast
-from yaseer.basic.compile.blocks import nodes, scan_for_next, walk_statements
+from yaseer.basic.compile.blocks import nodes, walk_statements
 from yaseer.basic.compile.expressions import BlockScope, CompileError, constant_value, syntax_error, type_mismatch
 from yaseer.basic.compile.number_models import local_name
 from yaseer.basic.errors import FOR_WITHOUT_NEXT
@@ -145,7 +145,7 @@ class LoopCompiler:
 
     def scanned_next(self, stmt):
         """``(statement index, NEXT)`` that the FOR ``stmt``'s scan finds, or None."""
-        return scan_for_next([s for _, s in self.flat], self.index + 1, stmt if self.depth else None)
+        return self.plan.next_scan.find(self.index + 1, stmt if self.depth else None)
 
     def zero_trip_target(self, stmt) -> bool:
         """Does ``stmt`` hold, in an IF branch, a NEXT that a zero-trip FOR goes on after?"""
