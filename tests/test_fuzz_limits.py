@@ -37,7 +37,18 @@ def test_same_variable_for_loop_reentered_by_goto_reuses_its_frame():
 
 
 def test_the_largest_allowed_array_works():
-    assert run_mutant('10 DIM A$(1999999): A$(1999999) = "x": PRINT A$(1999999)\n', with_prog5=False) == "ok"
+    assert run_mutant('10 DIM A(1999999): A(1999999) = 1: PRINT A(1999999)\n', with_prog5=False) == "ok"
+    assert run_mutant('10 DIM A$(240000): A$(240000) = "x": PRINT A$(240000)\n', with_prog5=False) == "ok"
+
+
+def test_arrays_of_full_strings_stay_inside_the_budget():
+    """A string element takes its share of what it can hold (8 + 255 bytes): four arrays of two
+    million strings once took 2.5 GB while FRE said 0; now the first is Out of memory."""
+    assert run_mutant("10 DIM A$(1999999), B$(1999999), C$(1999999), D$(1999999)\n", with_prog5=False) \
+        == "Out of memory in 10"
+    source = ('10 DIM Z(1): F = FRE(0): DIM S$(999): G = FRE(0): DIM N(999): H = FRE(0)\n'
+              '20 IF F - G <> 1000 * 264 OR G - H <> 1000 * 8 THEN PRINT 1 / 0\n')
+    assert run_mutant(source, with_prog5=False) == "ok"
 
 
 @pytest.mark.parametrize("limit", ["1E9", "1E12", "1E300"])

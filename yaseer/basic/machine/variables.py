@@ -12,7 +12,14 @@ from yaseer.basic.compile.number_models import initial_value
 
 # Array limits (each exceeded limit is "Out of memory in N").
 MAX_ARRAY_ELEMENTS = 2_000_000  # per array
-MAX_TOTAL_ELEMENTS = 8_000_000  # all arrays together (about 64 MB)
+MAX_TOTAL_ELEMENTS = 8_000_000  # 8-byte units for all arrays together (64 MB)
+STRING_ELEMENT_UNITS = 33  # a string element's share: the most it can hold (8 + 255 bytes) in 8-byte units,
+# so that arrays of full strings stay inside the budget too (four DIM A$(1999999) once took 2.5 GB)
+
+
+def _units(name: str, dims: tuple) -> int:
+    """The budget units of array ``name`` with ``dims``: one an element, STRING_ELEMENT_UNITS a string's."""
+    return math.prod(d + 1 for d in dims) * (STRING_ELEMENT_UNITS if name.endswith("$") else 1)
 
 
 def _new_array(dims: tuple, fill):
@@ -54,7 +61,7 @@ class Variables:
         """Check the array limits for ``name`` with ``dims`` (replacing its old size)."""
         count = math.prod(d + 1 for d in dims)
         old = self.array_dims.get(name)
-        total = self.array_elements + count - (math.prod(d + 1 for d in old) if old else 0)
+        total = self.array_elements + _units(name, dims) - (_units(name, old) if old else 0)
         if count > MAX_ARRAY_ELEMENTS or total > MAX_TOTAL_ELEMENTS:
             raise BasicError("Out of memory", OUT_OF_MEMORY)
         self.array_elements = total
@@ -78,7 +85,7 @@ class Variables:
         dims = self.array_dims.get(name)
         if name not in self.arrays or dims is None:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-        self.array_elements -= math.prod(d + 1 for d in dims)
+        self.array_elements -= _units(name, dims)
         del self.arrays[name], self.array_dims[name]
         self.explicit_arrays.discard(name)
 
@@ -95,7 +102,8 @@ class Variables:
             ns["_ix"] = check
 
     def free_memory(self, _any) -> float:
-        """FRE(x): bytes left in the array budget (8 bytes an element), whatever x is."""
+        """FRE(x): bytes left in the array budget (8 bytes a number, 264 a string element: the
+        most it can hold), whatever x is."""
         return float(8 * (MAX_TOTAL_ELEMENTS - self.array_elements))
 
     def clear(self) -> None:
