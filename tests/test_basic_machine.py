@@ -44,8 +44,8 @@ def test_rad_statement_and_angle_option():
 
 
 def test_functions():
-    rows = values("10 PRINT SQR 16, ABS(-3), INT(-2.5), FIX(-2.5), SGN(-4), SGN 0, EXP 1, LOG 10, LEN \"ABC\"")
-    assert rows == [[4.0, 3.0, -3.0, -2.0, -1.0, 0.0, math.e, math.log(10), 3.0]]
+    rows = values("10 PRINT SQR 16, ABS(-3), INT(-2.5), FIX(-2.5), SGN(-4), SGN 0, EXP 1, LN 10, LEN \"ABC\"")
+    assert rows == [[4.0, 3.0, -3.0, -2.0, -1.0, 0.0, math.e, math.log(10), 3.0]]  # LN: casio's natural log
 
 
 def test_function_of_a_function_without_parentheses():
@@ -320,7 +320,8 @@ def test_python_area_error_can_be_trapped():
     machine.load("10 ON ERROR GOTO 100\n20 GOSUB PROG 2: PRINT 1\n30 PRINT 2: END\n100 PRINT ERR, ERL: RESUME NEXT")
     machine.set_area(2, area)
     machine.run()
-    assert machine.screen.stream.getvalue().split() == ["5.0,20.0", "1.0", "2.0"]
+    # ERR is the Casio manual's code: 14, the MA error (part-12-2-error-messages.md)
+    assert machine.screen.stream.getvalue().split() == ["14.0,20.0", "1.0", "2.0"]
 
 
 def test_basic_area_shares_variables_and_returns():

@@ -2,12 +2,13 @@
 
 import pytest
 
+from yaseer.basic.dialects.dialect import CASIO, GW
 from yaseer.basic.errors import BasicError
 from yaseer.basic.source.scanner import split_lines, tokenize
 
 
-def kinds(text):
-    return [(t.type, t.value) for t in tokenize(text)]
+def kinds(text, dialect=CASIO):
+    return [(t.type, t.value) for t in tokenize(text, dialect)]
 
 
 def test_function_name_inside_a_run_of_letters_is_a_keyword():
@@ -24,8 +25,10 @@ def test_if_without_spaces():
         "IF", "NAME", "LT", "NUMBER", "THEN", "NAME", "EQ", "NAME", "PLUS", "NUMBER"]
 
 
-def test_keywords_in_any_case_and_names_upper_cased():
-    assert kinds("print qq") == [("PRINT", "PRINT"), ("NAME", "QQ")]
+def test_keywords_in_any_case_and_names_as_typed():
+    # the FX-850P manual (part 6, Variable Names) lists A and a as two names
+    assert kinds("print qq") == [("PRINT", "PRINT"), ("NAME", "qq")]
+    assert kinds("print qq", GW) == [("PRINT", "PRINT"), ("NAME", "QQ")]  # GW-BASIC: one case
 
 
 def test_names_with_digits_and_string_names():
@@ -117,14 +120,14 @@ REPO = Path(__file__).resolve().parents[1]
 
 @pytest.mark.parametrize("typed, listed", [
     ("L=X/COST", "L=X/COS T"),  # the two examples
-    ("forj=1to3:printj;:nextj", "FOR J=1 TO 3:PRINT J;:NEXT J"),
+    ("forj=1to3:printj;:nextj", "FOR j=1 TO 3:PRINT j;:NEXT j"),  # names keep their case
     ("IFX<0THEN100ELSE200", "IF X<0 THEN 100 ELSE 200"),
     ("GOSUBPROG1", "GOSUB PROG 1"),
-    ('?"A";x', 'PRINT "A";X'),  # ? is PRINT
+    ('?"A";x', 'PRINT "A";x'),  # ? is PRINT
     ("FOR I=10 TO 1 STEP -1", "FOR I=10 TO 1 STEP -1"),
-    ("printtab(5);sin(x);erl", "PRINT TAB(5);SIN(X);ERL"),
+    ("printtab(5);sin(x);erl", "PRINT TAB(5);SIN(x);ERL"),
     ("DEF FNA(X)=X*2", "DEF FNA(X)=X*2"),
-    ("x=1e3 ' Keep This", "X=1E3 ' Keep This"),  # numbers and remarks as typed
+    ("x=1e3 ' Keep This", "x=1E3 ' Keep This"),  # numbers and remarks as typed
     ("rem Keep  This", "REM Keep  This"),
     ('data 1, "Two" ,3', 'DATA 1, "Two" ,3'),
     ("PRINT X@", "PRINT X@"),  # a line the scanner cannot read is listed as typed

@@ -78,7 +78,7 @@ def test_interactive_session_takes_dialect(monkeypatch, capsys):
 def test_session_lists_lines_as_its_dialect_reads_them():
     from yaseer.session import MachineEngine, Session
 
-    for dialect, listed in (("casio", "10 COS T=5"), ("gw", "10 COST=5")):
+    for dialect, listed in (("casio", "10 COS t=5"), ("gw", "10 COST=5")):  # casio names keep their case
         shown: list[str] = []
         session = Session(write=shown.append, engine=MachineEngine(shown.append, dialect=dialect), dialect=dialect)
         session.handle("10 cost=5")

@@ -47,6 +47,7 @@ BAD_RECORD_NUMBER = 63
 BAD_FILE_NAME = 64
 DIRECT_STATEMENT_IN_FILE = 66
 PATH_FILE_ACCESS_ERROR = 75
+PASSWORD_PROTECTED = 251  # yaseer's own: PASS with another password than the one set (Casio PR error)
 UNDEFINED_PROGRAM_AREA = 252  # yaseer's own: GOSUB PROG n with nothing in area n
 BREAK = 253  # yaseer's own: Ctrl-C (not trappable)
 

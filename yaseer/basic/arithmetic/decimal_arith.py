@@ -1,18 +1,20 @@
-"""``--arith decimal``: the Casio FX-850P family's arithmetic, 13 decimal digits inside.
+"""``--arith decimal``: the Casio FX-850P family's arithmetic, 12 decimal digits inside.
 
-The pocket computers compute in BCD with a 13-digit mantissa and show 10 digits,
+The pocket computers compute in BCD with a 12-digit mantissa and show 10 digits
+(the FX-850P manual's specifications and part 6, "Numeric Value Precision"),
 so ``1 - 10*.1`` is exactly 0 and ``FOR T = .1 TO 360.1 STEP 20`` reaches 360.1
 exactly.  yaseer keeps every value a Python float (so arrays, FOR loops, PRINT and
 the program areas work unchanged) but every value is the nearest float to a
-13-significant-digit decimal: each operation reads its operands back as those
-decimals (:func:`dec`, exact because 13 digits < 15), computes in the decimal
-module with 13 digits (:data:`CONTEXT`, rounding half up as a calculator does,
-exponents up to 99 as the Casio's 1E99 range), and stores the float of the result.
+12-significant-digit decimal: each operation reads its operands back as those
+decimals (:func:`dec`, exact because 12 digits < 15), computes in the decimal
+module with 12 digits (:data:`CONTEXT`, rounding half up as a calculator does),
+and stores the float of the result.  The range is the manual's: a result of 1E+100
+or more is ``Overflow``, one below 1E-99 in size is 0.
 
 SQR, EXP, LOG and ``^`` are correctly rounded by the decimal module; SIN, COS,
 TAN and ATN are computed with 25 digits (Taylor series after an exact reduction of
-the angle) and then rounded to 13.  In degrees the multiples of 90 give exact
-values, as in the binary arithmetic.  Beyond 9.999999999999E+99 is ``Overflow``.
+the angle) and then rounded to 12.  In degrees (and grads) the multiples of a right
+angle give exact values, as in the binary arithmetic.
 """
 
 from __future__ import annotations
@@ -22,7 +24,8 @@ from decimal import ROUND_HALF_UP, Context, Decimal, Overflow as DecimalOverflow
 
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_CALL, OVERFLOW
 
-DIGITS = 13  # inside; the display shows 10 (formatting.number_to_text)
+DIGITS = 12  # inside; the display shows 10 (formatting.number_to_text)
+SMALLEST = Decimal("1E-99")  # below it in size a result is 0 (the specifications' range)
 CONTEXT = Context(prec=DIGITS, rounding=ROUND_HALF_UP, Emax=99, Emin=-99,
                   traps=[DecimalOverflow])
 _WIDE = Context(prec=25, rounding=ROUND_HALF_UP)  # trig is computed with 12 guard digits
@@ -30,15 +33,16 @@ _PI = Decimal("3.14159265358979323846264338327950288")
 
 
 def dec(x) -> Decimal:
-    """The 13-digit decimal a float stands for (a float from outside is rounded to 13 digits)."""
-    return Decimal(format(x, ".13g"))
+    """The 12-digit decimal a float stands for (a float from outside is rounded to 12 digits)."""
+    return Decimal(format(x, ".12g"))
 
 
 def _checked(operation, *args) -> float:
     try:
-        return float(operation(*args))
+        result = operation(*args)
     except DecimalOverflow:
         raise BasicError("Overflow", OVERFLOW) from None
+    return float(result) if abs(result) >= SMALLEST else 0.0
 
 
 # A multiple of 1/8 below 1E9 in size is exactly its own decimal (at most 9 + 3
@@ -53,13 +57,17 @@ _SMALL = 1e9
 
 def add(a, b) -> float:
     if -_SMALL < a < _SMALL and -_SMALL < b < _SMALL and not (a * 8.0 % 1.0 or b * 8.0 % 1.0):
-        return float(a + b)
+        total = a + b
+        if -_SMALL < total < _SMALL:  # (from 1E9 on, 9 + 3 digits could need rounding to 12)
+            return float(total)
     return _checked(CONTEXT.add, dec(a), dec(b))
 
 
 def subtract(a, b) -> float:
     if -_SMALL < a < _SMALL and -_SMALL < b < _SMALL and not (a * 8.0 % 1.0 or b * 8.0 % 1.0):
-        return float(a - b)
+        difference = a - b
+        if -_SMALL < difference < _SMALL:
+            return float(difference)
     return _checked(CONTEXT.subtract, dec(a), dec(b))
 
 
@@ -84,7 +92,7 @@ def divide(a, b) -> float:
 
 
 def rounded(x) -> float:
-    """Any value (a literal, READ, INPUT, a Python area's result) as a 13-digit decimal."""
+    """Any value (a literal, READ, INPUT, a Python area's result) as a 12-digit decimal."""
     if x != x or x in (float("inf"), float("-inf")):
         return x
     return _checked(CONTEXT.plus, dec(x))
@@ -193,6 +201,27 @@ def _float_sine_or_cosine(x, degrees: bool, which: int):
     return _surely(value, abs(value) * 6e-16 + abs(x) * 2.2e-18)
 
 
+def log10(x) -> float:
+    """The Casio's LOG (the common logarithm), correctly rounded."""
+    d = dec(x)
+    if d <= 0:
+        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+    return _checked(CONTEXT.log10, d)
+
+
+def rounding_all(functions: dict) -> dict:
+    """``functions`` (name -> callable) with each numeric result rounded to 12 digits
+    (a pair, POL's and REC's, each of its two; strings as they are)."""
+    def rounding(f):
+        def rounded_call(*args):
+            value = f(*args)
+            if type(value) is tuple:
+                return tuple(rounded(v) for v in value)
+            return value if type(value) is str else rounded(value)
+        return rounded_call
+    return {name: rounding(f) for name, f in functions.items()}
+
+
 # ------------------------------------------------------------------ trigonometry
 
 def _sin_cos_radians(r: Decimal) -> tuple[Decimal, Decimal]:
@@ -239,7 +268,7 @@ def _exact_quadrant(d: Decimal, degrees: bool):
 
 
 def _sine_or_cosine(x, degrees: bool, which: int) -> float:
-    """SIN (``which`` 0) or COS (1) of ``x``, rounded to 13 digits."""
+    """SIN (``which`` 0) or COS (1) of ``x``, rounded to 12 digits."""
     found = _float_sine_or_cosine(x, degrees, which)
     if found is not None:
         return found
@@ -298,13 +327,18 @@ def atn(x, degrees: bool = True) -> float:
     return _checked(CONTEXT.plus, r)
 
 
-def trig_functions(degrees: bool) -> dict:
-    """The compiled code's ``_sin _cos _tan _atn`` in decimal arithmetic."""
+def trig_functions(unit: str) -> dict:
+    """The compiled code's ``_sin _cos _tan _atn`` in decimal arithmetic, in ``unit``
+    ("DEG", "RAD" or "GRA": a grad is 0.9 degree, exactly in decimal)."""
+    if unit == "GRA":
+        return {"_sin": lambda x: sin(multiply(x, 0.9)), "_cos": lambda x: cos(multiply(x, 0.9)),
+                "_tan": lambda x: tan(multiply(x, 0.9)), "_atn": lambda x: divide(atn(x), 0.9)}
+    degrees = unit != "RAD"
     return {"_sin": lambda x: sin(x, degrees), "_cos": lambda x: cos(x, degrees),
             "_tan": lambda x: tan(x, degrees), "_atn": lambda x: atn(x, degrees)}
 
 
 RUNTIME = {
     "_dadd": add, "_dsub": subtract, "_dmul": multiply, "_ddiv13": divide, "_d13": rounded,
-    "_pow": power, "_sqrt": sqrt, "_exp": exp, "_log": log,
+    "_pow": power, "_sqrt": sqrt, "_exp": exp, "_log": log, "_log10": log10,
 }

@@ -71,6 +71,29 @@ def _too_deep(code: list) -> bool:
     return False
 
 
+class _NoWords:
+    """The tables of a dialect without words of its own (GW-BASIC): all empty."""
+
+    functions: dict = {}
+    statements: dict = {}
+    reads_variables = sets_x_y = empty_statements = frozenset()
+    computed_restore = empty_on_targets = False
+
+
+NO_WORDS = _NoWords()
+
+
+def _set_format(node) -> tuple[str, int]:
+    """SET's argument (SET.md): ``F`` or ``E`` and one digit, or ``N``, read as the name
+    the scanner made of it (``SET F3``: the name F3)."""
+    name = node.name.upper() if isinstance(node, ast.Var) else ""
+    if name == "N":
+        return "N", 0
+    if len(name) == 2 and name[0] in "FE" and name[1].isdigit():
+        return name[0], int(name[1])
+    raise syntax_error()
+
+
 class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
     """Compiles the lines of one program area (see the module docstring).
 
@@ -86,6 +109,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.program_areas = dialect.program_areas  # GOSUB PROG n, #n, "file:label"
         self.library_forms = dialect.library_forms  # THEN *
         self.names_missing_line = dialect.names_missing_line
+        self.words = dialect.words or NO_WORDS  # the dialect's own words (dialects/casio.py)
+        self.own_functions = dict(self.words.functions, DEG=self.words.deg_function) if dialect.words else {}
         self.direct = direct
         self.trace = trace and not direct
         self.dynamic_loops = set(dynamic_loops)
@@ -277,16 +302,20 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         selector = self.numeric(stmt.selector, scope)
         k = self.new_temp()
         self.emit(f"{k} = _on({selector}, {len(stmt.targets)})")
-        jumps = [self.jump(t) for t in stmt.targets]
+        if None in stmt.targets and not self.words.empty_on_targets:
+            raise syntax_error()
+        jumps = {n: self.jump(t) for n, t in enumerate(stmt.targets, 1) if t is not None}
+        for n in (n for n, t in enumerate(stmt.targets, 1) if t is None):
+            self.emit(f"if {k} == {n}: {k} = 0")  # an empty place: no branch
         if not stmt.gosub:
-            for n, jump in enumerate(jumps, 1):
+            for n, jump in jumps.items():
                 self.emit(f"if {k} == {n}: {jump}")
             return
         block, indent = self.cur, self.indent
         self.emit(f"if {k}:")
         ret = self.continuation()
         block.code.append((indent + 1, f"_gosub({ret})"))
-        for n, jump in enumerate(jumps, 1):
+        for n, jump in jumps.items():
             block.code.append((indent + 1, f"if {k} == {n}: {jump}"))
         block.code.append((indent, f"return {ret}"))
 
@@ -343,6 +372,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit(f"_M.set_width({self.numeric(stmt.columns, scope)}, {stmt.printer})")
 
     def stmt_Dim(self, stmt, scope):
+        if not stmt.arrays and "DIM" not in self.words.empty_statements:
+            raise syntax_error()
         for name, sizes in stmt.arrays:
             name = self.numbers.name(name)
             codes = ", ".join(self.numeric(s, scope) for s in sizes)
@@ -475,6 +506,22 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             kind = self.kind_of(node)
             return kind if kind in ("%", "#") else "!"
         return "!"
+
+    def stmt_WordStatement(self, stmt, scope):
+        """A statement of the dialect's own words: its helper called with its arguments,
+        each of the kind the table gives ("n", "s"; "format": SET's letter and digit)."""
+        least, most, helper, kind = self.words.statements[stmt.word]
+        if not least <= len(stmt.args) <= most:
+            raise syntax_error()
+        if kind == "format":
+            args = [repr(part) for part in _set_format(stmt.args[0])]
+        elif kind == "s":
+            args = [self.string(arg, scope) for arg in stmt.args]
+        else:
+            args = [self.numeric(arg, scope) for arg in stmt.args]
+        if stmt.word in self.words.reads_variables:
+            self.emit("#FLUSH#")
+        self.emit(f"{helper}({', '.join(args)})")
 
     def stmt_Angle(self, stmt, scope):
         self.emit(f"_M.set_angle({stmt.mode!r})")

@@ -283,7 +283,8 @@ class ExpressionCompiler:
         return self.numbers.helper(op, left, right)
 
     def expr_Call(self, node, scope):
-        forms, result, helper = _FUNCTIONS[node.name]
+        own = self.own_functions.get(node.name)  # the dialect's own words (dialects/casio.py)
+        forms, result, helper = own[1:] if own else _FUNCTIONS[node.name]
         args = list(node.args)
         if node.name == "RND" and (not args or (len(args) == 1 and (constant_value(args[0]) or 0) > 0)):
             return self.numbers.call("RND", "_rndf", [], [], "n")  # the next number (the generator's drawer)
@@ -298,7 +299,20 @@ class ExpressionCompiler:
                 code, kind = self.typed(arg, scope)
             codes.append(self.numbers.printable(code, kind) if node.name == "STR$" else code)
             kinds.append(kind)
+        if own and node.name in self.words.reads_variables:
+            scope.uses_fn = True  # VALF reads the variables: the block's values are stored first
+        if own and node.name in self.words.sets_x_y:
+            return self.pair_to_x_y(f"{helper}({', '.join(codes)})", scope), "n"
         return self.numbers.call(node.name, helper, codes, kinds, result)
+
+    def pair_to_x_y(self, pair: str, scope) -> str:
+        """POL and REC (POL.md, REC.md): the pair ``pair`` is computed, its values go to
+        the variables X and Y, and the first is the function's value."""
+        if isinstance(scope, FnScope):  # the Casio has no DEF FN; its body cannot set variables
+            raise syntax_error()
+        x, y = scope.scalar("X", write=True), scope.scalar("Y", write=True)
+        temp = self.new_temp()
+        return f"({x} := ({temp} := {pair})[0], {y} := {temp}[1])[0]"
 
     def expr_FnCall(self, node, scope):
         params = self.fn_params.get(self.numbers.name(node.name))
@@ -320,7 +334,7 @@ class ExpressionCompiler:
 
     def expr_SysVar(self, node, scope):
         if node.name == "PI":
-            return repr(math.pi), "n"
+            return self.numbers.pi, "n"
         code, kind = _SYSTEM_VARIABLES[node.name]
         return code, kind or self.numbers.integer
 

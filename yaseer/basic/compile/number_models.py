@@ -57,6 +57,7 @@ class PlainNumbers:
     loop_types = frozenset("n")  # the types a FOR variable may have
     widest = "n"  # the type of a number read by READ or INPUT (converted to the target's)
     integer = "n"  # the type of ERR, ERL
+    pi = repr(3.141592653589793)  # PI: the double nearest to pi
 
     def set_types(self, statements) -> None:
         """No DEF types in this model."""
@@ -406,10 +407,11 @@ def _is_int_literal(code: str) -> bool:
 
 
 class DecimalNumbers(PlainNumbers):
-    """``--arith decimal`` (casio): floats that stand for 13-digit decimals; ``+ - * /``,
+    """``--arith decimal`` (casio): floats that stand for 12-digit decimals; ``+ - * /``,
     ``^``, literals and FOR steps through yaseer/basic/arithmetic/decimal_arith.py."""
 
     square_by_product = False
+    pi = "3.1415926536"  # PI inside the FX-850P: 11 digits (PI.md; shown 3.141592654)
     _OPERATIONS = {"+": "_dadd", "-": "_dsub", "*": "_dmul", "/": "_ddiv13"}
 
     def literal(self, value, kind: str) -> tuple[str, str]:

@@ -201,6 +201,11 @@ class InputOutputCompiler:
                         self.numbers.typed and kind != "s")  # beyond the range: Overflow's policy
 
     def stmt_Restore(self, stmt, scope):
+        if stmt.target is not None and not isinstance(stmt.target, int):  # RESTORE (expression)
+            if not self.words.computed_restore:
+                raise syntax_error()
+            self.emit(f"_restore_at({self.numeric(stmt.target, scope)})")
+            return
         if stmt.target is not None and stmt.target not in self.line_first:
             message = undefined_line_message(stmt.target, self.names_missing_line)
             self.emit(f"raise _err({message!r}, {UNDEFINED_LINE})")

@@ -27,6 +27,7 @@ from collections import namedtuple
 from yaseer.basic.arithmetic.values import DOUBLE_LARGEST
 from yaseer.basic.arithmetic.randomness import GwRandom, RepeatableRandom
 from yaseer.basic.dialects.charset import CASIO as CASIO_CHARACTERS, CASIO_CONTROLS, LATIN1
+from yaseer.basic.dialects import casio as casio_words
 
 # The paper's universal line 2: these arrays exist with these sizes from the start
 # (one dimension, subscripts 0..size).
@@ -78,9 +79,13 @@ FIELDS = (
     "names_missing_line",  # bool: True
     "spaced_relations",  # bool: False
     "bracket_subscripts",  # bool: False
+    "words",  # casio.Words | None: None
+    "names_keep_case",  # bool: False
+    "name_length",  # int | None: None
+    "hex_literals",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
-            True, True, False, False)
+            True, True, False, False, None, False, None, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -146,6 +151,18 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         line a jump missed (``Undefined line number 5200 in 5030``); False prints
         GW-BASIC's message as its table has it (``Undefined line number in 5030``).
 
+    The machine's own words
+        ``words``: the module of tables of the words only this dialect has
+        (yaseer/basic/dialects/casio.py: the FX-850P's functions such as LN, FACT,
+        ROUND, POL, its statements such as ANGLE, POKE, SET, and ERR's error codes);
+        None for GW-BASIC.  The scanner reads them as keywords, the compiler finds
+        their functions and statements there, the machine its ERR codes.
+        ``names_keep_case``: True makes ``a`` and ``A`` two variables (the Casio
+        manual lists both as names; keywords are still read in either case).
+        ``name_length``: the longest name (15 on the Casio); None: no limit.
+        ``hex_literals``: True reads ``&H1F`` as a number (the Casio's ``&H``, 0..&HFFFF)
+        in a dialect without typed numbers.
+
     Syntax errors
         ``errors_when_reached``: True (GW-BASIC) runs a line statement by
         statement up to a bad one, which is the error when execution reaches
@@ -191,7 +208,8 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         program's one directory (casio: ``CAS0:``, ``CAS1:``, the cassette).
 
     Start-up environment
-        ``angle``: ``"DEG"`` or ``"RAD"``, the unit of SIN COS TAN ATN at RUN.
+        ``angle``: ``"DEG"``, ``"RAD"`` (or, after ANGLE 2, ``"GRA"``), the unit of SIN COS
+        TAN ATN at RUN.
         ``implicit_arrays``: ``(name, size)`` pairs of one-dimensional arrays
         that exist with those sizes before any DIM (the Al-Yaseer arrays in
         Casio; none in GW).
@@ -237,6 +255,7 @@ CASIO = Dialect(
     implicit_arrays=AL_YASEER_DIMENSIONS, default_dimension=10, program_areas=True,
     display=(32, 8, 2), controls=tuple(sorted(CASIO_CONTROLS.items())), charset=CASIO_CHARACTERS, enter_key="\r",
     empty_input_keeps=True, library_forms=True, file_devices=("CAS0:", "CAS1:"),
+    words=casio_words.WORDS, names_keep_case=True, name_length=15, hex_literals=True,
 )
 
 GW = Dialect(

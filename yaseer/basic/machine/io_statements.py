@@ -111,6 +111,8 @@ class InputOutput:
                 self._csv_row(stream)
             return
         self._lay_out(stream, items, newline)
+        if device == 0 and self.print_echo and self.printer is not self.screen:
+            self._lay_out(self.printer, items, newline)  # MODE 7: PRINT on the printer too
 
     def _lay_out(self, stream: OutputStream, items: tuple, newline: bool) -> None:
         """PRINT's items as text on ``stream`` (the screen, the printer or a file)."""

@@ -46,7 +46,7 @@ import math
 import sys
 from functools import lru_cache
 
-from yaseer.basic.arithmetic import arith_policy, formatting, values
+from yaseer.basic.arithmetic import arith_policy, casio_math, formatting, values
 from yaseer.basic.compile.number_models import initial_value
 from yaseer.basic.compile import program_cache
 from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  MAX_STACK: GOSUB returns + open FOR loops together
@@ -60,6 +60,8 @@ from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
 from yaseer.basic.machine.console import Console
 from yaseer.basic.machine.chaining import ChainTo, Chaining, RunAgain
 from yaseer.basic.machine.breaks import Breaks, _interrupt_handler
+from yaseer.basic.machine import casio_words
+from yaseer.basic.machine.casio_words import CasioWords
 from yaseer.basic.machine.signals import (  # noqa: F401  (the run-time exceptions are re-exported)
     END, INTERNAL_ERROR, BreakPoint, DirectJump, ErrorTrapping, ProgramEnd, ProgramStop, to_basic_error,
 )
@@ -135,6 +137,14 @@ class _AreaRuntime:
             raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number)
         return text[1:end]
 
+    def restore_at(self, value: float) -> None:
+        """RESTORE (expression): the line the value names (truncated), which must exist
+        (RESTORE.md: UL error)."""
+        line = int(value)
+        if line not in self.machine.programs.get(self.number, {}):
+            raise BasicError(f"Undefined line number {line}", UNDEFINED_LINE)
+        self.restore(line)
+
     def restore(self, line) -> None:
         if line is None:
             self.data_index = 0
@@ -146,7 +156,7 @@ class _AreaRuntime:
 FIRST_FILE_AREA = 1000  # the program areas of program files (GOSUB "file:label") are numbered from here
 
 
-class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Console, Chaining):
+class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Console, Chaining, CasioWords):
     """A pocket-computer BASIC machine (see the module docstring)."""
 
     def __init__(self, screen: TextIO | None = None, printer: TextIO | None = None,
@@ -193,6 +203,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.frame_body = 0
         self.angle = self.default_angle
         self.random = self.dialect.random()
+        self.init_casio_words()
         self._extra_entries: set[int] = set()
         self.array_elements = 0  # elements in all arrays (MAX_TOTAL_ELEMENTS)
         # Called as hook(machine, n) after every GOSUB PROG n returns (e.g. to record a
@@ -358,7 +369,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_on": self.on_index, "_for": self.for_push, "_next": self.next_frame,
             "_pop": self.stack.pop, "_next_any": self.next_any, "_stop": self._stopper(area),
             "_dim": self.dim, "_clear": self.clear, "_read_n": rt.read_number,
-            "_read_s": rt.read_string, "_restore": rt.restore, "_input": self.input_values,
+            "_read_s": rt.read_string, "_restore": rt.restore, "_restore_at": rt.restore_at,
+            "_input": self.input_values,
             "_fn": self.user_function, "_resume": self.resume, "_resume_at": self.resume_at,
             "_error_off": self.error_trapping_off, "_error": self.raise_error,
             "_randomize": self.randomize, "_rnd": self.rnd, "_rndf": self._first_draw,
@@ -378,10 +390,16 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             ns.update(values.RUNTIME)
             ns.update(arith_policy.helpers(self.arith, ns["_idiv"], ns["_mod"], ns["_pow"]))
             ns.update(val_numbers.helpers(self.arith, ns, self.dialect.largest_number))
+        if self.dialect.words:  # the casio functions (dialects/casio.py)
+            ns.update(casio_math.RUNTIME)
+            ns.update(casio_words.OPERATORS)
+            ns.update({"_ran": self.ran, "_valf": self.valf})
         ns.update(self._trig_functions())
         if self.dialect.arithmetic == "decimal":
             from yaseer.basic.arithmetic import decimal_arith  # here: only --arith decimal loads the decimal module
 
+            if self.dialect.words:
+                ns.update(decimal_arith.rounding_all(casio_math.RUNTIME))
             ns.update(decimal_arith.RUNTIME)
             ns.update(self._trig_functions())
         self.namespaces[area] = ns
@@ -416,15 +434,26 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         }
 
     def _trig_functions(self) -> dict:
+        """The compiled code's angle-dependent helpers in the current unit (DEG, RAD, GRA)."""
         if self.dialect.typed_numbers and self.angle == "RAD":  # MBF singles: GW-BASIC's own routines
             return arith_policy.transcendental_functions(self.arith)
-        if self.dialect.arithmetic == "decimal":
+        decimal = self.dialect.arithmetic == "decimal"
+        if decimal:
             from yaseer.basic.arithmetic import decimal_arith
-            return decimal_arith.trig_functions(self.angle != "RAD")
-        if self.angle == "RAD":
-            return {"_sin": math.sin, "_cos": math.cos, "_tan": math.tan, "_atn": math.atan}
-        return {"_sin": runtime.sin_degrees, "_cos": runtime.cos_degrees,
-                "_tan": runtime.tan_degrees, "_atn": runtime.atn_degrees}
+
+            functions = decimal_arith.trig_functions(self.angle)
+        elif self.angle == "RAD":
+            functions = {"_sin": math.sin, "_cos": math.cos, "_tan": math.tan, "_atn": math.atan}
+        else:
+            functions = {"_sin": runtime.sin_degrees, "_cos": runtime.cos_degrees,
+                         "_tan": runtime.tan_degrees, "_atn": runtime.atn_degrees}
+        if self.dialect.words:  # ASN ACS POL REC (and every function in grads)
+            extra = casio_math.angle_functions(self.angle)
+            if decimal:
+                extra = {name: f for name, f in extra.items() if name not in functions}
+                extra = decimal_arith.rounding_all(extra)
+            functions.update(extra)
+        return functions
 
     def set_trace(self, on: bool) -> None:
         """TRON / TROFF: swap every compiled area's blocks for its traced (or plain) variant.

@@ -117,7 +117,7 @@ class ErrorTrapping:
         handler_area, handler_block = self.on_error
         if handler_area != area:
             return None
-        self.err = float(err.code)
+        self.err = float(self.err_codes.get(err.code, err.code))  # the dialect's codes (casio: the manual's)
         self.erl = float(err.line or 0)
         for stream in self.streams:
             stream.row = []

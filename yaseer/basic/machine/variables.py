@@ -68,9 +68,12 @@ class Variables:
 
     def dim(self, name: str, sizes: tuple) -> None:
         """DIM name(sizes): replaces an implicit array; a second DIM is an error."""
-        if name in self.explicit_arrays:
-            raise BasicError.of_code(DUPLICATE_DEFINITION)
         dims = tuple(runtime.cint(s) for s in sizes)
+        if name in self.explicit_arrays:
+            words = self.dialect.words
+            if words and words.redim_same and dims == self.array_dims.get(name):
+                return  # the Casio passes over the same declaration again (DIM.md)
+            raise BasicError("Duplicate definition", DUPLICATE_DEFINITION)
         if any(d < 0 for d in dims):
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         if any(d < self.subscript_base for d in dims):  # DIM A(0) under OPTION BASE 1: no element
@@ -84,6 +87,9 @@ class Variables:
         """ERASE name: forget the array (a later DIM may size it again); not there: Illegal function call."""
         dims = self.array_dims.get(name)
         if name not in self.arrays or dims is None:
+            words = self.dialect.words
+            if words and words.erase_missing:
+                return  # the Casio goes on (ERASE.md)
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         self.array_elements -= _units(name, dims)
         del self.arrays[name], self.array_dims[name]

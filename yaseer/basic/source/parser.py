@@ -183,9 +183,13 @@ class _ToAst:
         return ast.Return()
 
     def on_jump(self, c):
-        v = _values(c)
-        targets = [_line_number(t) for t in v[3:]]
-        return ast.OnJump(v[1], targets, v[2].type == "GOSUB")
+        targets: list = [None]  # ON x GOTO a,,b: None where a place is empty
+        for token in c[3:]:
+            if token.type == "COMMA":
+                targets.append(None)
+            else:
+                targets[-1] = _line_number(token)
+        return ast.OnJump(c[1], targets, c[2].type == "GOSUB")
 
     def on_error(self, c):
         return ast.OnError(_line_number(c[3]))
@@ -405,7 +409,15 @@ class _ToAst:
         return ast.Read(_values(c)[1:])
 
     def restore_stmt(self, c):
-        return ast.Restore(_line_number(c[1]) if len(c) > 1 else None)
+        if len(c) == 1:
+            return ast.Restore(None)
+        target = c[1]
+        if isinstance(target, ast.Num):
+            return ast.Restore(_line_number(Token("NUMBER", target.value)))
+        return ast.Restore(target)
+
+    def word_stmt(self, c):
+        return ast.WordStatement(c[0].value, _values(c[1:]))
 
     def input_stmt(self, c):
         prompt = None

@@ -94,6 +94,18 @@ class _Keywords:
         own += ["PROG"] if dialect.program_areas else []
         for word in own:
             words[word] = DIALECT_WORDS[word]
+        # the machine's own words (dialects/casio.py): functions, statements, two-word spellings
+        table = dialect.words
+        self.spelled = table.spellings if table else {}  # "HYP SIN" -> "HYPSIN"
+        self.operators = table.operators if table else {}  # the Casio's ¥
+        self.paren_function = {"DEG": table.deg_function[0]} if table else {}  # DEG( is a function
+        if table:
+            for word, entry in table.functions.items():
+                words[word] = entry[0]
+            for word in table.statements:
+                words[word] = "WORDSTMT"
+            for spelling, word in table.spellings.items():
+                words[spelling] = words[word]
         self.types = words
         self.by_letter: dict[str, tuple[str, ...]] = {}
         for word in sorted(words, key=len, reverse=True):
@@ -174,7 +186,10 @@ def _scan_word(upper: str, i: int, keywords: _Keywords) -> tuple[str, str, int]:
     """
     word = keywords.at(upper, i)
     if word is not None:
-        return keywords.types[word], word, i + len(word)
+        end = i + len(word)
+        if word in keywords.paren_function and upper[end:].lstrip(" ").startswith("("):
+            return keywords.paren_function[word], word, end  # DEG(d, m, s), not the statement DEG
+        return keywords.types[word], keywords.spelled.get(word, word), end
     j = i + 1
     while j < len(upper) and upper[j].isalnum() and upper[j].isascii() and keywords.at(upper, j) is None:
         j += 1
@@ -214,6 +229,34 @@ def _scan_word_whole(upper: str, i: int, keywords: _Keywords) -> tuple[str, str,
     if j < n and upper[j] in "%!#$":
         return ("STRNAME" if upper[j] == "$" else "NAME"), name + upper[j], j + 1
     return "NAME", name, j
+
+
+_NAME_TYPES = ("NAME", "STRNAME")
+
+
+def _name(text: str, start: int, end: int, kind: str, dialect: Dialect) -> str:
+    """A variable's name as ``dialect`` keeps it: in the case it was typed when
+    ``names_keep_case`` (``a`` and ``A`` are two Casio variables), at most
+    ``name_length`` characters before the ``$`` (else a Syntax error)."""
+    name = text[start:end] if dialect.names_keep_case else text[start:end].upper()
+    length = dialect.name_length
+    if length is not None and len(name) - (kind == "STRNAME") > length:
+        raise _syntax_error()
+    return name
+
+
+_HEX_LITERAL = re.compile(r"&H([0-9A-F]{1,4})(?![0-9A-F])")
+
+
+def _scan_hex(upper: str, i: int) -> tuple[float, int]:
+    """The Casio's ``&H`` number (AMP_H.md): one to four hexadecimal digits, 0..65535;
+    more digits are Overflow, none a Syntax error."""
+    match = _HEX_LITERAL.match(upper, i)
+    if match is None:
+        if re.match(r"&H[0-9A-F]", upper[i:]):
+            raise BasicError("Overflow", OVERFLOW)
+        raise _syntax_error()
+    return float(int(match.group(1), 16)), match.end()
 
 
 def _scan_number(upper: str, i: int) -> tuple[float, int]:
@@ -345,8 +388,13 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
         elif ch.isdigit() or (ch == "." and i + 1 < n and upper[i + 1].isdigit()) or (ch in "&." and typed):
             value, i = _scan_typed_number(upper, i, notes) if typed else _scan_number(upper, i)
             yield "NUMBER", value, start, i
+        elif ch == "&" and dialect.hex_literals:
+            value, i = _scan_hex(upper, i)
+            yield "NUMBER", value, start, i
         elif ch.isascii() and ch.isalpha():
             kind, word, end = scan_word(upper, i, keywords)
+            if kind in _NAME_TYPES:
+                word = _name(text, start, end, kind, dialect)
             if kind == "REMARK":
                 yield "REMARK", text[end:], start, n
                 return
@@ -372,6 +420,9 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
         elif ch in "[]" and dialect.bracket_subscripts:  # checked by _subscript_brackets
             i += 1
             yield ("_LPAR" if ch == "[" else "_RPAR"), ch, start, i
+        elif ch in keywords.operators:
+            i += 1
+            yield keywords.operators[ch], ch, start, i
         elif ch == "?":
             i += 1
             yield "PRINT", "PRINT", start, i
@@ -444,7 +495,7 @@ def _joins_go(tokens: list, kind: str, value) -> bool:
         return False
     last = tokens[-1]
     before = tokens[-2].type if len(tokens) > 1 else None
-    return last.type == "NAME" and last.value == "GO" and before in _STATEMENT_STARTS
+    return last.type == "NAME" and last.value.upper() == "GO" and before in _STATEMENT_STARTS
 
 
 # Lexemes listed as words: a space separates two of them (``FOR J``, ``1 TO``, ``COS T``).

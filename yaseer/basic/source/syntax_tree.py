@@ -421,7 +421,7 @@ class Read:
 
 @_node
 class Restore:
-    target: int | None = None
+    target: object = None  # a line number, None (the first DATA), or an expression: RESTORE (10*10)
 
 
 @_node
@@ -460,6 +460,13 @@ class Randomize:
 @_node
 class Angle:
     mode: str  # "DEG" or "RAD"
+
+
+@_node
+class WordStatement:
+    """A statement of the dialect's own words (dialects/casio.py): ANGLE 1, POKE a, d."""
+    word: str
+    args: list
 
 
 @_node

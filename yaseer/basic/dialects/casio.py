@@ -1,0 +1,140 @@
+"""The FX-850P/880P's own words: the tables the casio dialect adds (data only).
+
+The source is the owner's manual (its reserved-word list, part 12, and one page per
+word, commands/*.md, in the public repository urbancamo/urbancamo.github.io, folder
+casio-basic/doc); docs/compatibility.md names the page behind each behaviour.  The
+scanner reads these words as keywords in casio only, the compiler finds their
+functions and statements here, and the machine reports ``ERR`` with the manual's
+error codes.  GW-BASIC never sees these tables.
+"""
+
+from __future__ import annotations
+
+# word -> (token type, argument forms, result, helper of the compiled code).  "FUNC":
+# parentheses may be left out (``LN X``, ``FACT X``); "FUNCN": a parenthesised list.
+# A form is a string of argument kinds ("n" number, "s" string; "" no argument).
+FUNCTIONS = {
+    "LOG": ("FUNC", ("n",), "n", "_log10"),  # LOG_LN.md: the common logarithm
+    "LN": ("FUNC", ("n",), "n", "_log"),  # LOG_LN.md: the natural logarithm
+    "CUR": ("FUNC", ("n",), "n", "_cur"),  # CUR.md
+    "FRAC": ("FUNC", ("n",), "n", "_frac"),  # FRAC.md
+    "FACT": ("FUNC", ("n",), "n", "_fact"),  # FACT.md
+    "ASN": ("FUNC", ("n",), "n", "_asn"),  # ASN_ACS_ATN.md
+    "ACS": ("FUNC", ("n",), "n", "_acs"),
+    "HYPSIN": ("FUNC", ("n",), "n", "_sinh"),  # HYP_SIN_COS_TAN.md
+    "HYPCOS": ("FUNC", ("n",), "n", "_cosh"),
+    "HYPTAN": ("FUNC", ("n",), "n", "_tanh"),
+    "HYPASN": ("FUNC", ("n",), "n", "_asinh"),  # HYP_ASN_ACS_ATN.md
+    "HYPACS": ("FUNC", ("n",), "n", "_acosh"),
+    "HYPATN": ("FUNC", ("n",), "n", "_atanh"),
+    "RAN#": ("FUNC", ("", "n"), "n", "_ran"),  # RAN_HASH.md
+    "DMS$": ("FUNC", ("n",), "s", "_dms"),  # DMS_STRING.md
+    "VALF": ("FUNC", ("s",), "n", "_valf"),  # VALF.md
+    "HEX$": ("FUNC", ("n",), "s", "_hex4"),  # HEX_STRING.md: four digits
+    "ROUND": ("FUNCN", ("nn",), "n", "_round"),  # ROUND.md
+    "NCR": ("FUNCN", ("nn",), "n", "_ncr"),  # NCR.md
+    "NPR": ("FUNCN", ("nn",), "n", "_npr"),  # NPR.md
+    "POL": ("FUNCN", ("nn",), "n", "_pol"),  # POL.md: also sets X and Y
+    "REC": ("FUNCN", ("nn",), "n", "_rec"),  # REC.md: also sets X and Y
+}
+# Functions that also assign the variables X and Y (POL.md, REC.md): the function's
+# value is the first of the pair (r for POL, x for REC).
+SETS_X_Y = frozenset({"POL", "REC"})
+
+# DEG(d[, m[, s]]) (DEG.md) is a function only where a "(" follows: a bare DEG stays the
+# statement that selects degrees (the PB-700 family's, which the paper's machine has).
+DEG_FUNCTION = ("FUNCN", ("n", "nn", "nnn"), "n", "_degf")
+
+# The manual writes HYP and the function apart ("HYP SIN"); the sample programs join
+# them (HYPSIN): both spellings are one word.
+SPELLINGS = {"HYP " + f: "HYP" + f for f in ("SIN", "COS", "TAN", "ASN", "ACS", "ATN")}
+
+# Statements of one keyword and a list of expressions: word -> (least and most
+# arguments, helper the compiled code calls with them, the arguments' kind: "n"
+# numbers, "s" a string, "format" SET's letter and digit).  DEFSEG may write "=" before
+# its value (DEFSEG.md: ``DEFSEG = &H1000``).
+STATEMENTS = {
+    "ANGLE": (1, 1, "_M.set_angle_number", "n"),  # ANGLE.md: 0 degrees, 1 radians, 2 grads
+    "BEEP": (0, 1, "_M.beep", "n"),  # BEEP.md
+    "DEFSEG": (1, 1, "_M.define_segment", "n"),  # DEFSEG.md
+    "POKE": (2, 2, "_M.poke", "n"),  # POKE.md
+    "PASS": (1, 1, "_M.password", "s"),  # PASS.md
+    "MODE": (1, 1, "_M.mode", "n"),  # part 7 (MODE 7 / MODE 8: printer on, off); ANGLE.md (MODE 4 5 6)
+    "VARLIST": (0, 0, "_M.variable_list", "n"),  # VARLIST.md
+    "SET": (1, 1, "_M.set_format", "format"),  # SET.md: SET F n, SET E n, SET N
+}
+# The words that read the variables (the block's values are stored before they run).
+READS_VARIABLES = frozenset({"VARLIST", "VALF"})
+
+# Statements the library writes with nothing after them: a bare DIM declares nothing.
+EMPTY_STATEMENTS = frozenset({"DIM"})
+# RESTORE (expression): the line a computed number names (RESTORE.md).
+COMPUTED_RESTORE = True
+# ON x GOTO a,,b: an empty place does not branch (the library writes it; ON_GOTO.md
+# lets a missing destination fall through).
+EMPTY_ON_TARGETS = True
+# Characters that are operators on the Casio: its integer division is the yen sign
+# (part 6, Arithmetic Operators: -15 ¥ 7), GW-BASIC's backslash.
+OPERATORS = {"¥": "BSLASH"}
+# DIM of an array again with the same sizes is passed over (DIM.md, item 5; other sizes:
+# the DD error), and ERASE of an array that does not exist is no error (ERASE.md, item 2).
+REDIM_SAME = True
+ERASE_MISSING = True
+# The words the scanner reads as keywords in casio only (besides the dialect's own_words).
+KEYWORDS = tuple(FUNCTIONS) + tuple(STATEMENTS) + tuple(SPELLINGS)
+
+# ERR's value: yaseer's error (GW-BASIC's code) -> the manual's error code and name
+# (part-12-2-error-messages.md).  Codes without an entry keep their number.
+ERROR_CODES = {
+    7: (1, "OM"),  # Out of memory
+    2: (2, "SN"),  # Syntax error
+    15: (3, "ST"),  # String too long
+    16: (4, "TC"),  # String formula too complex
+    64: (8, "BF"),  # Bad file name
+    52: (9, "BN"),  # Bad file number
+    6: (13, "OV"),  # Overflow
+    11: (14, "MA"),  # Division by zero
+    5: (14, "MA"),  # Illegal function call (an argument outside the function's range)
+    10: (15, "DD"),  # Duplicate Definition
+    9: (16, "BS"),  # Subscript out of range
+    12: (17, "FC"),  # Illegal direct
+    18: (17, "FC"),  # Undefined user function
+    8: (18, "UL"),  # Undefined line number
+    13: (19, "TM"),  # Type mismatch
+    20: (20, "RE"),  # RESUME without error
+    4: (22, "DA"),  # Out of DATA
+    1: (23, "FO"),  # NEXT without FOR
+    26: (24, "NX"),  # FOR without NEXT
+    3: (25, "GS"),  # RETURN without GOSUB
+    55: (28, "OP"),  # File already open
+    54: (29, "AM"),  # Bad file mode
+    57: (7, "RW"),  # Device I/O error
+    251: (21, "PR"),  # PASS with another password (yaseer's code, errors.PASSWORD_PROTECTED)
+}
+ERR_VALUES = {gw: casio for gw, (casio, _) in ERROR_CODES.items()}
+
+
+class Words:
+    """The tables above as one object, ``Dialect.words`` (its repr names it, so a
+    dialect's repr, part of the compile cache's key, holds no path)."""
+
+    functions = FUNCTIONS
+    sets_x_y = SETS_X_Y
+    deg_function = DEG_FUNCTION
+    spellings = SPELLINGS
+    statements = STATEMENTS
+    reads_variables = READS_VARIABLES
+    empty_statements = EMPTY_STATEMENTS
+    computed_restore = COMPUTED_RESTORE
+    empty_on_targets = EMPTY_ON_TARGETS
+    keywords = KEYWORDS
+    operators = OPERATORS
+    redim_same = REDIM_SAME
+    erase_missing = ERASE_MISSING
+    err_values = ERR_VALUES
+
+    def __repr__(self) -> str:
+        return "casio.Words()"
+
+
+WORDS = Words()

@@ -1,0 +1,205 @@
+"""The FX-850P/880P's own statements and the functions that need the machine: a mixin
+of :class:`~yaseer.basic.machine.Machine` (the casio dialect's words,
+yaseer/basic/dialects/casio.py, compile to calls of these methods).
+
+Each method follows its page of the owner's manual (commands/*.md).  The machine
+keeps what the pocket computer keeps: the angle unit, the segment DEFSEG set and
+the bytes POKE wrote (a dictionary of 20-bit addresses, which PEEK reads back), the
+password, the output format SET chose, whether PRINT also goes to the printer
+(MODE 7), and the last RAN#.
+"""
+
+from __future__ import annotations
+
+import functools
+import random as _random
+
+from yaseer.basic.arithmetic import formatting
+from yaseer.basic.arithmetic import casio_math
+from yaseer.basic.machine import runtime
+from yaseer.basic.errors import (
+    BasicError, OVERFLOW, PASSWORD_PROTECTED, SYNTAX_ERROR, TYPE_MISMATCH,
+)
+
+ANGLE_UNITS = ("DEG", "RAD", "GRA")  # ANGLE 0, 1, 2 (ANGLE.md)
+MODE_ANGLES = {4: "DEG", 5: "RAD", 6: "GRA"}  # the MODE key's angle units (ANGLE.md, item 4)
+PRINTER_ON, PRINTER_OFF = 7, 8  # MODE 7 / MODE 8 (part 7, "PRT ON mode")
+ADDRESS_SPACE = 1 << 20  # segment * 16 + offset: the FX-850P's 20-bit addresses (DEFSEG.md)
+VARLIST_COLUMN = 8  # VARLIST.md shows the names in columns of 8 on the 32-column display
+_system_random = _random.Random()  # RAN# without a repeatable table: seeded by the system
+
+
+def _whole_in(x: float, low: int, high: int) -> int:
+    """``x`` truncated to an integer, which must be in low..high (else Illegal function call)."""
+    n = int(x)
+    if not low <= n <= high:
+        raise casio_math.illegal()
+    return n
+
+
+def _operand16(x: float) -> float:
+    """An operand of ``¥`` and MOD: truncated, in -32768..32767 (MOD.md), else Overflow."""
+    n = int(x)
+    if not -32768 <= n <= 32767:
+        raise BasicError("Overflow", OVERFLOW)
+    return float(n)
+
+
+def int_divide(a: float, b: float) -> float:
+    """a ¥ b on the truncated operands (part 6, Arithmetic Operators: -15 ¥ 7 is -2)."""
+    return runtime.int_divide(_operand16(a), _operand16(b))
+
+
+def modulo(a: float, b: float) -> float:
+    """a MOD b on the truncated operands, the sign of the dividend (MOD.md: -15 MOD 7 is -1)."""
+    return runtime.modulo(_operand16(a), _operand16(b))
+
+
+# The operators whose operands the Casio truncates (part 6: "Fractions are truncated in
+# ¥ and MOD"; logical operations: "operands truncated to integers"), where yaseer's
+# common runtime rounds them (runtime.cint).
+OPERATORS = {
+    "_idiv": int_divide, "_mod": modulo,
+    "_and": lambda a, b: float(int(a) & int(b)), "_or": lambda a, b: float(int(a) | int(b)),
+    "_xor": lambda a, b: float(int(a) ^ int(b)), "_not": lambda a: float(~int(a)),
+}
+
+
+class CasioWords:
+    """The casio statements' and machine functions' methods (see the module docstring)."""
+
+    def init_casio_words(self) -> None:
+        # (DEFSEG's ``segment`` and POKE's ``memory`` are the console's: console.py, PEEK)
+        self.password_set: str | None = None
+        self.print_echo = False  # MODE 7: PRINT also prints on the printer
+        self.last_ran = 0.5
+        self.err_codes = self.dialect.words.err_values if self.dialect.words else {}
+
+    # -- statements
+    def set_angle_number(self, n: float) -> None:
+        """ANGLE n: 0 degrees, 1 radians, 2 grads (n truncated; 0 <= n < 3)."""
+        self.set_angle(ANGLE_UNITS[_whole_in(n, 0, 2)])
+
+    def beep(self, tone: float = 0.0) -> None:
+        """BEEP [0|1]: the buzzer, a low or a high tone.  yaseer has no buzzer: a terminal
+        hears its bell; output to a file or a pipe is left as it is."""
+        stream = self.screen.stream
+        isatty = getattr(stream, "isatty", None)
+        if isatty is not None and isatty():
+            stream.write("\a")
+            stream.flush()
+
+    def define_segment(self, segment: float) -> None:
+        """DEFSEG = s: the segment PEEK and POKE add (times 16) to their addresses;
+        -32768 <= s < 65536, a negative segment counts from 65536."""
+        self.segment = _whole_in(segment, -32768, 65535) % 65536
+
+    def poke(self, offset: float, data: float) -> None:
+        """POKE a, d: the byte d (0..255, truncated) at address a of the segment."""
+        self.memory[self._address(offset)] = _whole_in(data, 0, 255)  # (the address as PEEK's: console.py)
+
+    def password(self, text: str) -> None:
+        """PASS "word": registers the password (its first 8 characters), or cancels it when
+        it is the one registered; another one is the PR error."""
+        word = text[:8]
+        if not word:
+            raise casio_math.illegal()
+        if self.password_set is None:
+            self.password_set = word
+        elif word == self.password_set:
+            self.password_set = None
+        else:
+            raise BasicError("Wrong password", PASSWORD_PROTECTED)
+
+    def mode(self, n: float) -> None:
+        """MODE 4, 5, 6: degrees, radians, grads; MODE 7 / MODE 8: PRINT also on the
+        printer, or not.  The other modes are keyboard modes (CAL, BASIC, ...) or the
+        machine's own routines: Illegal function call in a program."""
+        k = int(n)
+        if k in MODE_ANGLES:
+            self.set_angle(MODE_ANGLES[k])
+        elif k in (PRINTER_ON, PRINTER_OFF):
+            self.print_echo = k == PRINTER_ON
+        else:
+            raise casio_math.illegal()
+
+    def variable_list(self) -> None:
+        """VARLIST: the names of the variables (as they were written, in the order of their
+        characters) and of the arrays (with ``()``), in columns of 8, four to a line of the
+        32-column display."""
+        names = sorted(self.scalars) + [name + "()" for name in sorted(self.arrays)]
+        width = 4 * VARLIST_COLUMN
+        line = ""
+        for name in names:
+            cell = name.ljust(VARLIST_COLUMN * -(-len(name) // VARLIST_COLUMN))
+            if len(line) + len(cell) > width:
+                self.print_items(0, (line.rstrip(),), True)
+                line = ""
+            line += cell
+        if line:
+            self.print_items(0, (line.rstrip(),), True)
+
+    def set_format(self, style: str, digits: int) -> None:
+        """SET F n (n decimals), SET E n (n significant digits, E0 ten), SET N (neither):
+        how PRINT and LPRINT show numbers from now on (SET.md)."""
+        if style == "N":
+            self._number_text = formatting.number_to_text
+        else:
+            self._number_text = functools.partial(casio_math.formatted_number, style=style, digits=digits)
+
+    # -- functions that need the machine
+    def ran(self, x: float | None = None) -> float:
+        """RAN#(x) (RAN_HASH.md): x > 0 the next number of the table RUN restarts (the same
+        series at every run), 0 the last number again, x < 0 or no argument a number from
+        the random table (a generator the system seeds); always 0 < value < 1."""
+        if x is not None and x > 0:
+            value = self.random.rnd(1.0)
+        elif x == 0:
+            return self.last_ran
+        else:
+            value = _system_random.random()
+        while value == 0.0:
+            value = _system_random.random()
+        self.last_ran = value
+        return value
+
+    def valf(self, text: str) -> float:
+        """VALF(s$): the numeric expression ``s$`` evaluated with the variables as they are
+        (VALF.md); a VALF inside it is Illegal function call, a string Type mismatch."""
+        code = _valf_code(text, self.dialect)
+        namespace = self.namespaces.get(0) or next(iter(self.namespaces.values()))
+        return eval(code, namespace)  # noqa: S307 - code the compiler generated from BASIC
+
+
+@functools.lru_cache(maxsize=256)
+def _valf_code(text: str, dialect) -> str:
+    """The Python expression VALF evaluates for the BASIC expression ``text``."""
+    from yaseer.basic.source import syntax_tree as ast
+    from yaseer.basic.compile.expressions import FnScope
+    from yaseer.basic.compile.compiler import AreaCompiler
+    from yaseer.basic.source.parser import parse_statements
+
+    try:
+        statements = parse_statements("X=" + text, dialect)
+    except BasicError:
+        raise BasicError("Syntax error", SYNTAX_ERROR) from None
+    if len(statements) != 1 or not isinstance(statements[0], ast.Let):
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+    node = statements[0].value
+    if any(isinstance(n, ast.Call) and n.name == "VALF" for n in _nodes(node)):
+        raise casio_math.illegal()
+    compiler = AreaCompiler([], direct=True, dialect=dialect)
+    code, kind = compiler.expr(node, FnScope(compiler, []))
+    if kind == "s":
+        raise BasicError("Type mismatch", TYPE_MISMATCH)
+    return code
+
+
+def _nodes(node):
+    """``node`` and every expression node inside it."""
+    yield node
+    for name in getattr(node, "_fields", ()):
+        value = getattr(node, name)
+        for part in value if isinstance(value, (list, tuple)) else (value,):
+            if hasattr(part, "_fields"):
+                yield from _nodes(part)
