@@ -35,7 +35,7 @@ PROGRAMS = {
     "printing as it goes": (
         "10 FOR I=1 TO 4000\n20 FOR J=1 TO 30: S=S+I MOD J: NEXT J: PRINT S;\n"
         "30 IF I MOD 8=0 THEN PRINT\n40 NEXT I\n50 PRINT"),
-    "WHILE ... WEND": "10 WHILE N<150000: N=N+1: S=S+N MOD 3: WEND\n20 PRINT N;S",
+    "WHILE ... WEND": "10 WHILE N<150000: N=N+1: S=S+(N AND 3): WEND\n20 PRINT N;S",  # (casio's MOD: 16 bits)
     "an error handler": (
         "10 ON ERROR GOTO 100\n20 FOR I=1 TO 60000: X=I/(I MOD 7000): S=S+X: NEXT I\n30 PRINT S;E\n40 END\n"
         "100 E=E+1: RESUME NEXT"),

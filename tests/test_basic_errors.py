@@ -41,7 +41,7 @@ from test_basic_helpers import error_of
     ("10 FOR I=1 TO 3\n20 GOSUB 20", "Out of memory in 20"),
     ("10 DEF FNA(X)=X*2\n20 Y=FNA(\"s\")", "Type mismatch in 20"),
     ("10 DEF FNA(X)=X\n20 Y=FNA(1, 2)", "Syntax error in 20"),
-    ("10 DIM M(5)\n20 DIM M(5)", "Duplicate Definition in 20"),
+    ("10 DIM M(5)\n20 DIM M(6)", "Duplicate Definition in 20"),  # (the same sizes again: passed over, DIM.md)
     ("10 INPUT A", "Input past end in 10"),
     ("10 X=VAL(\"1E999\")", "Overflow in 10"),
     ("10 PRINT TAB(256)", "Illegal function call in 10"),

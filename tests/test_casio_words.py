@@ -220,7 +220,7 @@ def test_dim_and_the_dd_error():  # DIM.md: its sample, the same declaration aga
     assert run_text("10 DIM A$(5)\n20 FOR I=65 TO 70\n30 A$(I-65)=CHR$(I)\n40 PRINT A$(I-65);\n50 NEXT I\n") == \
         "ABCDEF"
     assert run_values("10 DIM B(3): B(2)=4: DIM B(3): PRINT B(2)\n") == [[4.0]]  # discarded, not cleared
-    assert error_of("10 DIM B(3): DIM B(4)") == "Duplicate definition in 10"
+    assert error_of("10 DIM B(3): DIM B(4)") == "Duplicate Definition in 10"
     assert run_values("10 DIM: ERASE Q: DIM Q(2): PRINT 1\n") == [[1.0]]  # the library's bare DIM
 
 

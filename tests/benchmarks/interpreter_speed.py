@@ -19,7 +19,7 @@
    yaseer, in process (yaseer's compile + run, casio) and as whole processes
    (``python -m yaseer run [--dialect gw]``, which adds Python's start-up) in each
    dialect; goal (issues 15 and 22): every whole process at least 20x faster.
-3. ``--arith decimal`` (casio's 13-digit decimal arithmetic, yaseer/basic/arithmetic/
+3. ``--arith decimal`` (casio's 12-digit decimal arithmetic, yaseer/basic/arithmetic/
    decimal_arith.py) against binary on the same classic programs, loop counts
    multiplied by ``--decimal-scale``, in process (compile + run); needs no bwbasic.
    Goal (issue 22): decimal at most 3x binary.

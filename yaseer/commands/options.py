@@ -190,7 +190,7 @@ RUN_OPTIONS = ("running the listing (the same in run, diff, plot, animate and re
     DIALECT,
     Option("--angle", "unit of SIN COS TAN ATN at the start (default: the dialect's: casio deg, gw rad)",
            choices=ANGLES),
-    Option("--arith", "casio's arithmetic: binary (IEEE doubles, default) or decimal (13 digits inside, "
+    Option("--arith", "casio's arithmetic: binary (IEEE doubles, default) or decimal (12 digits inside, "
                       "as the FX-850P family's BCD)", choices=("binary", "decimal"), default="binary"),
     Option("--input", "answer INPUT statements with the lines of FILE (default: standard input)", metavar="FILE"),
     Option("--files", "the one directory the program's OPEN, KILL, NAME and FILES use "

@@ -4,7 +4,7 @@
   as ``yaseer run FILE --format csv --method N=NAME`` runs it; its time per
   position is the time of ``machine.run()`` / printed rows.
 * ``listing (decimal)``: the same with ``--arith decimal`` (the BASIC part in the
-  FX-850P family's 13-digit decimal arithmetic; the library programs stay binary).
+  FX-850P family's 12-digit decimal arithmetic; the library programs stay binary).
 * ``per position``: the Python programs called once per crank angle (floats).
 * ``array``: one vectorised call over the whole cycle (numpy arrays).
 

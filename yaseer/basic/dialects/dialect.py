@@ -118,7 +118,7 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         suffixes and ``&H``/``&O`` literals.
 
         ``arithmetic``: ``"binary"`` (IEEE doubles, or GW's types) or
-        ``"decimal"`` (``--arith decimal``, casio only: 13-digit decimal
+        ``"decimal"`` (``--arith decimal``, casio only: 12-digit decimal
         arithmetic as the FX-850P family's BCD, yaseer/basic/arithmetic/decimal_arith.py).
 
     Print rules

@@ -12,7 +12,6 @@ password, the output format SET chose, whether PRINT also goes to the printer
 from __future__ import annotations
 
 import functools
-import random as _random
 
 from yaseer.basic.arithmetic import formatting
 from yaseer.basic.arithmetic import casio_math
@@ -24,9 +23,7 @@ from yaseer.basic.errors import (
 ANGLE_UNITS = ("DEG", "RAD", "GRA")  # ANGLE 0, 1, 2 (ANGLE.md)
 MODE_ANGLES = {4: "DEG", 5: "RAD", 6: "GRA"}  # the MODE key's angle units (ANGLE.md, item 4)
 PRINTER_ON, PRINTER_OFF = 7, 8  # MODE 7 / MODE 8 (part 7, "PRT ON mode")
-ADDRESS_SPACE = 1 << 20  # segment * 16 + offset: the FX-850P's 20-bit addresses (DEFSEG.md)
 VARLIST_COLUMN = 8  # VARLIST.md shows the names in columns of 8 on the 32-column display
-_system_random = _random.Random()  # RAN# without a repeatable table: seeded by the system
 
 
 def _whole_in(x: float, low: int, high: int) -> int:
@@ -152,14 +149,16 @@ class CasioWords:
         """RAN#(x) (RAN_HASH.md): x > 0 the next number of the table RUN restarts (the same
         series at every run), 0 the last number again, x < 0 or no argument a number from
         the random table (a generator the system seeds); always 0 < value < 1."""
+        import random  # here: a run without random numbers does not load it (start-up)
+
         if x is not None and x > 0:
             value = self.random.rnd(1.0)
         elif x == 0:
             return self.last_ran
         else:
-            value = _system_random.random()
+            value = random.random()  # the random table: Python's generator, seeded by the system
         while value == 0.0:
-            value = _system_random.random()
+            value = random.random()
         self.last_ran = value
         return value
 

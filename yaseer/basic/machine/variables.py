@@ -32,18 +32,23 @@ class Variables:
     """Scalars (``scalars``: name -> float or str) and arrays (``arrays``: name -> list,
     nested for more than one dimension).  A mixin of ``Machine``, on its state."""
 
+    def variable_name(self, name: str) -> str:
+        """``name`` as the dialect spells variables: in upper case unless names keep their
+        case (casio: ``a`` and ``A`` are two variables)."""
+        return name if self.dialect.names_keep_case else name.upper()
+
     def scalar(self, name: str):
         """The value of scalar ``name`` (0.0, or "" for a string, if unset)."""
-        name = name.upper()
+        name = self.variable_name(name)
         return self.scalars.get(name, initial_value(name))
 
     def set_scalar(self, name: str, value) -> None:
-        name = name.upper()
+        name = self.variable_name(name)
         self.scalars[name] = str(value) if name.endswith("$") else float(value)
 
     def array(self, name: str) -> list:
         """The 1-D array ``name`` as a mutable list indexed by subscript."""
-        return self.array_nd(name.upper(), 1)
+        return self.array_nd(self.variable_name(name), 1)
 
     def array_nd(self, name: str, ndim: int) -> list:
         """Array ``name``; created with its implicit dimension(s) if the program has none."""
@@ -73,7 +78,7 @@ class Variables:
             words = self.dialect.words
             if words and words.redim_same and dims == self.array_dims.get(name):
                 return  # the Casio passes over the same declaration again (DIM.md)
-            raise BasicError("Duplicate definition", DUPLICATE_DEFINITION)
+            raise BasicError.of_code(DUPLICATE_DEFINITION)
         if any(d < 0 for d in dims):
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         if any(d < self.subscript_base for d in dims):  # DIM A(0) under OPTION BASE 1: no element
