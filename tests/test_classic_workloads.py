@@ -23,7 +23,7 @@ from pathlib import Path
 
 import pytest
 
-from test_differential_support import PcBasic
+from test_differential_support import PcBasic, core
 from yaseer.basic.machine.machine import Machine
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -45,7 +45,7 @@ WORKLOADS = classic.in_repo()
 
 def yaseer_output(text: str, dialect: str = "casio") -> str:
     screen = io.StringIO()
-    machine = Machine(screen=screen, angle="rad", dialect=dialect)
+    machine = Machine(screen=screen, angle="rad", dialect=core(dialect))  # (casio: its MS-BASIC core)
     machine.load(text)
     machine.run()
     return screen.getvalue()

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from test_differential_support import clean_output
+from test_differential_support import clean_output, core
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 
@@ -42,7 +42,7 @@ def yaseer_run(source: str, directory: Path, dialect: str = "gw") -> str:
     from yaseer.basic.machine.machine import Machine
 
     screen = io.StringIO()
-    machine = Machine(screen=screen, dialect=dialect, angle="rad", files=directory)
+    machine = Machine(screen=screen, dialect=core(dialect), angle="rad", files=directory)  # (casio: its MS-BASIC core)
     machine.load(source)
     try:
         machine.run()
