@@ -125,8 +125,9 @@ def test_deg_sexagesimal_to_decimal():  # DEG.md: DEG(1, 30, 10)
 
 
 def test_dms_decimal_to_sexagesimal_string():  # DMS_STRING.md: DMS$(1.52)
-    assert run_text('10 N=1.52\n20 PRINT "=" ; DMS$(N)\n') == "=1°31'12\"\n"
-    assert run_text('10 PRINT DMS$(-2.5); " "; DMS$(0.0001)\n') == "-2°30'0\" 0°0'0.36\"\n"
+    # the degree sign is the Casio's code &HDF, shown as the small circle of its character set
+    assert run_text('10 N=1.52\n20 PRINT "=" ; DMS$(N); ASC(MID$(DMS$(N), 2))\n') == "=1ﾟ31'12\" 223 \n"
+    assert run_text('10 PRINT DMS$(-2.5); " "; DMS$(0.0001)\n') == "-2ﾟ30'0\" 0ﾟ0'0.36\"\n"
     assert run_text('10 PRINT DMS$(2E6)\n') == "2000000\n"  # from 1E6 on: no minutes, no seconds
 
 

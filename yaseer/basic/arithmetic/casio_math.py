@@ -19,6 +19,9 @@ from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, OVERFLOW
 LARGEST = 9.999999999999e99  # the Casio's range ends below 1E+100 (specifications)
 RIGHT_ANGLE = {"DEG": 90.0, "RAD": math.pi / 2, "GRA": 100.0}  # one quarter turn in each unit
 TO_RADIANS = {"DEG": math.pi / 180.0, "RAD": 1.0, "GRA": math.pi / 200.0}
+# DMS$'s degree sign: the character code &HDF, the small circle of the Casio character set
+# (part-12-1-character-code-table.md; shown as the half-width ﾟ): the table has no other
+DEGREE_SIGN = "\xdf"
 HYPERBOLIC_LIMIT = 230.2585092  # |x| of HYP SIN / HYP COS (the manual's page): ln(1E100)
 
 
@@ -130,7 +133,7 @@ def from_sexagesimal(degrees: float, minutes: float = 0.0, seconds: float = 0.0)
 
 
 def to_sexagesimal(x: float) -> str:
-    """DMS$(x): ``d°m's"`` with the seconds to the display's 10 digits (DMS_STRING.md);
+    """DMS$(x): ``d°m's"`` (the degree sign the Casio's code &HDF) with the seconds to the display's 10 digits (DMS_STRING.md);
     from 1E6 on the minutes and seconds are left out and the absolute value is written."""
     from decimal import ROUND_HALF_UP, Decimal
 
@@ -146,7 +149,7 @@ def to_sexagesimal(x: float) -> str:
                                       rounding=ROUND_HALF_UP)
     degrees, rest = divmod(seconds, 3600)
     minutes, seconds = divmod(rest, 60)
-    text = f"{int(degrees)}°{int(minutes)}'{_plain(seconds)}\""
+    text = f"{int(degrees)}{DEGREE_SIGN}{int(minutes)}'{_plain(seconds)}\""
     return "-" + text if x < 0 else text
 
 
