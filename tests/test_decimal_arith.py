@@ -145,14 +145,14 @@ def test_functions_at_the_edges_agree_with_mpmath(function):
     name, _, unit = function.partition(" ")
     for text in EDGES + [str(k) for k in range(1, 1001, 7)]:
         for sign in (1, -1):
-            x = Fraction(text) * sign
+            x = Fraction(format(float(Fraction(text)), ".12g")) * sign  # (read in as 12 digits)
             if name in ("sqrt", "log") and x <= 0 or name == "exp" and abs(x) > 200:
                 continue
             arg = mpmath.mpf(x.numerator) / x.denominator
             angle = arg if unit else arg * mpmath.pi / 180
             reference = {"sqrt": mpmath.sqrt, "exp": mpmath.exp, "log": mpmath.log, "sin": mpmath.sin,
                          "cos": mpmath.cos}[name](arg if name in ("sqrt", "exp", "log") else angle)
-            expected = round13(Fraction(mpmath.nstr(reference, 35, min_fixed=-40, max_fixed=40)))
+            expected = round12(Fraction(mpmath.nstr(reference, 35, min_fixed=-40, max_fixed=40)))
             if name in ("sin", "cos") and not unit and x % 90 == 0:
                 expected = round(float(reference))  # exact at right angles, as the manual's degree mode
             ours = getattr(D, name)(float(x), not unit) if name in ("sin", "cos") else getattr(D, name)(float(x))
