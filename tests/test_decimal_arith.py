@@ -38,6 +38,13 @@ def round12(value: Fraction) -> float:
     return sign * float(Fraction(digits) / scale)
 
 
+# each arithmetic operation by name, beside its exact result on Fractions
+EXACT_OPERATIONS = [
+    ("add", lambda a, b: a + b), ("subtract", lambda a, b: a - b),
+    ("multiply", lambda a, b: a * b), ("divide", lambda a, b: a / b),
+]
+
+
 def random_decimal(rng: random.Random) -> Fraction:
     """A decimal of 1..12 significant digits between 1e-6 and 1e7 (either sign)."""
     digits = rng.randint(1, 12)
@@ -46,10 +53,7 @@ def random_decimal(rng: random.Random) -> Fraction:
     return -value if rng.random() < 0.3 else value
 
 
-@pytest.mark.parametrize("name, exact", [
-    ("add", lambda a, b: a + b), ("subtract", lambda a, b: a - b),
-    ("multiply", lambda a, b: a * b), ("divide", lambda a, b: a / b),
-])
+@pytest.mark.parametrize("name, exact", EXACT_OPERATIONS)
 def test_operations_round_the_exact_result_to_12_digits(name, exact):
     rng = random.Random(13)
     operation = getattr(D, name)
@@ -69,10 +73,7 @@ def random_eighths(rng: random.Random) -> Fraction:
     return Fraction(rng.randint(-size, size))
 
 
-@pytest.mark.parametrize("name, exact", [
-    ("add", lambda a, b: a + b), ("subtract", lambda a, b: a - b),
-    ("multiply", lambda a, b: a * b), ("divide", lambda a, b: a / b),
-])
+@pytest.mark.parametrize("name, exact", EXACT_OPERATIONS)
 def test_counts_and_fractions_of_eighths_round_as_any_other_decimal(name, exact):
     # the operands for which the arithmetic takes its short cut (multiples of 1/8 below
     # 1E9) and their neighbours: the same exactly rounded results
