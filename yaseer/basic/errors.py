@@ -77,6 +77,11 @@ def error_message(code: int) -> str:
     return MESSAGES.get(code, "Unprintable error")
 
 
+def error_for(code: int) -> "BasicError":
+    """The BasicError for error ``code`` with the message GW-BASIC prints for it."""
+    return BasicError(error_message(code), code)
+
+
 def undefined_line_message(line: int, names_line: bool) -> str:
     """``Undefined line number``, naming the missing ``line`` when ``names_line``
     (``Dialect.names_missing_line``)."""

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from yaseer.basic.machine.files import read_program
 from yaseer.basic.errors import (
-    BAD_FILE_MODE, ILLEGAL_FUNCTION_CALL, PATH_FILE_ACCESS_ERROR, UNDEFINED_LINE, BasicError, error_message,
+    BAD_FILE_MODE, ILLEGAL_FUNCTION_CALL, PATH_FILE_ACCESS_ERROR, UNDEFINED_LINE, error_for,
 )
 from yaseer.basic.machine.signals import ProgramEnd
 
@@ -50,10 +50,6 @@ class RunAgain(ProgramEnd):
         self.lines, self.line, self.keep_files = lines, line, keep_files
 
 
-def _error(code: int) -> BasicError:
-    return BasicError(error_message(code), code)
-
-
 class Chaining:
     """CHAIN and MERGE on the machine's programs and variables (a mixin of ``Machine``)."""
 
@@ -67,7 +63,7 @@ class Chaining:
             name += ".BAS"  # GIO86.ASM NAMBAS
         data = read_program(self.files.sandbox, name)
         if merge and data[:1] >= bytes((TOKENISED - 1,)):
-            raise _error(BAD_FILE_MODE)  # DSKCOM.ASM OKGET2
+            raise error_for(BAD_FILE_MODE)  # DSKCOM.ASM OKGET2
         text = program_text(data)
         return {number: line for number, line, _ in split_lines(text, self.dialect.joins_unnumbered_lines)}
 
@@ -99,10 +95,10 @@ class Chaining:
             first, last = argument
             doomed = [n for n in program if (first or 0) <= n <= (65529 if last is None else last)]
             if not doomed or (first is not None and first not in program and first == last):
-                raise _error(ILLEGAL_FUNCTION_CALL)
+                raise error_for(ILLEGAL_FUNCTION_CALL)
             raise ChainTo({n: t for n, t in program.items() if n not in doomed}, False, None, True, None, False)
         elif name == "EDIT" and argument not in program:
-            raise _error(UNDEFINED_LINE)
+            raise error_for(UNDEFINED_LINE)
         raise ProgramEnd()
 
     def _list_lines(self, program: dict, line_range, device: int) -> None:
@@ -127,7 +123,7 @@ class Chaining:
         try:
             path.write_bytes(text.encode("latin-1", errors="replace"))
         except OSError:
-            raise _error(PATH_FILE_ACCESS_ERROR) from None
+            raise error_for(PATH_FILE_ACCESS_ERROR) from None
 
     def run_again(self, again: RunAgain) -> int:
         """Carry out RUN: the program (a new one from a file), fresh variables, the files
@@ -145,7 +141,7 @@ class Chaining:
         if again.line is None:
             return 0
         if again.line not in self.programs.get(0, {}):
-            raise _error(UNDEFINED_LINE)  # RUN has left the line it was in: none is named
+            raise error_for(UNDEFINED_LINE)  # RUN has left the line it was in: none is named
         return self._line_block(again.line)
 
     def chain(self, name: str, merge: bool, line, everything: bool, delete, run: bool = True) -> None:
@@ -163,7 +159,7 @@ class Chaining:
         """CHAIN's line number: an unsigned 16-bit number (GWMAIN.ASM ``FRQINT``)."""
         n = round(line)
         if not -32768 <= n <= 65535:
-            raise _error(6)
+            raise error_for(6)
         return n & 0xFFFF
 
     def _check_range(self, delete) -> None:
@@ -173,7 +169,7 @@ class Chaining:
         if last is None:
             last = max(program, default=0)
         if last not in program or (first is not None and first > last):
-            raise _error(ILLEGAL_FUNCTION_CALL)
+            raise error_for(ILLEGAL_FUNCTION_CALL)
 
     def chained(self, chain: ChainTo) -> int | None:
         """Carry out a CHAIN or MERGE: the program and variables it leaves; the block of area
@@ -202,7 +198,7 @@ class Chaining:
         block = 0
         if chain.line:  # line 0: the start (FIVEO.ASM CHNRET)
             if chain.line not in program:
-                raise _error(UNDEFINED_LINE).at(self.line)
+                raise error_for(UNDEFINED_LINE).at(self.line)
             block = self._line_block(chain.line)
         self._compiled(0)
         self.clear()

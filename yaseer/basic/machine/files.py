@@ -27,7 +27,7 @@ if TYPE_CHECKING:  # pathlib is imported where a file is used, not at start-up
 
 from yaseer.basic.errors import (
     BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
-    FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, BasicError, error_message,
+    FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, error_for,
 )
 from yaseer.basic.machine import random_files
 from yaseer.basic.machine.runtime import cint
@@ -38,10 +38,6 @@ END_OF_FILE = "\x1a"  # Ctrl-Z
 RECORD = 128  # bytes: LOC counts these
 LINE_LIMIT = 255  # characters LINE INPUT # reads into one string
 _MODES = {"I": "I", "O": "O", "A": "A", "R": "R", "INPUT": "I", "OUTPUT": "O", "APPEND": "A", "RANDOM": "R"}
-
-
-def _error(code: int) -> BasicError:
-    return BasicError(error_message(code), code)
 
 
 class Sandbox:
@@ -63,24 +59,24 @@ class Sandbox:
         from pathlib import Path
 
         if not name or "\x00" in name:
-            raise _error(BAD_FILE_NAME)
+            raise error_for(BAD_FILE_NAME)
         relative = Path(name.replace("\\", "/"))
         if relative.is_absolute() or relative.drive or ".." in relative.parts or ":" in name:
-            raise _error(PATH_FILE_ACCESS_ERROR)
+            raise error_for(PATH_FILE_ACCESS_ERROR)
         root = self.root.resolve()
         candidate = root / relative
         try:
             resolved = candidate.resolve()
         except (OSError, RuntimeError):  # a symbolic link loop
-            raise _error(PATH_FILE_ACCESS_ERROR) from None
+            raise error_for(PATH_FILE_ACCESS_ERROR) from None
         if resolved != root and root not in resolved.parents:
-            raise _error(PATH_FILE_ACCESS_ERROR)
+            raise error_for(PATH_FILE_ACCESS_ERROR)
         return candidate
 
     def existing(self, name: str) -> Path:
         path = self.path(name)
         if not path.is_file():
-            raise _error(FILE_NOT_FOUND)
+            raise error_for(FILE_NOT_FOUND)
         return path
 
     def kill(self, name: str) -> None:
@@ -89,18 +85,18 @@ class Sandbox:
         try:
             path.unlink()
         except OSError:
-            raise _error(PATH_FILE_ACCESS_ERROR) from None
+            raise error_for(PATH_FILE_ACCESS_ERROR) from None
 
     def rename(self, old: str, new: str) -> None:
         """NAME old AS new."""
         source = self.existing(old)
         target = self.path(new)
         if target.exists():
-            raise _error(FILE_ALREADY_EXISTS)
+            raise error_for(FILE_ALREADY_EXISTS)
         try:
             source.rename(target)
         except OSError:
-            raise _error(PATH_FILE_ACCESS_ERROR) from None
+            raise error_for(PATH_FILE_ACCESS_ERROR) from None
 
     def listing(self, pattern: str | None = None) -> list[str]:
         """FILES [pattern]: the names of the files in the sandbox that match (``*`` ``?``);
@@ -110,7 +106,7 @@ class Sandbox:
         names = sorted(p.name for p in self.root.iterdir() if p.is_file())
         found = [n for n in names if fnmatch.fnmatch(n.upper(), (pattern or "*").upper())]
         if pattern is not None and not found:
-            raise _error(FILE_NOT_FOUND)
+            raise error_for(FILE_NOT_FOUND)
         return found
 
 
@@ -122,7 +118,7 @@ class Sandbox:
         Names starting with ``.`` are hidden."""
         if pattern is not None:
             if not pattern:
-                raise _error(BAD_FILE_NAME)
+                raise error_for(BAD_FILE_NAME)
             self.path(pattern.replace("*", "x").replace("?", "x"))  # the same rules for the pattern
         mask = dos_split((pattern or "*.*").upper())
         dirs, files = [("", ""), ("", ".")], []
@@ -163,7 +159,7 @@ def read_program(sandbox: Sandbox, name: str) -> bytes:
     try:
         return path.read_bytes()
     except OSError:
-        raise _error(PATH_FILE_ACCESS_ERROR) from None
+        raise error_for(PATH_FILE_ACCESS_ERROR) from None
 
 
 def dos_split(name: str) -> tuple[str, str]:
@@ -209,7 +205,7 @@ class OpenFile:
     # -- output
     def output(self) -> OutputStream:
         if self.stream is None:
-            raise _error(BAD_FILE_MODE)
+            raise error_for(BAD_FILE_MODE)
         return self.stream
 
     def close(self) -> None:
@@ -220,7 +216,7 @@ class OpenFile:
     # -- input
     def _input(self) -> str:
         if self.stream is not None:
-            raise _error(BAD_FILE_MODE)
+            raise error_for(BAD_FILE_MODE)
         return self.data
 
     def at_end(self) -> bool:
@@ -231,7 +227,7 @@ class OpenFile:
     def read_chars(self, n: int) -> str:
         data = self._input()
         if self.position + n > len(data):
-            raise _error(INPUT_PAST_END)
+            raise error_for(INPUT_PAST_END)
         text = data[self.position:self.position + n]
         self.position += n
         return text
@@ -245,7 +241,7 @@ class OpenFile:
         n = len(data)
         i = self.position
         if i >= n:
-            raise _error(INPUT_PAST_END)
+            raise error_for(INPUT_PAST_END)
         out: list[str] = []
         after_lf = False
         while i < n and len(out) < LINE_LIMIT:
@@ -272,7 +268,7 @@ class OpenFile:
         while i < n and data[i] in " \r\n":
             i += 1
         if i >= n:
-            raise _error(INPUT_PAST_END)
+            raise error_for(INPUT_PAST_END)
         if not numeric and data[i] == '"':
             close = data.find('"', i + 1)
             close = n if close < 0 else close
@@ -324,7 +320,7 @@ def file_byte(n) -> int:
     number in range that is not open does nothing)."""
     k = cint(n)
     if not 0 <= k <= 255:
-        raise _error(ILLEGAL_FUNCTION_CALL)
+        raise error_for(ILLEGAL_FUNCTION_CALL)
     return k
 
 
@@ -342,7 +338,7 @@ class FileTable:
         ``Bad file number`` (GW-BASIC checks the byte before the file table)."""
         k = file_byte(n)
         if not 1 <= k <= MAX_FILES:
-            raise _error(BAD_FILE_NUMBER)
+            raise error_for(BAD_FILE_NUMBER)
         return k
 
     def open(self, mode: str, n, name: str, length=None) -> None:
@@ -350,10 +346,10 @@ class FileTable:
         ``n``; ``length``: a random file's record length (yaseer.basic.random_files)."""
         kind = _MODES.get(mode.strip().upper())
         if kind is None:
-            raise _error(BAD_FILE_MODE)
+            raise error_for(BAD_FILE_MODE)
         k = self.number(n)
         if k in self.open_files:
-            raise _error(FILE_ALREADY_OPEN)
+            raise error_for(FILE_ALREADY_OPEN)
         for device in self.devices:
             if name.upper().startswith(device):
                 name = name[len(device):]
@@ -363,18 +359,18 @@ class FileTable:
         path = self.sandbox.existing(name) if kind == "I" else self.sandbox.path(name)
         if any(f.path.resolve() == path.resolve() and (kind != f.mode or kind not in "IR")
                for f in self.open_files.values()):
-            raise _error(FILE_ALREADY_OPEN)
+            raise error_for(FILE_ALREADY_OPEN)
         try:
             self.open_files[k] = random_files.RandomFile(path, size) if size else OpenFile(path, kind)
         except IsADirectoryError:
-            raise _error(PATH_FILE_ACCESS_ERROR) from None
+            raise error_for(PATH_FILE_ACCESS_ERROR) from None
         except OSError:
-            raise _error(PATH_FILE_ACCESS_ERROR) from None
+            raise error_for(PATH_FILE_ACCESS_ERROR) from None
 
     def get(self, n) -> OpenFile:
         f = self.open_files.get(self.number(n))
         if f is None:
-            raise _error(BAD_FILE_NUMBER)
+            raise error_for(BAD_FILE_NUMBER)
         return f
 
     # -- random-access files (random_files.py)
@@ -382,7 +378,7 @@ class FileTable:
         """Open file ``n``, which must be a random one (else ``Bad file mode``)."""
         f = self.get(n)
         if f.mode != "R":
-            raise _error(BAD_FILE_MODE)
+            raise error_for(BAD_FILE_MODE)
         return f
 
 
@@ -413,5 +409,5 @@ class FileTable:
         name = dos_name(self.sandbox, name)
         path = self.sandbox.existing(name)
         if any(f.path.resolve() == path.resolve() for f in self.open_files.values()):
-            raise _error(FILE_ALREADY_OPEN)
+            raise error_for(FILE_ALREADY_OPEN)
         self.sandbox.kill(name)

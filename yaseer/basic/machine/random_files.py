@@ -28,7 +28,7 @@ from __future__ import annotations
 import math
 
 from yaseer.basic.errors import (
-    BAD_FILE_MODE, BAD_RECORD_NUMBER, FIELD_OVERFLOW, ILLEGAL_FUNCTION_CALL, OVERFLOW, BasicError, error_message,
+    BAD_FILE_MODE, BAD_RECORD_NUMBER, FIELD_OVERFLOW, ILLEGAL_FUNCTION_CALL, OVERFLOW, error_for,
 )
 
 TYPE_CHECKING = False
@@ -40,10 +40,6 @@ MAX_LENGTH = 32767
 MAX_RECORD = 32767  # the largest record number (a signed 16-bit number above 0)
 
 
-def _error(code: int) -> BasicError:
-    return BasicError(error_message(code), code)
-
-
 def record_length(length) -> int:
     """A record length given to OPEN (None: the default); outside 1..32767 ``Illegal function call``."""
     if length is None:
@@ -52,7 +48,7 @@ def record_length(length) -> int:
 
     n = cint(length)
     if not 1 <= n <= MAX_LENGTH:
-        raise _error(ILLEGAL_FUNCTION_CALL)
+        raise error_for(ILLEGAL_FUNCTION_CALL)
     return n
 
 
@@ -82,9 +78,9 @@ class RandomFile:
 
             width = cint(width)
             if not 0 <= width <= 255:
-                raise _error(ILLEGAL_FUNCTION_CALL)
+                raise error_for(ILLEGAL_FUNCTION_CALL)
             if offset + width > self.length_of_record:
-                raise _error(FIELD_OVERFLOW)
+                raise error_for(FIELD_OVERFLOW)
             self.fields[key] = (offset, width)
             offset += width
         return {key: self._give(key) for _, key in pairs}
@@ -127,9 +123,9 @@ class RandomFile:
             return self.last + 1
         n = math.floor(abs(record) + 0.5) * (1 if record >= 0 else -1)
         if not -32768 <= n <= 65535:
-            raise _error(OVERFLOW)
+            raise error_for(OVERFLOW)
         if not 1 <= n <= MAX_RECORD:
-            raise _error(BAD_RECORD_NUMBER)
+            raise error_for(BAD_RECORD_NUMBER)
         return n
 
     def get(self, scalars: dict, record=None) -> dict[str, str]:
@@ -157,10 +153,10 @@ class RandomFile:
 
     # -- what the file functions and statements ask of any open file
     def output(self):
-        raise _error(BAD_FILE_MODE)  # PRINT # / WRITE # into a record buffer: not emulated
+        raise error_for(BAD_FILE_MODE)  # PRINT # / WRITE # into a record buffer: not emulated
 
     def _input(self):
-        raise _error(BAD_FILE_MODE)  # INPUT # from a record buffer: not emulated
+        raise error_for(BAD_FILE_MODE)  # INPUT # from a record buffer: not emulated
 
     def read_chars(self, n: int) -> str:
         return self._input()
