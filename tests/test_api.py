@@ -77,9 +77,9 @@ def test_a_missing_file_and_an_unknown_method_are_errors_too():
 
 
 def test_input_angle_and_a_program_area_from_text():
-    result = yaseer.run("10 INPUT A, B: PRINT A * B; SIN(A)", input="3, 4\n", angle="rad")
+    result = yaseer.run("10 INPUT A, B: PRINT A * B; SIN(A)", input="3\n4\n", angle="rad")
     assert result.rows.tolist() == [[12.0, pytest.approx(math.sin(3.0), rel=1e-15)]]
-    assert result.text.startswith("? 3, 4\n")  # what INPUT read is echoed as if typed
+    assert result.text.startswith("? 3\n? 4\n")  # what INPUT read is echoed as if typed, a "?" a variable
     area = "10 X = X * 2: RETURN\n"
     assert yaseer.run("10 X = 21: GOSUB PROG 7: PRINT X", prog={7: area}).rows.tolist() == [[42.0]]
 

@@ -170,8 +170,11 @@ def test_second_dim_is_a_duplicate_definition():
     assert error_of("10 DIM M(5): DIM M(6)") == "Duplicate Definition in 10"
 
 
-def test_subscripts_round():
-    assert values("10 L(2)=7: PRINT L(1.6), L(2.4)") == [[7.0, 7.0]]
+def test_subscripts_drop_their_fraction_on_the_casio():
+    # part 6, Arrays: "Fractions are disregarded" (GW-BASIC rounds: test_gw_language)
+    assert values("10 L(2)=7: L(1)=3: PRINT L(1.6), L(2.4), L(2.99)") == [[3.0, 7.0, 7.0]]
+    assert values("10 DIM Q(2.9): Q(2)=4: PRINT Q(2.5)") == [[4.0]]  # DIM.md: the size truncated
+    assert error_of("10 PRINT L(-1)") == "Subscript out of range in 10"
 
 
 # ---------------------------------------------------------------- data, input, functions
@@ -183,7 +186,7 @@ def test_data_read_restore():
 
 
 def test_input_from_a_stream():
-    machine = Machine(screen=io.StringIO(), output_format="csv", input_stream=io.StringIO("3, abc\n"))
+    machine = Machine(screen=io.StringIO(), output_format="csv", input_stream=io.StringIO("3\nabc\n"))  # one answer a variable (INPUT.md)
     machine.load('10 INPUT "N"; N, A$: PRINT N*2, A$')
     machine.run()
     assert machine.screen.stream.getvalue().splitlines()[-1] == "6.0,abc"
@@ -248,11 +251,12 @@ def test_empty_input_answer_is_zero_or_empty_string():
     assert machine.screen.stream.getvalue().splitlines() == ["? ", "? ", " 0 []"]
 
 
-def test_empty_input_answer_for_two_variables_asks_again():
-    machine = Machine(screen=io.StringIO(), input_stream=io.StringIO("\n3,\n"))
-    machine.load("10 INPUT C, D: PRINT C; D")
+def test_input_of_two_variables_asks_for_each_and_exe_alone_keeps_a_value():
+    # INPUT.md: EXE after each answer (items 3, 4); EXE alone keeps a numeric value (item 7)
+    machine = Machine(screen=io.StringIO(), input_stream=io.StringIO("\n3\n"))
+    machine.load("10 C=5: INPUT C, D: PRINT C; D")
     machine.run()
-    assert machine.screen.stream.getvalue().splitlines() == ["? ", "?Redo from start", "? 3,", " 3  0 "]
+    assert machine.screen.stream.getvalue().splitlines() == ["? ", "? 3", " 5  3 "]
 
 
 def test_lprint_goes_to_the_printer_stream():

@@ -74,10 +74,19 @@ def test_input_dollar_reads_keys_and_a_line_break_is_exe():
     assert result.text == " 97  13  98 \n"
 
 
-def test_inkey_takes_one_key_and_is_empty_when_none_is_left():
-    program = '10 K$=INKEY$: IF K$="" THEN PRINT "NONE": END\n20 PRINT K$;: GOTO 10'
+def test_inkey_sees_a_key_only_when_it_looks_again():
+    # INKEY$'s page: the key pressed *while* it looks, else "": a key of the script is pressed
+    # after the program has looked once and found none (the page's sample polls in a loop)
+    program = ('10 K$=INKEY$: IF K$="" THEN N=N+1: IF N<9 THEN 10 ELSE PRINT "NONE": END\n'
+               '20 PRINT K$;N;: N=0: GOTO 10')
     # the API ends a text input with a line break: the third key is EXE, CHR$(13), a new line
-    assert yaseer.run(program, input="OK").text == "OK\nNONE\n"
+    assert yaseer.run(program, input="OK").text == "O 1 K 1 \n 1 NONE\n"  # CHR$(13): a new line
+
+
+def test_inkey_before_input_dollar_leaves_the_key_to_it():
+    # the library's menus: IF INKEY$="" THEN A=ASC(INPUT$(1)) waits at INPUT$ for the key
+    program = '10 A=0: IF INKEY$="" THEN A=ASC(INPUT$(1))\n20 PRINT A: IF A<>13 THEN 10'
+    assert yaseer.run(program, input="I").text == " 73 \n 13 \n"
 
 
 def test_empty_input_answer_keeps_the_numeric_value():

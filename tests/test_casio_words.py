@@ -282,6 +282,27 @@ def test_on_goto_with_empty_places():  # ON_GOTO.md: its sample; an empty place 
         "B\nBACK\n"
 
 
+def test_on_goto_truncates_and_falls_through():  # ON_GOTO.md items 1-2: truncated; below 1 or past the list: on
+    program = '10 FOR I=-2 TO 3: ON I+0.9 GOTO 30, 40: PRINT "ON";I;: NEXT: END\n30 PRINT "A";: NEXT: END\n40 PRINT "B";: NEXT\n'
+    assert run_text(program) == "ON-2 ON-1 ON 0 ABON 3 "  # 1.9 is 1 (A), 2.9 is 2 (B)
+
+
+def test_input_asks_for_each_variable():  # INPUT.md: its example YEAR=, MONTH=, DAY=; items 2-4 and 7
+    program = '10 D=9: INPUT "YEAR=", Y, "MONTH="; M, D\n20 PRINT Y; M; D\n'
+    text = run_text(program, input_stream=io.StringIO("1990\n5\n\n"))
+    assert text.splitlines() == ["YEAR=1990", "MONTH=? 5", "? ", " 1990  5  9 "]
+
+
+def test_array_subscripts_disregard_fractions():  # part 6, Arrays; DIM.md item 2: truncated
+    assert run_values("10 DIM A(3.9): A(3.7)=5: A(1)=2: PRINT A(3); A(1.99); A(3)*A(1.5)\n") == [[5.0, 2.0, 10.0]]
+    assert error_of("10 DIM A(3.9): A(4)=1") == "Subscript out of range in 10"
+    assert error_of("10 DIM A(3): A(-1)=1") == "Subscript out of range in 10"  # part 12: the BS error
+
+
+def test_asc_of_a_null_string_is_zero():  # ASC.md items 1-2
+    assert run_values('10 PRINT ASC("ABC"); ASC("")\n') == [[65.0, 0.0]]
+
+
 def test_if_then_else_chains():  # IF_THEN_ELSE.md: a statement after THEN, ELSE IF, nesting
     program = ('10 FOR A=1 TO 4\n20 IF A=1 THEN PRINT "ONE" ELSE IF A=2 THEN PRINT "TWO" ELSE IF A=3 THEN 40 '
                'ELSE PRINT "MANY"\n30 NEXT A: END\n40 PRINT "THREE": GOTO 30\n')

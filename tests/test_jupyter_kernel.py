@@ -69,8 +69,10 @@ def test_the_screen_streams_into_the_cell_while_the_program_runs(kernel):
 @pytest.mark.parametrize("line, answers", [('--input "3, 4"', "3, 4"), ("--input '3, 4'", "3, 4"),
                                            ('--input "3\\n4"', "3\n4"), ("--input 3\\n4", "3\n4")])
 def test_input_written_as_the_docs_write_it_answers_input(kernel, line, answers):
+    # one line of two answers is GW-BASIC's INPUT A, B (the Casio asks for each variable)
     program = "10 INPUT A, B\n20 PRINT A * B\n" if "," in answers else "10 INPUT A\n15 INPUT B\n20 PRINT A * B\n"
-    messages = execute(kernel, f"%%basic {line}\n{program}")
+    dialect = " --dialect gw" if "," in answers else ""
+    messages = execute(kernel, f"%%basic {line}{dialect}\n{program}")
     echoed = "".join(f"? {answer}\n" for answer in answers.split("\n"))
     assert stdout(messages) == echoed + " 12 \n"
     assert not [m for _, m in messages if m["msg_type"] in ("error", "display_data")]

@@ -307,8 +307,13 @@ class Angles:
         return r * self.cos(theta), r * self.sin(theta)
 
 
+def asc(text: str) -> float:
+    """ASC(s$): the code of the first character; 0 for a null string (ASC.md, item 2)."""
+    return float(ord(text[0])) if text else 0.0
+
+
 RUNTIME = {
-    "_log10": log10, "_cur": cube_root, "_frac": frac, "_fact": factorial, "_ncr": combinations,
+    "_asc0": asc, "_log10": log10, "_cur": cube_root, "_frac": frac, "_fact": factorial, "_ncr": combinations,
     "_npr": permutations, "_round": round_at, "_degf": from_sexagesimal, "_dms": to_sexagesimal,
     "_hex4": hex4, "_sinh": sinh, "_cosh": cosh, "_tanh": tanh, "_asinh": asinh, "_acosh": acosh,
     "_atanh": atanh,

@@ -77,7 +77,7 @@ class _NoWords:
     functions: dict = {}
     statements: dict = {}
     reads_variables = sets_x_y = empty_statements = frozenset()
-    computed_restore = empty_on_targets = False
+    computed_restore = empty_on_targets = truncates = asks_each = False
 
 
 NO_WORDS = _NoWords()

@@ -239,7 +239,8 @@ class ExpressionCompiler:
                 code += f"[{self.whole_index[index.name]}]"  # the subscript of a constant loop's value
             elif isinstance(index, ast.Var) and index.name in self.counting_vars and isinstance(scope, BlockScope) \
                     and not self.plan.option_base:
-                code += f"[int({scope.scalar(index.name)} + 0.5)]"  # a loop variable known to be >= 0
+                rounding = "" if self.words.truncates else " + 0.5"
+                code += f"[int({scope.scalar(index.name)}{rounding})]"  # a loop variable known to be >= 0
             else:
                 code += f"[_ix({self.numeric(index, scope)})]"
         return code

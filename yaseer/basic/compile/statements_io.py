@@ -126,11 +126,23 @@ class InputOutputCompiler:
                 self.assign(target, f"{reader}({channel})", "s" if kind == "s" else self.numbers.widest,
                             scope, self.numbers.typed and kind != "s")
             return
-        kinds = "".join("s" if self.kind_of(t) == "s" else "n" for t in stmt.targets)
+        if stmt.asks is not None and not self.words.asks_each:
+            raise syntax_error()  # a message before a later variable: the Casio's form only
+        if self.words.asks_each and len(stmt.targets) > 1:  # one answer, one EXE, for each variable
+            asks = stmt.asks or [(stmt.prompt, stmt.question_mark)] + [None] * (len(stmt.targets) - 1)
+            for target, ask in zip(stmt.targets, asks):
+                prompt, question = ask or (None, True)
+                self._input_into([target], prompt, question, stmt.at, scope)
+            return
+        self._input_into(stmt.targets, stmt.prompt, stmt.question_mark, stmt.at, scope)
+
+    def _input_into(self, targets, prompt, question_mark, at, scope):
+        """One INPUT's question: ``prompt`` (and "?"), then one line of answers for ``targets``."""
+        kinds = "".join("s" if self.kind_of(t) == "s" else "n" for t in targets)
         values = self.new_temp()
-        limit = f", {stmt.at}" if stmt.at is not None else ""  # INPUT @n;: at most n characters
-        self.emit(f"{values} = _input({stmt.prompt!r}, {stmt.question_mark}, {kinds!r}, {self.asking_again()}{limit})")
-        for n, target in enumerate(stmt.targets):
+        limit = f", {at}" if at is not None else ""  # INPUT @n;: at most n characters
+        self.emit(f"{values} = _input({prompt!r}, {question_mark}, {kinds!r}, {self.asking_again()}{limit})")
+        for n, target in enumerate(targets):
             value = f"{values}[{n}]"
             if kinds[n] == "n" and not self.numbers.typed:  # None: an empty answer keeps the value
                 value = f"({value} if {value} is not None else {self.expr(target, scope)[0]})"

@@ -31,6 +31,7 @@ FUNCTIONS = {
     "DMS$": ("FUNC", ("n",), "s", "_dms"),  # DMS_STRING.md
     "VALF": ("FUNC", ("s",), "n", "_valf"),  # VALF.md
     "HEX$": ("FUNC", ("n",), "s", "_hex4"),  # HEX_STRING.md: four digits
+    "ASC": ("FUNCN", ("s",), "n", "_asc0"),  # ASC.md: 0 for a null string
     "ROUND": ("FUNCN", ("nn",), "n", "_round"),  # ROUND.md
     "NCR": ("FUNCN", ("nn",), "n", "_ncr"),  # NCR.md
     "NPR": ("FUNCN", ("nn",), "n", "_npr"),  # NPR.md
@@ -80,6 +81,13 @@ OPERATORS = {"¥": "BSLASH"}
 # the DD error), and ERASE of an array that does not exist is no error (ERASE.md, item 2).
 REDIM_SAME = True
 ERASE_MISSING = True
+# Subscripts, DIM's sizes and ON's selector drop their fractions (part 6, Arrays: "Fractions
+# are disregarded"; DIM.md and ON_GOTO.md: "truncated to an integer"), where GW-BASIC rounds;
+# and ON falls through for any selector below 1 or past its list (ON_GOTO.md, item 2).
+TRUNCATES = True
+# INPUT asks for each variable on its own, each with the message written before it or a
+# "?" (INPUT.md, items 2-4: EXE after each answer; its example INPUT "YEAR=",Y,"MONTH=",M).
+ASKS_EACH = True
 # The words the scanner reads as keywords in casio only (besides the dialect's own_words).
 KEYWORDS = tuple(FUNCTIONS) + tuple(STATEMENTS) + tuple(SPELLINGS)
 
@@ -132,6 +140,8 @@ class Words:
     redim_same = REDIM_SAME
     erase_missing = ERASE_MISSING
     err_values = ERR_VALUES
+    truncates = TRUNCATES
+    asks_each = ASKS_EACH
 
     def __repr__(self) -> str:
         return "casio.Words()"

@@ -135,6 +135,7 @@ class Console:
         self.user_characters: dict[int, str] = {}  # DEFCHR$: code -> its dots as hex digits
         self.boxed_screens = False  # True: screens are drawn in an LCD's frame (the interactive session)
         self._empty_polls = 0
+        self._looked = False  # INKEY$ has looked since the last key was taken (see inkey)
         screen = self.shown(screen)
         geometry = self.dialect.display
         if geometry is None:
@@ -211,12 +212,20 @@ class Console:
         return text if enter == "\n" else text.replace("\n", enter)
 
     def inkey(self) -> str:
-        """INKEY$: the next key of the stream, or "" (a key script's end answers "" a while,
-        then is Input past end, so a program polling for a key does not spin forever)."""
+        """INKEY$: the key pressed while it looks (INKEY_STRING.md, item 1), else "".  A key of
+        the stream is pressed only after the program has looked once and found none since the
+        last key was taken: a person answers what the screen shows, slower than the machine
+        polls, so ``IF INKEY$="" THEN A=ASC(INPUT$(1))`` waits at INPUT$ as on the machine and
+        a polling loop gets each key.  A key script's end answers "" a while, then is Input
+        past end, so a program polling for a key does not spin forever."""
         self.show_screen()
+        if not self._looked:
+            self._looked = True
+            return ""
         key = self._keys().read(1)
         if key:
             self._empty_polls = 0
+            self._looked = False
             return self._key_text(key)
         self._empty_polls += 1
         if self._empty_polls > EMPTY_POLLS:
@@ -230,6 +239,7 @@ class Console:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         self.show_screen()
         text = self._keys().read(k)
+        self._looked = False
         if len(text) < k:
             raise end_of_keys()
         return self._key_text(text)

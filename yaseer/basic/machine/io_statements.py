@@ -255,6 +255,7 @@ class InputOutput:
             raise end_of_keys()
         line = self.dialect.charset.codes(line)  # keys typed as symbols: the machine's codes
         self.last_input_key = 13  # EXE (PEEK: console.LAST_INPUT_KEY)
+        self._looked = False  # keys were taken: INKEY$ finds the next one only when it looks again
         if self.input_stream is not None:
             self.screen.write(line if line.endswith("\n") else line + "\n")
         else:

@@ -360,7 +360,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         ns = {
             "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range, "type": type, "int": int,
                              "BaseException": BaseException},
-            "_M": self, "_S": self.scalars, "_A": self.arrays, "_arr": self.array_nd, "_ix": runtime.subscript,
+            "_M": self, "_S": self.scalars, "_A": self.arrays, "_arr": self.array_nd, "_ix": self.subscript_check(0),
             "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_END": END, "_DirectJump": DirectJump,
             "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
             "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,

@@ -45,6 +45,15 @@ def subscript(x: float) -> int:
     return int(x + 0.5)
 
 
+def subscript_truncated(x: float) -> int:
+    """An array subscript on the Casio: its fraction disregarded (part 6, Arrays: "Fractions
+    are disregarded"); below 0 is ``Subscript out of range`` (the BS error)."""
+    k = int(x)
+    if k < 0:
+        raise IndexError("negative subscript")
+    return k
+
+
 def subscript_from_one(x: float) -> int:
     """An array subscript under OPTION BASE 1: 0 is ``Subscript out of range``."""
     k = subscript(x)

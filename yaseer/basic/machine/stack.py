@@ -127,7 +127,12 @@ class ControlStack:
         return False
 
     def on_index(self, selector: float, count: int) -> int:
-        """ON x GOTO: the 1-based branch, or 0 to fall through; below 0 is an error."""
+        """ON x GOTO: the 1-based branch, or 0 to fall through; below 0 is an error (GW-BASIC),
+        or falls through too where the dialect truncates the selector (the Casio: ON_GOTO.md)."""
+        words = self.dialect.words
+        if words and words.truncates:
+            k = int(selector) if selector >= 1 else 0
+            return k if k <= count else 0
         k = runtime.cint(selector)
         if k < 0 or k > 255:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)

@@ -73,9 +73,9 @@ class Variables:
 
     def dim(self, name: str, sizes: tuple) -> None:
         """DIM name(sizes): replaces an implicit array; a second DIM is an error."""
-        dims = tuple(runtime.cint(s) for s in sizes)
+        words = self.dialect.words
+        dims = tuple(int(s) if words and words.truncates else runtime.cint(s) for s in sizes)
         if name in self.explicit_arrays:
-            words = self.dialect.words
             if words and words.redim_same and dims == self.array_dims.get(name):
                 return  # the Casio passes over the same declaration again (DIM.md)
             raise BasicError.of_code(DUPLICATE_DEFINITION)
@@ -108,9 +108,16 @@ class Variables:
 
     def set_subscript_base(self, base: int) -> None:
         self.subscript_base = base
-        check = runtime.subscript if base == 0 else runtime.subscript_from_one
+        check = self.subscript_check(base)
         for ns in list(self.namespaces.values()):
             ns["_ix"] = check
+
+    def subscript_check(self, base: int):
+        """The function compiled code checks a computed subscript with (``_ix``)."""
+        words = self.dialect.words
+        if words and words.truncates:
+            return runtime.subscript_truncated
+        return runtime.subscript if base == 0 else runtime.subscript_from_one
 
     def free_memory(self, _any) -> float:
         """FRE(x): bytes left in the array budget (8 bytes a number, 264 a string element: the

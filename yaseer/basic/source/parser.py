@@ -420,14 +420,18 @@ class _ToAst:
         return ast.WordStatement(c[0].value, _values(c[1:]))
 
     def input_stmt(self, c):
-        prompt = None
-        question = True
-        rest = c[1:]
-        if rest and isinstance(rest[0], Token) and rest[0].type == "STRING":
-            prompt = rest[0].value
-            question = rest[1].type == "SEMI"
-            rest = rest[2:]
-        return ast.Input(prompt, question, _values(rest))
+        # each variable with the message before it (the Casio's INPUT "YEAR=",Y,"MONTH=",M)
+        asks, targets, message = [], [], None
+        items = iter(c[1:])
+        for item in items:
+            if isinstance(item, Token) and item.type == "STRING":
+                message = (item.value, next(items).type == "SEMI")
+            elif not isinstance(item, Token):
+                targets.append(item)
+                asks.append(message)
+                message = None
+        prompt, question = asks[0] or (None, True)
+        return ast.Input(prompt, question, targets, asks=asks if any(asks[1:]) else None)
 
     def def_stmt(self, c):
         name = c[2].value

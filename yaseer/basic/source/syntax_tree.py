@@ -431,6 +431,7 @@ class Input:
     targets: list
     channel: object = None  # INPUT #n
     at: int | None = None  # INPUT @n; (the FX-850P library's form)
+    asks: list | None = None  # (message, "?" shown) or None for each target, when a later one has a message
 
 
 @_node
