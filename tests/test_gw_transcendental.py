@@ -272,6 +272,50 @@ def test_fractional_power_is_exp_of_log():
             assert gw.power(x, y) == float(expected), (x, y)
 
 
+# ---------------------------------------------------------------- the integer steps
+# gw_transcendental's $POLY runs on integer mantissas (mbf_integers.poly); its step-by-step
+# form on single_arith's product and add (poly_steps) is the reference it must equal.
+
+POLYNOMIALS = {"SIN": gw._SIN_COEFFICIENTS, "ATN reduction": gw._ATN_REDUCTION, "ATN": gw._ATN_COEFFICIENTS,
+               "LOG numerator": gw._LOG_NUMERATOR, "LOG denominator": gw._LOG_DENOMINATOR,
+               "EXP": gw._EXP_COEFFICIENTS}
+
+
+@pytest.mark.parametrize("name", list(POLYNOMIALS))
+def test_integer_polynomial_equals_the_steps(name):
+    from yaseer.basic.arithmetic import mbf_integers
+
+    coefficients = POLYNOMIALS[name]
+    parts = mbf_integers.coefficient_parts(coefficients)
+    rng = random.Random(name)
+    handed_back = 0
+    # every binade an argument of the functions reaches (ATN's x*x down to the least
+    # single), and within a binade mantissas of every kind: random, and next to a
+    # power of two (where products and sums carry or cancel)
+    arguments = [0.0, single_arith.TINY, 1.0, 0.5]
+    for _ in range(6000):
+        binade = 2.0 ** rng.randint(-128, 2)
+        arguments.append(single_arith.nearest(rng.uniform(0.5, 1.0) * binade))
+        arguments.append(binade * (1 - 2.0 ** -24 * rng.randint(1, 64)))
+        arguments.append(binade * (0.5 + 2.0 ** -24 * rng.randint(1, 64)))
+    for x in arguments:
+        fast = mbf_integers.poly(x, parts)
+        handed_back += fast is None and x >= 2.0 ** -100
+        assert fast is None or fast == gw.poly_steps(x, coefficients), (name, x)
+    assert not handed_back  # only near the range's end are the steps handed back
+
+
+def test_functions_equal_their_step_by_step_form(monkeypatch):
+    from yaseer.basic.arithmetic import mbf_integers
+
+    functions = (gw.sin, gw.cos, gw.tan, gw.atn, lambda x: gw.log(abs(x)) if x else 0.0,
+                 lambda x: gw.exp(x if abs(x) < 80 else x / 2.0 ** 20))
+    arguments = list(random_singles(12, 3000, -30, 30))
+    fast = [[f(x) for x in arguments] for f in functions]
+    monkeypatch.setattr(mbf_integers, "poly", lambda x, parts: None)  # every $POLY step by step
+    assert fast == [[f(x) for x in arguments] for f in functions]
+
+
 # ---------------------------------------------------------------- close to the truth
 
 

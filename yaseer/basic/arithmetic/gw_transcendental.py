@@ -8,6 +8,8 @@ whose rounding :mod:`yaseer.basic.single_arith` gives (``$FADDS`` :func:`add`,
 ``$FMULS`` :func:`product`, ``$FDIVS`` :func:`divide`, ``$CSD``
 :func:`from_double`), so the last bit is GW's and not the nearest single to the
 true value (``ATN(1)`` is .7853983, the true value rounds to .7853982).
+The polynomials' steps run on integer mantissas (:mod:`mbf_integers`, the same
+roundings without a call per step); :func:`poly_steps` is their reference.
 
 SIN, COS and TAN reduce their argument in MBF double precision (56-bit
 mantissas): the angle times a 56-bit 1/(2*pi) (``$FMULD``: the exact product
@@ -27,6 +29,7 @@ from __future__ import annotations
 
 from math import floor, frexp, inf, ldexp
 
+from yaseer.basic.arithmetic import mbf_integers
 from yaseer.basic.arithmetic.single_arith import add, divide, from_double, power_by_integer, product, subtract
 
 
@@ -95,12 +98,25 @@ _EXP_COEFFICIENTS = tuple(map(_mbf, (  # Hart 1302: 2**z, 0 <= z < 1
 )))
 
 
-def _poly(x: float, coefficients) -> float:
-    """``$POLY``: Horner's rule from the highest coefficient, each step ``$FMULS`` then ``$FADDS``."""
+# The coefficients as mbf_integers' integer pairs, by the identity of their tuple.
+_PARTS = {id(c): mbf_integers.coefficient_parts(c) for c in (
+    _SIN_COEFFICIENTS, _ATN_REDUCTION, _ATN_COEFFICIENTS, _LOG_NUMERATOR, _LOG_DENOMINATOR, _EXP_COEFFICIENTS)}
+
+
+def poly_steps(x: float, coefficients) -> float:
+    """``$POLY`` step by step: Horner's rule from the highest coefficient, each step
+    ``$FMULS`` then ``$FADDS`` (single_arith); the reference of :func:`_poly`."""
     total = coefficients[0]
     for c in coefficients[1:]:
         total = add(product(total * x), c)
     return total
+
+
+def _poly(x: float, coefficients) -> float:
+    """``$POLY`` (``x`` >= 0, as every caller's is): the same steps on integers
+    (mbf_integers.poly), or :func:`poly_steps` where those hand it back."""
+    result = mbf_integers.poly(x, _PARTS[id(coefficients)])
+    return poly_steps(x, coefficients) if result is None else result
 
 
 def _polyx(x: float, coefficients) -> float:
