@@ -10,6 +10,8 @@ test also checks that the fast path is really in the generated code.
 from __future__ import annotations
 
 import io
+import math
+import random
 import time
 
 import pytest
@@ -240,3 +242,94 @@ def test_adding_a_bounded_function_needs_no_overflow_check():
     assert "_ovf" in source_of("10 R=R+X")  # two variables may overflow
     program = "10 R=1.79E308: R=R+RND(1)+SIN(30)+COS(60)+SGN(R): PRINT R=1.79E308; R-1.79E308"
     assert run_text(program) == "-1  0 \n"  # the largest doubles absorb the small terms
+
+
+# ---------------------------------------------------------------- gw singles
+
+def gw_machine(program: str) -> Machine:
+    machine = Machine(screen=io.StringIO(), dialect="gw")
+    machine.load(program)
+    machine.run()
+    return machine
+
+
+WHOLE_LOOPS = ["1 TO 300", "4000 TO 4300", "-5000 TO 5000 STEP 37", "16770000 TO 16777200 STEP 25",
+               "1E12 TO 3E12 STEP 7E9", "1.2E19 TO 1.4E19 STEP 1E17"]
+
+
+@pytest.mark.parametrize("loop", WHOLE_LOOPS)
+def test_the_square_of_a_whole_loop_variable_is_the_products(loop):
+    """``I^2`` of a FOR variable with a whole start and step: a whole square up to 2**24 is
+    exact, a larger one is rounded inline as ``$FMULS`` rounds (single_arith.product), one
+    beyond the range overflows through the policy; as the general code gives it."""
+    from yaseer.basic.arithmetic import single_arith as sa
+    from yaseer.basic.arithmetic.values import SINGLE_LARGEST
+
+    program = f"10 DIM R(400), V(400)\n20 FOR I={loop}: R(K)=I^2: V(K)=I: K=K+1: NEXT\n"
+    fast = gw_machine(program)
+    assert "<= 16777216.0" in fast.compiled[0].source
+    general = gw_machine(program + DEFEAT)
+    assert "<= 16777216.0" not in general.compiled[0].source
+    count = int(fast.scalar("K!"))
+    squares, values = fast.array("R!")[:count], fast.array("V!")[:count]
+    assert squares == general.array("R!")[:count]
+    assert squares == [min(sa.power_by_integer(v, 2), SINGLE_LARGEST) for v in values]
+    assert count > 20
+
+
+@pytest.mark.parametrize("loop", ["I=.5 TO 10", "I=1 TO 10 STEP .5", "I=1 TO 10: I=I+.5"])
+def test_a_loop_variable_that_may_not_be_whole_has_no_whole_square(loop):
+    assert "<= 16777216.0" not in gw_machine(f"10 FOR {loop}: A=I^2: NEXT\n").compiled[0].source
+
+
+def test_sums_and_quotients_with_a_literal_are_the_helpers():
+    """A literal operand's sign is known when compiling (the inline sum tests the other
+    operand's alone) and a quotient is the cut of its double: against single_arith."""
+    from yaseer.basic.arithmetic import single_arith as sa
+    from yaseer.basic.arithmetic.values import SINGLE_LARGEST
+
+    rng = random.Random(12)
+    constants = [".1", "2.5", "1000000!", "3E+20", "1E-30", "0", "7", "8388607"]  # (all singles)
+    forms = {"A!+{c}": lambda a, c: sa.add(a, c), "A!-{c}": lambda a, c: sa.subtract(a, c),
+             "{c}+A!": lambda a, c: sa.add(c, a), "{c}-A!": lambda a, c: sa.subtract(c, a),
+             "A!/{c}": lambda a, c: sa.divide(a, c) if c else None, "{c}/A!": lambda a, c: sa.divide(c, a)}
+    lines, cases = [], []
+    for k in range(300):
+        a = sa.nearest(rng.choice([1, -1]) * rng.uniform(0.5, 1) * 2.0 ** rng.randint(-40, 40))
+        a = rng.choice([a, a, float(rng.randint(-99, 99)), sa.nearest(rng.choice([0.1, -0.1, 2.5, -2.5]))])
+        c = constants[k % len(constants)]
+        results = ": ".join(f"R{k}X{n}!={form.format(c=c)}" for n, form in enumerate(forms) if c != "0" or "/{c}" not in form)
+        lines.append(f"{10 + k} A{k}!={a!r}: C{k}!={c}: {results.replace('A!', f'A{k}!')}")
+        cases.append(k)
+    machine = gw_machine("\n".join(lines) + "\n")
+    source = machine.compiled[0].source
+    assert "_sadd(" in source and "_dv(" in source and "<= (_sh := (_sc := (_sv := " in source  # the quotient's cut
+    checked = 0
+    for line, k in zip(lines, cases):
+        a, c = machine.scalars[f"A{k}!"], machine.scalars[f"C{k}!"]  # as the literals were read
+        for n, helper in enumerate(forms.values()):
+            name = f"R{k}X{n}!"
+            if name in machine.scalars:
+                expected = helper(a, c)
+                if expected in (math.inf, -math.inf):  # the policy's value (arith_policy.py)
+                    expected = math.copysign(SINGLE_LARGEST, expected)
+                assert machine.scalars[name] == expected, (line, list(forms)[n])
+                checked += 1
+    assert checked > 1500
+
+
+def test_square_root_of_zero_is_zero():
+    machine = gw_machine("10 Z=0: A=SQR(Z): B=SQR(0): C=SQR(-Z)\n")
+    assert [str(machine.scalar(n + "!")) for n in "ABC"] == ["0.0"] * 3  # (not -0.0)
+
+
+@pytest.mark.parametrize("loop", ["1E12 TO 3E12 STEP 7E9", "16777000 TO 16777214 STEP 3",
+                                  "3E9 TO 1E9 STEP -123457", "-10 TO 16777215 STEP 4194304"])
+@pytest.mark.parametrize("body", ["K=K+1", "S=S+I: K=K+1"])
+def test_a_single_loop_past_two_to_the_24_rounds_each_step(loop, body):
+    """A native loop over whole singles iterates a ``range`` only below 2**24 (where each
+    ``+ STEP`` is exact); past it each step rounds as ``$FADDS``, as the general code does."""
+    fast = gw_machine(f"10 FOR I={loop}: {body}: NEXT\n")
+    general = gw_machine(f"10 FOR I={loop}: {body}: NEXT\n" + DEFEAT)
+    assert fast.scalars == general.scalars
+    assert fast.scalars["K!"] >= 5

@@ -137,6 +137,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.data_lines: dict = {}
         self.scope = BlockScope(self)
         self.counting_vars: set[str] = set()  # native loop variables that stay >= 0
+        self.whole_vars: set[str] = set()  # native loop variables that stay whole numbers
         self.idle_body = False  # the native loop being compiled has an empty body
         self.whole_index: dict[str, str] = {}  # constant loop variable -> local of its subscript
         self.open_loops: list[tuple] = []  # the native loops around the code being emitted

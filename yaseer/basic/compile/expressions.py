@@ -277,7 +277,9 @@ class ExpressionCompiler:
             return self.numbers.arithmetic(op, left, lkind, right, rkind)
         if op == "^":
             if self.numbers.typed:
-                return self.numbers.power(left, lkind, right, rkind)
+                whole = (isinstance(node.left, ast.Var) and node.left.name in self.whole_vars
+                         and isinstance(scope, BlockScope))
+                return self.numbers.power(left, lkind, right, rkind, whole)
             if (self.numbers.square_by_product and isinstance(node.right, ast.Num)
                     and node.right.value == 2.0 and _simple_operand(left)):
                 return f"({left} * {left})", "n"

@@ -200,6 +200,15 @@ class LoopCompiler:
         step_ok = stmt.step is None or (isinstance(stmt.step, ast.Num) and stmt.step.value > 0)
         return start_ok and step_ok and self.iterable_loop(stmt.var)
 
+    def counts_whole_numbers(self, stmt) -> bool:
+        """Does the loop's variable hold whole numbers in its body (constant whole start and
+        step, never assigned there)?  A sum of whole numbers is whole in any type (a double
+        or single that rounds it is past 2**53 or 2**24, where every number is whole)."""
+        def whole(node) -> bool:
+            value = 1.0 if node is None else constant_value(node)
+            return value is not None and value == int(value)
+        return whole(stmt.start) and whole(stmt.step) and self.iterable_loop(stmt.var)
+
     def iterable_loop(self, var) -> bool:
         """May the native loop now being compiled iterate instead of testing?
 
@@ -277,6 +286,9 @@ class LoopCompiler:
         counting = self.counts_up_from_zero(stmt)
         if counting:
             self.counting_vars.add(stmt.var.name)
+        whole = self.counts_whole_numbers(stmt)
+        if whole:
+            self.whole_vars.add(stmt.var.name)
         self.indent += 1
         # The top of a pass is where a Ctrl-C may stop the loop so that CONT resumes it:
         # its line is the atomic ``_ln = n`` (nothing in it can be interrupted half-way).
@@ -296,6 +308,8 @@ class LoopCompiler:
             self.emit("pass")  # an empty body (a delay loop)
         if counting:
             self.counting_vars.discard(stmt.var.name)
+        if whole:
+            self.whole_vars.discard(stmt.var.name)
         self.index = j  # (stepping cannot fail, so NEXT's line needs no marker in the loop)
         increment = repr(step_value) if step_value is not None and not self.numbers.typed else f"_s{n}"
         increment = self.stepping(stmt.var, var, increment)

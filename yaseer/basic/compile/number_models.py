@@ -213,7 +213,9 @@ class TypedNumbers(PlainNumbers):
                 kept = f"_x{self._temp()}"
                 first = f"({kept} := {left}) is {kept} and "
             divisor = "" if _small_literal(right) and float(right) else f"{right} and "  # 0: the policy's
-            return _tested(f"{first}{divisor}{kept} / {right}", f"_dv({kept}, {right})", _NEAREST_BAND)
+            # a quotient is GW's nearest single, and its double is never halfway between two
+            # singles (single_arith.divide): the double's cut is the result wherever it is in range
+            return _cut_or(f"{first}{divisor}{kept} / {right}", f"_dv({kept}, {right})")
         helper = "_sadd" if op == "+" else "_ssub"
         small = _small_literal(left) or _small_literal(right)
         first = second = a = b = None
@@ -224,8 +226,9 @@ class TypedNumbers(PlainNumbers):
             first, a = (left, left) if _plain_operand(left) else (f"(_x{n} := {left})", f"_x{n}")
             second, b = (right, right) if _plain_operand(right) else (f"(_y{n} := {right})", f"_y{n}")
         # a sum of two numbers of one sign (whatever their exponents: single_arith.add) that is not
-        # near halfway is the nearest single
-        same_sign = f"({a} > 0) {'==' if op == '+' else '!='} ({b} > 0) and {_SUM_BAND}"
+        # near halfway is the nearest single; with a small constant (see _small_literal) an
+        # inexact sum is inside the range, and the constant's sign is known here
+        same_sign = f"{_one_sign(a, b, op == '+')} and {_SUM_BAND}"
         return _tested(f"{first} {op} {second}", f"{helper}({a}, {b})", same_sign, in_range=not small)
 
     def helper(self, op: str, left: str, right: str) -> tuple[str, str]:
@@ -233,16 +236,23 @@ class TypedNumbers(PlainNumbers):
                  "EQV": "_eqv", "IMP": "_imp"}
         return f"{names[op]}({left}, {right})", "%"
 
-    def power(self, left: str, lkind: str, right: str, rkind: str) -> tuple[str, str]:
+    def power(self, left: str, lkind: str, right: str, rkind: str, whole: bool = False) -> tuple[str, str]:
         """``^``: single precision, also of doubles (GW-BASIC's ``$FPWR`` makes both
-        operands single: ``2#^.5`` is 1.414214); ``_spow`` in arith_policy.py."""
+        operands single: ``2#^.5`` is 1.414214); ``_spow`` in arith_policy.py.  ``whole``:
+        ``left`` is a single variable known to hold a whole number (a FOR variable)."""
         left, right = self.convert(left, lkind, '!'), self.convert(right, rkind, '!')
+        if right in ("2", "2.0") and self.tests_inline and whole and lkind == "!" and left.isidentifier():
+            # the square of a whole number is whole: up to 2**24 it is exact, 0 or at least 1
+            split = _cut_in_range("(_sc := _sv * 536870913.0)")
+            return (f"(_sv if (_sv := {left} * {left}) <= 16777216.0 else "
+                    f"((_sh if {_PRODUCT_BAND} else _sp(_sv)) if {split} else _spow({left}, 2.0)))"), "!"
         if right in ("2", "2.0") and self.tests_inline:  # $FPWR's X^2 is one $FMULS, X*X: exact products inline (see _single)
             first = kept = left
             if not _plain_operand(left):
                 kept = f"_x{self._temp()}"
                 first = f"({kept} := {left}) is {kept} and {kept}"
-            return _tested(f"{first} * {kept}", f"_spow({kept}, 2.0)", _PRODUCT_BAND), "!"
+            # (in the range, the product's own rounding: an X^2 that does not overflow is _sp's)
+            return _tested(f"{first} * {kept}", f"_spow({kept}, 2.0)", _PRODUCT_BAND, banded="_sp(_sv)"), "!"
         return f"_spow({left}, {right})", "!"
 
     def negate(self, operand: str, kind: str) -> tuple[str, str]:
@@ -307,8 +317,8 @@ class TypedNumbers(PlainNumbers):
             # number needs 48 bits), nor is its double: any cut of it is the nearest
             if not self.tests_inline:
                 return f"_sfn({code})", "!"
-            if name == "SQR":
-                return f"(_sh if {_cut_in_range(split)} else _sfn(_sv))", "!"
+            if name == "SQR":  # of a single from 2**-128 to 2**127: a cut in the range, or 0
+                return f"({split} - (_sc - _sv) or 0.0)", "!"
             return f"(_sh if {_cut_in_range(split)} and {_NEAREST_BAND} else _sfn(_sv))", "!"
         return code, kind
 
@@ -358,20 +368,39 @@ _PRODUCT_BAND = f"{-0.375 * 2.0 ** -23!r} <= {_BELOW} < {0.5 * 2.0 ** -23!r}"
 _SUM_BAND = f"{-0.498046875 * 2.0 ** -23!r} < {_BELOW} < {0.498046875 * 2.0 ** -23!r}"
 
 
-def _tested(value: str, helper: str, band: str | None = None, in_range: bool = True) -> str:
+def _cut_or(value: str, helper: str) -> str:
+    """The code of a single result that is the nearest single to ``value`` (a double never
+    halfway between two singles): its cut, where that is in MBF's range, else ``helper``."""
+    return f"(_sh if {_cut_in_range(f'(_sc := (_sv := {value}) * 536870913.0)')} else {helper})"
+
+
+def _one_sign(a: str, b: str, plus: bool) -> str:
+    """The test that ``a + b`` (``plus``) or ``a - b`` adds two magnitudes of one sign: with a
+    literal operand, a test of the other operand's sign alone."""
+    for this, other in ((b, a), (a, b)):
+        if _small_literal(this):
+            return f"{other} {'>' if (float(this) > 0) == plus else '<='} 0"
+    return f"({a} > 0) {'==' if plus else '!='} ({b} > 0)"
+
+
+def _tested(value: str, helper: str, band: str | None = None, in_range: bool = True,
+            banded: str | None = None) -> str:
     """The code of a single result: ``value`` (a double) where it is GW's result, else ``helper``
     (code reading ``_sv``, the double, or the scratch locals of the operands).
 
     First: does ``_sv`` need at most 24 bits (Veltkamp's split, ``v * (2**29 + 1)``, gives
     ``v`` cut to 24 bits; three float operations) and lie in MBF's range (``in_range``)?
-    Then, with a ``band``: that cut ``_sh``, in the range, where ``_sv`` lies inside the band
-    around it.  Scratch locals ``_sv _sc _sh _sq`` are each read before anything else can
-    assign them."""
+    Then, with a ``band``: that cut ``_sh``, in the range (unless ``in_range`` is off: where
+    the range cannot be left), where ``_sv`` lies inside the band around it (``banded``: the
+    code for a cut in the range outside the band; else ``helper``).  Scratch locals
+    ``_sv _sc _sh _sq`` are each read before anything else can assign them."""
     exact = f"(_sv := {value}) == (_sh := (_sc := _sv * 536870913.0) - (_sc - _sv))"
     if in_range:
         exact += f" and {_IN_RANGE}"
-    if band is not None:
-        helper = f"(_sh if {_cut_in_range()} and {band} else {helper})"
+    if band is not None and banded is not None:
+        helper = f"((_sh if {band} else {banded}) if {_cut_in_range()} else {helper})"
+    elif band is not None:
+        helper = f"(_sh if {_cut_in_range() + ' and ' if in_range else ''}{band} else {helper})"
     return f"(_sv if {exact} else {helper})"
 
 RANGE_CHECKED = ("(_w if ", "(_sv if ", "(_sh if ")  # how a range-checked double's and a tested single's code start

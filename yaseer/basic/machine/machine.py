@@ -388,6 +388,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         ns.update(self._gw_functions())
         if self.dialect.typed_numbers:
             ns.update(values.RUNTIME)
+            ns.update(runtime.single_loop_helpers())
             ns.update(arith_policy.helpers(self.arith, ns["_idiv"], ns["_mod"], ns["_pow"]))
             ns.update(val_numbers.helpers(self.arith, ns, self.dialect.largest_number))
         if self.dialect.words:  # the casio functions (dialects/casio.py)

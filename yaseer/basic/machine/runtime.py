@@ -9,6 +9,7 @@ raised as ``BasicError`` (or as the Python exception the machine maps: a
 from __future__ import annotations
 
 import math
+import operator
 from collections import deque
 from itertools import repeat
 
@@ -123,52 +124,74 @@ def fix(x: float) -> float:
 _EXACT = 2.0 ** 52  # below this, integers and their sums are exact doubles
 
 
-def float_range(start: float, limit: float, step: float):
+def _whole_passes(start: float, limit: float, step: float, exact: float) -> bool:
+    """Are the loop's values, and the one after the last, whole numbers below ``exact``
+    (where ``+ step`` is exact)?"""
+    return (start == int(start) and step == int(step) and step != 0
+            and abs(start) < exact and abs(step) < exact and abs(limit) + abs(step) < exact)
+
+
+def float_range(start: float, limit: float, step: float, exact: float = _EXACT, add=operator.add):
     """The values a FOR variable takes, as floats, exactly as repeated ``+ step`` gives them.
 
-    The caller has checked that the first pass runs.  Whole numbers use a C-level
-    ``range``; anything else adds the step one pass at a time.
+    The caller has checked that the first pass runs.  Whole numbers below ``exact``
+    (2**52 for doubles, 2**24 for singles) use a C-level ``range``; anything else adds
+    the step one pass at a time with ``add`` (a single's: single_arith.add).
     """
-    if (start == int(start) and step == int(step) and step != 0
-            and abs(start) < _EXACT and abs(step) < _EXACT and abs(limit) < _EXACT):
+    if _whole_passes(start, limit, step, exact):
         first, stride = int(start), int(step)
         if stride > 0:
             count = (math.floor(limit) - first) // stride
             return map(float, range(first, first + count * stride + 1, stride))
         count = (first - math.ceil(limit)) // -stride
         return map(float, range(first, first + count * stride - 1, stride))
-    return _accumulate(start, limit, step)
+    return _accumulate(start, limit, step, add)
+
+
+_SINGLE_EXACT = 2.0 ** 24  # below this, whole singles and their sums are exact
+
+
+def single_loop_helpers() -> dict:
+    """The compiled code's ``_frange`` and ``_fcount`` for single-precision FOR variables:
+    a ``range`` only where every value is a whole number below 2**24; elsewhere each
+    ``+ step`` rounds as GW-BASIC's ``$FADDS`` (single_arith.add)."""
+    from functools import partial
+
+    from yaseer.basic.arithmetic.single_arith import add
+
+    return {"_frange": partial(float_range, exact=_SINGLE_EXACT, add=add),
+            "_fcount": partial(pass_counter, exact=_SINGLE_EXACT, add=add)}
 
 
 class _Accumulator:
     """Counts the passes of a FOR loop with fractional values; ``value`` is the variable."""
 
-    __slots__ = ("value", "limit", "step")
+    __slots__ = ("value", "limit", "step", "add")
 
-    def __init__(self, value: float, limit: float, step: float):
-        self.value, self.limit, self.step = value, limit, step
+    def __init__(self, value: float, limit: float, step: float, add=operator.add):
+        self.value, self.limit, self.step, self.add = value, limit, step, add
 
     def __iter__(self):
-        step, limit = self.step, self.limit
+        step, limit, add = self.step, self.limit, self.add
         passes = 0
         while (self.value <= limit) if step >= 0 else (self.value >= limit):
             yield passes
             passes += 1
-            self.value = self.value + step
+            self.value = add(self.value, step)
 
 
-def pass_counter(start: float, limit: float, step: float):
+def pass_counter(start: float, limit: float, step: float, exact: float = _EXACT, add=operator.add):
     """An iterable with one item per pass of a FOR loop whose body ignores its variable.
 
-    Whole numbers give a ``range``; see :func:`counted_value` for the variable.
+    Whole numbers below ``exact`` give a ``range`` (see :func:`float_range`); see
+    :func:`counted_value` for the variable.
     """
-    if (start == int(start) and step == int(step) and step != 0
-            and abs(start) < _EXACT and abs(step) < _EXACT and abs(limit) < _EXACT):
+    if _whole_passes(start, limit, step, exact):
         first, stride = int(start), int(step)
         if stride > 0:
             return range((math.floor(limit) - first) // stride + 1)
         return range((first - math.ceil(limit)) // -stride + 1)
-    return _Accumulator(start, limit, step)
+    return _Accumulator(start, limit, step, add)
 
 
 IDLE_CHUNK = 1 << 20  # passes of an empty loop counted in one C call (about a millisecond)
@@ -206,15 +229,15 @@ def counted_final(passes, start: float, step: float) -> float:
     return passes.value
 
 
-def _accumulate(value: float, limit: float, step: float):
+def _accumulate(value: float, limit: float, step: float, add=operator.add):
     if step >= 0:
         while value <= limit:
             yield value
-            value = value + step
+            value = add(value, step)
     else:
         while value >= limit:
             yield value
-            value = value + step
+            value = add(value, step)
 
 
 # ------------------------------------------------------------------ trigonometry
