@@ -19,6 +19,9 @@
    yaseer, in process (yaseer's compile + run, casio) and as whole processes
    (``python -m yaseer run [--dialect gw]``, which adds Python's start-up) in each
    dialect; goal (issues 15 and 22): every whole process at least 20x faster.
+   ``--python`` runs the whole processes with another interpreter, e.g. one with a
+   regular ``pip install .`` (an editable install's import hook, which every start of
+   the development venv pays, is not what a user's start pays).
 3. ``--arith decimal`` (casio's 12-digit decimal arithmetic, yaseer/basic/arithmetic/
    decimal_arith.py) against binary on the same classic programs, loop counts
    multiplied by ``--decimal-scale``, in process (compile + run); needs no bwbasic.
@@ -147,11 +150,14 @@ def bwbasic_time(text: str, repeat: int) -> float:
         os.unlink(handle.name)
 
 
+PROCESS_PYTHON = [sys.executable]  # the interpreter of the whole-process runs (--python)
+
+
 def yaseer_process_time(text: str, repeat: int, dialect: str = "casio") -> float:
     with tempfile.NamedTemporaryFile("w", suffix=".bas", delete=False) as handle:
         handle.write(text)
     try:
-        return best_of(repeat, lambda: run_process([sys.executable, "-m", "yaseer", "run", "--dialect", dialect,
+        return best_of(repeat, lambda: run_process([PROCESS_PYTHON[0], "-m", "yaseer", "run", "--dialect", dialect,
                                                     handle.name]))
     finally:
         os.unlink(handle.name)
@@ -187,7 +193,10 @@ def main() -> int:
     parser.add_argument("--decimal-scale", type=float, default=10.0,
                         help="loop count factor of the classic programs for --arith decimal against binary")
     parser.add_argument("--decimal-only", action="store_true", help="only --arith decimal against binary")
+    parser.add_argument("--python", default=sys.executable,
+                        help="the Python of the whole-process runs (e.g. a venv with a regular pip install)")
     args = parser.parse_args()
+    PROCESS_PYTHON[0] = args.python
     if args.decimal_only:
         decimal_against_binary(args.decimal_scale, args.repeat)
         return 0
