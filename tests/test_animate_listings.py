@@ -63,10 +63,103 @@ def test_example_4_second_four_bar_is_driven_by_the_virtual_link():
 
 def test_the_slider_crank_seed_animates_a_frame_per_position():
     frames = record_listing((LISTINGS / "tk_slider_crank.bas").read_text())
-    # row C at -30 degrees, open and crossed together, a cycle of each assembly, then the backsolve's crank
-    assert [f.crank_angle for f in frames[:-1]] == pytest.approx([-30.0] + [15.0 * k for k in range(24)] * 2)
+    # row C at -30 degrees, then one cycle in which each angle shows both assemblies (the listing prints
+    # a whole cycle of the open one, then a whole cycle of the crossed one), then the backsolve's crank
+    assert [f.crank_angle for f in frames[:-1]] == pytest.approx([-30.0] + [15.0 * k for k in range(24)])
     assert frames[-1].crank_angle == pytest.approx(-30.0, abs=0.1) and frames[-1].printed.startswith("BACKSOLVE")
-    assert [s.alternative for s in frames[0].snapshots] == [False, True]
+    for frame in frames[:-1]:
+        assert [s.alternative for s in frame.snapshots] == [False, True]
+        assert len(frame.printed.splitlines()) == 2
+
+
+# Seed 001 by an independent closed form: crank AO = 3, rod AB = 8, piston B on the line y = 2;
+# x_B = AO cos(theta) +/- sqrt(AB^2 - (2 - AO sin(theta))^2), + for the open assembly, - for the crossed.
+SEED_001 = (3.0, 8.0, 2.0)
+BLOCK_INK = (0xC9, 0xD6, 0xE8)  # the slider block's fill (draw.py's facecolor), as the picture shows it
+
+
+def slider_x(theta_deg: float, branch: int) -> float:
+    crank, rod, line = SEED_001
+    theta = math.radians(theta_deg)
+    return crank * math.cos(theta) + branch * math.sqrt(rod ** 2 - (line - crank * math.sin(theta)) ** 2)
+
+
+def block_runs(row) -> list[tuple[int, int]]:
+    """(first, last) pixel columns of each stretch of the slider block's fill along one pixel row
+    (gaps of up to 3 pixels, a grid line or a letter's edge, do not split a stretch)."""
+    runs: list[list[int]] = []
+    for x, pixel in enumerate(row):
+        if sum(abs(int(c) - b) for c, b in zip(pixel[:3], BLOCK_INK)) <= 24:
+            if runs and x - runs[-1][1] <= 4:
+                runs[-1][1] = x
+            else:
+                runs.append([x, x])
+    return [(first, last) for first, last in runs if last - first >= 4]
+
+
+def test_seed_001_gif_draws_both_pistons_of_each_crank_angle_in_one_frame(tmp_path):
+    """As a person sees the GIF: 26 frames (row c, 24 angles, the backsolve), and in every frame of a
+    position two slider blocks on the line y = 2, centred where the closed form puts the open and the
+    crossed piston at that frame's crank angle (the listing prints the two cycles as separate runs)."""
+    import numpy as np
+    from PIL import Image
+
+    import yaseer
+    from yaseer.animation import Painter
+
+    result = run_cli(str(LISTINGS / "tk_slider_crank.bas"), "--out", "seed.gif", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout == "seed.gif: 26 frames\n"
+    run = yaseer.run(LISTINGS / "tk_slider_crank.bas")
+    scene = build_scene(run.frames)
+    painter = Painter(scene, run.look())  # where the axes put a point of the mechanism, in pixels
+    height = painter.figure.bbox.height
+    angles = [-30.0] + [15.0 * k for k in range(24)]
+    with Image.open(tmp_path / "seed.gif") as gif:
+        assert gif.n_frames == 26
+        for number, theta in enumerate(angles):
+            gif.seek(number)
+            pixels = np.asarray(gif.convert("RGB"))
+            # a row through the lower half of the blocks, below the joint circles and the axis line
+            _, y = painter.ax.transData.transform((0.0, SEED_001[2] - 0.5 * scene.size))
+            runs = block_runs(pixels[round(height - y)])
+            expected = sorted(painter.ax.transData.transform((slider_x(theta, branch), 0.0))[0] for branch in (1, -1))
+            assert len(runs) == 2, (theta, runs)
+            per_unit = painter.ax.transData.transform((1.0, 0.0))[0] - painter.ax.transData.transform((0.0, 0.0))[0]
+            for (first, last), centre in zip(runs, expected):
+                assert abs((first + last) / 2 - centre) <= 2.5, (theta, first, last, centre)
+                # a whole block: 2.4 symbol sizes long, less its 1.6-point outline at each end
+                assert (last - first) == pytest.approx(2.4 * scene.size * per_unit - 2 * 1.6 * 100 / 72, abs=2)
+
+
+def test_every_frame_of_seed_001_names_both_branches_values():
+    """Every position's frame shows each column's name with the open and the crossed value (x_B agreeing with
+    the closed form), the crank angle once, the legend naming the grey assembly, and nothing runs off the frame."""
+    import yaseer
+    from yaseer.animation import draw_moving
+
+    result = yaseer.run(LISTINGS / "tk_slider_crank.bas")
+    scene = build_scene(result.frames)
+    look = result.look()
+    figure, ax = make_figure(scene, look)
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    renderer = FigureCanvasAgg(figure).get_renderer()
+    for number, frame in enumerate(scene.frames[:-1]):
+        artists = draw_moving(ax, scene, number, look)
+        texts = [t.get_text() for t in figure.texts if t in artists]
+        assert texts[1] == f"{frame.crank_angle:.1f}\N{DEGREE SIGN}"
+        for name in ("X(2)", "V(3)", "W(3)", "A(35)", "A(3)"):
+            assert " / " in texts[texts.index(name) + 1]
+        open_x, crossed_x = (float(v) for v in texts[texts.index("X(2)") + 1].split(" / "))
+        assert open_x == pytest.approx(slider_x(frame.crank_angle, 1), abs=1e-8)
+        assert crossed_x == pytest.approx(slider_x(frame.crank_angle, -1), abs=1e-8)
+        for artist in artists:
+            if artist in figure.texts:
+                assert artist.get_window_extent(renderer).x1 <= figure.bbox.x1, artist.get_text()
+            artist.remove()
+    legend = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert legend == ["link", "fixed pivot", "other assembly, same angle"]
 
 
 def test_each_position_of_seed_003_shows_both_assemblies_in_one_frame():

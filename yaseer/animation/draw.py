@@ -259,8 +259,8 @@ def _panel(figure, frame: Frame, look: Look) -> list:
     names = look.names
     if names is not None and values is not None:
         shown = [(name, value) for name, value in zip(names, values)]
-        if shown and _same_angle(shown[0][1], frame.crank_angle):
-            shown = shown[1:]  # the first column is the crank angle, shown above
+        if shown and all(_same_angle(value, frame.crank_angle) for value in shown[0][1].split(" / ")):
+            shown = shown[1:]  # the first column is the crank angle (of every branch), shown above
         room = 0.75 / max(len(shown), 1)
         fit = min(1.0, room / 0.125)
         for name, value in shown:
@@ -268,8 +268,8 @@ def _panel(figure, frame: Frame, look: Look) -> list:
             artists.append(figure.text(x, y, label, fontsize=13 * s * fit, color="0.35", va="top",
                                        linespacing=1.0))
             y -= (0.032 * (label.count("\n") + 1)) * fit
-            artists.append(figure.text(x, y, value, fontsize=22 * s * fit, family="monospace", weight="bold",
-                                       va="top"))
+            artists.append(figure.text(x, y, value, fontsize=min(22 * s * fit, _fitting(value, look)),
+                                       family="monospace", weight="bold", va="top"))
             y -= 0.075 * fit
     elif frame.printed.strip():
         artists.append(figure.text(x, y, "printed", fontsize=15 * s, color="0.35", va="top"))
@@ -278,6 +278,16 @@ def _panel(figure, frame: Frame, look: Look) -> list:
         artists.append(figure.text(x, y - 0.045, "\n".join(lines), fontsize=16 * s, family="monospace",
                                    va="top"))
     return artists
+
+
+MONOSPACE_WIDTH = 0.62  # a monospace character's advance, a share of the type size (DejaVu Sans Mono: 0.602)
+
+
+def _fitting(text: str, look: Look) -> float:
+    """The type size (points) at which ``text`` in bold monospace fits the panel's width (two branches'
+    values side by side, ``9.477612728 / -6.477612728``, would run off the frame at full size)."""
+    room = (1.0 - PANEL_LEFT - 0.02) * look.size[0] * 72.0 / DPI
+    return room / (MONOSPACE_WIDTH * max(len(text), 1))
 
 
 def _column_values(printed: str, names: tuple[str, ...] | None) -> list[str] | None:

@@ -165,7 +165,7 @@ class Recorder:
 
 # --- assembling frames ------------------------------------------------------------
 
-VIRTUAL_MATCH = 1e-9  # relative distance within which a crank tip is a virtual link's end
+SAME_POINT = 1e-9  # relative distance within which two points are one (a crank tip and a virtual link end)
 
 
 def prepare_frame(frame: Frame) -> Frame:
@@ -182,22 +182,67 @@ def prepare_frame(frame: Frame) -> Frame:
 
 
 def merge_positions(frames: Sequence[Frame]) -> list[Frame]:
-    """One frame per position: a frame at the same crank angle as the one before (the other
-    assembly branch, printed on the next line) joins it, its calls marked ``alternative``.
+    """One frame per position: a frame showing another assembly of a position already shown joins
+    that position's frame, its calls marked ``alternative`` and its printed line under the first.
 
-    So every branch of one position is drawn together, instead of the branches
-    alternating from frame to frame.
+    The other assembly is the same mechanism (same calls, same driving crank, fixed pivots and
+    slider lines: :func:`_same_position`) with its moving joints elsewhere.  It may be printed on
+    the next line (seed 003 prints each angle's two rows together) or in a later run of its own
+    (seed 001 prints a whole cycle of each branch): either way every branch of one position is
+    drawn together, instead of the branches taking turns.  A position takes one other assembly.
     """
     merged: list[Frame] = []
     for frame in frames:
-        before = merged[-1] if merged else None
-        if before is not None and frame.printed and _same_angle(before.crank_angle, frame.crank_angle) \
-                and [s.area for s in before.snapshots if not s.alternative] == [s.area for s in frame.snapshots]:
-            others = tuple(replace(s, alternative=True) for s in frame.snapshots)
-            merged[-1] = prepare_frame(Frame(before.snapshots + others, before.printed + "\n" + frame.printed))
-        else:
+        target = next((k for k in range(len(merged) - 1, -1, -1)
+                       if frame.printed and _same_position(merged[k], frame)), None)
+        if target is None:
             merged.append(frame)
+            continue
+        before = merged[target]
+        others = tuple(replace(s, alternative=True) for s in frame.snapshots)
+        merged[target] = prepare_frame(Frame(before.snapshots + others, before.printed + "\n" + frame.printed))
     return merged
+
+
+def _same_position(shown: Frame, other: Frame) -> bool:
+    """Whether ``other`` is another assembly of ``shown``'s position (which has none yet)."""
+    if any(s.alternative for s in shown.snapshots) or not _same_angle(shown.crank_angle, other.crank_angle):
+        return False
+    pairs = list(zip(shown.snapshots, other.snapshots))
+    if len(shown.snapshots) != len(other.snapshots) or any(a.area != b.area for a, b in pairs):
+        return False
+    driving = next((k for k, s in enumerate(shown.snapshots) if s.crank is not None), None)
+    if driving is not None and not _same_bar(shown.snapshots[driving].bars[0], other.snapshots[driving].bars[0]):
+        return False
+    return all(_same_frame_of_reference(a, b) for a, b in pairs) and \
+        any(a.key() != b.key() for a, b in pairs)
+
+
+def _same_frame_of_reference(a: Snapshot, b: Snapshot) -> bool:
+    """The same fixed pivots and the same slider lines (an axis and its reverse are one line)."""
+    if len(a.ground) != len(b.ground) or len(a.sliders) != len(b.sliders):
+        return False
+    scale = max([1.0] + [abs(c) for bar in a.bars for c in (*bar.start, *bar.end)])
+    if any(distance(p, q) > SAME_POINT * scale for p, q in zip(a.ground, b.ground)):
+        return False
+    for one, two in zip(a.sliders, b.sliders):
+        if (one.axis is None) != (two.axis is None):
+            return False
+        if one.axis is not None and not _on_one_line(one, two, scale):
+            return False
+    return True
+
+
+def _on_one_line(one, two, scale: float) -> bool:
+    turn = math.remainder(one.angle_deg - two.angle_deg, 180.0)
+    direction = polar(1.0, one.angle_deg)
+    dx, dy = two.axis[0] - one.axis[0], two.axis[1] - one.axis[1]
+    return abs(turn) <= 1e-9 and abs(direction[0] * dy - direction[1] * dx) <= SAME_POINT * scale
+
+
+def _same_bar(p: Bar, q: Bar) -> bool:
+    scale = max(1.0, abs(p.start[0]), abs(p.start[1]), abs(p.end[0]), abs(p.end[1]))
+    return distance(p.start, q.start) <= SAME_POINT * scale and distance(p.end, q.end) <= SAME_POINT * scale
 
 
 def _same_angle(a: float, b: float) -> bool:
@@ -209,7 +254,7 @@ def _mark_virtual_crank(snapshot: Snapshot, virtual_ends: Sequence[Point]) -> Sn
         return snapshot
     crank = snapshot.bars[snapshot.crank]
     scale = max(1.0, math.hypot(*crank.end))
-    if not any(distance(crank.end, end) <= VIRTUAL_MATCH * scale for end in virtual_ends):
+    if not any(distance(crank.end, end) <= SAME_POINT * scale for end in virtual_ends):
         return snapshot
     bars = list(snapshot.bars)
     bars[snapshot.crank] = replace(crank, virtual=True)
