@@ -183,3 +183,46 @@ def test_example_5s_short_crank_is_magnified_and_lettered_in_an_inset():
     crank = [line for line in inset.get_lines() if line.get_linewidth() > 3]
     extent = max(line.get_window_extent(renderer).width + line.get_window_extent(renderer).height for line in crank)
     assert extent > 40  # pixels: visible, where the main picture draws the crank in about 10
+
+
+EXAMPLE_5_CRANK = 0.075  # m, the jaw crusher's crank AoA (the paper's Example 5 data; listings/example5.bas L(12))
+VISIBLE = 20  # pixels of unbroken ink along a link's centre line for a person to see it as a bar
+
+
+def _ink_along(image, axes, start, end) -> int:
+    """The longest unbroken run of dark pixels (each channel below 80) on the segment start-end,
+    points of the mechanism drawn on ``axes``, in the frame's ``image`` (rows counted from the top)."""
+    import math
+
+    pixels = np.asarray(image)
+    (x0, y0), (x1, y1) = axes.transData.transform([start, end])
+    steps = max(1, round(2 * math.hypot(x1 - x0, y1 - y0)))
+    visited, longest, run = set(), 0, 0
+    for k in range(steps + 1):
+        place = (round(pixels.shape[0] - (y0 + (y1 - y0) * k / steps)), round(x0 + (x1 - x0) * k / steps))
+        if place in visited:
+            continue
+        visited.add(place)
+        run = run + 1 if pixels[place].max() < 80 else 0
+        longest = max(longest, run)
+    return longest
+
+
+def test_example_5s_crank_is_seen_only_in_its_inset():
+    """As a person sees the frames: at the picture's scale the 0.075 m crank is a few dark pixels between
+    its pivot's and its pin's circles (no bar to see); somewhere in the frame, the inset, it is drawn as a
+    bar at least VISIBLE pixels long.  Without the inset no part of the frame shows the crank."""
+    import math
+
+    from yaseer.animation.draw import _inset
+
+    result = yaseer.run(LISTINGS / "example5.bas")
+    scene = build_scene(result.frames)
+    painter = Painter(scene, result.look())
+    for number in range(0, len(scene.frames), 3):
+        theta = math.radians(float(scene.frames[number].printed.split()[0]))  # the angle the listing printed
+        pin = (EXAMPLE_5_CRANK * math.cos(theta), EXAMPLE_5_CRANK * math.sin(theta))
+        image = painter.image(number)
+        assert _ink_along(image, painter.ax, (0.0, 0.0), pin) < VISIBLE, number
+        seen = [_ink_along(image, axes, (0.0, 0.0), pin) for axes in (painter.ax, _inset(painter.ax)) if axes]
+        assert max(seen) >= VISIBLE, (number, seen)

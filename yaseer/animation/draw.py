@@ -146,10 +146,12 @@ def draw_moving(ax, scene: Scene, number: int, look: Look | str | None = None, a
         centre, radius, _ = scene.zoom
         near = [(p, name) for p, name in lettered if _apart(p, centre) <= radius]
         keep = min(near, key=lambda item: _apart(item[0], centre)) if near else None
-        artists += _mechanism(inset, frame, s, scene.size * 2 * radius / span)
-        artists += _letters(inset, near, 2 * radius, s)
+        size = scene.size * 2 * radius / (span * INSET)  # symbols as large as outside
+        artists += _mechanism(inset, frame, s, size)
+        # the inset shows 2 radius across INSET of the picture: letters keep clear by as many pixels there
+        artists += _letters(inset, near, 2 * radius / INSET, s, _links(frame, size))
         lettered = [item for item in lettered if item not in near or item == keep]
-    artists += _letters(ax, lettered, span, s)
+    artists += _letters(ax, lettered, span, s, _links(frame, scene.size))
     artists += _panel(ax.figure, frame, look)
     for artist in artists:
         artist.set_animated(animated)
@@ -194,15 +196,25 @@ def _mechanism(ax, frame: Frame, s: float, size: float) -> list:
     return artists
 
 
-def _letters(ax, lettered: list, span: float, s: float) -> list:
-    """The joints' letters on ``ax``, each placed away from the joints and the letters before it."""
+def _links(frame: Frame, size: float) -> list[tuple[Point, Point]]:
+    """The segments a letter must not cover: every bar, every traced point's carrying link and the
+    upright of each ground triangle (drawn ``size`` high under its pivot)."""
+    return [segment for snapshot in frame.snapshots
+            for segment in [(bar.start, bar.end) for bar in snapshot.bars] +
+            [(traced.joint, traced.position) for traced in snapshot.points] +
+            [(pivot, (pivot[0], pivot[1] - size)) for pivot in snapshot.ground]]
+
+
+def _letters(ax, lettered: list, span: float, s: float, links=()) -> list:
+    """The joints' letters on ``ax``, each placed away from the joints, the links and the letters before it
+    (``span``: how much of the mechanism, in its units, the picture's height shows at this scale)."""
     from matplotlib import patheffects
 
     outline = [patheffects.withStroke(linewidth=4 * s, foreground="white")]
     return [ax.annotate(name, position, xytext=(dx * 16 * s, dy * 16 * s), textcoords="offset points",
                         fontsize=19 * s, weight="bold", color="#1f3a93", zorder=7, ha="center", va="center",
                         path_effects=outline, annotation_clip=False)
-            for (position, name), (dx, dy) in zip(lettered, _label_offsets(span, [p for p, _ in lettered]))]
+            for (position, name), (dx, dy) in zip(lettered, _label_offsets(span, [p for p, _ in lettered], links))]
 
 
 def draw_frame(ax, scene: Scene, number: int, title: str = "") -> None:
@@ -230,21 +242,30 @@ DIRECTIONS = ((0.7, 0.7), (-0.7, 0.7), (0.7, -0.7), (-0.7, -0.7), (0.0, 1.0), (1
 LABEL_ROOM = 0.035  # share of the scene's span a label keeps clear of other labels and joints
 
 
-def _label_offsets(span: float, positions: list[Point]) -> list[tuple[float, float]]:
-    """A direction for each label (unit vector): away from the joints and the labels placed before it;
-    ``span`` is the size of the picture in the mechanism's units."""
+def _label_offsets(span: float, positions: list[Point], links=()) -> list[tuple[float, float]]:
+    """A direction for each label (unit vector): away from the joints, the ``links`` (segments) and the
+    labels placed before it; ``span`` is the size of the picture in the mechanism's units."""
     reach = 0.04 * span  # the label's centre, roughly, in the scene's units
     taken: list[Point] = list(positions)
     chosen = []
     for x, y in positions:
         def clearance(direction):
             cx, cy = x + direction[0] * reach, y + direction[1] * reach
-            return min((((cx - px) ** 2 + (cy - py) ** 2) ** 0.5 for px, py in taken), default=span)
+            near = min((((cx - px) ** 2 + (cy - py) ** 2) ** 0.5 for px, py in taken), default=span)
+            return min([near] + [_to_segment((cx, cy), start, end) for start, end in links])
         best = next((d for d in DIRECTIONS if clearance(d) >= LABEL_ROOM * span), None)
         best = best or max(DIRECTIONS, key=clearance)
         chosen.append(best)
         taken.append((x + best[0] * reach, y + best[1] * reach))
     return chosen
+
+
+def _to_segment(point: Point, start: Point, end: Point) -> float:
+    """The distance from ``point`` to the segment start-end."""
+    dx, dy = end[0] - start[0], end[1] - start[1]
+    length2 = dx * dx + dy * dy
+    t = 0.0 if length2 == 0.0 else max(0.0, min(1.0, ((point[0] - start[0]) * dx + (point[1] - start[1]) * dy) / length2))
+    return _apart(point, (start[0] + t * dx, start[1] + t * dy))
 
 
 def _panel(figure, frame: Frame, look: Look) -> list:
