@@ -93,9 +93,11 @@ def test_width_of_a_device_as_pcbasic(tmp_path):
 
 
 def test_width_of_a_device_needs_a_string_and_a_width():
-    """As PC-BASIC 2.0.8: no width is a Syntax error, a string width Type mismatch.
-    (``WIDTH 80, 25``, which PC-BASIC takes, stays a Syntax error in yaseer: rows are not emulated.)"""
+    """As PC-BASIC 2.0.8: no width is a Syntax error, a string width Type mismatch;
+    ``WIDTH 80, 25`` is the screen's size (25 rows, the only number it has: GWSTS.ASM GWWID),
+    ``WIDTH 80, 24`` Illegal function call."""
     for bad, error in (('WIDTH "LPT1:"', "Syntax error"), ('WIDTH "LPT1:", "A"', "Type mismatch"),
-                       ("WIDTH 80, 25", "Syntax error")):
+                       ("WIDTH 80, 24", "Illegal function call")):
         screen, _ = yaseer_printer(f"10 {bad}\n")
         assert screen == f"{error} in 10\n", (bad, screen)
+    assert yaseer_printer("10 WIDTH 40, 25: PRINT 1\n")[0] == " 1 \n"

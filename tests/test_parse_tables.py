@@ -36,7 +36,7 @@ def test_the_check_notices_a_table_that_does_not_follow_the_grammar(tmp_path):
     finally:
         sys.path.remove(str(TOOL.parent))
     grammar = (ROOT / "yaseer" / "basic" / "source" / "grammar.lark").read_text()
-    edited = grammar.replace("cls_stmt: CLS\n", "cls_stmt: CLS expr?\n")
+    edited = grammar.replace("reset_stmt: RESET\n", "reset_stmt: RESET expr?\n")
     assert edited != grammar
     committed = (ROOT / "yaseer" / "basic" / "source" / "parse_tables.py").read_text()
     assert make_parse_tables.generate(grammar) == committed

@@ -108,7 +108,7 @@ _NATIVE_BODY = (
     ast.Let, ast.Print, ast.GosubProg, ast.Rem, ast.Data, ast.Read, ast.Dim, ast.Angle,
     ast.Randomize, ast.DefFn, ast.Clear, ast.Restore, ast.End, ast.OnError, ast.Cls,
     ast.Error, ast.DefType, ast.Swap, ast.MidAssign, ast.Write, ast.Open, ast.Close,
-    ast.Kill, ast.Rename, ast.Files, ast.Locate, ast.DefChr, ast.EndMark, ast.GosubArea, ast.GotoArea, ast.GosubFile, ast.GotoFile,
+    ast.Kill, ast.Rename, ast.Files, ast.Locate, ast.ScreenStatement, ast.ViewPrint, ast.Key, ast.DefChr, ast.EndMark, ast.GosubArea, ast.GotoArea, ast.GosubFile, ast.GotoFile,
 )  # not INPUT nor LINE INPUT: they start a block (see plan)
 
 

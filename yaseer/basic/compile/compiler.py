@@ -108,6 +108,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.numbers = number_model(dialect, def_types)
         self.program_areas = dialect.program_areas  # GOSUB PROG n, #n, "file:label"
         self.library_forms = dialect.library_forms  # THEN *
+        self.locate_arguments = dialect.screen.locate_arguments  # LOCATE's (fewest, most)
         self.names_missing_line = dialect.names_missing_line
         self.words = dialect.words or NO_WORDS  # the dialect's own words (dialects/casio.py)
         self.own_functions = dict(self.words.functions, DEG=self.words.deg_function) if dialect.words else {}
@@ -351,7 +352,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         block.code.append((indent, f"return {ret}"))
 
     def stmt_Cls(self, stmt, scope):
-        self.emit("_M.clear_screen()")
+        mode = "None" if stmt.mode is None else self.numeric(stmt.mode, scope)
+        self.emit(f"_M.clear_screen({mode})")
 
     def stmt_DefChr(self, stmt, scope):
         if not self.library_forms:
@@ -359,12 +361,16 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit(f"_M.define_character({self.numeric(stmt.code, scope)}, {self.string(stmt.pattern, scope)})")
 
     def stmt_Locate(self, stmt, scope):
-        self.emit(f"_locate({self.numeric(stmt.x, scope)}, {self.numeric(stmt.y, scope)})")
+        fewest, most = self.locate_arguments
+        if not fewest <= len(stmt.args) <= most or None in stmt.args[:fewest]:
+            raise syntax_error()
+        self.emit(f"_locate({self.optional_numbers(stmt.args, scope)})")
 
     def stmt_Width(self, stmt, scope):
         if stmt.device is not None:
-            if self.kind_of(stmt.device) != "s":
-                raise syntax_error()  # WIDTH n, rows: the screen rows are not emulated
+            if self.kind_of(stmt.device) != "s":  # WIDTH columns, rows: the screen's size
+                self.emit(f"_M.set_screen_size({self.numeric(stmt.device, scope)}, {self.numeric(stmt.columns, scope)})")
+                return
             device = self.string(stmt.device, scope)
             self.emit(f"_M.set_device_width({device}, {self.numeric(stmt.columns, scope)})")
             return

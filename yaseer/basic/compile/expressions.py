@@ -42,12 +42,14 @@ _FUNCTIONS = {
     "EOF": (("n",), "n", "_eof"), "LOF": (("n",), "n", "_lof"), "LOC": (("n",), "n", "_loc"),
     "INPUT$": (("n", "nn"), "s", "_input_chars"),
     "PEEK": (("n",), "n", "_peek"),
+    "SCREEN": (("nn", "nnn"), "n", "_M.screen_char"),
 }
 
 # Values without arguments: name -> (Python expression, "s" or None for the integer type).
 _SYSTEM_VARIABLES = {
     "ERR": ("_M.err", None), "ERL": ("_M.erl", None), "TIMER": ("_timer()", "n"),
     "DATE$": ("_date()", "s"), "TIME$": ("_time()", "s"), "INKEY$": ("_inkey()", "s"),
+    "CSRLIN": ("_M.cursor_row()", None),
 }
 
 

@@ -134,7 +134,7 @@ class TypedNumbers(PlainNumbers):
     _RESULTS = {
         "SIN": "!", "COS": "!", "TAN": "!", "ATN": "!", "SQR": "!", "EXP": "!", "LOG": "!",
         "RND": "!", "VAL": "?", "ABS": None, "INT": None, "FIX": None, "SGN": "%", "LEN": "%",
-        "ASC": "%", "CINT": "%", "CSNG": "!", "CDBL": "#", "CVD": "#",
+        "ASC": "%", "CINT": "%", "CSNG": "!", "CDBL": "#", "CVD": "#", "SCREEN": "%",
     }
 
     # functions GW-BASIC computes in single precision from an argument made single

@@ -280,6 +280,27 @@ class InputOutputCompiler:
         self.emit(f"_command({stmt.name!r}, {argument}, {stmt.option!r})")
         self.emit("#RELOAD#")
 
+    # -- the text screen (machine/console.py)
+    def optional_numbers(self, args: list, scope) -> str:
+        """A Python tuple of numeric arguments, None where one was left out."""
+        return "(" + "".join(("None" if a is None else self.numeric(a, scope)) + ", " for a in args) + ")"
+
+    def stmt_ScreenStatement(self, stmt, scope):
+        """COLOR and SCREEN: at most three and four arguments; the machine checks them."""
+        if len(stmt.args) > (3 if stmt.word == "COLOR" else 4):
+            raise syntax_error()
+        self.emit(f"_M.screen_statement({stmt.word!r}, {self.optional_numbers(stmt.args, scope)})")
+
+    def stmt_ViewPrint(self, stmt, scope):
+        rows = "None" if stmt.first is None else f"({self.numeric(stmt.first, scope)}, {self.numeric(stmt.last, scope)})"
+        self.emit(f"_M.view_print({rows})")
+
+    def stmt_Key(self, stmt, scope):
+        if stmt.action == "DEFINE":
+            self.emit(f"_M.define_key({self.numeric(stmt.number, scope)}, {self.string(stmt.text, scope)})")
+        else:
+            self.emit(f"_M.key_line({stmt.action!r})")
+
     def stmt_Common(self, stmt, scope):
         for name, is_array in stmt.names:
             if not is_array:

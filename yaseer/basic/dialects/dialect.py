@@ -28,6 +28,7 @@ from yaseer.basic.arithmetic.values import DOUBLE_LARGEST
 from yaseer.basic.arithmetic.randomness import GwRandom, RepeatableRandom
 from yaseer.basic.dialects.charset import CASIO as CASIO_CHARACTERS, CASIO_CONTROLS, LATIN1
 from yaseer.basic.dialects import casio as casio_words
+from yaseer.basic.dialects.screens import CASIO_SCREEN, GW_CONTROLS, GW_SCREEN
 
 # The paper's universal line 2: these arrays exist with these sizes from the start
 # (one dimension, subscripts 0..size).
@@ -44,6 +45,8 @@ RANDOM_FILE_WORDS = ("FIELD", "GET", "PUT", "LSET", "RSET", "RESET")
 CHAIN_WORDS = ("CHAIN", "COMMON", "MERGE", "DELETE")
 # ... the commands a program may also run (LIST, SAVE, RUN "file"...) and KEY ON/OFF
 COMMAND_WORDS = ("RUN", "LIST", "LLIST", "LOAD", "SAVE", "NEW", "EDIT", "KEY", "OFF", "SYSTEM")
+# ... and the text screen's (yaseer/basic/machine/display.py) and keyboard's
+SCREEN_WORDS = ("LOCATE", "CSRLIN", "COLOR", "SCREEN", "VIEW", "INKEY$")
 
 FIELDS = (
     "name",  # str: casio, gw
@@ -83,9 +86,10 @@ FIELDS = (
     "names_keep_case",  # bool: False
     "name_length",  # int | None: None
     "hex_literals",  # bool: False
+    "screen",  # ScreenRules: CASIO_SCREEN
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
-            True, True, False, False, None, False, None, False)
+            True, True, False, False, None, False, None, False, CASIO_SCREEN)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -191,10 +195,11 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
 
     Display and keyboard
         ``display``: ``(columns, rows, shown)`` of the machine's screen model
-        (yaseer/basic/display.py): casio's 32 x 8 virtual screen with its 2-line
-        LCD; None: no screen model (PRINT is a stream of text, as gw today).
+        (yaseer/basic/machine/display.py): casio's 32 x 8 virtual screen with its 2-line
+        LCD, gw's 80 x 25 text screen; None: no screen model (PRINT is a stream of text).
         ``controls``: ``(code, action)`` pairs, what each control code does on
-        that display.  ``charset``: the machine's character codes
+        that display.  ``screen``: the display's rules (yaseer/basic/dialects/screens.py:
+        when the cursor wraps, where LOCATE counts from, the function-key line).  ``charset``: the machine's character codes
         (yaseer/basic/charset.py): what CHR$ and ASC answer, how program and data
         files' bytes read.  ``enter_key``: the character INPUT$ and INKEY$ read for
         a line break of the key stream (casio: EXE, ``CHR$(13)``).
@@ -260,13 +265,14 @@ CASIO = Dialect(
 
 GW = Dialect(
     name="gw", keyword_first=False, pi_keyword=False,
-    own_words=("DEFINT", "DEFSNG", "DEFDBL", "DEFSTR", "XOR", "EQV", "IMP") + RANDOM_FILE_WORDS + CHAIN_WORDS + COMMAND_WORDS,
+    own_words=("DEFINT", "DEFSNG", "DEFDBL", "DEFSTR", "XOR", "EQV", "IMP") + RANDOM_FILE_WORDS + CHAIN_WORDS
+    + COMMAND_WORDS + SCREEN_WORDS,
     typed_numbers=True, print_digits=7,
     width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
     implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,
     errors_when_reached=True, comma_trims_number=True, for_binds_next=True, largest_number=DOUBLE_LARGEST,
     printer_width=80, joins_unnumbered_lines=False, names_missing_line=False, spaced_relations=True,
-    bracket_subscripts=True,
+    bracket_subscripts=True, display=(80, 25, 25), controls=tuple(sorted(GW_CONTROLS.items())), screen=GW_SCREEN,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -21,7 +21,7 @@ import re
 import sys
 
 from yaseer.basic.machine import runtime
-from yaseer.basic.machine.display import Display, boxed
+from yaseer.basic.machine.display import DRAWING_ACTIONS, Display, boxed
 from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END
 from yaseer.basic.machine.screen import OutputStream
 
@@ -30,10 +30,10 @@ from yaseer.basic.machine.screen import OutputStream
 # shift key is held (PEEK(206) after INPUT$).  Every other address holds what POKE left, 0 at first.
 # (POKE and DEFSEG are the casio words' statements; they share ``memory`` and ``segment``.)
 LAST_INPUT_KEY = 0x65B
-EMPTY_POLLS = 1000
+EMPTY_POLLS = 1000  # INKEY$ answers "" this many times at the end of the key stream, then Input past end
 TAIL_PIECES = 1024  # pieces of streamed text kept before they are cut to the screen's last rows
-# Control codes that place text where the program chooses (the display's DRAWING_ACTIONS).
-_DRAWING = re.compile("[\x02\x05\x06\x08\x0b\x0c\x1c-\x1f]")  # INKEY$ answers "" this many times at the end of the key stream, then Input past end
+# SGR colours of the text screen's 16 (CGA order: blue is 1, red 4) for a terminal's COLOR
+_ANSI = (0, 4, 2, 6, 1, 5, 3, 7)
 
 
 def end_of_keys() -> BasicError:
@@ -76,27 +76,68 @@ class DisplayStream(OutputStream):
         super().__init__(stream, width)
         self.display = display
         self._tail: list[str] = []
+        controls = display.controls
+        # codes that place text (the display is drawn on) and codes that move the cursor otherwise
+        # than one column a character (the display must say where the column is)
+        self._drawing = _codes_matching(controls, lambda action: action in DRAWING_ACTIONS)
+        self._special = _codes_matching({code: action for code, action in controls.items() if code != 10},
+                                        lambda action: action not in ("glyph", "carriage_return"))
+        # ("\n" is the line end: a new row on every display, whatever its code 10 does)
 
     def write(self, text: str) -> None:
+        display = self.display
+        if display.drawn or not (text.isprintable() or not self._special.search(text)):
+            self._placed(text)
+            return
+        # streamed text: kept for the display, written on as OutputStream.write does (inline:
+        # this is every PRINT item's path)
+        tail = self._tail
+        tail.append(text)
+        if len(tail) > TAIL_PIECES:
+            self._shorten_tail()
+        if "\r" in text:
+            text = text.replace("\r", "\n")
+        width = self.width
+        if width is not None:
+            column = self.column
+            if "\n" not in text and column + len(text) < width:
+                self.stream.write(text)
+                self.column = column + len(text)
+                return
+            text = self._folded(text)
+        self.stream.write(text)
+        newline = text.rfind("\n")
+        self.column = len(text) - newline - 1 if newline >= 0 else self.column + len(text)
+
+    def _placed(self, text: str) -> None:
+        """Text with codes that draw or move the cursor, or any text once the display is drawn."""
         if not text:
             return
         display = self.display
-        if not display.drawn and (text.isprintable() or not _DRAWING.search(text)):
-            tail = self._tail
-            tail.append(text)
-            if len(tail) > TAIL_PIECES:
-                self._shorten_tail()
-            OutputStream.write(self, text)
-            return
         self.catch_up()
+        if not display.drawn and not self._drawing.search(text):
+            display.write(text)  # TAB, BEL, ...: streamed on, the column as the display has it
+            OutputStream.write(self, text)
+            self.column = display.x
+            return
         display.write(text)
         if display.drawn:  # drawn, before or by this text: screens from now on, not streamed text
             self.column = display.x
             return
-        super().write(text)
+        OutputStream.write(self, text)
 
     def new_row(self) -> None:
-        self.write("\n")
+        """PRINT starts a new row (a full row's waiting wrap is that new row: no empty row)."""
+        display = self.display
+        if not display.drawn:
+            if self.width is None or self.column < self.width:
+                self._tail.append("\n")  # (a full row: the display's next character wraps it)
+            OutputStream.new_row(self)
+            return
+        self.catch_up()
+        display.new_line()
+        display.changed = True
+        self.column = 0
 
     def catch_up(self) -> None:
         """Put the streamed text kept so far on the display (before it is drawn on)."""
@@ -123,6 +164,12 @@ class DisplayStream(OutputStream):
         self._tail = [kept]
 
 
+def _codes_matching(controls: dict, wanted) -> "re.Pattern":
+    """A pattern of the control codes whose action is ``wanted`` (one that never matches if none)."""
+    codes = "".join(re.escape(chr(code)) for code, action in sorted(controls.items()) if wanted(action))
+    return re.compile(f"[{codes}]" if codes else "(?!)")
+
+
 class Console:
     """The display, the screens shown, the key stream and what PEEK reads (a mixin of Machine)."""
 
@@ -142,7 +189,7 @@ class Console:
             self.display = None
             return OutputStream(screen, self.dialect.width)
         columns, rows, shown = geometry
-        self.display = Display(columns, rows, shown, dict(self.dialect.controls))
+        self.display = Display(columns, rows, shown, dict(self.dialect.controls), self.dialect.screen)
         return DisplayStream(screen, self.display, self.dialect.width)
 
     def shown(self, stream):
@@ -152,18 +199,159 @@ class Console:
         return SymbolStream(stream, charset) if charset.own_symbols else stream
 
     # ------------------------------------------------------------ the display
-    def locate(self, x, y) -> None:
-        """LOCATE x, y: the cursor to column x of row y of the virtual screen (0-based;
-        beyond the screen is Illegal function call, the manual's FC error)."""
+    def _screen_model(self) -> Display:
+        """The display, brought up to date with the text streamed so far (Illegal function
+        call in a dialect without one)."""
         display = self.display
         if display is None:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-        column, row = runtime.cint(runtime.fix(x)), runtime.cint(runtime.fix(y))
-        if not (0 <= column < display.columns and 0 <= row < display.rows):
-            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         self.screen.catch_up()
+        return display
+
+    def locate(self, args: tuple) -> None:
+        """LOCATE: the cursor to a cell of the screen (the dialect's rules: the Casio's
+        0-based ``x, y``; GW's 1-based ``row, column`` with the cursor's visibility and
+        shape after them, GWSTS.ASM LOCATE).  Outside the screen (GW: also row 25 while
+        the keys are shown, outside a VIEW PRINT window as PC-BASIC 2.0.8 checks) is
+        Illegal function call."""
+        display = self._screen_model()
+        rules = display.rules
+        whole = [None if a is None else runtime.cint(runtime.fix(a)) for a in args]
+        first, second = (whole + [None, None])[:2]
+        row, column = (first, second) if rules.row_first else (second, first)
+        origin = rules.origin
+        row = display.row() if row is None else row - origin
+        column = display.column() if column is None else column - origin
+        top, bottom = (display.view_top, display.view_bottom) if display.view_set else (0, display.rows - 1)
+        if display.keys_on and display.keys:
+            bottom = min(bottom, display.rows - 2)
+        if not (0 <= column < display.columns and top <= row <= bottom):
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        cursor, start, stop = (whole[2:] + [None, None, None])[:3]
+        if (cursor is not None and not 0 <= cursor <= 1) or (start is None and stop is not None) \
+                or any(v is not None and not 0 <= v <= 31 for v in (start, stop)):
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         display.locate(column, row)
         self.screen.column = column
+
+    def cursor_row(self) -> float:
+        """CSRLIN: the row the next character goes to (GWSTS.ASM GTLINE)."""
+        display = self._screen_model()
+        return float(display.row() + display.rules.origin)
+
+    def cursor_column(self, _dummy=None) -> float:
+        """POS(x): the column the next character goes to, 1-based (GIOSCN.ASM POS: after a
+        full row, 1); from the stream's column while nothing placed text."""
+        width = self.screen.width
+        column = self.screen.column
+        return 1.0 if width is not None and column >= width else float(column + 1)
+
+    def screen_char(self, row, column, attribute=None) -> float:
+        """SCREEN(row, column[, z]): the code of the character there, or with z not 0 its
+        colour attribute (GWSTS.ASM SCRENF; inside a VIEW PRINT window only, as PC-BASIC)."""
+        display = self._screen_model()
+        origin = display.rules.origin
+        r, c = runtime.cint(row) - origin, runtime.cint(column) - origin
+        z = 0 if attribute is None else runtime.cint(attribute)
+        inside = display.view_top <= r <= display.view_bottom if display.view_set else 0 <= r < display.rows
+        if not (inside and 0 <= c < display.columns and 0 <= z <= 255):
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        if z:
+            return float(display.attr_at(c, r))
+        return float(ord(self.dialect.charset.codes(display.char_at(c, r))[0]))
+
+    def clear_screen(self, mode=None) -> None:
+        """CLS [n]: clear the screen (with a VIEW PRINT window, the window; CLS 0 all of it,
+        CLS 2 the window, CLS 1 - the graphics window - nothing in text mode, as PC-BASIC
+        2.0.8); the next PRINT starts at its first column."""
+        whole = None
+        if mode is not None:
+            n = runtime.cint(mode)
+            if not 0 <= n <= 2:
+                raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+            if n == 1:
+                return
+            whole = n == 0
+        if self.on_clear_screen is not None:
+            self.on_clear_screen()
+        if self.display is not None:
+            self.screen.catch_up()
+            self.display.clear(whole)
+        self.screen.column = 0
+
+    def screen_statement(self, word: str, args: tuple) -> None:
+        """COLOR [foreground][, background][, border] (0..31, 0..15, 0..15: the text mode's,
+        PC-BASIC 2.0.8; a terminal shows the colours, other output ignores them), and
+        SCREEN mode[, colour][, pages]: text mode 0 only (no graphics adapter: any other mode
+        is Illegal function call, as on a monochrome display)."""
+        display = self._screen_model()
+        values = [None if a is None else runtime.cint(a) for a in args]
+        if word == "SCREEN":
+            limits = (0, 1, 7, 7)
+            if not values or values[0] is None:
+                raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        else:
+            limits = (31, 15, 15)
+        for value, limit in zip(values, limits):
+            if value is not None and not 0 <= value <= limit:
+                raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        if word == "SCREEN" or not display.rules.attributes:
+            return
+        fore, back = (values + [None, None])[:2]
+        attr = display.attr
+        blink = attr & 0x80 if fore is None else (0x80 if fore > 15 else 0)
+        fore = attr & 0x0F if fore is None else fore & 0x0F
+        back = (attr >> 4) & 7 if back is None else back & 7
+        display.attr = blink | back << 4 | fore
+        stream = self.screen.stream
+        isatty = getattr(stream, "isatty", None)
+        if isatty is not None and isatty():  # the terminal's own colours: SGR codes
+            bright = 90 if fore & 8 else 30
+            stream.write(f"\x1b[0;{bright + _ANSI[fore & 7]};{40 + _ANSI[back]}{';5' if blink else ''}m")
+
+    def view_print(self, rows) -> None:
+        """VIEW PRINT [first TO last]: only those rows scroll (1..24 as PC-BASIC 2.0.8 checks;
+        last before first is Illegal function call); without rows, the whole screen again."""
+        display = self._screen_model()
+        if rows is None:
+            display.reset_view()
+            return
+        origin = display.rules.origin
+        first, last = runtime.cint(rows[0]) - origin, runtime.cint(rows[1]) - origin
+        bottom = display.rows - 1 - (1 if display.keys else 0)
+        if not (0 <= first <= last <= bottom):
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        display.set_view(first, last)
+        self.screen.column = 0
+
+    def key_line(self, action: str) -> None:
+        """KEY ON / KEY OFF: show or blank the function keys' line (GWSTS.ASM KEYON KEYOF);
+        KEY LIST prints each key's text, a carriage return shown as the arrow (KEYLST)."""
+        display = self._screen_model()
+        if not display.keys:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        if action == "LIST":
+            for k, text in enumerate(display.keys):
+                self.screen.write(f"F{k + 1} " + text.replace("\r", "\u2190") + "\n")
+            return
+        display.set_keys_shown(action == "ON")
+
+    def define_key(self, number, text: str) -> None:
+        """KEY n, text: function key n (1..10) types ``text`` (its first 15 characters,
+        GWSTS.ASM KEYS); n out of range is Illegal function call."""
+        display = self._screen_model()
+        n = runtime.cint(number)
+        if not 1 <= n <= len(display.keys):
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        display.define_key(n, text)
+
+    def set_screen_size(self, columns, rows) -> None:
+        """WIDTH columns, rows: 40 or 80 columns, and the screen's 25 rows (any other number
+        of rows is Illegal function call; GWSTS.ASM GWWID)."""
+        display = self._screen_model()
+        if runtime.cint(rows) != display.rows:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self.set_width(columns)
 
     def show_screen(self, final: bool = False) -> None:
         """Show the display's screen on the output (a program that drew waits for a key, or
@@ -218,7 +406,8 @@ class Console:
         polls, so ``IF INKEY$="" THEN A=ASC(INPUT$(1))`` waits at INPUT$ as on the machine and
         a polling loop gets each key.  A key script's end answers "" a while, then is Input
         past end, so a program polling for a key does not spin forever."""
-        self.show_screen()
+        if self.display is None or self.display.changed or not self.screens:
+            self.show_screen()  # (a program polling for a key shows a screen only when it changed)
         if not self._looked:
             self._looked = True
             return ""

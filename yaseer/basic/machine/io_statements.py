@@ -46,15 +46,6 @@ class InputOutput:
         """TRON's ``[n]`` as line ``n`` starts (on the screen, like PRINT without a newline)."""
         self.screen.write(f"[{number}]")
 
-    def clear_screen(self) -> None:
-        """CLS: clear the screen if the screen can be cleared; the next PRINT starts at column 1."""
-        if self.on_clear_screen is not None:
-            self.on_clear_screen()
-        if self.display is not None:
-            self.screen.catch_up()
-            self.display.clear()
-        self.screen.column = 0
-
     def set_width(self, columns, printer: bool = False) -> None:
         """WIDTH n: the screen's width, 40 or 80 columns as GW-BASIC's text screen has
         (any other n is Illegal function call); PRINT wraps there from now on.
@@ -69,6 +60,10 @@ class InputOutput:
             return
         if n not in SCREEN_WIDTHS:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        if self.display is not None and n != self.display.columns:  # a new width clears the screen
+            self.screen.catch_up()
+            self.display.resize(n)
+            self.screen.column = 0
         self.screen.width = n
 
     def set_device_width(self, device: str, columns) -> None:
@@ -147,7 +142,7 @@ class InputOutput:
                     raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
                 stream.spc(count)
         if newline:
-            stream.write("\n")
+            stream.end_line()
 
     def _blank_before_comma(self, stream: OutputStream, text: str) -> str:
         """A number a comma follows loses its trailing blank when it would end just
@@ -181,7 +176,7 @@ class InputOutput:
             return
         stream.write(_formatted(fmt, values, stream))
         if newline:
-            stream.write("\n")
+            stream.end_line()
 
     def _note_values(self, device: int, values: list, newline) -> None:
         """Collect a printed line's values; at its end hand them to the line hooks."""
@@ -289,7 +284,7 @@ class InputOutput:
         """PRINT #n, USING."""
         stream.write(_formatted(fmt, self._using_values(values), stream))
         if newline:
-            stream.write("\n")
+            stream.end_line()
 
     def write_to(self, stream, pieces: tuple) -> None:
         """WRITE #n."""

@@ -415,7 +415,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_cvi": g.cvi, "_cvs": g.cvs, "_cvd": g.cvd, "_timer": g.timer, "_date": g.date_dollar,
             "_time": g.time_dollar, "_xor": g.logical_xor, "_eqv": g.logical_eqv,
             "_imp": g.logical_imp, "_midset": g.mid_assign, "_fre": self.free_memory,
-            "_pos": lambda _: float(self.screen.column + 1),
+            "_pos": self.cursor_column,
             "_lpos": lambda _: float(self.printer.column + 1),
             "_erase": self.erase, "_option_base": self.option_base, "_line_input": self.line_input,
             "_write": self.write_values, "_clear_args": _check_clear_arguments,

@@ -10,7 +10,9 @@ reproduces it:
 * a character written when the row is full (column = width) first starts a new
   row, so a line of exactly ``width`` characters followed by the end of the PRINT
   leaves an empty row, as on the real screen; a new row that PRINT itself starts
-  (an item that does not fit, ``,``, ``TAB``) does not add another;
+  (an item that does not fit, ``,``, ``TAB``) does not add another, nor does a
+  carriage return or line feed the program prints (``CHR$(13)``: the full row's
+  wrap is its new row, as PC-BASIC 2.0.8's screen shows it);
 * a PRINT item (a number with its blanks, or a string) that would run past the
   width starts on a new row unless the row is empty (``STRDON``/``LINCHK``);
   longer ones then wrap character by character (on the printer, ``moves_items``
@@ -65,12 +67,20 @@ class OutputStream:
             return text  # the common case: it fits and leaves room
         out = []
         for ch in text:
-            if column >= width:
-                out.append("\n")
+            if ch == "\n":
                 column = 0
+            elif column >= width:
+                out.append("\n")
+                column = 1
+            else:
+                column += 1
             out.append(ch)
-            column = 0 if ch == "\n" else column + 1
         return "".join(out)
+
+    def end_line(self) -> None:
+        """The end of a PRINT line: after a full row, its wrap and then the new row."""
+        width = self.width
+        self.write("\n\n" if width is not None and self.column >= width else "\n")
 
     def new_row(self) -> None:
         """Start a new row (a row that is full has one already waiting: no empty row)."""
@@ -81,7 +91,11 @@ class OutputStream:
         """One PRINT item: on a new row first if it would run past the width (GW-BASIC's
         screen; a printer's items wrap character by character, as PC-BASIC 2.0.8 prints)."""
         width = self.width
-        if width is not None and self.moves_items and self.column and self.column + len(text) > width:
+        # (a full row's cursor counts as in its last column: one character more still "fits",
+        # and wraps by itself; a CHR$(13) then makes no empty row, as PC-BASIC 2.0.8 shows)
+        column = self.column
+        if width is not None and column and column + len(text) > width and self.moves_items \
+                and (column < width or len(text) > 1):
             self.new_row()
         self.write(text)
 

@@ -365,7 +365,31 @@ class _ToAst:
         return ast.Command("EDIT", _line_number(c[1]))
 
     def key_stmt(self, c):
-        return ast.Command("KEY", None, c[1].type)
+        return ast.Key(c[1].type)
+
+    def key_define(self, c):
+        return ast.Key("DEFINE", c[1], c[3])
+
+    def optargs(self, c):
+        args: list = [None]  # None where an argument is left out
+        for x in c:
+            if isinstance(x, Token) and x.type == "COMMA":
+                args.append(None)
+            else:
+                args[-1] = x
+        return args if c else []
+
+    def color_stmt(self, c):
+        return ast.ScreenStatement("COLOR", c[1])
+
+    def screen_stmt(self, c):
+        return ast.ScreenStatement("SCREEN", c[1])
+
+    def view_print(self, c):
+        return ast.ViewPrint(c[2], c[4]) if len(c) > 2 else ast.ViewPrint()
+
+    def screen_fn(self, c):
+        return ast.Call("SCREEN", tuple(c[1]))
 
     def merge_stmt(self, c):
         return ast.Chain(True, c[1], None, True, None, run=False)
@@ -462,7 +486,7 @@ class _ToAst:
         return ast.Trace(c[0].type == "TRON")
 
     def cls_stmt(self, c):
-        return ast.Cls()
+        return ast.Cls(c[1] if len(c) > 1 else None)
 
     def bank_stmt(self, c):
         return ast.Bank(c[0].value, _values(c[1:]))
@@ -473,7 +497,7 @@ class _ToAst:
         return ast.DefChr(c[2], c[4])
 
     def locate_stmt(self, c):
-        return ast.Locate(c[1], c[3])
+        return ast.Locate(c[1])
 
     def input_at(self, c):  # INPUT @n; v: the library's form; no "?" of its own
         return ast.Input("", False, _values(c[4:]), at=int(_number_value(c[2])))

@@ -64,6 +64,7 @@ DIALECT_WORDS = {
     "CHAIN": "CHAIN", "COMMON": "COMMON", "MERGE": "MERGE", "DELETE": "DELETE",
     "RUN": "RUN", "LIST": "LIST", "LLIST": "LIST", "LOAD": "LOAD", "SAVE": "SAVE", "NEW": "NEW",
     "EDIT": "EDIT", "KEY": "KEY", "OFF": "OFF", "SYSTEM": "SYSTEM",
+    "CSRLIN": "SYSVAR", "COLOR": "COLOR", "SCREEN": "SCREEN", "VIEW": "VIEW",
 }
 # GW-BASIC reads these keywords even when name characters follow (``FNA``, ``TAB(``).
 _GW_PREFIX_KEYWORDS = ("FN",)

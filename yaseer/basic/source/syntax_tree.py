@@ -477,7 +477,32 @@ class Trace:
 
 @_node
 class Cls:
-    pass
+    """CLS [n]: clear the screen (n: 0 all of it, 2 the text window, 1 the graphics one)."""
+    mode: object = None
+
+
+@_node
+class ScreenStatement:
+    """A text-screen statement whose arguments may each be left out (None):
+    ``word`` LOCATE (row/column, cursor), COLOR (foreground, background, border) or
+    SCREEN (mode, colour switch, pages)."""
+    word: str
+    args: list
+
+
+@_node
+class ViewPrint:
+    """VIEW PRINT [first TO last]: the rows that scroll (none given: the whole screen)."""
+    first: object = None
+    last: object = None
+
+
+@_node
+class Key:
+    """KEY ON / OFF / LIST (``action``), or KEY n, text (``number``, ``text``)."""
+    action: str
+    number: object = None
+    text: object = None
 
 
 @_node
@@ -501,9 +526,9 @@ class EndMark:
 
 @_node
 class Locate:
-    """LOCATE x, y: the cursor to column x of row y of the display."""
-    x: object
-    y: object
+    """LOCATE: the cursor to a place of the display; ``args`` as written, None where
+    one is left out (the Casio's ``x, y``; GW's ``row, column, cursor, start, stop``)."""
+    args: list
 
 
 @_node

@@ -1,0 +1,59 @@
+"""How a dialect's text screen behaves: the rules the shared display model
+(yaseer/basic/machine/display.py) and the screen statements follow, as plain data.
+
+A :class:`ScreenRules` is part of a :class:`~yaseer.basic.dialects.dialect.Dialect`
+(its ``screen`` field); the display's size is the dialect's ``display`` and what each
+control code does its ``controls``.
+
+* ``late_wrap``: True keeps the cursor past the last column after a row is filled,
+  until the next character arrives (GW-BASIC: SCNDRV.ASM keeps CSRX at LINLEN+1 and
+  CHWRAP wraps before the next character; so a full bottom row does not scroll the
+  screen); False wraps at once (the Casio's PRINT page: "a line feed results when the
+  cursor reaches the last column").
+* ``origin``: the number of the first row and column in LOCATE, CSRLIN, POS and
+  SCREEN() (0 on the Casio, 1 in GW-BASIC).
+* ``row_first``: True when LOCATE names the row first (GW's ``LOCATE row, col``),
+  False for the Casio's ``LOCATE x, y``.
+* ``locate_arguments``: (fewest, most) arguments LOCATE takes (the Casio's x and y;
+  GW's five optional ones, GWSTS.ASM LOCATE).
+* ``function_keys``: the texts of the function keys the last row shows under KEY ON
+  (GW-BASIC's defaults; ``()``: no key line).  A screen with a key line keeps its last
+  row out of the rows that scroll, whether the keys are shown or not (SCNDRV.ASM: the
+  window ends at LINCNT-1).
+* ``key_label``: characters of each key's text on the key line (GWSTS.ASM KEYDSP
+  writes the key's number, this many characters, then a blank: 8 columns a key).
+* ``clear_draws``: True makes CLS turn a transcript from streamed text into screens
+  (the Casio, whose 2-line LCD is all one sees); False leaves the text streaming
+  after CLS (a GW program that clears the screen and PRINTs reads in order), and
+  only placing text (LOCATE, cursor codes, VIEW PRINT) shows screens.
+* ``attributes``: True when cells carry a colour attribute (COLOR, SCREEN(r, c, 1)).
+"""
+
+from __future__ import annotations
+
+from collections import namedtuple
+
+ScreenRules = namedtuple("ScreenRules", ("late_wrap", "origin", "row_first", "locate_arguments",
+                                         "function_keys", "key_label", "clear_draws", "attributes"))
+
+CASIO_SCREEN = ScreenRules(late_wrap=False, origin=0, row_first=False, locate_arguments=(2, 2),
+                           function_keys=(), key_label=0, clear_draws=True, attributes=False)
+
+# GW-BASIC's soft keys at start (F1..F10; GWSTS.ASM's table is the OEM's, these are the
+# IBM PC's as PC-BASIC 2.0.8 has them); a carriage return ends several.
+GW_FUNCTION_KEYS = ("LIST ", "RUN\r", 'LOAD"', 'SAVE"', "CONT\r", ',"LPT1:"\r', "TRON\r", "TROFF\r",
+                    "KEY ", "SCREEN 0,0,0\r")
+
+GW_SCREEN = ScreenRules(late_wrap=True, origin=1, row_first=True, locate_arguments=(0, 5),
+                        function_keys=GW_FUNCTION_KEYS, key_label=6, clear_draws=False, attributes=True)
+
+# What each control code does on GW-BASIC's text screen when PRINTed (the OEM's PRTMAP is
+# not in the published source; PC-BASIC 2.0.8's console does this): TAB to the next
+# multiple of 8, CR and LF a new row, ^K home within the window, ^L clear it, ^\ ^] ^^ ^_
+# move the cursor within the window (SCNDRV.ASM WCSADV WCSREG WCSUP WCSDWN); BEL (7) sounds
+# and shows nothing; every other code shows as its character (CHR$(0), CHR$(8) ...).
+GW_CONTROLS = {code: "glyph" for code in range(32)}
+GW_CONTROLS.update({
+    7: "bell", 9: "tab", 10: "carriage_return", 11: "window_home", 12: "clear", 13: "carriage_return",
+    28: "advance", 29: "regress", 30: "window_up", 31: "window_down",
+})
