@@ -135,3 +135,11 @@ def test_color_shows_on_a_terminal_only():
 def test_width_40_clears_and_narrows_the_screen():
     machine, _ = run('10 PRINT "OLD"\n20 WIDTH 40, 25\n30 PRINT STRING$(45, "A")\n')
     assert rows(machine)[:2] == ["A" * 40, "A" * 5] and machine.display.columns == 40
+
+
+def test_key_list_prints_each_key():
+    """KEY LIST: ``F`` and the key's number, a blank, its text with a carriage return shown
+    as the arrow (GWSTS.ASM KEYLST; PC-BASIC 2.0.8 prints the same ten lines)."""
+    _, out = run('10 KEY 2, "RUN" + CHR$(13)\n20 KEY LIST\n')
+    assert out.splitlines()[:3] == ["F1 LIST ", "F2 RUN\u2190", 'F3 LOAD"']
+    assert out.splitlines()[9] == "F10 SCREEN 0,0,0\u2190" and len(out.splitlines()) == 10

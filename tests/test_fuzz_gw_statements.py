@@ -1,0 +1,68 @@
+"""Fuzzing gw's text-screen and language statements: random programs of LOCATE, COLOR,
+CLS, KEY, SCREEN, VIEW PRINT, WIDTH, CSRLIN, POS, SCREEN(), INKEY$, PRINT of control
+codes (and the other statements of the issue's list) with arguments in and out of range,
+left out or of the wrong type.  Each program ends normally or with a BASIC error line
+naming its line (never a Python exception), and writes nothing in its directory.
+
+``YASEER_FUZZ_EXAMPLES`` sets the number of programs (60 by default).
+"""
+
+from __future__ import annotations
+
+import io
+import os
+from pathlib import Path
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from yaseer.basic.dialects.dialect import GW
+from yaseer.basic.errors import BasicError
+from yaseer.basic.machine.machine import INTERNAL_ERROR, Machine
+
+ARGUMENTS = ["1", "0", "-1", "25", "24", "80", "81", "255", "256", "32767", "32768", "1E10", '"A"', "X", "", "2.5"]
+
+
+def argument(data) -> str:
+    return data.draw(st.sampled_from(ARGUMENTS))
+
+
+def statement(data) -> str:
+    a, b, c = argument(data), argument(data), argument(data)
+    code = data.draw(st.integers(0, 40))
+    choices = [
+        f"LOCATE {a}, {b}", f"LOCATE {a}", f"LOCATE , {b}", f"LOCATE {a}, {b}, {c}, {a}, {b}", f"LOCATE {a},{b},{c},{a},{b},{c}",
+        f"COLOR {a}, {b}, {c}", f"COLOR {a}", f"COLOR , {b}", "COLOR", f"CLS {a}", "CLS",
+        "KEY ON", "KEY OFF", "KEY LIST", f'KEY {a}, "TEXT"', f"KEY {a}, {b}",
+        f"SCREEN {a}", f"SCREEN {a}, {b}, {c}", f"VIEW PRINT {a} TO {b}", "VIEW PRINT",
+        f"WIDTH {a}", f"WIDTH {a}, {b}", f"PRINT SCREEN({a}, {b}); SCREEN({a}, {b}, {c})",
+        "PRINT CSRLIN; POS(0)", f"PRINT CHR$({code}); \"AB\"; CHR$({code});", f'PRINT STRING$(80, "*");',
+        "K$ = INKEY$", f"X = {a}: PRINT X", "FOR I = 1 TO 30: PRINT I: NEXT",
+    ]
+    return data.draw(st.sampled_from(choices))
+
+
+def example_count() -> int:
+    return int(os.environ.get("YASEER_FUZZ_EXAMPLES", 60))
+
+
+@settings(max_examples=example_count(), deadline=None, derandomize=True, database=None,
+          suppress_health_check=list(HealthCheck))
+@given(data=st.data())
+def test_screen_statements_end_normally_or_with_a_basic_error_line(data, tmp_path_factory):
+    lines = [statement(data) for _ in range(data.draw(st.integers(1, 10)))]
+    source = "".join(f"{10 * (k + 1)} {line}\n" for k, line in enumerate(lines))
+    workdir = tmp_path_factory.mktemp("fuzzgw")
+    before = Path.cwd()
+    os.chdir(workdir)
+    try:
+        machine = Machine(screen=io.StringIO(), dialect=GW, input_stream=io.StringIO("ab\n"))
+        try:
+            machine.load(source)
+            machine.run()
+        except BasicError as err:
+            assert err.code != INTERNAL_ERROR, f"a Python exception inside: {err}\n{source}"
+            assert err.line is not None, f"no line named: {err}\n{source}"
+    finally:
+        os.chdir(before)
+    assert list(workdir.iterdir()) == [], "the run wrote a file"
