@@ -49,6 +49,17 @@ AGREED = {
     "using after items": '10 PRINT "X="; USING "##.#"; 3.14159\n20 PRINT 1, USING "#"; 2\n',
     "using rounds the single's digits": ('10 PRINT USING "#.##"; 2.675; 1.005; 0.125#; 2.675#\n'
                                           '20 PRINT USING "#.##########"; 1/3\n'),
+    # WEND looks for its WHILE's entry on the stack (GWMAIN.ASM WEND): a GOTO into the loop's
+    # body reaches a WEND whose loop is not running
+    "while entered by goto": '10 I = 0: GOTO 40\n30 WHILE I < 3\n40 PRINT "IN"; I: I = I + 1\n50 WEND\n60 PRINT "DONE"\n',
+    "while left and entered again": ('10 WHILE I < 2: I = I + 1: WEND\n20 J = J + 1: IF J < 3 THEN 40\n30 END\n'
+                                     '40 PRINT "IN"; J: WEND\n'),
+    "while running when entered by goto": ('10 WHILE I < 3: I = I + 1: IF I = 1 THEN 30\n20 PRINT "A";\n'
+                                           '30 PRINT I;: WEND\n'),
+    # MID$ = copies byte by byte into the target (BISTRS.ASM LHSMID, MID$LP): the target
+    # itself as the value overlaps; a MID$() of it is a copy
+    "mid$ onto itself": ('10 A$ = "ABCDEFGH": MID$(A$, 3) = A$: PRINT A$\n20 B$ = "HELLO": MID$(B$, 2, 3) = MID$(B$, 1)\n'
+                         '30 C$ = "WXYZ": MID$(C$, 2) = C$: D$ = "1234": MID$(D$, 1, 2) = D$: PRINT B$; " "; C$; " "; D$\n'),
 }
 
 

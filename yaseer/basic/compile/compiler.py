@@ -124,6 +124,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.blocks: list[_Block] = [_Block(b) for b in range(len(self.plan.entries))]
         self.block_next: dict[int, int] = {}
         self.while_block: dict[int, int] = {}  # id(WHILE in an IF branch) -> its block
+        self.while_numbers: dict | None = None  # id(WHILE) -> its number in the text (while_key)
         self.branch_after: dict[int, _Block] = {}  # id(WEND or NEXT in an IF branch) -> the block after it
         self.prelude: list[str] = []
         self.scalars: set[str] = set()
@@ -403,7 +404,28 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             block, indent = self.cur, self.indent
             self.while_block[id(stmt)] = start = self.continuation()
             block.code.append((indent, f"return {start}"))
-        self.emit(f"if not ({self.condition(stmt.condition, scope)}): return {self.after(*found).number}")
+        # the loops running (GW's stack of WHILE entries): a WEND reached by a GOTO into a loop
+        # that is not running is WEND without WHILE (GWMAIN.ASM WEND searches the stack)
+        condition, after = self.condition(stmt.condition, scope), self.after(*found).number
+        if not self.entered_inside(self.index, found[0]):
+            self.emit(f"if not ({condition}): return {after}")
+            return
+        key = self.while_key(stmt)
+        self.emit(f"if not ({condition}): _wh.discard({key}); return {after}")
+        self.emit(f"_wh.add({key})")
+
+    def entered_inside(self, start: int, end: int) -> bool:
+        """Whether a block starts inside the loop from statement ``start`` to ``end`` (a GOTO
+        target, a return point ...): only such a loop's WEND can be reached while the loop
+        is not running, so only its WHILE and WEND keep the running-loops set."""
+        return any(start < entry <= end for entry in self.plan.entries)
+
+    def while_key(self, loop) -> int:
+        """The running-loops set's key of a WHILE: its area and its number in the text, as one
+        int (an int hashes at once: the set is touched every time round the loop)."""
+        if self.while_numbers is None:
+            self.while_numbers = {k: n for n, k in enumerate(self.plan.while_wend)}
+        return self.area << 32 | self.while_numbers[id(loop)]
 
     def after(self, index: int, node) -> _Block:
         """The block where execution goes on after ``node`` (a WEND, or a NEXT a FOR that
@@ -433,6 +455,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             start = self.entry_block[index] if loop is self.flat[index][1] else self.while_block.get(id(loop))
         if start is None:
             raise CompileError("WEND without WHILE", WEND_WITHOUT_WHILE)
+        if self.entered_inside(index, self.index):
+            self.emit(f"if {self.while_key(loop)} not in _wh: raise _err('WEND without WHILE', {WEND_WITHOUT_WHILE})")
         self.emit(f"return {start}")
         if self.depth:  # the rest of the IF branch goes on in the block after the WEND
             self.continue_after(stmt, fall_through=False)
@@ -450,7 +474,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
     def stmt_MidAssign(self, stmt, scope):
         target = self.string(stmt.target, scope)
         count = "None" if stmt.count is None else self.numeric(stmt.count, scope)
-        code = f"_midset({target}, {self.numeric(stmt.start, scope)}, {count}, {self.string(stmt.value, scope)})"
+        # the target itself as the value: GW copies it onto itself byte by byte (overlapping)
+        same = stmt.value == stmt.target and self.numbers.typed
+        code = f"_midset({target}, {self.numeric(stmt.start, scope)}, {count}, {self.string(stmt.value, scope)}, {same})"
         self.assign(stmt.target, code, "s", scope, False)
 
     def stmt_Erase(self, stmt, scope):

@@ -303,14 +303,23 @@ def number_field(text: str, largest: float | None = None) -> float | None:
     return value
 
 
-def mid_assign(target: str, start: float, count, value: str) -> str:
+def mid_assign(target: str, start: float, count, value: str, overlapping: bool = False) -> str:
     """MID$(target, start[, count]) = value: ``target`` with characters from ``start``
-    replaced by those of ``value`` (at most ``count``, never past the end of ``target``)."""
+    replaced by those of ``value`` (at most ``count``, never past the end of ``target``).
+
+    ``overlapping``: the value is the target variable itself, whose bytes GW-BASIC copies
+    one by one from its start while it overwrites them (BISTRS.ASM LHSMID, its loop
+    MID$LP): ``MID$(A$, 3) = A$`` of "ABCDEFGH" is "ABABABAB", as PC-BASIC 2.0.8 prints."""
     i = _count(start, 1, 255)
     if i > len(target):
         raise _illegal()
     n = len(value) if count is None else min(_count(count), len(value))
     n = min(n, len(target) - i + 1)
+    if overlapping:
+        cells = list(target)
+        for k in range(n):
+            cells[i - 1 + k] = cells[k]
+        return "".join(cells)
     return target[:i - 1] + value[:n] + target[i - 1 + n:]
 
 

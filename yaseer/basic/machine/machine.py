@@ -223,6 +223,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.resumable_breaks = False
         self._break_armed = None  # (compiled area, its real blocks) while a Ctrl-C waits to land
         self._reading_input = False
+        self.while_loops: set = set()  # the WHILE loops running: (area, loop number), see the compiler
         # CLS: called to clear the screen (the session clears a terminal); None: nothing to clear
         self.on_clear_screen: Callable[[], object] | None = None
 
@@ -361,7 +362,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range, "type": type, "int": int,
                              "BaseException": BaseException},
             "_M": self, "_S": self.scalars, "_A": self.arrays, "_arr": self.array_nd, "_ix": self.subscript_check(0),
-            "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_END": END, "_DirectJump": DirectJump,
+            "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_wh": self.while_loops, "_END": END, "_DirectJump": DirectJump,
             "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
             "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,
             "_oom": self._out_of_memory, "_call": self.call_area, "_call_file": self.call_file,
@@ -563,6 +564,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         """The state RUN starts from: no variables, empty stack, the default angle unit."""
         self.clear()
         self.stack.clear()
+        self.while_loops.clear()
         self.on_error = None
         self.in_handler = False
         self.err = self.erl = 0.0
