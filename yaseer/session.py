@@ -49,8 +49,6 @@ from yaseer.basic.errors import (
     BasicError,
 )
 
-FILE_NOT_FOUND = 53  # MS-BASIC's ERR for a missing file
-PATH_FILE_ACCESS_ERROR = 75  # MS-BASIC's ERR for a file that cannot be read or written
 MAX_LINE_NUMBER = 65529  # the largest line number MS-BASIC accepts
 AREAS = range(10)  # PROG 0 (the listing) to PROG 9, as on the pocket computers
 LIBRARY_AREAS = (1, 2, 3, 5)  # the areas yaseer.binding fills with Python programs
@@ -196,21 +194,13 @@ def read_listing_file(name: str, directory: Path) -> Program:
     """LOAD: the program in file ``name`` (``.bas`` is tried if ``name`` has no suffix),
     inside ``directory`` only (yaseer.basic.machine.files.Sandbox: a name that leads out of it is
     ``Path/File access error``)."""
-    from yaseer.basic.machine.files import Sandbox
+    from yaseer.basic.machine.program_file import program_text
+    from yaseer.basic.machine.sandbox import Sandbox
 
     sandbox = Sandbox(directory)
-    path = sandbox.path(name)
-    if not path.exists() and not path.suffix:
-        path = sandbox.path(name + ".bas")
-    from yaseer.basic.machine.program_file import program_text
-
-    try:
-        text = program_text(path.read_bytes())
-    except (FileNotFoundError, IsADirectoryError, NotADirectoryError):
-        raise BasicError("File not found", FILE_NOT_FOUND) from None
-    except OSError:
-        raise BasicError("Path/File access error", PATH_FILE_ACCESS_ERROR) from None
-    return parse_listing(text)
+    if not sandbox.exists(name) and "." not in name.replace("\\", "/").rsplit("/", 1)[-1]:
+        name += ".bas"
+    return parse_listing(program_text(sandbox.read_bytes(name)))
 
 
 # --- the session ----------------------------------------------------------------
@@ -437,16 +427,12 @@ class Session:
     def command_save(self, argument: str) -> None:
         """SAVE "file": write the current area's program as a listing, in the session's
         directory only; a name without an extension gets ``.bas`` (GW-BASIC adds ``.BAS``)."""
-        from yaseer.basic.machine.files import Sandbox
+        from yaseer.basic.machine.sandbox import Sandbox
 
         name = file_name_argument(argument)
         if not Path(name).suffix:
             name += ".bas"
-        path = Sandbox(self.directory).path(name)
-        try:
-            path.write_text(program_text(self.program), encoding="utf-8")
-        except OSError:
-            raise BasicError("Path/File access error", PATH_FILE_ACCESS_ERROR) from None
+        Sandbox(self.directory).write_bytes(name, program_text(self.program).encode("utf-8"))
 
     def command_run(self, argument: str) -> None:
         """RUN [line] or RUN "file": fresh variables, then run PROG 0 from its start (or ``line``).
@@ -473,7 +459,7 @@ class Session:
 
     def command_files(self, argument: str) -> None:
         """FILES ["pattern"]: the files of the directory LOAD and SAVE use (default ``*.bas``)."""
-        from yaseer.basic.machine.files import Sandbox
+        from yaseer.basic.machine.sandbox import Sandbox
 
         pattern = file_name_argument(argument) if argument else "*.bas"
         for name in Sandbox(self.directory).listing(pattern):

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from yaseer.basic.machine.files import read_program
 from yaseer.basic.errors import (
-    BAD_FILE_MODE, ILLEGAL_FUNCTION_CALL, PATH_FILE_ACCESS_ERROR, UNDEFINED_LINE, error_for,
+    BAD_FILE_MODE, ILLEGAL_FUNCTION_CALL, UNDEFINED_LINE, error_for,
 )
 from yaseer.basic.machine.signals import ProgramEnd
 
@@ -113,17 +113,13 @@ class Chaining:
     def _save(self, program: dict, name: str) -> None:
         """SAVE: the program as an ASCII listing (CR LF lines, a Ctrl-Z at the end) in the
         program's directory; GW-BASIC's tokenised and protected forms are not written."""
-        from yaseer.basic.machine.files import dos_name
         from yaseer.basic.source.scanner import detokenize
 
         if "." not in name:
             name += ".BAS"
-        path = self.files.sandbox.path(dos_name(self.files.sandbox, name))
+        sandbox = self.files.sandbox
         text = "".join(f"{n} {detokenize(program[n], self.dialect)}\r\n" for n in sorted(program)) + "\x1a"
-        try:
-            path.write_bytes(text.encode("latin-1", errors="replace"))
-        except OSError:
-            raise error_for(PATH_FILE_ACCESS_ERROR) from None
+        sandbox.write_bytes(sandbox.dos_name(name), text.encode("latin-1", errors="replace"))
 
     def run_again(self, again: RunAgain) -> int:
         """Carry out RUN: the program (a new one from a file), fresh variables, the files

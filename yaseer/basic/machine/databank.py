@@ -15,7 +15,7 @@ file of the program's directory, one line each, in the machine's codes.
 from __future__ import annotations
 
 from yaseer.basic.errors import (
-    BasicError, ILLEGAL_FUNCTION_CALL, OUT_OF_DATA, PATH_FILE_ACCESS_ERROR, STRING_TOO_LONG, TYPE_MISMATCH,
+    BasicError, ILLEGAL_FUNCTION_CALL, OUT_OF_DATA, STRING_TOO_LONG, TYPE_MISMATCH,
 )
 
 RECORD_LENGTH = 255  # WRITE#.md item 6
@@ -122,16 +122,11 @@ class DataBank:
 
     def save(self, machine, name: str) -> None:
         """SAVE# "name": the records into the file (its bytes are the machine's codes)."""
-        path = machine.files.sandbox.path(_file_name(machine, name))
-        try:
-            path.write_bytes(self.text().encode("latin-1"))
-        except OSError:
-            raise BasicError("Path/File access error", PATH_FILE_ACCESS_ERROR) from None
+        machine.files.sandbox.write_bytes(_file_name(machine, name), self.text().encode("latin-1"))
 
     def load_file(self, machine, name: str, append: bool) -> None:
         """LOAD# "name"[, M]."""
-        path = machine.files.sandbox.existing(_file_name(machine, name))
-        self.load(path.read_bytes().decode("latin-1"), append)
+        self.load(machine.files.sandbox.read_bytes(_file_name(machine, name)).decode("latin-1"), append)
 
 
 def _file_name(machine, name: str) -> str:

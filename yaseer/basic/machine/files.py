@@ -1,11 +1,13 @@
 """Sequential files for BASIC programs, confined to one directory.
 
 Every name a program (or the interactive session) gives is looked up in one
-directory, the *sandbox*: the current directory, or ``yaseer run --files DIR``.
-An absolute name, a ``..`` component, or a name that leads out of the directory
-through a symbolic link is ``Path/File access error`` (75); nothing is ever read or
-written outside it, and nothing at all is written unless the program opens a file
-for OUTPUT or APPEND (or KILLs / NAMEs one).
+directory, the *sandbox* (:mod:`yaseer.basic.machine.sandbox`): the current
+directory, or ``yaseer run --files DIR``.  An absolute name, a ``..`` component,
+or a name that leads out of the directory through a symbolic link is
+``Path/File access error`` (75), also when another process swaps names for links
+while the program runs; a FIFO or device is refused at once; nothing is ever read
+or written outside it, and nothing at all is written unless the program opens a file
+for OUTPUT, APPEND or RANDOM (or KILLs / NAMEs / SAVEs one).
 
 The files are GW-BASIC's sequential files: text with CR LF line ends and a Ctrl-Z
 (``chr(26)``) written at CLOSE; reading stops at the first Ctrl-Z.  Characters are
@@ -18,12 +20,7 @@ bytes (latin-1).  At most :data:`MAX_FILES` are open at once (GW-BASIC's default
 
 from __future__ import annotations
 
-import fnmatch
 import os
-
-TYPE_CHECKING = False
-if TYPE_CHECKING:  # pathlib is imported where a file is used, not at start-up
-    from pathlib import Path
 
 from yaseer.basic.errors import (
     BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
@@ -31,6 +28,7 @@ from yaseer.basic.errors import (
 )
 from yaseer.basic.machine import random_files
 from yaseer.basic.machine.runtime import cint
+from yaseer.basic.machine.sandbox import Sandbox, identity_of
 from yaseer.basic.machine.screen import OutputStream
 
 MAX_FILES = 3
@@ -40,165 +38,35 @@ LINE_LIMIT = 255  # characters LINE INPUT # reads into one string
 _MODES = {"I": "I", "O": "O", "A": "A", "R": "R", "INPUT": "I", "OUTPUT": "O", "APPEND": "A", "RANDOM": "R"}
 
 
-class Sandbox:
-    """The one directory a program's files live in."""
-
-    def __init__(self, root: str | os.PathLike | None = None):
-        self._root = root if root is not None else os.getcwd()
-
-    @property
-    def root(self) -> Path:
-        """The directory (pathlib is imported at the first file operation, not at start-up)."""
-        from pathlib import Path
-
-        return Path(self._root)
-
-    def path(self, name: str) -> Path:
-        """The path of file ``name`` inside the sandbox; anything that would leave it is
-        ``Path/File access error``, an empty name ``Bad file name``."""
-        from pathlib import Path
-
-        if not name or "\x00" in name:
-            raise error_for(BAD_FILE_NAME)
-        relative = Path(name.replace("\\", "/"))
-        if relative.is_absolute() or relative.drive or ".." in relative.parts or ":" in name:
-            raise error_for(PATH_FILE_ACCESS_ERROR)
-        root = self.root.resolve()
-        candidate = root / relative
-        try:
-            resolved = candidate.resolve()
-        except (OSError, RuntimeError):  # a symbolic link loop
-            raise error_for(PATH_FILE_ACCESS_ERROR) from None
-        if resolved != root and root not in resolved.parents:
-            raise error_for(PATH_FILE_ACCESS_ERROR)
-        return candidate
-
-    def existing(self, name: str) -> Path:
-        path = self.path(name)
-        if not path.is_file():
-            raise error_for(FILE_NOT_FOUND)
-        return path
-
-    def kill(self, name: str) -> None:
-        """KILL name: delete the file."""
-        path = self.existing(name)
-        try:
-            path.unlink()
-        except OSError:
-            raise error_for(PATH_FILE_ACCESS_ERROR) from None
-
-    def rename(self, old: str, new: str) -> None:
-        """NAME old AS new."""
-        source = self.existing(old)
-        target = self.path(new)
-        if target.exists():
-            raise error_for(FILE_ALREADY_EXISTS)
-        try:
-            source.rename(target)
-        except OSError:
-            raise error_for(PATH_FILE_ACCESS_ERROR) from None
-
-    def listing(self, pattern: str | None = None) -> list[str]:
-        """FILES [pattern]: the names of the files in the sandbox that match (``*`` ``?``);
-        a pattern nothing matches is ``File not found`` (GW-BASIC)."""
-        if pattern is not None:
-            self.path(pattern.replace("*", "x").replace("?", "x"))  # the same rules for the pattern
-        names = sorted(p.name for p in self.root.iterdir() if p.is_file())
-        found = [n for n in names if fnmatch.fnmatch(n.upper(), (pattern or "*").upper())]
-        if pattern is not None and not found:
-            raise error_for(FILE_NOT_FOUND)
-        return found
-
-
-    def directory(self, pattern: str | None = None) -> list[str]:
-        """FILES [pattern]: GW-BASIC's entries for the sandbox's directories (``.`` and
-        ``..`` too) then its files, each sorted, whose 8.3 names match ``pattern``
-        (``*`` ``?``; name and extension matched apart, as DOS does: ``A*`` is only
-        names without extension); each entry 17 columns: :func:`directory_entry`.
-        Names starting with ``.`` are hidden."""
-        if pattern is not None:
-            if not pattern:
-                raise error_for(BAD_FILE_NAME)
-            self.path(pattern.replace("*", "x").replace("?", "x"))  # the same rules for the pattern
-        mask = dos_split((pattern or "*.*").upper())
-        dirs, files = [("", ""), ("", ".")], []
-        for p in self.root.iterdir():
-            if not p.name.startswith("."):
-                (dirs if p.is_dir() else files).append(dos_split(p.name.upper()))
-        return [directory_entry(name, is_dir) for group, is_dir in ((dirs, True), (files, False))
-                for name in sorted(n for n in group if all(map(fnmatch.fnmatchcase, n, mask)))]
-
-    def free_bytes(self) -> int:
-        """The free bytes of the sandbox's disk (FILES' last line)."""
-        import shutil
-
-        return shutil.disk_usage(self.root).free
-
-
-def dos_name(sandbox: Sandbox, name: str) -> str:
-    """``name``, or, when no file has it exactly, the name of the one file in its folder
-    whose name differs from it only in case (DOS ignores case: ``"data.txt"`` opens
-    ``DATA.TXT``); the sandbox's rules apply to ``name`` first."""
-    path = sandbox.path(name)
-    if path.exists():
-        return name
-    try:
-        entries = [p.name for p in path.parent.iterdir()]
-    except OSError:
-        return name
-    matches = [entry for entry in entries if entry.upper() == path.name.upper()]
-    if len(matches) != 1:
-        return name
-    folder = name.replace("\\", "/").rpartition("/")[0]
-    return (folder + "/" if folder else "") + matches[0]
-
-
 def read_program(sandbox: Sandbox, name: str) -> bytes:
     """The bytes of program file ``name`` in the sandbox (CHAIN, MERGE; case as DOS)."""
-    path = sandbox.existing(dos_name(sandbox, name))
-    try:
-        return path.read_bytes()
-    except OSError:
-        raise error_for(PATH_FILE_ACCESS_ERROR) from None
-
-
-def dos_split(name: str) -> tuple[str, str]:
-    """A name as DOS shows it: (name, extension) split at the first ``.``, clipped to
-    8 and 3 characters with ``+`` marking a clipped one (``LONGNAME1.DAT`` is
-    ``LONGNAM+``, ``DAT``)."""
-    trunk, _, ext = name.partition(".")
-    if len(trunk) > 8:
-        trunk = trunk[:7] + "+"
-    if len(ext) > 3:
-        ext = ext[:2] + "+"
-    return trunk, ext
-
-
-def directory_entry(name: tuple[str, str], is_dir: bool) -> str:
-    """One FILES entry: the name in 8 columns, ``.`` and the extension in 4, then
-    ``<DIR>`` or 5 blanks (``A       .BAS     ``; ``.`` itself is ``        .   <DIR>``)."""
-    trunk, ext = name
-    return trunk.ljust(8) + ("." if ext or not trunk else " ") + ext.ljust(3) + ("<DIR>" if is_dir else " " * 5)
+    return sandbox.read_bytes(sandbox.dos_name(name))
 
 
 class OpenFile:
-    """One open sequential file: ``mode`` "I", "O" or "A"."""
+    """One open sequential file: ``mode`` "I", "O" or "A", on ``descriptor`` (from
+    :class:`Sandbox`: a regular file inside it, opened without following a link, not yet
+    truncated), which it takes over; ``identity`` is its (device, inode)."""
 
-    def __init__(self, path: Path, mode: str):
-        self.path, self.mode = path, mode
+    def __init__(self, descriptor: int, mode: str):
+        self.identity, self.mode = identity_of(descriptor), mode
         if mode == "I":
-            data = path.read_bytes().decode("latin-1")
+            with os.fdopen(descriptor, "rb") as handle:
+                data = handle.read().decode("latin-1")
             cut = data.find(END_OF_FILE)
             self.data = data if cut < 0 else data[:cut]
             self.size = len(data)
             self.position = 0
             self.stream = None
         else:
-            if mode == "A" and path.is_file():
-                old = path.read_bytes().decode("latin-1")
+            if mode == "A":  # appended after the old text, without its Ctrl-Z
+                old = os.pread(descriptor, os.fstat(descriptor).st_size, 0).decode("latin-1")
                 cut = old.find(END_OF_FILE)
-                path.write_bytes((old if cut < 0 else old[:cut]).encode("latin-1"))
-            handle = open(path, "a" if mode == "A" else "w", encoding="latin-1", newline="\r\n")
+                os.ftruncate(descriptor, len(old) if cut < 0 else cut)
+            else:
+                os.ftruncate(descriptor, 0)
+            os.lseek(descriptor, 0, os.SEEK_END)
+            handle = open(descriptor, "a" if mode == "A" else "w", encoding="latin-1", newline="\r\n")
             self.stream = OutputStream(handle)
             self.written = handle.tell()
 
@@ -355,16 +223,20 @@ class FileTable:
                 name = name[len(device):]
                 break
         size = random_files.record_length(length) if kind == "R" else None
-        name = dos_name(self.sandbox, name)
-        path = self.sandbox.existing(name) if kind == "I" else self.sandbox.path(name)
-        if any(f.path.resolve() == path.resolve() and (kind != f.mode or kind not in "IR")
-               for f in self.open_files.values()):
+        sandbox = self.sandbox
+        name = sandbox.dos_name(name)
+        descriptor = sandbox.open_input(name) if kind == "I" else sandbox.open_output(name, readable=kind != "O")
+        identity = identity_of(descriptor)
+        if any(f.identity == identity and (kind != f.mode or kind not in "IR") for f in self.open_files.values()):
+            os.close(descriptor)  # nothing truncated yet: OpenFile does that
             raise error_for(FILE_ALREADY_OPEN)
         try:
-            self.open_files[k] = random_files.RandomFile(path, size) if size else OpenFile(path, kind)
-        except IsADirectoryError:
-            raise error_for(PATH_FILE_ACCESS_ERROR) from None
+            self.open_files[k] = random_files.RandomFile(descriptor, size) if size else OpenFile(descriptor, kind)
         except OSError:
+            try:
+                os.close(descriptor)
+            except OSError:  # the file object had closed it already
+                pass
             raise error_for(PATH_FILE_ACCESS_ERROR) from None
 
     def get(self, n) -> OpenFile:
@@ -403,11 +275,11 @@ class FileTable:
 
     def rename(self, old: str, new: str) -> None:
         """NAME old AS new (``old`` found as DOS finds it, whatever its case)."""
-        self.sandbox.rename(dos_name(self.sandbox, old), new)
+        self.sandbox.rename(self.sandbox.dos_name(old), new)
 
     def kill(self, name: str) -> None:
-        name = dos_name(self.sandbox, name)
-        path = self.sandbox.existing(name)
-        if any(f.path.resolve() == path.resolve() for f in self.open_files.values()):
+        name = self.sandbox.dos_name(name)
+        identity = self.sandbox.identity(name)
+        if any(f.identity == identity for f in self.open_files.values()):
             raise error_for(FILE_ALREADY_OPEN)
         self.sandbox.kill(name)

@@ -36,10 +36,9 @@ def candidates(name: str) -> list[str]:
 def read_program(name: str, sandbox, charset) -> str:
     """The text of the program file ``name`` names, from ``sandbox``'s directory."""
     for candidate in candidates(name):
-        path = sandbox.path(candidate)
-        if path.is_file():
-            try:
-                return charset.program_text(path.read_bytes())
-            except OSError:
-                break
+        try:
+            return charset.program_text(sandbox.read_bytes(candidate))
+        except BasicError as error:
+            if error.code != FILE_NOT_FOUND:
+                raise
     raise BasicError(f"File not found: {name}", FILE_NOT_FOUND)

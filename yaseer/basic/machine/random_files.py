@@ -31,10 +31,6 @@ from yaseer.basic.errors import (
     BAD_FILE_MODE, BAD_RECORD_NUMBER, FIELD_OVERFLOW, ILLEGAL_FUNCTION_CALL, OVERFLOW, error_for,
 )
 
-TYPE_CHECKING = False
-if TYPE_CHECKING:
-    from pathlib import Path
-
 DEFAULT_LENGTH = 128  # bytes per record without LEN (GW-BASIC's /S default)
 MAX_LENGTH = 32767
 MAX_RECORD = 32767  # the largest record number (a signed 16-bit number above 0)
@@ -58,10 +54,14 @@ class RandomFile:
     mode = "R"
     stream = None  # no sequential output stream
 
-    def __init__(self, path: Path, length: int):
-        self.path = path
+    def __init__(self, descriptor: int, length: int):
+        """``descriptor``: the file, opened for reading and writing by the sandbox (which it
+        takes over)."""
+        from yaseer.basic.machine.sandbox import identity_of
+
+        self.identity = identity_of(descriptor)
         self.length_of_record = length
-        self.handle = open(path, "r+b" if path.exists() else "w+b")
+        self.handle = open(descriptor, "r+b")
         self.buffer = bytearray(length)
         self.fields: dict[str, tuple[int, int]] = {}  # variable key -> (offset, width)
         self.given: dict[str, str] = {}  # variable key -> the string object it was last given
