@@ -56,34 +56,36 @@ def poly(x: float, coefficients: tuple[tuple[int, int, bool], ...]) -> float | N
         # $FMULS: the 47- or 48-bit product cut to 28 bits; its low 4 round the 24 up
         # from 10/16, or from 8/16 over an odd mantissa
         p = m * xm
-        if p >> 47:
+        if p >= 0x800000000000:
             m = p >> 20
             e += xe + 24
         else:
             m = p >> 19
             e += xe + 23
         m = (m + 6 + (m >> 3 & 2)) >> 4
-        if m >> 24:
+        if m == 0x1000000:
             m = 0x800000
             e += 1
-        if not _LOWEST < e < _HIGHEST:
+        if e <= _LOWEST or e >= _HIGHEST:
             return None
         # $FADDS of (m, e) and the coefficient: the larger one's 32-bit register (its
-        # mantissa and a guard byte), the smaller shifted right into it
-        differ = negative != c_negative
+        # mantissa and a guard byte), the smaller shifted right into it (single_arith.working_sum)
         if e > ce or (e == ce and m > c):
-            shift, small = e - ce, c
+            shift = e - ce
+            small = c
         else:
-            m, shift, small, e, negative = c, ce - e, m, ce, c_negative
+            shift = ce - e
+            small = m
+            m = c
+            e = ce
+            negative, c_negative = c_negative, negative
         if shift >= 25:  # less than half a guard unit: the larger operand, as it is
             continue
-        register = m << 8
-        shifted = small << 8
-        moved = shifted >> shift
-        if differ:
-            if moved < 0x80 or (moved == 0x80 and not shifted & ((1 << shift) - 1)):
+        moved = (small << 8) >> shift
+        if negative != c_negative:
+            if moved < 0x80 or (moved == 0x80 and (shift <= 8 or not small & ((1 << (shift - 8)) - 1))):
                 continue
-            register -= moved
+            register = (m << 8) - moved
             if register & 0x1C0 == 0x80 and register & 0x1DF != 0x80:
                 register &= ~0x80  # the subtraction's guard byte rounded down
             if not register:
@@ -94,17 +96,33 @@ def poly(x: float, coefficients: tuple[tuple[int, int, bool], ...]) -> float | N
                 register <<= shift
                 e -= shift
         else:
-            register += moved
-            if register >> 32:
+            register = (m << 8) + moved
+            if register >= 0x100000000:
                 register >>= 1
                 e += 1
-            if shifted & ((1 << shift) - 1):
+            if shift > 8 and small & ((1 << (shift - 8)) - 1):
                 register |= 1  # the sticky bit of an addition that lost bits
         m = register >> 8
         low = register & 0xFF
         if low > 0x80 or (low == 0x80 and m & 1):
             m += 1
-            if m >> 24:
+            if m == 0x1000000:
                 m = 0x800000
                 e += 1
     return ldexp(-m if negative else m, e)
+
+
+def add(a: float, b: float) -> float | None:
+    """``a + b`` of two singles as GW-BASIC's ``$FADDS`` (single_arith.add), or None where an
+    operand is outside 2**-100 .. 2**100 in size (where the range's ends would need testing):
+    the polynomial ``a * x + b`` at x = 1 (``$FMULS`` of a 24-bit mantissa by 1 is exact)."""
+    if not a:
+        return b + 0.0
+    if not b:
+        return a + 0.0
+    fa, ea = frexp(a)
+    fb, eb = frexp(b)
+    if not (-100 < ea < 100 and -100 < eb < 100):
+        return None
+    return poly(1.0, ((int(fa * 16777216.0) if a > 0 else int(fa * -16777216.0), ea - 24, a < 0),
+                      (int(fb * 16777216.0) if b > 0 else int(fb * -16777216.0), eb - 24, b < 0)))
