@@ -123,6 +123,25 @@ def test_the_integer_sum_is_pcbasics_bit_for_bit():
     assert answered > CASES // 2
 
 
+def test_products_near_half_a_unit_are_pcbasics():
+    """single_arith.product_near_half (the compiled code's products whose nearest single is
+    3/8 to 1/2 of a unit beyond them, or half a unit from them) against PC-BASIC's $FMULS:
+    products of random mantissas (long and short) kept only when they fall there."""
+    rng = random.Random(11)
+    reached = 0
+    while reached < 3000:
+        a = math.ldexp(rng.randrange(1 << 23, 1 << 24), rng.randrange(-60, 40)) * rng.choice([1, -1])
+        b = math.ldexp(rng.randrange(1 << 23, 1 << 24) if rng.random() < 0.7 else rng.randrange(1, 1 << 12),
+                       rng.randrange(-60, 40)) * rng.choice([1, -1])
+        p = a * b
+        cut = nearest_single(Fraction(p))
+        below = (abs(Fraction(p)) - abs(Fraction(cut))) / Fraction(2) ** (math.frexp(p)[1] - 24)  # units of p's binade
+        if not (-Fraction(1, 2) <= below < -Fraction(3, 8) or below == Fraction(1, 2)):
+            continue
+        reached += 1
+        assert sa.product_near_half(p, cut) == pc_result(lambda: pc_single(a).imul(pc_single(b))) == sa.product(p)
+
+
 def test_sums_near_a_tie_after_the_carry_are_pcbasics():
     """The one case where an addition's guard byte is exactly half and the carry shifted
     out a 1 (IEEE rounds up, GW half to even): constructed, not left to chance; in

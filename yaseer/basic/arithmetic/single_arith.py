@@ -226,6 +226,20 @@ def product(p) -> float:
     return -r if p < 0 else r
 
 
+def product_near_half(p, cut) -> float:
+    """:func:`product` of ``p`` where its nearest single ``cut`` (in MBF's range) lies
+    between 3/8 and 1/2 of a unit beyond ``p``, or exactly half a unit from it: the 24
+    bits below ``p`` round up (to ``cut``) when odd, for a half when even (the round
+    half to even of ``$FMULS``'s 28 bits, ``1001`` being a half).  So the result is
+    ``cut`` when its mantissa is even (also a power of two above ``p``'s binade), else the
+    single next to ``cut`` on ``p``'s side."""
+    m, e = frexp(cut)
+    if not (m * 16777216.0) % 2.0:
+        return cut
+    unit = ldexp(1.0, e - 24)
+    return cut - unit if cut > p else cut + unit
+
+
 def multiply(a, b) -> float:
     """``a * b`` of two singles (or integers), as GW-BASIC's ``$FMULS``."""
     return product(a * b)

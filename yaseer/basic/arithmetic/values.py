@@ -317,5 +317,6 @@ RUNTIME = {
     "_sgn": sign, "_len": len, "_strs": str_dollar,
     "_cint": to_int, "_csng": single_arith.from_double, "_cdbl": float,
     "_sadd": single_arith.add, "_ssub": single_arith.subtract, "_sp": single_arith.product,
+    "_spb": single_arith.product_near_half,
     "_sfd": single_arith.from_double, "_sfn": single_arith.function_result,
 }

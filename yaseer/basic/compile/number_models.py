@@ -204,7 +204,7 @@ class TypedNumbers(PlainNumbers):
             return {"*": f"_sp({left} * {right})", "/": f"_dv({left}, {right})",
                     "+": f"_sadd({left}, {right})", "-": f"_ssub({left}, {right})"}[op]
         if op == "*":  # the exact product: the helper rounds it
-            return _tested(f"{left} * {right}", "_sp(_sv)", _PRODUCT_BAND)
+            return _tested(f"{left} * {right}", "_sp(_sv)", _PRODUCT_BAND, banded="_spb(_sv, _sh)")
         if op == "/":  # through the dialect's division-by-zero policy (arith_policy.py) when not tested
             if not _plain_operand(right):
                 return f"_dv({left}, {right})"
@@ -245,14 +245,14 @@ class TypedNumbers(PlainNumbers):
             # the square of a whole number is whole: up to 2**24 it is exact, 0 or at least 1
             split = _cut_in_range("(_sc := _sv * 536870913.0)")
             return (f"(_sv if (_sv := {left} * {left}) <= 16777216.0 else "
-                    f"((_sh if {_PRODUCT_BAND} else _sp(_sv)) if {split} else _spow({left}, 2.0)))"), "!"
+                    f"((_sh if {_PRODUCT_BAND} else _spb(_sv, _sh)) if {split} else _spow({left}, 2.0)))"), "!"
         if right in ("2", "2.0") and self.tests_inline:  # $FPWR's X^2 is one $FMULS, X*X: exact products inline (see _single)
             first = kept = left
             if not _plain_operand(left):
                 kept = f"_x{self._temp()}"
                 first = f"({kept} := {left}) is {kept} and {kept}"
-            # (in the range, the product's own rounding: an X^2 that does not overflow is _sp's)
-            return _tested(f"{first} * {kept}", f"_spow({kept}, 2.0)", _PRODUCT_BAND, banded="_sp(_sv)"), "!"
+            # (in the range, the product's own rounding near half a unit: single_arith.product_near_half)
+            return _tested(f"{first} * {kept}", f"_spow({kept}, 2.0)", _PRODUCT_BAND, banded="_spb(_sv, _sh)"), "!"
         return f"_spow({left}, {right})", "!"
 
     def negate(self, operand: str, kind: str) -> tuple[str, str]:
