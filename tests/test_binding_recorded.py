@@ -25,6 +25,13 @@ from percall import CRANK, INPUTS  # noqa: E402  (the benchmark's inputs of each
 WRITTEN = ("T", "W", "A", "X", "Y", "V", "F", "U", "N", "L", "D", "E", "P")
 
 
+@pytest.fixture(autouse=True)
+def no_kept_paths(monkeypatch):
+    """The recordings of one process, as they are without the on-disk cache (the first call runs the
+    plain code, each path is recorded when first met); tests/test_recording_cache.py keeps them."""
+    monkeypatch.setenv("YASEER_CACHE_DIR", "")
+
+
 def machine(number: int, z: float, q: float, branch: float = 0.0) -> Machine:
     m = Machine(screen=io.StringIO())
     binding.install(m)

@@ -22,6 +22,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import math
+import os
 import sys
 from weakref import WeakKeyDictionary
 
@@ -206,8 +207,7 @@ class _RecordingFrame(_Frame):
             lines.append(f"_a_{name}[{index}] = {_as_float(recorder, value)}")
         for name, value in self._scalars.items():
             lines.append(f"_M.set_scalar({name!r}, {_as_float(recorder, value)})")
-        recorder.names.update(_isfinite=math.isfinite,
-                              _error=lambda message, code: BasicError(f"{message} (PROG {area})", code))
+        recorder.names.update(_provided(area))
         return recorder.compile(lines, f"PROG {area}"), recorder.keys()
 
     def plain(self) -> _Frame:
@@ -218,6 +218,14 @@ class _RecordingFrame(_Frame):
         for name, value in self._scalars.items():
             frame.put_scalar(name, getattr(value, "value", value))
         return frame
+
+
+@functools.cache
+def _provided(area: int) -> dict:
+    """The names this module binds in program ``area``'s records (the same objects every time, so a
+    kept record is given them again: :mod:`yaseer.linkages.recording_cache`)."""
+    return {"_isfinite": math.isfinite,
+            "_error": lambda message, code: BasicError(f"{message} (PROG {area})", code)}
 
 
 def _fetch(name: str) -> str:
@@ -236,6 +244,25 @@ def _as_float(recorder, value) -> str:
 MAX_RECORDINGS = 64  # paths kept per program and method (forces or not, Q(n), zero loads, ...)
 _recordings: dict[tuple, Recordings] = {}  # (program, method) -> its recorded paths
 _calls: dict[tuple, int] = {}
+_shelves: dict[tuple, object] = {}  # (program, method) -> its paths kept on disk (None: sources unreadable)
+
+
+def _shelf(number: int, method: str | None):
+    """The :class:`~yaseer.linkages.recording_cache.Shelf` of program ``number``'s kept paths, or None
+    when the cache is off or cannot be trusted now (see :func:`yaseer.sealed_cache.private_dir`)."""
+    from yaseer.sealed_cache import private_dir
+
+    if private_dir() is None:
+        return None
+    key = (number, method)
+    if key not in _shelves:
+        from yaseer.linkages.recording_cache import Shelf
+
+        try:
+            _shelves[key] = Shelf(number, method, _provided(number), (os.path.realpath(__file__),))
+        except OSError:  # the sources cannot be read: no cache
+            _shelves[key] = None
+    return _shelves[key]
 
 
 def _call_program(machine, number: int, method: str | None) -> _Frame | None:
@@ -247,27 +274,39 @@ def _call_program(machine, number: int, method: str | None) -> _Frame | None:
     the recording: the same operations on the same values, without the objects
     around them (:mod:`yaseer.linkages.recordings` finds the path of a call).  A
     path that cannot be recorded (branch tracking, another method) runs the plain
-    code."""
+    code.  With the on-disk cache (:mod:`yaseer.linkages.recording_cache`) the
+    paths are kept there, and from the first call on a kept path that holds is
+    run, and one that none holds for is recorded and kept: a listing run again
+    records and compiles nothing."""
     key = (number, method)
     recordings = _recordings.get(key)
     if recordings is not None and recordings.run(machine):
         return None
     _calls[key] = calls = _calls.get(key, 0) + 1
-    if method is None and calls > 1 and (0 if recordings is None else len(recordings)) < MAX_RECORDINGS:
+    if method is None and (0 if recordings is None else len(recordings)) < MAX_RECORDINGS:
         from yaseer.linkages.recordings import Recordings
-        from yaseer.linkages.tracing import NotTraceable, Recorder
 
-        frame = _RecordingFrame(machine, number, Recorder())
-        try:
-            with _quiet_numpy():
-                PROGRAMS[number](frame, method)
-        except NotTraceable:
-            pass
-        else:
-            plain = frame.plain()
-            run, tests = frame.recorded()
-            _recordings.setdefault(key, Recordings()).add(run, tests, machine)
-            return plain
+        shelf = _shelf(number, method)
+        if shelf is not None:
+            recordings = _recordings.setdefault(key, Recordings(shelf.compile_key))
+            if shelf.take(recordings, machine):
+                return None
+        if calls > 1 or shelf is not None:
+            from yaseer.linkages.tracing import NotTraceable, Recorder
+
+            frame = _RecordingFrame(machine, number, Recorder())
+            try:
+                with _quiet_numpy():
+                    PROGRAMS[number](frame, method)
+            except NotTraceable:
+                pass
+            else:
+                plain = frame.plain()
+                run, tests = frame.recorded()
+                _recordings.setdefault(key, Recordings()).add(run, tests, machine)
+                if shelf is not None:
+                    shelf.keep(run, tests, machine)
+                return plain
     frame = _Frame(machine, number)
     with _quiet_numpy():
         PROGRAMS[number](frame, method)

@@ -19,7 +19,8 @@ EPILOG = """\
 FILE - reads the listing from standard input (INPUT then needs --input).
 Output: PRINT goes to standard output, LPRINT too unless --printer FILE is given.
 A run writes nothing else but the files the program opens for output (inside
---files DIR only) and the cache of compiled programs: ~/.cache/yaseer/compiled
+--files DIR only) and the cache of compiled programs and of the library programs'
+recorded paths: ~/.cache/yaseer/compiled
 ($XDG_CACHE_HOME/yaseer/compiled; YASEER_CACHE_DIR=DIR to move it, YASEER_CACHE_DIR=
 to switch it off), private, kept near 64 MiB, each entry checked by a hash.
 Exit status: 0 (also after STOP, which prints Break in N on standard error), 1 a

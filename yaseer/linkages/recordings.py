@@ -20,6 +20,11 @@ import re
 
 from yaseer.linkages.tracing import Retrace
 
+TYPE_CHECKING = False
+if TYPE_CHECKING:  # annotations only
+    from typing import Callable
+
+KEY_BUILTINS = {"float": float, "bool": bool, "len": len}  # all a key function may call
 MEMORY = 4096  # keys remembered (a listing whose every call has a new key starts over)
 _ARRAY = re.compile(r"\b_a_(\w+)\b")
 
@@ -29,9 +34,11 @@ def _no_key(machine) -> tuple:
 
 
 class Recordings:
-    """The compiled paths of one program (``len``: how many) and the key that picks one."""
+    """The compiled paths of one program (``len``: how many) and the key that picks one;
+    ``compiler``: what compiles a key function (default :func:`compile_key`)."""
 
-    def __init__(self) -> None:
+    def __init__(self, compiler: Callable | None = None) -> None:
+        self._compile = compiler or compile_key
         self._paths: list = []
         self._tests: list[str] = []  # every input guard's test, of every path
         self._outcomes: list[tuple] = []  # per path: the tests' values for the call recorded
@@ -49,12 +56,22 @@ class Recordings:
         passes alike chooses nothing and would cost every call its reading)."""
         self._paths.append(run)
         self._tests += [test for test in tests if test not in self._tests]
-        every = _compile_key(self._tests)
+        every = self._compile(self._tests)
         self._outcomes = [self._outcome(every, machine if path is run else None, k)
                           for k, path in enumerate(self._paths)]
+        self._choose()
+
+    def withdraw(self, run) -> None:
+        """Take back the path ``run`` (one added for a call whose inputs it did not hold for)."""
+        index = self._paths.index(run)
+        del self._paths[index], self._outcomes[index]
+        self._choose()
+
+    def _choose(self) -> None:
+        """The key of the paths' tests that tell them apart, and the path each key's calls take."""
         differing = [k for k in range(len(self._tests))
                      if len({outcome[k] if k < len(outcome) else None for outcome in self._outcomes}) > 1]
-        self._key = _compile_key([self._tests[k] for k in differing]) if differing else _no_key
+        self._key = self._compile([self._tests[k] for k in differing]) if differing else _no_key
         self._chosen.clear()
         for path, outcome in zip(self._paths, self._outcomes):
             self._chosen.setdefault(tuple(outcome[k] if k < len(outcome) else None for k in differing), path)
@@ -101,13 +118,13 @@ class Recordings:
         return False
 
 
-def _compile_key(tests: list[str]):
+def compile_key(tests) -> "Callable":
     """The function ``key(_M)``: the tuple of ``tests``' values (Python texts reading
     ``_M``'s arrays as ``_a_X`` and its scalars)."""
     arrays = dict.fromkeys(name for test in tests for name in _ARRAY.findall(test))
     lines = ["_arrays = _M.arrays"] + [f"_a_{name} = _arrays[{name!r}]" for name in arrays]
     lines.append(f"return ({''.join(test + ', ' for test in tests)})")
     text = "def key(_M):\n" + "".join(f"    {line}\n" for line in lines)
-    namespace = {"__builtins__": {"float": float, "bool": bool, "len": len}}
+    namespace = {"__builtins__": dict(KEY_BUILTINS)}
     exec(compile(text, "<recorded paths' key>", "exec"), namespace)
     return namespace["key"]

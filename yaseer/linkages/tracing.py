@@ -128,11 +128,18 @@ class Recorder:
         lines = _batched_finite_guards(_batched_reads([str(line) for line in self.lines + epilogue], self.names))
         lines = _registers(_fused(_without_dead_lines(lines)))
         text = "def run(_M):\n" + "".join(f"    {line}\n" for line in lines)
-        namespace = dict(self.names, _all=all, _map=map, _float=float,
-                         __builtins__={"float": float, "complex": complex, "len": len, "abs": abs,
-                                       "isinstance": isinstance, "list": list, "str": str})
-        exec(compile(text, f"<traced {label}>", "exec"), namespace)
-        return namespace["run"]
+        names = namespace(self.names)
+        exec(compile(text, f"<traced {label}>", "exec"), names)
+        return names["run"]
+
+
+def namespace(names: dict) -> dict:
+    """The globals of a compiled record: its ``names`` (:attr:`Recorder.names`), the few helpers
+    every record may call and the only builtins it may (:mod:`yaseer.linkages.recording_cache`
+    gives a stored record the same)."""
+    return dict(names, _all=all, _map=map, _float=float,
+                __builtins__={"float": float, "complex": complex, "len": len, "abs": abs,
+                              "isinstance": isinstance, "list": list, "str": str})
 
 
 _READ = re.compile(r"(t\d+) = float\((_a_\w+)\[(\d+)\]\)$")
@@ -448,7 +455,7 @@ def _unit(angle):
     """u(angle) recorded as the C call that numerics.SCALAR.unit wraps (cmath.rect(1.0, angle))."""
     if not isinstance(angle, Traced):
         return _S.unit(angle)
-    callee = angle.recorder.function("_rect", cmath.rect)
+    callee = angle.recorder.function("_rect", BOUND["_rect"])
     return angle.recorder.emit(_S.unit(angle.value), f"{callee}(1.0, {angle.name})")
 
 
@@ -456,7 +463,7 @@ def _angle(vector):
     """The angle of a complex number recorded as numerics.SCALAR.angle computes it (atan2 of its parts)."""
     if not isinstance(vector, Traced):
         return _S.angle(vector)
-    callee = vector.recorder.function("_atan2", math.atan2)
+    callee = vector.recorder.function("_atan2", BOUND["_atan2"])
     return vector.recorder.emit(_S.angle(vector.value), f"{callee}({vector.name}.imag, {vector.name}.real)")
 
 
@@ -465,18 +472,24 @@ def _unit_of(length):
     if not isinstance(length, Traced):
         return _S.unit_of(length)
     recorder = length.recorder
-    ldexp, frexp = recorder.function("_ldexp", math.ldexp), recorder.function("_frexp", math.frexp)
+    ldexp, frexp = recorder.function("_ldexp", BOUND["_ldexp"]), recorder.function("_frexp", BOUND["_frexp"])
     return recorder.emit(_S.unit_of(length.value), f"{ldexp}(1.0, {frexp}({length.name})[1])")
 
 
 _S = numerics.SCALAR
+_CALLED = {**{name: getattr(_S, name) for name in
+              ("sqrt", "cos", "sin", "arctan", "radians", "degrees", "unit_degrees", "isfinite")}, "exp": cmath.exp}
+
+#: Every function a record calls, under the name it has there (:meth:`Recorder.function`), and the
+#: exception its guards raise: a record's names are these, literals and itemgetters of its reads.
+BOUND = {**{f"_{name}": function for name, function in _CALLED.items()}, "_rect": cmath.rect,
+         "_atan2": math.atan2, "_ldexp": math.ldexp, "_frexp": math.frexp, "_Retrace": Retrace}
 
 #: The :mod:`numerics` namespace of a recording.
 TRACE = SimpleNamespace(
     scalar=True, pi=math.pi, float=_as(float), complex=_as(complex),
-    **{name: _call(name, getattr(_S, name)) for name in
-       ("sqrt", "cos", "sin", "arctan", "radians", "degrees", "unit_degrees", "isfinite")},
-    exp=_call("exp", cmath.exp), maximum=_maximum, unit=_unit, angle=_angle, unit_of=_unit_of,
+    **{name: _call(name, function) for name, function in _CALLED.items()},
+    maximum=_maximum, unit=_unit, angle=_angle, unit_of=_unit_of,
     where=_where, any=lambda value: value, all=lambda value: value, real=lambda value: value.real,
     imag=lambda value: value.imag, zeros_like=_zero_like, ones_like=lambda value: 1.0,
 )
