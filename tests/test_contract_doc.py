@@ -117,9 +117,11 @@ def record(monkeypatch):
     monkeypatch.setattr(frame, "put_scalar", recording_put_scalar)
 
     def call(machine, area):
-        # a first call, as in a fresh process: the plain code, not a recording of an earlier call
+        # a first call, as in a fresh process without the cache: the plain code, not a recording of
+        # an earlier call nor a path kept on disk
         monkeypatch.setattr(binding, "_recordings", {})
         monkeypatch.setattr(binding, "_calls", {})
+        monkeypatch.setenv("YASEER_CACHE_DIR", "")
         log.reads.clear()
         log.writes.clear()
         machine.call(area)

@@ -43,7 +43,7 @@ KEPT = 256  # paths an index lists per program and method (the oldest are droppe
 _LINKAGES = os.path.dirname(os.path.realpath(__file__))
 _GETTER = re.compile(r"_get_\d+(?:_\d+)+$")
 _NUMBERS = (bool, int, float, complex)
-_HELPERS = {"_all": all, "_map": map, "_float": float}  # tracing.namespace's own
+_HELPERS = {name: value for name, value in tracing.namespace({}).items() if name != "__builtins__"}  # its own
 
 
 def _start():
