@@ -22,7 +22,7 @@ from test_differential_support import clean_output, core
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 
 CASES = Path(__file__).parent / "gw"
-PROGRAMS = ["files.bas", "files_write.bas", "files_input.bas"]
+PROGRAMS = ["files.bas", "files_write.bas", "files_input.bas", "files_columns.bas"]
 
 
 def pcbasic_run(source: str, directory: Path) -> str:

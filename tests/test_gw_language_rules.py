@@ -56,6 +56,10 @@ AGREED = {
                                      '40 PRINT "IN"; J: WEND\n'),
     "while running when entered by goto": ('10 WHILE I < 3: I = I + 1: IF I = 1 THEN 30\n20 PRINT "A";\n'
                                            '30 PRINT I;: WEND\n'),
+    # control codes on the screen: BEL moves nothing, CHR$(0) one column, TAB to the next 8
+    "control codes move the column": ('10 PRINT "AB"; CHR$(7); CHR$(0); "C";: X = POS(0): PRINT: PRINT X\n'
+                                      '20 PRINT "A"; CHR$(9); "B";: Y = POS(0): PRINT: PRINT Y\n'
+                                      '30 PRINT STRING$(80, "*"); CHR$(13); "Z"\n'),
     # MID$ = copies byte by byte into the target (BISTRS.ASM LHSMID, MID$LP): the target
     # itself as the value overlaps; a MID$() of it is a copy
     "mid$ onto itself": ('10 A$ = "ABCDEFGH": MID$(A$, 3) = A$: PRINT A$\n20 B$ = "HELLO": MID$(B$, 2, 3) = MID$(B$, 1)\n'
@@ -145,3 +149,16 @@ def test_line_input_reads_at_most_255_characters(tmp_path):
 ])
 def test_file_number_errors(tmp_path, source, expected):
     assert yaseer_run(source, tmp_path) == expected
+
+
+def test_file_width_as_getwdt_checks_it(tmp_path):
+    """WIDTH #n, w takes 1..255 (GIO86.ASM FILWID, GETWDT: 0 is Illegal function call; 255, the
+    disk's own width, never starts a new line; PC-BASIC 2.0.8 takes 0 and refuses 255)."""
+    source = ('10 OPEN "O", 1, "W.TXT": WIDTH #1, 255: PRINT #1, STRING$(200, "a"); STRING$(100, "b")\n'
+              '20 CLOSE: ON ERROR GOTO 50\n30 WIDTH #1, 5\n40 OPEN "O", 1, "W.TXT": WIDTH #1, 0: END\n'
+              '50 PRINT ERR; ERL: RESUME NEXT\n')
+    assert yaseer_run(source, tmp_path) == " 52  30 \n 5  40 \n"
+    assert (tmp_path / "W.TXT").read_bytes() == b"\x1a"
+    source = '10 OPEN "O", 1, "W.TXT": WIDTH #1, 255: PRINT #1, STRING$(200, "a"); STRING$(100, "b")\n'
+    yaseer_run(source, tmp_path)
+    assert (tmp_path / "W.TXT").read_bytes() == b"a" * 200 + b"b" * 100 + b"\r\n\x1a"

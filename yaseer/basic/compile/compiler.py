@@ -368,6 +368,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit(f"_locate({self.optional_numbers(stmt.args, scope)})")
 
     def stmt_Width(self, stmt, scope):
+        if stmt.file is not None:
+            self.emit(f"_M.set_file_width({self.numeric(stmt.file, scope)}, {self.numeric(stmt.columns, scope)})")
+            return
         if stmt.device is not None:
             if self.kind_of(stmt.device) != "s":  # WIDTH columns, rows: the screen's size
                 self.emit(f"_M.set_screen_size({self.numeric(stmt.device, scope)}, {self.numeric(stmt.columns, scope)})")

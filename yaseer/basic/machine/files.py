@@ -29,7 +29,7 @@ from yaseer.basic.errors import (
 from yaseer.basic.machine import random_files
 from yaseer.basic.machine.runtime import cint
 from yaseer.basic.machine.sandbox import Sandbox, identity_of
-from yaseer.basic.machine.screen import OutputStream
+from yaseer.basic.machine.screen import FileStream
 
 MAX_FILES = 3
 END_OF_FILE = "\x1a"  # Ctrl-Z
@@ -66,12 +66,17 @@ class OpenFile:
             else:
                 os.ftruncate(descriptor, 0)
             os.lseek(descriptor, 0, os.SEEK_END)
-            handle = open(descriptor, "a" if mode == "A" else "w", encoding="latin-1", newline="\r\n")
-            self.stream = OutputStream(handle)
+            handle = open(descriptor, "a" if mode == "A" else "w", encoding="latin-1", newline="")
+            self.stream = FileStream(handle)
             self.written = handle.tell()
 
+    def set_width(self, width: int | None) -> None:
+        """WIDTH #n: the line width of PRINT # (None: never wrap); an input file keeps it too."""
+        if self.stream is not None:
+            self.stream.width = width
+
     # -- output
-    def output(self) -> OutputStream:
+    def output(self) -> FileStream:
         if self.stream is None:
             raise error_for(BAD_FILE_MODE)
         return self.stream

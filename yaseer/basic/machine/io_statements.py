@@ -66,6 +66,16 @@ class InputOutput:
             self.screen.column = 0
         self.screen.width = n
 
+    def set_file_width(self, number, columns) -> None:
+        """WIDTH #n, w: the width PRINT # wraps file n's lines at, 1..255 (0 and more than 255
+        Illegal function call; 255 never wraps, the disk's own width; GIO86.ASM WIDTHS,
+        FILWID, GETWDT); a file not open is Bad file number.  (PC-BASIC 2.0.8 refuses 255.)"""
+        file = self.files.get(number)
+        n = runtime.cint(columns)
+        if not 1 <= n <= 255:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        file.set_width(None if n == 255 else n)
+
     def set_device_width(self, device: str, columns) -> None:
         """WIDTH "dev", n: ``LPT1:`` is WIDTH LPRINT n (GW-BASIC's source, GIOLPT.ASM
         ``LPTSWD``, sets the width LPRINT wraps at), ``SCRN:`` WIDTH n; the other devices
@@ -288,7 +298,8 @@ class InputOutput:
 
     def write_to(self, stream, pieces: tuple) -> None:
         """WRITE #n."""
-        stream.write(",".join(pieces) + "\n")
+        stream.write(",".join(pieces))
+        stream.end_line()
 
     def file_number(self, n) -> float:
         """INPUT #n into a numeric variable: one field, read as GW-BASIC reads numbers."""

@@ -41,6 +41,8 @@ DEVICE_WIDTHS = {
 class OutputStream:
     """A text stream with its current column; ``width`` None never wraps (see module docstring)."""
 
+    row_waits = True  # a full row waits for its next character to wrap (a file's line never does)
+
     def __init__(self, stream: TextIO, width: int | None = None, moves_items: bool = True):
         self.stream = stream
         self.column = 0
@@ -95,7 +97,7 @@ class OutputStream:
         # and wraps by itself; a CHR$(13) then makes no empty row, as PC-BASIC 2.0.8 shows)
         column = self.column
         if width is not None and column and column + len(text) > width and self.moves_items \
-                and (column < width or len(text) > 1):
+                and (column < width or len(text) > 1 or not self.row_waits):
             self.new_row()
         self.write(text)
 
@@ -126,3 +128,32 @@ class OutputStream:
 
     def flush(self) -> None:
         self.stream.flush()
+
+
+class FileStream(OutputStream):
+    """A sequential file's stream (PRINT #, WRITE #): bytes as the program prints them, a
+    PRINT line ending in CR LF, and the file's column as GW-BASIC counts it (GIODSK.ASM
+    ``SOUTPS``): a carriage return puts it back to 0, a character from blank up moves it
+    one, other control codes (a lone LF, ``CHR$(8)``, ``CHR$(28)`` ...) not at all, and
+    the count is a byte: a line of 260 characters leaves it at 4.  ``width`` None is the
+    disk's infinite width (255); ``WIDTH #n, w`` sets another (``F_WID``), where a PRINT
+    item that does not fit starts a new line, ``TAB`` and ``SPC`` count modulo it; the
+    disk driver itself never breaks a line (GIODSK.ASM; as PC-BASIC 2.0.8 writes it)."""
+
+    row_waits = False
+
+    def write(self, text: str) -> None:
+        if not text:
+            return
+        self.stream.write(text)
+        cr = text.rfind("\r")
+        counted = text[cr + 1:] if cr >= 0 else text
+        moved = len(counted) if counted.isprintable() else sum(ch >= " " for ch in counted)
+        self.column = ((0 if cr >= 0 else self.column) + moved) % 256
+
+    def new_row(self) -> None:
+        self.stream.write("\r\n")
+        self.column = 0
+
+    def end_line(self) -> None:
+        self.write("\r\n")

@@ -508,6 +508,9 @@ class _ToAst:
     def width_device(self, c):
         return ast.Width(c[-1], device=c[1])  # WIDTH "LPT1:", n
 
+    def width_file(self, c):
+        return ast.Width(c[-1], file=c[2])  # WIDTH #n, w
+
     def deftype_stmt(self, c):
         return ast.DefType(c[0].value[3:], _values(c)[1:])
 

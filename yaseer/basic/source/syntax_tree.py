@@ -535,10 +535,12 @@ class Locate:
 class Width:
     """``WIDTH n``: the screen's width in columns (PRINT wraps there); ``WIDTH LPRINT n``
     (``printer``): the printer's (LPRINT wraps there); ``WIDTH "LPT1:", n``: the width
-    of the device ``device`` names (a string expression)."""
+    of the device ``device`` names (a string expression); ``WIDTH #n, w``: the width of
+    open file ``file``."""
     columns: object
     printer: bool = False
     device: object = None
+    file: object = None
 
 
 @_node
