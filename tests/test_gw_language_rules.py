@@ -56,8 +56,24 @@ AGREED = {
                                      '40 PRINT "IN"; J: WEND\n'),
     "while running when entered by goto": ('10 WHILE I < 3: I = I + 1: IF I = 1 THEN 30\n20 PRINT "A";\n'
                                            '30 PRINT I;: WEND\n'),
+    # arguments made 16-bit integers before the byte check (MATH1.ASM CONINT: FRCINT, then FC)
+    "counts of 32768 and above overflow": ('10 ON ERROR GOTO 100\n20 PRINT CHR$(32768)\n30 PRINT SPACE$(40000)\n'
+                                           '40 X = 32768: PRINT STRING$(X, 65)\n50 PRINT LEFT$("ABC", 32768)\n'
+                                           '60 PRINT LEFT$("ABC", 300); MID$("ABC", 256)\n70 PRINT RIGHT$("ABC", -1)\n'
+                                           '80 END\n100 PRINT ERR; ERL: RESUME NEXT\n'),
+    # RETURN reads a line number's digits, else returns plainly (GWMAIN.ASM RETURN, GOTO's LINGET)
+    "return with a string": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN "1": PRINT "AFTER"\n',
+    "return with a name": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN X\n',
+    "return with a sum": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN 1+1\n',
+    "randomize a string": '10 A$ = "5": RANDOMIZE A$: PRINT RND\n',
+    "if with a comma": '10 IF 1, THEN PRINT "Y"\n20 IF 1, GOTO 40\n30 END\n40 PRINT "G": IF 0, THEN 50 ELSE PRINT "E"\n50 IF 1, PRINT "N"\n',
+    "go sub with two blanks": '10 GO  SUB 30: END\n30 PRINT "IN": RETURN\n',
+    "go to with blanks": '10 GO  TO 30\n20 GO SUB 40: END\n30 PRINT "IN": GOTO 20\n40 PRINT "SUB": RETURN\n',
+    "sign before not": '10 PRINT -NOT 1; -NOT 1 + 1; 2 * -NOT 0; +NOT 5\n',
+    "lpos of no printer": '10 PRINT LPOS(3); LPOS(2)\n20 PRINT LPOS(-1)\n',
+    "lpos past the printers": '10 PRINT LPOS(4)\n',
     # control codes on the screen: BEL moves nothing, CHR$(0) one column, TAB to the next 8
-    "control codes move the column": ('10 PRINT "AB"; CHR$(7); CHR$(0); "C";: X = POS(0): PRINT: PRINT X\n'
+    "control codes move the column": ('5 CLS\n10 PRINT "AB"; CHR$(7); CHR$(0); "C";: X = POS(0): PRINT: PRINT X\n'
                                       '20 PRINT "A"; CHR$(9); "B";: Y = POS(0): PRINT: PRINT Y\n'
                                       '30 PRINT STRING$(80, "*"); CHR$(13); "Z"\n'),
     # MID$ = copies byte by byte into the target (BISTRS.ASM LHSMID, MID$LP): the target

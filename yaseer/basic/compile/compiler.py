@@ -38,7 +38,8 @@ from yaseer.basic.dialects.dialect import CASIO
 from yaseer.basic.compile.number_models import array_local, local_name, number_model
 from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  (re-exported)
 from yaseer.basic.errors import (
-    BasicError, OUT_OF_MEMORY, UNDEFINED_LINE, WEND_WITHOUT_WHILE, WHILE_WITHOUT_WEND, undefined_line_message,
+    BasicError, ILLEGAL_FUNCTION_CALL, OUT_OF_MEMORY, UNDEFINED_LINE, WEND_WITHOUT_WHILE, WHILE_WITHOUT_WEND,
+    undefined_line_message,
 )
 
 
@@ -526,6 +527,11 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit(f"_error({self.numeric(stmt.code, scope)})")
 
     def stmt_Randomize(self, stmt, scope):
+        if stmt.seed is not None and self.kind_of(stmt.seed) == "s":
+            # GW-BASIC 3.23 takes the seed as a number without FRCINT: a string is Illegal
+            # function call there (PC-BASIC 2.0.8), not Type mismatch
+            self.emit(f"raise _err('Illegal function call', {ILLEGAL_FUNCTION_CALL})")
+            return
         seed = "None" if stmt.seed is None else self.numeric(stmt.seed, scope)
         self.emit(f"_randomize({seed}, {self.seed_kind(stmt.seed)!r})")
 

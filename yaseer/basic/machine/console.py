@@ -246,6 +246,16 @@ class Console:
         column = self.screen.column
         return 1.0 if width is not None and column >= width else float(column + 1)
 
+    def printer_column(self, number) -> float:
+        """LPOS(n): the 1-based column of printer n: 0 and 1 the printer (LPT1:), 2 and 3
+        printers nothing is printed on (column 1); negative is Illegal function call
+        (GIOLPT.ASM LPOS: CONINT), so is above 3 (beyond the three printers' blocks: PC-BASIC
+        2.0.8's check)."""
+        n = runtime.cint(number)
+        if not 0 <= n <= 3:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        return float(self.printer.column + 1) if n <= 1 else 1.0
+
     def screen_char(self, row, column, attribute=None) -> float:
         """SCREEN(row, column[, z]): the code of the character there, or with z not 0 its
         colour attribute (GWSTS.ASM SCRENF; inside a VIEW PRINT window only, as PC-BASIC)."""

@@ -31,10 +31,12 @@ def _overflow() -> BasicError:
 
 
 def _count(n: float, low: int = 0, high: int = 255) -> int:
-    """A count or code argument: rounded, ``low``..``high`` or Illegal function call."""
+    """A count or code argument: made a 16-bit integer first (beyond -32768..32767
+    Overflow: GETBYT calls FRCINT before it checks the byte, MATH1.ASM CONINT), then
+    ``low``..``high`` or Illegal function call."""
     k = cint(n)
     if not low <= k <= high:
-        raise _illegal()
+        raise _illegal() if -32768 <= k <= 32767 else _overflow()
     return k
 
 
@@ -71,6 +73,27 @@ def string_dollar(n: float, fill) -> str:
 
 def space_dollar(n: float) -> str:
     return " " * _count(n)
+
+
+# LEFT$ RIGHT$ MID$ CHR$ with GW's byte arguments (0..255; the Casio's take any count)
+def left_dollar(s: str, n: float) -> str:
+    return s[:_count(n)]
+
+
+def right_dollar(s: str, n: float) -> str:
+    return s[max(len(s) - _count(n), 0):]
+
+
+def mid_dollar(s: str, start: float, n: float | None = None) -> str:
+    i = _count(start, 1)
+    return s[i - 1:] if n is None else s[i - 1:i - 1 + _count(n)]
+
+
+def chr_dollar(n: float) -> str:
+    return chr(_count(n))
+
+
+BYTE_ARGUMENTS = {"_left": left_dollar, "_right": right_dollar, "_mid": mid_dollar, "_chr": chr_dollar}
 
 
 def _unsigned_word(n: float) -> int:

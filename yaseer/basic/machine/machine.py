@@ -387,7 +387,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_csng": float, "_cdbl": float,
         }
         ns.update(self._gw_functions())
-        if self.dialect.typed_numbers:
+        if self.dialect.typed_numbers:  # (GW: string functions' counts are 16-bit integers, then bytes)
+            ns.update(gwfunctions.BYTE_ARGUMENTS)
             ns.update(values.RUNTIME)
             ns.update(runtime.single_loop_helpers())
             ns.update(arith_policy.helpers(self.arith, ns["_idiv"], ns["_mod"], ns["_pow"]))
@@ -417,7 +418,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_time": g.time_dollar, "_xor": g.logical_xor, "_eqv": g.logical_eqv,
             "_imp": g.logical_imp, "_midset": g.mid_assign, "_fre": self.free_memory,
             "_pos": self.cursor_column,
-            "_lpos": lambda _: float(self.printer.column + 1),
+            "_lpos": self.printer_column,
             "_erase": self.erase, "_option_base": self.option_base, "_line_input": self.line_input,
             "_write": self.write_values, "_clear_args": _check_clear_arguments,
             # sequential files (files.py)

@@ -42,6 +42,10 @@ _OPERATOR_NAMES = {
 }
 
 
+def _without_commas(children) -> list:
+    return [c for c in children if not (isinstance(c, Token) and c.type == "COMMA")]
+
+
 def _values(children) -> list:
     """The children that are not punctuation tokens."""
     return [c for c in children if not (isinstance(c, Token) and c.type in ("COMMA", "SEMI", "EQ"))]
@@ -97,9 +101,11 @@ class _ToAst:
         return [ast.EndMark()]
 
     def if_stmt(self, c):
+        c = _without_commas(c)  # IF x, THEN: GW-BASIC's IF skips a comma after its condition
         return _if(c[1], c[3], c[5] if len(c) > 5 else None)
 
     def if_goto(self, c):
+        c = _without_commas(c)
         return _if(c[1], _line_number(c[3]), c[5] if len(c) > 5 else None)
 
     # -- statements
@@ -180,6 +186,16 @@ class _ToAst:
         return ast.Str(token.value) if token.type == "STRING" else ast.Var(token.value)
 
     def return_stmt(self, c):
+        """RETURN [line]: GW-BASIC reads the digits that follow as the line (GWMAIN.ASM RETURN
+        goes on at GOTO, whose LINGET stops at the first non-digit: ``RETURN 1+1`` is line 1);
+        without digits, a plain RETURN (``RETURN "1"``, ``RETURN X``: PC-BASIC 2.0.8)."""
+        if len(c) == 1:
+            return ast.Return()
+        first = c[1]
+        while isinstance(first, ast.Binary):
+            first = first.left
+        if isinstance(first, ast.Num) and not isinstance(first.value, str) and first.value >= 0:
+            return ast.ReturnTo(int(first.value))
         return ast.Return()
 
     def on_jump(self, c):
@@ -422,9 +438,6 @@ class _ToAst:
 
     def line_input_file(self, c):
         return ast.LineInput(None, c[5], channel=c[3])
-
-    def return_line(self, c):
-        return ast.ReturnTo(_line_number(c[1]))
 
     def data_stmt(self, c):
         return ast.Data(c[0].value)

@@ -458,7 +458,7 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
     for kind, value, start, _ in _lexemes(text, dialect):
         if kind == "REMARK" and tokens and text[start] == "'":
             break
-        if _joins_go(tokens, kind, value):
+        if _joins_go(tokens, kind, value, dialect.keyword_first):
             tokens[-1] = Token(_GO_JOINED[value], "GO" + value)
             continue
         tokens.append(Token(kind, value))
@@ -489,10 +489,13 @@ _GO_JOINED = {"TO": "GOTO", "SUB": "GOSUB"}
 _STATEMENT_STARTS = (None, "_COLON", "THEN", "ELSE")
 
 
-def _joins_go(tokens: list, kind: str, value) -> bool:
-    """Keyword-first reading: is this ``TO`` or ``SUB`` the second word of ``GO TO`` /
-    ``GO SUB`` at a statement start?  (GW-BASIC's whole-word reading joins them itself.)"""
+def _joins_go(tokens: list, kind: str, value, keyword_first: bool) -> bool:
+    """Is this ``TO`` or ``SUB`` the second word of ``GO TO`` / ``GO SUB`` at a statement
+    start?  GW-BASIC's whole-word reading joins ``GO SUB`` with one blank itself and ``GO``
+    and ``TO`` with any blanks between (``GO  SUB`` is a Syntax error: PC-BASIC 2.0.8)."""
     if value not in _GO_JOINED or kind not in ("TO", "NAME") or not tokens:
+        return False
+    if value == "SUB" and not keyword_first:
         return False
     last = tokens[-1]
     before = tokens[-2].type if len(tokens) > 1 else None
