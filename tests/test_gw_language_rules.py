@@ -72,6 +72,12 @@ AGREED = {
     "sign before not": '10 PRINT -NOT 1; -NOT 1 + 1; 2 * -NOT 0; +NOT 5\n',
     "lpos of no printer": '10 PRINT LPOS(3); LPOS(2)\n20 PRINT LPOS(-1)\n',
     "lpos past the printers": '10 PRINT LPOS(4)\n',
+    # a branch is read only when it runs (GWMAIN.ASM IF skips to ELSE or the line's end)
+    "a bad branch not taken": '10 IF 1 > 2 THEN EXIT FOR\n20 PRINT "RUNS"\n30 IF 2 > 1 THEN EXIT FOR\n40 PRINT "NOT"\n',
+    "a bad else taken": '10 PRINT "A": IF 0 THEN PRINT "X" ELSE )\n20 PRINT "B"\n',
+    "a bad then, a good else": '10 IF 0 THEN ( ELSE PRINT "E"\n20 PRINT "B"\n',
+    "a branch bad after a statement": '10 IF 1 THEN PRINT 1: )\n20 PRINT "B"\n',
+    "a jump and a bad else": '10 IF 0 THEN 20 ELSE PRINT "Q": (\n20 PRINT "B"\n',
     # control codes on the screen: BEL moves nothing, CHR$(0) one column, TAB to the next 8
     "control codes move the column": ('5 CLS\n10 PRINT "AB"; CHR$(7); CHR$(0); "C";: X = POS(0): PRINT: PRINT X\n'
                                       '20 PRINT "A"; CHR$(9); "B";: Y = POS(0): PRINT: PRINT Y\n'

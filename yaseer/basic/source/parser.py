@@ -759,7 +759,49 @@ def _recover_tokens(tokens: list, err: BasicError, dialect: Dialect) -> list:
     good, bad_start = _statements_before_error(tokens)
     if good and isinstance(good[-1], ast.If):
         return _place_error(good, err)
+    guarded = _guarding_if(tokens, bad_start, err, dialect)
+    if guarded is not None:
+        return good + [guarded]
     return good + _printed_before_error(tokens, bad_start) + [err] + _statements_after_error(tokens, bad_start, dialect)
+
+
+def _guarding_if(tokens: list, start: int, err: BasicError, dialect: Dialect):
+    """A bad IF whose condition reads: the IF, each branch that does not read being ``err``.
+    GW-BASIC reads a branch only when it runs (``10 IF 1 > 2 THEN EXIT FOR`` runs: GWMAIN.ASM
+    IF skips to the ELSE or the end of the line).  None when the condition does not read."""
+    if start >= len(tokens) or tokens[start].type != "IF":
+        return None
+    then = next((k for k in range(start + 1, len(tokens)) if tokens[k].type == "THEN"), None)
+    if then is None:
+        return None
+    otherwise = next((k for k in range(then + 1, len(tokens)) if tokens[k].type == "ELSE"), None)
+    end = len(tokens) if otherwise is None else otherwise
+    head = tokens[start:then + 1]
+    node = _branch_if(head + [Token("REMARK", "")])
+    if node is None:
+        return None
+    node.then = _branch(head, tokens[then + 1:end], err, dialect)
+    if otherwise is not None:
+        node.otherwise = _branch(head, tokens[otherwise + 1:], err, dialect)
+    return node
+
+
+def _branch(head: list, part: list, err: BasicError, dialect: Dialect):
+    """A branch's statements (or line number); one that does not read: the statements
+    before its error, the error, those after it."""
+    node = _branch_if(head + part) if part else None
+    if node is not None:
+        return node.then
+    return (_recover_tokens(part, err, dialect) if part else None) or [err]
+
+
+def _branch_if(tokens: list):
+    """``tokens`` (IF x THEN branch) read as one IF, or None."""
+    try:
+        found = _parse(tokens)
+    except (BasicError, GrammarError):
+        return None
+    return found[0] if len(found) == 1 and isinstance(found[0], ast.If) else None
 
 
 # Tokens that begin another PRINT item after a complete one (``PRINT "a" "b"``), and those
