@@ -72,7 +72,10 @@ def test_statements_before_a_bad_one_are_kept_in_gw():
     """GW-BASIC finds a bad token when it gets there: the statements before it run."""
     line = parse_line(5070, "PRINT 1: U(2): X=1", GW)
     assert line.error is None and line.statements[0] == ast.Print(False, [ast.Num(1, "%")])
-    assert str(line.statements[1]) == "Syntax error"
+    # U(2) without "=": the element is read first (LET's PTRGET), then the Syntax error
+    touched = line.statements[1]
+    assert touched.target == ast.Elem("U", (ast.Num(2, "%"),)) and str(touched.error) == "Syntax error"
+    assert str(parse_line(5070, "PRINT 1: 3: X=1", GW).statements[1]) == "Syntax error"
 
 
 def test_error_after_then_belongs_to_the_branch():

@@ -78,6 +78,16 @@ AGREED = {
     "a bad then, a good else": '10 IF 0 THEN ( ELSE PRINT "E"\n20 PRINT "B"\n',
     "a branch bad after a statement": '10 IF 1 THEN PRINT 1: )\n20 PRINT "B"\n',
     "a jump and a bad else": '10 IF 0 THEN 20 ELSE PRINT "Q": (\n20 PRINT "B"\n',
+    # DEF FN's body is read when the function is called (GWMAIN.ASM DEF skips it)
+    "def fn body read when called": '10 DEF FNA(X) = X + : PRINT "DEF OK"\n20 PRINT FNA(1)\n',
+    "def fn body of the wrong type": '10 DEF FNB(X) = X + "A": PRINT "DEF OK"\n20 PRINT FNB(1)\n',
+    "def fn string of a number": '10 DEF FNC$(X) = X: PRINT "OK"\n20 PRINT FNC$(1)\n',
+    "def fn never called": '10 DEF FND(X) = X )\n20 PRINT "B"\n',
+    # LET reads its target before the = (PTRGET first): DIMA$(20) is the array DIMA$
+    "dima$(20)": '10 DIMA$(20): PRINT "OK"\n',
+    "dima(20),b$(3)": '10 DIMA(20),B$(3): PRINT "OK"\n',
+    "dima$(5)": '10 DIMA$(5): PRINT "OK"\n',
+    "dima$ trapped": '10 ON ERROR GOTO 30\n20 DIMB$(11): PRINT "NO": END\n30 PRINT ERR; ERL: RESUME NEXT\n',
     # control codes on the screen: BEL moves nothing, CHR$(0) one column, TAB to the next 8
     "control codes move the column": ('5 CLS\n10 PRINT "AB"; CHR$(7); CHR$(0); "C";: X = POS(0): PRINT: PRINT X\n'
                                       '20 PRINT "A"; CHR$(9); "B";: Y = POS(0): PRINT: PRINT Y\n'
@@ -108,8 +118,7 @@ CUT_STATEMENTS = [
     'DEFINT A-C', 'RETURN 100', 'X=1 AND 2', 'OPEN "O", #1, "F"', 'OPEN "F" FOR OUTPUT AS #1', 'X=FRE(0)',
     'X=VAL("5")', 'X=STRING$(3,65)', 'LSET A$="X"', 'X=A(1)', 'X=A(1,2)', 'DEF',
 ]
-# Where the two still differ (not generated): a DEF FN body is checked when DEF runs
-# (GW-BASIC: when the function is called); GW checks the file number of PRINT #, FIELD #,
+# Where the two still differ (not generated): GW checks the file number of PRINT #, FIELD #,
 # GET # and NAME's file before the rest of the statement; MID$ checks its arguments as it
 # reads them; ON n GOTO with n = 0 reads no further; WHILE scans for its WEND first;
 # WRITE prints its items and commas before the one that fails.

@@ -110,6 +110,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.program_areas = dialect.program_areas  # GOSUB PROG n, #n, "file:label"
         self.library_forms = dialect.library_forms  # THEN *
         self.locate_arguments = dialect.screen.locate_arguments  # LOCATE's (fewest, most)
+        self.late_errors = dialect.errors_when_reached  # a DEF FN body's errors when it is called
         self.names_missing_line = dialect.names_missing_line
         self.words = dialect.words or NO_WORDS  # the dialect's own words (dialects/casio.py)
         self.own_functions = dict(self.words.functions, DEG=self.words.deg_function) if dialect.words else {}
@@ -496,18 +497,31 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit("_return()")
         self.emit(jump)
 
+    def stmt_Touch(self, stmt, scope):
+        self.emit(self.expr(stmt.target, scope)[0])
+        self.emit(f"raise _err({stmt.error.message!r}, {stmt.error.code})")
+
     def stmt_DefFn(self, stmt, scope):
-        fn_scope = FnScope(self, stmt.params)
-        body, kind = self.expr(stmt.body, fn_scope)
-        fn_kind = self.numbers.kind(stmt.name)
-        if (kind == "s") != (fn_kind == "s"):
-            raise type_mismatch()
-        if kind != "s":
-            body = self.numbers.convert(body, kind, fn_kind)
+        try:
+            if isinstance(stmt.body, BasicError):
+                raise stmt.body
+            fn_scope = FnScope(self, stmt.params)
+            body, kind = self.expr(stmt.body, fn_scope)
+            fn_kind = self.numbers.kind(stmt.name)
+            if (kind == "s") != (fn_kind == "s"):
+                raise type_mismatch()
+            if kind != "s":
+                body = self.numbers.convert(body, kind, fn_kind)
+            code = f"return {body}"
+        except BasicError as err:
+            if not self.late_errors:
+                raise
+            # GW-BASIC's DEF only notes where the body is: its errors come when it is called
+            code = f"raise _err({err.message!r}, {err.code})"
         self.fn_count += 1
         fname = f"_fn_{self.fn_count}"
         params = ", ".join("p" + local_name(self.numbers.name(p)) for p in stmt.params)
-        self.prelude.append(f"def {fname}({params}):\n    return {body}\n")
+        self.prelude.append(f"def {fname}({params}):\n    {code}\n")
         self.emit(f"_M.fns[{self.numbers.name(stmt.name)!r}] = ({fname}, {len(stmt.params)})")
 
     def stmt_DefType(self, stmt, scope):

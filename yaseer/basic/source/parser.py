@@ -762,6 +762,12 @@ def _recover_tokens(tokens: list, err: BasicError, dialect: Dialect) -> list:
     guarded = _guarding_if(tokens, bad_start, err, dialect)
     if guarded is not None:
         return good + [guarded]
+    defined = _deferred_definition(tokens, bad_start, err)
+    if defined is not None:
+        return good + [defined] + _statements_after_error(tokens, bad_start, dialect)
+    touched = _touched_element(tokens, bad_start, err)
+    if touched is not None:
+        return good + [touched] + _statements_after_error(tokens, bad_start, dialect)
     return good + _printed_before_error(tokens, bad_start) + [err] + _statements_after_error(tokens, bad_start, dialect)
 
 
@@ -793,6 +799,48 @@ def _branch(head: list, part: list, err: BasicError, dialect: Dialect):
     if node is not None:
         return node.then
     return (_recover_tokens(part, err, dialect) if part else None) or [err]
+
+
+def _deferred_definition(tokens: list, start: int, err: BasicError):
+    """A DEF FN whose name and parameters read but whose body does not: the function, its
+    body the error (raised when it is called: GWMAIN.ASM DEF skips the body, as DATA)."""
+    if start + 1 >= len(tokens) or tokens[start].type != "DEF" or tokens[start + 1].type != "FN":
+        return None
+    equals = next((k for k in range(start, len(tokens)) if tokens[k].type == "EQ"), None)
+    if equals is None:
+        return None
+    try:
+        found = _parse(tokens[start:equals + 1] + [Token("NUMBER", 0.0)])
+    except (BasicError, GrammarError):
+        return None
+    if len(found) != 1 or not isinstance(found[0], ast.DefFn):
+        return None
+    found[0].body = err
+    return found[0]
+
+
+def _touched_element(tokens: list, start: int, err: BasicError):
+    """A bad statement that begins with an array element (``DIMA$(20)``: the name DIMA$):
+    GW-BASIC's LET reads its target (PTRGET: the array made, the subscripts checked) before
+    it looks for the ``=``; None for any other bad statement."""
+    if start + 1 >= len(tokens) or tokens[start].type not in ("NAME", "STRNAME") or tokens[start + 1].type != "_LPAR":
+        return None
+    depth = 0
+    for k in range(start + 1, len(tokens)):
+        depth += {"_LPAR": 1, "_RPAR": -1}.get(tokens[k].type, 0)
+        if depth == 0:
+            break
+    else:
+        return None
+    if k + 1 < len(tokens) and tokens[k + 1].type == "EQ":
+        return None  # the assignment itself is bad: its value
+    try:
+        found = _parse(tokens[start:k + 1] + [Token("EQ", "="), Token("NUMBER", 0.0)])
+    except (BasicError, GrammarError):
+        return None
+    if len(found) != 1 or not isinstance(found[0], ast.Let):
+        return None
+    return ast.Touch(found[0].target, err)
 
 
 def _branch_if(tokens: list):

@@ -435,6 +435,14 @@ class Input:
 
 
 @_node
+class Touch:
+    """A statement that fails after it has read its target: ``DIMA$(20)`` (no ``=``) reads
+    the element, which can be Subscript out of range, before its Syntax error ``error``."""
+    target: object
+    error: object
+
+
+@_node
 class DefFn:
     name: str
     params: list
