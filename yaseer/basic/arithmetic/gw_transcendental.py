@@ -30,7 +30,7 @@ from __future__ import annotations
 from math import floor, frexp, inf, ldexp
 
 from yaseer.basic.arithmetic import mbf_integers
-from yaseer.basic.arithmetic.single_arith import add, divide, from_double, power_by_integer, product
+from yaseer.basic.arithmetic.single_arith import add, divide, from_double, power_by_integer, product, subtract
 
 
 def _mbf(word: int) -> float:
@@ -117,12 +117,6 @@ def _poly(x: float, coefficients) -> float:
     (mbf_integers.poly), or :func:`poly_steps` where those hand it back."""
     result = mbf_integers.poly(x, _PARTS[id(coefficients)])
     return poly_steps(x, coefficients) if result is None else result
-
-
-def _add(a: float, b: float) -> float:
-    """``$FADDS`` on integers (mbf_integers.add), or single_arith.add where that hands it back."""
-    result = mbf_integers.add(a, b)
-    return add(a, b) if result is None else result
 
 
 def _polyx(x: float, coefficients) -> float:
@@ -246,12 +240,12 @@ def atn(x) -> float:
         y = divide(_ONE, y)
     shifted = y >= _TAN_TWELFTH_PI
     if shifted:
-        y = divide(_poly(y, _ATN_REDUCTION), _add(y, _SQR3))
+        y = divide(_poly(y, _ATN_REDUCTION), add(y, _SQR3))
     result = _polyx(y, _ATN_COEFFICIENTS)
     if shifted:
-        result = _add(result, _SIXTH_PI)
+        result = add(result, _SIXTH_PI)
     if inverted:
-        result = _add(_HALF_PI, -result)
+        result = subtract(_HALF_PI, result)
     return -result if negative and result else result
 
 
@@ -264,7 +258,7 @@ def log(x) -> float:
         return 0.0
     m, e = frexp(x)
     ratio = divide(_poly(m, _LOG_NUMERATOR), _poly(m, _LOG_DENOMINATOR))
-    return product(_add(float(e), ratio) * _LN2)
+    return product(add(float(e), ratio) * _LN2)
 
 
 def _overflowed(negative: bool) -> float:
@@ -285,7 +279,7 @@ def exp(x, overflow=_overflowed) -> float:
     whole = floor(y)
     if whole == 127:  # 2**127 has no exponent byte
         return overflow(False)
-    fraction = _add(y, -float(whole))
+    fraction = subtract(y, float(whole))
     result = product(_poly(fraction, _EXP_COEFFICIENTS) * ldexp(1.0, whole))
     return overflow(False) if result == inf else result
 

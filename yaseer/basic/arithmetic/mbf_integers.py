@@ -9,7 +9,8 @@ half to even on the guard byte).  Here a single is a pair of integers
 ``(mantissa, exponent)`` with the value ``mantissa * 2**exponent``, ``|mantissa|``
 24 bits with its top bit set (or 0), and the steps are written out inline with no
 call and no float between them: the same rounding as single_arith.product and
-single_arith.add, about five times faster.  A step whose exponent leaves the middle
+single_arith.add, faster than those where they take their long ways (sums of
+opposite signs far apart, as small arguments make them).  A step whose exponent leaves the middle
 of MBF's range (where the range's ends would need testing) hands the whole
 polynomial back to the caller's step-by-step reference (None is returned).
 """
@@ -110,19 +111,3 @@ def poly(x: float, coefficients: tuple[tuple[int, int, bool], ...]) -> float | N
                 m = 0x800000
                 e += 1
     return ldexp(-m if negative else m, e)
-
-
-def add(a: float, b: float) -> float | None:
-    """``a + b`` of two singles as GW-BASIC's ``$FADDS`` (single_arith.add), or None where an
-    operand is outside 2**-100 .. 2**100 in size (where the range's ends would need testing):
-    the polynomial ``a * x + b`` at x = 1 (``$FMULS`` of a 24-bit mantissa by 1 is exact)."""
-    if not a:
-        return b + 0.0
-    if not b:
-        return a + 0.0
-    fa, ea = frexp(a)
-    fb, eb = frexp(b)
-    if not (-100 < ea < 100 and -100 < eb < 100):
-        return None
-    return poly(1.0, ((int(fa * 16777216.0) if a > 0 else int(fa * -16777216.0), ea - 24, a < 0),
-                      (int(fb * 16777216.0) if b > 0 else int(fb * -16777216.0), eb - 24, b < 0)))
