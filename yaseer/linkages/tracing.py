@@ -142,7 +142,21 @@ def namespace(names: dict) -> dict:
                               "isinstance": isinstance, "list": list, "str": str})
 
 
-_READ = re.compile(r"(t\d+) = float\((_a_\w+)\[(\d+)\]\)$")
+class _Pattern:
+    """A regular expression compiled at its first use: a run whose paths are all kept on disk
+    (:mod:`yaseer.linkages.recording_cache`) records nothing and never needs one (compiling
+    these cost every start that called a library program about 2 ms)."""
+
+    def __init__(self, pattern: str) -> None:
+        self.pattern = pattern
+
+    def __getattr__(self, name: str):
+        compiled = re.compile(self.pattern)
+        self.match, self.findall, self.sub = compiled.match, compiled.findall, compiled.sub
+        return getattr(compiled, name)
+
+
+_READ = _Pattern(r"(t\d+) = float\((_a_\w+)\[(\d+)\]\)$")
 
 
 def _batched_reads(lines: list[str], names: dict) -> list[str]:
@@ -174,13 +188,13 @@ def _batched_reads(lines: list[str], names: dict) -> list[str]:
     return out
 
 
-_NAME = re.compile(r"\bt\d+\b")
-_DEFINED = re.compile(r"^((?:t\d+, )*t\d+) = (.*)$")
+_NAME = _Pattern(r"\bt\d+\b")
+_DEFINED = _Pattern(r"^((?:t\d+, )*t\d+) = (.*)$")
 _OPERAND = r"(?:t\d+|-?[\d.]+(?:e[-+]?\d+)?j?|\(-?[\d.]+[-+][\d.]+j\))"
 # Expressions that raise nothing whatever the numbers (no division, no call, no abs):
 # + - * and comparisons of two operands, a negation, a part of a complex number, a choice.
-_HARMLESS = re.compile(rf"^(?:{_OPERAND} (?:[-+*]|[<>]=?|[=!]=) {_OPERAND}|-t\d+|t\d+\.(?:real|imag)"
-                       rf"|\({_OPERAND} if {_OPERAND}(?: [<>] {_OPERAND})? else {_OPERAND}\))$")
+_HARMLESS = _Pattern(rf"^(?:{_OPERAND} (?:[-+*]|[<>]=?|[=!]=) {_OPERAND}|-t\d+|t\d+\.(?:real|imag)"
+                     rf"|\({_OPERAND} if {_OPERAND}(?: [<>] {_OPERAND})? else {_OPERAND}\))$")
 
 
 def _without_dead_lines(lines: list[str]) -> list[str]:
@@ -267,7 +281,7 @@ def _registers(lines: list[str]) -> list[str]:
     return out
 
 
-_FINITE = re.compile(r"(t\d+) = _isfinite\((\w+)\)$")
+_FINITE = _Pattern(r"(t\d+) = _isfinite\((\w+)\)$")
 
 
 def _batched_finite_guards(lines: list[str]) -> list[str]:
