@@ -284,12 +284,11 @@ def _read_decimal(s: str, largest: float | None = None) -> tuple[float, int, str
         if largest is None:
             raise _overflow()
         value = math.inf
-    from yaseer.basic.source.scanner import SINGLE_DIGITS
+    from yaseer.basic.source.scanner import SINGLE_DIGITS, significant_digits
 
-    significant = (whole + fraction).strip("0") if match.group(3) is not None else whole.lstrip("0")
     after = s[used:used + 1]
     double = (found is not None and found.group(0)[0] == "D") or after == "#" or (
-        after != "!" and len(significant) > SINGLE_DIGITS)
+        after != "!" and significant_digits(whole, fraction) > SINGLE_DIGITS)
     literal = f"{whole or '0'}.{fraction}E{exponent}"
     return (-value if sign == "-" else value), used, "#" if double else "!", literal
 

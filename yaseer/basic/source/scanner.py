@@ -277,6 +277,13 @@ _LONE_POINT = re.compile(r"\.(?:[ED][+-]?\d*)?([!#]?)")
 SINGLE_DIGITS = 7  # a literal with more significant digits is double precision (GW-BASIC)
 
 
+def significant_digits(whole: str, fraction: str) -> int:
+    """How many digits of a decimal number's ``whole`` and ``fraction`` parts count
+    towards double precision: from the first that is not 0, zeros ending the whole
+    part included (``58183640.0``: 8), zeros ending the fraction not (``1.5000000``: 2)."""
+    return len((whole + fraction.rstrip("0")).lstrip("0"))
+
+
 def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[tuple, int]:
     """A GW-BASIC number literal: ``((value, type), end)`` with type ``%``, ``!`` or ``#``.
 
@@ -316,8 +323,8 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
         if value > 32768:
             raise _syntax_error()
         return (int(value), "%"), match.end()
-    digits = len(mantissa.replace(".", "").lstrip("0").rstrip("0") if "." in mantissa else mantissa.lstrip("0"))
-    if suffix == "#" or (not suffix and (letter == "D" or digits > SINGLE_DIGITS)):
+    whole, _, fraction = mantissa.partition(".")
+    if suffix == "#" or (not suffix and (letter == "D" or significant_digits(whole, fraction) > SINGLE_DIGITS)):
         if value > DOUBLE_LARGEST:  # MBF's double range ends where the single's does
             value = _overflowed(DOUBLE_LARGEST, notes)
         elif value < MBF_SMALLEST:  # ... and begins there too: below it a literal is 0
