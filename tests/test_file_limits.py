@@ -153,3 +153,22 @@ def test_a_link_inside_the_directory_is_followed(tmp_path):
     assert run(program, tmp_path) == "INSIDE\n"
     assert (tmp_path / "REAL.TXT").read_bytes() == b"INSIDE\r\nMORE\r\n\x1a"
     assert not (tmp_path / "sub" / "L.TXT").is_symlink() and not (tmp_path / "sub" / "L.TXT").exists()
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="no /dev/full here")
+@pytest.mark.parametrize("dialect, number", [("gw", 57), ("casio", 7)])
+def test_a_session_printer_that_cannot_be_written_is_device_io_error(tmp_path, dialect, number):
+    """``yaseer --printer /dev/full``: LPRINT in a program (trapped: ERR is 57, the Casio's RW
+    is 7, then not trapped), LLIST and LPRINT typed are each ``Device I/O error``, once an
+    Internal error; the session goes on."""
+    import subprocess
+    import sys
+
+    typed = ('10 ON ERROR GOTO 100\n20 LPRINT "HELLO"\n30 PRINT "ON": END\n100 PRINT ERR: RESUME NEXT\nRUN\n'
+             '5 LPRINT "X"\nRUN\nLLIST\nLPRINT 5\nPRINT 6\nSYSTEM\n')
+    done = subprocess.run([sys.executable, "-m", "yaseer", "--dialect", dialect, "--printer", "/dev/full"],
+                          input=typed, capture_output=True, text=True, timeout=120, cwd=tmp_path)
+    shown = [line.rsplit("> ", 1)[-1] for line in done.stdout.splitlines() if "> " in line]
+    shown = [text for text in shown if text][-5:]
+    assert shown == [f" {number} ", "Device I/O error in 5", "Device I/O error", "Device I/O error", " 6 "], done.stdout
+    assert "ON\n" in done.stdout and "Internal error" not in done.stdout and done.returncode == 0

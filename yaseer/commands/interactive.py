@@ -72,7 +72,9 @@ def main(args=None) -> int:
 
 
 def _printer(path: str | None) -> Callable[[str], None] | None:
-    """A writer appending to ``path`` (flushed at every write), or None (no path, or it cannot be opened)."""
+    """A writer appending to ``path`` (flushed at every write), or None (no path, or it cannot be
+    opened); a write that fails (a full disk, /dev/full) is ``Device I/O error`` (57), a BASIC
+    error of the statement that printed (LPRINT, LLIST), which a program may trap."""
     if not path:
         return None
     try:
@@ -80,7 +82,17 @@ def _printer(path: str | None) -> Callable[[str], None] | None:
     except OSError as error:
         print(f"Cannot open the printer file {path}: {error.strerror}", file=sys.stderr)
         return None
-    return _writer(stream)
+    write = _writer(stream)
+
+    def printed(text: str) -> None:
+        try:
+            write(text)
+        except OSError:
+            from yaseer.basic.errors import DEVICE_IO_ERROR, error_for
+
+            raise error_for(DEVICE_IO_ERROR) from None
+
+    return printed
 
 
 def run_loop(session, read: Reader, write: Callable[[str], object],

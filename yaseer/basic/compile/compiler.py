@@ -113,6 +113,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.late_errors = dialect.errors_when_reached  # a DEF FN body's errors when it is called
         self.names_missing_line = dialect.names_missing_line
         self.words = dialect.words or NO_WORDS  # the dialect's own words (dialects/casio.py)
+        self.string_length = dialect.string_length  # the longest literal (characters)
         self.own_functions = dict(self.words.functions, DEG=self.words.deg_function) if dialect.words else {}
         self.direct = direct
         self.trace = trace and not direct

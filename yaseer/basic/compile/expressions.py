@@ -15,7 +15,7 @@ import math
 
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.number_models import NUMERIC, RANGE_CHECKED, array_local, local_name
-from yaseer.basic.errors import BasicError, SYNTAX_ERROR, TYPE_MISMATCH
+from yaseer.basic.errors import BasicError, STRING_TOO_LONG, SYNTAX_ERROR, TYPE_MISMATCH
 from yaseer.basic.arithmetic.single_arith import SMALL_CONSTANT
 
 
@@ -190,7 +190,8 @@ def _simple_operand(code: str) -> bool:
 
 class ExpressionCompiler:
     """The expression methods of ``AreaCompiler`` (they use its ``numbers``, ``plan``,
-    ``fn_params`` and the native-loop facts ``whole_index`` and ``counting_vars``)."""
+    ``fn_params``, ``string_length`` and the native-loop facts ``whole_index`` and
+    ``counting_vars``)."""
 
     def expr(self, node, scope) -> tuple[str, str]:
         """(Python source, "n" or "s") for an expression node."""
@@ -223,6 +224,8 @@ class ExpressionCompiler:
         return self.numbers.literal(node.value, node.kind)
 
     def expr_Str(self, node, scope):
+        if len(node.value) > self.string_length:  # an error where the literal is used, as for a string built too long
+            return f"_fail('String too long', {STRING_TOO_LONG})", "s"
         return repr(node.value), "s"
 
     def expr_Var(self, node, scope):

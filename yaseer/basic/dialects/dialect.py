@@ -87,9 +87,10 @@ FIELDS = (
     "name_length",  # int | None: None
     "hex_literals",  # bool: False
     "screen",  # ScreenRules: CASIO_SCREEN
+    "string_length",  # int: 255
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
-            True, True, False, False, None, False, None, False, CASIO_SCREEN)
+            True, True, False, False, None, False, None, False, CASIO_SCREEN, 255)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -261,6 +262,7 @@ CASIO = Dialect(
     display=(32, 8, 2), controls=tuple(sorted(CASIO_CONTROLS.items())), charset=CASIO_CHARACTERS, enter_key="\r",
     empty_input_keeps=True, library_forms=True, file_devices=("CAS0:", "CAS1:"),
     words=casio_words.WORDS, names_keep_case=True, name_length=15, hex_literals=True,
+    string_length=255,  # the manual, part 6: string variables hold up to 255 characters (else ST error)
 )
 
 GW = Dialect(
@@ -273,6 +275,7 @@ GW = Dialect(
     errors_when_reached=True, comma_trims_number=True, for_binds_next=True, largest_number=DOUBLE_LARGEST,
     printer_width=80, joins_unnumbered_lines=False, names_missing_line=False, spaced_relations=True,
     bracket_subscripts=True, display=(80, 25, 25), controls=tuple(sorted(GW_CONTROLS.items())), screen=GW_SCREEN,
+    string_length=255,  # a string descriptor holds its length in one byte
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -34,7 +34,6 @@ from yaseer.basic.machine.screen import FileStream
 MAX_FILES = 3
 END_OF_FILE = "\x1a"  # Ctrl-Z
 RECORD = 128  # bytes: LOC counts these
-LINE_LIMIT = 255  # characters LINE INPUT # reads into one string
 _MODES = {"I": "I", "O": "O", "A": "A", "R": "R", "INPUT": "I", "OUTPUT": "O", "APPEND": "A", "RANDOM": "R"}
 
 
@@ -105,11 +104,11 @@ class OpenFile:
         self.position += n
         return text
 
-    def read_line(self) -> str:
+    def read_line(self, longest: int) -> str:
         """LINE INPUT #: the characters up to a CR, which ends the line (and a LF right after
         it is consumed); a LF that follows no CR belongs to the line, and so does a CR right
-        after such a LF; zero bytes are dropped; at most 255 characters (the rest is the next
-        line).  DSKCOM.ASM ``DLINE`` (PC-BASIC 2.0.8 ends a line at a lone LF too)."""
+        after such a LF; zero bytes are dropped; at most ``longest`` characters, the dialect's
+        string length (the rest is the next line).  DSKCOM.ASM ``DLINE`` (PC-BASIC 2.0.8 ends a line at a lone LF too)."""
         data = self._input()
         n = len(data)
         i = self.position
@@ -117,7 +116,7 @@ class OpenFile:
             raise error_for(INPUT_PAST_END)
         out: list[str] = []
         after_lf = False
-        while i < n and len(out) < LINE_LIMIT:
+        while i < n and len(out) < longest:
             ch = data[i]
             i += 1
             if ch == "\r" and not after_lf:
@@ -130,11 +129,13 @@ class OpenFile:
         self.position = i
         return "".join(out)
 
-    def read_field(self, numeric: bool) -> str:
+    def read_field(self, numeric: bool, longest: int) -> str:
         """One INPUT # field: blanks and line ends before it skipped; a number ends at a
         blank, comma or line end, a string at a comma or line end (a quoted one at its
         closing quote, and text after that begins the next field, as in PC-BASIC); the
-        comma or line end after it is consumed."""
+        comma or line end after it is consumed.  A string ends after ``longest`` characters
+        (the dialect's string length) and the rest begins the next field (GW-BASIC reads a
+        field into its 255-byte buffer; PC-BASIC 2.0.8 splits a longer one so)."""
         data = self._input()
         n = len(data)
         i = self.position
@@ -145,6 +146,9 @@ class OpenFile:
         if not numeric and data[i] == '"':
             close = data.find('"', i + 1)
             close = n if close < 0 else close
+            if close - (i + 1) > longest:
+                self.position = i + 1 + longest
+                return data[i + 1:self.position]
             text, i = data[i + 1:close], close + 1
             while i < n and data[i] == " ":
                 i += 1
@@ -162,6 +166,9 @@ class OpenFile:
                     if i < n and data[i] == "\r":
                         i += 1
                     continue
+                if len(out) == longest:
+                    self.position = i
+                    return "".join(out)
                 out.append(data[i])
                 i += 1
             text = "".join(out).rstrip(" ")

@@ -221,7 +221,7 @@ class InputOutput:
                 line = line[:limit]
             if not line and len(kinds) == 1 and self.dialect.empty_input_keeps:
                 return [None if kind == "n" else "" for kind in kinds]
-            values = _parse_input(line, kinds, self.dialect.largest_number)
+            values = _parse_input(line, kinds, self.dialect.largest_number, self.dialect.string_length)
             if values is not None:
                 return values
             self.screen.write("?Redo from start\n")
@@ -229,8 +229,9 @@ class InputOutput:
     def line_input(self, prompt, again: tuple | None = None) -> str:
         """LINE INPUT ["prompt";] a$: the whole line, commas and quotes included (its
         trailing blanks dropped, as GW-BASIC's screen editor drops them); ``again``
-        as for INPUT (see :meth:`_read_line`)."""
-        return self._read_line(prompt or "", again).rstrip(" ")
+        as for INPUT (see :meth:`_read_line`); a line over the dialect's string length is
+        String too long."""
+        return runtime.limited(self._read_line(prompt or "", again).rstrip(" "), self.dialect.string_length)
 
     def _read_line(self, prompt: str, again: tuple | None = None) -> str:
         """Show ``prompt``, read one line of input (without its line end); the end of
@@ -303,7 +304,7 @@ class InputOutput:
 
     def file_number(self, n) -> float:
         """INPUT #n into a numeric variable: one field, read as GW-BASIC reads numbers."""
-        return gwfunctions.val(self.files.get(n).read_field(True), self.dialect.largest_number)
+        return gwfunctions.val(self.files.get(n).read_field(True, self.dialect.string_length), self.dialect.largest_number)
 
     def input_chars(self, count, n=None) -> str:
         """INPUT$(count[, #n]): ``count`` characters of the file (or of the input)."""
@@ -377,9 +378,10 @@ def _as_number(value):
     return value
 
 
-def _parse_input(text: str, kinds: str, largest: float | None = None):
+def _parse_input(text: str, kinds: str, largest: float | None, longest: int):
     """The values of one INPUT line for targets of ``kinds`` ("n"/"s"), or None to redo
-    (``largest``: see gwfunctions.read_number)."""
+    (``largest``: see gwfunctions.read_number); a string over ``longest`` characters is
+    String too long."""
     import csv
 
     reader = csv.reader([text], skipinitialspace=True)
@@ -389,7 +391,7 @@ def _parse_input(text: str, kinds: str, largest: float | None = None):
     values = []
     for field_text, kind in zip(fields, kinds):
         if kind == "s":
-            values.append(field_text)
+            values.append(runtime.limited(field_text, longest))
             continue
         try:
             value = gwfunctions.number_field(field_text, largest)

@@ -54,7 +54,8 @@ from yaseer.basic.dialects import dialect as dialects
 from yaseer.basic.machine import gwfunctions, runtime, val_numbers
 from yaseer.basic.machine.files import FileTable, Sandbox
 from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
-    BasicError, OutputError, BREAK, INPUT_PAST_END, OUT_OF_DATA, OUT_OF_MEMORY, SYNTAX_ERROR, UNDEFINED_LINE,
+    BasicError, OutputError, BREAK, INPUT_PAST_END, OUT_OF_DATA, OUT_OF_MEMORY, STRING_TOO_LONG, SYNTAX_ERROR,
+    UNDEFINED_LINE,
     UNDEFINED_PROGRAM_AREA, undefined_line_message,
 )
 from yaseer.basic.machine.console import Console
@@ -126,16 +127,17 @@ class _AreaRuntime:
     def read_string(self) -> str:
         """The next DATA item as a string: a quoted item is the text between its quotes
         (an unclosed quote runs to the end); anything after the closing quote is a
-        Syntax error in the DATA line (GW-BASIC)."""
+        Syntax error in the DATA line (GW-BASIC); one over the dialect's string length is
+        String too long, also in the DATA line (as PC-BASIC 2.0.8 reports it)."""
         text, line = self.read_item()
-        if not text.startswith('"'):
-            return text
-        end = text.find('"', 1)
-        if end < 0:
-            return text[1:]
-        if text[end + 1:].strip():
-            raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number)
-        return text[1:end]
+        if text.startswith('"'):
+            end = text.find('"', 1)
+            if end >= 0 and text[end + 1:].strip():
+                raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number)
+            text = text[1:] if end < 0 else text[1:end]
+        if len(text) > self.machine.dialect.string_length:
+            raise BasicError("String too long", STRING_TOO_LONG).at(line, self.number)
+        return text
 
     def restore_at(self, value: float) -> None:
         """RESTORE (expression): the line the value names (truncated), which must exist
@@ -379,7 +381,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_exp": math.exp, "_log": math.log, "_len": lambda s: float(len(s)),
             "_strs": formatting.str_dollar, "_val": gwfunctions.val, "_chr": runtime.chr_dollar,
             "_asc": runtime.asc, "_left": runtime.left, "_right": runtime.right, "_mid": runtime.mid,
-            "_cat": runtime.concat, "_pow": runtime.power, "_idiv": runtime.int_divide,
+            "_cat": runtime.concatenation(self.dialect.string_length), "_pow": runtime.power, "_idiv": runtime.int_divide,
             "_mod": runtime.modulo, "_and": runtime.logical_and, "_or": runtime.logical_or,
             "_not": runtime.logical_not, "_frange": runtime.float_range,
             "_fcount": runtime.pass_counter, "_fidle": runtime.idle_passes, "_fvalue": runtime.counted_value,
@@ -427,8 +429,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_rename": self.files.rename, "_chain": self.chain, "_command": self.program_command, "_files": self.list_files,
             "_fout": lambda n: self.files.get(n).output(), "_prf": self.print_to,
             "_pruf": self.print_using_to, "_writef": self.write_to,
-            "_fin_n": self.file_number, "_fin_s": lambda n: self.files.get(n).read_field(False),
-            "_fline": lambda n: self.files.get(n).read_line(),
+            "_fin_n": self.file_number, "_fin_s": lambda n: self.files.get(n).read_field(False, self.dialect.string_length),
+            "_fline": lambda n: self.files.get(n).read_line(self.dialect.string_length),
             "_eof": lambda n: -1.0 if self.files.get(n).at_end() else 0.0,
             "_lof": lambda n: float(self.files.get(n).length()),
             "_loc": lambda n: float(self.files.get(n).records()),

@@ -161,10 +161,10 @@ class RandomFile:
     def read_chars(self, n: int) -> str:
         return self._input()
 
-    def read_line(self) -> str:
+    def read_line(self, longest: int) -> str:
         return self._input()
 
-    def read_field(self, numeric: bool) -> str:
+    def read_field(self, numeric: bool, longest: int) -> str:
         return self._input()
 
     def at_end(self) -> bool:

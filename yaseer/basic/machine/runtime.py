@@ -17,7 +17,6 @@ from yaseer.basic.errors import (
     BasicError, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_CALL, OVERFLOW, STRING_TOO_LONG,
 )
 
-MAX_STRING = 255  # characters (MS-BASIC's limit)
 _RADIANS_PER_DEGREE = math.pi / 180.0
 
 
@@ -285,11 +284,22 @@ def atn_degrees(x: float) -> float:
 # ------------------------------------------------------------------ strings
 
 
-def concat(a: str, b: str) -> str:
-    text = a + b
-    if len(text) > MAX_STRING:
+def limited(text: str, longest: int) -> str:
+    """``text``, or ``String too long`` when it has over ``longest`` characters (the
+    dialect's ``string_length``): every string a program is given is held to it."""
+    if len(text) > longest:
         raise BasicError("String too long", STRING_TOO_LONG)
     return text
+
+
+def concatenation(longest: int):
+    """``+`` of two strings where a string holds at most ``longest`` characters."""
+    def concat(a: str, b: str) -> str:
+        text = a + b
+        if len(text) > longest:
+            raise BasicError("String too long", STRING_TOO_LONG)
+        return text
+    return concat
 
 
 def left(s: str, n: float) -> str:
