@@ -18,7 +18,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 NAMES = ["A.TXT", "B", "c.dat", "sub/x", "../up.txt", "../outside/victim.txt", "/tmp/yaseer-fuzz-abs",
-         "link/victim.txt", "loop", "..", ".", "", "a:b", "link", "inside_link"]
+         "link/victim.txt", "loop", "..", ".", "", "a:b", "link", "inside_link", "fifo", "sub/../A.TXT",
+         "L" * 255, "sub/" + "M" * 250, "\xe9" * 200, "sub", "hard", "CAS0:A.TXT", "LIB0:victim"]
+# (a FIFO, the longest plain part, 400 UTF-8 bytes, a hard link to the file outside, devices)
 MODES = ['"O"', '"I"', '"A"', '"R"', '"X"']
 VALUES = ['1', '-2.5', '"s"', '"a,b"', 'X', 'A$', '1E300']
 
@@ -45,6 +47,10 @@ def statement(data) -> str:
         # programs read from files (the chained program is this one again, or a file there)
         f"CHAIN {name}", f"CHAIN MERGE {name}, 999, ALL", f"MERGE {name}", "COMMON A$, X",
         f"SAVE {name}", f"SAVE {name}, A", f"LOAD {name}", "LIST", "DELETE 10-20", "NEW",
+        # the Casio's data bank and program files (gw: a Syntax error)
+        f"NEW#: WRITE# {value}: SAVE# {name}", f"LOAD# {name}", f"GOSUB {name}",
+        # strings at the limit
+        'A$ = STRING$(255, "Q")', f"A$ = A$ + {value}",
     ]
     return data.draw(st.sampled_from(choices))
 
@@ -61,6 +67,8 @@ def arena(tmp_path_factory):
     (box / "link").symlink_to(outside)
     (box / "inside_link").symlink_to(box / "A.TXT")
     (box / "loop").symlink_to(box / "loop")
+    os.mkfifo(box / "fifo")  # refused at once, never waited on
+    os.link(outside / "victim.txt", box / "hard")  # its bytes are outside's too: never written
     return root, box, outside
 
 

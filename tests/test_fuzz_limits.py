@@ -24,6 +24,11 @@ from test_fuzz_listings import run_mutant
         ("10 PRINT 1\n20 X = " + "-" * 5000 + "1\n", "Out of memory in 20"),
         ("10 PRINT 1\n20 X = " + "NOT " * 3000 + "1\n", "Out of memory in 20"),
         ("10 X = 1E308 * 10\n", "Overflow in 10"),
+        ('10 A$ = "' + "x" * 256 + '"\n', "String too long in 10"),  # a literal one over 255
+        ("10 READ A$\n20 DATA " + "y" * 256 + "\n", "String too long in 20"),  # DATA: named at its line
+        ('10 LINE INPUT A$\n', "Input past end in 10"),  # (nothing typed)
+        ('10 OPEN "I", 1, STRING$(200, 233)\n', "Bad file name in 10"),  # a name part of 400 UTF-8 bytes
+        ('10 KILL STRING$(130, 233)\n', "Bad file name in 10"),  # 260 bytes
     ],
 )
 def test_limit_is_a_basic_error_naming_the_line(source, expected):
@@ -58,3 +63,38 @@ def test_a_long_empty_loop_runs_until_interrupted_not_out_of_memory(limit):
     (seconds on a quiet machine); 1E12 cannot."""
     outcome = run_mutant(f"10 FOR I = 1 TO {limit}: NEXT\n", with_prog5=False)
     assert outcome in (("Break in 10", "ok") if limit == "1E9" else ("Break in 10",))
+
+
+def test_a_listing_over_the_bound_is_out_of_memory_before_parsing():
+    """A 5 MB listing once took 142 s and 2.6 GB to compile; over 256 KiB nothing is parsed.  A
+    listing just under the bound runs."""
+    import yaseer
+    from yaseer.basic.machine.machine import MAX_LISTING_CHARACTERS
+
+    line = "10 PRINT 1\n"
+    over = line * (MAX_LISTING_CHARACTERS // len(line) + 1)
+    assert yaseer.run(over).error == "Out of memory"
+    under = "".join(f"{n} X = {n}\n" for n in range(1, 16000))
+    assert len(under) < MAX_LISTING_CHARACTERS and yaseer.run(under + "16000 PRINT X\n").text == " 15999 \n"
+
+
+def test_code_that_would_take_python_too_long_to_compile_is_out_of_memory():
+    """gw single-precision arithmetic is rounded inline: a line of 40 operations is 20 kB of
+    Python (about 2 MB of the compiler's memory); 200 of them are refused before Python compiles."""
+    import yaseer
+
+    line = "X = " + " + ".join(f"A{j} * B{j}" for j in range(20))
+    listing = "".join(f"{10 * n} {line}\n" for n in range(1, 201))
+    assert yaseer.run(listing, dialect="gw").error == "Out of memory"
+    assert yaseer.run(listing, dialect="casio").error is None  # the same text in casio is plain Python
+
+
+@pytest.mark.parametrize("statement", ['CHAIN "BIG.BAS"', 'RUN "BIG.BAS"', 'LOAD "BIG.BAS", R'])
+def test_a_chained_listing_over_the_bound_is_out_of_memory(tmp_path, statement):
+    import yaseer
+    from yaseer.basic.machine.machine import MAX_LISTING_CHARACTERS
+
+    (tmp_path / "BIG.BAS").write_text("".join(f"{n} X = {n}\n" for n in range(1, 40000)))
+    assert (tmp_path / "BIG.BAS").stat().st_size > MAX_LISTING_CHARACTERS
+    result = yaseer.run(f"10 {statement}\n", dialect="gw", files=tmp_path)
+    assert result.error is not None and result.error.startswith("Out of memory"), result.error

@@ -157,6 +157,17 @@ class _AreaRuntime:
 
 FIRST_FILE_AREA = 1000  # the program areas of program files (GOSUB "file:label") are numbered from here
 
+# Compiling one program area is held to about 256 MB (docs/interpreter.md, Resource limits), by
+# two bounds, each an Out of memory before the costly step.  Measured (ru_maxrss growth):
+# parsing costs up to about 530 bytes of memory per listing character (lines of 40 operators;
+# the Al-Yaseer listings about 40), so MAX_LISTING_CHARACTERS (4 times the 64 KB a GW-BASIC or
+# FX-880P program can fill) keeps it under about 140 MB; Python's compiler takes about 100
+# bytes per character of the Python code yaseer writes, which can be 140 times the BASIC text
+# (gw single-precision arithmetic, rounded inline), so MAX_PYTHON_CHARACTERS keeps that step
+# under about 100 MB.
+MAX_LISTING_CHARACTERS = 256 * 1024
+MAX_PYTHON_CHARACTERS = 1024 * 1024
+
 
 class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Console, Chaining, CasioWords):
     """A pocket-computer BASIC machine (see the module docstring)."""
@@ -235,7 +246,10 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
 
         ``entered``: the lines are entered now, so the messages GW-BASIC prints when
         it reads a line are shown (``Overflow`` of a literal: :func:`scanner.entry_messages`);
-        False for lines entered before (the session hands its typed program over at RUN)."""
+        False for lines entered before (the session hands its typed program over at RUN).
+        A listing over :data:`MAX_LISTING_CHARACTERS` is Out of memory before it is parsed."""
+        if len(text) > MAX_LISTING_CHARACTERS:
+            raise BasicError("Out of memory", OUT_OF_MEMORY)
         program: dict[int, str] = {}
         text = self.dialect.charset.codes(text)  # symbols typed or read (a UTF-8 file's) as the machine's codes
         stopped = None
@@ -312,10 +326,14 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         else:
             from yaseer.basic.compile.compiler import compile_area
 
+            if sum(map(len, program.values())) > MAX_LISTING_CHARACTERS:  # also CHAIN's, MERGE's, a file's
+                raise BasicError("Out of memory", OUT_OF_MEMORY)
             lines = [_parse_cached(number, text, self.dialect) for number, text in sorted(program.items())]
             compiled = compile_area(lines, area if isinstance(area, int) else 0, direct=direct,
                                     entry_lines=entry_lines, trace=self.tracing, dynamic_loops=dynamic_loops,
                                     dialect=self.dialect, def_types=self.def_types if direct else None)
+            if sum(len(text) for _, text in compiled.pieces) > MAX_PYTHON_CHARACTERS:
+                raise BasicError("Out of memory", OUT_OF_MEMORY)
             codes = [None] * len(compiled.pieces)
         runtime_state = _AreaRuntime(self, area, compiled)
         namespace = self._namespace(area, runtime_state)
