@@ -80,11 +80,11 @@ def test_a_listing_over_the_bound_is_out_of_memory_before_parsing():
 
 def test_code_that_would_take_python_too_long_to_compile_is_out_of_memory():
     """gw single-precision arithmetic is rounded inline: a line of 40 operations is 20 kB of
-    Python (about 2 MB of the compiler's memory); 200 of them are refused before Python compiles."""
+    Python (about 2 MB of the compiler's memory); 250 of them are refused before Python compiles."""
     import yaseer
 
     line = "X = " + " + ".join(f"A{j} * B{j}" for j in range(20))
-    listing = "".join(f"{10 * n} {line}\n" for n in range(1, 201))
+    listing = "".join(f"{10 * n} {line}\n" for n in range(1, 251))
     assert yaseer.run(listing, dialect="gw").error == "Out of memory"
     assert yaseer.run(listing, dialect="casio").error is None  # the same text in casio is plain Python
 

@@ -157,16 +157,16 @@ class _AreaRuntime:
 
 FIRST_FILE_AREA = 1000  # the program areas of program files (GOSUB "file:label") are numbered from here
 
-# Compiling one program area is held to about 256 MB (docs/interpreter.md, Resource limits), by
+# Compiling one program area is held to about 550 MB (docs/interpreter.md, Resource limits), by
 # two bounds, each an Out of memory before the costly step.  Measured (ru_maxrss growth):
 # parsing costs up to about 530 bytes of memory per listing character (lines of 40 operators;
 # the Al-Yaseer listings about 40), so MAX_LISTING_CHARACTERS (4 times the 64 KB a GW-BASIC or
 # FX-880P program can fill) keeps it under about 140 MB; Python's compiler takes about 100
 # bytes per character of the Python code yaseer writes, which can be 140 times the BASIC text
-# (gw single-precision arithmetic, rounded inline), so MAX_PYTHON_CHARACTERS keeps that step
-# under about 100 MB.
+# (gw single-precision arithmetic, rounded inline: 400 lines of 8 results each, 91 kB, are 2.75 MB
+# of Python and 274 MB), so MAX_PYTHON_CHARACTERS keeps that step under about 420 MB.
 MAX_LISTING_CHARACTERS = 256 * 1024
-MAX_PYTHON_CHARACTERS = 1024 * 1024
+MAX_PYTHON_CHARACTERS = 4 * 1024 * 1024
 
 
 class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Console, Chaining, CasioWords):
