@@ -307,3 +307,19 @@ def test_the_directory_is_made_private(tmp_path, monkeypatch):
     monkeypatch.setenv("YASEER_CACHE_DIR", str(tmp_path / "new" / "cache"))
     assert run() == EXPECTED
     assert (tmp_path / "new" / "cache").stat().st_mode & 0o777 == 0o700
+
+
+def test_an_entry_in_a_directory_others_can_write_is_never_read(cache):
+    """The sealed reader itself refuses a shared directory (not only the callers that ask first):
+    a valid entry there is not handed to marshal."""
+    from yaseer import sealed_cache
+
+    assert run() == EXPECTED
+    (entry,) = entries(cache)
+    key = entry.stem
+    assert sealed_cache.read_sealed(entry.name, key, program_cache.MAGIC) is not None
+    cache.chmod(0o777)
+    try:
+        assert sealed_cache.read_sealed(entry.name, key, program_cache.MAGIC) is None
+    finally:
+        cache.chmod(0o700)

@@ -78,9 +78,13 @@ def seal(entry: str, data: bytes) -> bytes:
 def read_sealed(name: str, entry: str, magic: bytes) -> bytes | None:
     """The bytes stored in the file ``name`` of the cache under the key ``entry`` behind ``magic``,
     or None: no such file, another kind of entry, or bytes that do not hash to the hash stored
-    with them (then nothing of them must be read)."""
+    with them (then nothing of them must be read), or a directory others could write (checked
+    here too, not only by the callers: marshal must never read what another user planted)."""
+    directory = private_dir()
+    if directory is None:
+        return None
     try:
-        with open(os.path.join(cache_dir(), name), "rb") as stored:
+        with open(os.path.join(directory, name), "rb") as stored:
             data = stored.read()
     except (OSError, TypeError):
         return None
