@@ -88,6 +88,9 @@ AGREED = {
     "dima(20),b$(3)": '10 DIMA(20),B$(3): PRINT "OK"\n',
     "dima$(5)": '10 DIMA$(5): PRINT "OK"\n',
     "dima$ trapped": '10 ON ERROR GOTO 30\n20 DIMB$(11): PRINT "NO": END\n30 PRINT ERR; ERL: RESUME NEXT\n',
+    # a PRINT USING field that does not fit the row starts the next one
+    "using field past the row": ('10 PRINT USING "##.##"; 1; 2; 3: PRINT TAB(75); : PRINT USING "####.##"; 1.5\n'
+                                 '20 PRINT TAB(78);: PRINT USING "&"; "HELLO"\n30 PRINT TAB(74);: PRINT USING "AB#.#"; 1\n'),
     # control codes on the screen: BEL moves nothing, CHR$(0) one column, TAB to the next 8
     "control codes move the column": ('5 CLS\n10 PRINT "AB"; CHR$(7); CHR$(0); "C";: X = POS(0): PRINT: PRINT X\n'
                                       '20 PRINT "A"; CHR$(9); "B";: Y = POS(0): PRINT: PRINT Y\n'

@@ -406,8 +406,9 @@ def _format_value(value: Value, field: StringField | NumericField) -> str:
     return format_number(float(value), field)
 
 
-def using(fmt: str, values: Sequence[float | str]) -> str:
-    """PRINT USING fmt; values — the text printed (no newline).
+def using(fmt: str, values: Sequence[float | str], pieces: bool = False):
+    """PRINT USING fmt; values — the text printed (no newline); with ``pieces`` the list of
+    its parts as (text, is a field) pairs (a field that does not fit the row moves to the next).
 
     The format is reused from its start while values remain; after the last
     value, literal text is copied up to the next field or the end of the format.
@@ -421,6 +422,7 @@ def using(fmt: str, values: Sequence[float | str]) -> str:
         error.printed = "".join(token.text for token in tokens)
         raise error
     out: list[str] = []
+    fields: list[int] = []  # where in ``out`` the fields are
     next_value = 0
     position = 0
     while True:
@@ -435,10 +437,14 @@ def using(fmt: str, values: Sequence[float | str]) -> str:
             except BasicError as error:
                 error.printed = "".join(out)
                 raise
+            fields.append(len(out) - 1)
             next_value += 1
         position += 1
         if position == len(tokens):
             if next_value == len(values):
                 break
             position = 0
+    if pieces:
+        marked = set(fields)
+        return [(text, k in marked) for k, text in enumerate(out)]
     return "".join(out)

@@ -307,8 +307,8 @@ class ExpressionCompiler:
                 code, kind = self.typed(arg, scope)
             codes.append(self.numbers.printable(code, kind) if node.name == "STR$" else code)
             kinds.append(kind)
-        if own and node.name in self.words.reads_variables:
-            scope.uses_fn = True  # VALF reads the variables: the block's values are stored first
+        if (own and node.name in self.words.reads_variables) or node.name == "FRE":
+            scope.uses_fn = True  # VALF and FRE read the variables: the block's values are stored first
         if own and node.name in self.words.sets_x_y:
             return self.pair_to_x_y(f"{helper}({', '.join(codes)})", scope), "n"
         return self.numbers.call(node.name, helper, codes, kinds, result)

@@ -88,9 +88,10 @@ FIELDS = (
     "hex_literals",  # bool: False
     "screen",  # ScreenRules: CASIO_SCREEN
     "string_length",  # int: 255
+    "free_memory",  # int | None: None
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
-            True, True, False, False, None, False, None, False, CASIO_SCREEN, 255)
+            True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -200,7 +201,10 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         LCD, gw's 80 x 25 text screen; None: no screen model (PRINT is a stream of text).
         ``controls``: ``(code, action)`` pairs, what each control code does on
         that display.  ``screen``: the display's rules (yaseer/basic/dialects/screens.py:
-        when the cursor wraps, where LOCATE counts from, the function-key line).  ``charset``: the machine's character codes
+        when the cursor wraps, where LOCATE counts from, the function-key line).
+        ``free_memory``: the bytes FRE reports with no program (GW-BASIC's 60300, less
+        what the program and its variables take in GW's layout: machine/memory_model.py);
+        None: FRE is what is left of yaseer's array budget.  ``charset``: the machine's character codes
         (yaseer/basic/charset.py): what CHR$ and ASC answer, how program and data
         files' bytes read.  ``enter_key``: the character INPUT$ and INKEY$ read for
         a line break of the key stream (casio: EXE, ``CHR$(13)``).
@@ -276,6 +280,7 @@ GW = Dialect(
     printer_width=80, joins_unnumbered_lines=False, names_missing_line=False, spaced_relations=True,
     bracket_subscripts=True, display=(80, 25, 25), controls=tuple(sorted(GW_CONTROLS.items())), screen=GW_SCREEN,
     string_length=255,  # a string descriptor holds its length in one byte
+    free_memory=60300,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

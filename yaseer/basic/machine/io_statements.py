@@ -184,7 +184,15 @@ class InputOutput:
             if newline:
                 self._csv_row(stream)
             return
-        stream.write(_formatted(fmt, values, stream))
+        text = _formatted(fmt, values, stream)
+        if stream.width is None or stream.column + len(text) <= stream.width:
+            stream.write(text)
+        else:  # a field that does not fit the row starts the next one, as a PRINT item does
+            for text, field in _formatted(fmt, values, stream, pieces=True):
+                if field:
+                    stream.item(text)
+                else:
+                    stream.write(text)
         if newline:
             stream.end_line()
 
@@ -355,10 +363,10 @@ def _same(value):
     return value
 
 
-def _formatted(fmt: str, values: list, stream) -> str:
+def _formatted(fmt: str, values: list, stream, pieces: bool = False):
     """``formatting.using``; on an error the text before it is written to ``stream`` first."""
     try:
-        return formatting.using(fmt, values)
+        return formatting.using(fmt, values, pieces)
     except BasicError as error:
         stream.write(getattr(error, "printed", ""))
         raise

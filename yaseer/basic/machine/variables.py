@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import math
 
-from yaseer.basic.machine import runtime
+from yaseer.basic.machine import memory_model, runtime
 from yaseer.basic.errors import BasicError, DUPLICATE_DEFINITION, ILLEGAL_FUNCTION_CALL, OUT_OF_MEMORY, SUBSCRIPT_OUT_OF_RANGE
 from yaseer.basic.compile.number_models import initial_value
 
@@ -120,8 +120,13 @@ class Variables:
         return runtime.subscript if base == 0 else runtime.subscript_from_one
 
     def free_memory(self, _any) -> float:
-        """FRE(x): bytes left in the array budget (8 bytes a number, 264 a string element: the
-        most it can hold), whatever x is."""
+        """FRE(x): in GW-BASIC the bytes its segment has left (machine/memory_model.py);
+        otherwise those left in the array budget (8 bytes a number, 264 a string element:
+        the most it can hold), whatever x is."""
+        total = self.dialect.free_memory
+        if total is not None:
+            return float(memory_model.free_bytes(total, self.programs.get(0, {}), self.scalars, self.arrays,
+                                                 self.array_dims, self.fns))
         return float(8 * (MAX_TOTAL_ELEMENTS - self.array_elements))
 
     def clear(self) -> None:
