@@ -38,6 +38,8 @@ def statement(data) -> str:
         f"WRITE #{number}, {value}, {value}", f"INPUT #{number}, X, A$", f"LINE INPUT #{number}, A$",
         f"A$ = INPUT$(2, #{number})", f"X = EOF({number}) + LOF({number}) + LOC({number})",
         f"CLOSE {n}", "CLOSE", f"KILL {name}", f"NAME {name} AS {other}",
+        f"WIDTH #{number}, {data.draw(st.sampled_from(['1', '10', '0', '255', '256']))}",
+        f"PRINT #{number}, CHR$(13); CHR$(10); CHR$(28); STRING$(250, 65); TAB(5); 1",
         f"FILES {name}", "FILES",
         # random-access files
         f"OPEN {name} AS {n} LEN = {data.draw(st.sampled_from(['1', '16', '0', '40000']))}",

@@ -1,6 +1,7 @@
 """Fuzzing gw's text-screen and language statements: random programs of LOCATE, COLOR,
 CLS, KEY, SCREEN, VIEW PRINT, WIDTH, CSRLIN, POS, SCREEN(), INKEY$, PRINT of control
-codes (and the other statements of the issue's list) with arguments in and out of range,
+codes, FRE, RETURN's forms, DEF FN bodies, bad IF branches, MID$ onto itself, WHILE,
+RANDOMIZE, LPOS, PRINT USING with arguments in and out of range,
 left out or of the wrong type.  Each program ends normally or with a BASIC error line
 naming its line (never a Python exception), and writes nothing in its directory.
 
@@ -38,6 +39,11 @@ def statement(data) -> str:
         f"WIDTH {a}", f"WIDTH {a}, {b}", f"PRINT SCREEN({a}, {b}); SCREEN({a}, {b}, {c})",
         "PRINT CSRLIN; POS(0)", f"PRINT CHR$({code}); \"AB\"; CHR$({code});", f'PRINT STRING$(80, "*");',
         "K$ = INKEY$", f"X = {a}: PRINT X", "FOR I = 1 TO 30: PRINT I: NEXT",
+        # the language items: FRE, RETURN's forms, DEF FN bodies, IF branches, elements, USING, MID$
+        "X = FRE(0)", 'X = FRE("")', f"RETURN {a}", "GOSUB 1000", f"DEF FNA(X) = X + {a}", "DEF FNB(X) = X +",
+        "PRINT FNA(1); FNB(2)", f"IF {a} THEN EXIT FOR ELSE )", f"DIMA$({a})", f'PRINT USING "##.#"; {a}',
+        f'A$ = "ABCDEFGH": MID$(A$, {a}) = A$', "WHILE I < 2: I = I + 1: WEND", f"RANDOMIZE {a}", f"IF {a}, THEN 1000",
+        f"PRINT LPOS({a}); CHR$({a}); LEFT$(\"AB\", {a})", "PRINT -NOT 1",
     ]
     return data.draw(st.sampled_from(choices))
 
@@ -51,7 +57,7 @@ def example_count() -> int:
 @given(data=st.data())
 def test_screen_statements_end_normally_or_with_a_basic_error_line(data, tmp_path_factory):
     lines = [statement(data) for _ in range(data.draw(st.integers(1, 10)))]
-    source = "".join(f"{10 * (k + 1)} {line}\n" for k, line in enumerate(lines))
+    source = "".join(f"{10 * (k + 1)} {line}\n" for k, line in enumerate(lines)) + "999 END\n1000 RETURN\n"
     workdir = tmp_path_factory.mktemp("fuzzgw")
     before = Path.cwd()
     os.chdir(workdir)
