@@ -73,9 +73,20 @@ def test_rem_and_apostrophe_swallow_the_rest():
     assert kinds("A=1 ' note: x") == [("NAME", "A"), ("EQ", "="), ("NUMBER", 1.0)]
 
 
-def test_data_text_is_raw_up_to_colon():
-    assert kinds('DATA 1, "a:b", x : PRINT') == [("DATA_TEXT", ' 1, "a:b", x '), ("_COLON", ":"),
-                                                 ("PRINT", "PRINT")]
+def test_data_text_is_raw_up_to_colon_in_gw():
+    assert kinds('DATA 1, "a:b", x : PRINT', GW) == [("DATA_TEXT", ' 1, "a:b", x '), ("_COLON", ":"),
+                                                     ("PRINT", "PRINT")]
+
+
+def test_casio_data_runs_to_the_end_of_its_line():
+    # the FX-850P's own library (LIB5760) reads the items "a:edge", "r:inside" of one DATA line
+    assert kinds('DATA a:edge,r:inside') == [("DATA_TEXT", " a:edge,r:inside")]
+
+
+def test_casio_closes_the_parentheses_a_statement_leaves_open():
+    # LIB5760 (the machine's Regular Polyhedron program): a(0)=SQR(ABS(a(3)/b):GOTO200
+    assert kinds("A=SQR(ABS(B:GOTO 9") == kinds("A=SQR(ABS(B)):GOTO 9")
+    assert kinds("PRINT (1+(2") == kinds("PRINT (1+(2))")
 
 
 def test_question_mark_is_print():

@@ -5,6 +5,8 @@ INPUT @n;, INPUT$(1,@)), so CI covers what the library needs without the library
 
 from __future__ import annotations
 
+import re
+
 import yaseer
 from yaseer.basic.dialects.charset import CASIO as CHARACTERS
 
@@ -190,3 +192,15 @@ def test_defchr_defines_the_dots_of_a_user_character():
     assert yaseer.run('10 DEFCHR$(252)="82FE"').error == "Illegal function call in 10"
     # gw reads DEFCHR$ as an array name, as it always did
     assert yaseer.run('10 DEFCHR$(255)="82FE8280C0"', dialect="gw").error == "Subscript out of range in 10"
+
+
+def test_defchr_characters_are_drawn_on_the_html_lcd():
+    # the library's subscript one: five columns of dots, the high bit the top dot
+    from yaseer.lcd import glyph_svg, lcd_html
+
+    result = yaseer.run('10 DEFCHR$(252)="123E020000": CLS: PRINT "H";CHR$(252)', input="")
+    assert result.glyphs == [{252: "123E020000"}]
+    html = lcd_html(result.screens, result.glyphs)
+    assert html.count("<svg") == 1 and "H<svg" in html
+    dots = {(int(x), int(y)) for x, y in re.findall(r'x="(\d)" y="(\d)"', glyph_svg("123E020000"))}
+    assert dots == {(0, 3), (0, 6), (1, 2), (1, 3), (1, 4), (1, 5), (1, 6), (2, 6)}  # a small "1" on its foot

@@ -303,6 +303,40 @@ def test_asc_of_a_null_string_is_zero():  # ASC.md items 1-2
     assert run_values('10 PRINT ASC("ABC"); ASC("")\n') == [[65.0, 0.0]]
 
 
+def test_fre_counts_the_variable_area_as_part_6_does():  # FRE.md (0..3), CLEAR.md, part 6 counting
+    # part 6's worked example: DIM XYZ(3,3,5,2) takes (3+4)+(288x8)+4x2+1 = 2320 bytes;
+    # a string takes its length + 1 in the string area; FRE 2 is CLEAR.md's 8192 (FX-880P)
+    rows = run_values('10 A=FRE 0: DIM XYZ(3,3,5,2): B=FRE(0): S$="ABC": C=FRE 0\n'
+                      '20 PRINT FRE 2; A-B; B-C\n')
+    assert rows == [[8192.0, 2320.0, 3.0]]
+    assert error_of("10 PRINT FRE 4") == "Illegal function call in 10"  # 0 <= argument <= 3
+    program_area = run_values("10 PRINT FRE 3 - FRE 1\n")[0][0]
+    assert program_area == (2 + 1 + len("PRINT FRE 3 - FRE 1") + 1) + 1  # "Calculating Program Length"
+
+
+def test_verify_reads_a_saved_file_through(tmp_path):  # VERIFY.md: VERIFY "CAS0:TEST"
+    program = '10 OPEN "CAS0:TEST" FOR OUTPUT AS #1: PRINT #1, "ABC": CLOSE\n20 VERIFY "CAS0:TEST": PRINT "OK"\n'
+    assert run_text(program, files=tmp_path) == "OK\n"
+    assert error_of('10 VERIFY "CAS0:NONE"', files=tmp_path) == "File not found in 10"
+
+
+def test_calc_dollar_holds_a_formula():  # the library's CALC$ (LIB1000: VALF(CALC$); LIB5950: CALC$=s$)
+    assert run_values('10 CALC$="2*X+1": X=4: PRINT VALF(CALC$); LEN(CALC$)\n') == [[9.0, 5.0]]
+
+
+@pytest.mark.parametrize("statement, message", [
+    ("CALCJMP", "CALCJMP: the CAL mode (the formula storage CALC$ holds) is not emulated"),
+    ("MODE 33(32,1024,223)", "MODE 33(...): a machine-code routine of the ROM is not emulated"),
+    ('OPEN "COM0:5,E,8,2" AS #1', "COM0: (the RS-232C port) is not emulated"),
+    ('PBLOAD "CAS0:P"', "PBLOAD/PBGET: reading PB-100 series tapes is not emulated"),
+    ("DEFM 5", "DEFM: the PB-100 series' memory declaration is not emulated"),
+])
+def test_what_yaseer_lacks_ends_the_run_with_one_line(statement, message):
+    # PBLOAD_PBGET.md, OPEN.md (COM0:), DEFM.md (an empty page); CALCJMP and MODE n(...) from the
+    # library: no ON ERROR handler can make them work, so none catches them
+    assert error_of(f"5 ON ERROR GOTO 20\n10 {statement}\n20 END") == f"{message} in 10"
+
+
 def test_if_then_else_chains():  # IF_THEN_ELSE.md: a statement after THEN, ELSE IF, nesting
     program = ('10 FOR A=1 TO 4\n20 IF A=1 THEN PRINT "ONE" ELSE IF A=2 THEN PRINT "TWO" ELSE IF A=3 THEN 40 '
                'ELSE PRINT "MANY"\n30 NEXT A: END\n40 PRINT "THREE": GOTO 30\n')

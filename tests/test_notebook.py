@@ -22,14 +22,19 @@ NOTEBOOK = ROOT / "notebooks" / "classroom.ipynb"
 GOLDEN = ROOT / "tests" / "golden"
 
 
+def execute_notebook(path: Path, timeout: int = 600):
+    """The notebook at ``path`` executed by a real kernel (in its own folder)."""
+    notebook = nbformat.read(path, as_version=4)
+    client = nbclient.NotebookClient(notebook, timeout=timeout, kernel_name="python3",
+                                     resources={"metadata": {"path": str(path.parent)}})
+    client.execute()
+    return notebook
+
+
 @pytest.fixture(scope="module")
 def executed():
     """The notebook executed by a real kernel."""
-    notebook = nbformat.read(NOTEBOOK, as_version=4)
-    client = nbclient.NotebookClient(notebook, timeout=600, kernel_name="python3",
-                                     resources={"metadata": {"path": str(NOTEBOOK.parent)}})
-    client.execute()
-    return notebook
+    return execute_notebook(NOTEBOOK)
 
 
 @pytest.fixture(scope="module")

@@ -93,7 +93,7 @@ class Result:
     def __init__(self, listing: str, name: str | None = None, text: str = "", error: str | None = None,
                  status: str = "end", line: int | None = None, exception: Exception | None = None,
                  frames: list | None = None, lines: list | None = None, _rows: object = None,
-                 screens: list | None = None) -> None:
+                 screens: list | None = None, glyphs: list | None = None) -> None:
         self.listing = listing
         self.name = name
         self.text = text
@@ -105,6 +105,8 @@ class Result:
         self.lines = lines if lines is not None else []  # values printed per line (yaseer.table)
         self._rows = _rows
         self.screens = screens if screens is not None else []  # the LCD's screens shown (console.py)
+        # for each screen, the DEFCHR$ characters then defined: code -> its dots (10 hex digits)
+        self.glyphs = glyphs if glyphs is not None else []
 
     def __repr__(self) -> str:
         return f"Result({', '.join(f'{name}={getattr(self, name)!r}' for name in self._SHOWN)})"
@@ -298,6 +300,7 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
                 stream.close_line()
     result.text = out.text
     result.screens = machine.screens
+    result.glyphs = machine.screen_glyphs
     if recorder is not None:
         result.frames = recorder.finish()
 

@@ -118,7 +118,7 @@ def show(result, plot: bool = False, animate: bool = False, fps: float = 6.0, si
     if result.screens:  # a program that drew: its LCD, each time it waited for a key and at its end
         from yaseer.lcd import lcd_html
 
-        display({"text/plain": "", "text/html": lcd_html(result.screens)}, raw=True)
+        display({"text/plain": "", "text/html": lcd_html(result.screens, result.glyphs)}, raw=True)
     if result.error is not None:
         _red_line(result.error)
     if plot:

@@ -42,7 +42,7 @@ def build_page(result, listing_path: Path | None = None, printed_program_5: bool
     if result.screens:  # a program that drew on the display: the LCD as it showed it
         from yaseer.lcd import lcd_html
 
-        parts.append(f'<h2>The LCD</h2>\n<div id="lcd">{lcd_html(result.screens)}</div>')
+        parts.append(f'<h2>The LCD</h2>\n<div id="lcd">{lcd_html(result.screens, result.glyphs)}</div>')
     if result.error is not None:
         parts.append(f'<p class="error" id="error">{html.escape(result.error)}</p>')
     parts += _tables(result)

@@ -77,6 +77,7 @@ class _NoWords:
 
     functions: dict = {}
     statements: dict = {}
+    routine_calls: dict = {}
     reads_variables = sets_x_y = empty_statements = frozenset()
     computed_restore = empty_on_targets = truncates = asks_each = False
 
@@ -567,11 +568,16 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
     def stmt_WordStatement(self, stmt, scope):
         """A statement of the dialect's own words: its helper called with its arguments,
         each of the kind the table gives ("n", "s"; "format": SET's letter and digit)."""
-        least, most, helper, kind = self.words.statements[stmt.word]
+        word = stmt.word
+        table = self.words.routine_calls if word.endswith("()") else self.words.statements
+        least, most, helper, kind = table[word.removesuffix("()")]
         if not least <= len(stmt.args) <= most:
             raise syntax_error()
         if kind == "format":
             args = [repr(part) for part in _set_format(stmt.args[0])]
+        elif kind == "any":
+            args = [self.string(arg, scope) if self.kind_of(arg) == "s" else self.numeric(arg, scope)
+                    for arg in stmt.args]
         elif kind == "s":
             args = [self.string(arg, scope) for arg in stmt.args]
         else:

@@ -28,6 +28,7 @@ FUNCTIONS = {
     "HYPACS": ("FUNC", ("n",), "n", "_acosh"),
     "HYPATN": ("FUNC", ("n",), "n", "_atanh"),
     "RAN#": ("FUNC", ("", "n"), "n", "_ran"),  # RAN_HASH.md
+    "FRE": ("FUNC", ("n",), "n", "_fre0"),  # FRE.md: FRE 0 .. FRE 3
     "DMS$": ("FUNC", ("n",), "s", "_dms"),  # DMS_STRING.md
     "VALF": ("FUNC", ("s",), "n", "_valf"),  # VALF.md
     "HEX$": ("FUNC", ("n",), "s", "_hex4"),  # HEX_STRING.md: four digits
@@ -63,9 +64,25 @@ STATEMENTS = {
     "MODE": (1, 1, "_M.mode", "n"),  # part 7 (MODE 7 / MODE 8: printer on, off); ANGLE.md (MODE 4 5 6)
     "VARLIST": (0, 0, "_M.variable_list", "n"),  # VARLIST.md
     "SET": (1, 1, "_M.set_format", "format"),  # SET.md: SET F n, SET E n, SET N
+    # CALCJMP: leaves BASIC for the CAL mode with the formula CALC$ holds (Becker's library,
+    # LIB5950-5980, after CALC$=formula; the manual's part 4, formula storage, is empty):
+    # yaseer has no CAL mode, so the run ends there with one line saying so
+    "CALCJMP": (0, 0, "_M.calc_jump", "n"),
+    "VERIFY": (1, 1, "_M.files.verify", "s"),  # VERIFY.md: the file of the program's directory read through
+    # PBLOAD_PBGET.md: PB-100 programs and data from cassette tape, converted; DEFM (its page
+    # is empty): the PB-100's memory declaration.  yaseer has no PB-100 tapes: the run ends
+    # there with one line saying so.
+    "PBLOAD": (0, 1, "_M.pb_tape", "s"),
+    "PBGET": (0, 1, "_M.pb_tape", "s"),
+    "DEFM": (1, 1, "_M.pb_memory", "n"),
 }
+# MODE n(arguments): the library's calls of machine-code routines in the ROM (LIB0900's
+# MODE 30-35, LIB1000's MODE 33(32, 1024, 223)): not described by the manual and not
+# emulated; the run ends there with one line naming the routine.  word -> as STATEMENTS
+# ("any": each argument of its own kind), the routine's number first.
+ROUTINE_CALLS = {"MODE": (1, 9, "_M.rom_routine", "any")}
 # The words that read the variables (the block's values are stored before they run).
-READS_VARIABLES = frozenset({"VARLIST", "VALF"})
+READS_VARIABLES = frozenset({"VARLIST", "VALF", "FRE"})
 
 # Statements the library writes with nothing after them: a bare DIM declares nothing.
 EMPTY_STATEMENTS = frozenset({"DIM"})
@@ -88,6 +105,15 @@ TRUNCATES = True
 # INPUT asks for each variable on its own, each with the message written before it or a
 # "?" (INPUT.md, items 2-4: EXE after each answer; its example INPUT "YEAR=",Y,"MONTH=",M).
 ASKS_EACH = True
+# A statement's open parentheses close where it ends (``:`` or the line's end), and DATA
+# runs to the end of its line (its items may hold ":").  The manual is silent on both;
+# the machine's own scientific library needs them: LIB5760 (the built-in Regular
+# Polyhedron program) writes ``a(0)=SQR(ABS(a(3)/b):GOTO200`` and ``DATAa:edge,r:inside``.
+CLOSES_PARENTHESES = True
+DATA_TO_LINE_END = True
+# Devices a file name may start with that yaseer does not have: OPEN of one ends the run
+# with one line naming it (OPEN.md lists COM0: for the RS-232C interface; LIB0400 tests it).
+ABSENT_DEVICES = {"COM0:": "the RS-232C port"}
 # The words the scanner reads as keywords in casio only (besides the dialect's own_words).
 KEYWORDS = tuple(FUNCTIONS) + tuple(STATEMENTS) + tuple(SPELLINGS)
 
@@ -131,6 +157,8 @@ class Words:
     deg_function = DEG_FUNCTION
     spellings = SPELLINGS
     statements = STATEMENTS
+    routine_calls = ROUTINE_CALLS
+    absent_devices = ABSENT_DEVICES
     reads_variables = READS_VARIABLES
     empty_statements = EMPTY_STATEMENTS
     computed_restore = COMPUTED_RESTORE
@@ -142,6 +170,8 @@ class Words:
     err_values = ERR_VALUES
     truncates = TRUNCATES
     asks_each = ASKS_EACH
+    closes_parentheses = CLOSES_PARENTHESES
+    data_to_line_end = DATA_TO_LINE_END
 
     def __repr__(self) -> str:
         return "casio.Words()"

@@ -17,13 +17,19 @@ from yaseer.basic.arithmetic import formatting
 from yaseer.basic.arithmetic import casio_math
 from yaseer.basic.machine import runtime
 from yaseer.basic.errors import (
-    BasicError, OVERFLOW, PASSWORD_PROTECTED, SYNTAX_ERROR, TYPE_MISMATCH,
+    BasicError, ILLEGAL_FUNCTION_CALL, OVERFLOW, PASSWORD_PROTECTED, SYNTAX_ERROR, TYPE_MISMATCH,
 )
 
 ANGLE_UNITS = ("DEG", "RAD", "GRA")  # ANGLE 0, 1, 2 (ANGLE.md)
 MODE_ANGLES = {4: "DEG", 5: "RAD", 6: "GRA"}  # the MODE key's angle units (ANGLE.md, item 4)
 PRINTER_ON, PRINTER_OFF = 7, 8  # MODE 7 / MODE 8 (part 7, "PRT ON mode")
 VARLIST_COLUMN = 8  # VARLIST.md shows the names in columns of 8 on the 32-column display
+# FRE's memory (bytes): the FX-880P's standard RAM with its 3 KB system area
+# (specifications.md) and the variable area ALL RESET sets (CLEAR.md's table: 8192 on the
+# FX-880P; a program cannot change it, CLEAR.md item 3).
+RAM_BYTES = 32 * 1024
+SYSTEM_BYTES = 3 * 1024
+VARIABLE_AREA = 8192
 
 
 def _whole_in(x: float, low: int, high: int) -> int:
@@ -32,6 +38,14 @@ def _whole_in(x: float, low: int, high: int) -> int:
     if not low <= n <= high:
         raise casio_math.illegal()
     return n
+
+
+def not_emulated(what: str) -> BasicError:
+    """The run ends at a part of the machine yaseer does not have: one line naming it (not an
+    error ON ERROR could hide, since no handler can make the missing part work)."""
+    err = BasicError(f"{what} is not emulated", ILLEGAL_FUNCTION_CALL)
+    err.trappable = False
+    return err
 
 
 def _operand16(x: float) -> float:
@@ -120,6 +134,22 @@ class CasioWords:
         else:
             raise casio_math.illegal()
 
+    def calc_jump(self) -> None:
+        """CALCJMP: the CAL mode with the formula of CALC$ (not emulated: see not_emulated)."""
+        raise not_emulated("CALCJMP: the CAL mode (the formula storage CALC$ holds)")
+
+    def pb_tape(self, name: str = "") -> None:
+        """PBLOAD, PBGET: a PB-100 series tape (not emulated: see not_emulated)."""
+        raise not_emulated("PBLOAD/PBGET: reading PB-100 series tapes")
+
+    def pb_memory(self, n: float) -> None:
+        """DEFM n: the PB-100 series' memory declaration (not emulated: see not_emulated)."""
+        raise not_emulated("DEFM: the PB-100 series' memory declaration")
+
+    def rom_routine(self, number: float, *args) -> None:
+        """MODE n(...): a machine-code routine of the ROM (not emulated: see not_emulated)."""
+        raise not_emulated(f"MODE {int(number)}(...): a machine-code routine of the ROM")
+
     def variable_list(self) -> None:
         """VARLIST: the names of the variables (as they were written, in the order of their
         characters) and of the arrays (with ``()``), in columns of 8, four to a line of the
@@ -145,6 +175,42 @@ class CasioWords:
             self._number_text = functools.partial(casio_math.formatted_number, style=style, digits=digits)
 
     # -- functions that need the machine
+    def free_area(self, n: float) -> float:
+        """FRE n (FRE.md; n truncated, 0..3): 0 the unused bytes of the variable area, 1 the
+        unused bytes of the program and DATA BANK area, 2 the whole variable area; 3 (in the
+        page's range, not explained there) the whole program and DATA BANK area.  Bytes are
+        counted as part 6 counts them ("Counting Bytes used by Variables", "Calculating
+        Program Length": keywords at their spelled length, where the machine stores 2)."""
+        k = _whole_in(n, 0, 3)
+        if k == 0:
+            return float(max(VARIABLE_AREA - self.variable_bytes(), 0))
+        if k == 2:
+            return float(VARIABLE_AREA)
+        area = RAM_BYTES - SYSTEM_BYTES - VARIABLE_AREA
+        if k == 3:
+            return float(area)
+        bank = self.__dict__.get("_data_bank")
+        used = sum(2 + 1 + len(text) + 1 for lines in self.programs.values() for text in lines.values())
+        used += len(self.programs) + (sum(len(r) + 1 for r in bank.records) if bank else 0)
+        return float(max(area - used, 0))
+
+    def variable_bytes(self) -> int:
+        """The bytes the variables take in the variable area (part 6: a number name + 12, a
+        string name + 4 and its length + 1; an array name + 4, 8 a number or 1 a string (and
+        its length) an element, 2 a dimension, and 1 more for numbers)."""
+        used = 0
+        for name, value in self.scalars.items():
+            used += len(name) + (4 + len(value) + 1 if name.endswith("$") else 12)
+        for name, dims in self.array_dims.items():
+            elements = 1
+            for d in dims:
+                elements *= d + 1
+            if name.endswith("$"):
+                used += len(name) + 4 + elements + 2 * len(dims) + sum(len(t) for t in _flat(self.arrays[name]))
+            else:
+                used += len(name) + 4 + 8 * elements + 2 * len(dims) + 1
+        return used
+
     def ran(self, x: float | None = None) -> float:
         """RAN#(x) (RAN_HASH.md): x > 0 the next number of the table RUN restarts (the same
         series at every run), 0 the last number again, x < 0 or no argument a number from
@@ -168,6 +234,15 @@ class CasioWords:
         code = _valf_code(text, self.dialect)
         namespace = self.namespaces.get(0) or next(iter(self.namespaces.values()))
         return eval(code, namespace)  # noqa: S307 - code the compiler generated from BASIC
+
+
+def _flat(array):
+    """The elements of a (nested) array."""
+    for item in array:
+        if isinstance(item, list):
+            yield from _flat(item)
+        else:
+            yield item
 
 
 @functools.lru_cache(maxsize=256)

@@ -176,6 +176,7 @@ class Console:
     def _init_console(self, screen) -> OutputStream:
         """The screen stream for output ``screen``; sets up the display, memory and keys."""
         self.screens: list[str] = []  # the screens shown so far (see module docstring)
+        self.screen_glyphs: list[dict] = []  # for each screen, the DEFCHR$ characters defined then
         self.memory: dict[int, int] = {}  # address -> the byte POKE left there
         self.segment = 0  # DEFSEG's segment: 0 at power-on
         self.last_input_key = 13
@@ -375,6 +376,7 @@ class Console:
             return
         display.changed = False
         self.screens.append(shown)
+        self.screen_glyphs.append(dict(self.user_characters))
         stream = self.screen.stream
         stream.write(boxed(display.shown_lines(), display.columns) if self.boxed_screens else text)
         stream.flush()
@@ -392,7 +394,9 @@ class Console:
     def define_character(self, code, pattern: str) -> None:
         """DEFCHR$(code) = pattern: the dots of user-defined character ``code`` (&HFC-&HFF, the
         character code table's user-defined ones): 10 hexadecimal digits, five columns of 8
-        dots.  Kept (``user_characters``); the LCD's text still shows the table's symbol."""
+        dots, the first digit pair the left column, its high bit the top dot.  Kept
+        (``user_characters``) with each screen shown (``screen_glyphs``), which the HTML
+        LCD (yaseer/lcd.py) draws; the text LCD still shows the table's symbol."""
         k = runtime.cint(runtime.fix(code))
         digits = pattern.strip()
         if not 252 <= k <= 255 or len(digits) != 10 or any(ch not in "0123456789ABCDEFabcdef" for ch in digits):

@@ -23,7 +23,7 @@ from __future__ import annotations
 import os
 
 from yaseer.basic.errors import (
-    BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
+    BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, DEVICE_IO_ERROR, BasicError, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
     FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, error_for,
 )
 from yaseer.basic.machine import random_files
@@ -207,10 +207,11 @@ def file_byte(n) -> int:
 class FileTable:
     """The open files of a machine, by file number, all inside one :class:`Sandbox`."""
 
-    def __init__(self, sandbox: Sandbox | None = None, devices: tuple = ()):
+    def __init__(self, sandbox: Sandbox | None = None, devices: tuple = (), absent: dict | None = None):
         self.sandbox = sandbox or Sandbox()
         self.open_files: dict[int, OpenFile] = {}
         self.devices = devices  # device names that mean the sandbox ("CAS0:" on the Casio)
+        self.absent = absent or {}  # device name -> what it is, for devices yaseer does not have
 
     @staticmethod
     def number(n) -> int:
@@ -230,6 +231,11 @@ class FileTable:
         k = self.number(n)
         if k in self.open_files:
             raise error_for(FILE_ALREADY_OPEN)
+        for device, what in self.absent.items():
+            if name.upper().startswith(device):  # one line naming it; no handler can make it work
+                err = BasicError(f"{device} ({what}) is not emulated", DEVICE_IO_ERROR)
+                err.trappable = False
+                raise err
         for device in self.devices:
             if name.upper().startswith(device):
                 name = name[len(device):]
@@ -250,6 +256,19 @@ class FileTable:
             except OSError:  # the file object had closed it already
                 pass
             raise error_for(PATH_FILE_ACCESS_ERROR) from None
+
+    def verify(self, name: str) -> None:
+        """VERIFY "file": closes every file, then reads the file through (not there: File not
+        found; unreadable: Device I/O error, the Casio's RW error)."""
+        self.close()
+        for device in self.devices:
+            if name.upper().startswith(device):
+                name = name[len(device):]
+                break
+        try:
+            self.sandbox.existing(dos_name(self.sandbox, name)).read_bytes()
+        except OSError:
+            raise error_for(DEVICE_IO_ERROR) from None
 
     def get(self, n) -> OpenFile:
         f = self.open_files.get(self.number(n))

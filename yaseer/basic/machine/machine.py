@@ -230,7 +230,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.tracing = False  # TRON: lines run are shown as [n]
         self.subscript_base = 0  # OPTION BASE
         # the program's sequential files, all in one directory (``files``; default the current one)
-        self.files = FileTable(Sandbox(files), self.dialect.file_devices)
+        words = self.dialect.words
+        self.files = FileTable(Sandbox(files), self.dialect.file_devices, words.absent_devices if words else None)
         # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
         # ``yaseer run`` stops at once): see _on_interrupt.
         self.resumable_breaks = False
@@ -416,7 +417,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         if self.dialect.words:  # the casio functions (dialects/casio.py)
             ns.update(casio_math.RUNTIME)
             ns.update(casio_words.OPERATORS)
-            ns.update({"_ran": self.ran, "_valf": self.valf})
+            ns.update({"_ran": self.ran, "_valf": self.valf, "_fre0": self.free_area})
         ns.update(self._trig_functions())
         if self.dialect.arithmetic == "decimal":
             from yaseer.basic.arithmetic import decimal_arith  # here: only --arith decimal loads the decimal module

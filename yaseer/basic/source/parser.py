@@ -456,6 +456,9 @@ class _ToAst:
     def word_stmt(self, c):
         return ast.WordStatement(c[0].value, _values(c[1:]))
 
+    def word_call(self, c):  # MODE 33(a, b, c): the word's number n with arguments (a ROM routine's call)
+        return ast.WordStatement(c[0].value + "()", [ast.Num(_number_value(c[1]))] + _values(c[2:]))
+
     def input_stmt(self, c):
         # each variable with the message before it (the Casio's INPUT "YEAR=",Y,"MONTH=",M)
         asks, targets, message = [], [], None

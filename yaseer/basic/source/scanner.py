@@ -407,7 +407,8 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
                 yield "REMARK", text[end:], start, n
                 return
             if kind == "DATA_TEXT":
-                raw, i = _scan_data(text, end)
+                words = dialect.words
+                raw, i = (text[end:], n) if words and words.data_to_line_end else _scan_data(text, end)
                 yield "DATA_TEXT", raw, start, i
             else:
                 i = end
@@ -471,7 +472,28 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
         tokens.append(Token(kind, value))
     if dialect.bracket_subscripts:
         _subscript_brackets(tokens)
+    words = dialect.words
+    if words and words.closes_parentheses:
+        tokens = _closed_parentheses(tokens)
     return tokens
+
+
+def _closed_parentheses(tokens: list) -> list:
+    """The parentheses a statement leaves open closed where it ends (at a ``:`` or the
+    line's end), as the Casio reads ``A=SQR(ABS(B/C):GOTO 200``."""
+    closed: list = []
+    depth = 0
+    for token in tokens:
+        if token.type == "_LPAR":
+            depth += 1
+        elif token.type == "_RPAR":
+            depth = max(depth - 1, 0)
+        elif token.type == "_COLON" and depth:
+            closed.extend(Token("_RPAR", ")") for _ in range(depth))
+            depth = 0
+        closed.append(token)
+    closed.extend(Token("_RPAR", ")") for _ in range(depth))
+    return closed
 
 
 def _subscript_brackets(tokens: list) -> None:
