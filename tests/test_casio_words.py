@@ -395,6 +395,14 @@ def test_names_keep_their_case_up_to_15_characters():  # part 6, Variables: A, a
     assert run_values('10 ab$="x": AB$="y": PRINT ab$; AB$\n') == [["x", "y"]]
 
 
+@pytest.mark.parametrize("word", ["CSR", "KEY", "MID", "VAC", "VAR", "ALL"])
+def test_reserved_words_without_a_page_are_no_names(word):  # part 12 reserved-word list; PBLOAD_PBGET.md
+    # the PB-100's words (and ALL of the direct commands): a PB-100 program using them is an SN error
+    assert error_of(f"10 {word}=1") == f"Unsupported word {word} in 10"
+    assert error_of(f"10 Z{word.lower()}1=1") == f"Unsupported word {word} in 10"  # read keyword-first
+    assert run_values(f'10 A=1: PRINT A: END\n20 {word}\n') == [[1.0]]  # an error only when its line runs
+
+
 def test_a_name_cannot_begin_with_a_reserved_word():  # part 6, Variable Names: RUNON, LIST1$
     # keyword-first reading: LN at the start of LNX is the function LN of X
     assert run_values("10 X=1: PRINT LNX; FACTX\n") == [[0.0, 1.0]]

@@ -114,6 +114,13 @@ DATA_TO_LINE_END = True
 # Devices a file name may start with that yaseer does not have: OPEN of one ends the run
 # with one line naming it (OPEN.md lists COM0: for the RS-232C interface; LIB0400 tests it).
 ABSENT_DEVICES = {"COM0:": "the RS-232C port"}
+# Reserved words of the manual's list (part 12) with no page and no use in a program: the
+# PB-100 series' CSR, KEY, MID, VAC, VAR (PBLOAD_PBGET.md: such words of a PB-100 program are
+# an SN error when run) and ALL (of NEW ALL, LIST ALL, SAVE ALL, LOAD ALL: direct commands).
+# The scanner reads them keyword-first, so no name holds them, and a statement using one
+# stops with ``Unsupported word CSR``.  (AS, OUT and PUT stay names: OPEN's ``FOR OUTPUT AS``
+# reads them; CALC stays part of CALC$ and CALCJMP.)
+RESERVED_ONLY = ("CSR", "KEY", "MID", "VAC", "VAR", "ALL")
 # The words the scanner reads as keywords in casio only (besides the dialect's own_words).
 KEYWORDS = tuple(FUNCTIONS) + tuple(STATEMENTS) + tuple(SPELLINGS)
 
@@ -159,6 +166,7 @@ class Words:
     statements = STATEMENTS
     routine_calls = ROUTINE_CALLS
     absent_devices = ABSENT_DEVICES
+    reserved_only = RESERVED_ONLY
     reads_variables = READS_VARIABLES
     empty_statements = EMPTY_STATEMENTS
     computed_restore = COMPUTED_RESTORE

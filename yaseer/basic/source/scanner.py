@@ -25,7 +25,7 @@ import re
 
 from yaseer.basic.dialects.dialect import CASIO, Dialect
 from yaseer.basic.errors import DIRECT_STATEMENT_IN_FILE, BasicError, OVERFLOW, SYNTAX_ERROR, error_message
-from yaseer.basic.dialects.reserved import GW_RESERVED_WORDS
+from yaseer.basic.dialects.reserved import GW_RESERVED_WORDS, UNSUPPORTED
 
 # Statement and operator keywords every dialect reserves: each is its own terminal type.
 STATEMENT_KEYWORDS = (
@@ -107,6 +107,8 @@ class _Keywords:
                 words[word] = "WORDSTMT"
             for spelling, word in table.spellings.items():
                 words[spelling] = words[word]
+            for word in table.reserved_only:
+                words.setdefault(word, UNSUPPORTED)
         self.types = words
         self.by_letter: dict[str, tuple[str, ...]] = {}
         for word in sorted(words, key=len, reverse=True):
@@ -128,7 +130,8 @@ class _Keywords:
 # which the parser reports as an unsupported word.
 _ADDED_KEYWORDS = set(GW_STATEMENT_KEYWORDS) | {RENAME_KEYWORD} | {
     "SPACE$", "HEX$", "OCT$", "MKI$", "MKS$", "MKD$", "CVI", "CVS", "CVD", "FRE", "POS", "LPOS",
-    "EOF", "LOF", "LOC", "INSTR", "STRING$", "INPUT$", "TIMER", "DATE$", "TIME$"}
+    "EOF", "LOF", "LOC", "INSTR", "STRING$", "INPUT$", "TIMER", "DATE$", "TIME$",
+    *CASIO.words.reserved_only}  # (casio's reserved words without a use: VARPTR stays whole)
 _LONGER_RESERVED = {
     word: tuple(r for r in GW_RESERVED_WORDS if r.startswith(word) and r != word and r not in _KEYWORD_TYPES)
     for word in _ADDED_KEYWORDS
