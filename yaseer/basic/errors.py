@@ -82,6 +82,14 @@ def error_for(code: int) -> "BasicError":
     return BasicError(error_message(code), code)
 
 
+def not_emulated(what: str, code: int = ILLEGAL_FUNCTION_CALL) -> "BasicError":
+    """The run ends at a part of the machine yaseer does not have: one line naming it (not
+    trappable: no ON ERROR handler can make the missing part work)."""
+    err = BasicError(f"{what} is not emulated", code)
+    err.trappable = False
+    return err
+
+
 def undefined_line_message(line: int, names_line: bool) -> str:
     """``Undefined line number``, naming the missing ``line`` when ``names_line``
     (``Dialect.names_missing_line``)."""

@@ -17,7 +17,7 @@ from yaseer.basic.arithmetic import formatting
 from yaseer.basic.arithmetic import casio_math
 from yaseer.basic.machine import runtime
 from yaseer.basic.errors import (
-    BasicError, ILLEGAL_FUNCTION_CALL, OVERFLOW, PASSWORD_PROTECTED, SYNTAX_ERROR, TYPE_MISMATCH,
+    BasicError, OVERFLOW, PASSWORD_PROTECTED, SYNTAX_ERROR, TYPE_MISMATCH, not_emulated,
 )
 
 ANGLE_UNITS = ("DEG", "RAD", "GRA")  # ANGLE 0, 1, 2 (ANGLE.md)
@@ -38,14 +38,6 @@ def _whole_in(x: float, low: int, high: int) -> int:
     if not low <= n <= high:
         raise casio_math.illegal()
     return n
-
-
-def not_emulated(what: str) -> BasicError:
-    """The run ends at a part of the machine yaseer does not have: one line naming it (not an
-    error ON ERROR could hide, since no handler can make the missing part work)."""
-    err = BasicError(f"{what} is not emulated", ILLEGAL_FUNCTION_CALL)
-    err.trappable = False
-    return err
 
 
 def _operand16(x: float) -> float:

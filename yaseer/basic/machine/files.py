@@ -23,8 +23,8 @@ from __future__ import annotations
 import os
 
 from yaseer.basic.errors import (
-    BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, DEVICE_IO_ERROR, BasicError, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
-    FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, error_for,
+    BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, DEVICE_IO_ERROR, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
+    FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, error_for, not_emulated,
 )
 from yaseer.basic.machine import random_files
 from yaseer.basic.machine.runtime import cint
@@ -232,10 +232,8 @@ class FileTable:
         if k in self.open_files:
             raise error_for(FILE_ALREADY_OPEN)
         for device, what in self.absent.items():
-            if name.upper().startswith(device):  # one line naming it; no handler can make it work
-                err = BasicError(f"{device} ({what}) is not emulated", DEVICE_IO_ERROR)
-                err.trappable = False
-                raise err
+            if name.upper().startswith(device):
+                raise not_emulated(f"{device} ({what})", DEVICE_IO_ERROR)
         for device in self.devices:
             if name.upper().startswith(device):
                 name = name[len(device):]
