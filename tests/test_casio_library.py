@@ -322,3 +322,50 @@ def test_regular_polyhedra():
     edge = math.sqrt(100 / (3 * math.sqrt(25 + 10 * s5)))
     volume = shown("LIB5760", "4" "4" "100\n" + "\r" * 4, "volume =")[-1]
     assert volume == pytest.approx((15 + 7 * s5) / 4 * edge ** 3, rel=1e-9)
+
+
+# ------------------------------------------------------------------ equations, interpolation, geometry
+def test_newton_and_bisection_find_the_roots():
+    # x = ROUND(x, INT LOG e - 1) with e = 1E-7: seven decimals (ROUND.md rounds at the digit of 10^-8)
+    assert first("LIB5080", "1x^2-2\n1\n", "x =") == pytest.approx(math.sqrt(2), abs=5e-8)
+    root = float(mpmath.findroot(lambda x: x ** 3 - x - 2, 1.5))
+    assert first("LIB5090", "1x^3-x-2\n1\n2\n", "x =") == pytest.approx(root, abs=1.5e-7)  # bisection to 1E-7
+
+
+def test_runge_kutta_step_of_the_exponential():
+    h = Fraction(1, 10)  # one classical fourth-order step of dy/dx = y from y(0) = 1: the Taylor terms to h^4
+    step = 1 + h + h ** 2 / 2 + h ** 3 / 6 + h ** 4 / 24
+    assert first("LIB5220", "y\n0\n1\n0.1\n\r", r"y\(\.1\) =") == pytest.approx(float(step), rel=1e-9)
+
+
+def test_lagrange_interpolation_of_a_parabola():
+    assert first("LIB5230", "23\n1\n1\n2\n4\n3\n9\n12.5\n", "y=") == 6.25  # through (1,1) (2,4) (3,9): x^2
+
+
+LINES_AND_CIRCLES = [  # program, keys, label, closed form
+    ("LIB5520", "0\n1\n", "θ =", 45.0),  # the angle between y = 0x + b and y = 1x + d
+    ("LIB5530", "1\n0\n0\n2\n", "d =", math.sqrt(2)),  # (0, 2) from y = x
+    ("LIB5540", "1\n0\n90\n\r", "Y =", 1.0),  # (1, 0) turned a right angle
+    ("LIB5560", "0\n0\n3\n5\n0\n", "length =", 4.0),  # from (5, 0) to the circle of radius 3: 3-4-5
+    ("LIB5570", "0\n0\n3\n5\n0\n\r\r\r", "d =", 15 / 4),  # its tangent touches at (9/5, 12/5): y = -3x/4 + 15/4
+]
+
+SOLIDS = [  # program, keys (in the screen formula's order), label, closed form
+    ("LIB5655", "1\n3\n4\n5\n", "Surface =", 35 * pi),  # zone of a sphere r 5 between radii 3 and 4 (h 1), bases too
+    ("LIB5660", "5\n2\n", "Surface =", 40 * pi),  # spherical sector r 5, h 2: cap 2 pi r h + cone pi r sqrt(h(2r-h))
+    ("LIB5665", "2\n3\n", "Surface =", 20 * pi),  # cylinder r 2, h 3
+    ("LIB5670", "3\n4\n", "Surface =", 24 * pi),  # cone r 3, h 4 (slant 5)
+    ("LIB5675", "1\n4\n4\n", "Surface =", 42 * pi),  # frustum r 1, R 4, h 4 (slant 5), both bases
+    ("LIB5705", "3\n4\n1\n", "Volume =", 76 * pi / 6),  # zone of a sphere, radii 3 and 4, h 1
+    ("LIB5710", "3\n2\n", "Volume =", 12 * pi),  # spherical sector r 3, h 2: 2 pi r^2 h / 3
+    ("LIB5725", "1\n2\n3\n", "Volume =", 7 * pi),  # frustum of a cone r 1, R 2, h 3
+    ("LIB5730", "4\n3\n2\n6\n", "Volume =", 30.0),  # wedge a 4, b 3, c 2, h 6
+    ("LIB5735", "3\n4\n5\n", "Volume =", 20.0),  # pyramid 3 x 4, h 5
+    ("LIB5740", "4\n4\n1\n1\n3\n", "Volume =", 21.0),  # frustum of a square pyramid 4 x 4 to 1 x 1, h 3
+]
+
+
+@pytest.mark.parametrize("program, keys, label, value", LINES_AND_CIRCLES + SOLIDS,
+                         ids=[c[0] for c in LINES_AND_CIRCLES + SOLIDS])
+def test_geometry(program, keys, label, value):
+    assert first(program, keys, label) == pytest.approx(value, rel=1e-9)
