@@ -109,6 +109,10 @@ class _Keywords:
                 words[spelling] = words[word]
             for word in table.reserved_only:
                 words.setdefault(word, UNSUPPORTED)
+        # a longer GW-BASIC word that is no keyword here stays whole (VARPTR, CSRLIN in casio)
+        self.longer = dict(_LONGER_RESERVED)
+        for word in (table.reserved_only if table else ()):
+            self.longer[word] = tuple(r for r in GW_RESERVED_WORDS if r.startswith(word) and r not in words)
         self.types = words
         self.by_letter: dict[str, tuple[str, ...]] = {}
         for word in sorted(words, key=len, reverse=True):
@@ -119,7 +123,7 @@ class _Keywords:
         (none where a longer reserved word begins with it: see ``_LONGER_RESERVED``)."""
         for word in self.by_letter.get(upper[i], ()):
             if upper.startswith(word, i):
-                if any(upper.startswith(longer, i) for longer in _LONGER_RESERVED.get(word, ())):
+                if any(upper.startswith(longer, i) for longer in self.longer.get(word, ())):
                     return None
                 return word
         return None
@@ -130,8 +134,7 @@ class _Keywords:
 # which the parser reports as an unsupported word.
 _ADDED_KEYWORDS = set(GW_STATEMENT_KEYWORDS) | {RENAME_KEYWORD} | {
     "SPACE$", "HEX$", "OCT$", "MKI$", "MKS$", "MKD$", "CVI", "CVS", "CVD", "FRE", "POS", "LPOS",
-    "EOF", "LOF", "LOC", "INSTR", "STRING$", "INPUT$", "TIMER", "DATE$", "TIME$",
-    *CASIO.words.reserved_only}  # (casio's reserved words without a use: VARPTR stays whole)
+    "EOF", "LOF", "LOC", "INSTR", "STRING$", "INPUT$", "TIMER", "DATE$", "TIME$"}
 _LONGER_RESERVED = {
     word: tuple(r for r in GW_RESERVED_WORDS if r.startswith(word) and r != word and r not in _KEYWORD_TYPES)
     for word in _ADDED_KEYWORDS
