@@ -231,16 +231,9 @@ class FileTable:
         k = self.number(n)
         if k in self.open_files:
             raise error_for(FILE_ALREADY_OPEN)
-        for device, what in self.absent.items():
-            if name.upper().startswith(device):
-                raise not_emulated(f"{device} ({what})", DEVICE_IO_ERROR)
-        for device in self.devices:
-            if name.upper().startswith(device):
-                name = name[len(device):]
-                break
         size = random_files.record_length(length) if kind == "R" else None
         sandbox = self.sandbox
-        name = sandbox.dos_name(name)
+        name = sandbox.dos_name(self._local_name(name))
         descriptor = sandbox.open_input(name) if kind == "I" else sandbox.open_output(name, readable=kind != "O")
         identity = identity_of(descriptor)
         if any(f.identity == identity and (kind != f.mode or kind not in "IR") for f in self.open_files.values()):
@@ -259,14 +252,18 @@ class FileTable:
         """VERIFY "file": closes every file, then reads the file through (not there: File not
         found; unreadable: Device I/O error, the Casio's RW error)."""
         self.close()
+        self.sandbox.read_bytes(self.sandbox.dos_name(self._local_name(name)))
+
+    def _local_name(self, name: str) -> str:
+        """``name`` without the device that means the program's directory ("CAS0:"); a device
+        yaseer does not have ends the run with one line naming it."""
+        for device, what in self.absent.items():
+            if name.upper().startswith(device):
+                raise not_emulated(f"{device} ({what})", DEVICE_IO_ERROR)
         for device in self.devices:
             if name.upper().startswith(device):
-                name = name[len(device):]
-                break
-        try:
-            self.sandbox.existing(dos_name(self.sandbox, name)).read_bytes()
-        except OSError:
-            raise error_for(DEVICE_IO_ERROR) from None
+                return name[len(device):]
+        return name
 
     def get(self, n) -> OpenFile:
         f = self.open_files.get(self.number(n))
