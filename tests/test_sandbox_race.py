@@ -133,3 +133,31 @@ def test_swapping_links_in_never_lets_a_write_out(tmp_path):
     assert runner.returncode == 0, err
     assert int(out) > 4  # the programs ran, several times over
     assert snapshot(outside) == before
+
+
+def test_a_hard_link_swapped_back_between_open_and_check_is_not_written(tmp_path, monkeypatch):
+    """The one interleaving the race above hits only now and then, made certain: the name
+    is a hard link to a file outside when it is opened, and a plain file again (the outside
+    file back to one name) before the link count is checked."""
+    import yaseer
+    from yaseer.basic.machine import sandbox
+
+    box, outside = tmp_path / "box", tmp_path / "outside"
+    box.mkdir()
+    outside.mkdir()
+    (outside / "N.TXT").write_bytes(b"keep\r\n")
+    os.link(outside / "N.TXT", box / "N.TXT")
+    real_open = os.open
+
+    def open_then_swap_back(path, flags, *args, **kwargs):
+        descriptor = real_open(path, flags, *args, **kwargs)
+        if path == "N.TXT" and not flags & os.O_CREAT:
+            (box / ".plain").write_bytes(b"in")
+            os.replace(box / ".plain", box / "N.TXT")
+        return descriptor
+
+    monkeypatch.setattr(sandbox.os, "open", open_then_swap_back)
+    result = yaseer.run('10 OPEN "O", 1, "N.TXT": PRINT #1, "OUT": CLOSE 1\n', dialect="gw", files=str(box))
+    monkeypatch.undo()
+    assert (outside / "N.TXT").read_bytes() == b"keep\r\n"
+    assert "Path/File access error" in (result.error or result.text)

@@ -226,11 +226,13 @@ class Sandbox:
                                      dir_fd=directory)
             except FileExistsError:
                 descriptor = os.open(leaf, access | _NOFOLLOW | _NONBLOCK | _CLOEXEC, dir_fd=directory)
+            descriptor = _regular(descriptor, for_writing=True)
+            _still_named(descriptor, leaf, directory)
         except OSError as error:
             raise _os_error(error) from None
         finally:
             os.close(directory)
-        return _regular(descriptor, for_writing=True)
+        return descriptor
 
     def read_bytes(self, name: str) -> bytes:
         """The whole of the regular file ``name``."""
@@ -306,6 +308,22 @@ def identity_of(descriptor: int) -> tuple[int, int]:
     """(device, inode) of an open file: two descriptors with the same one are one file."""
     status = os.fstat(descriptor)
     return status.st_dev, status.st_ino
+
+
+def _still_named(descriptor: int, leaf: str, directory: int) -> None:
+    """Refuse (closing ``descriptor``) a file opened for writing unless ``leaf`` in
+    ``directory`` names it and it still has that one name.  The name may have been swapped
+    for a hard link to a file outside between the open and the link count's check, and
+    swapped back: then the count is 1 again, but the open file is the one outside."""
+    try:
+        entry = os.stat(leaf, dir_fd=directory, follow_symlinks=False)
+        status = os.fstat(descriptor)
+    except OSError:
+        os.close(descriptor)
+        raise
+    if (entry.st_dev, entry.st_ino) != (status.st_dev, status.st_ino) or status.st_nlink > 1:
+        os.close(descriptor)
+        raise error_for(PATH_FILE_ACCESS_ERROR)
 
 
 def _regular(descriptor: int, for_writing: bool) -> int:
