@@ -213,7 +213,7 @@ class Sandbox:
             raise (error_for(FILE_NOT_FOUND) if error.errno == errno.EISDIR else _os_error(error)) from None
         finally:
             os.close(directory)
-        return _regular(descriptor, for_writing=False)
+        return _regular(descriptor)
 
     def open_output(self, name: str, readable: bool = False) -> int:
         """A descriptor of file ``name`` for writing (``readable``: also reading), created new
@@ -226,7 +226,7 @@ class Sandbox:
                                      dir_fd=directory)
             except FileExistsError:
                 descriptor = os.open(leaf, access | _NOFOLLOW | _NONBLOCK | _CLOEXEC, dir_fd=directory)
-            descriptor = _regular(descriptor, for_writing=True)
+            descriptor = _regular(descriptor)
             _still_named(descriptor, leaf, directory)
         except OSError as error:
             raise _os_error(error) from None
@@ -326,11 +326,11 @@ def _still_named(descriptor: int, leaf: str, directory: int) -> None:
         raise error_for(PATH_FILE_ACCESS_ERROR)
 
 
-def _regular(descriptor: int, for_writing: bool) -> int:
-    """``descriptor`` if it is a regular file (with one name, when written), blocking again;
-    otherwise closed and an error."""
+def _regular(descriptor: int) -> int:
+    """``descriptor`` if it is a regular file, blocking again; otherwise closed and an error
+    (a file to be written is checked for its one name by :func:`_still_named`)."""
     status = os.fstat(descriptor)
-    if stat.S_ISREG(status.st_mode) and not (for_writing and status.st_nlink > 1):
+    if stat.S_ISREG(status.st_mode):
         os.set_blocking(descriptor, True)
         return descriptor
     os.close(descriptor)
