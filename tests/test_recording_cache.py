@@ -163,7 +163,7 @@ def test_marshal_reads_only_sealed_bytes_and_nothing_is_unpickled(cache, compile
         raise AssertionError("something was unpickled")
 
     monkeypatch.setattr(sealed_cache, "read_sealed", reading)
-    monkeypatch.setattr(recording_cache, "marshal", Marshal)
+    monkeypatch.setattr(sealed_cache, "marshal", Marshal)  # the one place entries are unmarshalled
     for name in ("load", "loads", "Unpickler"):
         monkeypatch.setattr(pickle, name, refuse)
     compiled.clear()

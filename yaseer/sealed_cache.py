@@ -29,6 +29,7 @@ Paths are os.path strings here, not pathlib (whose import costs a few ms of ever
 
 from __future__ import annotations
 
+import marshal
 import os
 
 try:  # the built-in module: hashlib would load OpenSSL (~10 ms of start-up)
@@ -108,6 +109,33 @@ def write_sealed(name: str, entry: str, magic: bytes, data: bytes, limit: int = 
     # for every sixteenth of the limit written, by all processes together.
     if int(entry[:8], 16) < len(data) / (limit // 16) * 0x100000000:
         prune(directory, limit)
+
+
+def read_marshalled(name: str, entry: str, magic: bytes) -> tuple | None:
+    """The values :func:`write_marshalled` kept in ``name`` under ``entry``, or None: nothing
+    there, a bad seal (then nothing is unmarshalled), another entry's key stored with them,
+    or another layout."""
+    data = read_sealed(name, entry, magic)
+    if data is None:
+        return None
+    try:
+        stored = marshal.loads(data)
+    except (EOFError, ValueError, TypeError):
+        return None
+    if type(stored) is not tuple or not stored or stored[0] != entry:
+        return None
+    return stored[1:]
+
+
+def write_marshalled(name: str, entry: str, magic: bytes, *values, limit: int = LIMIT) -> bool:
+    """Keep ``values`` in ``name``, sealed under ``entry`` with the key itself stored first (as
+    :func:`write_sealed` keeps data); False when :mod:`marshal` cannot write them (nothing kept)."""
+    try:
+        data = marshal.dumps((entry, *values))
+    except ValueError:
+        return False
+    write_sealed(name, entry, magic, data, limit)
+    return True
 
 
 def prune(directory: str, limit: int) -> None:

@@ -25,7 +25,6 @@ damaged or foreign file is never loaded and the path is recorded again (and kept
 
 from __future__ import annotations
 
-import marshal
 import operator
 import os
 import re
@@ -124,17 +123,12 @@ class Shelf:
         self._keys: dict[tuple, object] = {}  # tests -> the compiled function computing their values
 
     def _read_index(self) -> list:
-        data = sealed_cache.read_sealed(f"{self._index_key}.rec", self._index_key, MAGIC)
-        if data is None:
+        stored = sealed_cache.read_marshalled(f"{self._index_key}.rec", self._index_key, MAGIC)
+        records = stored[0] if stored is not None and len(stored) == 1 else None
+        if not isinstance(records, list):
             return []
-        try:
-            stored_key, records = marshal.loads(data)
-            if stored_key != self._index_key or not isinstance(records, list):
-                return []
-            return [record for record in records if isinstance(record, tuple) and len(record) == 3
-                    and isinstance(record[0], tuple) and isinstance(record[1], tuple) and isinstance(record[2], str)]
-        except (EOFError, ValueError, TypeError):
-            return []
+        return [record for record in records if isinstance(record, tuple) and len(record) == 3
+                and isinstance(record[0], tuple) and isinstance(record[1], tuple) and isinstance(record[2], str)]
 
     def compile_key(self, tests):
         """:func:`recordings.compile_key` of ``tests``, whose code is kept in the cache too (a
@@ -147,17 +141,12 @@ class Shelf:
 
     def _kept_key(self, tests: tuple):
         entry = _key(self._toolchain, "key", tests)
-        data = sealed_cache.read_sealed(f"{entry}.rec", entry, MAGIC) if sealed_cache.private_dir() else None
-        if data is not None:
-            try:
-                stored_key, code = marshal.loads(data)
-                if stored_key == entry and type(code) is CodeType:
-                    return FunctionType(code, {"__builtins__": dict(KEY_BUILTINS)})
-            except (EOFError, ValueError, TypeError):
-                pass
+        stored = sealed_cache.read_marshalled(f"{entry}.rec", entry, MAGIC)
+        if stored is not None and len(stored) == 1 and type(stored[0]) is CodeType:
+            return FunctionType(stored[0], {"__builtins__": dict(KEY_BUILTINS)})
         function = compile_key(tests)
         if sealed_cache.private_dir() is not None:
-            sealed_cache.write_sealed(f"{entry}.rec", entry, MAGIC, marshal.dumps((entry, function.__code__)))
+            sealed_cache.write_marshalled(f"{entry}.rec", entry, MAGIC, function.__code__)
         return function
 
     def _values(self, tests: tuple, machine):
@@ -187,17 +176,15 @@ class Shelf:
         return False
 
     def _load(self, entry: str):
-        data = sealed_cache.read_sealed(f"{entry}.rec", entry, MAGIC)
-        if data is None:
+        stored = sealed_cache.read_marshalled(f"{entry}.rec", entry, MAGIC)
+        if stored is None or len(stored) != 2 or type(stored[0]) is not CodeType:
             return None
+        code, plain = stored
         try:
-            stored_key, code, plain = marshal.loads(data)
-            names = restored(plain, self.provided) if stored_key == entry else None
-            if names is None or type(code) is not CodeType:
-                return None
-            return FunctionType(code, names)
-        except (EOFError, ValueError, TypeError):
+            names = restored(plain, self.provided)
+        except (ValueError, TypeError):
             return None
+        return None if names is None else FunctionType(code, names)
 
     def keep(self, run, tests: tuple, machine) -> None:
         """Keep the path ``run`` just recorded for the call on ``machine`` (its outputs not yet
@@ -209,13 +196,9 @@ class Shelf:
         code = run.__code__
         entry = _key(self._toolchain, self.program, self.method, tests, values,
                      code.co_code, repr(code.co_consts), code.co_names)
-        try:
-            data = marshal.dumps((entry, code, plain))
-        except ValueError:
+        if not sealed_cache.write_marshalled(f"{entry}.rec", entry, MAGIC, code, plain):
             return
-        sealed_cache.write_sealed(f"{entry}.rec", entry, MAGIC, data)
         records = [record for record in self._read_index() if record[2] != entry] + [(tests, values, entry)]
         self._index = records[-KEPT:]
-        sealed_cache.write_sealed(f"{self._index_key}.rec", self._index_key, MAGIC,
-                                  marshal.dumps((self._index_key, self._index)))
+        sealed_cache.write_marshalled(f"{self._index_key}.rec", self._index_key, MAGIC, self._index)
 

@@ -24,7 +24,6 @@ pruned oldest first to :data:`LIMIT`).
 
 from __future__ import annotations
 
-import marshal
 import os
 import sys
 
@@ -89,23 +88,19 @@ def key(area, program: dict[int, str], entry_lines=(), dialect=None) -> str | No
 def load(entry: str) -> tuple[CompiledArea, list] | None:
     """The compiled area and its code objects stored under ``entry``, or None (no entry, or one
     whose bytes do not hash to the hash stored with them: nothing of it is unmarshalled)."""
-    data = sealed_cache.read_sealed(f"{entry}.bin", entry, MAGIC)
-    if data is None:
+    stored = sealed_cache.read_marshalled(f"{entry}.bin", entry, MAGIC)
+    if stored is None:
         return None
     try:
-        stored_key, fields, codes = marshal.loads(data)
-        if stored_key != entry or len(codes) != len(fields[1]):
+        fields, codes = stored
+        if len(codes) != len(fields[1]):
             return None
         return CompiledArea.from_plain(fields), codes
-    except (EOFError, ValueError, TypeError, IndexError, KeyError):  # another yaseer's layout
+    except (ValueError, TypeError, IndexError, KeyError):  # another yaseer's layout
         return None
 
 
 def store(entry: str, compiled: CompiledArea, codes: list) -> None:
     """Keep ``compiled`` and its code objects (None for a piece that could not be
     compiled) under ``entry``, then prune the cache to :data:`LIMIT`; failures are ignored."""
-    try:
-        data = marshal.dumps((entry, compiled.as_plain(), codes))
-    except ValueError:
-        return
-    sealed_cache.write_sealed(f"{entry}.bin", entry, MAGIC, data, LIMIT)
+    sealed_cache.write_marshalled(f"{entry}.bin", entry, MAGIC, compiled.as_plain(), codes, limit=LIMIT)
