@@ -312,16 +312,20 @@ def identity_of(descriptor: int) -> tuple[int, int]:
 
 def _still_named(descriptor: int, leaf: str, directory: int) -> None:
     """Refuse (closing ``descriptor``) a file opened for writing unless ``leaf`` in
-    ``directory`` names it and it still has that one name.  The name may have been swapped
-    for a hard link to a file outside between the open and the link count's check, and
-    swapped back: then the count is 1 again, but the open file is the one outside."""
+    ``directory`` names it while it has that one name.  The name may be swapped for a hard
+    link to a file outside around the open and swapped back, so the link count alone can
+    read 1 for the file outside: the count is read before and after the name is looked at,
+    and a link or unlink in between changes the file's ctime, so equal counts of 1 and an
+    equal ctime mean the name looked at was the file's only name."""
     try:
+        before = os.fstat(descriptor)
         entry = os.stat(leaf, dir_fd=directory, follow_symlinks=False)
-        status = os.fstat(descriptor)
+        after = os.fstat(descriptor)
     except OSError:
         os.close(descriptor)
         raise
-    if (entry.st_dev, entry.st_ino) != (status.st_dev, status.st_ino) or status.st_nlink > 1:
+    if ((entry.st_dev, entry.st_ino) != (after.st_dev, after.st_ino) or before.st_nlink != 1
+            or after.st_nlink != 1 or before.st_ctime_ns != after.st_ctime_ns):
         os.close(descriptor)
         raise error_for(PATH_FILE_ACCESS_ERROR)
 
