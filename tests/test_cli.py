@@ -90,6 +90,21 @@ def test_an_unknown_command_is_a_usage_error():
     assert done.returncode == 2 and "invalid choice: 'frobnicate'" in done.stderr
 
 
+def test_session_options_written_before_a_command_go_to_the_command(tmp_path):
+    # The top-level usage line reads `yaseer [--dialect ...] [--printer FILE] COMMAND`; 1/3 is
+    # .3333334 in GW-BASIC's single (as PC-BASIC prints it) and .3333333333 on the pocket computer.
+    listing = tmp_path / "third.bas"
+    listing.write_text("10 PRINT 1/3\n20 LPRINT 2/3\n")
+    printer = tmp_path / "printer.txt"
+    before = yaseer("--dialect", "gw", f"--printer={printer}", "run", str(listing))
+    assert (before.returncode, before.stdout, before.stderr) == (0, " .3333334 \n", "")
+    assert printer.read_text() == " .6666667 \n"
+    assert yaseer("run", str(listing)).stdout.startswith(" .3333333333 ")
+    refused = yaseer("--width", "40", "run", str(listing))
+    assert refused.returncode == 2
+    assert refused.stderr.splitlines()[-1] == "yaseer run: error: unrecognized arguments: --width=40"
+
+
 def test_run_dash_reads_the_listing_from_standard_input():
     done = yaseer("run", "-", input="10 PRINT 6 * 7\n")
     assert (done.returncode, done.stdout, done.stderr) == (0, " 42 \n", "")

@@ -115,8 +115,29 @@ def main(argv: list[str] | None = None) -> int:
         return 1
     if not argv:
         return guarded("session", lambda: _load("interactive").main(None))
+    argv = _command_first(argv)
     command = argv[0] if argv[0] in COMMANDS else None
     return guarded(command or "session", lambda: _dispatch(argv, command))
+
+
+SESSION_VALUE_OPTIONS = ("--dialect", "--printer", "--width")  # the options before a command, each with a value
+
+
+def _command_first(argv: list[str]) -> list[str]:
+    """``argv`` with a command written after the session's options (``--dialect gw run x.bas``,
+    the order the usage line shows) moved first, those options handed to the command: the
+    command's own parser then takes them or names the one it has not got."""
+    index, options = 0, []
+    while index < len(argv) and argv[index].split("=", 1)[0] in SESSION_VALUE_OPTIONS:
+        if "=" in argv[index]:
+            options.append(argv[index])
+            index += 1
+        else:  # joined, so a command without this option names it and its value as one unknown
+            options.append("=".join(argv[index:index + 2]))
+            index += 2
+    if options and index < len(argv) and argv[index] in COMMANDS:
+        return [argv[index], *options, *argv[index + 1:]]
+    return argv
 
 
 def _dispatch(argv: list[str], command: str | None) -> int:
