@@ -55,7 +55,9 @@ class ArithmeticPolicy:
 
 def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
     """The compiled code's helpers for a typed dialect: ``_dk`` (a double ``+ - *``
-    result, or VAL's, kept in MBF's range: beyond it the policy's value), ``_dv`` and
+    result, or VAL's, kept in MBF's range: beyond it the policy's value), the single
+    routines the compiled code's fast paths fall back on (``_sadd _ssub _sp _smul _sfd
+    _csng _sfn``: an overflow goes to the policy at that operation), ``_dv`` and
     ``_ddv`` (single and double ``/``), ``_spow`` (``^``, single precision), and
     ``\\`` ``MOD`` ``^`` that give the policy's value instead of failing, and the
     transcendental functions (:func:`transcendental_functions`).  (A
@@ -67,6 +69,33 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
 
     def single_overflow(negative: bool) -> float:
         return result(OVERFLOW, negative, "!")
+
+    # Each single routine calls $OVFLS itself (MATH1.ASM): the message comes at the
+    # operation, and the next operation works on the signed largest single (or the error
+    # is trapped there).  The inline fast paths only give results inside the range; these
+    # are the slow paths they hand everything else to.  (``_spb``, a product rounded
+    # toward zero from a single in the range, cannot leave it.)
+    def checked(operation):
+        """A one-operand single routine whose result beyond MBF's range is the policy's."""
+        def run(x):
+            r = operation(x)
+            return r if r - r == 0 else single_overflow(r < 0)
+        return run
+
+    def checked2(operation):
+        """The same for a two-operand routine."""
+        def run(a, b):
+            r = operation(a, b)
+            return r if r - r == 0 else single_overflow(r < 0)
+        return run
+
+    def single_divide(a, b):
+        """``/`` of singles (``$FDIVS``): by zero ``$DIV0S``, beyond the range ``$OVFLS``."""
+        try:
+            r = single_arith.divide(a, b)
+        except ZeroDivisionError:
+            return result(DIVISION_BY_ZERO, a < 0, "!")
+        return r if r - r == 0 else single_overflow(r < 0)
 
     def double(x):
         if -DOUBLE_LARGEST <= x <= DOUBLE_LARGEST:
@@ -88,10 +117,9 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
         (gw_transcendental.py)."""
         if single_arith.is_integral_power(b):
             try:
-                r = single_arith.power_by_integer(a, b)
+                return single_arith.power_by_integer(a, b, single_overflow)
             except ZeroDivisionError:
                 return result(DIVISION_BY_ZERO, False, "!")  # zero to a negative power: positive
-            return r if r - r == 0 else result(OVERFLOW, r < 0, "!")
         try:
             return gw_transcendental.power(a, b, single_overflow)
         except ZeroDivisionError:
@@ -123,7 +151,11 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
         except OverflowError:
             return result(OVERFLOW, a < 0 and float(b).is_integer() and int(b) % 2 == 1, "!")
 
-    return {"_dk": double, "_dv": divider(single_arith.divide, "!"), "_ddv": divider(lambda a, b: double(a / b), "#"),
+    singles = {"_sadd": checked2(single_arith.add), "_ssub": checked2(single_arith.subtract),
+               "_sp": checked(single_arith.product),
+               "_smul": checked2(single_arith.multiply), "_sfd": checked(single_arith.from_double),
+               "_csng": checked(single_arith.from_double), "_sfn": checked(single_arith.function_result)}
+    return {**singles, "_dk": double, "_dv": single_divide, "_ddv": divider(lambda a, b: double(a / b), "#"),
             "_idiv": by_integer(int_divide), "_mod": by_integer(int_modulo), "_pow": raise_to,
             "_spow": single_power, **transcendental}
 

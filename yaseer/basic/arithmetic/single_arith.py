@@ -48,6 +48,7 @@ _TOP = 1 << 32  # a 32-bit working mantissa is below this
 _HALF_TOP = 1 << 31  # ... and, normalised, at least this
 TINY = 2.0 ** -128  # the least MBF single; anything smaller is 0
 LIMIT = 2.0 ** 127  # a rounded result this large overflows (exponent byte 256)
+LARGEST = (1 - 2.0 ** -24) * 2.0 ** 127  # the largest single, 1.701412E+38
 _SAFE_LOW = 2.0 ** -125  # IEEE singles keep all 24 bits from 2**-126 up
 # A constant below this in size, added to a single, cannot carry the sum beyond the
 # range: it is less than half a unit of the largest single (2**103, about 1E+31).
@@ -295,27 +296,49 @@ def from_double(x) -> float:
 function_result = nearest
 
 
-def power_by_integer(x, n: int) -> float:
-    """``x ^ n`` for an integral ``n`` below 32768 in size, as GW-BASIC's ``$FPWR``:
-    Knuth's binary powering (``Y = 1, Z = x``; per bit of ``n`` from the lowest:
+def power_by_integer(x, n: int, overflow=None) -> float:
+    """``x ^ n`` for an integral ``n`` below 32768 in size, as GW-BASIC's ``$FPWR``
+    (XTON): Knuth's binary powering (``Y = 1, Z = x``; per bit of ``n`` from the lowest:
     ``Y = Y*Z`` when it is 1, then, while bits remain, ``Z = Z*Z``), each product
-    rounded as ``$FMULS``; for a negative ``n``, 1 divided by ``x ^ -n``.  ``n`` = 0
-    gives 1.  Overflow gives an infinity; 0 to a negative power raises
-    ZeroDivisionError."""
+    rounded as ``$FMULS``; for a negative ``n``, 1 divided by ``x ^ -n`` (``$FDIVS``),
+    and Overflow when ``x ^ -n`` underflowed to 0.  ``n`` = 0 gives 1; 0 to a negative
+    power raises ZeroDivisionError.
+
+    ``overflow(negative)``: ``$FPWR`` sets the once-only overflow mode, so the first
+    product beyond the range calls it (the message, or the trapped error) and every
+    one goes on with the signed largest single (``$OVFLS``).  Without it, an overflow
+    gives an infinity."""
     count = int(n)
+    told = False
+
+    def times(p):
+        nonlocal told
+        r = product(p)
+        if r - r == 0 or overflow is None:
+            return r
+        if not told:
+            told = True
+            overflow(r < 0)
+        return -LARGEST if r < 0 else LARGEST
+
     y, z = None, x + 0.0  # y None: still 1 (1 * Z is exact: the first product is Z itself)
     bits = -count if count < 0 else count
     while bits:
         if bits & 1:
-            y = z if y is None else product(y * z)
+            y = z if y is None else times(y * z)
         bits >>= 1
         if bits:
-            z = product(z * z)
+            z = times(z * z)
     if y is None:
         return 1.0
-    return divide(1.0, y) if count < 0 else y
-
-
+    if count >= 0:
+        return y
+    if y == 0 and x and overflow is not None:  # (GW tests the FAC's exponent before it inverts; 0 itself: $DIV0S)
+        negative = x < 0 and count % 2 == 1
+        if not told:
+            overflow(negative)
+        return -LARGEST if negative else LARGEST
+    return divide(1.0, y)
 def is_integral_power(n) -> bool:
     """Does GW-BASIC's ``$FPWR`` raise to ``n`` by multiplying (``n`` integral, |n| < 32768)?"""
     return -32768 < n < 32768 and n == int(n)

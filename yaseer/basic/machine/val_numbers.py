@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import operator
 
-from yaseer.basic.arithmetic import single_arith
 from yaseer.basic.errors import OVERFLOW
 from yaseer.basic.arithmetic.values import Double
 
@@ -29,7 +28,7 @@ def helpers(policy, ns: dict, largest: float) -> dict:
     from yaseer.basic.machine.gwfunctions import val_typed
 
     single_divide, double_divide, in_range = ns["_dv"], ns["_ddv"], ns["_dk"]
-    singles = {"+": ns["_sadd"], "-": ns["_ssub"], "*": single_arith.multiply}
+    singles = {"+": ns["_sadd"], "-": ns["_ssub"], "*": ns["_smul"]}
     doubles = {"+": operator.add, "-": operator.sub, "*": operator.mul}
 
     def val(text: str):
