@@ -1,10 +1,16 @@
-"""TRON / TROFF: the ``[n]`` trace, against PC-BASIC 2.0.8 on the same programs.
+"""TRON / TROFF: the trace, against PC-BASIC 2.0.8 on the same programs.
 
 All the programs run in one PC-BASIC session.  Values are small integers, which
-both dialects print alike.  The plain compile (TRON off) must carry no trace code.
+both dialects print alike.  casio traces the
+same lines in the same order in the FX-850P's form (TRON.md: the program area and the
+line, ``P0-10``, on a row of its own; from a string, no key to wait for).  The plain
+compile (TRON off) must carry no trace code.
 """
 
 from __future__ import annotations
+
+import io
+import re
 
 import pytest
 
@@ -33,12 +39,27 @@ PROGRAMS = [
 ]
 
 
+def casio_form(gw_trace: str) -> str:
+    """PC-BASIC's ``[n]`` marks written as the Casio shows them: ``P0-n`` on a row of its own."""
+    out = []
+    for piece in re.split(r"(\[\d+\])", gw_trace):
+        if re.fullmatch(r"\[\d+\]", piece):
+            if out and not out[-1].endswith("\n"):
+                out.append("\n")
+            out.append(f"P0-{piece[1:-1]}\n")
+        elif piece:
+            out.append(piece)
+    return "".join(out)
+
+
 @pytest.mark.parametrize("program", PROGRAMS)
 def test_trace_matches_pcbasic(pc, program):
     traced = "1 TRON\n" + program + "\n9999 TROFF"
     # PC-BASIC leaves the line of the last [n] open; the comparison ignores final newlines
-    # (casio's MS-BASIC core: its ERR is the Casio manual's code, tests/test_casio_words.py)
-    assert run_text(traced, dialect=core("casio")).rstrip("\n") == pc.program(traced).rstrip("\n")
+    # (casio's MS-BASIC core: its ERR is the Casio manual's code, tests/test_casio_words.py;
+    # gw's [n] is compared on a terminal in tests/test_interactive_classroom.py)
+    expected = casio_form(pc.program(traced))
+    assert run_text(traced, dialect=core("casio")).rstrip("\n") == expected.rstrip("\n")
 
 
 def test_tron_off_leaves_no_trace_in_the_compiled_code():
@@ -50,4 +71,18 @@ def test_tron_off_leaves_no_trace_in_the_compiled_code():
 
 
 def test_tron_survives_until_troff_and_is_shown_with_print():
-    assert run_text("10 TRON\n20 PRINT 1;\n30 PRINT 2") == "[20] 1 [30] 2 \n"
+    assert run_text("10 TRON\n20 PRINT 1;\n30 PRINT 2", dialect="gw") == "[20] 1 [30] 2 \n"
+    # casio (TRON.md): the area and line on a row of their own, the output after them
+    assert run_text("10 TRON\n20 PRINT 1;\n30 PRINT 2") == "P0-20\n 1 \nP0-30\n 2 \n"
+
+
+def test_casio_trace_names_the_program_area():
+    # TRON.md: "P0 represents currently specified program area"; PROG 2's lines show as P2-n
+    from yaseer.basic.machine.machine import Machine
+
+    screen = io.StringIO()
+    machine = Machine(screen=screen)
+    machine.set_area(2, "10 PRINT 7\n20 RETURN")
+    machine.load("10 TRON\n20 GOSUB PROG 2\n30 PRINT 8")
+    machine.run()
+    assert screen.getvalue() == "P0-20\nP2-10\n 7 \nP2-20\nP0-30\n 8 \n"

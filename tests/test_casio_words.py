@@ -362,8 +362,12 @@ def test_on_error_goto_and_resume():  # ON_ERROR_GOTO.md, RESUME.md: reciprocals
 
 
 def test_trace_on_and_off():  # TRON.md, TROFF.md: the lines run are shown, then no more
+    # the area and line of each line run ("P0-10", the page's sample), then no more after TROFF;
+    # the keys are not a person's at a terminal here, so no EXE is awaited (compatibility.md)
     text = run_text("10 TRON\n20 A=1\n30 TROFF\n40 A=2\n")
-    assert "20" in text and "40" not in text
+    assert text == "P0-20\nP0-30\n"
+    keys = io.StringIO("5\n")  # a key script is not consumed by the halts: INPUT still gets 5
+    assert run_text("10 TRON\n20 INPUT A\n30 PRINT A*2", input_stream=keys) == "P0-20\n? 5\nP0-30\n 10 \n"
 
 
 # ------------------------------------------------------------------ error codes

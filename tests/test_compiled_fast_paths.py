@@ -98,7 +98,8 @@ def test_gosub_to_a_bare_return_is_traced_as_the_return_line():
     # TRON shows the RETURN's line once per call, as the general code does
     program = "10 TRON: GOSUB 100: PRINT: GOSUB 100: END\n100 RETURN"
     traced = run_text(program)
-    assert traced == run_text(program + DEFEAT) and traced.count("[100]") == 2
+    # (casio's mark, TRON.md: area and line)
+    assert traced == run_text(program + DEFEAT) and traced.count("P0-100\n") == 2
 
 
 def test_gosub_returns_into_a_native_loop_without_ending_it():

@@ -1,6 +1,6 @@
 """The session's classroom commands typed on a real pseudo-terminal (pexpect), as a user types them.
 
-AUTO, LIST of crunched lines, TRON/TROFF, CLS, LLIST, a syntax error put up
+AUTO, LIST of crunched lines, TRON/TROFF (gw's [n]; casio's P0-n, halting at each line), CLS, LLIST, a syntax error put up
 for editing, CONT after Ctrl-C.  The GW-BASIC behaviour each one copies is
 stated where it is asserted (PC-BASIC 2.0.8 gave the traces; its AUTO prompt
 is the number followed by ``*`` for a line that exists, a space otherwise).
@@ -65,7 +65,8 @@ def test_list_shows_crunched_lines_as_the_pocket_computer_lists_them(terminal):
     terminal.close()
 
 
-def test_tron_traces_lines_as_gw_basic_in_programs_and_direct_mode(terminal):
+def test_tron_traces_lines_as_gw_basic_in_programs_and_direct_mode(tmp_path):
+    terminal = Terminal(tmp_path, args=("--dialect", "gw"))  # GW-BASIC's [n] (casio's form: below)
     for line in ("10 FOR I=1 TO 2", "20 PRINT I", "30 NEXT I", "40 GOSUB 60: PRINT \"B\"", "50 END",
                  "60 PRINT \"S\": RETURN"):
         terminal.type(line)
@@ -78,6 +79,26 @@ def test_tron_traces_lines_as_gw_basic_in_programs_and_direct_mode(terminal):
     terminal.type("5 TRON")  # as a statement: the lines after it are traced
     terminal.type("45 TROFF")
     assert terminal.type("RUN") == "[10][20] 1 \n[30][20] 2 \n[30][40][60]S\nB\n[45]\n"
+    terminal.close()
+
+
+def test_casio_tron_shows_area_and_line_and_waits_for_exe_at_each(terminal):
+    # TRON.md: "P0-10" (program area, line) and execution suspended until EXE (Enter) is pressed
+    for line in ("10 PRINT 1", "20 PRINT 2"):
+        terminal.type(line)
+    terminal.type("TRON")
+    terminal.child.send("RUN\r")
+    terminal.child.expect_exact("P0-10")
+    with pytest.raises(pexpect.TIMEOUT):  # halted: line 10 has not run
+        terminal.child.expect_exact(" 1 ", timeout=1)
+    terminal.child.send("\r")
+    terminal.child.expect_exact(" 1 ")
+    terminal.child.expect_exact("P0-20")
+    with pytest.raises(pexpect.TIMEOUT):
+        terminal.child.expect_exact(" 2 ", timeout=1)
+    assert plain(terminal.keys("\r")).split() == ["2"]
+    terminal.type("TROFF")
+    assert terminal.type("RUN") == " 1 \n 2 \n"
     terminal.close()
 
 
@@ -131,7 +152,7 @@ def test_classroom_commands_from_a_pipe(tmp_path):
     result = session_from_pipe("AUTO 10,5\nprint 1\nprint 2\n\nCLS\nLIST\nTRON\nRUN\n", tmp_path)
     assert result.returncode == 0
     assert "\x1b" not in result.stdout  # CLS clears nothing on a pipe
-    assert "P0> 10 15 20 P0> P0> 10 PRINT 1\n15 PRINT 2\nP0> P0> [10] 1 \n[15] 2 \n" in result.stdout
+    assert "P0> 10 15 20 P0> P0> 10 PRINT 1\n15 PRINT 2\nP0> P0> P0-10\n 1 \nP0-15\n 2 \n" in result.stdout
 
 
 def test_cont_after_ctrl_c_goes_on_exactly_where_the_run_was_broken(terminal):

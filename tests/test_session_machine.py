@@ -111,8 +111,9 @@ def test_run_file_loads_it_into_prog_0_and_runs_it(session, tmp_path):
 
 def test_tron_stays_on_across_run_and_new_turns_it_off(session):
     after(session, "10 PRINT 1", "TRON")
-    assert after(session, "RUN") == "[10] 1 \n"
-    assert after(session, "RUN") == "[10] 1 \n"  # RUN makes a fresh machine; the trace stays (GW-BASIC)
+    # the Casio's mark (TRON.md); no key is awaited: the session's keys are not a terminal here
+    assert after(session, "RUN") == "P0-10\n 1 \n"
+    assert after(session, "RUN") == "P0-10\n 1 \n"  # RUN makes a fresh machine; the trace stays (TRON.md item 3)
     after(session, "NEW", "10 PRINT 2")
     assert after(session, "RUN") == " 2 \n"  # NEW turns it off (GW-BASIC, PC-BASIC's new_)
 

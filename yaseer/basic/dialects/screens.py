@@ -27,6 +27,11 @@ control code does its ``controls``.
   after CLS (a GW program that clears the screen and PRINTs reads in order), and
   only placing text (LOCATE, cursor codes, VIEW PRINT) shows screens.
 * ``attributes``: True when cells carry a colour attribute (COLOR, SCREEN(r, c, 1)).
+* ``trace_mark``: what TRON shows as a line starts, a format of ``area`` (the program
+  area's name) and ``line``: GW-BASIC's ``[n]`` inline (as PC-BASIC 2.0.8 prints it), the Casio's ``P0-10`` (TRON.md: the area and the line number).
+* ``trace_halts``: True puts the mark on a row of its own and suspends the run there
+  until EXE is pressed (TRON.md, item 2; part 6 "Irregular execution"); the keys must
+  come from a person at a terminal for that (see InputOutput.trace_line).
 """
 
 from __future__ import annotations
@@ -34,10 +39,12 @@ from __future__ import annotations
 from collections import namedtuple
 
 ScreenRules = namedtuple("ScreenRules", ("late_wrap", "origin", "row_first", "locate_arguments",
-                                         "function_keys", "key_label", "clear_draws", "attributes"))
+                                         "function_keys", "key_label", "clear_draws", "attributes",
+                                         "trace_mark", "trace_halts"))
 
 CASIO_SCREEN = ScreenRules(late_wrap=False, origin=0, row_first=False, locate_arguments=(2, 2),
-                           function_keys=(), key_label=0, clear_draws=True, attributes=False)
+                           function_keys=(), key_label=0, clear_draws=True, attributes=False,
+                           trace_mark="P{area}-{line}", trace_halts=True)
 
 # GW-BASIC's soft keys at start (F1..F10; GWSTS.ASM's table is the OEM's, these are the
 # IBM PC's as PC-BASIC 2.0.8 has them); a carriage return ends several.
@@ -45,7 +52,8 @@ GW_FUNCTION_KEYS = ("LIST ", "RUN\r", 'LOAD"', 'SAVE"', "CONT\r", ',"LPT1:"\r', 
                     "KEY ", "SCREEN 0,0,0\r")
 
 GW_SCREEN = ScreenRules(late_wrap=True, origin=1, row_first=True, locate_arguments=(0, 5),
-                        function_keys=GW_FUNCTION_KEYS, key_label=6, clear_draws=False, attributes=True)
+                        function_keys=GW_FUNCTION_KEYS, key_label=6, clear_draws=False, attributes=True,
+                        trace_mark="[{line}]", trace_halts=False)
 
 # What each control code does on GW-BASIC's text screen when PRINTed (the OEM's PRTMAP is
 # not in the published source; PC-BASIC 2.0.8's console does this): TAB to the next

@@ -1,6 +1,6 @@
 """The BASIC machine's input and output: PRINT and LPRINT (comma zones, TAB, SPC,
 csv rows, the line hooks), PRINT USING, WRITE, INPUT and LINE INPUT, INPUT$, the
-screen's settings (CLS, WIDTH, TRON's ``[n]``) and the file statements' I/O
+screen's settings (CLS, WIDTH, TRON's mark) and the file statements' I/O
 (PRINT #n, INPUT #n, FILES; the files themselves: files.py).  The
 :class:`InputOutput` mixin of :class:`yaseer.basic.machine.machine.Machine`."""
 
@@ -42,9 +42,37 @@ class InputOutput:
     """PRINT, INPUT and the file statements' I/O on the machine's streams (``screen``,
     ``printer``, ``input_stream``, ``files``).  A mixin of ``Machine``, on its state."""
 
-    def trace_line(self, number: int) -> None:
-        """TRON's ``[n]`` as line ``n`` starts (on the screen, like PRINT without a newline)."""
-        self.screen.write(f"[{number}]")
+    def trace_line(self, number: int, area="0") -> None:
+        """TRON's mark as line ``number`` of program area ``area`` (its name) starts: the
+        dialect's ``trace_mark`` on the screen (GW: ``[n]``, like PRINT without a newline).
+
+        Where the trace halts (casio, TRON.md: ``P0-10`` and execution suspended until EXE),
+        the mark takes a row of its own; the run waits for Enter only when the keys come
+        from a person at a terminal.  From ``--input`` or a pipe no key is taken: a key
+        script written for the program's INPUTs then answers the same ones with TRON on,
+        and the transcript lists every line run (docs/compatibility.md, TRON)."""
+        rules = self.dialect.screen
+        screen = self.screen
+        mark = rules.trace_mark.format(area=area, line=number)
+        if not rules.trace_halts:
+            screen.write(mark)
+            return
+        if screen.column:
+            screen.new_row()
+        screen.write(mark)
+        if self.input_stream is not None or not sys.stdin.isatty():
+            screen.new_row()
+            return
+        self._reading_input = True  # a Ctrl-C (BRK) while it waits breaks at once
+        try:
+            self.show_screen()
+            screen.flush()
+            sys.stdin.readline()  # EXE: the terminal's echo of Enter ends the mark's row
+        finally:
+            self._reading_input = False
+        screen.column = 0
+        if self.display is not None and self.display.drawn:
+            self.display.new_line()
 
     def set_width(self, columns, printer: bool = False) -> None:
         """WIDTH n: the screen's width, 40 or 80 columns as GW-BASIC's text screen has

@@ -227,7 +227,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         # collected while a hook is registered (yaseer.api keeps the printed rows).
         self.line_hooks: list[Callable] = []
         self._line_values: tuple[list, list] = ([], [])
-        self.tracing = False  # TRON: lines run are shown as [n]
+        self.tracing = False  # TRON: lines run are shown (the dialect's trace_mark)
         self.subscript_base = 0  # OPTION BASE
         # the program's sequential files, all in one directory (``files``; default the current one)
         words = self.dialect.words
@@ -404,7 +404,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_mod": runtime.modulo, "_and": runtime.logical_and, "_or": runtime.logical_or,
             "_not": runtime.logical_not, "_frange": runtime.float_range,
             "_fcount": runtime.pass_counter, "_fidle": runtime.idle_passes, "_fvalue": runtime.counted_value,
-            "_fafter": runtime.counted_final, "_tr": self.trace_line, "_cint": lambda x: float(runtime.cint(x)),
+            "_fafter": runtime.counted_final, "_tr": self._tracer(area), "_cint": lambda x: float(runtime.cint(x)),
             "_csng": float, "_cdbl": float,
         }
         ns.update(self._gw_functions())
@@ -478,6 +478,14 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
                 extra = decimal_arith.rounding_all(extra)
             functions.update(extra)
         return functions
+
+    def _tracer(self, area):
+        """TRON's ``_tr(line)`` for the code of ``area``: the mark names the area (``P0``..,
+        a program file's area by the file's name)."""
+        name = str(area)
+        if isinstance(area, int) and area >= FIRST_FILE_AREA:
+            name = next((file.split(":", 1)[0] for file, n in self.file_areas.items() if n == area), name)
+        return lambda number: self.trace_line(number, name)
 
     def set_trace(self, on: bool) -> None:
         """TRON / TROFF: swap every compiled area's blocks for its traced (or plain) variant.
