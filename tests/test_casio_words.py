@@ -399,12 +399,27 @@ def test_names_keep_their_case_up_to_15_characters():  # part 6, Variables: A, a
     assert run_values('10 ab$="x": AB$="y": PRINT ab$; AB$\n') == [["x", "y"]]
 
 
-@pytest.mark.parametrize("word", ["CSR", "KEY", "MID", "VAC", "VAR", "ALL"])
+@pytest.mark.parametrize("word", ["CSR", "KEY", "MID", "VAC", "VAR", "ALL", "AS", "OUT", "PUT", "CALC"])
 def test_reserved_words_without_a_page_are_no_names(word):  # part 12 reserved-word list; PBLOAD_PBGET.md
     # the PB-100's words (and ALL of the direct commands): a PB-100 program using them is an SN error
     assert error_of(f"10 {word}=1") == f"Unsupported word {word} in 10"
     assert error_of(f"10 Z{word.lower()}1=1") == f"Unsupported word {word} in 10"  # read keyword-first
     assert run_values(f'10 A=1: PRINT A: END\n20 {word}\n') == [[1.0]]  # an error only when its line runs
+
+
+def test_open_reads_output_and_as_though_they_are_reserved(tmp_path):
+    # OPEN.md's format and sample 1/2: FOR OUTPUT AS #1, FOR INPUT AS #1 (OUTPUT read as OUT PUT)
+    from yaseer.basic.source.scanner import detokenize
+
+    program = ('10 open "CAS0:TEST" for output as #1: print #1,"WRITE TEST": close\n'
+               '20 OPEN "CAS0:TEST" FOR INPUT AS 1: INPUT #1,A$: CLOSE: PRINT A$\n')
+    assert run_text(program, files=tmp_path) == "WRITE TEST\n"
+    assert detokenize('open "T" for output as #1') == 'OPEN "T" FOR OUTPUT AS #1'
+    assert detokenize("ask=1") == "AS k=1"  # LIST shows how the machine read it
+
+
+def test_calc_string_is_one_variable_in_any_case():  # reserved-word list: CALC; the library's CALC$=s$
+    assert run_values('10 calc$="X+1": PRINT CALC$; Calc$\n') == [["X+1", "X+1"]]
 
 
 def test_a_name_cannot_begin_with_a_reserved_word():  # part 6, Variable Names: RUNON, LIST1$

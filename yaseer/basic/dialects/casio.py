@@ -117,10 +117,17 @@ ABSENT_DEVICES = {"COM0:": "the RS-232C port"}
 # Reserved words of the manual's list (part 12) with no page and no use in a program: the
 # PB-100 series' CSR, KEY, MID, VAC, VAR (PBLOAD_PBGET.md: such words of a PB-100 program are
 # an SN error when run) and ALL (of NEW ALL, LIST ALL, SAVE ALL, LOAD ALL: direct commands).
-# The scanner reads them keyword-first, so no name holds them, and a statement using one
-# stops with ``Unsupported word CSR``.  (AS, OUT and PUT stay names: OPEN's ``FOR OUTPUT AS``
-# reads them; CALC stays part of CALC$ and CALCJMP.)
-RESERVED_ONLY = ("CSR", "KEY", "MID", "VAC", "VAR", "ALL")
+# AS, OUT and PUT have no page either: their one use is OPEN's ``FOR OUTPUT AS`` (OUTPUT read
+# as OUT PUT, the reason both are reserved), which the scanner gives the grammar as the words
+# OPEN reads (scanner._open_words).  CALC is the CAL mode's key (part 5, "CALC: executes
+# formula stored in memory"), not a statement; CALC$ (the formula, below) and CALCJMP are
+# longer words of their own.  The scanner reads them keyword-first, so no name holds them
+# (part 6, Variables: reserved words cannot lead a name; ``ASK`` is ``AS K``), and a
+# statement using one stops with ``Unsupported word CSR``.
+RESERVED_ONLY = ("CSR", "KEY", "MID", "VAC", "VAR", "ALL", "AS", "OUT", "PUT", "CALC")
+# Reserved string variables: CALC$, the formula CALCJMP hands to the CAL mode (the library's
+# ``CALC$=s$``); kept as the variable of that name, in capitals however it is typed.
+RESERVED_VARIABLES = ("CALC$",)
 # The words the scanner reads as keywords in casio only (besides the dialect's own_words).
 KEYWORDS = tuple(FUNCTIONS) + tuple(STATEMENTS) + tuple(SPELLINGS)
 
@@ -167,6 +174,7 @@ class Words:
     routine_calls = ROUTINE_CALLS
     absent_devices = ABSENT_DEVICES
     reserved_only = RESERVED_ONLY
+    reserved_variables = RESERVED_VARIABLES
     reads_variables = READS_VARIABLES
     empty_statements = EMPTY_STATEMENTS
     computed_restore = COMPUTED_RESTORE

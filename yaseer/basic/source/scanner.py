@@ -109,6 +109,8 @@ class _Keywords:
                 words[spelling] = words[word]
             for word in table.reserved_only:
                 words.setdefault(word, UNSUPPORTED)
+            for word in table.reserved_variables:
+                words[word] = "STRNAME"
         # a longer GW-BASIC word that is no keyword here stays whole (VARPTR, CSRLIN in casio)
         self.longer = dict(_LONGER_RESERVED)
         for word in (table.reserved_only if table else ()):
@@ -407,7 +409,7 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
             yield "NUMBER", value, start, i
         elif ch.isascii() and ch.isalpha():
             kind, word, end = scan_word(upper, i, keywords)
-            if kind in _NAME_TYPES:
+            if kind in _NAME_TYPES and word not in keywords.types:
                 word = _name(text, start, end, kind, dialect)
             if kind == "REMARK":
                 yield "REMARK", text[end:], start, n
@@ -481,7 +483,31 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
     words = dialect.words
     if words and words.closes_parentheses:
         tokens = _closed_parentheses(tokens)
+    if words and words.reserved_only:
+        _open_words(tokens)
     return tokens
+
+
+def _open_words(tokens: list) -> None:
+    """In an OPEN statement, the reserved words OPEN reads as the names its grammar
+    expects: ``OUT PUT`` (the keyword-first reading of OUTPUT) as ``OUTPUT``, ``AS`` as
+    ``AS`` (the Casio reserves AS, OUT and PUT for OPEN alone: OPEN.md)."""
+    k = 0
+    opened = False
+    while k < len(tokens):
+        token = tokens[k]
+        kind = token.type
+        if kind == "OPEN":
+            opened = True
+        elif kind in ("_COLON", "ELSE", "THEN"):
+            opened = False
+        elif opened and kind == UNSUPPORTED:
+            if token.value == "OUT" and k + 1 < len(tokens) and tokens[k + 1].value == "PUT" \
+                    and tokens[k + 1].type == UNSUPPORTED:
+                tokens[k:k + 2] = [Token("NAME", "OUTPUT")]
+            elif token.value == "AS":
+                tokens[k] = Token("NAME", "AS")
+        k += 1
 
 
 def _closed_parentheses(tokens: list) -> list:
@@ -572,15 +598,15 @@ def detokenize(text: str, dialect: Dialect = CASIO) -> str:
             piece = text[start:end].upper() if kind == "NUMBER" else text[start:end]
         else:
             piece = value  # a keyword
-        if previous is not None and _spaced(previous, kind):
-            out.append(" ")
+        if previous is not None and _spaced(previous, kind) and not (piece == "PUT" and out[-1] == "OUT"):
+            out.append(" ")  # (OUT PUT is OPEN's OUTPUT as the Casio reads it: listed whole)
         out.append(piece)
         previous = kind
     return "".join(out)
 
 
 def _is_keyword(kind: str) -> bool:
-    return kind in _KEYWORD_TYPES.values() and kind not in ("REMARK", "DATA_TEXT", "SYSVAR")
+    return (kind in _KEYWORD_TYPES.values() and kind not in ("REMARK", "DATA_TEXT", "SYSVAR")) or kind == UNSUPPORTED
 
 
 def _spaced(left: str, right: str) -> bool:
