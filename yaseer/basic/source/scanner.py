@@ -483,7 +483,7 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
     words = dialect.words
     if words and words.closes_parentheses:
         tokens = _closed_parentheses(tokens)
-    if words and words.reserved_only:
+    if words and words.reserved_only and "OPEN" in text.upper():
         _open_words(tokens)
     return tokens
 
