@@ -399,7 +399,7 @@ def test_names_keep_their_case_up_to_15_characters():  # part 6, Variables: A, a
     assert run_values('10 ab$="x": AB$="y": PRINT ab$; AB$\n') == [["x", "y"]]
 
 
-@pytest.mark.parametrize("word", ["CSR", "KEY", "MID", "VAC", "VAR", "ALL", "AS", "OUT", "PUT", "CALC"])
+@pytest.mark.parametrize("word", ["CSR", "KEY", "MID", "VAC", "VAR", "AS", "OUT", "PUT", "CALC"])
 def test_reserved_words_without_a_page_are_no_names(word):  # part 12 reserved-word list; PBLOAD_PBGET.md
     # the PB-100's words (and ALL of the direct commands): a PB-100 program using them is an SN error
     assert error_of(f"10 {word}=1") == f"Unsupported word {word} in 10"
@@ -416,6 +416,53 @@ def test_open_reads_output_and_as_though_they_are_reserved(tmp_path):
     assert run_text(program, files=tmp_path) == "WRITE TEST\n"
     assert detokenize('open "T" for output as #1') == 'OPEN "T" FOR OUTPUT AS #1'
     assert detokenize("ask=1") == "AS k=1"  # LIST shows how the machine read it
+
+
+@pytest.mark.parametrize("statement", ["NEW", "NEW ALL", "RUN", "RUN 10"])
+def test_new_and_run_cannot_be_in_a_program(statement):  # NEW.md item 7, RUN.md item 5: the FC error
+    assert error_of(f'10 PRINT 1\n20 {statement}') == "Illegal direct in 20"
+    assert run_values(f"10 ON ERROR GOTO 90\n20 {statement}\n30 END\n90 PRINT ERR: END") == [[17.0]]  # FC: 17
+
+
+def test_list_in_a_program_lists_its_range_then_stands_by():  # LIST.md items 3, 10
+    program = "10 LIST 20-30\n20 a=1: print a\n30 goto 40\n40 PRINT 9"
+    assert run_text(program) == "20 a=1:PRINT a\n30 GOTO 40\n"  # nothing runs after it
+    assert run_text("10 LIST -10\n20 END") == "10 LIST -10\n"
+
+
+def test_save_and_load_in_a_program_then_stand_by(tmp_path):  # SAVE_SAVE_ALL.md, LOAD_LOAD_ALL.md
+    # the manual's sample file names: SAVE "CAS0:TEST"; LOAD "DEMO1"; ,A the ASCII format
+    assert run_text('10 PRINT "SAVED"\n20 SAVE "CAS0:TEST",A\n30 PRINT "NOT REACHED"', files=tmp_path) == "SAVED\n"
+    machine = Machine(screen=io.StringIO(), files=tmp_path)
+    machine.load('10 LOAD "TEST"\n20 PRINT "NOT REACHED"')
+    machine.run()
+    assert machine.programs[0] == {10: 'PRINT "SAVED"', 20: 'SAVE "CAS0:TEST",A', 30: 'PRINT "NOT REACHED"'}
+    assert machine.screen.stream.getvalue() == ""
+    assert run_text('10 GOSUB "TEST"', files=tmp_path) == "SAVED\n"  # the same file GOSUB "name" runs
+    assert error_of('10 LOAD "NONE"', files=tmp_path) == "File not found in 10"
+    assert error_of('10 LOAD "TEST",R', files=tmp_path) == "Syntax error in 10"  # ,A only (LOAD's format)
+
+
+def test_save_all_and_load_all_carry_every_program_area(tmp_path):  # SAVE ALL: P0-P9; LOAD ALL
+    machine = Machine(screen=io.StringIO(), files=tmp_path)
+    machine.set_area(4, "10 PRINT 4: RETURN")
+    machine.set_area(7, "10 PRINT 7: RETURN")
+    machine.load('10 SAVE ALL "CAS0:EVERY"')
+    machine.run()
+    other = Machine(screen=io.StringIO(), files=tmp_path)
+    other.set_area(4, "10 PRINT 44: RETURN")
+    other.set_area(8, "10 PRINT 8: RETURN")  # an area the file does not hold is emptied
+    other.load('10 LOAD ALL "EVERY"')
+    other.run()
+    assert other.programs[0] == {10: 'SAVE ALL "CAS0:EVERY"'}
+    assert other.programs[4] == {10: "PRINT 4:RETURN"} and other.programs[7] == {10: "PRINT 7:RETURN"}  # as listed
+    assert not other.programs.get(8)
+    screen = io.StringIO()
+    lister = Machine(screen=screen)
+    lister.set_area(2, "10 BEEP")
+    lister.load("10 LIST ALL\n20 PRINT 1")
+    lister.run()
+    assert screen.getvalue() == "P0\n10 LIST ALL\n20 PRINT 1\nP2\n10 BEEP\n"  # LIST.md item 13
 
 
 def test_calc_string_is_one_variable_in_any_case():  # reserved-word list: CALC; the library's CALC$=s$

@@ -270,14 +270,18 @@ class InputOutputCompiler:
                   f"{stmt.delete!r}, {stmt.run})")
 
     def stmt_Command(self, stmt, scope):
-        """RUN, LIST, LOAD, SAVE ... in a program: the machine's ``program_command``."""
+        """RUN, LIST, LOAD, SAVE ... in a program: the machine's ``program_command``; the
+        letter after a comma must be one the dialect's command takes."""
+        options = self.words.command_options
+        if stmt.option is not None and stmt.name in options and stmt.option not in options[stmt.name]:
+            raise syntax_error()
         argument = stmt.argument
         if argument is not None and not isinstance(argument, (int, tuple)):
             argument = self.string(argument, scope)
         else:
             argument = repr(argument)
         self.emit("#FLUSH#")
-        self.emit(f"_command({stmt.name!r}, {argument}, {stmt.option!r})")
+        self.emit(f"_command({stmt.name!r}, {argument}, {stmt.option!r}, {stmt.everything})")
         self.emit("#RELOAD#")
 
     # -- the text screen (machine/console.py)

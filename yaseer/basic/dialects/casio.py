@@ -124,7 +124,16 @@ ABSENT_DEVICES = {"COM0:": "the RS-232C port"}
 # longer words of their own.  The scanner reads them keyword-first, so no name holds them
 # (part 6, Variables: reserved words cannot lead a name; ``ASK`` is ``AS K``), and a
 # statement using one stops with ``Unsupported word CSR``.
-RESERVED_ONLY = ("CSR", "KEY", "MID", "VAC", "VAR", "ALL", "AS", "OUT", "PUT", "CALC")
+RESERVED_ONLY = ("CSR", "KEY", "MID", "VAC", "VAR", "AS", "OUT", "PUT", "CALC")
+# The commands a program may hold (read as keywords): LIST [ALL] and LLIST list (LIST.md
+# item 10: then "stands by for command input": the run ends), SAVE [ALL] "file"[,A] and
+# LOAD [ALL] "file"[,A] save or load (SAVE_SAVE_ALL.md item 7, LOAD_LOAD_ALL.md item 4: the
+# files closed, then command standby: the run ends); NEW [ALL] and RUN are refused with
+# the FC error (NEW.md item 7, RUN.md item 5: "cannot be used within a program"; the FC
+# error's meaning 2, "illegal command used in ... program mode").  ALL: every program area.
+PROGRAM_COMMANDS = ("LIST", "LLIST", "SAVE", "LOAD", "NEW", "RUN", "ALL")
+REFUSED_COMMANDS = ("NEW", "RUN")
+COMMAND_OPTIONS = {"LOAD": "A", "SAVE": "A", "RUN": ""}  # ,A: the ASCII format (yaseer's only one)
 # Reserved string variables: CALC$, the formula CALCJMP hands to the CAL mode (the library's
 # ``CALC$=s$``); kept as the variable of that name, in capitals however it is typed.
 RESERVED_VARIABLES = ("CALC$",)
@@ -175,6 +184,8 @@ class Words:
     absent_devices = ABSENT_DEVICES
     reserved_only = RESERVED_ONLY
     reserved_variables = RESERVED_VARIABLES
+    refused_commands = REFUSED_COMMANDS
+    command_options = COMMAND_OPTIONS
     reads_variables = READS_VARIABLES
     empty_statements = EMPTY_STATEMENTS
     computed_restore = COMPUTED_RESTORE

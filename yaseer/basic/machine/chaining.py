@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from yaseer.basic.machine.files import read_program
 from yaseer.basic.errors import (
-    BAD_FILE_MODE, ILLEGAL_FUNCTION_CALL, UNDEFINED_LINE, error_for,
+    BAD_FILE_MODE, ILLEGAL_DIRECT, ILLEGAL_FUNCTION_CALL, UNDEFINED_LINE, error_for,
 )
 from yaseer.basic.machine.signals import ProgramEnd
 
@@ -59,20 +59,26 @@ class Chaining:
         from yaseer.basic.machine.program_file import TOKENISED, program_text
         from yaseer.basic.source.scanner import split_lines
 
-        if "." not in name:
-            name += ".BAS"  # GIO86.ASM NAMBAS
-        data = read_program(self.files.sandbox, name)
+        data = read_program(self.files.sandbox, self._program_name(name))
         if merge and data[:1] >= bytes((TOKENISED - 1,)):
             raise error_for(BAD_FILE_MODE)  # DSKCOM.ASM OKGET2
         text = program_text(data)
         return {number: line for number, line, _ in split_lines(text, self.dialect.joins_unnumbered_lines)}
 
-    def program_command(self, name: str, argument, option) -> None:
+    def program_command(self, name: str, argument, option, everything: bool = False) -> None:
         """A command run by a program (GW-BASIC runs them and, but for RUN, returns to
         direct mode: the run ends): RUN [line | "file"[,R]], LIST/LLIST [range], LOAD
         "file"[,R], SAVE "file"[,A|,P] (always as an ASCII listing), NEW, SYSTEM, DELETE
         range, EDIT line (ends the run: there is no editor in a run), KEY ON/OFF (the
-        function-key line is the screen's: nothing where output is not a terminal)."""
+        function-key line is the screen's: nothing where output is not a terminal).
+
+        The Casio's (dialects/casio.py PROGRAM_COMMANDS): NEW and RUN refused (FC); LIST,
+        SAVE, LOAD as GW's, and with ALL (``everything``) on every program area 0-9."""
+        words = self.dialect.words
+        if words is not None and name in words.refused_commands:
+            raise error_for(ILLEGAL_DIRECT)
+        if everything:
+            self._every_area(name, argument)
         if name == "KEY":
             return
         if name == "RUN":
@@ -101,6 +107,52 @@ class Chaining:
             raise error_for(UNDEFINED_LINE)
         raise ProgramEnd()
 
+    def _every_area(self, name: str, argument) -> None:
+        """LIST ALL, SAVE ALL "file", LOAD ALL "file" (LIST.md item 13, SAVE_SAVE_ALL.md,
+        LOAD_LOAD_ALL.md): the BASIC program areas 0-9 in order.  LIST shows each as a row
+        ``P<n>`` and its lines; the ALL file is yaseer's own ASCII form of the machine's
+        (whose format the manual does not give): each area's listing after a line
+        ``PROG <n>``.  LOAD ALL replaces areas 1-9 by the file's (empty where it has none)
+        and area 0 as LOAD does; then the run ends."""
+        areas = [n for n in range(10) if self.programs.get(n)]
+        if name == "LIST":
+            for n in areas:
+                self.print_items(0, (f"P{n}",), True)
+                self._list_lines(self.programs[n], (None, None), 0)
+        elif name == "SAVE":
+            self._save({}, argument, {n: self.programs[n] for n in areas})
+        else:
+            lines = self._area_files(argument)
+            for n in range(1, 10):
+                if n in lines or n in self.programs:
+                    self.load("\n".join(f"{k} {t}" for k, t in sorted(lines.get(n, {}).items())), n)
+            raise ChainTo(lines.get(0, {}), False, None, True, None, False)
+        raise ProgramEnd()
+
+    def _area_files(self, name: str) -> dict[int, dict[int, str]]:
+        """The areas of an ALL file (see ``_every_area``): area -> its lines."""
+        from yaseer.basic.machine.program_file import program_text
+        from yaseer.basic.source.scanner import split_lines
+
+        text = program_text(read_program(self.files.sandbox, self._program_name(name)))
+        areas: dict[int, list[str]] = {0: []}
+        current = areas[0]
+        for row in text.splitlines():
+            header = row.split()
+            if len(header) == 2 and header[0].upper() == "PROG" and header[1].isdigit():
+                current = areas.setdefault(int(header[1]), [])
+            else:
+                current.append(row)
+        return {n: {k: t for k, t, _ in split_lines("\n".join(rows), self.dialect.joins_unnumbered_lines)}
+                for n, rows in areas.items() if n < 10}
+
+    def _program_name(self, name: str) -> str:
+        """A program file's name as LOAD, SAVE, CHAIN read it: without the device that means
+        the program's directory (the Casio's ``CAS0:``), ``.BAS`` added to a name without
+        ``.`` (GIO86.ASM NAMBAS; ``GOSUB "name"`` finds it too: program_files.py)."""
+        name = self.files._local_name(name)
+        return name if "." in name else name + ".BAS"
+
     def _list_lines(self, program: dict, line_range, device: int) -> None:
         """LIST / LLIST: the lines in ``line_range`` as LIST shows them."""
         from yaseer.basic.source.scanner import detokenize
@@ -110,16 +162,22 @@ class Chaining:
             if (first or 0) <= number <= (65529 if last is None else last):
                 self.print_items(device, (f"{number} {detokenize(program[number], self.dialect)}",), True)
 
-    def _save(self, program: dict, name: str) -> None:
+    def _save(self, program: dict, name: str, areas: dict | None = None) -> None:
         """SAVE: the program as an ASCII listing (CR LF lines, a Ctrl-Z at the end) in the
-        program's directory; GW-BASIC's tokenised and protected forms are not written."""
+        program's directory, in the machine's character codes; GW-BASIC's tokenised and
+        protected forms are not written.  ``areas``: SAVE ALL's areas (see ``_every_area``)."""
         from yaseer.basic.source.scanner import detokenize
 
-        if "." not in name:
-            name += ".BAS"
+        def listing(lines: dict) -> str:
+            return "".join(f"{n} {detokenize(lines[n], self.dialect)}\r\n" for n in sorted(lines))
+
         sandbox = self.files.sandbox
-        text = "".join(f"{n} {detokenize(program[n], self.dialect)}\r\n" for n in sorted(program)) + "\x1a"
-        sandbox.write_bytes(sandbox.dos_name(name), text.encode("latin-1", errors="replace"))
+        if areas is None:
+            text = listing(program)
+        else:
+            text = "".join(f"PROG {n}\r\n" + listing(lines) for n, lines in areas.items())
+        text = self.dialect.charset.codes(text) + "\x1a"
+        sandbox.write_bytes(sandbox.dos_name(self._program_name(name)), text.encode("latin-1", errors="replace"))
 
     def run_again(self, again: RunAgain) -> int:
         """Carry out RUN: the program (a new one from a file), fresh variables, the files

@@ -363,16 +363,20 @@ class _ToAst:
         return ast.Command("RUN", c[1] if len(c) > 1 else None, self._option(c, "R"))
 
     def list_stmt(self, c):
-        return ast.Command(c[0].value, c[1] if len(c) > 1 else (None, None))
+        c, everything = _without_all(c)
+        return ast.Command(c[0].value, c[1] if len(c) > 1 else (None, None), everything=everything)
 
     def load_stmt(self, c):
-        return ast.Command("LOAD", c[1], self._option(c, "R"))
+        c, everything = _without_all(c)
+        return ast.Command("LOAD", c[1], self._option(c, "RA"), everything)
 
     def save_stmt(self, c):
-        return ast.Command("SAVE", c[1], self._option(c, "AP"))
+        c, everything = _without_all(c)
+        return ast.Command("SAVE", c[1], self._option(c, "AP"), everything)
 
     def new_stmt(self, c):
-        return ast.Command(c[0].value)
+        c, everything = _without_all(c)
+        return ast.Command(c[0].value, everything=everything)
 
     def delete_stmt(self, c):
         return ast.Command("DELETE", c[1])
@@ -656,6 +660,14 @@ def _parse(tokens: list) -> list:
             if state == END:
                 return values[-1]
     raise AssertionError("the end of the line was shifted")  # the tables never shift $END
+
+
+def _without_all(c: list) -> tuple[list, bool]:
+    """A command's children without the ``ALL`` after its keyword (the Casio's NEW ALL, LIST
+    ALL, SAVE ALL, LOAD ALL: every program area), and whether it was there."""
+    if len(c) > 1 and isinstance(c[1], Token) and c[1].type == "ALL":
+        return [c[0], *c[2:]], True
+    return c, False
 
 
 def parse_statements(text: str, dialect: Dialect = CASIO) -> list:

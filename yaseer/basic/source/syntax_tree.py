@@ -362,10 +362,12 @@ class Chain:
 class Command:
     """A command run by a program: ``name`` RUN LIST LLIST LOAD SAVE NEW SYSTEM DELETE EDIT
     KEY; ``argument`` its file name expression, line or line range; ``option`` the
-    letter after the comma (``,R`` ``,A`` ``,P``) or KEY's ON/OFF."""
+    letter after the comma (``,R`` ``,A`` ``,P``) or KEY's ON/OFF; ``everything`` the
+    Casio's ALL (NEW ALL, LIST ALL, SAVE ALL, LOAD ALL: every program area)."""
     name: str
     argument: object = None
     option: object = None
+    everything: bool = False
 
 
 @_node
