@@ -116,7 +116,7 @@ DATA_TO_LINE_END = True
 ABSENT_DEVICES = {"COM0:": "the RS-232C port"}
 # Reserved words of the manual's list (part 12) with no page and no use in a program: the
 # PB-100 series' CSR, KEY, MID, VAC, VAR (PBLOAD_PBGET.md: such words of a PB-100 program are
-# an SN error when run) and ALL (of NEW ALL, LIST ALL, SAVE ALL, LOAD ALL: direct commands).
+# an SN error when run).
 # AS, OUT and PUT have no page either: their one use is OPEN's ``FOR OUTPUT AS`` (OUTPUT read
 # as OUT PUT, the reason both are reserved), which the scanner gives the grammar as the words
 # OPEN reads (scanner._open_words).  CALC is the CAL mode's key (part 5, "CALC: executes
