@@ -49,6 +49,31 @@ def test_input_moves_the_cursor_to_the_next_row_as_exe_does():
     assert shown == ["TOP\n\n", "5\nNEXT\n"]
 
 
+def test_input_takes_the_screen_from_the_cursor_to_the_end_of_the_logical_line():
+    # INPUT.md item 8: all data from the cursor position to the end of the current logical
+    # line are input when EXE is pressed; the keys typed replace what was under them
+    program = '10 CLS: PRINT "VALUE 12345"\n20 LOCATE 6,0: INPUT A\n30 PRINT A*2;'
+    result = yaseer.run(program, input="9\n")
+    assert result.screens[-1] == "VALUE ? 945\n 1890\n"  # "? " over 12, 9 over 3: the line reads 945
+    program = '10 CLS: PRINT "NAME JOHN SMITH"\n20 LOCATE 0,0: INPUT "NAME ",N$\n30 PRINT "[";N$;"]";'
+    assert yaseer.run(program, input="\n").screens[-1] == "NAME JOHN SMITH\n[JOHN SMITH]\n"  # EXE alone: the screen's text
+    # a logical line goes on into the row its text wrapped into (32 columns a row)
+    program = ('10 CLS: PRINT STRING$(30,"-");"ABCDEF"\n20 LOCATE 29,0: INPUT "",S$\n'
+               '30 PRINT S$;')
+    assert yaseer.run(program, input="\n").screens[-1].endswith("\n-ABCDEF\n")  # typed over CDEF
+    # a row begun by a line end is a logical line of its own
+    program = '10 CLS: PRINT "AB"\n20 PRINT "CD"\n30 LOCATE 0,0: INPUT "",S$\n40 PRINT S$;'
+    assert yaseer.run(program, input="\n").screens[-1] == "AB\nAB\n"
+
+
+def test_input_takes_only_the_keys_while_nothing_was_placed():
+    # a program that only PRINTs: INPUT reads the keys, as the paper's listings always did
+    assert yaseer.run('10 PRINT "12345";: INPUT A: PRINT A', input="9\n").text == "12345? 9\n 9 \n"
+    # gw: GW-BASIC's INPUT takes the keys typed
+    result = yaseer.run('10 CLS: PRINT "12345": LOCATE 1,1: INPUT A: PRINT A', input="9\n", dialect="gw")
+    assert "\n 9\n" in result.text  # (the screen shows "? 945": the keys over the old text)
+
+
 def test_the_window_follows_the_cursor_over_the_virtual_screen():
     # part 6 "Virtual screen function": 8 lines, 2 shown; LOCATE's range 0..31, 0..7
     program = '10 CLS: FOR I=0 TO 7: LOCATE 0,I: PRINT "LINE";I;: NEXT\n20 LOCATE 0,3: A$=INPUT$(1)'

@@ -32,6 +32,10 @@ control code does its ``controls``.
 * ``trace_halts``: True puts the mark on a row of its own and suspends the run there
   until EXE is pressed (TRON.md, item 2; part 6 "Irregular execution"); the keys must
   come from a person at a terminal for that (see InputOutput.trace_line).
+* ``input_reads_screen``: True makes INPUT, on a drawn display, take everything from the
+  cursor (after its prompt) to the end of the logical line when EXE is pressed: the keys
+  typed over what the screen held there (the Casio's INPUT.md, item 8); False takes the
+  keys typed alone.
 """
 
 from __future__ import annotations
@@ -40,11 +44,11 @@ from collections import namedtuple
 
 ScreenRules = namedtuple("ScreenRules", ("late_wrap", "origin", "row_first", "locate_arguments",
                                          "function_keys", "key_label", "clear_draws", "attributes",
-                                         "trace_mark", "trace_halts"))
+                                         "trace_mark", "trace_halts", "input_reads_screen"))
 
 CASIO_SCREEN = ScreenRules(late_wrap=False, origin=0, row_first=False, locate_arguments=(2, 2),
                            function_keys=(), key_label=0, clear_draws=True, attributes=False,
-                           trace_mark="P{area}-{line}", trace_halts=True)
+                           trace_mark="P{area}-{line}", trace_halts=True, input_reads_screen=True)
 
 # GW-BASIC's soft keys at start (F1..F10; GWSTS.ASM's table is the OEM's, these are the
 # IBM PC's as PC-BASIC 2.0.8 has them); a carriage return ends several.
@@ -53,7 +57,7 @@ GW_FUNCTION_KEYS = ("LIST ", "RUN\r", 'LOAD"', 'SAVE"', "CONT\r", ',"LPT1:"\r', 
 
 GW_SCREEN = ScreenRules(late_wrap=True, origin=1, row_first=True, locate_arguments=(0, 5),
                         function_keys=GW_FUNCTION_KEYS, key_label=6, clear_draws=False, attributes=True,
-                        trace_mark="[{line}]", trace_halts=False)
+                        trace_mark="[{line}]", trace_halts=False, input_reads_screen=False)
 
 # What each control code does on GW-BASIC's text screen when PRINTed (the OEM's PRTMAP is
 # not in the published source; PC-BASIC 2.0.8's console does this): TAB to the next

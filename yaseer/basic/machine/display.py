@@ -50,7 +50,7 @@ class Display:
     """``columns`` x ``rows`` character cells, ``shown`` rows visible (see module docstring)."""
 
     __slots__ = ("columns", "rows", "shown", "controls", "rules", "cells", "attrs", "attr", "x", "y", "top",
-                 "drawn", "changed", "view_top", "view_bottom", "view_set", "keys", "keys_on")
+                 "joined", "drawn", "changed", "view_top", "view_bottom", "view_set", "keys", "keys_on")
 
     def __init__(self, columns: int, rows: int, shown: int | None = None, controls: dict | None = None,
                  rules=CASIO_SCREEN):
@@ -70,6 +70,7 @@ class Display:
     def _new_cells(self) -> None:
         """A blank screen of the current size, the cursor home, the whole screen's window."""
         self.cells = [[" "] * self.columns for _ in range(self.rows)]
+        self.joined = [False] * self.rows  # row k goes on from row k - 1 (text wrapped into it)
         self.attrs = [[NORMAL] * self.columns for _ in range(self.rows)] if self.rules.attributes else None
         self.reset_view()
         self.x, self.y, self.top = 0, 0, 0
@@ -91,6 +92,7 @@ class Display:
         first, last = (0, self.rows - 1) if whole else (self.view_top, self.view_bottom)
         for k in range(first, last + 1):
             self.cells[k] = [" "] * self.columns
+            self.joined[k] = False
             if self.attrs is not None:
                 self.attrs[k] = [self.attr & 0x70 | NORMAL] * self.columns  # CLS keeps the background
         if whole:
@@ -192,6 +194,7 @@ class Display:
         while run:
             if self.x >= columns:
                 self.new_line()  # the wrap that waited for this character
+                self.joined[self.y] = True
             room = columns - self.x
             piece = run[:room]
             self.cells[self.y][self.x:self.x + len(piece)] = piece
@@ -201,9 +204,11 @@ class Display:
             run = run[room:]
             if self.x >= columns and not late:
                 self.new_line()
+                self.joined[self.y] = True
 
     def _carriage_return(self) -> None:
         self.new_line()  # (after a full row: its waiting wrap, one new row)
+        self.joined[self.y] = False
 
     def _line_feed(self) -> None:
         self._down()
@@ -288,6 +293,8 @@ class Display:
         """Move the rows that scroll up one; the last of them becomes blank."""
         del self.cells[self.view_top]
         self.cells.insert(self.view_bottom, [" "] * self.columns)
+        del self.joined[self.view_top]
+        self.joined.insert(self.view_bottom, False)
         if self.attrs is not None:
             del self.attrs[self.view_top]
             self.attrs.insert(self.view_bottom, [self.attr] * self.columns)
@@ -316,6 +323,16 @@ class Display:
     def char_at(self, x: int, y: int) -> str:
         """The character in column ``x`` of row ``y``."""
         return self.cells[y][x]
+
+    def logical_line_from(self, x: int, y: int) -> str:
+        """The characters from column ``x`` of row ``y`` to the end of its logical line: on
+        through the rows its text wrapped into (INPUT.md, item 8)."""
+        text = "".join(self.cells[y][x:])
+        k = y + 1
+        while k < self.rows and self.joined[k]:
+            text += "".join(self.cells[k])
+            k += 1
+        return text
 
     def attr_at(self, x: int, y: int) -> int:
         """The colour attribute of column ``x`` of row ``y`` (0..255; 7 without colours)."""

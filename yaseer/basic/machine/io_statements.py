@@ -284,6 +284,7 @@ class InputOutput:
             if self._break_armed is not None and again is not None:
                 raise KeyboardInterrupt  # a Ctrl-C came just before: the break lands here
             self.screen.write(prompt)
+            under = self._text_under_cursor()
             self.show_screen()
             self.screen.flush()
             line = stream.readline()
@@ -304,7 +305,17 @@ class InputOutput:
             self.screen.column = 0
             if self.display is not None and self.display.drawn:  # the keys typed show on the LCD too
                 self.display.write(line if line.endswith("\n") else line + "\n")
-        return line.rstrip("\r\n")
+        line = line.rstrip("\r\n")
+        return (line + under[len(line):]).rstrip(" ") if under else line
+
+    def _text_under_cursor(self) -> str:
+        """What the screen holds from the cursor to the end of its logical line, where the
+        dialect's INPUT takes it with the keys typed over it (``input_reads_screen``; only on
+        a drawn display: streamed text has nothing placed after the cursor)."""
+        display = self.display
+        if display is None or not display.drawn or not display.rules.input_reads_screen:
+            return ""
+        return display.logical_line_from(display.column(), display.row()).rstrip(" ")
 
     def end_line(self) -> None:
         """Finish a partly printed line (before an error message, as MS-BASIC does; csv: its row)."""
