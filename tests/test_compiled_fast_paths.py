@@ -334,3 +334,53 @@ def test_a_single_loop_past_two_to_the_24_rounds_each_step(loop, body):
     general = gw_machine(f"10 FOR I={loop}: {body}: NEXT\n" + DEFEAT)
     assert fast.scalars == general.scalars
     assert fast.scalars["K!"] >= 5
+
+
+def test_gw_transcendental_functions_are_their_steps_without_a_rounding_test():
+    """SIN COS TAN ATN LOG EXP give a single already (gw_transcendental's steps): the compiled
+    code uses their value as it is, without the nearest-single test SQR's value gets; the
+    values are those of the functions, with an overflow through the policy, as the helpers
+    alone (the general code, tests_inline off) give them."""
+    from yaseer.basic.arithmetic import gw_transcendental as gw
+    from yaseer.basic.arithmetic.values import SINGLE_LARGEST
+    from yaseer.basic.compile import number_models
+
+    rng = random.Random(22)
+    arguments = [0.0, -0.0, 1e-30, -3.0, 0.5, 1.0, 88.0, 89.0, -89.0, 1e6, 1e30, -1e30] + [
+        float(str(rng.choice([-1, 1]) * rng.uniform(0.5, 1) * 2.0 ** rng.randint(-20, 25))[:9]) for _ in range(60)]
+    functions = {"SIN": gw.sin, "COS": gw.cos, "TAN": gw.tan, "ATN": gw.atn, "EXP": gw.exp,
+                 "LOG": lambda x: gw.log(abs(x)) if x else 0.0}
+    lines = [f"{10 + k} X{k}!={a!r}: " + ": ".join(
+        f"{name}{k}={name}({f'ABS(X{k}!)' if name == 'LOG' else f'X{k}!'})" if name != "LOG" or a else f"{name}{k}=0"
+        for name in functions) for k, a in enumerate(arguments)]
+    program = "\n".join(lines) + "\n"
+    fast = gw_machine(program)
+    assert "_sin(" in fast.compiled[0].source and "(_sv := _sin(" not in fast.compiled[0].source
+    original = number_models.TypedNumbers.__init__
+
+    def helpers_only(self, def_types=None):
+        original(self, def_types)
+        self.tests_inline = False
+
+    general = pytest.MonkeyPatch()
+    general.setattr(number_models.TypedNumbers, "__init__", helpers_only)
+    try:
+        slow = gw_machine(program + "9999 REM (another text: not the compiled cache's entry)\n")
+    finally:
+        general.undo()
+    assert "_sfn(_sin(" in slow.compiled[0].source
+    checked = 0
+    for k in range(len(arguments)):
+        a = fast.scalars[f"X{k}!"]  # the literal as read and stored in a single
+        for name, function in functions.items():
+            value = fast.scalars[f"{name}{k}!"]
+            assert value == slow.scalars[f"{name}{k}!"], (name, a)
+            try:
+                expected = function(a)
+            except ZeroDivisionError:
+                continue
+            if expected in (math.inf, -math.inf):
+                expected = math.copysign(SINGLE_LARGEST, expected)
+            assert value == expected, (name, a)
+            checked += 1
+    assert checked > 400

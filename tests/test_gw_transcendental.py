@@ -272,13 +272,28 @@ def test_fractional_power_is_exp_of_log():
             assert gw.power(x, y) == float(expected), (x, y)
 
 
-# ---------------------------------------------------------------- the integer steps
-# gw_transcendental's $POLY runs on integer mantissas (mbf_integers.poly); its step-by-step
-# form on single_arith's product and add (poly_steps) is the reference it must equal.
+# ---------------------------------------------------------------- the fast steps
+# gw_transcendental's $POLY runs on floats (mbf_floats.poly) or on integer mantissas
+# (mbf_integers.poly); its step-by-step form on single_arith's product and add (poly_steps)
+# is the reference both must equal.
 
 POLYNOMIALS = {"SIN": gw._SIN_COEFFICIENTS, "ATN reduction": gw._ATN_REDUCTION, "ATN": gw._ATN_COEFFICIENTS,
                "LOG numerator": gw._LOG_NUMERATOR, "LOG denominator": gw._LOG_DENOMINATOR,
                "EXP": gw._EXP_COEFFICIENTS}
+
+
+def polynomial_arguments(name: str, low: int = -128) -> list[float]:
+    """Every binade from 2**low to 4 an argument of the functions reaches (ATN's x*x down to
+    the least single), and within a binade mantissas of every kind: random, and next to a
+    power of two (where products and sums carry or cancel)."""
+    rng = random.Random(name)
+    arguments = [0.0, single_arith.TINY, 1.0, 0.5]
+    for _ in range(6000):
+        binade = 2.0 ** rng.randint(low, 2)
+        arguments.append(single_arith.nearest(rng.uniform(0.5, 1.0) * binade))
+        arguments.append(binade * (1 - 2.0 ** -24 * rng.randint(1, 64)))
+        arguments.append(binade * (0.5 + 2.0 ** -24 * rng.randint(1, 64)))
+    return arguments
 
 
 @pytest.mark.parametrize("name", list(POLYNOMIALS))
@@ -287,32 +302,93 @@ def test_integer_polynomial_equals_the_steps(name):
 
     coefficients = POLYNOMIALS[name]
     parts = mbf_integers.coefficient_parts(coefficients)
-    rng = random.Random(name)
     handed_back = 0
-    # every binade an argument of the functions reaches (ATN's x*x down to the least
-    # single), and within a binade mantissas of every kind: random, and next to a
-    # power of two (where products and sums carry or cancel)
-    arguments = [0.0, single_arith.TINY, 1.0, 0.5]
-    for _ in range(6000):
-        binade = 2.0 ** rng.randint(-128, 2)
-        arguments.append(single_arith.nearest(rng.uniform(0.5, 1.0) * binade))
-        arguments.append(binade * (1 - 2.0 ** -24 * rng.randint(1, 64)))
-        arguments.append(binade * (0.5 + 2.0 ** -24 * rng.randint(1, 64)))
-    for x in arguments:
+    for x in polynomial_arguments(name):
         fast = mbf_integers.poly(x, parts)
         handed_back += fast is None and x >= 2.0 ** -100
         assert fast is None or fast == gw.poly_steps(x, coefficients), (name, x)
     assert not handed_back  # only near the range's end are the steps handed back
 
 
+@pytest.mark.parametrize("name", list(POLYNOMIALS))
+def test_float_polynomial_equals_the_steps(name):
+    """mbf_floats.poly over its whole domain (2**-60 to 1), and where the functions call it:
+    SIN's t*t (up to 1/16), LOG's mantissas (1/2 to 1), EXP's fractions, ATN's reduced x."""
+    from yaseer.basic.arithmetic import mbf_floats
+
+    coefficients = POLYNOMIALS[name]
+    planned = mbf_floats.plan(coefficients)
+    rng = random.Random(name + " where called")
+    arguments = [x for x in polynomial_arguments(name, -60) if mbf_floats.LEAST_ARGUMENT <= x <= 1.0]
+    arguments += [single_arith.nearest(rng.uniform(0.5, 1.0)) for _ in range(3000)]
+    arguments += [single_arith.nearest(rng.uniform(0.0, 1.0) ** 2) for _ in range(3000)]
+    arguments += [1.0 - 2.0 ** -24 * k for k in range(1, 200)] + [0.5 + 2.0 ** -24 * k for k in range(200)]
+    handed_back = 0
+    for x in arguments:
+        fast = mbf_floats.poly(x, planned)
+        handed_back += fast is None
+        assert fast is None or fast == gw.poly_steps(x, coefficients), (name, x)
+    assert handed_back <= len(arguments) // 1000  # only a sum of exactly 0 is handed back
+
+
+def _reduced_by_integers(x: float, quarter: bool):
+    """RR and SIN30's reduction on integers (gw_transcendental's reference): (t, negated)."""
+    numerator, bits = gw._turns(x)
+    if quarter:
+        numerator, bits = gw._quarter_turn_added(numerator, bits)
+        numerator &= (1 << bits) - 1
+    quadrant = numerator >> (bits - 2)
+    angle = numerator & ((1 << (bits - 2)) - 1)
+    if quadrant & 1:
+        angle = (1 << (bits - 2)) - angle
+    extra = angle.bit_length() - 25
+    if extra >= 0:
+        return math.ldexp((angle >> extra) + 1 >> 1, extra + 1 - bits), quadrant >= 2
+    return math.ldexp(angle, -bits), quadrant >= 2
+
+
+def test_float_reduction_equals_the_integer_steps():
+    """_quarter_angle (floats) gives the integer reduction's angle wherever it does not hand
+    the argument back: whole numbers, random singles of every binade it takes, and angles
+    next to a multiple of a quarter turn (where the reduced angle is small and the rounding
+    to 24 bits is finest)."""
+    rng = random.Random(8)
+    arguments = [float(k) for k in range(1, 3000)] + [float(k) for k in range(1048000, 1048576)]
+    arguments += [single_arith.nearest(rng.uniform(0.5, 1.0) * 2.0 ** rng.randint(-10, 19)) for _ in range(8000)]
+    arguments += [single_arith.nearest(math.pi / 2 * rng.randint(1, 600000) * (1 + rng.uniform(-1e-6, 1e-6)))
+                  for _ in range(4000)]
+    handed_back = 0
+    for x in arguments:
+        if not 2.0 ** -10 <= x < 2.0 ** 20:
+            continue
+        for quarter in (False, True):
+            fast = gw._quarter_angle(x, float(quarter))
+            handed_back += fast is None
+            assert fast is None or fast == _reduced_by_integers(x, quarter), (x, quarter)
+    assert handed_back < len(arguments) // 10  # (the angles next to a quarter turn are handed back)
+
+
+class _Forgetful(dict):
+    """A memo that never remembers (the LOG memo defeated)."""
+
+    def get(self, key, default=None):
+        return default
+
+
 def test_functions_equal_their_step_by_step_form(monkeypatch):
-    from yaseer.basic.arithmetic import mbf_integers
+    from yaseer.basic.arithmetic import mbf_floats, mbf_integers
 
     functions = (gw.sin, gw.cos, gw.tan, gw.atn, lambda x: gw.log(abs(x)) if x else 0.0,
                  lambda x: gw.exp(x if abs(x) < 80 else x / 2.0 ** 20))
-    arguments = list(random_singles(12, 3000, -30, 30))
+    arguments = list(random_singles(12, 3000, -30, 30)) + [float(k) for k in range(-300, 3000)]
+    arguments += [float(k) for k in range(1, 3000)]  # again: LOG's memo now holds their mantissas
     fast = [[f(x) for x in arguments] for f in functions]
-    monkeypatch.setattr(mbf_integers, "poly", lambda x, parts: None)  # every $POLY step by step
+    # every fast path defeated: $POLY step by step, the reduction on integers, no memo
+    monkeypatch.setattr(mbf_floats, "poly", lambda x, planned: None)
+    monkeypatch.setattr(mbf_floats, "fmuls", single_arith.product)
+    monkeypatch.setattr(mbf_integers, "poly", lambda x, parts: None)
+    monkeypatch.setattr(gw, "_quarter_angle", lambda x, quarter: None)
+    monkeypatch.setattr(gw, "_LOG_RATIOS", _Forgetful())
     assert fast == [[f(x) for x in arguments] for f in functions]
 
 

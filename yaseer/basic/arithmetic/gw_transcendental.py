@@ -29,7 +29,7 @@ from __future__ import annotations
 
 from math import floor, frexp, inf, ldexp
 
-from yaseer.basic.arithmetic import mbf_integers
+from yaseer.basic.arithmetic import mbf_floats, mbf_integers
 from yaseer.basic.arithmetic.single_arith import add, divide, from_double, power_by_integer, product, subtract
 
 
@@ -98,9 +98,11 @@ _EXP_COEFFICIENTS = tuple(map(_mbf, (  # Hart 1302: 2**z, 0 <= z < 1
 )))
 
 
-# The coefficients as mbf_integers' integer pairs, by the identity of their tuple.
-_PARTS = {id(c): mbf_integers.coefficient_parts(c) for c in (
-    _SIN_COEFFICIENTS, _ATN_REDUCTION, _ATN_COEFFICIENTS, _LOG_NUMERATOR, _LOG_DENOMINATOR, _EXP_COEFFICIENTS)}
+# The coefficients as mbf_floats' plans and mbf_integers' integer pairs, by the identity of their tuple.
+_POLYNOMIALS = (_SIN_COEFFICIENTS, _ATN_REDUCTION, _ATN_COEFFICIENTS, _LOG_NUMERATOR, _LOG_DENOMINATOR,
+                _EXP_COEFFICIENTS)
+_PLANS = {id(c): mbf_floats.plan(c) for c in _POLYNOMIALS}
+_PARTS = {id(c): mbf_integers.coefficient_parts(c) for c in _POLYNOMIALS}
 
 
 def poly_steps(x: float, coefficients) -> float:
@@ -113,14 +115,25 @@ def poly_steps(x: float, coefficients) -> float:
 
 
 def _poly(x: float, coefficients) -> float:
-    """``$POLY`` (``x`` >= 0, as every caller's is): the same steps on integers
-    (mbf_integers.poly), or :func:`poly_steps` where those hand it back."""
+    """``$POLY`` (``x`` >= 0, as every caller's is): the same steps on floats
+    (mbf_floats.poly, for ``x`` from 2**-60 to 1) or on integers (mbf_integers.poly), or
+    :func:`poly_steps` where those hand it back."""
+    if mbf_floats.LEAST_ARGUMENT <= x <= 1.0:
+        result = mbf_floats.poly(x, _PLANS[id(coefficients)])
+        if result is not None:
+            return result
     result = mbf_integers.poly(x, _PARTS[id(coefficients)])
     return poly_steps(x, coefficients) if result is None else result
 
 
 def _polyx(x: float, coefficients) -> float:
-    """``$POLYX``: ``x * P(x*x)``, each product ``$FMULS``."""
+    """``$POLYX``: ``x * P(x*x)``, each product ``$FMULS`` (mbf_floats.fmuls well inside the
+    range: ``x`` from 2**-30 to 1, and a polynomial's value from 2**-30 to 2**30)."""
+    if 9.313225746154785e-10 <= x <= 1.0:  # 2**-30
+        value = _poly(mbf_floats.fmuls(x * x), coefficients)
+        if 9.313225746154785e-10 <= value <= 1073741824.0:
+            return mbf_floats.fmuls(value * x)
+        return product(value * x)
     return product(_poly(product(x * x), coefficients) * x)
 
 
@@ -209,18 +222,77 @@ def _sine_of_turns(numerator: int, bits: int) -> float:
     return -result if quadrant >= 2 and result else result
 
 
+# 1/(2*pi) of $IN2PI in two parts of 28 bits, so that a single times either is exact in a double
+_INVERSE_TWO_PI_HIGH = ldexp(_INVERSE_TWO_PI >> 28, -30)
+_INVERSE_TWO_PI_LOW = ldexp(_INVERSE_TWO_PI & ((1 << 28) - 1), -58)
+_REDUCED_ABOVE = 2.0 ** -20  # (a quarter angle below it in size: the integer steps)
+_UFP = 4503599627370497.0  # 2**52 + 1: q - (1 - 2**-53) * q is the leading power of two of a (q = a * _UFP)
+_HALF_UNIT_MAGIC = 1.5 * 2.0 ** 29  # times a leading power of two: the magic number of its unit
+_HALF_UNIT = 2.0 ** -53 / 1.5  # the magic number times this: half its unit
+
+
+def _quarter_angle(x: float, quarter: float) -> tuple[float, bool] | None:
+    """The fast path of RR/SIN30 on floats: for ``x`` (a single, 2**-10 <= x < 2**20) plus
+    ``quarter`` quarter turns (0 for SIN, 1 for COS), the single ``t`` (turns, below a
+    quarter) that $SIN's polynomial gets and whether the sine is negated (quadrants 2
+    and 3); None where the float value of the reduced angle lies too near a point where
+    the rounding to 24 bits changes (or below 2**-20): the integer steps decide there.
+
+    ``x`` times the two 28-bit halves of 1/(2*pi) are exact; the fraction of the first
+    is exact, the sum with the second and the quarter turn are off by at most 2**-50
+    quarter turns, and MBF's 56-bit rounding of the product ($FMULD) and of the quarter
+    turn's sum ($FADDD) by at most x * 2**-53 quarter turns.  $CSD rounds the angle in
+    its quadrant half up to 24 bits: where the float angle is farther than that bound
+    from a half unit, the exact one rounds the same way (to the nearest)."""
+    high = x * _INVERSE_TWO_PI_HIGH
+    turns = (high % 1.0 + x * _INVERSE_TWO_PI_LOW) * 4.0 + quarter  # in quarter turns
+    quadrant = 0
+    while turns >= 1.0:
+        turns -= 1.0
+        quadrant += 1
+    if quadrant & 1:
+        turns = 1.0 - turns
+    if turns < _REDUCED_ABOVE:
+        return None
+    q = turns * _UFP
+    magic = (q - 0.9999999999999999 * q) * _HALF_UNIT_MAGIC
+    rounded = (turns + magic) - magic
+    off = turns - rounded
+    bound = magic * _HALF_UNIT - (x + 16.0) * 2.0 ** -50  # half a unit less the error
+    if -bound < off < bound:
+        return rounded * 0.25, quadrant & 2 == 2
+    return None
+
+
+def _sine_of_quarter(t: float, negative: bool) -> float:
+    """``SIN30``'s end: the sine of ``t`` turns (a single below a quarter) by Hart 3341 (below
+    2**-13: times 2*pi), negated when ``negative``."""
+    if t < 1.220703125e-04:  # 2**-13
+        result = product(t * _TWO_PI)
+    else:
+        result = _polyx(t, _SIN_COEFFICIENTS)
+    return -result if negative and result else result
+
+
 def sin(x) -> float:
     """SIN as ``$SIN``: below 2**-10 in size the argument itself; else the sine of the
     angle reduced to a quarter turn, by Hart 3341, with the sign of ``x``."""
     if -9.765625e-04 < x < 9.765625e-04:  # 2**-10
         return x + 0.0
-    result = _sine_of_turns(*_turns(-x if x < 0 else x))
+    size = -x if x < 0 else x
+    reduced = _quarter_angle(size, 0.0) if size < 1048576.0 else None
+    result = _sine_of_turns(*_turns(size)) if reduced is None else _sine_of_quarter(*reduced)
     return -result if x < 0 and result else result
 
 
 def cos(x) -> float:
     """COS as ``$COS``: the sine of the reduced angle plus a quarter turn (a double sum)."""
-    numerator, bits = _quarter_turn_added(*_turns(-x if x < 0 else x))
+    size = -x if x < 0 else x
+    if 9.765625e-04 <= size < 1048576.0:
+        reduced = _quarter_angle(size, 1.0)
+        if reduced is not None:
+            return _sine_of_quarter(*reduced)
+    numerator, bits = _quarter_turn_added(*_turns(size))
     return _sine_of_turns(numerator & ((1 << bits) - 1), bits)
 
 
@@ -257,8 +329,18 @@ def log(x) -> float:
     if x == 1:
         return 0.0
     m, e = frexp(x)
-    ratio = divide(_poly(m, _LOG_NUMERATOR), _poly(m, _LOG_DENOMINATOR))
+    ratio = _LOG_RATIOS.get(m)
+    if ratio is None:
+        if len(_LOG_RATIOS) >= _LOG_MEMO_SIZE:
+            _LOG_RATIOS.clear()
+        ratio = _LOG_RATIOS[m] = divide(_poly(m, _LOG_NUMERATOR), _poly(m, _LOG_DENOMINATOR))
     return product(add(float(e), ratio) * _LN2)
+
+
+# $LOG's P(m)/Q(m) by the mantissa m (x and 2x share it: a loop over whole numbers finds half
+# of them here); emptied when full
+_LOG_RATIOS: dict[float, float] = {}
+_LOG_MEMO_SIZE = 4096
 
 
 def _overflowed(negative: bool) -> float:

@@ -139,6 +139,9 @@ class TypedNumbers(PlainNumbers):
 
     # functions GW-BASIC computes in single precision from an argument made single
     _SINGLE_FUNCTIONS = frozenset(("SIN", "COS", "TAN", "ATN", "SQR", "EXP", "LOG"))
+    # ... of which these give a single already (GW's steps, gw_transcendental.py; a value beyond
+    # the range is the policy's or an infinity, which the statement's overflow check takes)
+    _STEPPED_FUNCTIONS = frozenset(("SIN", "COS", "TAN", "ATN", "EXP", "LOG"))
 
     def __init__(self, def_types=None):
         self.letters: dict[str, str] = dict(def_types or {})
@@ -311,6 +314,8 @@ class TypedNumbers(PlainNumbers):
                 return code, "!"
             if name in self._SINGLE_FUNCTIONS and kinds and kinds[0] in "#?":  # computed on the single
                 code = f"{helper}({', '.join([self.convert(codes[0], '#', '!')] + codes[1:])})"
+            if name in self._STEPPED_FUNCTIONS and self.tests_inline:
+                return code, "!"
             # the nearest single (single_arith.function_result), found inline where it is clear
             split = f"(_sc := (_sv := {code}) * 536870913.0)"
             # a single's square root is never halfway between singles (the square of a 25-bit odd
