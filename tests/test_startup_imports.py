@@ -78,6 +78,39 @@ def test_a_warm_run_calling_the_programs_loads_their_formulas_only(cache):
     assert imported == set(NOT_WITHOUT_PROG) | {"decimal"}  # decimal: its PRINT USING rounds with it
 
 
+FORMULAS = ("yaseer.linkages.planar", "yaseer.linkages.kinetostatics", "yaseer.linkages.fourbar",
+            "yaseer.linkages.slider_crank", "yaseer.linkages.inverted_slider_crank", "yaseer.linkages.virtual_link")
+"""The linkage formulas: a warm run whose library calls all take paths kept on disk runs none of them."""
+
+
+@pytest.mark.parametrize("example", ["example1", "example5"])
+def test_a_warm_run_of_kept_paths_imports_no_formula(cache, example):
+    output, imported = warm_run(ROOT / "listings" / f"{example}.bas", cache, WATCHED + FORMULAS)
+    assert output == (ROOT / "tests" / "golden" / f"{example}.txt").read_text()
+    assert "yaseer.linkages" in imported and not imported & set(FORMULAS)
+
+
+def test_the_formulas_are_the_package_names_at_first_use():
+    """The package's names are imported when first used; a function named as its module stays
+    the function when that module is imported (as the import system binds it in the package)."""
+    probe = ("import yaseer.linkages as L, sys\n"
+             "before = sorted(m for m in sys.modules if m.startswith('yaseer.linkages.'))\n"
+             "import yaseer.linkages.fourbar, yaseer.linkages.virtual_link\n"
+             "print(before, callable(L.fourbar), L.fourbar.__module__, L.virtual_link.__name__,\n"
+             "      L.MassProps.__module__, 'slider_crank' in dir(L), L.CROSSED != L.UNCROSSED)")
+    done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True,
+                          env=dict(os.environ, PYTHONPATH=PACKAGE_PARENT))
+    assert done.stdout.split() == ["[]", "True", "yaseer.linkages.fourbar", "virtual_link",
+                                   "yaseer.linkages.kinetostatics", "True", "True"]
+    from yaseer.linkages.registry import default_method, method_names
+
+    assert "paper" in method_names("virtual_link") and default_method("virtual_link") == "polar"
+    with pytest.raises(AttributeError):
+        import yaseer.linkages
+
+        yaseer.linkages.no_such_name  # noqa: B018
+
+
 def test_the_watched_modules_are_those_the_other_paths_need(cache):
     """The probe can see them: PRINT USING, INPUT and a file do load them (no -S needed here)."""
     listing = cache.parent / "other.bas"

@@ -58,14 +58,26 @@ def _load_extensions() -> None:
                 raise
 
 
+def _load_linkage(linkage: str) -> None:
+    """Import the module of ``linkage`` (named as it is), which registers its own methods."""
+    module = f"yaseer.linkages.{linkage}"
+    try:
+        __import__(module)
+    except ModuleNotFoundError as error:  # no such linkage: it has no methods
+        if error.name != module:
+            raise
+
+
 def method_names(linkage: str) -> list[str]:
     """The registered method names of ``linkage``, sorted."""
+    _load_linkage(linkage)
     _load_extensions()
     return sorted(_REGISTRY.get(linkage, {}))
 
 
 def default_method(linkage: str) -> str:
     """The name of the method used when none is asked for."""
+    _load_linkage(linkage)
     return _DEFAULTS[linkage]
 
 
