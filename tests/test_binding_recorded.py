@@ -255,3 +255,66 @@ def test_the_compiled_recording_drops_only_unused_values_that_cannot_raise():
     namespace = {"_a_L": [0.0, 4.0], "_a_X": [0.0, 0.0], "_sqrt": math.sqrt}
     exec("\n".join(renamed), namespace)
     assert namespace["_a_X"][1] == 4.0
+
+
+def test_a_recorded_path_makes_missing_arrays_where_the_plain_code_makes_them():
+    # a path recorded on one machine, run on a fresh one whose output arrays do not exist yet
+    # (the arrays are looked up together only where all exist): the same numbers, the same arrays
+    def fresh():
+        m = machine(2, 2.0, 1)
+        return m, sorted(m.arrays)
+
+    binding._recordings.clear()
+    binding._calls.clear()
+    for _ in range(3):
+        outcome(machine(2, 2.0, 1), 2)  # recorded
+    paths = len(binding._recordings[(2, None)])
+    ran, before = fresh()
+    ran.python_areas[2](ran)
+    saved = binding.MAX_RECORDINGS
+    binding.MAX_RECORDINGS = 0
+    try:
+        plain, plain_before = fresh()
+        plain.python_areas[2](plain)
+    finally:
+        binding.MAX_RECORDINGS = saved
+    assert before == plain_before and "X" not in before
+    assert sorted(ran.arrays) == sorted(plain.arrays) and "X" in ran.arrays
+    assert outcome(ran, 2) == outcome(plain, 2)
+    assert len(binding._recordings[(2, None)]) == paths  # the kept path ran: nothing recorded again
+
+
+def test_a_longer_array_takes_the_same_path_and_a_shorter_another():
+    # an element read beyond a shorter array is 0 for the plain code: its IndexError in a
+    # recorded path means another path; a longer array reads the same elements
+    def scenario():
+        m = machine(2, 2.0, 1)
+        full = list(m.array("I"))
+        row = []
+        for call in range(9):
+            m.arrays["I"] = full + [0.0] * 5 if call % 3 == 1 else full[:7] if call % 3 == 2 else list(full)
+            m.array("T")[12] = 20.0 * call
+            row.append(outcome(m, 2))
+        return row
+
+    recorded, plain = recorded_and_plain(scenario)
+    assert recorded == plain
+    binding._recordings.clear()
+    binding._calls.clear()
+    scenario()
+    assert len(binding._recordings[(2, None)]) == 2  # the long and the full array share one path
+
+
+def test_the_finiteness_test_is_each_value_finite():
+    from yaseer.linkages.tracing import not_finite
+
+    def fails(*values) -> bool:
+        names = [f"x{k}" for k in range(len(values))]
+        return eval(not_finite(names), {"_isfinite": math.isfinite, "_all": all, "_map": map,
+                                        **dict(zip(names, values))})
+
+    big = 1e308
+    assert not fails(1.0) and fails(math.inf) and fails(math.nan)
+    assert not fails(big, big, big) and not fails(-big, -big, 1.0)  # the sum overflows, each is finite
+    assert fails(big, big, math.inf) and fails(math.inf, -math.inf) and fails(1.0, math.nan, 2.0)
+    assert fails(big, -math.inf, big) and not fails(0.0, -0.0, 5e-324)

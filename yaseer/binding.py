@@ -149,18 +149,20 @@ class _RecordingFrame(_Frame):
     def __init__(self, machine, area: int, recorder):
         super().__init__(machine, area)
         self.recorder = recorder
-        self._arrays: dict[str, int] = {}  # array read -> its length (the recording holds for it only)
+        self._arrays: dict[str, int] = {}  # array read -> its length
+        self._numbers: set[str] = set()  # arrays an element was read of: numbers, one dimension
         recorder.lines.append("_arrays = _M.arrays")
 
     def get(self, name: str, index: int):
         value = super().get(name, index)
         array = f"_a_{name}"
         if name not in self._arrays:
-            self._arrays[name] = length = len(self.machine.array(name))
+            self._arrays[name] = len(self.machine.array(name))
             self.recorder.lines.append(f"{array} = {_fetch(name)}")
-            self.recorder.pin(f"len({array})", length)
-        if index >= self._arrays[name]:
-            return value  # beyond the dimension: 0, as long as the length is the same
+        if index >= self._arrays[name]:  # beyond the dimension: 0, as long as the array is no longer
+            self.recorder.at_most(f"len({array})", index)
+            return value
+        self._numbers.add(name)  # a shorter array raises IndexError at this read: another path (Recorder.compile)
         return self.recorder.read(value, f"float({array}[{index}])")
 
     def scalar(self, name: str):
@@ -188,21 +190,26 @@ class _RecordingFrame(_Frame):
         from the machine's inputs and commits them as :meth:`_Frame.commit` does
         (Retrace where the inputs take another path), and the tests of its input
         guards (:meth:`tracing.Recorder.keys`)."""
+        from yaseer.linkages.tracing import not_finite
+
         recorder, area = self.recorder, self.area
         outputs = list(self._elements.values()) + list(self._scalars.values())
-        finite = "".join(f"{recorder.operand(value)}, " for value in outputs)
-        lines = [f"if not _all(_map(_isfinite, ({finite}))): raise _error('Overflow', {OVERFLOW})"]
+        lines = [f"if {not_finite([recorder.operand(value) for value in outputs])}: raise _error('Overflow', {OVERFLOW})"]
         largest: dict[str, int] = {}
         for name, index in self._elements:
             largest[name] = max(index, largest.get(name, -1))
             if name not in self._arrays:
                 self._arrays[name] = -1  # written only
                 lines.append(f"_a_{name} = {_fetch(name)}")
-        if largest:  # an array's elements are all numbers, all strings or all rows: one look each
-            lines += [f"if {' or '.join(f'len(_a_{n}) <= {i}' for n, i in largest.items())}: "
-                      f"raise _error('Subscript out of range', {SUBSCRIPT_OUT_OF_RANGE})",
-                      f"if {' or '.join(f'isinstance(_a_{n}[{i}], (list, str))' for n, i in largest.items())}: "
-                      f"raise _error('Type mismatch', {TYPE_MISMATCH})"]
+        if largest:
+            lines.append(f"if {' or '.join(f'len(_a_{n}) <= {i}' for n, i in largest.items())}: "
+                         f"raise _error('Subscript out of range', {SUBSCRIPT_OUT_OF_RANGE})")
+        # an array's elements are all numbers, all strings or all rows: one look at each array
+        # written, unless a number was read of it
+        unread = {name: index for name, index in largest.items() if name not in self._numbers}
+        if unread:
+            lines.append(f"if {' or '.join(f'isinstance(_a_{n}[{i}], (list, str))' for n, i in unread.items())}: "
+                         f"raise _error('Type mismatch', {TYPE_MISMATCH})")
         for (name, index), value in self._elements.items():
             lines.append(f"_a_{name}[{index}] = {_as_float(recorder, value)}")
         for name, value in self._scalars.items():

@@ -99,6 +99,10 @@ class Recorder:
         """Re-check at run time that the input ``subject`` (Python text) equals ``value``."""
         self.lines.append(Guard(f"if {subject} != {value!r}: raise _Retrace", subject))
 
+    def at_most(self, subject: str, value) -> None:
+        """Re-check at run time that the input ``subject`` (Python text) is at most ``value``."""
+        self.lines.append(Guard(f"if {subject} > {value!r}: raise _Retrace", subject))
+
     def function(self, name: str, function) -> str:
         """Bind ``function`` under ``name`` in the compiled record."""
         self.names.setdefault(name, function)
@@ -119,15 +123,19 @@ class Recorder:
 
         The lines are compiled as recorded but for rewritings that keep every value
         and every guard: the reads of one array are made together where the first
-        of them was (:func:`_batched_reads`), runs of finiteness guards become one
-        guard (:func:`_batched_finite_guards`), values nothing uses are not computed
+        of them was (:func:`_batched_reads`), the arrays are looked up together at the
+        start where they all exist (:func:`_batched_fetches`), runs of finiteness guards
+        become one guard (:func:`_batched_finite_guards`), values nothing uses are not computed
         where computing them could raise nothing (:func:`_without_dead_lines`), a value
         used once is computed where it is used (:func:`_fused`), and the values share a
         few variables (:func:`_registers`: a frame of hundreds of locals costs every
         call its clearing)."""
         lines = _batched_finite_guards(_batched_reads([str(line) for line in self.lines + epilogue], self.names))
-        lines = _registers(_fused(_without_dead_lines(lines)))
-        text = "def run(_M):\n" + "".join(f"    {line}\n" for line in lines)
+        lines = _batched_fetches(_registers(_fused(_without_dead_lines(lines))))
+        # an element read of an array shorter than at the recording raises IndexError: these
+        # inputs take another path (the plain code reads 0 beyond the dimension)
+        text = ("def run(_M):\n  try:\n" + "".join("    " + line.replace("\n", "\n    ") + "\n" for line in lines)
+                + "  except IndexError:\n    raise _Retrace from None\n")
         names = namespace(self.names)
         exec(compile(text, f"<traced {label}>", "exec"), names)
         return names["run"]
@@ -139,7 +147,8 @@ def namespace(names: dict) -> dict:
     gives a stored record the same)."""
     return dict(names, _all=all, _map=map, _float=float,
                 __builtins__={"float": float, "complex": complex, "len": len, "abs": abs,
-                              "isinstance": isinstance, "list": list, "str": str})
+                              "isinstance": isinstance, "list": list, "str": str,
+                              "KeyError": KeyError, "IndexError": IndexError})
 
 
 class _Pattern:
@@ -281,6 +290,38 @@ def _registers(lines: list[str]) -> list[str]:
     return out
 
 
+_FETCH = _Pattern(r"(_a_\w+) = _arrays\.get\(('\w+')\) or _M\.array\('\w+'\)$")
+
+
+def _batched_fetches(lines: list[str]) -> list[str]:
+    """``lines`` with the arrays' look-ups (``_a_X = _arrays.get('X') or _M.array('X')``, each
+    a method call) made first, all together, as subscripts of the dictionary of arrays; each
+    look-up in its place is then made only where one of the arrays did not exist yet (the
+    machine makes an array at its first use: it is made where the recorded call made it)."""
+    fetches = [found.groups() for found in map(_FETCH.match, lines) if found]
+    if not fetches:
+        return lines
+    together = "; ".join(f"{array} = _arrays[{key}]" for array, key in fetches)
+    out = []
+    for line in lines:
+        if _FETCH.match(line):
+            out.append(f"if not _ready: {line}")
+        else:
+            out.append(line)
+        if line == "_arrays = _M.arrays":
+            out.append(f"try: {together}\nexcept KeyError: _ready = False\nelse: _ready = True")
+    return out
+
+
+def not_finite(values: list[str]) -> str:
+    """The Python test that one of ``values`` (texts of float values) is not finite: their sum
+    is finite only if each is (an inf or a NaN makes it inf or NaN); where the sum overflows,
+    each value is looked at."""
+    if len(values) == 1:
+        return f"not _isfinite({values[0]})"
+    return f"not _isfinite({' + '.join(values)}) and not _all(_map(_isfinite, ({', '.join(values)},)))"
+
+
 _FINITE = _Pattern(r"(t\d+) = _isfinite\((\w+)\)$")
 
 
@@ -302,12 +343,12 @@ def _batched_finite_guards(lines: list[str]) -> list[str]:
             k += 2
             continue
         if run:
-            out.append(f"if not _all(_map(_isfinite, ({', '.join(run)},))): raise _Retrace")
+            out.append(f"if {not_finite(run)}: raise _Retrace")
             run = []
         out.append(lines[k])
         k += 1
     if run:
-        out.append(f"if not _all(_map(_isfinite, ({', '.join(run)},))): raise _Retrace")
+        out.append(f"if {not_finite(run)}: raise _Retrace")
     return out
 
 
