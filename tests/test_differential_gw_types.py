@@ -103,6 +103,29 @@ def test_literals_print_as_pcbasic(pc):
     assert_mostly_exact(differing_rows(pc, cases), len(cases))
 
 
+def with_blanks(text: str, rng: random.Random) -> str:
+    """``text`` with blanks put where GW-BASIC's number reader steps over them (FIN reads
+    with CHRGTR) and PC-BASIC 2.0.8 agrees: between digits, around the point, before an
+    exponent letter and between it and unsigned digits (not around a sign or a suffix)."""
+    out = text[:1]
+    for left, right in zip(text, text[1:]):
+        spot = (left in "0123456789." and right in "0123456789.ED") or (left in "ED" and right.isdigit())
+        if spot and rng.random() < 0.4:
+            out += rng.choice([" ", "  ", "\t"])
+        out += right
+    return out
+
+
+def test_literals_with_blanks_inside_print_as_pcbasic(pc):
+    """``PRINT 1 2`` is 12 and ``1 . 5 E 2`` is 150: MATH1.ASM FIN reads a number's
+    characters with CHRGTR, which steps over blanks (GWMAIN.ASM CHRCON)."""
+    rng = random.Random(base_seed() + 17)
+    literals = [with_blanks(random_literal(rng), rng) for _ in range(case_count())]
+    literals = [text for text in literals if " " in text or "\t" in text] + ["&O 7", "&H 1F", "&o  5", "&H1 F"]
+    cases = [f"PRINT {text}" for text in literals]
+    assert_mostly_exact(differing_rows(pc, cases), len(cases))
+
+
 def random_int(rng: random.Random) -> str:
     value = rng.choice([rng.randint(-300, 300), rng.randint(-32768, 32767), rng.choice([32767, -32768, 0, 1, -1])])
     return f"({value})" if value < 0 else str(value)
@@ -223,6 +246,40 @@ def test_def_types_as_pcbasic(pc):
                          else f"{name}={value}: PRINT {name}")
         total += len(cases)
         bad += differing_rows(pc, cases, prelude)
+    assert not bad, f"{len(bad)} of {total} differ, e.g. {bad[:5]}"
+
+
+def test_def_types_run_as_statements_as_pcbasic(pc):
+    """DEFINT/DEFSNG/DEFDBL/DEFSTR in the middle of programs, in subroutines, IF branches and
+    loops, with CLEAR: a name's type is its letter's in the table when the reference runs
+    (GWMAIN.ASM DEFCON; CLEAR resets it, BIMISC.ASM CLEARC)."""
+    rng = random.Random(base_seed() + 18)
+    total, bad = 0, []
+    for _ in range(max(case_count() // 40, 3)):
+        def deftype() -> str:
+            first, last = sorted(rng.sample("ABCDEF", 2))
+            return f"{rng.choice(['DEFINT', 'DEFSNG', 'DEFDBL', 'DEFSTR'])} {first}-{last}"
+
+        def step() -> str:
+            name = rng.choice("ABCDEF") + rng.choice(["", "1"])
+            return rng.choice([
+                deftype(), f"{name}={random_real(rng)}: PRINT {name}", f"PRINT {name}; {name}*3",
+                f'{name}="S": PRINT {name}', "GOSUB 30500",
+                f"FOR Q%=1 TO 2: {name}={name}+1.25: PRINT {name};: NEXT", "PRINT FNA(2)",
+                f"DEF FNA(X)=X*{name}+1", f"CLEAR: ON ERROR GOTO {HANDLER}" if rng.random() < 0.3 else deftype(),
+            ])
+
+        def branch() -> str:  # last in its line: yaseer's RESUME NEXT goes on after the line, not in a branch
+            return f"IF {rng.choice('ABCDEF')}=0 THEN {deftype()} ELSE {deftype()}"
+
+        cases = [": ".join([step() for _ in range(rng.randint(1, 3))] + [branch()] * (rng.random() < 0.3))
+                 for _ in range(40)]
+        source = program(cases).replace("29999 END", f"29999 END\n30500 {deftype()}: A=A+1: RETURN")
+        theirs = pc.program(source).split("@")[1:]
+        ours = run_yaseer(source, angle=None, dialect="gw").split("@")[1:]
+        assert len(theirs) == len(ours) == len(cases), (theirs[-3:], ours[-3:])
+        total += len(cases)
+        bad += [(case, a, b) for case, a, b in zip(cases, theirs, ours) if a != b]
     assert not bad, f"{len(bad)} of {total} differ, e.g. {bad[:5]}"
 
 

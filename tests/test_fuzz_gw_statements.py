@@ -1,7 +1,8 @@
 """Fuzzing gw's text-screen and language statements: random programs of LOCATE, COLOR,
 CLS, KEY, SCREEN, VIEW PRINT, WIDTH, CSRLIN, POS, SCREEN(), INKEY$, PRINT of control
 codes, FRE, RETURN's forms, DEF FN bodies, bad IF branches, MID$ onto itself, WHILE,
-RANDOMIZE, LPOS, PRINT USING with arguments in and out of range,
+RANDOMIZE, LPOS, PRINT USING, DEFINT/DEFSTR run as statements, CLEAR, blanks inside
+numbers, with arguments in and out of range,
 left out or of the wrong type.  Each program ends normally or with a BASIC error line
 naming its line (never a Python exception), and writes nothing in its directory.
 
@@ -44,6 +45,10 @@ def statement(data) -> str:
         "PRINT FNA(1); FNB(2)", f"IF {a} THEN EXIT FOR ELSE )", f"DIMA$({a})", f'PRINT USING "##.#"; {a}',
         f'A$ = "ABCDEFGH": MID$(A$, {a}) = A$', "WHILE I < 2: I = I + 1: WEND", f"RANDOMIZE {a}", f"IF {a}, THEN 1000",
         f"PRINT LPOS({a}); CHR$({a}); LEFT$(\"AB\", {a})", "PRINT -NOT 1",
+        # DEF types run as statements (switching the compiled variant), CLEAR, blanks in numbers
+        f"DEFINT A-{chr(65 + code % 26)}", "DEFSTR X", "DEFDBL A, X-Z", "DEFSNG A-Z", f"A = {a}: PRINT A; X",
+        f'X = {a}: A$ = "S": PRINT A$; X', "IF X THEN DEFSTR X ELSE DEFINT X", "CLEAR", "PRINT 1 2; &O 7 7; & H1F; 1 . 5 E 1",
+        "PRINT FNA(1)", "N = N + 1: IF N < 3 THEN 10",
     ]
     return data.draw(st.sampled_from(choices))
 

@@ -176,6 +176,20 @@ def test_line_input_reads_at_most_255_characters(tmp_path):
 
 
 @pytest.mark.parametrize("source, expected", [
+    ("10 PRINT &O 7 7; & 1 7; &O1 7\n", " 63  15  15 \n"),  # OCTCNS reads octal digits with CHRGTR
+    ("10 PRINT & H1F; &H 1F\n", " 31  0  1  0 \n"),  # the H with CHRGTR, hex digits byte by byte
+    ("10 PRINT 1 E - 2; 1 E + 2\n", " .01  100 \n"),  # $FINEX reads the sign and digits with CHRGTR
+    ("10 PRINT 1 2 %; 2 E; 3 D\n", " 12  2  3 \n"),  # FN400 eats the %; an E or D with no digits
+    ("10 PRINT &O8\n", "Syntax error in 10\n"),  # OCTCNS: 8 is a digit but not an octal one (CONERR)
+    ("10 IF 0 THEN PRINT 1 ELSE PRINT 2: PRINT 1 EQV 2\n", " 2 \n-4 \n"),  # $CHKEL: ELSE, EQV
+])
+def test_blanks_inside_numbers_as_the_source_reads_them(tmp_path, source, expected):
+    """Where PC-BASIC 2.0.8 differs (it stops at the blank in these, and fails on ``&O 7 7``),
+    GW's source decides: GWEVAL.ASM OCTCNS, MATH1.ASM FIN, MATH2.ASM $FINEX."""
+    assert yaseer_run(source, tmp_path) == expected
+
+
+@pytest.mark.parametrize("source, expected", [
     ('10 OPEN "O", 1, "X": PRINT EOF(1)\n', "Bad file mode in 10\n"),  # GIODSK.ASM DSKEOF: output mode
     ('10 PRINT EOF(-1)\n', "Illegal function call in 10\n"),  # a file number is a byte (PC-BASIC agrees)
     ('10 CLOSE 5: PRINT 1\n', " 1 \n"),  # a number not open: nothing (PC-BASIC agrees)

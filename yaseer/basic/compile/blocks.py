@@ -95,7 +95,7 @@ def splits(stmt, bare_returns=frozenset()) -> bool:
     for s in walk_statements(stmt):
         if isinstance(s, ast.Gosub) and s.target in bare_returns:
             continue
-        if isinstance(s, (ast.Gosub, ast.Stop, ast.For, ast.Trace, ast.Erase, ast.OptionBase)):
+        if isinstance(s, (ast.Gosub, ast.Stop, ast.For, ast.Trace, ast.Erase, ast.OptionBase, ast.DefType, ast.Clear)):
             return True
         if isinstance(s, ast.OnJump) and s.gosub:
             return True
@@ -104,10 +104,61 @@ def splits(stmt, bare_returns=frozenset()) -> bool:
     return False
 
 
+# Statements that may come before a program's last DEFINT/DEFSNG/DEFDBL/DEFSTR without making
+# its types depend on the order things run in: none of them jumps or ends the run.
+_BEFORE_TYPES = (
+    ast.Rem, ast.Data, ast.Let, ast.Print, ast.Dim, ast.DefFn, ast.Randomize, ast.Cls, ast.Key,
+    ast.Width, ast.ScreenStatement, ast.Locate, ast.ViewPrint, ast.OptionBase,
+)
+
+
+def _names(stmt):
+    """The variable, array and function names ``stmt`` holds (as written)."""
+    for node in nodes(stmt):
+        if isinstance(node, (ast.Var, ast.Elem, ast.FnCall)):
+            yield node.name
+        elif isinstance(node, ast.DefFn):
+            yield node.name
+            yield from node.params
+        elif isinstance(node, ast.Dim):
+            yield from (name for name, _ in node.arrays)
+
+
+def types_fixed(flat: list) -> bool:
+    """May the area's DEFINT/DEFSNG/DEFDBL/DEFSTR be applied to the whole text before it runs?
+
+    In GW-BASIC they are statements: a name without a type character takes the type its
+    letter has in the table (GWMAIN.ASM DEFCON sets DEFTBL) when the reference runs, and
+    CLEAR (and RUN) set every letter back to single (BIMISC.ASM CLEARC).  Applying them
+    first gives the same types when they all stand at the top level before anything that
+    jumps or ends the run, and no name of a letter they type comes before the last of them;
+    and no CLEAR follows.  Otherwise the compiler writes each as a switch of the type table
+    when it runs (``AreaCompiler.dynamic_types``)."""
+    statements = [stmt for _, stmt in flat]
+    found = [i for i, stmt in enumerate(statements) if not isinstance(stmt, BasicError)
+             and any(isinstance(s, ast.DefType) for s in walk_statements(stmt))]
+    if not found:
+        return True
+    if any(isinstance(s, ast.Clear) or (isinstance(s, ast.Command) and s.name == "RUN" and isinstance(s.argument, int))
+           for stmt in statements if not isinstance(stmt, BasicError) for s in walk_statements(stmt)):
+        return False  # the table back to single, then on (RUN n: not from the top)
+    letters = set()
+    for i in found:
+        for first, last in statements[i].ranges if isinstance(statements[i], ast.DefType) else ():
+            letters.update(chr(code) for code in range(ord(first), ord(last) + 1))
+    for stmt in statements[:found[-1]]:
+        if isinstance(stmt, ast.DefType):
+            continue
+        if not isinstance(stmt, _BEFORE_TYPES) or any(
+                name[-1] not in "$%!#" and name[0] in letters for name in _names(stmt)):
+            return False
+    return isinstance(statements[found[-1]], ast.DefType)
+
+
 _NATIVE_BODY = (
     ast.Let, ast.Print, ast.GosubProg, ast.Rem, ast.Data, ast.Read, ast.Dim, ast.Angle,
-    ast.Randomize, ast.DefFn, ast.Clear, ast.Restore, ast.End, ast.OnError, ast.Cls,
-    ast.Error, ast.DefType, ast.Swap, ast.MidAssign, ast.Write, ast.Open, ast.Close,
+    ast.Randomize, ast.DefFn, ast.Restore, ast.End, ast.OnError, ast.Cls,
+    ast.Error, ast.Swap, ast.MidAssign, ast.Write, ast.Open, ast.Close,
     ast.Kill, ast.Rename, ast.Files, ast.Locate, ast.ScreenStatement, ast.ViewPrint, ast.Key, ast.DefChr, ast.EndMark, ast.GosubArea, ast.GotoArea, ast.GosubFile, ast.GotoFile,
 )  # not INPUT nor LINE INPUT: they start a block (see plan)
 

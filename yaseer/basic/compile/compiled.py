@@ -28,15 +28,18 @@ class CompiledArea:
     of the variable or None)`` for each native loop open there, outermost
     first); ``dynamic_loops`` the FOR indices this compile was told to run
     through the FOR stack.  ``def_types`` letter -> type character after the
-    area's DEFINT/DEFSNG/DEFDBL/DEFSTR (gw; direct statements start from it).
+    area's DEFINT/DEFSNG/DEFDBL/DEFSTR (gw; direct statements start from it);
+    ``dynamic_types`` those statements switch the type table as they run (the machine
+    then runs the area compiled for each table it reaches: ``variants``, table -> blocks).
     """
 
     FIELDS = ("source", "pieces", "block_count", "line_blocks", "block_next", "data", "data_lines",
-              "scalars", "first_line", "index_blocks", "break_points", "dynamic_loops", "def_types")
+              "scalars", "first_line", "index_blocks", "break_points", "dynamic_loops", "def_types",
+              "dynamic_types")
 
     def __init__(self, source, pieces, block_count, line_blocks, block_next, data, data_lines,
                  scalars, first_line=None, index_blocks=None, break_points=None, dynamic_loops=(),
-                 def_types=None):
+                 def_types=None, dynamic_types=False):
         self.source, self.pieces, self.block_count = source, pieces, block_count
         self.line_blocks, self.block_next = line_blocks, block_next
         self.data, self.data_lines, self.scalars = data, data_lines, scalars
@@ -45,7 +48,9 @@ class CompiledArea:
         self.break_points = break_points or {}
         self.dynamic_loops = dynamic_loops
         self.def_types = def_types or {}
+        self.dynamic_types = dynamic_types
         self.blocks: list = []
+        self.variants: dict = {}
 
     def as_plain(self) -> tuple:
         """The fields as plain Python data (what ``marshal`` can store)."""

@@ -28,14 +28,14 @@ while a program runs; the plain variant carries no cost for tracing.
 from __future__ import annotations
 
 from yaseer.basic.source import syntax_tree as ast
-from yaseer.basic.compile.blocks import data_statements, flatten, plan, splits, walk_statements
+from yaseer.basic.compile.blocks import data_statements, flatten, plan, splits, types_fixed, walk_statements
 from yaseer.basic.compile.expressions import (
     BlockScope, CompileError, ExpressionCompiler, FnScope, may_overflow, syntax_error, type_mismatch,
 )
 from yaseer.basic.compile.statements_io import InputOutputCompiler
 from yaseer.basic.compile.loops import LoopCompiler
 from yaseer.basic.dialects.dialect import CASIO
-from yaseer.basic.compile.number_models import array_local, local_name, number_model
+from yaseer.basic.compile.number_models import array_local, local_name, number_model, variant_function
 from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  (re-exported)
 from yaseer.basic.errors import (
     BasicError, ILLEGAL_FUNCTION_CALL, OUT_OF_MEMORY, UNDEFINED_LINE, WEND_WITHOUT_WHILE, WHILE_WITHOUT_WEND,
@@ -139,6 +139,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.index = 0  # current top-level statement
         self.line = None
         self.temp = 0
+        self.dynamic_types = False  # DEF types switched as they run (see stmt_DefType)
         self.fn_count = 0
         self.data: list = []
         self.data_lines: dict = {}
@@ -402,6 +403,10 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.emit(f"_clear_args({sizes})")
         self.emit("_clear()")
         self.emit("#RELOAD#")
+        if self.dynamic_types:  # the type table is single again: on in that variant (stmt_DefType)
+            block, indent = self.cur, self.indent
+            ret = self.continuation()
+            block.code.append((indent, f"return {ret}"))
 
     # -- GW-BASIC's statements
     def stmt_While(self, stmt, scope):
@@ -522,13 +527,25 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             # GW-BASIC's DEF only notes where the body is: its errors come when it is called
             code = f"raise _err({err.message!r}, {err.code})"
         self.fn_count += 1
-        fname = f"_fn_{self.fn_count}"
+        fname = function = f"_fn_{self.fn_count}"
+        if self.dynamic_types:  # the body's names typed when it is called: each variant has its
+            fname = variant_function(fname, self.numbers.def_types())  # own, found by name then
+            function = repr(function)
         params = ", ".join("p" + local_name(self.numbers.name(p)) for p in stmt.params)
         self.prelude.append(f"def {fname}({params}):\n    {code}\n")
-        self.emit(f"_M.fns[{self.numbers.name(stmt.name)!r}] = ({fname}, {len(stmt.params)})")
+        self.emit(f"_M.fns[{self.numbers.name(stmt.name)!r}] = ({function}, {len(stmt.params)})")
 
     def stmt_DefType(self, stmt, scope):
-        pass  # applied to the whole program before compiling (number_models.TypedNumbers)
+        """Applied to the whole area before compiling where that gives GW's types
+        (blocks.types_fixed); else a switch of the type table when it runs: the machine goes
+        on in the area compiled for the new table, from the next block (as TRON does)."""
+        if not self.dynamic_types:
+            return
+        block, indent = self.cur, self.indent
+        ret = self.continuation()
+        ranges = [first + last for first, last in stmt.ranges]
+        block.code.append((indent, f"_M.set_def_types({self.area}, {stmt.kind!r}, {ranges!r})"))
+        block.code.append((indent, f"return {ret}"))
 
     def stmt_Resume(self, stmt, scope):
         if stmt.mode == "line":
@@ -591,7 +608,14 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit(f"_M.set_angle({stmt.mode!r})")
 
     def stmt_If(self, stmt, scope):
-        cond = self.condition(stmt.condition, scope)
+        try:
+            cond = self.condition(stmt.condition, scope)
+        except CompileError as err:
+            if not self.dynamic_types:
+                raise
+            # the error when it runs, the branches compiled all the same: each DEF type
+            # table's variant of the area has the same blocks (stmt_DefType)
+            cond = f"_fail({err.message!r}, {err.code})"
         branches = [b for b in (stmt.then, stmt.otherwise) if isinstance(b, list)]
         split = any(splits(s, self.plan.bare_returns) or isinstance(s, (ast.While, ast.Wend)) or self.zero_trip_target(s)
                     for b in branches for s in b)
@@ -679,8 +703,11 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
     # -- the whole area
     def compile(self) -> CompiledArea:
         """Generate every block of the area (DEF types, DATA and DEF FN collected first)."""
-        self.numbers.set_types(s for _, stmt in self.flat if not isinstance(stmt, BasicError)
-                               for s in walk_statements(stmt) if isinstance(s, ast.DefType))
+        statements = [s for _, stmt in self.flat if not isinstance(stmt, BasicError)
+                      for s in walk_statements(stmt) if isinstance(s, ast.DefType)]
+        self.dynamic_types = bool(statements) and self.numbers.typed and not self.direct and not types_fixed(self.flat)
+        if not self.dynamic_types:
+            self.numbers.set_types(statements)
         for i, (number, stmt) in enumerate(self.flat):
             for s in ([] if isinstance(stmt, BasicError) else data_statements(stmt)):
                 self.data_lines.setdefault(number, len(self.data))
@@ -708,6 +735,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             scalars=set(self.scalars), first_line=self.flat[0][0] if self.flat else None,
             index_blocks=dict(self.entry_block), break_points=self.break_points,
             dynamic_loops=tuple(sorted(self.dynamic_loops)), def_types=self.numbers.def_types(),
+            dynamic_types=self.dynamic_types,
         )
 
     def block_source(self, block: _Block) -> str:

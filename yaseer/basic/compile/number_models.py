@@ -10,8 +10,8 @@ expression; :func:`number_model` picks the model from ``Dialect.typed_numbers``.
   (single, the default), ``"#"`` (double), ``"?"`` (VAL's: single or double as its
   text says, known when it runs: :mod:`yaseer.basic.machine.val_numbers`); ``"s"`` is a string in both.  A name
   without a type character gets its letter's type from DEFINT/DEFSNG/DEFDBL/
-  DEFSTR (collected from the whole program before compiling, in program order:
-  yaseer treats them as declarations, where GW-BASIC runs them as statements).
+  DEFSTR: applied to the whole program before compiling where that gives the types GW-BASIC's
+  statements give as they run (blocks.types_fixed), else one variant per table reached.
   Run-time helpers are in :mod:`yaseer.basic.arithmetic.values`.
 """
 
@@ -46,6 +46,15 @@ def initial_value(name: str):
     if last == "$":
         return ""
     return 0 if last == "%" else 0.0
+
+
+_TYPE_LETTERS = str.maketrans("%!#$", "isdt")  # a type character as a letter of a Python name
+
+
+def variant_function(name: str, table: dict) -> str:
+    """The Python name of DEF FN function ``name`` in the variant of an area compiled for the
+    DEF type table ``table`` (letter -> type character): ``_fn_1_ssis...``, a letter per A..Z."""
+    return name + "_" + "".join(table.get(chr(c), "!") for c in range(65, 91)).translate(_TYPE_LETTERS)
 
 
 class PlainNumbers:

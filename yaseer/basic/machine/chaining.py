@@ -279,8 +279,7 @@ class Chaining:
         from yaseer.basic.source import syntax_tree as ast
         from yaseer.basic.source.parser import parse_line
 
-        compiled = self.compiled.get(0)
-        letters = compiled.def_types if compiled is not None else {}
+        letters = self.def_types  # the DEF types as they stand when CHAIN runs
         names = set()
         for number, text in self.programs.get(0, {}).items():
             for stmt in parse_line(number, text, self.dialect).statements or ():

@@ -155,6 +155,14 @@ class _AreaRuntime:
         self.data_index = min(later) if later else len(self.compiled.data)
 
 
+_DEF_SUFFIX = {"INT": "%", "SNG": "!", "DBL": "#", "STR": "$"}
+
+
+def _table_key(table: dict) -> tuple:
+    """A DEF type table (letter -> type character) as a key of its compiled variant."""
+    return tuple(sorted((letter, kind) for letter, kind in table.items() if kind != "!"))
+
+
 FIRST_FILE_AREA = 1000  # the program areas of program files (GOSUB "file:label") are numbered from here
 
 # Compiling one program area is held to about 550 MB (docs/interpreter.md, Resource limits), by
@@ -345,6 +353,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         compiled.blocks = [namespace[f"_b{b}"] for b in range(compiled.block_count)]
         if direct or area == 0:  # DEF types hold for the direct statements that follow
             self.def_types = dict(compiled.def_types)
+        if compiled.dynamic_types:
+            compiled.variants[(_table_key(compiled.def_types), self.tracing)] = list(compiled.blocks)
         for name in compiled.scalars:
             self.scalars.setdefault(name, initial_value(name))
         if not direct:
@@ -503,13 +513,64 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             lines = [_parse_cached(number, text, self.dialect)
                      for number, text in sorted(self.programs.get(area, {}).items())]
             variant = compile_area(lines, area, entry_lines=extra, trace=on, dynamic_loops=compiled.dynamic_loops,
-                                   dialect=self.dialect)
+                                   dialect=self.dialect, def_types=self.def_types if compiled.dynamic_types else None)
             namespace = self.namespaces[area]
             for first_line, text in variant.pieces:
                 self._exec_piece(text, first_line, area, namespace)
             armed = self._break_armed
             blocks = armed[1] if armed is not None and armed[0] is compiled else compiled.blocks
             blocks[:] = [namespace[f"_b{b}"] for b in range(variant.block_count)]
+
+    def set_def_types(self, area: int, kind: str, ranges: list) -> None:
+        """DEFINT/DEFSNG/DEFDBL/DEFSTR run as a statement (GWMAIN.ASM DEFCON): the letters of
+        ``ranges`` ("AZ": first and last) take type ``kind`` ("INT" ...), and a program whose
+        types depend on when these run (compiler.stmt_DefType) goes on in its variant compiled
+        for the new table, from the next block (the statement ends its block)."""
+        table = dict(self.def_types)
+        for first, last in ranges:
+            for code in range(ord(first), ord(last) + 1):
+                table[chr(code)] = _DEF_SUFFIX[kind]
+        self.use_def_types(area, {letter: kind for letter, kind in table.items() if kind != "!"})
+
+    def use_def_types(self, area: int, table: dict) -> None:
+        """Make ``table`` (letter -> type character, single left out) the DEF types, and run
+        ``area`` on, if its types switch as it runs, in its variant compiled for it (each
+        compiled once, when first reached; they have the same blocks, as TRON's variant has)."""
+        if table == self.def_types:
+            return
+        self.def_types = table
+        compiled = self.compiled.get(area)
+        if compiled is None or not compiled.dynamic_types:
+            return
+        key = (_table_key(table), self.tracing)
+        blocks = compiled.variants.get(key)
+        if blocks is None:
+            from yaseer.basic.compile.compiler import compile_area
+
+            extra = tuple(self._extra_entries) if area == 0 else ()
+            lines = [_parse_cached(number, text, self.dialect)
+                     for number, text in sorted(self.programs.get(area, {}).items())]
+            variant = compile_area(lines, area, entry_lines=extra, trace=self.tracing,
+                                   dynamic_loops=compiled.dynamic_loops, dialect=self.dialect, def_types=table)
+            if variant.block_count != compiled.block_count:  # (a compile error cut a statement's blocks short)
+                raise BasicError("Internal error (the DEF type variants differ)", INTERNAL_ERROR)
+            namespace = self.namespaces[area]
+            for first_line, text in variant.pieces:
+                self._exec_piece(text, first_line, area, namespace)
+            blocks = compiled.variants[key] = [namespace[f"_b{b}"] for b in range(variant.block_count)]
+            for name in variant.scalars:
+                self.scalars.setdefault(name, initial_value(name))
+        armed = self._break_armed
+        target = armed[1] if armed is not None and armed[0] is compiled else compiled.blocks
+        target[:] = blocks
+
+    def reset_def_types(self) -> None:
+        """CLEAR, RUN: every letter single again (BIMISC.ASM CLEARC), in a program whose
+        DEF types switch as it runs (the table of one whose types are fixed stays: it is
+        applied before the program runs, and holds for the direct statements after it)."""
+        compiled = self.compiled.get(0)
+        if compiled is not None and compiled.dynamic_types:
+            self.use_def_types(0, {})
 
     def set_angle(self, mode: str) -> None:
         """DEG or RAD: the unit SIN, COS, TAN take and ATN returns."""

@@ -13,6 +13,7 @@ from yaseer.basic.arithmetic import values
 
 from yaseer.basic.machine import runtime
 from yaseer.basic.compile.compiled import MAX_STACK
+from yaseer.basic.compile.number_models import variant_function
 from yaseer.basic.errors import (
     BasicError, FOR_WITHOUT_NEXT, ILLEGAL_FUNCTION_CALL, NEXT_WITHOUT_FOR, OUT_OF_MEMORY, RETURN_WITHOUT_GOSUB,
     SYNTAX_ERROR, UNDEFINED_USER_FUNCTION,
@@ -146,6 +147,8 @@ class ControlStack:
         function, expected = entry
         if expected != nargs:
             raise BasicError("Syntax error", SYNTAX_ERROR)
+        if type(function) is str:  # its body typed by the DEF types of now: the variant's function
+            return self.namespaces[0][variant_function(function, self.def_types)]
         return function
 
     def _stopper(self, area):

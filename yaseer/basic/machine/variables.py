@@ -145,6 +145,7 @@ class Variables:
         self.on_error = None
         self.in_handler = False
         self.err = self.erl = 0.0
+        self.reset_def_types()
 
 
 def _check_clear_arguments(*sizes) -> None:

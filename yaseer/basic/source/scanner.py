@@ -280,9 +280,72 @@ def _scan_number(upper: str, i: int) -> tuple[float, int]:
 
 # a type character may follow a number without exponent only (``1E2!`` is 1E2, then a bad ``!``)
 _TYPED_NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)(?:([ED])([+-]?\d*)|([%!#]?))")
-_RADIX_NUMBER = re.compile(r"&(H[0-9A-F]*|O?[0-7]*)")
 _LONE_POINT = re.compile(r"\.(?:[ED][+-]?\d*)?([!#]?)")
 SINGLE_DIGITS = 7  # a literal with more significant digits is double precision (GW-BASIC)
+_BLANKS = " \t\n"  # what GW-BASIC's CHRGTR steps over (GWMAIN.ASM CHRCON, NOTCON)
+
+
+def _after_blanks(upper: str, j: int) -> int:
+    """The position of the first character from ``j`` that is not a blank."""
+    while j < len(upper) and upper[j] in _BLANKS:
+        j += 1
+    return j
+
+
+def _number_text(upper: str, i: int) -> tuple[str, int]:
+    """A decimal number's characters from ``i`` as GW-BASIC's number reader takes them, blanks
+    left out, and the position after the last one: MATH1.ASM FIN reads each next character
+    with CHRGTR, which steps over blanks (``1 2`` is 12, ``1 . 5 E - 2`` is .015), and
+    CRUNCH (GWMAIN.ASM BAKSP) leaves the blanks after the number.  An ``E`` is an exponent
+    unless ``L`` or ``Q`` follows it ($CHKEL: ELSE, EQV); a second point ends the number."""
+    n, out, end, point = len(upper), [], i, False
+    k = i
+    while k < n and (upper[k].isdigit() or (upper[k] == "." and not point)):
+        point = point or upper[k] == "."
+        out.append(upper[k])
+        end = k + 1
+        k = _after_blanks(upper, end)
+    if k < n and upper[k] in "ED" and not (upper[k] == "E" and upper[_after_blanks(upper, k + 1):][:1] in ("L", "Q")):
+        out.append(upper[k])
+        end = k + 1
+        k = _after_blanks(upper, end)
+        if k < n and upper[k] in "+-":
+            out.append(upper[k])
+            end = k + 1
+            k = _after_blanks(upper, end)
+        while k < n and upper[k].isdigit():
+            out.append(upper[k])
+            end = k + 1
+            k = _after_blanks(upper, end)
+    elif k < n and upper[k] in "%!#":
+        out.append(upper[k])
+        end = k + 1
+    return "".join(out), end
+
+
+def _radix_number(upper: str, i: int) -> tuple[int, int]:
+    """``&H``/``&O``/``&`` at ``i``: (value, end), as GWEVAL.ASM OCTCNS reads it.  The letter
+    is read with CHRGTR (blanks before it skipped); octal digits too (``&O 7 7`` is 63), hex
+    digits not (``&H 1F`` is 0, then 1F: LOPHEX reads the next byte itself).  A digit 8 or 9
+    in an octal number is a Syntax error (CONERR)."""
+    k = _after_blanks(upper, i + 1)
+    if upper[k:k + 1] == "H":
+        end = k + 1
+        while end < len(upper) and upper[end] in "0123456789ABCDEF":
+            end += 1
+        return (int(upper[k + 1:end], 16) if end > k + 1 else 0), end
+    end = i + 1
+    if upper[k:k + 1] == "O":
+        end = k + 1
+        k = _after_blanks(upper, end)
+    digits = []
+    while k < len(upper) and upper[k].isdigit():
+        if upper[k] in "89":
+            raise _syntax_error()
+        digits.append(upper[k])
+        end = k + 1
+        k = _after_blanks(upper, end)
+    return (int("".join(digits), 8) if digits else 0), end
 
 
 def significant_digits(whole: str, fraction: str) -> int:
@@ -306,44 +369,41 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
     from yaseer.basic.arithmetic.values import DOUBLE_LARGEST, MBF_SMALLEST, SINGLE_LARGEST, single_literal, to_single
 
     if upper[i] == "&":
-        match = _RADIX_NUMBER.match(upper, i)
-        digits = match.group(1)
-        hexadecimal = digits.startswith("H")
-        digits = digits[1:] if digits[:1] in ("H", "O") else digits
-        value = int(digits, 16 if hexadecimal else 8) if digits else 0
+        value, end = _radix_number(upper, i)
         if value > 0xFFFF:
             raise BasicError("Overflow", OVERFLOW)
-        return (value - 0x10000 if value >= 0x8000 else value, "%"), match.end()
-    match = _TYPED_NUMBER.match(upper, i)
+        return (value - 0x10000 if value >= 0x8000 else value, "%"), end
+    text, end = _number_text(upper, i)
+    match = _TYPED_NUMBER.fullmatch(text)
     if match is None:
-        point = _LONE_POINT.match(upper, i)  # no digit: the number reader's 0 ($FIN)
+        point = _LONE_POINT.fullmatch(text)  # no digit: the number reader's 0 ($FIN)
         if point is None:
             raise _syntax_error()
-        return (0.0, "#" if point.group(1) == "#" else "!"), point.end()
+        return (0.0, "#" if point.group(1) == "#" else "!"), end
     mantissa, letter, exponent, suffix = match.groups()
     value = float(mantissa + ("E" + (exponent if exponent.strip("+-") else "0") if letter else ""))
     plain = letter is None and "." not in mantissa
     if suffix == "%" or (not suffix and plain and value < 32768):
         if not value.is_integer() and suffix == "%":
-            return (to_single(value), "!"), match.end()
+            return (to_single(value), "!"), end
         if value == 32768:  # only as -32768%: a single until the minus makes it an integer
-            return (32768.0, "!"), match.end()
+            return (32768.0, "!"), end
         if value > 32768:
             raise _syntax_error()
-        return (int(value), "%"), match.end()
+        return (int(value), "%"), end
     whole, _, fraction = mantissa.partition(".")
     if suffix == "#" or (not suffix and (letter == "D" or significant_digits(whole, fraction) > SINGLE_DIGITS)):
         if value > DOUBLE_LARGEST:  # MBF's double range ends where the single's does
             value = _overflowed(DOUBLE_LARGEST, notes)
         elif value < MBF_SMALLEST:  # ... and begins there too: below it a literal is 0
             value = 0.0
-        return (value, "#"), match.end()
+        return (value, "#"), end
     single = to_single(value)
     if not single - single:  # in range: the value GW-BASIC's conversion gives (values.mbf_single)
         single = single_literal(match.group(0).rstrip("!#%"))
     if single - single:  # beyond the single range
         single = _overflowed(SINGLE_LARGEST, notes)
-    return (single, "!"), match.end()
+    return (single, "!"), end
 
 
 def _overflowed(largest: float, notes: list | None) -> float:
