@@ -168,6 +168,16 @@ def test_line_input_keeps_a_lone_line_feed_as_the_source_reads_it(tmp_path):
     assert yaseer_run(source, tmp_path) == " 5  7 xy-1  3  4 \n"
 
 
+def test_input_of_a_number_reads_on_through_a_lone_line_feed(tmp_path):
+    """DSKCOM.ASM LPISLF keeps a LF in a number's text (only a string field drops it) and skips
+    a CR right after it; FIN then steps over the LF (CHRGTR): ``12<LF>34`` is 1234.  An empty
+    line before a field is an empty field (INPDOR skips only blanks before one).
+    (PC-BASIC 2.0.8 ends the number at the LF: 12 and 34.)"""
+    (tmp_path / "N.TXT").write_bytes(b"12\n34\r\n5\n\r6\r\n\r\n7\r\n")
+    source = '10 OPEN "I", 1, "N.TXT": INPUT #1, A, B, C, D: PRINT A; B; C; D\n'
+    assert yaseer_run(source, tmp_path) == " 1234  56  0  7 \n"
+
+
 def test_line_input_reads_at_most_255_characters(tmp_path):
     """DSKCOM.ASM DLINE fills a 255-character buffer; the rest is the next line (PC-BASIC 2.0.8: the same)."""
     (tmp_path / "L.TXT").write_bytes(b"x" * 300 + b"\r\n")

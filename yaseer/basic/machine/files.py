@@ -130,56 +130,60 @@ class OpenFile:
         return "".join(out)
 
     def read_field(self, numeric: bool, longest: int) -> str:
-        """One INPUT # field: blanks and line ends before it skipped; a number ends at a
-        blank, comma or line end, a string at a comma or line end (a quoted one at its
-        closing quote, and text after that begins the next field, as in PC-BASIC); the
-        comma or line end after it is consumed.  A string ends after ``longest`` characters
-        (the dialect's string length) and the rest begins the next field (GW-BASIC reads a
-        field into its 255-byte buffer; PC-BASIC 2.0.8 splits a longer one so)."""
+        """One INPUT # field as DSKCOM.ASM INPDOR reads it: blanks before it skipped (not line
+        ends: an empty line is an empty field, 0 for a number); a number ends at a blank, comma
+        or CR, a string at a comma or CR, a quoted one at its closing quote (CR and LF inside
+        kept; text after it begins the next field).  A LF is dropped from a string and kept in
+        a number's text (the number reader steps over it), and a CR right after LFs is skipped
+        (LPISLF).  After a quote or blank, blanks and then one comma or CR LF are consumed;
+        after a CR its LF.  A field stops after ``longest`` characters (255: STRCHR quits),
+        the rest beginning the next one (PC-BASIC 2.0.8 splits a longer one so)."""
         data = self._input()
         n = len(data)
         i = self.position
-        while i < n and data[i] in " \r\n":
+        while i < n and data[i] == " ":
             i += 1
         if i >= n:
             raise error_for(INPUT_PAST_END)
-        if not numeric and data[i] == '"':
-            close = data.find('"', i + 1)
-            close = n if close < 0 else close
-            if close - (i + 1) > longest:
-                self.position = i + 1 + longest
-                return data[i + 1:self.position]
-            text, i = data[i + 1:close], close + 1
+        quoted = not numeric and data[i] == '"'
+        i += quoted
+        ends = '"' if quoted else " ," if numeric else ","
+        out, stop = [], None
+        while i < n:
+            ch = data[i]
+            i += 1
+            if ch in ends:
+                stop = ch
+                break
+            if not quoted and ch == "\r":
+                stop = ch
+                break
+            if not quoted and ch == "\n":
+                count = 1
+                while i < n and data[i] == "\n":
+                    count, i = count + 1, i + 1
+                if i < n and data[i] == "\r":
+                    i += 1
+                if not numeric:
+                    continue
+                out.extend("\n" * count)
+            elif ch != "\0":  # a NUL is never stored (STRCHR)
+                out.append(ch)
+            if len(out) >= longest:
+                self.position = i
+                return "".join(out[:longest])
+        if stop in ('"', " "):
             while i < n and data[i] == " ":
                 i += 1
-        elif numeric:
-            start = i
-            while i < n and data[i] not in " ,\r\n":
+            if i < n and data[i] == ",":
                 i += 1
-            text = data[start:i]
-        else:  # DSKCOM.ASM DLINE: a LF is dropped, and a CR right after it does not end the field
-            out = []
-            while i < n and data[i] not in ",\r":
-                if data[i] == "\n":
-                    while i < n and data[i] == "\n":
-                        i += 1
-                    if i < n and data[i] == "\r":
-                        i += 1
-                    continue
-                if len(out) == longest:
-                    self.position = i
-                    return "".join(out)
-                out.append(data[i])
-                i += 1
-            text = "".join(out).rstrip(" ")
-        while numeric and i < n and data[i] == " ":
-            i += 1
-        if i < n and data[i] == "\r":
-            i += 1
-        if i < n and data[i] in ",\n":
+            elif i < n and data[i] == "\r":
+                stop, i = "\r", i + 1
+        if stop == "\r" and i < n and data[i] == "\n":
             i += 1
         self.position = i
-        return text
+        text = "".join(out)
+        return text if quoted or numeric else text.rstrip(" ")
 
     # -- LOF, LOC
     def length(self) -> int:
