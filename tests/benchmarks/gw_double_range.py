@@ -1,10 +1,12 @@
-"""What keeping gw doubles in MBF's range costs: a double-precision loop compiled
-three ways in one run, as ratios (no wall-clock claims).
+"""What GW's 56-bit doubles cost: double-precision loops compiled two ways in one run,
+as ratios (no wall-clock claims).
 
-* inline: the range check yaseer compiles (``number_models._in_double_range``, a
-  chained comparison around each double ``+ - *``);
-* call: the same check through the ``_dk`` helper (one Python call per operation);
-* unchecked: plain Python float arithmetic (no Overflow at 1.7D+38: wrong in gw).
+* MBF: what yaseer compiles (``_dad _dsb _dml _ddv``, arith_policy.py: a float fast
+  path where the exact result is a float, else the 56-bit routines of mbf_double.py on
+  integer mantissas, whose results no float holds are ``values.Wide``);
+* IEEE: Python's 53-bit float arithmetic with the inline range check yaseer compiled
+  before (``number_models._in_double_range``): fast, but a 16th digit may differ from
+  GW's (``12345670#/3`` shows 4115223.333333334, GW 4115223.333333333).
 
 Run: ``YASEER_CACHE_DIR= python tests/benchmarks/gw_double_range.py`` (the empty
 cache directory switches the compiled-program cache off, so each way is compiled).
@@ -18,16 +20,22 @@ import time
 from yaseer.basic.compile import number_models
 from yaseer.basic.machine.machine import Machine
 
-PROGRAM = ("10 DEFDBL A-H\n20 S = 0: FOR I% = 1 TO 30000: A = I% * 1.5#: S = S + A * A - A / 3: NEXT\n"
-           "30 PRINT S\n")
+PROGRAMS = {
+    # whole numbers and halves: every result a float (the fast paths)
+    "whole": ("10 DEFDBL A-Z\n20 S = 0: FOR I% = 1 TO 30000: A = I% * 1.5#: S = S + A * A - A / 2: NEXT\n"
+              "30 PRINT S\n"),
+    # sevenths: most results need 56 bits (the integer routines)
+    "fractions": ("10 DEFDBL A-Z\n20 S = 0: FOR I% = 1 TO 30000: A = I% / 7#: S = S + A * A - A / 3: NEXT\n"
+                  "30 PRINT S\n"),
+}
 
 
-def best_time(repeats: int = 7) -> tuple[float, str]:
-    """The fastest of ``repeats`` runs of PROGRAM (seconds), and what it printed."""
+def best_time(program: str, repeats: int = 5) -> tuple[float, str]:
+    """The fastest of ``repeats`` runs of ``program`` (seconds), and what it printed."""
     best, printed = float("inf"), ""
     for _ in range(repeats):
         machine = Machine(screen=io.StringIO(), dialect="gw")
-        machine.load(PROGRAM)
+        machine.load(program)
         start = time.perf_counter()
         machine.run()
         best = min(best, time.perf_counter() - start)
@@ -35,18 +43,27 @@ def best_time(repeats: int = 7) -> tuple[float, str]:
     return best, printed
 
 
+def ieee(self, op, left, lkind, right, rkind):
+    """The double operations as yaseer compiled them before GW's 56 bits."""
+    kind = lkind if number_models._RANK[lkind] >= number_models._RANK[rkind] else rkind
+    if kind == "#" and op in "+-*/":
+        return number_models._in_double_range(f"{left} {op} {right}"), "#"
+    return original(self, op, left, lkind, right, rkind)
+
+
+original = number_models.TypedNumbers.arithmetic
+
+
 def main() -> None:
-    inline, printed = best_time()
-    original = number_models._in_double_range
-    try:
-        number_models._in_double_range = lambda code: f"_dk({code})"
-        call, printed_call = best_time()
-        number_models._in_double_range = lambda code: f"({code})"
-        unchecked, printed_unchecked = best_time()
-    finally:
-        number_models._in_double_range = original
-    assert printed == printed_call == printed_unchecked, (printed, printed_call, printed_unchecked)
-    print(f"inline/unchecked {inline / unchecked:.2f}  call/unchecked {call / unchecked:.2f}")
+    for name, program in PROGRAMS.items():
+        mbf, printed = best_time(program)
+        number_models.TypedNumbers.arithmetic = ieee
+        try:
+            fast, printed_ieee = best_time(program)
+        finally:
+            number_models.TypedNumbers.arithmetic = original
+        print(f"{name:10s} MBF {mbf * 1e3:7.1f} ms  IEEE {fast * 1e3:7.1f} ms  MBF/IEEE {mbf / fast:5.2f}"
+              f"   prints {printed.strip()} (IEEE: {printed_ieee.strip()})")
 
 
 if __name__ == "__main__":

@@ -20,6 +20,7 @@ dialect whose policy continues.
 from __future__ import annotations
 
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
+from yaseer.basic.arithmetic import values
 from yaseer.basic.arithmetic.values import DOUBLE_LARGEST, SINGLE_LARGEST
 
 # The largest values of Microsoft Binary Format (exponent byte 255, mantissa all ones):
@@ -102,6 +103,51 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
             return x
         return result(OVERFLOW, x < 0, "#")
 
+    # A double + - * / (values.double_add ...: MATH1.ASM/MATH2.ASM's $FADDD, $FMULD,
+    # $FDIVD on the 56-bit mantissas), with a fast path for two floats whose exact
+    # result a float holds and MBF's range too (then no routine rounds anything).
+    wide, limit, tiny = values.Wide, 2.0 ** 127, 2.0 ** -128
+    exact_add, exact_subtract = values.double_add, values.double_subtract
+    exact_multiply, exact_divide = values.double_multiply, values.double_divide
+
+    def double_result(r):
+        if type(r) is wide or -limit < r < limit:
+            return r
+        return result(OVERFLOW, r < 0, "#")
+
+    def double_add(a, b):
+        if type(a) is not wide and type(b) is not wide:
+            s = a + b  # exact when both differences give the other operand back (Dekker)
+            if s - a == b and s - b == a and (tiny <= s < limit or -limit < s <= -tiny or not s):
+                return s
+        return double_result(exact_add(a, b))
+
+    def double_subtract(a, b):
+        if type(a) is not wide and type(b) is not wide:
+            s = a - b
+            if s + b == a and a - s == b and (tiny <= s < limit or -limit < s <= -tiny or not s):
+                return s
+        return double_result(exact_subtract(a, b))
+
+    def double_multiply(a, b):
+        if type(a) is not wide and type(b) is not wide:
+            p = a * b  # exact when both factors have at most 26 bits (Veltkamp's split)
+            if (a == (c := a * 134217729.0) - (c - a) and b == (c := b * 134217729.0) - (c - b)
+                    and (tiny <= p < limit or -limit < p <= -tiny or not p)):
+                return p
+        return double_result(exact_multiply(a, b))
+
+    def double_divide(a, b):
+        if type(a) is not wide and type(b) is not wide and b:
+            q = a / b  # exact when the quotient and the divisor have at most 26 bits and give a back
+            if (q * b == a and q == (c := q * 134217729.0) - (c - q) and b == (c := b * 134217729.0) - (c - b)
+                    and (tiny <= q < limit or -limit < q <= -tiny or not q)):
+                return q
+        try:
+            return double_result(exact_divide(a, b))
+        except ZeroDivisionError:
+            return result(DIVISION_BY_ZERO, a < 0, "#")
+
     def divider(quotient, kind: str):
         """``/`` of the type ``kind`` (``"!"`` or ``"#"``) by ``quotient(a, b)``."""
         def divide(a, b):
@@ -153,9 +199,10 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
 
     singles = {"_sadd": checked2(single_arith.add), "_ssub": checked2(single_arith.subtract),
                "_sp": checked(single_arith.product),
-               "_smul": checked2(single_arith.multiply), "_sfd": checked(single_arith.from_double),
-               "_csng": checked(single_arith.from_double), "_sfn": checked(single_arith.function_result)}
-    return {**singles, "_dk": double, "_dv": single_divide, "_ddv": divider(lambda a, b: double(a / b), "#"),
+               "_smul": checked2(single_arith.multiply), "_sfd": checked(values.single_of_double),
+               "_csng": checked(values.single_of_double), "_sfn": checked(single_arith.function_result)}
+    return {**singles, "_dk": double, "_dv": single_divide, "_ddv": double_divide,
+            "_dad": double_add, "_dsb": double_subtract, "_dml": double_multiply,
             "_idiv": by_integer(int_divide), "_mod": by_integer(int_modulo), "_pow": raise_to,
             "_spow": single_power, **transcendental}
 

@@ -30,6 +30,7 @@ from __future__ import annotations
 from math import floor, frexp, inf, ldexp
 
 from yaseer.basic.arithmetic import mbf_floats, mbf_integers
+from yaseer.basic.arithmetic.mbf_double import shifted_right
 from yaseer.basic.arithmetic.single_arith import add, divide, from_double, power_by_integer, product, subtract
 
 
@@ -179,14 +180,7 @@ def _quarter_turn_added(numerator: int, bits: int) -> tuple[int, int]:
     shift = bits - length - 1  # its exponent below the quarter's
     if shift >= 57:
         return 1, 2
-    while shift >= 8:
-        register = (register >> 8) | (register & 0x20)
-        shift -= 8
-    while shift:
-        register >>= 1
-        if register & 0x10:
-            register |= 0x20
-        shift -= 1
+    register = shifted_right(register, shift)
     register += 1 << 63
     guard, mantissa = register & 0xFF, register >> 8
     if guard >= 0x80:

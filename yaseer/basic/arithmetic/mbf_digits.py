@@ -42,9 +42,14 @@ DOUBLE = _format(64, 56, 16)
 def decimal_digits(x, form: Format = SINGLE) -> tuple[int, int]:
     """``(n, power)`` with ``abs(x)`` shown as ``n * 10**power``, ``n`` of
     ``form.digits`` digits, for a nonzero ``x`` that ``form`` holds exactly."""
+    return decimal_digits_of(*working_parts(x, form.width), form)
+
+
+def decimal_digits_of(exponent: int, mantissa: int, form: Format = SINGLE) -> tuple[int, int]:
+    """:func:`decimal_digits` of a nonzero working number (exponent byte, ``form.width``-bit
+    mantissa): a double's 56 bits and a zero guard byte."""
     width = form.width
     top, half_top = 1 << width, 1 << (width - 1)
-    exponent, mantissa = working_parts(x, width)
     power = 0
     while (exponent, mantissa) > form.top:
         exponent, mantissa = working_quotient(exponent, mantissa, *form.ten, width=width)
@@ -68,7 +73,15 @@ def decimal_digits(x, form: Format = SINGLE) -> tuple[int, int]:
 def digit_string(x, form: Format = SINGLE) -> tuple[str, int]:
     """:func:`decimal_digits` as PRINT uses them: (the digits without trailing zeros,
     the decimal exponent of the first digit)."""
-    n, power = decimal_digits(x, form)
+    return _shown(*decimal_digits(x, form), form)
+
+
+def digit_string_of(exponent: int, mantissa: int, form: Format = SINGLE) -> tuple[str, int]:
+    """:func:`digit_string` of a working number (see :func:`decimal_digits_of`)."""
+    return _shown(*decimal_digits_of(exponent, mantissa, form), form)
+
+
+def _shown(n: int, power: int, form: Format) -> tuple[str, int]:
     return str(n).rjust(form.digits, "0").rstrip("0") or "0", power + form.digits - 1
 
 

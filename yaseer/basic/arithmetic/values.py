@@ -23,10 +23,11 @@ GW-BASIC (checked with PC-BASIC: ``CINT(2.5)`` is 3, ``CINT(-2.5)`` is -3).
 
 from __future__ import annotations
 
+import functools
 import math
 import struct
 
-from yaseer.basic.arithmetic import mbf_digits, single_arith
+from yaseer.basic.arithmetic import mbf_digits, mbf_double, single_arith
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
 
 INT_MIN, INT_MAX = -32768, 32767
@@ -234,6 +235,172 @@ class Double(float):
     __slots__ = ()
 
 
+def double_parts(x) -> tuple[bool, int, int]:
+    """A double's exact 56-bit value (mbf_double's parts): a :class:`Wide`'s own, else
+    the float's (an integer's or a single's value is exact in it; 2**127, the policy's
+    largest double, stands for MBF's largest)."""
+    return x.parts if type(x) is Wide else mbf_double.parts(x)
+
+
+def double_of(p: tuple[bool, int, int]) -> float:
+    """A double result from its 56-bit value: a float where one holds it (whole numbers
+    and short binary fractions), else a :class:`Wide`."""
+    if not p[2] & 7:
+        return mbf_double.nearest_float(p)
+    wide = Wide(mbf_double.nearest_float(p))
+    wide.parts = p
+    return wide
+
+
+def _exactly(routine):
+    """A double operation on the exact 56-bit values; beyond the range an infinity with
+    its sign (which the compiled code's checks hand to the overflow policy)."""
+    def run(a, b):
+        try:
+            return double_of(routine(double_parts(a), double_parts(b)))
+        except mbf_double.Overflow as overflow:
+            return -math.inf if overflow.negative else math.inf
+    return run
+
+
+double_add = _exactly(mbf_double.add)
+double_subtract = _exactly(mbf_double.subtract)
+double_multiply = _exactly(mbf_double.multiply)
+double_divide = _exactly(mbf_double.divide)  # (by 0: ZeroDivisionError, for the caller's policy)
+
+
+class Wide(Double):
+    """A double whose 56-bit MBF value (``parts``) no float holds.  As a float it is the
+    nearest one (what functions that take a float see); ``+ - * /``, comparisons, INT,
+    FIX and ``int()`` work on the exact value."""
+
+    __slots__ = ("parts",)
+
+    def __add__(self, other):
+        return double_add(self, other)
+
+    def __radd__(self, other):
+        return double_add(other, self)
+
+    def __sub__(self, other):
+        if other is self:  # the compiled code's overflow test, ``x - x``: 0 for any finite value
+            return 0.0
+        return double_subtract(self, other)
+
+    def __rsub__(self, other):
+        return double_subtract(other, self)
+
+    def __mul__(self, other):
+        return double_multiply(self, other)
+
+    def __rmul__(self, other):
+        return double_multiply(other, self)
+
+    def __truediv__(self, other):
+        return double_divide(self, other)
+
+    def __rtruediv__(self, other):
+        return double_divide(other, self)
+
+    def __neg__(self):
+        return double_of(mbf_double.negate(self.parts))
+
+    def __pos__(self):
+        return self
+
+    def __abs__(self):
+        return double_of((False,) + self.parts[1:])
+
+    def _compared(self, other):
+        """-1, 0 or 1 against a number; None against an infinity or NaN (compared as floats)."""
+        if type(other) is not Wide and not -math.inf < other < math.inf:
+            return None
+        return mbf_double.compare(self.parts, double_parts(other))
+
+    def __eq__(self, other):
+        if not isinstance(other, (int, float)):
+            return False
+        c = self._compared(other)
+        return float.__eq__(self, other) if c is None else c == 0
+
+    def __ne__(self, other):
+        return not self.__eq__(other)
+
+    def __lt__(self, other):
+        c = self._compared(other)
+        return float.__lt__(self, other) if c is None else c < 0
+
+    def __le__(self, other):
+        c = self._compared(other)
+        return float.__le__(self, other) if c is None else c <= 0
+
+    def __gt__(self, other):
+        c = self._compared(other)
+        return float.__gt__(self, other) if c is None else c > 0
+
+    def __ge__(self, other):
+        c = self._compared(other)
+        return float.__ge__(self, other) if c is None else c >= 0
+
+    __hash__ = float.__hash__
+
+    def _whole(self) -> tuple[int, bool]:
+        """The magnitude's whole part and whether a fraction is left."""
+        _, exponent, mantissa = self.parts
+        shift = 184 - exponent
+        if shift <= 0:
+            return mantissa << -shift, False
+        return mantissa >> shift, bool(mantissa & ((1 << shift) - 1))
+
+    def __trunc__(self):
+        whole, _ = self._whole()
+        return -whole if self.parts[0] else whole
+
+    __int__ = __trunc__
+
+    def __floor__(self):
+        whole, fraction = self._whole()
+        return -whole - fraction if self.parts[0] else whole
+
+    def __ceil__(self):
+        whole, fraction = self._whole()
+        return -whole if self.parts[0] else whole + fraction
+
+
+def double_from_decimal(whole: str, fraction: str, exponent: int) -> float:
+    """The double GW's number reader gives the decimal ``whole.fraction E exponent``
+    (digit strings; mbf_double.from_decimal): the nearest 56-bit value, a float or a
+    :class:`Wide`; beyond the range an infinity."""
+    try:
+        return double_of(mbf_double.from_decimal(int(whole + fraction or "0"), exponent - len(fraction)))
+    except mbf_double.Overflow:
+        return math.inf
+
+
+@functools.lru_cache(maxsize=4096)
+def wide_literal(data: str) -> float:
+    """A double literal's value from its 8 MBF bytes in hexadecimal (``_wd`` in the
+    compiled code, where a Wide literal cannot be a Python constant)."""
+    return double_of(mbf_double.from_bytes(bytes.fromhex(data)))
+
+
+def single_of_double(x) -> float:
+    """A double made single (``$CSD``: its top 24 bits, rounded up when the 25th is 1),
+    from a :class:`Wide`'s 56 bits (single_arith.from_double for a float)."""
+    if type(x) is not Wide:
+        return single_arith.from_double(x)
+    negative, exponent, mantissa = x.parts
+    r = math.ldexp((mantissa >> 32) + (mantissa >> 31 & 1), exponent - 152)
+    if r >= single_arith.LIMIT:
+        return -math.inf if negative else math.inf
+    return -r if negative else r
+
+
+def printed_double(x) -> "Double":
+    """A double on its way to PRINT or STR$ (``_dbl``): a Wide as it is, a float marked."""
+    return x if type(x) is Wide else Double(x)
+
+
 def _single_digits(x: float) -> tuple[str, int]:
     """``abs(x)`` (single precision) to 7 significant digits as GW-BASIC finds them
     (:func:`yaseer.basic.arithmetic.mbf_digits.decimal_digits`: scaled by ten in MBF working
@@ -244,30 +411,16 @@ def _single_digits(x: float) -> tuple[str, int]:
 
 
 def _double_digits(x: float) -> tuple[str, int]:
-    """``abs(x)`` (double precision) to at most 16 significant digits, rounded half up.
-
-    GW-BASIC's doubles carry 56 bits, yaseer's 53: a value with at most 24 bits (a
-    widened single, an integer) is exact in both and gets the digits of GW's output
-    routine (:mod:`yaseer.basic.arithmetic.mbf_digits`: ``CDBL(1.1)`` is 1.100000023841858);
-    any other is rounded half up from the shortest decimal that reads back as it
-    (what was typed, for a literal: ``-90095.2872#`` shows as typed, as on
-    GW-BASIC, not ``-90095.28720000001``).
-    """
-    x = abs(x)
-    if x < 3.4e38 and _unpack(_pack(x))[0] == x:  # exact in GW's 56 bits: GW's output routine
-        return mbf_digits.digit_string(x, mbf_digits.DOUBLE)
-    from decimal import ROUND_HALF_UP, Decimal  # here: a run printing no other double does not load decimal
-
-    exact = Decimal(repr(x))
-    e = exact.adjusted()
-    digits = exact.as_tuple().digits
-    if len(digits) > DOUBLE_DIGITS:
-        n = int(exact.scaleb(DOUBLE_DIGITS - 1 - e).to_integral_value(rounding=ROUND_HALF_UP))
-        if n >= 10 ** DOUBLE_DIGITS:
-            n //= 10
-            e += 1
-        return str(n).rstrip("0") or "0", e
-    return "".join(map(str, digits)).rstrip("0") or "0", e
+    """``abs(x)`` (double precision) to at most 16 significant digits as GW's output
+    routine finds them from the 56 bits (``$FOUT`` as PC-BASIC reproduces it,
+    :mod:`yaseer.basic.arithmetic.mbf_digits`): a :class:`Wide`'s own, a float's exactly
+    (every double yaseer holds is an MBF value: read to the nearest 56 bits, or the
+    result of GW's routines).  ``CDBL(1.1)`` is 1.100000023841858, ``1# / 3``
+    .3333333333333333, ``12345670# / 3`` 4115223.333333333."""
+    if type(x) is Wide:
+        return mbf_digits.digit_string_of(x.parts[1], x.parts[2] << 8, mbf_digits.DOUBLE)
+    _, exponent, mantissa = mbf_double.parts(x)
+    return mbf_digits.digit_string_of(exponent, mantissa << 8, mbf_digits.DOUBLE)
 
 
 def unsigned_text(x, digits: int, marker: str) -> str:
@@ -298,7 +451,7 @@ def str_dollar(x) -> str:
     if not math.isfinite(x):
         raise _overflow()
     sign_text = "-" if x < 0 else " "
-    if type(x) is Double:
+    if type(x) is Double or type(x) is Wide:
         return sign_text + unsigned_text(x, DOUBLE_DIGITS, "D")
     return sign_text + unsigned_text(x, SINGLE_DIGITS, "E")
 
@@ -311,7 +464,7 @@ def number_to_text(x) -> str:
 # The names the typed compiled code calls (merged into the machine's namespace over
 # the plain ones; see number_models.TypedNumbers for which code uses which).
 RUNTIME = {
-    "_ia": int_result, "_ci": to_int, "_dbl": Double, "_irange": int_range,
+    "_ia": int_result, "_ci": to_int, "_dbl": printed_double, "_wd": wide_literal, "_WD": Wide, "_irange": int_range,
     "_idiv": int_divide, "_mod": int_modulo, "_and": logical_and, "_or": logical_or,
     "_xor": logical_xor, "_eqv": logical_eqv, "_imp": logical_imp, "_not": logical_not,
     "_sgn": sign, "_len": len, "_strs": str_dollar,

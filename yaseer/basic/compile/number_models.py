@@ -179,6 +179,9 @@ class TypedNumbers(PlainNumbers):
     def literal(self, value, kind: str) -> tuple[str, str]:
         if kind == "%":
             return repr(int(value)), "%"
+        if hasattr(value, "parts"):  # a double of 56 bits (values.Wide): from its bytes
+            from yaseer.basic.arithmetic.mbf_double import to_bytes
+            return f"_wd({to_bytes(value.parts).hex()!r})", "#"
         return repr(float(value)), kind or "#"
 
     def arithmetic(self, op: str, left: str, lkind: str, right: str, rkind: str) -> tuple[str, str]:
@@ -191,7 +194,33 @@ class TypedNumbers(PlainNumbers):
             return f"_ia({left} {op} {right})", "%"
         if kind == "!":  # rounded as GW-BASIC's MBF routines round (single_arith.py)
             return self._single(op, left, right), "!"
-        return _in_double_range(f"{left} {op} {right}"), "#"
+        return self._double(op, left, right), "#"
+
+    def _double(self, op: str, left: str, right: str) -> str:
+        """The code of a double ``left op right`` (``+ - *``) on GW's 56-bit doubles:
+        arith_policy's ``_dad _dsb _dml`` (a float fast path inside, the routines of
+        mbf_double.py otherwise).  A sum or difference of two floats is tested inline
+        first: where both operands are floats (not ``values.Wide``), the float result is
+        exact (Dekker: each operand given back by the other difference) and inside MBF's
+        range, it is GW's result, for no routine rounds anything.  Each operand is
+        evaluated once, in order (scratch locals as in :meth:`_single`)."""
+        helper = _DOUBLE_OPERATIONS[op]
+        if not self.tests_inline or op == "*":
+            return f"{helper}({left}, {right})"
+        first, kept = "", []
+        for code, scratch in ((left, "_x"), (right, "_y")):
+            if _plain_operand(code):
+                kept.append(code)
+            else:
+                name = f"{scratch}{self._temp()}"
+                first += f"({name} := {code}) is {name} and "
+                kept.append(name)
+        a, b = kept
+        guards = "".join(f"type({x}) is not _WD and " for x in (a, b) if not _small_literal(x))
+        exact = (f"(_w := {a} + {b}) - {a} == {b} and _w - {b} == {a}" if op == "+"
+                 else f"(_w := {a} - {b}) + {b} == {a} and {a} - _w == {b}")
+        in_range = f"({2.0 ** -128!r} <= abs(_w) < {2.0 ** 127!r} or not _w)"
+        return f"{RANGE_CHECKED[0]}{first}{guards}{exact} and {in_range} else {helper}({a}, {b}))"
 
     def _temp(self) -> int:
         """A fresh number for the scratch locals of one operation (``_x{n}``, ``_y{n}``)."""
@@ -419,6 +448,9 @@ def _tested(value: str, helper: str, band: str | None = None, in_range: bool = T
 
 RANGE_CHECKED = ("(_w if ", "(_sv if ", "(_sh if ")  # how a range-checked double's and a tested single's code start
 """(Their parentheses hold a conditional expression: a chain like ``A+B+C`` may not drop them.)"""
+
+
+_DOUBLE_OPERATIONS = {"+": "_dad", "-": "_dsb", "*": "_dml"}
 
 
 def _in_double_range(code: str) -> str:

@@ -16,6 +16,7 @@ import math
 import re
 import time
 
+from yaseer.basic.arithmetic import mbf_double, values
 from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, OVERFLOW
 from yaseer.basic.machine.runtime import cint
 
@@ -176,7 +177,8 @@ def mks(x: float) -> str:
 
 
 def mkd(x: float) -> str:
-    return _bytes_to_str(_to_mbf(x, 56))
+    """MKD$: the 8 bytes of a double (a Wide's own 56 bits)."""
+    return _bytes_to_str(mbf_double.to_bytes(values.double_parts(x)))
 
 
 def cvs(s: str) -> float:
@@ -184,7 +186,8 @@ def cvs(s: str) -> float:
 
 
 def cvd(s: str) -> float:
-    return _from_mbf(_str_to_bytes(s, 8))
+    """CVD: the double of 8 bytes, all 56 bits of it (a Wide where a float cannot hold them)."""
+    return values.double_of(mbf_double.from_bytes(_str_to_bytes(s, 8)))
 
 
 # ------------------------------------------------------------------ clock
@@ -280,6 +283,8 @@ def _read_decimal(s: str, largest: float | None = None) -> tuple[float, int, str
         value = math.inf
     else:
         value = abs(float(f"{whole or '0'}.{fraction or '0'}e{max(min(exponent, 400), -400)}"))
+        if 0.0 < value < math.inf:  # GW's 56 bits (the float's nearest where no float holds them)
+            value = values.double_from_decimal(whole, fraction, exponent)
     if value > (_MAX_DOUBLE if largest is None else largest):
         if largest is None:
             raise _overflow()

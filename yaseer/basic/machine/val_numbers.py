@@ -14,10 +14,8 @@ double one, and ``"?"`` is made a single where a single is needed, as any double
 
 from __future__ import annotations
 
-import operator
-
 from yaseer.basic.errors import OVERFLOW
-from yaseer.basic.arithmetic.values import Double
+from yaseer.basic.arithmetic.values import Double, printed_double
 
 
 def helpers(policy, ns: dict, largest: float) -> dict:
@@ -29,32 +27,32 @@ def helpers(policy, ns: dict, largest: float) -> dict:
 
     single_divide, double_divide, in_range = ns["_dv"], ns["_ddv"], ns["_dk"]
     singles = {"+": ns["_sadd"], "-": ns["_ssub"], "*": ns["_smul"]}
-    doubles = {"+": operator.add, "-": operator.sub, "*": operator.mul}
+    doubles = {"+": ns["_dad"], "-": ns["_dsb"], "*": ns["_dml"]}
 
     def val(text: str):
         value, kind = val_typed(text, largest)
         if kind == "#":
-            return Double(in_range(value))
+            return printed_double(in_range(value))
         if value - value:  # beyond the single range: the policy's message and value
             return policy.result(OVERFLOW, value < 0, "!")
         return value
 
     def operate(op: str, a, b):
         """``a op b`` (+ - *) where either may be VAL's: double if either is a Double."""
-        if type(a) is Double or type(b) is Double:
-            return Double(in_range(doubles[op](a, b)))
+        if isinstance(a, Double) or isinstance(b, Double):
+            return printed_double(doubles[op](a, b))
         return singles[op](a, b)
 
     def divide(a, b):
-        if type(a) is Double or type(b) is Double:
-            return Double(double_divide(a, b))
+        if isinstance(a, Double) or isinstance(b, Double):
+            return printed_double(double_divide(a, b))
         return single_divide(a, b)
 
     def negate(a):
-        return Double(-a) if type(a) is Double else -a
+        return printed_double(-a) if isinstance(a, Double) else -a
 
     def like(result, argument):
         """ABS, INT or FIX of VAL's value: of its type."""
-        return Double(result) if type(argument) is Double else result
+        return printed_double(result) if isinstance(argument, Double) else result
 
     return {"_val": val, "_vop": operate, "_vdv": divide, "_vneg": negate, "_vlike": like}

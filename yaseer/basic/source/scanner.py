@@ -366,7 +366,8 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
     when the line is entered (PC-BASIC 2.0.8: when a program is loaded), not when the
     line runs; see :func:`entry_messages`.
     """
-    from yaseer.basic.arithmetic.values import DOUBLE_LARGEST, MBF_SMALLEST, SINGLE_LARGEST, single_literal, to_single
+    from yaseer.basic.arithmetic.values import (DOUBLE_LARGEST, MBF_SMALLEST, SINGLE_LARGEST, double_from_decimal,
+                                                single_literal, to_single)
 
     if upper[i] == "&":
         value, end = _radix_number(upper, i)
@@ -397,6 +398,10 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
             value = _overflowed(DOUBLE_LARGEST, notes)
         elif value < MBF_SMALLEST:  # ... and begins there too: below it a literal is 0
             value = 0.0
+        elif value:  # GW's nearest 56 bits (values.Wide where no float holds them)
+            value = double_from_decimal(whole, fraction, int(exponent) if letter and exponent.strip("+-") else 0)
+            if value - value:
+                value = _overflowed(DOUBLE_LARGEST, notes)
         return (value, "#"), end
     single = to_single(value)
     if not single - single:  # in range: the value GW-BASIC's conversion gives (values.mbf_single)
