@@ -314,6 +314,16 @@ def test_fre_counts_the_variable_area_as_part_6_does():  # FRE.md (0..3), CLEAR.
     assert program_area == (2 + 1 + len("PRINT FRE 3 - FRE 1") + 1) + 1  # "Calculating Program Length"
 
 
+def test_an_array_beyond_the_variable_area_is_the_om_error():  # CLEAR.md 8192 bytes; part 6; OM error
+    # a numeric array: (name + 4) + 8 an element + (dimensions x 2 + 1): B(1022) takes
+    # 5 + 8184 + 3 = 8192 bytes, all of the area; B(1023) 8 more
+    assert run_values("10 DIM B(1022): PRINT FRE 0") == [[0.0]]
+    assert error_of("10 DIM B(1023)") == "Out of memory in 10"
+    # two arrays that fit alone but not together; the OM error leaves no half-made array
+    program = "10 ON ERROR GOTO 90\n20 DIM C(500): DIM D(600)\n30 PRINT FRE 0: END\n90 PRINT ERR: RESUME NEXT"
+    assert run_values(program) == [[1.0], [8192.0 - (1 + 4 + 8 * 501 + 2 + 1)]]  # ERR 1: OM
+
+
 def test_verify_reads_a_saved_file_through(tmp_path):  # VERIFY.md: VERIFY "CAS0:TEST"
     program = '10 OPEN "CAS0:TEST" FOR OUTPUT AS #1: PRINT #1, "ABC": CLOSE\n20 VERIFY "CAS0:TEST": PRINT "OK"\n'
     assert run_text(program, files=tmp_path) == "OK\n"

@@ -133,7 +133,10 @@ RESERVED_ONLY = ("CSR", "KEY", "MID", "VAC", "VAR", "AS", "OUT", "PUT", "CALC")
 # error's meaning 2, "illegal command used in ... program mode").  ALL: every program area.
 PROGRAM_COMMANDS = ("LIST", "LLIST", "SAVE", "LOAD", "NEW", "RUN", "ALL")
 REFUSED_COMMANDS = ("NEW", "RUN")
-COMMAND_OPTIONS = {"LOAD": "A", "SAVE": "A", "RUN": ""}  # ,A: the ASCII format (yaseer's only one)
+COMMAND_OPTIONS = {"LOAD": "A", "SAVE": "A", "RUN": ""}
+# The variable area's bytes (CLEAR.md: 8192 on the FX-880P and an FX-850P of 32 KB; FRE 2
+# reports it): an array that does not fit with the other variables is the OM error.
+VARIABLE_AREA = 8192  # ,A: the ASCII format (yaseer's only one)
 # Reserved string variables: CALC$, the formula CALCJMP hands to the CAL mode (the library's
 # ``CALC$=s$``); kept as the variable of that name, in capitals however it is typed.
 RESERVED_VARIABLES = ("CALC$",)
@@ -186,6 +189,7 @@ class Words:
     reserved_variables = RESERVED_VARIABLES
     refused_commands = REFUSED_COMMANDS
     command_options = COMMAND_OPTIONS
+    variable_area = VARIABLE_AREA
     reads_variables = READS_VARIABLES
     empty_statements = EMPTY_STATEMENTS
     computed_restore = COMPUTED_RESTORE

@@ -15,6 +15,7 @@ import functools
 
 from yaseer.basic.arithmetic import formatting
 from yaseer.basic.arithmetic import casio_math
+from yaseer.basic.dialects import casio
 from yaseer.basic.machine import runtime
 from yaseer.basic.errors import (
     BasicError, OVERFLOW, PASSWORD_PROTECTED, SYNTAX_ERROR, TYPE_MISMATCH, not_emulated,
@@ -29,7 +30,7 @@ VARLIST_COLUMN = 8  # VARLIST.md shows the names in columns of 8 on the 32-colum
 # FX-880P; a program cannot change it, CLEAR.md item 3).
 RAM_BYTES = 32 * 1024
 SYSTEM_BYTES = 3 * 1024
-VARIABLE_AREA = 8192
+VARIABLE_AREA = casio.VARIABLE_AREA
 
 
 def _whole_in(x: float, low: int, high: int) -> int:

@@ -60,6 +60,7 @@ class Variables:
         created = _new_array(dims, initial_value(name))
         self.arrays[name] = created
         self.array_dims[name] = dims
+        self._check_variable_area(name, None)
         return created
 
     def _reserve(self, name: str, dims: tuple) -> None:
@@ -83,10 +84,28 @@ class Variables:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         if any(d < self.subscript_base for d in dims):  # DIM A(0) under OPTION BASE 1: no element
             raise BasicError("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
+        old = self.arrays.get(name), self.array_dims.get(name), self.array_elements
         self._reserve(name, dims)
         self.arrays[name] = _new_array(dims, initial_value(name))
         self.array_dims[name] = dims
+        self._check_variable_area(name, old)
         self.explicit_arrays.add(name)
+
+    def _check_variable_area(self, name: str, old) -> None:
+        """Where the dialect's variable area has a size (casio: 8192 bytes, CLEAR.md's
+        FX-880P figure), an array that does not fit in it with the other variables (bytes as
+        FRE counts them: casio_words.variable_bytes) is Out of memory (the Casio's OM error)
+        and is not made; ``old``: the array, its sizes and the budget before (None: none)."""
+        words = self.dialect.words
+        if words is None or words.variable_area is None or self.variable_bytes() <= words.variable_area:
+            return
+        array, dims, elements = old if old is not None else (None, None, None)
+        if array is None:
+            self.array_elements -= _units(name, self.array_dims[name])
+            del self.arrays[name], self.array_dims[name]
+        else:
+            self.arrays[name], self.array_dims[name], self.array_elements = array, dims, elements
+        raise BasicError("Out of memory", OUT_OF_MEMORY)
 
     def erase(self, name: str) -> None:
         """ERASE name: forget the array (a later DIM may size it again); not there: Illegal function call."""
