@@ -74,6 +74,15 @@ def test_input_takes_only_the_keys_while_nothing_was_placed():
     assert "\n 9\n" in result.text  # (the screen shows "? 945": the keys over the old text)
 
 
+def test_lprint_without_a_printer_goes_beside_the_screens_and_cls_keeps_it():
+    # the printer is a device of its own (part 7; LPRINT.md): its text is not on the LCD
+    result = yaseer.run('10 CLS: PRINT "SHOWN";: LPRINT "PAPER"\n20 A$=INPUT$(1): CLS: PRINT "NEXT";', input="x")
+    assert result.text == "PAPER\nSHOWN\n\nNEXT\n\n"  # printed at once; the screens at the key wait and the end
+    assert result.screens == ["SHOWN\n\n", "NEXT\n\n"]
+    # a program that only prints: the two streams' text in the order printed, as before
+    assert yaseer.run('10 PRINT "A": LPRINT "B": PRINT "C"').text == "A\nB\nC\n"
+
+
 def test_the_window_follows_the_cursor_over_the_virtual_screen():
     # part 6 "Virtual screen function": 8 lines, 2 shown; LOCATE's range 0..31, 0..7
     program = '10 CLS: FOR I=0 TO 7: LOCATE 0,I: PRINT "LINE";I;: NEXT\n20 LOCATE 0,3: A$=INPUT$(1)'

@@ -36,6 +36,10 @@ control code does its ``controls``.
   cursor (after its prompt) to the end of the logical line when EXE is pressed: the keys
   typed over what the screen held there (the Casio's INPUT.md, item 8); False takes the
   keys typed alone.
+* ``printer_apart``: True sends LPRINT without a printer (no ``--printer``) to the output as
+  it is printed, beside the screens and never part of them (CLS does not erase it: the
+  Casio's printer is a device of its own, part 7); False lets it share the screen's text
+  (GW-BASIC without a printer, as yaseer always ran it).
 """
 
 from __future__ import annotations
@@ -44,11 +48,13 @@ from collections import namedtuple
 
 ScreenRules = namedtuple("ScreenRules", ("late_wrap", "origin", "row_first", "locate_arguments",
                                          "function_keys", "key_label", "clear_draws", "attributes",
-                                         "trace_mark", "trace_halts", "input_reads_screen"))
+                                         "trace_mark", "trace_halts", "input_reads_screen",
+                                         "printer_apart"))
 
 CASIO_SCREEN = ScreenRules(late_wrap=False, origin=0, row_first=False, locate_arguments=(2, 2),
                            function_keys=(), key_label=0, clear_draws=True, attributes=False,
-                           trace_mark="P{area}-{line}", trace_halts=True, input_reads_screen=True)
+                           trace_mark="P{area}-{line}", trace_halts=True, input_reads_screen=True,
+                           printer_apart=True)
 
 # GW-BASIC's soft keys at start (F1..F10; GWSTS.ASM's table is the OEM's, these are the
 # IBM PC's as PC-BASIC 2.0.8 has them); a carriage return ends several.
@@ -57,7 +63,8 @@ GW_FUNCTION_KEYS = ("LIST ", "RUN\r", 'LOAD"', 'SAVE"', "CONT\r", ',"LPT1:"\r', 
 
 GW_SCREEN = ScreenRules(late_wrap=True, origin=1, row_first=True, locate_arguments=(0, 5),
                         function_keys=GW_FUNCTION_KEYS, key_label=6, clear_draws=False, attributes=True,
-                        trace_mark="[{line}]", trace_halts=False, input_reads_screen=False)
+                        trace_mark="[{line}]", trace_halts=False, input_reads_screen=False,
+                        printer_apart=False)
 
 # What each control code does on GW-BASIC's text screen when PRINTed (the OEM's PRTMAP is
 # not in the published source; PC-BASIC 2.0.8's console does this): TAB to the next

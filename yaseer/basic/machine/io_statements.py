@@ -83,7 +83,7 @@ class InputOutput:
         if printer:
             if not 0 <= n <= 255:
                 raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-            if self.printer is not self.screen:
+            if self.own_printer:
                 self.printer.width = None if n == 255 else max(n, 1)
             return
         if n not in SCREEN_WIDTHS:
@@ -144,7 +144,7 @@ class InputOutput:
                 self._csv_row(stream)
             return
         self._lay_out(stream, items, newline)
-        if device == 0 and self.print_echo and self.printer is not self.screen:
+        if device == 0 and self.print_echo and self.own_printer:
             self._lay_out(self.printer, items, newline)  # MODE 7: PRINT on the printer too
 
     def _lay_out(self, stream: OutputStream, items: tuple, newline: bool) -> None:

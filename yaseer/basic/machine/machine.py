@@ -194,7 +194,10 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.screen = self._init_console(screen if screen is not None else sys.stdout)
         self.printer = OutputStream(self.shown(printer) if printer is not None else self.screen.stream,
                                     self.dialect.printer_width, moves_items=False)
-        if printer is None:
+        # without a printer LPRINT shares the screen, or (the dialect's screen rules: the
+        # Casio, whose LCD holds only what the program shows) goes to the output beside it
+        self.own_printer = printer is not None
+        if printer is None and (output_format != "text" or not self.dialect.screen.printer_apart):
             self.printer = self.screen
         self.streams = (self.screen, self.printer)
         self.csv = output_format == "csv"
