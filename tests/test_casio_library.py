@@ -225,6 +225,23 @@ HYPOTHESES = [  # program, keys, the statistic, the critical value, its side ("<
     # ratio difference: pooled v = 110/220
     ("LIB6770", "100\n60\n120\n50\n5\n", (0.6 - 50 / 120) / math.sqrt(0.5 * 0.5 * (1 / 100 + 1 / 120)),
      float(-mpmath.sqrt(2) * mpmath.erfinv(2 * 0.025 - 1)), ">"),
+    # mean, variance known: mu0 = 0, sigma 1, n = 25, mean 0.5: z = 2.5, two-sided and one-sided
+    ("LIB6710", "N0\n1\n25\n0.5\n5\n", 2.5, float(-mpmath.sqrt(2) * mpmath.erfinv(2 * 0.025 - 1)), ">"),
+    ("LIB6711", "N0\n1\n25\n0.5\n5\n", 2.5, float(-mpmath.sqrt(2) * mpmath.erfinv(2 * 0.05 - 1)), ">"),
+    ("LIB6712", "N0\n1\n25\n0.5\n5\n", 2.5, float(mpmath.sqrt(2) * mpmath.erfinv(2 * 0.05 - 1)), "<"),
+    # the one-sided forms of the variance ratio, mean difference, ratio and ratio difference tests
+    ("LIB6741", "NN10\n4\n12\n2\n5\n", 2.0, quantile(lambda t: upper_f(9, 11, t), 0.05, 3), ">"),
+    ("LIB6742", "NN10\n4\n12\n2\n5\n", 2.0, quantile(lambda t: upper_f(9, 11, t), 0.95, 0.3), "<"),
+    ("LIB6751", "NN10\n5\n20\n12\n4\n30\n5\n", 1 / math.sqrt((1 / 10 + 1 / 12) * 50 / 20),
+     quantile(lambda t: upper_t(20, t), 0.05, 2), ">"),
+    ("LIB6752", "NN10\n5\n20\n12\n4\n30\n5\n", 1 / math.sqrt((1 / 10 + 1 / 12) * 50 / 20),
+     -quantile(lambda t: upper_t(20, t), 0.05, 2), "<"),
+    ("LIB6761", "0.5\n100\n60\n5\n", 2.0, float(-mpmath.sqrt(2) * mpmath.erfinv(2 * 0.05 - 1)), ">"),
+    ("LIB6762", "0.5\n100\n60\n5\n", 2.0, float(mpmath.sqrt(2) * mpmath.erfinv(2 * 0.05 - 1)), "<"),
+    ("LIB6771", "100\n60\n120\n50\n5\n", (0.6 - 50 / 120) / math.sqrt(0.5 * 0.5 * (1 / 100 + 1 / 120)),
+     float(-mpmath.sqrt(2) * mpmath.erfinv(2 * 0.05 - 1)), ">"),
+    ("LIB6772", "100\n60\n120\n50\n5\n", (0.6 - 50 / 120) / math.sqrt(0.5 * 0.5 * (1 / 100 + 1 / 120)),
+     float(mpmath.sqrt(2) * mpmath.erfinv(2 * 0.05 - 1)), "<"),
 ]
 
 
@@ -369,3 +386,64 @@ SOLIDS = [  # program, keys (in the screen formula's order), label, closed form
                          ids=[c[0] for c in LINES_AND_CIRCLES + SOLIDS])
 def test_geometry(program, keys, label, value):
     assert first(program, keys, label) == pytest.approx(value, rel=1e-9)
+
+
+# ------------------------------------------------------------------ percentage points and interval estimates
+def normal_point(p: float) -> float:
+    """The x the standard normal exceeds with probability ``p``."""
+    return float(-mpmath.sqrt(2) * mpmath.erfinv(2 * p - 1))
+
+
+def t_point(n: int, p: float) -> float:
+    return quantile(lambda t: upper_t(n, t), p, 2)
+
+
+def f_point(n: int, m: int, p: float) -> float:
+    return quantile(lambda t: upper_f(n, m, t), p, 2)
+
+
+def chi_point(n: int, p: float) -> float:
+    return quantile(chi_square_upper(n), p, n)
+
+
+def test_percentage_points_of_t_and_f():
+    # the x with upper probability p: t with 10 degrees of freedom, F(4, 10)
+    assert first("LIB6430", "10\n0.05\n", "x=") == pytest.approx(t_point(10, 0.05), rel=SHOWN)
+    assert first("LIB6440", "4\n10\n0.05\n", "x=") == pytest.approx(f_point(4, 10, 0.05), rel=SHOWN)
+
+
+def interval(program: str, keys: str) -> tuple[float, float]:
+    """The last screen's confidence interval ``a < parameter < b``."""
+    found = re.findall(NUMBER + r"\s*<\s*\S+\s*<\s*" + NUMBER, screens(program, keys)[-1])
+    assert found, f"{program}: no interval shown"
+    return float(found[-1][0]), float(found[-1][1])
+
+
+Z975 = normal_point(0.025)
+INTERVALS = [  # program, keys (Y/N: no new data; then the figures; 95 %), the interval (closed forms, mpmath)
+    # mean, variance known: n = 25, mean 10, sigma 2
+    ("LIB6610", "N25\n10\n2\n95\n", (10 - Z975 * 2 / 5, 10 + Z975 * 2 / 5)),
+    # mean, variance unknown: n = 25, mean 10, unbiased variance 2: t with 24 degrees of freedom
+    ("LIB6620", "N25\n10\n2\n95\n", (10 - t_point(24, 0.025) * math.sqrt(2 / 25),
+                                      10 + t_point(24, 0.025) * math.sqrt(2 / 25))),
+    # variance from n = 25 and the sum of squares S = 4: S / chi-square(24) points
+    ("LIB6630", "N25\n4\n95\n", (4 / chi_point(24, 0.025), 4 / chi_point(24, 0.975))),
+    ("LIB6640", "N25\n4\n95\n", (math.sqrt(4 / chi_point(24, 0.025)), math.sqrt(4 / chi_point(24, 0.975)))),
+    # variance ratio sigma2^2/sigma1^2: n1 = 25, V1 = 4, n2 = 20, V2 = 9
+    ("LIB6650", "NN25\n4\n20\n9\n95\n", (9 / 4 / f_point(19, 24, 0.025), 9 / 4 * f_point(24, 19, 0.025))),
+    # mean difference: n1 = 5, mean 10, S1 = 2; n2 = 20, mean 9, S2 = 3; pooled (2 + 3) / 23
+    ("LIB6660", "NN5\n10\n2\n20\n9\n3\n95\n",
+     (1 - t_point(23, 0.025) * math.sqrt(5 / 23 * (1 / 5 + 1 / 20)), 1 + t_point(23, 0.025) * math.sqrt(5 / 23 * (1 / 5 + 1 / 20)))),
+    # ratio: 30 of 100
+    ("LIB6670", "100\n30\n95\n", (0.3 - Z975 * math.sqrt(0.3 * 0.7 / 100), 0.3 + Z975 * math.sqrt(0.3 * 0.7 / 100))),
+    # ratio difference: 30 of 100 against 20 of 80
+    ("LIB6680", "100\n30\n80\n20\n95\n", (0.05 - Z975 * math.sqrt(0.21 / 100 + 0.1875 / 80),
+                                           0.05 + Z975 * math.sqrt(0.21 / 100 + 0.1875 / 80))),
+]
+
+
+@pytest.mark.parametrize("program, keys, expected", INTERVALS, ids=[c[0] for c in INTERVALS])
+def test_interval_estimates(program, keys, expected):
+    # shown to 4 significant digits (the programs' ROUND)
+    low, high = interval(program, keys)
+    assert low == pytest.approx(expected[0], rel=SHOWN) and high == pytest.approx(expected[1], rel=SHOWN)
