@@ -215,3 +215,13 @@ def test_gw_load_and_run_of_a_file_show_the_overflow_of_its_literals_once(tmp_pa
     assert after(gw, 'LOAD "big"') == "Overflow\nOverflow\n"
     assert after(gw, "RUN") == " 1.701412E+38  1.701411834604692D+38 \n 5 \n"
     assert after(gw, 'RUN "big"') == "Overflow\nOverflow\n 1.701412E+38  1.701411834604692D+38 \n 5 \n"
+
+
+def test_list_all_and_new_all_cover_every_program_area(session):
+    # LIST.md item 13: all programs from P0 through P9 in turn; NEW.md item 6: NEW ALL clears
+    # every area's program and all variables (NEW alone: the current area's)
+    after(session, "10 PRINT 1", "PROG 4", "10 PRINT 4", "PROG 0", "A=7")
+    assert after(session, "LIST ALL") == "P0\n10 PRINT 1\nP4\n10 PRINT 4\n"
+    after(session, "NEW ALL")
+    assert after(session, "LIST ALL") == ""
+    assert after(session, "PRINT A") == " 0 \n"

@@ -343,6 +343,12 @@ class Session:
     def command_list(self, argument: str, write: Callable[[str], object] | None = None) -> None:
         """LIST [range]: show the stored lines of the current area as the machine lists them."""
         write = write or self.write
+        if self._every_area(argument):  # LIST ALL (casio, LIST.md item 13): areas P0-P9 in turn
+            for area in sorted(a for a, lines in self.programs.items() if lines):
+                write(f"P{area}\n")
+                for number in sorted(self.programs[area]):
+                    write(f"{number} {detokenize(self.programs[area][number], self._dialect())}\n")
+            return
         first, last = parse_range(argument)
         if not self.program and self.area in LIBRARY_AREAS:
             from yaseer.library_text import LIBRARY_TEXT
@@ -401,8 +407,24 @@ class Session:
             raise BasicError("Undefined line number", UNDEFINED_LINE)
         self.edit_text = self.listed(number)
 
+    def _dialect(self):
+        from yaseer.basic.dialects.dialect import get_dialect
+
+        return get_dialect(self.dialect)
+
+    def _every_area(self, argument: str) -> bool:
+        """Is ``argument`` the ALL of NEW ALL / LIST ALL (a word of the dialect: casio)?"""
+        return argument.strip().upper() == "ALL" and "ALL" in self._dialect().own_words
+
     def command_new(self, argument: str) -> None:
-        """NEW: erase the current area's program (and the variables if it is PROG 0)."""
+        """NEW: erase the current area's program (and the variables if it is PROG 0); NEW ALL
+        (casio, NEW.md item 6): every area's program and all variables."""
+        if self._every_area(argument):
+            for area in list(self.programs):
+                self.programs[area] = {}
+            self._can_continue = False
+            self.engine.reset()
+            return
         if argument:
             raise BasicError("Syntax error", SYNTAX_ERROR)
         self.programs[self.area] = {}
