@@ -137,6 +137,8 @@ COMMAND_OPTIONS = {"LOAD": "A", "SAVE": "A", "RUN": ""}
 # The variable area's bytes (CLEAR.md: 8192 on the FX-880P and an FX-850P of 32 KB; FRE 2
 # reports it): an array that does not fit with the other variables is the OM error.
 VARIABLE_AREA = 8192  # ,A: the ASCII format (yaseer's only one)
+# ... and the names OPEN's grammar reads them as, inside an OPEN statement (scanner._open_words)
+OPEN_WORDS = {("OUT", "PUT"): "OUTPUT", ("AS",): "AS"}
 # Reserved string variables: CALC$, the formula CALCJMP hands to the CAL mode (the library's
 # ``CALC$=s$``); kept as the variable of that name, in capitals however it is typed.
 RESERVED_VARIABLES = ("CALC$",)
@@ -187,6 +189,7 @@ class Words:
     absent_devices = ABSENT_DEVICES
     reserved_only = RESERVED_ONLY
     reserved_variables = RESERVED_VARIABLES
+    open_words = OPEN_WORDS
     refused_commands = REFUSED_COMMANDS
     command_options = COMMAND_OPTIONS
     variable_area = VARIABLE_AREA

@@ -548,30 +548,29 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
     words = dialect.words
     if words and words.closes_parentheses:
         tokens = _closed_parentheses(tokens)
-    if words and words.reserved_only and "OPEN" in text.upper():
-        _open_words(tokens)
+    if words and words.open_words and "OPEN" in text.upper():
+        _open_words(tokens, words.open_words)
     return tokens
 
 
-def _open_words(tokens: list) -> None:
-    """In an OPEN statement, the reserved words OPEN reads as the names its grammar
-    expects: ``OUT PUT`` (the keyword-first reading of OUTPUT) as ``OUTPUT``, ``AS`` as
-    ``AS`` (the Casio reserves AS, OUT and PUT for OPEN alone: OPEN.md)."""
+def _open_words(tokens: list, words: dict) -> None:
+    """In an OPEN statement, the reserved words OPEN reads as the names its grammar expects
+    (``words``: the dialect's ``open_words``, word sequence -> name: the Casio's ``OUT PUT``,
+    its keyword-first reading of OUTPUT, is ``OUTPUT``; ``AS`` is ``AS``: OPEN.md)."""
     k = 0
     opened = False
     while k < len(tokens):
-        token = tokens[k]
-        kind = token.type
+        kind = tokens[k].type
         if kind == "OPEN":
             opened = True
         elif kind in ("_COLON", "ELSE", "THEN"):
             opened = False
         elif opened and kind == UNSUPPORTED:
-            if token.value == "OUT" and k + 1 < len(tokens) and tokens[k + 1].value == "PUT" \
-                    and tokens[k + 1].type == UNSUPPORTED:
-                tokens[k:k + 2] = [Token("NAME", "OUTPUT")]
-            elif token.value == "AS":
-                tokens[k] = Token("NAME", "AS")
+            for sequence, name in words.items():
+                found = tokens[k:k + len(sequence)]
+                if all(t.type == UNSUPPORTED for t in found) and tuple(t.value for t in found) == sequence:
+                    tokens[k:k + len(sequence)] = [Token("NAME", name)]
+                    break
         k += 1
 
 
@@ -652,6 +651,8 @@ def detokenize(text: str, dialect: Dialect = CASIO) -> str:
         return text.strip()
     out: list[str] = []
     previous = None  # type of the lexeme before
+    # words OPEN reads as one (the Casio's OUT PUT): listed whole, as typed
+    joined = {sequence for sequence in (dialect.words.open_words if dialect.words else ()) if len(sequence) == 2}
     for kind, value, start, end in lexemes:
         if kind == "REMARK":
             piece = text[start:end] if text[start] == "'" else "REM" + value
@@ -663,8 +664,8 @@ def detokenize(text: str, dialect: Dialect = CASIO) -> str:
             piece = text[start:end].upper() if kind == "NUMBER" else text[start:end]
         else:
             piece = value  # a keyword
-        if previous is not None and _spaced(previous, kind) and not (piece == "PUT" and out[-1] == "OUT"):
-            out.append(" ")  # (OUT PUT is OPEN's OUTPUT as the Casio reads it: listed whole)
+        if previous is not None and _spaced(previous, kind) and (out[-1], piece) not in joined:
+            out.append(" ")
         out.append(piece)
         previous = kind
     return "".join(out)
