@@ -86,3 +86,9 @@ def test_casio_trace_names_the_program_area():
     machine.load("10 TRON\n20 GOSUB PROG 2\n30 PRINT 8")
     machine.run()
     assert screen.getvalue() == "P0-20\nP2-10\n 7 \nP2-20\nP0-30\n 8 \n"
+
+
+def test_casio_trace_names_a_program_file_by_its_name(tmp_path):
+    # a program file run by GOSUB "name" (the library's form) has no P area: its name shows
+    (tmp_path / "SUB.bas").write_text("10 PRINT 5: RETURN\n")
+    assert run_text('10 TRON\n20 GOSUB "SUB"\n30 END', files=tmp_path) == "P0-20\nSUB-10\n 5 \nP0-30\n"

@@ -28,7 +28,7 @@ control code does its ``controls``.
   only placing text (LOCATE, cursor codes, VIEW PRINT) shows screens.
 * ``attributes``: True when cells carry a colour attribute (COLOR, SCREEN(r, c, 1)).
 * ``trace_mark``: what TRON shows as a line starts, a format of ``area`` (the program
-  area's name) and ``line``: GW-BASIC's ``[n]`` inline (as PC-BASIC 2.0.8 prints it), the Casio's ``P0-10`` (TRON.md: the area and the line number).
+  area's name: ``P0`` .. ``P9``, a program file's name) and ``line``: GW-BASIC's ``[n]`` inline (as PC-BASIC 2.0.8 prints it), the Casio's ``P0-10`` (TRON.md: the area and the line number).
 * ``trace_halts``: True puts the mark on a row of its own and suspends the run there
   until EXE is pressed (TRON.md, item 2; part 6 "Irregular execution"); the keys must
   come from a person at a terminal for that (see InputOutput.trace_line).
@@ -53,7 +53,7 @@ ScreenRules = namedtuple("ScreenRules", ("late_wrap", "origin", "row_first", "lo
 
 CASIO_SCREEN = ScreenRules(late_wrap=False, origin=0, row_first=False, locate_arguments=(2, 2),
                            function_keys=(), key_label=0, clear_draws=True, attributes=False,
-                           trace_mark="P{area}-{line}", trace_halts=True, input_reads_screen=True,
+                           trace_mark="{area}-{line}", trace_halts=True, input_reads_screen=True,
                            printer_apart=True)
 
 # GW-BASIC's soft keys at start (F1..F10; GWSTS.ASM's table is the OEM's, these are the

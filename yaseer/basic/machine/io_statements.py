@@ -42,7 +42,7 @@ class InputOutput:
     """PRINT, INPUT and the file statements' I/O on the machine's streams (``screen``,
     ``printer``, ``input_stream``, ``files``).  A mixin of ``Machine``, on its state."""
 
-    def trace_line(self, number: int, area="0") -> None:
+    def trace_line(self, number: int, area="P0") -> None:
         """TRON's mark as line ``number`` of program area ``area`` (its name) starts: the
         dialect's ``trace_mark`` on the screen (GW: ``[n]``, like PRINT without a newline).
 

@@ -495,7 +495,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
     def _tracer(self, area):
         """TRON's ``_tr(line)`` for the code of ``area``: the mark names the area (``P0``..,
         a program file's area by the file's name)."""
-        name = str(area)
+        name = f"P{area}"
         if isinstance(area, int) and area >= FIRST_FILE_AREA:
             name = next((file.split(":", 1)[0] for file, n in self.file_areas.items() if n == area), name)
         return lambda number: self.trace_line(number, name)
