@@ -83,6 +83,12 @@ def test_lprint_without_a_printer_goes_beside_the_screens_and_cls_keeps_it():
     assert yaseer.run('10 PRINT "A": LPRINT "B": PRINT "C"').text == "A\nB\nC\n"
 
 
+def test_a_beep_shows_a_changed_screen_once():
+    # a program that beeps in a loop (LIB0400's failure loop) shows its screen at the first beep
+    result = yaseer.run('10 CLS: PRINT "NG";\n20 FOR I=1 TO 3: BEEP: NEXT\n30 PRINT "END";')
+    assert result.screens == ["NG\n\n", "NGEND\n\n"]
+
+
 def test_the_window_follows_the_cursor_over_the_virtual_screen():
     # part 6 "Virtual screen function": 8 lines, 2 shown; LOCATE's range 0..31, 0..7
     program = '10 CLS: FOR I=0 TO 7: LOCATE 0,I: PRINT "LINE";I;: NEXT\n20 LOCATE 0,3: A$=INPUT$(1)'

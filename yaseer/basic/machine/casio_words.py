@@ -86,7 +86,11 @@ class CasioWords:
 
     def beep(self, tone: float = 0.0) -> None:
         """BEEP [0|1]: the buzzer, a low or a high tone.  yaseer has no buzzer: a terminal
-        hears its bell; output to a file or a pipe is left as it is."""
+        hears its bell; output to a file or a pipe is left as it is.  A drawn screen that
+        changed since it was last shown is shown (the beep calls the user to the LCD: LIB0400's
+        ``NG RAM 1`` before its endless BEEP loop)."""
+        if self.display is not None and self.display.changed:
+            self.show_screen()
         stream = self.screen.stream
         isatty = getattr(stream, "isatty", None)
         if isatty is not None and isatty():
