@@ -144,6 +144,46 @@ def test_sums_near_a_tie_after_the_carry_are_pcbasics():
     assert reached > 0
 
 
+def _long_way(a: float, b: float) -> float:
+    """``$FADDS`` on integer working numbers (single_arith.working_sum and _rounded)."""
+    small, large = (a, b) if abs(a) <= abs(b) else (b, a)
+    small_exponent, small_mantissa = sa.working_parts(small)
+    exponent, mantissa = sa.working_parts(large)
+    return sa._rounded(*sa.working_sum(small_exponent, small_mantissa, small < 0, exponent, mantissa, large < 0))
+
+
+def test_differences_on_floats_are_the_register_steps():
+    """single_arith.register_difference (add's float steps for operands of opposite signs)
+    against the integer register steps and PC-BASIC's $FADDS: the smaller operand every
+    number of binades below (its bits shifted out of the 32-bit register), guard bytes of
+    every kind (GW's rounding down of 10?xxxxx over an even mantissa), differences that
+    cancel into lower binades, and the range's low end."""
+    rng = random.Random(31)
+    on_floats = guard_rule = 0
+    for k in range(12000):
+        exponent = rng.randrange(-126, 100) if k % 7 else rng.randrange(-128, -110)
+        large = math.ldexp(rng.randrange(1 << 23, 1 << 24) if k % 5 else (1 << 23) + rng.randrange(4), exponent)
+        shift = rng.randrange(0, 34)
+        bits = rng.choice([24, 24, 12, 5, 1])
+        small = math.ldexp(rng.randrange(1 << (bits - 1), 1 << bits), exponent + 24 - bits - shift)
+        if small >= large or small < sa.TINY:  # (both singles of MBF's range)
+            continue
+        a, b = (large, -small) if rng.random() < 0.5 else (-large, small)
+        if rng.random() < 0.5:
+            a, b = b, a
+        q = large * 4503599627370497.0
+        fast = sa.register_difference(large, small, q - 0.9999999999999999 * q)
+        expected = _long_way(a, b)
+        on_floats += fast is not None
+        if fast is not None:
+            assert (-fast if (a if abs(a) > abs(b) else b) < 0 else fast) == expected, (a, b)
+        assert sa.add(a, b) == expected, (a, b)
+        if k % 4 == 0:
+            assert expected == pc_result(lambda: pc_single(a).iadd(pc_single(b))), (a, b)
+        guard_rule += expected != nearest_single(Fraction(a) + Fraction(b))
+    assert on_floats > 10000 and guard_rule > 300  # (GW other than the nearest single)
+
+
 def test_division_is_the_nearest_single_as_the_source_rounds():
     pc_differs = 0
     for a, b in pairs(3, 8000):
@@ -375,3 +415,15 @@ def test_a_widened_single_prints_pcbasics_sixteen_digits():
         differs_from_exact += "E" not in theirs and "e" not in exact and theirs.strip().lstrip("-").rstrip("0").rstrip(".") != exact.rstrip("0").rstrip(".")
     assert differs_from_exact > 0  # the routine's digits are not simply the exact value's
     assert str_dollar(Double(9.625066757202148)) == " 9.625066757202149"
+
+
+@pytest.mark.parametrize("power", [1.0, -1.0, 2.0 ** 58, -4.0, 2.0 ** -100, 16777216.0, -16777216.0])
+def test_a_power_of_two_less_half_its_unit_is_the_power(power):
+    """``$FADDS``: a smaller operand of exactly half the larger's unit (guard byte 0x80, no
+    bit lost) leaves the larger as it is, although the exact difference would fit in 24 bits
+    below a power of two: 1 - 2**-24 is 1 (PC-BASIC's $FADDS the same)."""
+    half_unit = -power * 2.0 ** -24
+    assert sa.add(power, half_unit) == power == sa.add(half_unit, power)
+    assert sa.subtract(power, -half_unit) == power
+    assert pc_result(lambda: pc_single(power).iadd(pc_single(half_unit))) == power
+    assert sa.add(power, 2 * half_unit) == power + 2 * half_unit  # a whole unit is subtracted

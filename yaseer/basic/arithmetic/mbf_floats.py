@@ -8,20 +8,18 @@ roundings).  Here each step is a few exact float64 operations and a cheap roundi
 * ``$FMULS``: the product of two singles is exact in a double; Veltkamp's split
   gives its nearest single, which is GW's result outside a band of 1/8 of a unit
   (single_arith.product); inside it, single_arith.product_near_half.
-* ``$FADDS`` of the product ``P`` and the coefficient ``c`` where ``|P| <= |c|`` (the
+* ``$FADDS`` of the product ``P`` and the coefficient ``c`` where ``|P| < |c|`` (the
   usual case: each coefficient is larger than the product added to it), with the
-  coefficient's constants computed once (:func:`plan`): its unit ``u``, its 32-bit
-  register's last place ``w = u/256``, and "magic" numbers ``1.5 * 2**52 * q`` whose
-  sum with a value rounds it half to even to a multiple of ``q``.  Of one sign:
-  the exact sum rounded at ``u`` (no carry: the guard byte and the sticky bit round
-  as the exact sum does), or at ``2u`` after a carry, outside the 1/512 band where
-  the carry's lost bit makes GW round otherwise.  Of two signs: ``P`` cut toward 0
-  at ``w`` (the bits shifted out of the register are lost), below half a unit the
-  coefficient unchanged, else the exact difference with GW's guard-byte rule
-  (``10?xxxxx`` with low bits over an even mantissa rounds down) and rounded half to
-  even at its own binade (normalising shifts the register left, losing nothing).
-* Every other case (a product larger than the coefficient, a sum that carries into a
-  half-way band) is single_arith.add itself: the results are the same by construction.
+  coefficient's constants computed once (:func:`plan`): its unit ``u`` and "magic"
+  numbers ``1.5 * 2**52 * q`` whose sum with a value rounds it half to even to a
+  multiple of ``q``.  Of one sign: the exact sum rounded at ``u`` (no carry: the
+  guard byte and the sticky bit round as the exact sum does), or at ``2u`` after a
+  carry, outside the 1/512 band where the carry's lost bit makes GW round otherwise
+  (an exact tie lost no bit).  Of two signs: single_arith.register_difference (the
+  same register steps on floats).
+* Every other case (a product at least as large as the coefficient, a sum that carries
+  into the half-way band) is single_arith.add itself: the results are the same by
+  construction.
 
 The caller keeps the argument where no step can leave MBF's range (``x`` at least
 :data:`LEAST_ARGUMENT`, at most 1, coefficients below 100 in size).
@@ -31,7 +29,7 @@ from __future__ import annotations
 
 from math import frexp, ldexp
 
-from yaseer.basic.arithmetic.single_arith import add, product_near_half
+from yaseer.basic.arithmetic.single_arith import add, product_near_half, register_difference
 
 LEAST_ARGUMENT = 2.0 ** -60  # below it the caller takes the integer steps (products leave the range)
 _SPLIT = 536870913.0  # 2**29 + 1: Veltkamp's split to 24 bits (the nearest single)
@@ -45,14 +43,13 @@ _PRODUCT_LOW, _PRODUCT_HIGH = -0.375 * 2.0 ** -23, 0.5 * 2.0 ** -23
 
 def _coefficient_plan(c: float) -> tuple:
     """The constants of one ``$FADDS`` with the coefficient ``c`` (nonzero), see the module
-    docstring: (c, |c|, c < 0, c > 0, its leading power of two U, 2U, 4U, u, the magic
-    numbers of u, 2u and w, w, 64w, 96w, 128w, the carry's band 0.498046875 * 2u)."""
+    docstring: (c, |c|, c < 0, c > 0, its leading power of two U, 2U, 4U, its unit u, the
+    magic numbers of u and 2u, the carry's band 0.498046875 * 2u)."""
     size = abs(c)
     top = ldexp(1.0, frexp(size)[1] - 1)
     unit = top * 2.0 ** -23
-    w = unit / 256.0
     return (c, size, c < 0, c > 0, top, 2.0 * top, 4.0 * top, unit, _MAGIC * unit, _MAGIC * 2.0 * unit,
-            _MAGIC * w, w, 64.0 * w, 96.0 * w, 128.0 * w, 0.498046875 * 2.0 * unit)
+            0.498046875 * 2.0 * unit)
 
 
 def plan(coefficients) -> tuple:
@@ -75,8 +72,7 @@ def poly(x: float, planned: tuple) -> float | None:
     (from :func:`plan`): Horner's rule, each step ``$FMULS`` and ``$FADDS`` as GW-BASIC
     rounds them; None where a sum is 0 (the caller takes the integer steps)."""
     total, steps = planned
-    for c, large, negative, positive, top, top2, top4, unit, magic_unit, magic_2unit, magic_w, w, w64, w96, w128, \
-            band in steps:
+    for c, large, negative, positive, top, top2, top4, unit, magic_unit, magic_2unit, band in steps:
         p = total * x
         # $FMULS (fmuls, written out)
         split = p * _SPLIT
@@ -91,14 +87,11 @@ def poly(x: float, planned: tuple) -> float | None:
         else:
             small = cut
             same = positive
-        if small > large:  # the product is the larger: its constants (those of the plan)
-            large, small, negative = small, large, cut < 0
-            q = large * _UFP
-            top = q - _UFP_LOW * q
-            top2, top4, unit = 2.0 * top, 4.0 * top, top * 2.0 ** -23
-            magic_unit, w = _MAGIC * unit, unit / 256.0
-            magic_2unit, magic_w, w64, w96, w128, band = (2.0 * magic_unit, _MAGIC * w, 64.0 * w, 96.0 * w,
-                                                         128.0 * w, 0.99609375 * unit)
+        if small >= large:  # the product is the larger (or as large): single_arith's own
+            total = add(cut, c)
+            if not total:
+                return None
+            continue
         if same:
             s = large + small
             if s < top2:  # no carry: the exact sum rounded half to even
@@ -109,28 +102,9 @@ def poly(x: float, planned: tuple) -> float | None:
                     total = add(cut, c)
                     continue
         else:
-            kept = (small + magic_w) - magic_w  # the smaller cut toward 0 at the register's last place
-            if kept > small:
-                kept -= w
-            if kept <= w128:
-                if kept < w128 or kept == small:  # below half a unit: the larger as it is
-                    r = large
-                else:
-                    total = add(cut, c)
-                    continue
-            else:
-                s = large - kept
-                r = (s + magic_unit) - magic_unit
-                if r - s > w64:  # rounded up, the guard byte from 0x80 to 0xC0
-                    lower = r - unit
-                    if r - s < w128 and r - s != w96 and (lower + magic_2unit) - magic_2unit == lower:
-                        s -= w128  # GW's subtraction rounds this guard byte down (single_arith.working_sum)
-                        r = lower
-                if s < top:  # normalised: rounded at its own binade
-                    if not s:
-                        return None
-                    q = s * _UFP
-                    m = (q - _UFP_LOW * q) * (_MAGIC * 2.0 ** -23)
-                    r = (s + m) - m
+            r = register_difference(large, small, top)
+            if not r:  # (None: the long way; 0 cannot be: the coefficient is the larger)
+                total = add(cut, c)
+                continue
         total = -r if negative else r
     return total

@@ -120,7 +120,9 @@ def add(a, b) -> float:
     Fast paths, where the exponents differ by at most 29 (the sum is exact in a
     Python float): a sum that needs at most 24 bits is GW's result (no bit was
     shifted out, so nothing rounds; tested by Veltkamp's split, which gives the
-    sum cut to 24 bits); otherwise GW's result is the exact sum rounded half to
+    sum cut to 24 bits), except a power of two less half its unit (the smaller
+    operand is exactly 0x80 in the guard byte, nothing lost: ``$FADDS`` returns the
+    larger unchanged, as PC-BASIC does: 1 - 2**-24 is 1); otherwise GW's result is the exact sum rounded half to
     even for a subtraction whose exponents differ by at most 3 (no bit of the
     smaller operand is shifted out, the guard byte's low 5 bits are 0) and for an
     addition, unless the carry shifted out a 1 below a guard byte of exactly 0x80
@@ -139,7 +141,7 @@ def add(a, b) -> float:
     if (total >= _SAFE_LOW or total <= -_SAFE_LOW) and (x * 536870912.0 >= y if x <= y else y * 536870912.0 >= x):
         split = total * 536870913.0
         cut = split - (split - total)
-        if cut == total:
+        if cut == total and (x != y * 16777216.0 and y != x * 16777216.0 or (a > 0) == (b > 0)):
             if -LIMIT < total < LIMIT:
                 return total
             return -inf if total < 0 else inf
@@ -152,9 +154,53 @@ def add(a, b) -> float:
             elif -0.5 < below < 0.5 and (x * 8.0 >= y if x <= y else y * 8.0 >= x):
                 return cut
     small, large = (a, b) if x <= y else (b, a)
+    if (a > 0) != (b > 0) and TINY <= (y if x <= y else x) < LIMIT and x != y:  # a difference: on floats
+        q = (y if x <= y else x) * 4503599627370497.0
+        r = register_difference(y if x <= y else x, x if x <= y else y, q - 0.9999999999999999 * q)
+        if r is not None:
+            return -r if large < 0 else r
     small_exponent, small_mantissa = working_parts(small)
     exponent, mantissa = working_parts(large)
     return _rounded(*working_sum(small_exponent, small_mantissa, small < 0, exponent, mantissa, large < 0))
+
+
+_MAGIC = 1.5 * 2.0 ** 52  # (v + _MAGIC * q) - _MAGIC * q: v rounded half to even to a multiple of q, a power of 2
+
+
+def register_difference(large: float, small: float, top: float) -> float | None:
+    """The magnitude of ``$FADDS``'s result for two operands of opposite signs, on floats:
+    ``large`` > ``small`` > 0 their magnitudes (singles, ``large`` in MBF's range), ``top``
+    the leading power of two of ``large``.  :func:`working_sum`'s steps: the smaller cut
+    toward 0 at the 32-bit register's last place ``w`` (a 256th of ``large``'s unit ``u``;
+    the bits shifted out are lost); below half a unit ``large`` itself; else the exact
+    difference, with GW's rounding down of a guard byte ``10?xxxxx`` with low bits over an
+    even mantissa, rounded half to even at its own binade (normalising the register shifts
+    it left and loses nothing).  "Magic" sums round to a multiple of a power of two.  None
+    where the smaller is cut to exactly half a unit after losing bits (the long way)."""
+    unit = top * 1.1920928955078125e-07  # 2**-23
+    w = unit * 0.00390625
+    magic = _MAGIC * w
+    kept = (small + magic) - magic
+    if kept > small:
+        kept -= w
+    half = 128.0 * w
+    if kept <= half:
+        if kept < half or kept == small:
+            return large
+        return None
+    s = large - kept
+    magic = _MAGIC * unit
+    r = (s + magic) - magic
+    if r - s > 64.0 * w:  # rounded up, the guard byte from 0x80 to 0xC0
+        lower = r - unit
+        if r - s < half and r - s != 96.0 * w and (lower + 2.0 * magic) - 2.0 * magic == lower:
+            s -= half  # GW's subtraction rounds this guard byte down
+            r = lower
+    if s < top:  # normalised: rounded at its own binade
+        q = s * 4503599627370497.0
+        magic = (q - 0.9999999999999999 * q) * (_MAGIC * 1.1920928955078125e-07)
+        r = (s + magic) - magic
+    return r if r >= TINY else 0.0
 
 
 def working_sum(small_exponent: int, small_mantissa: int, small_negative: bool,
