@@ -384,3 +384,28 @@ def test_gw_transcendental_functions_are_their_steps_without_a_rounding_test():
             assert value == expected, (name, a)
             checked += 1
     assert checked > 400
+
+
+@pytest.mark.parametrize("form", ["A!+B!", "A!-B!", "B!+A!", "B!-A!", "A!+{c}", "A!-{c}", "{c}+A!", "{c}-A!"])
+def test_a_power_of_two_and_half_its_unit_of_the_other_sign_is_the_power(form):
+    """The inline exact sum is not taken where ``$FADDS`` leaves a power of two unchanged (the
+    other operand half its unit, of the other sign: ``16777216 - 1`` is 16777216 in GW-BASIC
+    and PC-BASIC); single_arith.add (the helper) gives it, as for every other pair."""
+    from yaseer.basic.arithmetic import single_arith as sa
+
+    lines, cases = [], []
+    for k, (power, other) in enumerate([(16777216.0, 1.0), (1.0, 2.0 ** -24), (-4.0, 2.0 ** -22), (2.0, 1.0),
+                                        (16777216.0, 2.0), (8.0, 2.0 ** -21), (0.5, 0.25)]):
+        for a, b in ((power, other), (power, -other), (-power, other), (other, power), (-other, -power)):
+            code = form.format(c=format(b, ".30f").rstrip("0") + "!")  # (the exact decimal, a single)
+            lines.append(f"{10 + len(cases)} A!={a!r}: B!={b!r}: R{len(cases)}!={code}")
+            cases.append((a, b, form))
+    machine = gw_machine("\n".join(lines) + "\n")
+    for n, (a, b, form) in enumerate(cases):
+        operands = {"A!": a, "B!": b}
+        plus = "+" in form
+        left, right = form.replace("{c}", "B!").split("+" if plus else "-")
+        x, y = operands[left], operands[right]
+        expected = sa.add(x, y) if plus else sa.subtract(x, y)
+        assert machine.scalars[f"R{n}!"] == expected, (form, a, b)
+    assert 16777216.0 in [abs(machine.scalars[f"R{n}!"]) for n in range(len(cases))]  # (16777216 - 1)

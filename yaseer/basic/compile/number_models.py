@@ -17,6 +17,8 @@ expression; :func:`number_model` picks the model from ``Dialect.typed_numbers``.
 
 from __future__ import annotations
 
+from math import frexp
+
 from yaseer.basic.arithmetic.single_arith import LIMIT, SMALL_CONSTANT, TINY
 
 NUMERIC = frozenset("n%!#?")
@@ -270,7 +272,8 @@ class TypedNumbers(PlainNumbers):
         # near halfway is the nearest single; with a small constant (see _small_literal) an
         # inexact sum is inside the range, and the constant's sign is known here
         same_sign = f"{_one_sign(a, b, op == '+')} and {_SUM_BAND}"
-        return _tested(f"{first} {op} {second}", f"{helper}({a}, {b})", same_sign, in_range=not small)
+        return _tested(f"{first} {op} {second}", f"{helper}({a}, {b})", same_sign, in_range=not small,
+                       also=_not_half_unit_apart(a, b, op == "+"))
 
     def helper(self, op: str, left: str, right: str) -> tuple[str, str]:
         names = {"\\": "_idiv", "MOD": "_mod", "AND": "_and", "OR": "_or", "XOR": "_xor",
@@ -426,18 +429,36 @@ def _one_sign(a: str, b: str, plus: bool) -> str:
     return f"({a} > 0) {'==' if plus else '!='} ({b} > 0)"
 
 
+def _not_half_unit_apart(a: str, b: str, plus: bool) -> str | None:
+    """The test that ``a + b`` (``plus``) or ``a - b`` is not a power of two and half its unit
+    of the other sign: ``$FADDS`` gives the power unchanged (the smaller operand is exactly
+    0x80 in the guard byte, no bit lost: single_arith.add), where the exact difference fits
+    in 24 bits.  None where it cannot be: a literal that is not a power of two; with one that
+    is, the other operand's two values that would be, known here."""
+    sign = -1.0 if plus else 1.0  # the sign the operands have to each other in that case
+    for this, other in ((b, a), (a, b)):
+        if _small_literal(this):
+            value = float(this)
+            if not value or frexp(abs(value))[0] != 0.5:
+                return None
+            return f"{other} != {sign * value * 16777216.0!r} and {other} != {sign * value * 2.0 ** -24!r}"
+    return f"{a} != {b} * {sign * 16777216.0!r} and {b} != {a} * {sign * 16777216.0!r}"
+
+
 def _tested(value: str, helper: str, band: str | None = None, in_range: bool = True,
-            banded: str | None = None) -> str:
+            banded: str | None = None, also: str | None = None) -> str:
     """The code of a single result: ``value`` (a double) where it is GW's result, else ``helper``
     (code reading ``_sv``, the double, or the scratch locals of the operands).
 
     First: does ``_sv`` need at most 24 bits (Veltkamp's split, ``v * (2**29 + 1)``, gives
     ``v`` cut to 24 bits; three float operations) and lie in MBF's range (``in_range``)?
-    Then, with a ``band``: that cut ``_sh``, in the range (unless ``in_range`` is off: where
+    ``also``: a further test of an exact result.  Then, with a ``band``: that cut ``_sh``, in the range (unless ``in_range`` is off: where
     the range cannot be left), where ``_sv`` lies inside the band around it (``banded``: the
     code for a cut in the range outside the band; else ``helper``).  Scratch locals
     ``_sv _sc _sh _sq`` are each read before anything else can assign them."""
     exact = f"(_sv := {value}) == (_sh := (_sc := _sv * 536870913.0) - (_sc - _sv))"
+    if also is not None:
+        exact += f" and {also}"
     if in_range:
         exact += f" and {_IN_RANGE}"
     if band is not None and banded is not None:
