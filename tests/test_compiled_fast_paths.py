@@ -285,19 +285,23 @@ def test_a_loop_variable_that_may_not_be_whole_has_no_whole_square(loop):
 
 def test_sums_and_quotients_with_a_literal_are_the_helpers():
     """A literal operand's sign is known when compiling (the inline sum tests the other
-    operand's alone) and a quotient is the cut of its double: against single_arith."""
+    operand's alone), a quotient is the cut of its double, and a product or quotient by a
+    literal of at least 1 in size tests one end of the range only (the other cannot be
+    reached): against single_arith, overflows and underflows among them."""
     from yaseer.basic.arithmetic import single_arith as sa
     from yaseer.basic.arithmetic.values import SINGLE_LARGEST
 
     rng = random.Random(12)
-    constants = [".1", "2.5", "1000000!", "3E+20", "1E-30", "0", "7", "8388607"]  # (all singles)
+    constants = [".1", "2.5", "1000000!", "3E+20", "1E-30", "0", "7", "8388607", "9E+29", "-1.5", "-.25", "1"]
     forms = {"A!+{c}": lambda a, c: sa.add(a, c), "A!-{c}": lambda a, c: sa.subtract(a, c),
              "{c}+A!": lambda a, c: sa.add(c, a), "{c}-A!": lambda a, c: sa.subtract(c, a),
-             "A!/{c}": lambda a, c: sa.divide(a, c) if c else None, "{c}/A!": lambda a, c: sa.divide(c, a)}
+             "A!/{c}": lambda a, c: sa.divide(a, c) if c else None, "{c}/A!": lambda a, c: sa.divide(c, a),
+             "A!*{c}": lambda a, c: sa.multiply(a, c), "{c}*A!": lambda a, c: sa.multiply(c, a)}
     lines, cases = [], []
     for k in range(300):
         a = sa.nearest(rng.choice([1, -1]) * rng.uniform(0.5, 1) * 2.0 ** rng.randint(-40, 40))
-        a = rng.choice([a, a, float(rng.randint(-99, 99)), sa.nearest(rng.choice([0.1, -0.1, 2.5, -2.5]))])
+        a = rng.choice([a, a, float(rng.randint(-99, 99)), sa.nearest(rng.choice([0.1, -0.1, 2.5, -2.5])),
+                        sa.nearest(rng.choice([1e30, -3e37, 1e-38, -4e-39, 0.0]))])
         c = constants[k % len(constants)]
         results = ": ".join(f"R{k}X{n}!={form.format(c=c)}" for n, form in enumerate(forms) if c != "0" or "/{c}" not in form)
         lines.append(f"{10 + k} A{k}!={a!r}: C{k}!={c}: {results.replace('A!', f'A{k}!')}")
@@ -311,7 +315,10 @@ def test_sums_and_quotients_with_a_literal_are_the_helpers():
         for n, helper in enumerate(forms.values()):
             name = f"R{k}X{n}!"
             if name in machine.scalars:
-                expected = helper(a, c)
+                try:
+                    expected = helper(a, c)
+                except ZeroDivisionError:  # (the policy's Division by zero)
+                    continue
                 if expected in (math.inf, -math.inf):  # the policy's value (arith_policy.py)
                     expected = math.copysign(SINGLE_LARGEST, expected)
                 assert machine.scalars[name] == expected, (line, list(forms)[n])
@@ -409,3 +416,30 @@ def test_a_power_of_two_and_half_its_unit_of_the_other_sign_is_the_power(form):
         expected = sa.add(x, y) if plus else sa.subtract(x, y)
         assert machine.scalars[f"R{n}!"] == expected, (form, a, b)
     assert 16777216.0 in [abs(machine.scalars[f"R{n}!"]) for n in range(len(cases))]  # (16777216 - 1)
+
+
+def test_a_single_statement_needs_no_overflow_test_of_its_own():
+    """Every single operation keeps its value in the range or gives the policy's (its inline
+    path or its checked helper), so a LET of a single has no statement-level test; an
+    overflow is still reported where it happens and the statement goes on with the largest
+    single (a DEF FN's value keeps the test)."""
+    assert "_ovf" not in gw_machine("10 A=B*C+D/E-F\n").compiled[0].source
+    assert "_ovf" in gw_machine("10 DEF FNA(X)=X*X\n20 A=FNA(B)*C\n").compiled[0].source
+    screen = io.StringIO()
+    machine = Machine(screen=screen, dialect="gw")
+    machine.load("10 B=1E+38: C=10: A=B*C/100: PRINT A\n20 D=-B*C: PRINT D\n")
+    machine.run()
+    assert screen.getvalue() == "Overflow\n 1.701412E+36 \nOverflow\n-1.701412E+38 \n"
+
+
+@pytest.mark.parametrize("program", ["10 A=0: B=0: C=A+B: D=A-B: E=A*-1.5: F=-A*2: G=(-A)+(-B): PRINT C;D;E;F;G\n",
+                                     "10 FOR X!=0 TO 1 STEP .5: S=S+X!: T=T-X!: NEXT: PRINT S;T\n"])
+def test_zero_sums_and_products_are_zero(program):
+    """Sums and products that are 0 (also of -0 operands) take the helpers: 0, never -0 or a
+    division of 0 by 0 in the inline tests."""
+    screen = io.StringIO()
+    machine = Machine(screen=screen, dialect="gw")
+    machine.load(program)
+    machine.run()
+    assert "-0" not in screen.getvalue() and "Division" not in screen.getvalue()
+    assert all(str(v) != "-0.0" for v in machine.scalars.values())

@@ -30,7 +30,7 @@ from __future__ import annotations
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.blocks import data_statements, flatten, plan, splits, types_fixed, walk_statements
 from yaseer.basic.compile.expressions import (
-    BlockScope, CompileError, ExpressionCompiler, FnScope, may_overflow, syntax_error, type_mismatch,
+    BlockScope, CompileError, ExpressionCompiler, FnScope, calls_fn, may_overflow, syntax_error, type_mismatch,
 )
 from yaseer.basic.compile.statements_io import InputOutputCompiler
 from yaseer.basic.compile.loops import LoopCompiler
@@ -237,6 +237,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
     def stmt_Let(self, stmt, scope):
         code, kind = self.expr(stmt.value, scope)
         check = kind != "s" and may_overflow(stmt.value, self.numbers.typed) and self.kind_of(stmt.target) != "%"
+        if check and kind in self.numbers.kinds_in_range and not calls_fn(stmt.value):
+            check = False  # every operation of its type gave a value in the range or the policy's
         self.assign(stmt.target, code, kind, scope, check)
 
     def stmt_Rem(self, stmt, scope):

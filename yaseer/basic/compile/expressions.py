@@ -184,6 +184,17 @@ def may_overflow(node, single: bool = False) -> bool:
     return isinstance(node, ast.FnCall)
 
 
+def calls_fn(node) -> bool:
+    """Does this expression's value come (in part) from a DEF FN?"""
+    if isinstance(node, ast.FnCall):
+        return True
+    if isinstance(node, ast.Binary):
+        return calls_fn(node.left) or calls_fn(node.right)
+    if isinstance(node, ast.Unary):
+        return calls_fn(node.operand)
+    return isinstance(node, ast.Call) and any(calls_fn(a) for a in node.args)
+
+
 def _simple_operand(code: str) -> bool:
     return code.replace("_", "a").replace("[", "").replace("]", "").isalnum()
 

@@ -64,6 +64,7 @@ class PlainNumbers:
 
     typed = False
     tests_inline = False  # (TypedNumbers: single results tested inline; off, only helper calls)
+    kinds_in_range = frozenset()  # types whose every operation keeps its result in the range itself
     square_by_product = True  # X^2 may compile to X*X (exact in binary)
     loop_types = frozenset("n")  # the types a FOR variable may have
     widest = "n"  # the type of a number read by READ or INPUT (converted to the target's)
@@ -137,6 +138,10 @@ class TypedNumbers(PlainNumbers):
     """GW-BASIC's typed numbers (see the module docstring)."""
 
     typed = True
+    # a single: the inline paths give values in MBF's range, the helpers they fall back on
+    # give the policy's value where GW's operation overflows (arith_policy.helpers): a
+    # statement needs no overflow test of its own (a DEF FN's value is not known here)
+    kinds_in_range = frozenset("!")
     loop_types = frozenset("%!")  # FOR D# is Type mismatch in GW-BASIC (checked with PC-BASIC)
     widest = "#"
     integer = "%"
@@ -258,7 +263,9 @@ class TypedNumbers(PlainNumbers):
             divisor = "" if _small_literal(right) and float(right) else f"{right} and "  # 0: the policy's
             # a quotient is GW's nearest single, and its double is never halfway between two
             # singles (single_arith.divide): the double's cut is the result wherever it is in range
-            return _cut_or(f"{first}{divisor}{kept} / {right}", f"_dv({kept}, {right})")
+            # (by a literal of at least 1 in size it cannot overflow: only the bottom is tested)
+            at_least_one = _small_literal(right) and abs(float(right)) >= 1.0
+            return _cut_or(f"{first}{divisor}{kept} / {right}", f"_dv({kept}, {right})", at_least_one)
         helper = "_sadd" if op == "+" else "_ssub"
         small = _small_literal(left) or _small_literal(right)
         first = second = a = b = None
@@ -414,10 +421,14 @@ _PRODUCT_BAND = f"{-0.375 * 2.0 ** -23!r} <= {_BELOW} < {0.5 * 2.0 ** -23!r}"
 _SUM_BAND = f"{-0.498046875 * 2.0 ** -23!r} < {_BELOW} < {0.498046875 * 2.0 ** -23!r}"
 
 
-def _cut_or(value: str, helper: str) -> str:
+def _cut_or(value: str, helper: str, no_overflow: bool = False) -> str:
     """The code of a single result that is the nearest single to ``value`` (a double never
-    halfway between two singles): its cut, where that is in MBF's range, else ``helper``."""
-    return f"(_sh if {_cut_in_range(f'(_sc := (_sv := {value}) * 536870913.0)')} else {helper})"
+    halfway between two singles): its cut, where that is in MBF's range, else ``helper``
+    (``no_overflow``: ``value`` cannot be beyond the largest single, only its bottom is tested)."""
+    split = f'(_sc := (_sv := {value}) * 536870913.0)'
+    if no_overflow:
+        return f"(_sh if (_sh := {split} - (_sc - _sv)) >= {TINY!r} or _sh <= {-TINY!r} else {helper})"
+    return f"(_sh if {_cut_in_range(split)} else {helper})"
 
 
 def _one_sign(a: str, b: str, plus: bool) -> str:
