@@ -20,7 +20,7 @@ from yaseer.basic.machine.machine import Machine
 from yaseer.linkages.tracing import NotTraceable, Recorder
 
 sys.path.insert(0, str(Path(__file__).resolve().parent / "benchmarks"))
-from percall import CRANK, INPUTS  # noqa: E402  (the benchmark's inputs of each program)
+from percall import CRANK, INPUTS, machine_for  # noqa: E402  (the benchmark's inputs of each program)
 
 WRITTEN = ("T", "W", "A", "X", "Y", "V", "F", "U", "N", "L", "D", "E", "P")
 
@@ -318,3 +318,81 @@ def test_the_finiteness_test_is_each_value_finite():
     assert not fails(big, big, big) and not fails(-big, -big, 1.0)  # the sum overflows, each is finite
     assert fails(big, big, math.inf) and fails(math.inf, -math.inf) and fails(1.0, math.nan, 2.0)
     assert fails(big, -math.inf, big) and not fails(0.0, -0.0, 5e-324)
+
+
+def _compiled_both_ways(number: int, z: float, q: float):
+    """Program ``number``'s path for these inputs compiled as :meth:`Recorder.compile` does
+    and as its recorded lines read, one statement a value (no rewriting)."""
+    from yaseer.linkages import tracing
+
+    made = {}
+    real_compile = tracing.Recorder.compile
+
+    def capture(recorder, epilogue, label):
+        made["lines"] = [str(line) for line in recorder.lines + epilogue]
+        made["names"] = recorder.names
+        return real_compile(recorder, epilogue, label)
+
+    m = machine(number, z, q) if number != 5 else machine_for(5)
+    frame = binding._RecordingFrame(m, number, Recorder())
+    binding.PROGRAMS[number](frame, None)
+    tracing.Recorder.compile = capture
+    try:
+        optimised, _ = frame.recorded()
+    finally:
+        tracing.Recorder.compile = real_compile
+    text = "def run(_M):\n" + "".join(f"    {line}\n" for line in made["lines"])
+    namespace = tracing.namespace(made["names"])
+    exec(compile(text, "<as recorded>", "exec"), namespace)
+    return optimised, namespace["run"]
+
+
+def _bits(m: Machine):
+    """Every number the programs write, as its bits (a signed zero told apart)."""
+    return {name: [value.hex() if isinstance(value, float) else value for value in m.array(name)]
+            for name in WRITTEN}, {name: float(value).hex() for name, value in m.scalars.items()}
+
+
+@pytest.mark.parametrize("number,q", [(1, 2), (2, 1), (2, 3), (3, 3), (5, 1)])
+def test_the_compiled_path_gives_the_bits_of_its_lines_as_recorded(number, q):
+    # random inputs around the recorded call's: the rewritten path (reads and fetches batched,
+    # guards merged, values fused, parts of floats not read) and the recorded lines one by one
+    # write the same bits or both find another path
+    from yaseer.linkages.tracing import Retrace
+
+    optimised, as_recorded = _compiled_both_ways(number, 2.0, q)
+    same_path = 0
+    for trial in range(300):
+        results = []
+        for run in (optimised, as_recorded):
+            m = machine(number, 2.0, q) if number != 5 else machine_for(5)
+            state = random.Random(trial)
+            for name, elements in INPUTS[number].items():
+                for index, value in elements.items():
+                    if (name, index) != ("L", 10):  # the branch: a choice, as Z(n) and Q(n)
+                        m.array(name)[index] = value * state.uniform(0.8, 1.25)
+            crank, index = CRANK[number]
+            m.array(crank)[index] = state.uniform(-400.0, 400.0)
+            try:
+                run(m)
+                results.append(_bits(m))
+            except Retrace:
+                results.append("another path")
+            except (ArithmeticError, ValueError) as error:
+                results.append(type(error).__name__)
+        assert results[0] == results[1], trial
+        same_path += results[0] != "another path"
+    assert same_path > 100  # most random inputs take the recorded path
+
+
+def test_a_part_of_a_float_is_not_read_and_of_anything_else_it_is():
+    # a float's real part is itself and its imaginary part 0.0; a power's type depends on its
+    # values (a negative base gives a complex number) and a complex value's parts are read
+    from yaseer.linkages.tracing import _float_parts
+
+    lines = ["t0 = float(_a_L[1])", "t1 = t0 * 2", "t2 = t1.imag", "t3 = -t1", "t4 = t3.real", "t5 = t0 ** 0.5",
+             "t6 = t5.real", "t7 = _rect(1.0, t0)", "t8 = t7.imag", "t9 = (t4 if t4 > t6 else t1)",
+             "t10 = t9.real", "_a_X[1] = t2 + t4 + t6 + t8 + t10"]
+    assert _float_parts(lines) == ["t0 = float(_a_L[1])", "t1 = t0 * 2", "t3 = -t1", "t5 = t0 ** 0.5",
+                                   "t6 = t5.real", "t7 = _rect(1.0, t0)", "t8 = t7.imag",
+                                   "t9 = (t3 if t3 > t6 else t1)", "_a_X[1] = 0.0 + t3 + t6 + t8 + t9"]

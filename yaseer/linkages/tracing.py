@@ -130,7 +130,7 @@ class Recorder:
         used once is computed where it is used (:func:`_fused`), and the values share a
         few variables (:func:`_registers`: a frame of hundreds of locals costs every
         call its clearing)."""
-        lines = _batched_finite_guards(_batched_reads([str(line) for line in self.lines + epilogue], self.names))
+        lines = _batched_finite_guards(_batched_reads(_float_parts(_once(self.lines) + epilogue), self.names))
         lines = _batched_fetches(_registers(_fused(_without_dead_lines(lines))))
         # an element read of an array shorter than at the recording raises IndexError: these
         # inputs take another path (the plain code reads 0 beyond the dimension)
@@ -149,6 +149,69 @@ def namespace(names: dict) -> dict:
                 __builtins__={"float": float, "complex": complex, "len": len, "abs": abs,
                               "isinstance": isinstance, "list": list, "str": str,
                               "KeyError": KeyError, "IndexError": IndexError})
+
+
+def _once(lines: list) -> list[str]:
+    """The recorded ``lines`` as text, a guard met before left out (values are never
+    assigned twice: the same test of the same values, passed already)."""
+    seen: set[str] = set()
+    out = []
+    for line in lines:
+        text = str(line)
+        if isinstance(line, Guard):
+            if text in seen:
+                continue
+            seen.add(text)
+        out.append(text)
+    return out
+
+
+_FLOAT, _COMPLEX = "float", "complex"
+_TYPED = (  # what a recorded expression computes, whatever the values: its type from its operands'
+    (r"float\(.*|abs\((t\d+)\)|_(?:sqrt|cos|sin|arctan|radians|degrees|atan2|ldexp)\(.*|(t\d+)\.(?:real|imag)",
+     lambda kinds: _FLOAT if all(kind in (_FLOAT, _COMPLEX) for kind in kinds) else None),
+    (r"(?:complex|_rect|_unit_degrees|_exp)\(.*", lambda kinds: _COMPLEX),
+    (r"({0}) [-+*/%] ({0})|-({0})|\(({0}) if .* else ({0})\)".format(r"t\d+|-?[\d.]+(?:e[-+]?\d+)?j?|\([-\d.+e]+j\)"),
+     lambda kinds: (None if None in kinds or not kinds else _COMPLEX if _COMPLEX in kinds else _FLOAT)),
+)
+
+
+def _kind(operand: str, kinds: dict):
+    """The type of operand ``operand`` (a recorded value or a literal), None when unknown."""
+    if operand.startswith("t"):
+        return kinds.get(operand)
+    return _COMPLEX if operand.endswith("j") or operand.endswith("j)") else _FLOAT
+
+
+def _float_parts(lines: list[str]) -> list[str]:
+    """``lines`` without reading the parts of a value that is a float by the operations that
+    made it (``x.real`` is ``x`` itself, ``x.imag`` is 0.0): the type of every value follows
+    from its operation's operands' (an input is read as ``float(...)``); a power's depends on
+    its values, and it and anything not listed in :data:`_TYPED` is of no known type."""
+    patterns = [(re.compile(pattern + "$"), rule) for pattern, rule in _TYPED]
+    kinds: dict[str, str | None] = {}
+    same: dict[str, str] = {}  # a float's part -> the text that is the same number
+    out = []
+    for line in lines:
+        if same:
+            line = _NAME.sub(lambda m: same.get(m.group(0), m.group(0)), line)
+        found = _DEFINED.match(line)
+        if not found or ", " in found.group(1):
+            out.append(line)
+            continue
+        name, expression = found.groups()
+        part = re.fullmatch(r"(t\d+)\.(real|imag)", expression)
+        if part and kinds.get(part.group(1)) == _FLOAT:
+            same[name], kinds[name] = (part.group(1) if part.group(2) == "real" else "0.0"), _FLOAT
+            continue
+        kinds[name] = None
+        for pattern, rule in patterns:
+            typed = pattern.match(expression)
+            if typed:
+                kinds[name] = rule([_kind(operand, kinds) for operand in typed.groups() if operand])
+                break
+        out.append(line)
+    return out
 
 
 class _Pattern:
