@@ -108,7 +108,7 @@ def test_signed_zeros_are_the_decimal_modules():
                 (name, a, b)
 
 
-@pytest.mark.parametrize("function", ["sqrt", "exp", "log", "sin", "cos", "tan", "atn"])
+@pytest.mark.parametrize("function", ["sqrt", "exp", "log", "log10", "sin", "cos", "tan", "atn"])
 def test_functions_agree_with_mpmath_to_12_digits(function):
     mpmath.mp.dps = 40
     rng = random.Random(7)
@@ -122,7 +122,8 @@ def test_functions_agree_with_mpmath_to_12_digits(function):
         arg = mpmath.mpf(x.numerator) / x.denominator
         degrees = arg * mpmath.pi / 180
         reference = {"sqrt": lambda: mpmath.sqrt(arg), "exp": lambda: mpmath.exp(arg),
-                     "log": lambda: mpmath.log(arg), "sin": lambda: mpmath.sin(degrees),
+                     "log": lambda: mpmath.log(arg), "log10": lambda: mpmath.log10(arg),
+                     "sin": lambda: mpmath.sin(degrees),
                      "cos": lambda: mpmath.cos(degrees), "tan": lambda: mpmath.tan(degrees),
                      "atn": lambda: mpmath.atan(arg) * 180 / mpmath.pi}[function]()
         ours = getattr(D, function)(float(x))
@@ -138,7 +139,7 @@ EDGES = ["1", "2", "7", "89", "91", "179.9999999999", "180.0000000001", "0.00000
          "99999.99999999", "1E-7", "2.718281828459"]
 
 
-@pytest.mark.parametrize("function", ["sqrt", "exp", "log", "sin", "cos", "sin radians", "cos radians"])
+@pytest.mark.parametrize("function", ["sqrt", "exp", "log", "log10", "sin", "cos", "sin radians", "cos radians"])
 def test_functions_at_the_edges_agree_with_mpmath(function):
     # where the float functions lose digits (near zeros of SIN and COS, LOG near 1,
     # large angles) and the counts of BM8: the decimal result, correctly rounded
@@ -147,17 +148,35 @@ def test_functions_at_the_edges_agree_with_mpmath(function):
     for text in EDGES + [str(k) for k in range(1, 1001, 7)]:
         for sign in (1, -1):
             x = Fraction(format(float(Fraction(text)), ".12g")) * sign  # (read in as 12 digits)
-            if name in ("sqrt", "log") and x <= 0 or name == "exp" and abs(x) > 200:
+            if name in ("sqrt", "log", "log10") and x <= 0 or name == "exp" and abs(x) > 200:
                 continue
             arg = mpmath.mpf(x.numerator) / x.denominator
             angle = arg if unit else arg * mpmath.pi / 180
-            reference = {"sqrt": mpmath.sqrt, "exp": mpmath.exp, "log": mpmath.log, "sin": mpmath.sin,
-                         "cos": mpmath.cos}[name](arg if name in ("sqrt", "exp", "log") else angle)
+            reference = {"sqrt": mpmath.sqrt, "exp": mpmath.exp, "log": mpmath.log, "log10": mpmath.log10,
+                         "sin": mpmath.sin, "cos": mpmath.cos}[name](arg if name in ("sqrt", "exp", "log", "log10")
+                                                                     else angle)
             expected = round12(Fraction(mpmath.nstr(reference, 35, min_fixed=-40, max_fixed=40)))
             if name in ("sin", "cos") and not unit and x % 90 == 0:
                 expected = round(float(reference))  # exact at right angles, as the manual's degree mode
             ours = getattr(D, name)(float(x), not unit) if name in ("sin", "cos") else getattr(D, name)(float(x))
             assert ours == expected, (function, text, sign)
+
+
+def test_the_common_logarithm_near_its_rounding_halfway_points():
+    # operands whose LOG lies within a few units of the 15th digit of a point halfway between
+    # two 12-digit results (the float function cannot tell there), and powers of ten (exact):
+    # the decimal module's correctly rounded result every time
+    mpmath.mp.dps = 50
+    rng = random.Random(22)
+    cases = [10.0 ** k for k in range(-20, 21)]
+    for _ in range(3000):
+        halfway = mpmath.mpf(rng.randint(10 ** 11, 10 ** 12 - 1)) + mpmath.mpf("0.5")
+        target = halfway * mpmath.mpf(10) ** rng.randint(-12, -10)  # LOG between 0.1 and 10
+        x = float(format(float(mpmath.power(10, target)), ".12g"))
+        cases += [x, float(format(x * (1 + 1e-11), ".12g")), float(format(x * (1 - 1e-11), ".12g"))]
+    for x in cases:
+        expected = float(D.CONTEXT.log10(D.dec(x)))
+        assert D.log10(x) == expected, x
 
 
 def run(program: str, dialect=DECIMAL) -> str:
