@@ -392,7 +392,24 @@ def test_a_part_of_a_float_is_not_read_and_of_anything_else_it_is():
 
     lines = ["t0 = float(_a_L[1])", "t1 = t0 * 2", "t2 = t1.imag", "t3 = -t1", "t4 = t3.real", "t5 = t0 ** 0.5",
              "t6 = t5.real", "t7 = _rect(1.0, t0)", "t8 = t7.imag", "t9 = (t4 if t4 > t6 else t1)",
-             "t10 = t9.real", "_a_X[1] = t2 + t4 + t6 + t8 + t10"]
-    assert _float_parts(lines) == ["t0 = float(_a_L[1])", "t1 = t0 * 2", "t3 = -t1", "t5 = t0 ** 0.5",
-                                   "t6 = t5.real", "t7 = _rect(1.0, t0)", "t8 = t7.imag",
-                                   "t9 = (t3 if t3 > t6 else t1)", "_a_X[1] = 0.0 + t3 + t6 + t8 + t9"]
+             "t10 = t9.real", "t11 = _k1 * t0", "t12 = t11.real", "t13 = _k2 * t0", "t14 = t13.real",
+             "_a_X[1] = t2 + t4 + t6 + t8 + t10 + t12 + t14"]
+    assert _float_parts(lines, {"_k1": -1j, "_k2": 0.5}) == [
+        "t0 = float(_a_L[1])", "t1 = t0 * 2", "t3 = -t1", "t5 = t0 ** 0.5", "t6 = t5.real", "t7 = _rect(1.0, t0)",
+        "t8 = t7.imag", "t9 = (t3 if t3 > t6 else t1)", "t11 = _k1 * t0", "t12 = t11.real", "t13 = _k2 * t0",
+        "_a_X[1] = 0.0 + t3 + t6 + t8 + t9 + t12 + t13"]
+
+
+def test_a_complex_constant_keeps_the_signs_of_its_zeros():
+    # -1j is complex(-0.0, -1.0), but its text compiles to (0.0, -1.0) when written "(-0-1j)",
+    # and complex(0.0, -1.0)'s text "-1j" to (-0.0, -1.0): such constants are bound by name
+    recorder = Recorder()
+    height = recorder.read(0.0, "float(_M[0])")
+    for constant in (-1j, complex(0.0, -1.0), complex(-0.0, 1.0), complex(2.0, -0.0), 1j, complex(1.5, 2.0)):
+        product = height * constant
+        run = recorder.compile([f"_done({product.name})"], "test")
+        done = []
+        run.__globals__["_done"] = done.append
+        run([0.0])
+        assert [math.copysign(1.0, part) for part in (done[0].real, done[0].imag)] == \
+            [math.copysign(1.0, part) for part in (product.value.real, product.value.imag)], constant

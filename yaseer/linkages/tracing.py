@@ -56,6 +56,17 @@ class Guard:
         return self.line
 
 
+def _spelled(value) -> bool:
+    """Whether the text ``repr(value)`` compiles to ``value`` itself, signed zeros included: a
+    complex number's does not always (``-1j`` is -(1j), whose real part is -0.0; ``(-0-1j)``
+    is 0 - 1j, whose real part is 0.0)."""
+    if type(value) is not complex:
+        return True
+    same = eval(compile(repr(value), "<literal>", "eval"), {"__builtins__": {}})
+    return all(a == b and math.copysign(1.0, a) == math.copysign(1.0, b)
+               for a, b in ((same.real, value.real), (same.imag, value.imag)))
+
+
 class Recorder:
     """The lines of one recording, the names it calls, and its inputs."""
 
@@ -64,15 +75,22 @@ class Recorder:
         self.names: dict[str, object] = {"_Retrace": Retrace}
         self._count = 0
         self._known: dict[str, Traced] = {}  # expression -> the value that holds it (computed once)
+        self._constants: dict[tuple, str] = {}  # a number bound by name -> its name
 
     def operand(self, value) -> str:
         """The Python text of ``value`` in the record (a variable or a literal)."""
         if isinstance(value, Traced):
             return value.name
-        if isinstance(value, _LITERALS) and (value == value) and abs(value) != math.inf:
+        if isinstance(value, _LITERALS) and (value == value) and abs(value) != math.inf and _spelled(value):
             return repr(value)
-        name = f"_k{len(self.names)}"  # inf, nan: bound by name
-        self.names[name] = value
+        # inf, nan, a complex its text does not give: bound by name, one name a number (so that
+        # the same operation on it is recorded once)
+        key = (type(value), *(part.hex() if isinstance(part, float) else repr(part)
+                              for part in ((value.real, value.imag) if isinstance(value, complex) else (value,))))
+        name = self._constants.get(key)
+        if name is None:
+            name = self._constants[key] = f"_k{len(self.names)}"
+            self.names[name] = value
         return name
 
     def emit(self, value, expression: str, source: str | None = None) -> "Traced":
@@ -130,7 +148,7 @@ class Recorder:
         used once is computed where it is used (:func:`_fused`), and the values share a
         few variables (:func:`_registers`: a frame of hundreds of locals costs every
         call its clearing)."""
-        lines = _batched_finite_guards(_batched_reads(_float_parts(_once(self.lines) + epilogue), self.names))
+        lines = _batched_finite_guards(_batched_reads(_float_parts(_once(self.lines) + epilogue, self.names), self.names))
         lines = _batched_fetches(_registers(_fused(_without_dead_lines(lines))))
         # an element read of an array shorter than at the recording raises IndexError: these
         # inputs take another path (the plain code reads 0 beyond the dimension)
@@ -171,25 +189,27 @@ _TYPED = (  # what a recorded expression computes, whatever the values: its type
     (r"float\(.*|abs\((t\d+)\)|_(?:sqrt|cos|sin|arctan|radians|degrees|atan2|ldexp)\(.*|(t\d+)\.(?:real|imag)",
      lambda kinds: _FLOAT if all(kind in (_FLOAT, _COMPLEX) for kind in kinds) else None),
     (r"(?:complex|_rect|_unit_degrees|_exp)\(.*", lambda kinds: _COMPLEX),
-    (r"({0}) [-+*/%] ({0})|-({0})|\(({0}) if .* else ({0})\)".format(r"t\d+|-?[\d.]+(?:e[-+]?\d+)?j?|\([-\d.+e]+j\)"),
+    (r"({0}) [-+*/%] ({0})|-({0})|\(({0}) if .* else ({0})\)".format(r"t\d+|_k\d+|-?[\d.]+(?:e[-+]?\d+)?j?|\([-\d.+e]+j\)"),
      lambda kinds: (None if None in kinds or not kinds else _COMPLEX if _COMPLEX in kinds else _FLOAT)),
 )
 
 
 def _kind(operand: str, kinds: dict):
-    """The type of operand ``operand`` (a recorded value or a literal), None when unknown."""
-    if operand.startswith("t"):
+    """The type of operand ``operand`` (a recorded value, a number bound by name or a literal),
+    None when unknown."""
+    if operand[0] in "t_":
         return kinds.get(operand)
     return _COMPLEX if operand.endswith("j") or operand.endswith("j)") else _FLOAT
 
 
-def _float_parts(lines: list[str]) -> list[str]:
+def _float_parts(lines: list[str], names: dict) -> list[str]:
     """``lines`` without reading the parts of a value that is a float by the operations that
     made it (``x.real`` is ``x`` itself, ``x.imag`` is 0.0): the type of every value follows
     from its operation's operands' (an input is read as ``float(...)``); a power's depends on
     its values, and it and anything not listed in :data:`_TYPED` is of no known type."""
     patterns = [(re.compile(pattern + "$"), rule) for pattern, rule in _TYPED]
-    kinds: dict[str, str | None] = {}
+    kinds: dict[str, str | None] = {name: {float: _FLOAT, complex: _COMPLEX}.get(type(value))
+                                    for name, value in names.items() if name.startswith("_k")}
     same: dict[str, str] = {}  # a float's part -> the text that is the same number
     out = []
     for line in lines:
