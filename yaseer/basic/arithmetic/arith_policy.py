@@ -110,24 +110,21 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
     exact_add, exact_subtract = values.double_add, values.double_subtract
     exact_multiply, exact_divide = values.double_multiply, values.double_divide
 
-    def double_result(r):
-        if type(r) is wide or -limit < r < limit:
-            return r
-        return result(OVERFLOW, r < 0, "#")
-
     def double_add(a, b):
         if type(a) is not wide and type(b) is not wide:
             s = a + b  # exact when both differences give the other operand back (Dekker)
             if s - a == b and s - b == a and (tiny <= s < limit or -limit < s <= -tiny or not s):
                 return s
-        return double_result(exact_add(a, b))
+        r = exact_add(a, b)
+        return r if type(r) is wide or -limit < r < limit else result(OVERFLOW, r < 0, "#")
 
     def double_subtract(a, b):
         if type(a) is not wide and type(b) is not wide:
             s = a - b
             if s + b == a and a - s == b and (tiny <= s < limit or -limit < s <= -tiny or not s):
                 return s
-        return double_result(exact_subtract(a, b))
+        r = exact_subtract(a, b)
+        return r if type(r) is wide or -limit < r < limit else result(OVERFLOW, r < 0, "#")
 
     def double_multiply(a, b):
         if type(a) is not wide and type(b) is not wide:
@@ -135,7 +132,8 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
             if (a == (c := a * 134217729.0) - (c - a) and b == (c := b * 134217729.0) - (c - b)
                     and (tiny <= p < limit or -limit < p <= -tiny or not p)):
                 return p
-        return double_result(exact_multiply(a, b))
+        r = exact_multiply(a, b)
+        return r if type(r) is wide or -limit < r < limit else result(OVERFLOW, r < 0, "#")
 
     def double_divide(a, b):
         if type(a) is not wide and type(b) is not wide and b:
@@ -144,7 +142,8 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
                     and (tiny <= q < limit or -limit < q <= -tiny or not q)):
                 return q
         try:
-            return double_result(exact_divide(a, b))
+            r = exact_divide(a, b)
+            return r if type(r) is wide or -limit < r < limit else result(OVERFLOW, r < 0, "#")
         except ZeroDivisionError:
             return result(DIVISION_BY_ZERO, a < 0, "#")
 

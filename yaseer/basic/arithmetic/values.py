@@ -255,11 +255,18 @@ def double_of(p: tuple[bool, int, int]) -> float:
 def _exactly(routine):
     """A double operation on the exact 56-bit values; beyond the range an infinity with
     its sign (which the compiled code's checks hand to the overflow policy)."""
-    def run(a, b):
+    parts, nearest = mbf_double.parts, mbf_double.nearest_float
+
+    def run(a, b):  # (double_parts and double_of written out: the slow path of every double loop)
         try:
-            return double_of(routine(double_parts(a), double_parts(b)))
+            p = routine(a.parts if type(a) is Wide else parts(a), b.parts if type(b) is Wide else parts(b))
         except mbf_double.Overflow as overflow:
             return -math.inf if overflow.negative else math.inf
+        if not p[2] & 7:
+            return nearest(p)
+        wide = Wide(nearest(p))
+        wide.parts = p
+        return wide
     return run
 
 
