@@ -2,7 +2,7 @@
 CLS, KEY, SCREEN, VIEW PRINT, WIDTH, CSRLIN, POS, SCREEN(), INKEY$, PRINT of control
 codes, FRE, RETURN's forms, DEF FN bodies, bad IF branches, MID$ onto itself, WHILE,
 RANDOMIZE, LPOS, PRINT USING, DEFINT/DEFSTR run as statements, CLEAR, blanks inside
-numbers, with arguments in and out of range,
+numbers, filling the string space, with arguments in and out of range,
 left out or of the wrong type.  Each program ends normally or with a BASIC error line
 naming its line (never a Python exception), and writes nothing in its directory.
 
@@ -49,6 +49,9 @@ def statement(data) -> str:
         f"DEFINT A-{chr(65 + code % 26)}", "DEFSTR X", "DEFDBL A, X-Z", "DEFSNG A-Z", f"A = {a}: PRINT A; X",
         f'X = {a}: A$ = "S": PRINT A$; X', "IF X THEN DEFSTR X ELSE DEFINT X", "CLEAR", "PRINT 1 2; &O 7 7; & H1F; 1 . 5 E 1",
         "PRINT FNA(1)", "N = N + 1: IF N < 3 THEN 10",
+        # GW's string space: filled (Out of string space), garbage collected, FRE with and without garbage
+        f"DIM S$(300): FOR K = 0 TO 300: S$(K) = SPACE$({a}): NEXT", f'T$ = STRING$({a}, "T") + T$',
+        'PRINT FRE(0); FRE(""); FRE(X)', "ERASE S$",
     ]
     return data.draw(st.sampled_from(choices))
 

@@ -116,6 +116,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.names_missing_line = dialect.names_missing_line
         self.words = dialect.words or NO_WORDS  # the dialect's own words (dialects/casio.py)
         self.string_length = dialect.string_length  # the longest literal (characters)
+        self.counts_strings = dialect.free_memory is not None  # strings take room (string_space.py)
         self.own_functions = dict(self.words.functions, DEG=self.words.deg_function) if dialect.words else {}
         self.direct = direct
         self.trace = trace and not direct
@@ -236,6 +237,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
 
     def stmt_Let(self, stmt, scope):
         code, kind = self.expr(stmt.value, scope)
+        if kind == "s" and self.counts_strings and isinstance(stmt.value, (ast.Var, ast.Elem)):
+            code = f"_scopy({code})"  # another variable's string is copied (machine/string_space.py)
         check = kind != "s" and may_overflow(stmt.value, self.numbers.typed) and self.kind_of(stmt.target) != "%"
         if check and kind in self.numbers.kinds_in_range and not calls_fn(stmt.value):
             check = False  # every operation of its type gave a value in the range or the policy's

@@ -51,7 +51,7 @@ from yaseer.basic.compile.number_models import initial_value
 from yaseer.basic.compile import program_cache
 from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  MAX_STACK: GOSUB returns + open FOR loops together
 from yaseer.basic.dialects import dialect as dialects
-from yaseer.basic.machine import gwfunctions, runtime, val_numbers
+from yaseer.basic.machine import gwfunctions, runtime, string_space, val_numbers
 from yaseer.basic.machine.files import FileTable, Sandbox
 from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
     BasicError, OutputError, BREAK, INPUT_PAST_END, OUT_OF_DATA, OUT_OF_MEMORY, STRING_TOO_LONG, SYNTAX_ERROR,
@@ -187,6 +187,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         # state: see dialect.py); ``angle`` overrides its start-up unit ("deg"/"rad").
         self.dialect = dialects.get_dialect(dialect)
         self.def_types: dict = {}  # gw: letter -> type character of the last DEF statements
+        self.string_space = string_space.StringSpace(self.measure_memory)  # gw: GW's 64 KB for strings
         self.arith = arith_policy.ArithmeticPolicy(self)  # division by zero, overflow: stop or go on
         # how PRINT shows a number: typed (GW: integers, 7-digit singles, 16-digit D doubles) or not
         self._printed_number, self._number_text = (
@@ -427,6 +428,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             ns.update(runtime.single_loop_helpers())
             ns.update(arith_policy.helpers(self.arith, ns["_idiv"], ns["_mod"], ns["_pow"]))
             ns.update(val_numbers.helpers(self.arith, ns, self.dialect.largest_number))
+        if self.dialect.free_memory is not None:  # strings take room in GW's 64 KB (string_space.py)
+            ns.update(self.string_space.helpers(ns, self.dialect.string_length))
         if self.dialect.words:  # the casio functions (dialects/casio.py)
             ns.update(casio_math.RUNTIME)
             ns.update(casio_words.OPERATORS)

@@ -8,7 +8,8 @@ variables, the arrays, and from the top down the strings; FRE is what lies betwe
 60300 bytes are free (the figure GW-BASIC's banner shows; ``Dialect.free_memory``).
 
 * a program line: a 2-byte link, a 2-byte line number, its tokens and a 0 byte; a
-  keyword one byte (two for the 0xFD/0xFE/0xFF tables' words: FRE, CHR$, FIELD ...),
+  keyword one byte (two for the 0xFD/0xFE/0xFF tables' words: FRE, CHR$, FIELD ...,
+  and for ELSE, which a colon precedes),
   an integer literal 1 (0-9), 2 (10-255) or 3 bytes, a line number after a jump 3, a
   single 5, a double 9, and every other character (blanks included) one byte;
 * a simple variable: its type, two name characters, the count of the others and those
@@ -19,8 +20,9 @@ variables, the arrays, and from the top down the strings; FRE is what lies betwe
 * an array: that header with its size (2), dimension count (1) and 2 bytes a dimension,
   then its elements;
 * the strings: every string value's characters (GW-BASIC keeps a string literal assigned
-  as it is in the program text, yaseer counts it too; ``FRE("")``'s garbage collection
-  is then what FRE(0) always reports).
+  as it is in the program text, yaseer counts it too); FRE(0) also counts the garbage
+  the strings made since the last collection left (machine/string_space.py), FRE("")
+  collects it first.
 """
 
 from __future__ import annotations
@@ -49,7 +51,7 @@ def line_bytes(text: str) -> int:
             if word in _TWO_BYTES:
                 size += 2
             elif word in _ONE_BYTE or word.rstrip("(") in _ONE_BYTE:
-                size += 1
+                size += 1 + (word == "ELSE")  # CRUNCH stores a colon before ELSE (KRNSVC)
             elif word.startswith("FN") and len(word) > 2:
                 size += 1 + len(word) - 2
             else:
@@ -88,6 +90,13 @@ def _name_bytes(name: str) -> int:
 def free_bytes(total: int, program: dict, scalars: dict, arrays: dict, array_dims: dict, fns: dict) -> int:
     """FRE: of ``total`` bytes (none used by a program), those left between the program and
     variables and the strings."""
+    free, _ = free_and_strings(total, program, scalars, arrays, array_dims, fns)
+    return free
+
+
+def free_and_strings(total: int, program: dict, scalars: dict, arrays: dict, array_dims: dict,
+                     fns: dict) -> tuple[int, int]:
+    """(:func:`free_bytes`, the bytes of those strings)."""
     used = sum(line_bytes(text) for text in program.values())
     strings = 0
     for name, value in scalars.items():
@@ -106,7 +115,7 @@ def free_bytes(total: int, program: dict, scalars: dict, arrays: dict, array_dim
         used += _name_bytes(name) + 3 + 2 * len(dims) + elements * _VALUE_BYTES.get(name[-1], 4)
         if name.endswith("$"):
             strings += sum(len(v) for v in _flat(arrays.get(name, ())))
-    return total - used - strings
+    return total - used - strings, strings
 
 
 def _flat(values):

@@ -8,7 +8,7 @@ import math
 
 from yaseer.basic.machine import memory_model, runtime
 from yaseer.basic.errors import BasicError, DUPLICATE_DEFINITION, ILLEGAL_FUNCTION_CALL, OUT_OF_MEMORY, SUBSCRIPT_OUT_OF_RANGE
-from yaseer.basic.compile.number_models import initial_value
+from yaseer.basic.compile.number_models import initial_value, local_name
 
 # Array limits (each exceeded limit is "Out of memory in N").
 MAX_ARRAY_ELEMENTS = 2_000_000  # per array
@@ -138,15 +138,29 @@ class Variables:
             return runtime.subscript_truncated
         return runtime.subscript if base == 0 else runtime.subscript_from_one
 
-    def free_memory(self, _any) -> float:
-        """FRE(x): in GW-BASIC the bytes its segment has left (machine/memory_model.py);
-        otherwise those left in the array budget (8 bytes a number, 264 a string element:
-        the most it can hold), whatever x is."""
-        total = self.dialect.free_memory
-        if total is not None:
-            return float(memory_model.free_bytes(total, self.programs.get(0, {}), self.scalars, self.arrays,
-                                                 self.array_dims, self.fns))
+    def free_memory(self, argument) -> float:
+        """FRE(x): in GW-BASIC the bytes its segment has left (machine/memory_model.py), the
+        garbage of the string space counted as used, FRE("") after collecting it
+        (machine/string_space.py); otherwise those left in the array budget (8 bytes a
+        number, 264 a string element: the most it can hold), whatever x is."""
+        if self.dialect.free_memory is not None:
+            free, strings = self.measure_memory({})
+            if type(argument) is str:
+                self.string_space.reset()
+                return float(free)
+            return float(free - self.string_space.garbage(strings))
         return float(8 * (MAX_TOTAL_ELEMENTS - self.array_elements))
+
+    def measure_memory(self, block_locals: dict) -> tuple[int, int]:
+        """(GW's free bytes without garbage, the bytes its strings hold), the running block's
+        ``block_locals`` (its scalars' Python locals, not yet stored back) over the scalars."""
+        scalars = self.scalars
+        if block_locals:
+            names = {local_name(name): name for name in scalars}
+            scalars = dict(scalars)
+            scalars.update((names[local], value) for local, value in block_locals.items() if local in names)
+        return memory_model.free_and_strings(self.dialect.free_memory, self.programs.get(0, {}), scalars,
+                                             self.arrays, self.array_dims, self.fns)
 
     def clear(self) -> None:
         """CLEAR: every variable to 0 or "", arrays back to their implicit state, no FN;
@@ -164,6 +178,7 @@ class Variables:
         self.on_error = None
         self.in_handler = False
         self.err = self.erl = 0.0
+        self.string_space.reset()
         self.reset_def_types()
 
 
