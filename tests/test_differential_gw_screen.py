@@ -54,8 +54,10 @@ def text(rng: random.Random) -> str:
         return '"' + "".join(rng.choice("ABXYZ.-") for _ in range(rng.randint(0, 12))) + '"'
     if kind < 0.6:
         return str(rng.randint(-9999, 9999))
-    if kind < 0.8:
+    if kind < 0.75:
         return f"CHR$({rng.choice(CONTROL_CODES)})"
+    if kind < 0.8:  # TAB after a full row: its column is the last (GIOSCN.ASM SCNGPS)
+        return f"{rng.choice(['TAB', 'SPC'])}({rng.choice([1, 5, 40, 79, 80, 81, 160, rng.randint(1, 200)])})"
     return f'STRING$({rng.choice([rng.randint(1, 90), 80, 79, 81, 160])}, "{rng.choice("*#=")}")'
 
 
@@ -123,3 +125,15 @@ def test_generated_screens_are_drawn_without_a_traceback():
         source = screen_program(rng)
         rows, _ = yaseer_screen(source)
         assert len(rows) == 25, source
+
+
+def test_tab_after_a_full_row_as_the_source_and_pcbasic(pc):
+    """After a full row the cursor waits past the last column, but TAB takes the column as
+    the last one (GIOSCN.ASM SCNGPS, GIO86.ASM TABER): TAB(80) adds nothing and the next
+    character wraps to column 1; TAB(n) below 80 starts a new row; SPC counts on."""
+    source = ('10 CLS: PRINT STRING$(80, "*"); TAB(80); "Z"\n20 PRINT STRING$(80, "*"); TAB(5); "X"\n'
+              '30 PRINT STRING$(80, "*"); SPC(3); "W"\n40 PRINT STRING$(79, "*"); TAB(80); "V"\n'
+              '50 PRINT STRING$(80, "*"); TAB(160); "U"; TAB(80); "T"\n')
+    ours, _ = yaseer_screen(source)
+    assert ours == pcbasic_screen(pc, source)
+    assert ours[1] == "Z"

@@ -113,11 +113,15 @@ class OutputStream:
         """``TAB(n)``: to 1-based column n (n below 1 is column 1), on a new row if already
         past it; with a width, n counts modulo the width."""
         target = max(n, 1) - 1
+        column = self.column
         if self.width is not None:
             target %= self.width
-        if target < self.column:
+            if self.row_waits and self.moves_items:  # the screen's column of a full row is its last
+                column = min(column, self.width - 1)  # (GIOSCN.ASM SCNGPS): TAB(80) there adds nothing
+        if target < column:
             self.new_row()
-        self.write(" " * (target - self.column))
+            column = 0
+        self.write(" " * (target - column))
 
     def spc(self, n: int) -> None:
         """``SPC(n)``: n blanks (none for n below 1; modulo the width when there is one)."""
