@@ -2,7 +2,7 @@
 CLS, KEY, SCREEN, VIEW PRINT, WIDTH, CSRLIN, POS, SCREEN(), INKEY$, PRINT of control
 codes, FRE, RETURN's forms, DEF FN bodies, bad IF branches, MID$ onto itself, WHILE,
 RANDOMIZE, LPOS, PRINT USING, DEFINT/DEFSTR run as statements, CLEAR, blanks inside
-numbers, filling the string space, with arguments in and out of range,
+numbers, filling the string space, RENUM, with arguments in and out of range,
 left out or of the wrong type.  Each program ends normally or with a BASIC error line
 naming its line (never a Python exception), and writes nothing in its directory.
 
@@ -52,6 +52,7 @@ def statement(data) -> str:
         # GW's string space: filled (Out of string space), garbage collected, FRE with and without garbage
         f"DIM S$(300): FOR K = 0 TO 300: S$(K) = SPACE$({a}): NEXT", f'T$ = STRING$({a}, "T") + T$',
         'PRINT FRE(0); FRE(""); FRE(X)', "ERASE S$",
+        f"RENUM {a}, , {b}", f"RENUM , {a}", "RENUM",
     ]
     return data.draw(st.sampled_from(choices))
 

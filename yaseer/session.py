@@ -119,67 +119,25 @@ def lines_in_range(program: Program, first: int, last: int) -> list[int]:
     return [number for number in sorted(program) if first <= number <= last]
 
 
-# Keywords followed by line numbers, and ERL compared with one (as MS-BASIC's RENUM
-# changes them).  GOSUB PROG n names an area, not a line.
-_REFERENCE = re.compile(
-    r"(GOTO|GOSUB(?!\s*PROG)|THEN|ELSE|RESTORE|RESUME|RUN|ERL\s*[<>=]{1,2})(\s*)(\d+(?:\s*,\s*\d+)*)",
-    re.I,
-)
-_STRING_OR_REMARK = re.compile(r'"[^"]*"?|\bREM\b.*|\'.*', re.I | re.S)
+def renumber_references(text: str, mapping: dict[int, int], dialect: str = "casio") -> tuple[str, list[int]]:
+    """Rewrite the line numbers that ``text`` names through ``mapping`` (as the tokeniser
+    reads them: yaseer.basic.source.renumbering); also the numbers absent from ``mapping``."""
+    from yaseer.basic.dialects.dialect import get_dialect
+    from yaseer.basic.source.renumbering import renumber_text
+
+    return renumber_text(text, mapping, get_dialect(dialect))
 
 
-def renumber_references(text: str, mapping: dict[int, int]) -> tuple[str, list[int]]:
-    """Rewrite the line numbers that ``text`` jumps to through ``mapping``.
+def renumber(program: Program, new: int = 10, old: int = 0, step: int = 10,
+             dialect: str = "casio") -> tuple[Program, list[str]]:
+    """RENUM: lines from ``old`` on become ``new``, ``new+step``, ...; the line numbers
+    statements name follow; warnings (``"Undefined line 90 in 30"``) for those that name no
+    line; ``Illegal function call`` where GW-BASIC's RESEQ refuses
+    (yaseer.basic.source.renumbering)."""
+    from yaseer.basic.dialects.dialect import get_dialect
+    from yaseer.basic.source.renumbering import renumber as renumber_program
 
-    Returns the new text and the referenced numbers absent from ``mapping``
-    (left unchanged, as MS-BASIC does).  Strings and remarks are untouched.
-    """
-    missing: list[int] = []
-
-    def replace_numbers(match: re.Match) -> str:
-        def one(number_match: re.Match) -> str:
-            old = int(number_match.group())
-            if old not in mapping:
-                missing.append(old)
-                return number_match.group()
-            return str(mapping[old])
-
-        numbers = re.sub(r"\d+", one, match.group(3))
-        return match.group(1) + match.group(2) + numbers
-
-    pieces = []
-    position = 0
-    for protected in _STRING_OR_REMARK.finditer(text):
-        pieces.append(_REFERENCE.sub(replace_numbers, text[position:protected.start()]))
-        pieces.append(protected.group())
-        position = protected.end()
-    pieces.append(_REFERENCE.sub(replace_numbers, text[position:]))
-    return "".join(pieces), missing
-
-
-def renumber(program: Program, new: int = 10, old: int = 0, step: int = 10) -> tuple[Program, list[str]]:
-    """RENUM: lines from ``old`` on become ``new``, ``new+step``, ...; jumps follow.
-
-    Returns the renumbered program and warnings (``"Undefined line 90 in 30"``)
-    for jumps to lines that do not exist.  ``Illegal function call`` if the new
-    numbers would run into the lines kept below ``old`` or past 65529.
-    """
-    if step <= 0 or new < 0:
-        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-    moved = [number for number in sorted(program) if number >= old]
-    kept = [number for number in sorted(program) if number < old]
-    mapping = {number: number for number in kept}
-    for index, number in enumerate(moved):
-        mapping[number] = new + index * step
-    if moved and (mapping[moved[-1]] > MAX_LINE_NUMBER or (kept and mapping[moved[0]] <= kept[-1])):
-        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-    result: Program = {}
-    warnings: list[str] = []
-    for number in sorted(program):
-        text, missing = renumber_references(program[number], mapping)
-        result[mapping[number]] = text
-        warnings += [f"Undefined line {target} in {number}" for target in missing]
-    return result, warnings
+    return renumber_program(program, new, old, step, get_dialect(dialect))
 
 
 def file_name_argument(text: str) -> str:
@@ -392,7 +350,7 @@ class Session:
         if len(values) > 3 or not all(value.isdigit() or value == "" for value in values):
             raise BasicError("Syntax error", SYNTAX_ERROR)
         numbers = [int(value) if value else default for value, default in zip(values + ["", "", ""], (10, 0, 10))]
-        renumbered, warnings = renumber(self.program, *numbers)
+        renumbered, warnings = renumber(self.program, *numbers, dialect=self.dialect)
         self.programs[self.area] = renumbered
         for warning in warnings:
             self.write(warning + "\n")

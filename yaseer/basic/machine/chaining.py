@@ -69,7 +69,8 @@ class Chaining:
         """A command run by a program (GW-BASIC runs them and, but for RUN, returns to
         direct mode: the run ends): RUN [line | "file"[,R]], LIST/LLIST [range], LOAD
         "file"[,R], SAVE "file"[,A|,P] (always as an ASCII listing), NEW, SYSTEM, DELETE
-        range, EDIT line (ends the run: there is no editor in a run), KEY ON/OFF (the
+        range, EDIT line (ends the run: there is no editor in a run), RENUM [new][, [old][,
+        step]] (source/renumbering.py; its messages on the screen), KEY ON/OFF (the
         function-key line is the screen's: nothing where output is not a terminal).
 
         The Casio's (dialects/casio.py PROGRAM_COMMANDS): NEW and RUN refused (FC); LIST,
@@ -105,6 +106,15 @@ class Chaining:
             raise ChainTo({n: t for n, t in program.items() if n not in doomed}, False, None, True, None, False)
         elif name == "EDIT" and argument not in program:
             raise error_for(UNDEFINED_LINE)
+        elif name == "RENUM":
+            from yaseer.basic.source.renumbering import renumber  # here: only RENUM needs it
+
+            new, old, step = argument
+            renumbered, messages = renumber(program, 10 if new is None else new, old or 0,
+                                            10 if step is None else step, self.dialect)
+            for message in messages:
+                self.print_items(0, (message,), True)
+            raise ChainTo(renumbered, False, None, True, None, False)
         raise ProgramEnd()
 
     def _every_area(self, name: str, argument) -> None:

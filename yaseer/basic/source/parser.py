@@ -384,6 +384,16 @@ class _ToAst:
     def edit_stmt(self, c):
         return ast.Command("EDIT", _line_number(c[1]))
 
+    def renum_stmt(self, c):
+        """RENUM [new][, [old][, step]]: (new, old, step), None where left out."""
+        values, place = [None, None, None], 0
+        for token in c[1:]:
+            if token.type == "COMMA":
+                place += 1
+            else:
+                values[place] = _line_number(token)
+        return ast.Command("RENUM", tuple(values))
+
     def key_stmt(self, c):
         return ast.Key(c[1].type)
 

@@ -63,7 +63,7 @@ DIALECT_WORDS = {
     "FIELD": "FIELD", "GET": "GET", "PUT": "PUT", "LSET": "LSET", "RSET": "LSET", "RESET": "RESET",
     "CHAIN": "CHAIN", "COMMON": "COMMON", "MERGE": "MERGE", "DELETE": "DELETE",
     "RUN": "RUN", "LIST": "LIST", "LLIST": "LIST", "LOAD": "LOAD", "SAVE": "SAVE", "NEW": "NEW",
-    "EDIT": "EDIT", "KEY": "KEY", "OFF": "OFF", "SYSTEM": "SYSTEM", "ALL": "ALL",
+    "EDIT": "EDIT", "RENUM": "RENUM", "KEY": "KEY", "OFF": "OFF", "SYSTEM": "SYSTEM", "ALL": "ALL",
     "CSRLIN": "SYSVAR", "COLOR": "COLOR", "SCREEN": "SCREEN", "VIEW": "VIEW",
 }
 # GW-BASIC reads these keywords even when name characters follow (``FNA``, ``TAB(``).
@@ -510,6 +510,39 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
             yield "PRINT", "PRINT", start, i
         else:
             raise _syntax_error()
+
+
+# After these words GW-BASIC's tokeniser reads a number as a line number (GWMAIN.ASM LINRES),
+# and goes on so past commas, operators and blanks until a name, another word or a colon.
+_LINE_WORDS = frozenset(("RESTORE", "AUTO", "RENUM", "DELETE", "EDIT", "RESUME", "ERL", "ELSE", "RUN",
+                         "LIST", "LLIST", "GOTO", "RETURN", "THEN", "GOSUB"))
+
+
+def line_number_spans(text: str, dialect: Dialect = CASIO) -> list[tuple[int, int, int]]:
+    """``(start, end, number)`` of each line number the statements ``text`` name (see
+    ``_LINE_WORDS``), as RENUM changes them; the 0 of ``ON ERROR GOTO 0`` is not one
+    (GWMAIN.ASM SCCLIN leaves it).  Numbers up to a character no token starts with."""
+    spans: list[tuple[int, int, int]] = []
+    after, words = False, ["", ""]
+    try:
+        for kind, value, start, end in _lexemes(text, dialect):
+            if kind == "REMARK":
+                break
+            if kind == "NUMBER":
+                digits = "".join(ch for ch in text[start:end] if ch not in _BLANKS)
+                if after and digits.isdigit():  # (LINGET reads digits; 1.5, &H10, 1E3 are no line numbers)
+                    number = int(digits)
+                    if number or words != ["ERROR", "GOTO"]:
+                        spans.append((start, end, number))
+                words = ["", ""]
+            elif kind == "_COLON":
+                after = False
+            elif kind not in ("STRING", "DATA_TEXT") and isinstance(value, str) and value[:1].isalpha():
+                after = value.upper() in _LINE_WORDS
+                words = [words[1], value.upper()]
+    except BasicError:
+        pass
+    return spans
 
 
 class Token:
