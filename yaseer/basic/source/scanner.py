@@ -292,34 +292,31 @@ def _after_blanks(upper: str, j: int) -> int:
     return j
 
 
+def _take(upper: str, at: int, out: list) -> tuple[int, int]:
+    """``upper[at]`` appended to ``out``; the position after it and the next non-blank one."""
+    out.append(upper[at])
+    return at + 1, _after_blanks(upper, at + 1)
+
+
 def _number_text(upper: str, i: int) -> tuple[str, int]:
     """A decimal number's characters from ``i`` as GW-BASIC's number reader takes them, blanks
     left out, and the position after the last one: MATH1.ASM FIN reads each next character
     with CHRGTR, which steps over blanks (``1 2`` is 12, ``1 . 5 E - 2`` is .015), and
     CRUNCH (GWMAIN.ASM BAKSP) leaves the blanks after the number.  An ``E`` is an exponent
     unless ``L`` or ``Q`` follows it ($CHKEL: ELSE, EQV); a second point ends the number."""
-    n, out, end, point = len(upper), [], i, False
-    k = i
+    n, out, point = len(upper), [], False
+    end = k = i
     while k < n and (upper[k].isdigit() or (upper[k] == "." and not point)):
         point = point or upper[k] == "."
-        out.append(upper[k])
-        end = k + 1
-        k = _after_blanks(upper, end)
+        end, k = _take(upper, k, out)
     if k < n and upper[k] in "ED" and not (upper[k] == "E" and upper[_after_blanks(upper, k + 1):][:1] in ("L", "Q")):
-        out.append(upper[k])
-        end = k + 1
-        k = _after_blanks(upper, end)
+        end, k = _take(upper, k, out)
         if k < n and upper[k] in "+-":
-            out.append(upper[k])
-            end = k + 1
-            k = _after_blanks(upper, end)
+            end, k = _take(upper, k, out)
         while k < n and upper[k].isdigit():
-            out.append(upper[k])
-            end = k + 1
-            k = _after_blanks(upper, end)
+            end, k = _take(upper, k, out)
     elif k < n and upper[k] in "%!#":
-        out.append(upper[k])
-        end = k + 1
+        end, k = _take(upper, k, out)
     return "".join(out), end
 
 
