@@ -67,12 +67,10 @@ class StringSpace:
         count = self.count
         count[0] -= needed
         free, strings = self.measure(block_locals())
-        if free < needed:
-            count[1] = count[0] + free
-            self.base = (strings, count[0])
-            raise BasicError("Out of string space", OUT_OF_STRING_SPACE)
         count[1] = count[0] + free
         self.base = (strings, count[0])
+        if free < needed:
+            raise BasicError("Out of string space", OUT_OF_STRING_SPACE)
         count[0] += needed
 
     def garbage(self, strings: int) -> int:
