@@ -19,8 +19,9 @@ Three kinds of file, told apart by the first byte (DSKCOM.ASM, the LOAD code aft
 
 from __future__ import annotations
 
+from yaseer.basic.arithmetic import mbf_double
+from yaseer.basic.arithmetic.values import DOUBLE_DIGITS, SINGLE_DIGITS, double_of, unsigned_text
 from yaseer.basic.machine.gwfunctions import _from_mbf
-from yaseer.basic.arithmetic.values import DOUBLE_DIGITS, SINGLE_DIGITS, unsigned_text
 
 END_OF_FILE = 0x1A  # Ctrl-Z
 TOKENISED = 0xFF
@@ -182,9 +183,8 @@ def _token(body: bytes, i: int) -> tuple[str | None, int]:
         return str(int.from_bytes(value, "little")), i + 1 + size
     if byte == 0x1C:
         return str(int.from_bytes(value, "little", signed=True)), i + 3
-    number = _from_mbf(value)
     if byte == 0x1D:
-        text = unsigned_text(number, SINGLE_DIGITS, "E")
+        text = unsigned_text(_from_mbf(value), SINGLE_DIGITS, "E")
         return (text if "." in text or "E" in text else text + "!"), i + 5
-    text = unsigned_text(number, DOUBLE_DIGITS, "D")
+    text = unsigned_text(double_of(mbf_double.from_bytes(value)), DOUBLE_DIGITS, "D")  # all 56 bits, as CVD
     return (text if "D" in text else text + "#"), i + 9
