@@ -356,12 +356,19 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         ret = self.continuation()
         block.code.append((indent, f"_stop({ret})"))
 
-    def stmt_Trace(self, stmt, scope):
-        """TRON / TROFF: the machine swaps in the other variant; the next block is its."""
+    def hand_over(self, call: str | None = None) -> None:
+        """End the current block, after ``call`` (a machine call that swaps in another compiled
+        variant of the area: TRON, a DEF type table) where one is given, by returning the next
+        block's number: the machine looks that block up in the variant running then."""
         block, indent = self.cur, self.indent
         ret = self.continuation()
-        block.code.append((indent, f"_M.set_trace({stmt.on})"))
+        if call is not None:
+            block.code.append((indent, call))
         block.code.append((indent, f"return {ret}"))
+
+    def stmt_Trace(self, stmt, scope):
+        """TRON / TROFF: the machine swaps in the other variant; the next block is its."""
+        self.hand_over(f"_M.set_trace({stmt.on})")
 
     def stmt_Cls(self, stmt, scope):
         mode = "None" if stmt.mode is None else self.numeric(stmt.mode, scope)
@@ -409,9 +416,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit("_clear()")
         self.emit("#RELOAD#")
         if self.dynamic_types:  # the type table is single again: on in that variant (stmt_DefType)
-            block, indent = self.cur, self.indent
-            ret = self.continuation()
-            block.code.append((indent, f"return {ret}"))
+            self.hand_over()
 
     # -- GW-BASIC's statements
     def stmt_While(self, stmt, scope):
@@ -546,11 +551,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         on in the area compiled for the new table, from the next block (as TRON does)."""
         if not self.dynamic_types:
             return
-        block, indent = self.cur, self.indent
-        ret = self.continuation()
         ranges = [first + last for first, last in stmt.ranges]
-        block.code.append((indent, f"_M.set_def_types({self.area}, {stmt.kind!r}, {ranges!r})"))
-        block.code.append((indent, f"return {ret}"))
+        self.hand_over(f"_M.set_def_types({self.area}, {stmt.kind!r}, {ranges!r})")
 
     def stmt_Resume(self, stmt, scope):
         if stmt.mode == "line":
