@@ -36,6 +36,17 @@ DEFAULT_RESULT = r"(?m)^(?!.*\?\s*$).*=\s*-?\.?\d"
 # Keys for a program without a script of its own: a menu's first choice, then 2 for each number.
 DEFAULT_KEYS = "1" + "2\n" * 8
 END_OF_KEYS = "Input past end"
+# Programs whose copy in the library is damaged: the machine stores any line and stops at a
+# bad one with its own SN error when it runs it, so the run shows that error (LIB0900's line
+# 220 ends in ``THENa``, 260 and 300 in ``ELSEa``: text lost where the copy was made).
+# PROGRAM -> the error line the run must stop with; counted apart, neither loaded nor run.
+DAMAGED = {"LIB0900": "Syntax error in 220"}
+# Hardware self-tests that never wait for a key once a test fails: the first result on the
+# screen, then the machine's endless failure beep (LIB0400 tests the RAM chips' bytes, the
+# ROM, the printer, the RS-232C port and the cassette, which yaseer does not have); run for
+# ENDLESS_SECONDS and counted apart.
+ENDLESS = {"LIB0400"}
+ENDLESS_SECONDS = 5
 
 
 def library() -> Path | None:
@@ -83,18 +94,19 @@ def syntax_errors(program: Path) -> list[str]:
     return errors
 
 
-def run(program: Path, keys: str, folder: Path, extra: tuple = ()) -> tuple[str, str, int]:
-    """(standard output, standard error, status) of ``yaseer run`` with ``keys``."""
+def run(program: Path, keys: str, folder: Path, extra: tuple = (), seconds: float = SECONDS) -> tuple[str, str, int]:
+    """(standard output, standard error, status) of ``yaseer run`` with ``keys``; a run
+    that outlasts ``seconds`` is stopped (status -1)."""
     with tempfile.TemporaryDirectory() as scratch:
         key_file = Path(scratch) / "keys.txt"
         key_file.write_text(keys, encoding="utf-8")
         try:
             done = subprocess.run([sys.executable, "-m", "yaseer", "run", "--input", str(key_file),
                                    "--files", str(folder), *extra, str(program)],
-                                  capture_output=True, text=True, timeout=SECONDS, cwd=str(HERE.parent))
+                                  capture_output=True, text=True, timeout=seconds, cwd=str(HERE.parent))
         except subprocess.TimeoutExpired as late:
             out = late.stdout.decode() if isinstance(late.stdout, bytes) else (late.stdout or "")
-            return out, f"timed out after {SECONDS} s", -1
+            return out, f"timed out after {seconds} s", -1
     return done.stdout, done.stderr, done.returncode
 
 
@@ -120,24 +132,39 @@ def main(argv: list[str]) -> int:
     wanted = {a.upper().removesuffix(".BAS") for a in argv if not a.startswith("-")}
     scripts = key_scripts()
     chosen = [p for p in programs(folder) if not wanted or p.stem.upper() in wanted]
-    loaded = ran = 0
+    loaded = ran = damaged = endless = 0
     for program in chosen:
+        name = program.stem.upper()
         errors = syntax_errors(program)
         if not errors:
             loaded += 1
-        keys, pattern = scripts.get(program.stem.upper(), (DEFAULT_KEYS, DEFAULT_RESULT))
+        keys, pattern = scripts.get(name, (DEFAULT_KEYS, DEFAULT_RESULT))
         runs = program
         if keys.startswith("@"):  # a subprogram: run by the program that calls it (GOSUB "LIB0:...")
             caller, _, keys = keys[1:].partition(" ")
             runs = folder / f"{caller}.bas"
-        problem = verdict(*run(runs, keys, folder), pattern)
-        if problem is None and not errors:  # a bad line an ON ERROR handler hid is no run
-            ran += 1
+        if name in DAMAGED:
+            stdout, stderr, status = run(runs, keys, folder)
+            first = next((line for line in stderr.splitlines() if line.strip()), "")
+            problem = None if first == DAMAGED[name] else f"expected {DAMAGED[name]!r}, got {first!r}"
+            damaged += problem is None
+        elif name in ENDLESS:
+            stdout, stderr, status = run(runs, keys, folder, seconds=ENDLESS_SECONDS)
+            problem = None if re.search(pattern, stdout) else f"no result matching {pattern!r} on the screen"
+            endless += problem is None
+        else:
+            problem = verdict(*run(runs, keys, folder), pattern)
+            if problem is None and not errors:  # a bad line an ON ERROR handler hid is no run
+                ran += 1
         if verbose and (errors or problem):
             print(f"{program.name}: {'load: ' + errors[0] + ' ' if errors else ''}"
                   f"{'run: ' + problem if problem else ''}")
     print(f"casio library: {len(chosen)} programs, {loaded} load without a syntax error, "
-          f"{ran} run to their first result without an error line")
+          f"{ran} run to their first result without an error line; "
+          f"{damaged} of {len(DAMAGED)} damaged in the library's copy stop with the machine's own error "
+          f"({', '.join(f'{k}: {v}' for k, v in DAMAGED.items())}); "
+          f"{endless} of {len(ENDLESS)} hardware self-test shows its first result, then beeps without end "
+          f"({', '.join(sorted(ENDLESS))})")
     return 0
 
 

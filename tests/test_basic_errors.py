@@ -43,7 +43,7 @@ from test_basic_helpers import error_of
     ("10 DIM M(5)\n20 DIM M(6)", "Duplicate Definition in 20"),  # (the same sizes again: passed over, DIM.md)
     ("10 INPUT A", "Input past end in 10"),
     ("10 X=VAL(\"1E999\")", "Overflow in 10"),
-    ("10 PRINT TAB(256)", "Illegal function call in 10"),
+    ("10 PRINT TAB(257)", "Illegal function call in 10"),  # TAB.md: 0..256
     ("10 A$=MID$(\"abc\", 0)", "Illegal function call in 10"),
     ("10 CONT", "Syntax error in 10"),
 ])

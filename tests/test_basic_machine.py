@@ -222,26 +222,33 @@ def test_randomize_reseeds_the_same_sequence():
 
 
 def test_print_zones_semicolons_tab_spc():
-    out = run_text('10 PRINT "A","B";"C": PRINT TAB(5);"X";SPC(2);"Y": PRINT "P";\n20 PRINT "Q"')
+    out = run_text('10 PRINT "A","B";"C": PRINT TAB(5);"X";SPC(2);"Y": PRINT "P";\n20 PRINT "Q"', dialect="gw")
     assert out == "A" + " " * 13 + "BC\n" + "    X  Y\nPQ\n"
+    # casio: TAB counts from column 0 (TAB.md), so TAB(5) leaves five blanks
+    out = run_text('10 PRINT "A","B";"C": PRINT TAB(5);"X";SPC(2);"Y": PRINT "P";\n20 PRINT "Q"')
+    assert out == "A" + " " * 13 + "BC\n" + "     X  Y\nPQ\n"
 
 
-# PC-BASIC 2.0.8 prints these (issue 11, both dialects):
+# PC-BASIC 2.0.8 prints these (gw; casio's TAB counts from 0, TAB.md):
 #   10 PRINT "A";TAB(0);"B"  ->  A / B            (TAB below 1 is column 1, here on a new line)
 #   PRINT "XYZ";CHR$(13);"Q";TAB(3);"R"  ->  XYZ / Q R   (CR ends the line, the column is 0)
 #   PRINT "AB";TAB(10) then PRINT "C"  ->  "AB       C"  (TAB or SPC at the end keeps the line open)
 
 
 def test_tab_below_one_is_column_one():
-    assert run_text('10 PRINT "A";TAB(0);"B": PRINT TAB(-7);"C": PRINT "D";TAB(-1);"E"') == "A\nB\nC\nD\nE\n"
+    assert run_text('10 PRINT "A";TAB(0);"B": PRINT TAB(-7);"C": PRINT "D";TAB(-1);"E"', dialect="gw") == \
+        "A\nB\nC\nD\nE\n"
 
 
 def test_carriage_return_ends_the_line():
-    assert run_text('10 PRINT "XYZ";CHR$(13);"Q";TAB(3);"R"') == "XYZ\nQ R\n"
+    assert run_text('10 PRINT "XYZ";CHR$(13);"Q";TAB(3);"R"', dialect="gw") == "XYZ\nQ R\n"
+    assert run_text('10 PRINT "XYZ";CHR$(13);"Q";TAB(3);"R"') == "XYZ\nQ  R\n"  # casio: column 3 from 0
 
 
 def test_print_ending_in_tab_or_spc_keeps_the_line_open():
-    assert run_text('10 PRINT "AB";TAB(10)\n20 PRINT "C": PRINT "AB";SPC(3)\n30 PRINT "E"') == "AB       C\nAB   E\n"
+    assert run_text('10 PRINT "AB";TAB(10)\n20 PRINT "C": PRINT "AB";SPC(3)\n30 PRINT "E"', dialect="gw") == \
+        "AB       C\nAB   E\n"
+    assert run_text('10 PRINT "AB";TAB(10)\n20 PRINT "C"') == "AB        C\n"  # casio: column 10 from 0
 
 
 def test_empty_input_answer_is_zero_or_empty_string():

@@ -244,3 +244,41 @@ def test_defchr_characters_are_drawn_on_the_html_lcd():
     assert html.count("<svg") == 1 and "H<svg" in html
     dots = {(int(x), int(y)) for x, y in re.findall(r'x="(\d)" y="(\d)"', glyph_svg("123E020000"))}
     assert dots == {(0, 3), (0, 6), (1, 2), (1, 3), (1, 4), (1, 5), (1, 6), (2, 6)}  # a small "1" on its foot
+
+
+def test_calcjmp_executes_the_formula_of_calc_in_the_cal_mode():
+    # part 5, the data bank example: CALC executes the stored formula Y=3*X^2+4, the display
+    # cleared, "X?" asking for its variable; the value goes to the left-hand side
+    result = yaseer.run('10 CLS: PRINT "MENU";: CALC$="Y=3*X^2+4": CALCJMP\n20 PRINT "NOT HERE"', input="2\n")
+    assert result.screens == ["X?\n\n", "X?2\nY= 16\n"]  # 3*2^2+4
+    assert result.error == "Input past end in 10"  # the result waits for EXE, which asks again
+    # the library's form (LIB5950-5980): a [...] comment after a variable is shown, not computed;
+    # each variable is asked in the order it first appears; EXE repeats; EXE alone keeps a value
+    program = '10 CALC$="S[cm2]=PI*R[cm]^2+H*R[cm]": CALCJMP'
+    result = yaseer.run(program, input="2\n1\n\n3\n\n")
+    assert result.screens[:4] == ["R[cm]?\n\n", "R[cm]?2\nH?\n", "H?1\nS[cm2]= 14.56637061\n", "R[cm]?\n\n"]
+    assert result.screens[4:] == ["R[cm]?3\nH?\n", "H?\nS[cm2]= 31.27433388\n"]  # PI*4+2, PI*9+3 (H kept)
+    assert result.text.count("NOT HERE") == 0
+
+
+def test_mode_33_copies_the_cursors_line_into_calc():
+    # the library's memory calculator (LIB1000): the expression typed on the LCD's line goes to
+    # CALC$ (MODE 33, a ROM routine the manual does not describe), which VALF evaluates
+    program = '10 CLS: PRINT "MEMORY";: LOCATE 0,1: PRINT "12/4+1";\n20 MODE 33(32,1024,223): PRINT: PRINT VALF(CALC$);'
+    assert yaseer.run(program).screens[-1] == "12/4+1\n 4\n"
+    assert yaseer.run('10 MODE 30(1)').error == "MODE 30(...): a machine-code routine of the ROM is not emulated in 10"
+
+
+def test_tab_counts_the_columns_from_zero():
+    # TAB.md: "counting from the left end of the line (position 0)"; less than the current
+    # position: a new line first; the tab specification truncated, 0..256
+    result = yaseer.run('10 PRINT TAB(5);"ABC"\n20 PRINT TAB(0);"A";TAB(3);"B";TAB(1.9);"C"\n30 PRINT "WXYZ";TAB(4);"!"')
+    assert result.text == "     ABC\nA  B\n C\nWXYZ!\n"
+    assert yaseer.run('10 PRINT TAB(-1);"A"').error == "Illegal function call in 10"
+    assert yaseer.run('10 PRINT TAB(5);"ABC"', dialect="gw").text == "    ABC\n"  # GW-BASIC's TAB(1) is the first
+
+
+def test_peek_reads_the_ram_size_the_library_reads():
+    # specifications.md: the FX-880P's standard 32 KB; LIB0400 reads the size in pages of 256 bytes
+    program = "10 DEFSEG=0: PRINT PEEK(&H6B4)/4+PEEK(&H6B5)*64"
+    assert yaseer.run(program).text == " 32 \n"

@@ -335,14 +335,13 @@ def test_calc_dollar_holds_a_formula():  # the library's CALC$ (LIB1000: VALF(CA
 
 
 @pytest.mark.parametrize("statement, message", [
-    ("CALCJMP", "CALCJMP: the CAL mode (the formula storage CALC$ holds) is not emulated"),
-    ("MODE 33(32,1024,223)", "MODE 33(...): a machine-code routine of the ROM is not emulated"),
+    ("MODE 30(32,1024,223)", "MODE 30(...): a machine-code routine of the ROM is not emulated"),
     ('OPEN "COM0:5,E,8,2" AS #1', "COM0: (the RS-232C port) is not emulated"),
     ('PBLOAD "CAS0:P"', "PBLOAD/PBGET: reading PB-100 series tapes is not emulated"),
     ("DEFM 5", "DEFM: the PB-100 series' memory declaration is not emulated"),
 ])
 def test_what_yaseer_lacks_ends_the_run_with_one_line(statement, message):
-    # PBLOAD_PBGET.md, OPEN.md (COM0:), DEFM.md (an empty page); CALCJMP and MODE n(...) from the
+    # PBLOAD_PBGET.md, OPEN.md (COM0:), DEFM.md (an empty page); MODE n(...) from the
     # library: no ON ERROR handler can make them work, so none catches them
     assert error_of(f"5 ON ERROR GOTO 20\n10 {statement}\n20 END") == f"{message} in 10"
 

@@ -78,7 +78,7 @@ class _NoWords:
     functions: dict = {}
     statements: dict = {}
     routine_calls: dict = {}
-    reads_variables = sets_x_y = empty_statements = frozenset()
+    reads_variables = writes_variables = sets_x_y = empty_statements = frozenset()
     computed_restore = empty_on_targets = truncates = asks_each = False
     command_options = {"LOAD": "R", "SAVE": "AP", "RUN": "R"}  # GW-BASIC's LOAD ,R; SAVE ,A ,P; RUN ,R
 
@@ -607,9 +607,12 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             args = [self.string(arg, scope) for arg in stmt.args]
         else:
             args = [self.numeric(arg, scope) for arg in stmt.args]
-        if stmt.word in self.words.reads_variables:
+        writes = stmt.word in self.words.writes_variables
+        if writes or stmt.word in self.words.reads_variables:
             self.emit("#FLUSH#")
         self.emit(f"{helper}({', '.join(args)})")
+        if writes:
+            self.emit("#RELOAD#")  # the helper set variables: the block takes their new values
 
     def stmt_Angle(self, stmt, scope):
         self.emit(f"_M.set_angle({stmt.mode!r})")

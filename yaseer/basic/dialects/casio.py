@@ -64,9 +64,9 @@ STATEMENTS = {
     "MODE": (1, 1, "_M.mode", "n"),  # part 7 (MODE 7 / MODE 8: printer on, off); ANGLE.md (MODE 4 5 6)
     "VARLIST": (0, 0, "_M.variable_list", "n"),  # VARLIST.md
     "SET": (1, 1, "_M.set_format", "format"),  # SET.md: SET F n, SET E n, SET N
-    # CALCJMP: leaves BASIC for the CAL mode with the formula CALC$ holds (Becker's library,
-    # LIB5950-5980, after CALC$=formula; the manual's part 4, formula storage, is empty):
-    # yaseer has no CAL mode, so the run ends there with one line saying so
+    # CALCJMP: leaves BASIC for the CAL mode and executes the formula CALC$ holds, as the
+    # CAL mode's CALC key does (Becker's library, LIB5950-5980, after CALC$=formula; part 5's
+    # data bank example shows the CALC key asking "X?" for the formula's variable)
     "CALCJMP": (0, 0, "_M.calc_jump", "n"),
     "VERIFY": (1, 1, "_M.files.verify", "s"),  # VERIFY.md: the file of the program's directory read through
     # PBLOAD_PBGET.md: PB-100 programs and data from cassette tape, converted; DEFM (its page
@@ -77,15 +77,25 @@ STATEMENTS = {
     "DEFM": (1, 1, "_M.pb_memory", "n"),
 }
 # MODE n(arguments): the library's calls of machine-code routines in the ROM (LIB0900's
-# MODE 30-35, LIB1000's MODE 33(32, 1024, 223)): not described by the manual and not
-# emulated; the run ends there with one line naming the routine.  word -> as STATEMENTS
-# ("any": each argument of its own kind), the routine's number first.
+# MODE 30-35, LIB1000's MODE 33(32, 1024, 223)), not described by the manual.  MODE 33 is
+# emulated as LIB1000 uses it (the text typed on the cursor's line becomes CALC$, which the
+# program then evaluates with VALF); the others end the run with one line naming the
+# routine.  word -> as STATEMENTS ("any": each argument of its own kind), the routine's
+# number first.
 ROUTINE_CALLS = {"MODE": (1, 9, "_M.rom_routine", "any")}
-# The words that read the variables (the block's values are stored before they run).
+# MODE 33: the routine that copies the cursor's line into CALC$ (see casio_words.rom_routine).
+LINE_TO_CALC = 33
+# The words that read the variables (the block's values are stored before they run) and
+# those that also set them (stored before, taken back after: MODE 33 sets CALC$, the CAL
+# mode the formula's variables).
 READS_VARIABLES = frozenset({"VARLIST", "VALF", "FRE"})
+WRITES_VARIABLES = frozenset({"MODE()", "CALCJMP"})
 
 # Statements the library writes with nothing after them: a bare DIM declares nothing.
 EMPTY_STATEMENTS = frozenset({"DIM"})
+# TAB(n) counts the columns from 0 (TAB.md, item 2: "position 0"; its range 0..256, n
+# truncated), where GW-BASIC's TAB(1) is the first column.
+TAB_FROM_ZERO = True
 # RESTORE (expression): the line a computed number names (RESTORE.md).
 COMPUTED_RESTORE = True
 # ON x GOTO a,,b: an empty place does not branch (the library writes it; ON_GOTO.md
@@ -137,6 +147,11 @@ COMMAND_OPTIONS = {"LOAD": "A", "SAVE": "A", "RUN": ""}
 # The variable area's bytes (CLEAR.md: 8192 on the FX-880P and an FX-850P of 32 KB; FRE 2
 # reports it): an array that does not fit with the other variables is the OM error.
 VARIABLE_AREA = 8192  # ,A: the ASCII format (yaseer's only one)
+# Bytes of the system area a program reads with PEEK at power-on (address -> byte): the RAM's
+# size in pages of 256 bytes, low byte at &H6B4 (LIB0400, the library's memory test, reads
+# K = PEEK(&H6B4)/4 + PEEK(&H6B5)*64 kilobytes): the FX-880P's 32 KB (specifications.md).
+# The manual documents no address; the ROM (segment &H4000 on) is not in yaseer's memory.
+SYSTEM_MEMORY = {0x6B4: (32 * 1024 // 256) % 256, 0x6B5: (32 * 1024 // 256) // 256}
 # ... and the names OPEN's grammar reads them as, inside an OPEN statement (scanner._open_words)
 OPEN_WORDS = {("OUT", "PUT"): "OUTPUT", ("AS",): "AS"}
 # Reserved string variables: CALC$, the formula CALCJMP hands to the CAL mode (the library's
@@ -193,7 +208,10 @@ class Words:
     refused_commands = REFUSED_COMMANDS
     command_options = COMMAND_OPTIONS
     variable_area = VARIABLE_AREA
+    system_memory = SYSTEM_MEMORY
     reads_variables = READS_VARIABLES
+    writes_variables = WRITES_VARIABLES
+    line_to_calc = LINE_TO_CALC
     empty_statements = EMPTY_STATEMENTS
     computed_restore = COMPUTED_RESTORE
     empty_on_targets = EMPTY_ON_TARGETS
@@ -203,6 +221,7 @@ class Words:
     erase_missing = ERASE_MISSING
     err_values = ERR_VALUES
     truncates = TRUNCATES
+    tab_from_zero = TAB_FROM_ZERO
     asks_each = ASKS_EACH
     closes_parentheses = CLOSES_PARENTHESES
     data_to_line_end = DATA_TO_LINE_END

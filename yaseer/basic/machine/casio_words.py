@@ -12,11 +12,12 @@ password, the output format SET chose, whether PRINT also goes to the printer
 from __future__ import annotations
 
 import functools
+import re
 
 from yaseer.basic.arithmetic import formatting
 from yaseer.basic.arithmetic import casio_math
 from yaseer.basic.dialects import casio
-from yaseer.basic.machine import runtime
+from yaseer.basic.machine import io_statements, runtime
 from yaseer.basic.errors import (
     BasicError, OVERFLOW, PASSWORD_PROTECTED, SYNTAX_ERROR, TYPE_MISMATCH, not_emulated,
 )
@@ -78,6 +79,8 @@ class CasioWords:
         self.print_echo = False  # MODE 7: PRINT also prints on the printer
         self.last_ran = 0.5
         self.err_codes = self.dialect.words.err_values if self.dialect.words else {}
+        if self.dialect.words:
+            self.system_memory = self.dialect.words.system_memory
 
     # -- statements
     def set_angle_number(self, n: float) -> None:
@@ -132,8 +135,34 @@ class CasioWords:
             raise casio_math.illegal()
 
     def calc_jump(self) -> None:
-        """CALCJMP: the CAL mode with the formula of CALC$ (not emulated: see not_emulated)."""
-        raise not_emulated("CALCJMP: the CAL mode (the formula storage CALC$ holds)")
+        """CALCJMP: the program ends and the CAL mode executes the formula CALC$ holds, as its
+        CALC key does (part 5, the data bank example: the display cleared, ``X?`` asks for
+        the formula's variable).  Each variable of the right-hand side is asked for in the
+        order it first appears, as its name and a ``[...]`` comment written after it
+        (``x[cm]?``); EXE alone keeps its value (as INPUT, INPUT.md item 7).  The value is
+        assigned to the left-hand side and shown as ``X[in]= 3.93701``; EXE runs the formula
+        again (the run ends when the keys do, or at BRK).  The manual's part 4 (formula
+        storage) is empty in its text: the comment and the repetition follow the library's
+        use (LIB5950-5980: formulas such as ``X[in]=.393701*x[cm]``)."""
+        left, left_label, right, asked = _formula(self.scalar("CALC$"), self.dialect)
+        code = _valf_code(right, self.dialect)
+        namespace = self.namespaces.get(0) or next(iter(self.namespaces.values()))
+        while True:
+            self.clear_screen()
+            for name, label in asked:
+                while True:
+                    line = self._read_line(label + "?").strip()
+                    if not line:
+                        break
+                    values = _number_answer(line, self.dialect)
+                    if values is not None:
+                        self.set_scalar(name, values)
+                        break
+            value = eval(code, namespace)  # noqa: S307 - code the compiler generated from BASIC
+            if left is not None:
+                self.set_scalar(left, value)
+            self.print_items(0, (left_label + "=", value), False)
+            self._read_line("")  # the result stays until EXE, which executes the formula again
 
     def pb_tape(self, name: str = "") -> None:
         """PBLOAD, PBGET: a PB-100 series tape (not emulated: see not_emulated)."""
@@ -144,8 +173,15 @@ class CasioWords:
         raise not_emulated("DEFM: the PB-100 series' memory declaration")
 
     def rom_routine(self, number: float, *args) -> None:
-        """MODE n(...): a machine-code routine of the ROM (not emulated: see not_emulated)."""
-        raise not_emulated(f"MODE {int(number)}(...): a machine-code routine of the ROM")
+        """MODE n(...): a machine-code routine of the ROM.  The manual does not describe them.
+        MODE 33 is emulated as LIB1000 (the memory calculator) uses it after EXE: the text of
+        the cursor's line (from its first column through the rows it wrapped into, trailing
+        blanks dropped) becomes CALC$, which the program evaluates with VALF.  Any other
+        routine ends the run with one line (see not_emulated)."""
+        if int(number) != self.dialect.words.line_to_calc or self.display is None:
+            raise not_emulated(f"MODE {int(number)}(...): a machine-code routine of the ROM")
+        display = self.display
+        self.set_scalar("CALC$", display.logical_line_from(0, display.row()).rstrip(" "))
 
     def variable_list(self) -> None:
         """VARLIST: the names of the variables (as they were written, in the order of their
@@ -231,6 +267,46 @@ class CasioWords:
         code = _valf_code(text, self.dialect)
         namespace = self.namespaces.get(0) or next(iter(self.namespaces.values()))
         return eval(code, namespace)  # noqa: S307 - code the compiler generated from BASIC
+
+
+def _formula(text: str, dialect) -> tuple:
+    """A CAL-mode formula ``left=right`` (or an expression alone) read as (the left-hand
+    variable or None, its label, the right-hand expression, [(variable, label), ...] of the
+    right-hand side in the order they first appear).  A label is the variable's name with
+    the ``[...]`` comment written after it; the expression is read without the comments."""
+    from yaseer.basic.source import syntax_tree as ast
+    from yaseer.basic.source.parser import parse_statements
+
+    labels = {}
+    for match in _COMMENTED.finditer(text):
+        labels.setdefault(match.group(1), match.group(0))
+    plain = _COMMENTED.sub(r"\1", text)
+    left, equals, right = plain.partition("=")
+    if not equals or not _NAME.fullmatch(left.strip()):
+        left, right = None, plain
+    else:
+        left = left.strip()
+    try:
+        statements = parse_statements("X=" + right, dialect)
+    except BasicError:
+        raise BasicError("Syntax error", SYNTAX_ERROR) from None
+    if len(statements) != 1 or not isinstance(statements[0], ast.Let):
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+    names = dict.fromkeys(n.name for n in _nodes(statements[0].value) if isinstance(n, ast.Var))
+    asked = [(name, labels.get(name, name)) for name in names if not name.endswith("$")]
+    left_label = labels.get(left, left) if left is not None else ""
+    return left, left_label, right, asked
+
+
+# A variable name with the comment in brackets written after it (``x[cm]``), and a name alone.
+_COMMENTED = re.compile(r"([A-Za-z][A-Za-z0-9]*)(\[[^\]]*\])")
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*")
+
+
+def _number_answer(line: str, dialect) -> float | None:
+    """The number typed for a formula's variable (INPUT's reading of one number), or None."""
+    values = io_statements.parse_input(line, "n", dialect.largest_number, dialect.string_length)
+    return None if values is None else values[0]
 
 
 def _flat(array):

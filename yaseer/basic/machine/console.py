@@ -27,7 +27,8 @@ from yaseer.basic.machine.screen import OutputStream
 
 # Memory the FX-850P's programs read (Becker's library): the code of the key that ended
 # the last INPUT (EXE: 13; its programs test PEEK(&H65B)-13), and a byte that is 0 while no
-# shift key is held (PEEK(206) after INPUT$).  Every other address holds what POKE left, 0 at first.
+# shift key is held (PEEK(206) after INPUT$).  Every other address holds what POKE left, at
+# first the dialect's system bytes (casio.SYSTEM_MEMORY) or 0.
 # (POKE and DEFSEG are the casio words' statements; they share ``memory`` and ``segment``.)
 LAST_INPUT_KEY = 0x65B
 EMPTY_POLLS = 1000  # INKEY$ answers "" this many times at the end of the key stream, then Input past end
@@ -178,6 +179,7 @@ class Console:
         self.screens: list[str] = []  # the screens shown so far (see module docstring)
         self.screen_glyphs: list[dict] = []  # for each screen, the DEFCHR$ characters defined then
         self.memory: dict[int, int] = {}  # address -> the byte POKE left there
+        self.system_memory: dict[int, int] = {}  # address -> the byte there before any POKE
         self.segment = 0  # DEFSEG's segment: 0 at power-on
         self.last_input_key = 13
         self.user_characters: dict[int, str] = {}  # DEFCHR$: code -> its dots as hex digits
@@ -454,7 +456,7 @@ class Console:
         where = self._address(address)
         if where == LAST_INPUT_KEY:
             return float(self.last_input_key)
-        return float(self.memory.get(where, 0))
+        return float(self.memory.get(where, self.system_memory.get(where, 0)))
 
     def _address(self, address) -> int:
         offset = int(runtime.fix(address))

@@ -170,6 +170,13 @@ class InputOutput:
             elif item is NUMBER_THEN_COMMA:
                 comma_follows = self.dialect.comma_trims_number
             elif kind is Tab:
+                words = self.dialect.words
+                if words is not None and words.tab_from_zero:  # TAB.md: truncated, counted from 0
+                    column = int(item.column)
+                    if not 0 <= column <= 256:
+                        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+                    stream.tab(column + 1)  # (the stream counts columns from 1)
+                    continue
                 column = runtime.cint(item.column)
                 if column > 255 and stream.width is None:
                     raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
@@ -257,7 +264,7 @@ class InputOutput:
                 line = line[:limit]
             if not line and len(kinds) == 1 and self.dialect.empty_input_keeps:
                 return [None if kind == "n" else "" for kind in kinds]
-            values = _parse_input(line, kinds, self.dialect.largest_number, self.dialect.string_length)
+            values = parse_input(line, kinds, self.dialect.largest_number, self.dialect.string_length)
             if values is not None:
                 return values
             self.screen.write("?Redo from start\n")
@@ -425,7 +432,7 @@ def _as_number(value):
     return value
 
 
-def _parse_input(text: str, kinds: str, largest: float | None, longest: int):
+def parse_input(text: str, kinds: str, largest: float | None, longest: int):
     """The values of one INPUT line for targets of ``kinds`` ("n"/"s"), or None to redo
     (``largest``: see gwfunctions.read_number); a string over ``longest`` characters is
     String too long."""
