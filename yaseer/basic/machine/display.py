@@ -122,6 +122,17 @@ class Display:
         self.x = 0
         self._down()
 
+    def to_end_of_logical_line(self) -> None:
+        """The cursor to the last row of its logical line (the rows its text wrapped into),
+        where EXE leaves it before the line ends (INPUT.md item 8: the whole logical line is
+        input)."""
+        y = self.row()
+        while y + 1 < self.rows and self.joined[y + 1]:
+            y += 1
+        if y != self.y:
+            self.x, self.y = self.columns - 1, y
+            self._follow()
+
     def resize(self, columns: int) -> None:
         """A screen ``columns`` wide (WIDTH 40 / 80): blank, the cursor home."""
         self.columns = columns

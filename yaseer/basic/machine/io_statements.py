@@ -306,13 +306,21 @@ class InputOutput:
         line = self.dialect.charset.codes(line)  # keys typed as symbols: the machine's codes
         self.last_input_key = 13  # EXE (PEEK: console.LAST_INPUT_KEY)
         self._looked = False  # keys were taken: INKEY$ finds the next one only when it looks again
+        typed = line.rstrip("\r\n")
+        display = self.display if self.display is not None and self.display.drawn else None
         if self.input_stream is not None:
-            self.screen.write(line if line.endswith("\n") else line + "\n")
+            self.screen.write(typed)
+        elif display is not None:  # the keys typed show on the LCD too
+            display.write(typed)
+        if under and display is not None:
+            display.to_end_of_logical_line()  # EXE took the logical line: the next row is after it
+        if self.input_stream is not None:
+            self.screen.write("\n")
         else:
             self.screen.column = 0
-            if self.display is not None and self.display.drawn:  # the keys typed show on the LCD too
-                self.display.write(line if line.endswith("\n") else line + "\n")
-        line = line.rstrip("\r\n")
+            if display is not None:
+                display.write("\n")
+        line = typed
         return (line + under[len(line):]).rstrip(" ") if under else line
 
     def _text_under_cursor(self) -> str:
