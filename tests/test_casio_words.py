@@ -324,6 +324,23 @@ def test_an_array_beyond_the_variable_area_is_the_om_error():  # CLEAR.md 8192 b
     assert run_values(program) == [[1.0], [8192.0 - (1 + 4 + 8 * 501 + 2 + 1)]]  # ERR 1: OM
 
 
+def test_a_string_growing_beyond_the_variable_area_is_the_om_error():  # CLEAR.md 8192; part 6; OM
+    # part 6: a string variable takes (name + 4) + (length + 1) bytes, a number name + 12, the
+    # array B(1000) 5 + 8008 + 3: with A$ and I that leaves 8192 - 8016 - 7 - 13 = 156
+    # characters for A$; the 157th append is OM (ERR 1) and A$ keeps its 156
+    program = ('5 ON ERROR GOTO 100\n10 DIM B(1000): A$="": FOR I=1 TO 200: A$=A$+"X": NEXT\n'
+               '20 PRINT "NO": END\n100 PRINT LEN(A$); I; ERR; FRE 0: END')
+    assert run_values(program) == [[156.0, 157.0, 1.0, 0.0]]
+    # an element of a string array, INPUT and READ store strings the same way
+    program = ('5 ON ERROR GOTO 100\n10 DIM B(1000), C$(1): READ C$(0): INPUT C$(1)\n20 PRINT "NO": END\n'
+               '100 PRINT ERL; ERR; LEN(C$(0)); LEN(C$(1)): END\n200 DATA ' + "Y" * 150)
+    # C$(1): 2 + 4 + 2 elements + 2 = 10 bytes and its strings' lengths; I gone: 8192 - 8016 - 10 = 166
+    assert run_values(program, input_stream=io.StringIO("Z" * 20 + "\n"))[-1] == [10.0, 1.0, 150.0, 0.0]
+    # a shorter string in its place frees its bytes
+    assert run_values('10 DIM B(1000): A$=STR$(1E99): A$="": FOR I=1 TO 150: A$=A$+"X": NEXT: PRINT LEN(A$)') \
+        == [[150.0]]
+
+
 def test_verify_reads_a_saved_file_through(tmp_path):  # VERIFY.md: VERIFY "CAS0:TEST"
     program = '10 OPEN "CAS0:TEST" FOR OUTPUT AS #1: PRINT #1, "ABC": CLOSE\n20 VERIFY "CAS0:TEST": PRINT "OK"\n'
     assert run_text(program, files=tmp_path) == "OK\n"

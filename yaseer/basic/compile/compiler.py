@@ -79,6 +79,7 @@ class _NoWords:
     statements: dict = {}
     routine_calls: dict = {}
     reads_variables = writes_variables = sets_x_y = empty_statements = frozenset()
+    variable_area = None
     computed_restore = empty_on_targets = truncates = asks_each = False
     command_options = {"LOAD": "R", "SAVE": "AP", "RUN": "R"}  # GW-BASIC's LOAD ,R; SAVE ,A ,P; RUN ,R
 
@@ -117,6 +118,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.words = dialect.words or NO_WORDS  # the dialect's own words (dialects/casio.py)
         self.string_length = dialect.string_length  # the longest literal (characters)
         self.counts_strings = dialect.free_memory is not None  # strings take room (string_space.py)
+        self.strings_in_area = self.words.variable_area is not None  # casio: a stored string takes room (_sroom)
         self.own_functions = dict(self.words.functions, DEG=self.words.deg_function) if dialect.words else {}
         self.direct = direct
         self.trace = trace and not direct
@@ -220,6 +222,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             raise type_mismatch()
         if value_kind != "s":
             value_code = self.numbers.stored(value_code, value_kind, target_kind)
+        elif self.strings_in_area:  # the string must fit in the variable area (an element: counted whole)
+            old = scope.scalar(target.name, write=True) if isinstance(target, ast.Var) else "''"
+            value_code = f"_sroom({value_code}, {old})"
         if isinstance(target, ast.Var):
             name = scope.scalar(target.name, write=True)
             if check:  # checked before the store: a trapped Overflow leaves the variable as it was

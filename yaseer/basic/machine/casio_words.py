@@ -17,9 +17,9 @@ import re
 from yaseer.basic.arithmetic import formatting
 from yaseer.basic.arithmetic import casio_math
 from yaseer.basic.dialects import casio
-from yaseer.basic.machine import io_statements, runtime
+from yaseer.basic.machine import io_statements, runtime, string_space
 from yaseer.basic.errors import (
-    BasicError, OVERFLOW, PASSWORD_PROTECTED, SYNTAX_ERROR, TYPE_MISMATCH, not_emulated,
+    BasicError, OUT_OF_MEMORY, OVERFLOW, PASSWORD_PROTECTED, SYNTAX_ERROR, TYPE_MISMATCH, not_emulated,
 )
 
 ANGLE_UNITS = ("DEG", "RAD", "GRA")  # ANGLE 0, 1, 2 (ANGLE.md)
@@ -78,6 +78,7 @@ class CasioWords:
         self.password_set: str | None = None
         self.print_echo = False  # MODE 7: PRINT also prints on the printer
         self.last_ran = 0.5
+        self.string_slack = 0  # bytes of the variable area surely free for strings (string_room)
         self.err_codes = self.dialect.words.err_values if self.dialect.words else {}
         if self.dialect.words:
             self.system_memory = self.dialect.words.system_memory
@@ -227,12 +228,31 @@ class CasioWords:
         used += len(self.programs) + (sum(len(r) + 1 for r in bank.records) if bank else 0)
         return float(max(area - used, 0))
 
-    def variable_bytes(self) -> int:
+    def string_room(self, new: str, old: str) -> str:
+        """``_sroom``: a string ``new`` stored in place of ``old`` (an array element's old
+        text counts as ""), returned; when the variables would then take more than the
+        variable area: Out of memory (OM), the variable unchanged.  Part 6 counts a string's
+        length + 1 (CLEAR.md, FRE 2: 8192 bytes).  ``string_slack`` is the bytes surely still
+        free: each growth takes from it and only when it runs out are the variables counted
+        (with the running block's locals, not stored back yet), so a loop of small strings
+        counts them rarely."""
+        grown = len(new) - len(old)
+        if grown > 0:
+            self.string_slack -= grown
+            if self.string_slack < 0:
+                free = VARIABLE_AREA - self.variable_bytes(string_space.block_locals()) - grown
+                self.string_slack = max(free, 0)
+                if free < 0:
+                    raise BasicError("Out of memory", OUT_OF_MEMORY)
+        return new
+
+    def variable_bytes(self, block_locals: dict | None = None) -> int:
         """The bytes the variables take in the variable area (part 6: a number name + 12, a
         string name + 4 and its length + 1; an array name + 4, 8 a number or 1 a string (and
-        its length) an element, 2 a dimension, and 1 more for numbers)."""
+        its length) an element, 2 a dimension, and 1 more for numbers); ``block_locals``: the
+        running block's scalars, not stored back yet."""
         used = 0
-        for name, value in self.scalars.items():
+        for name, value in self.scalars_with(block_locals).items():
             used += len(name) + (4 + len(value) + 1 if name.endswith("$") else 12)
         for name, dims in self.array_dims.items():
             elements = 1

@@ -433,7 +433,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         if self.dialect.words:  # the casio functions (dialects/casio.py)
             ns.update(casio_math.RUNTIME)
             ns.update(casio_words.OPERATORS)
-            ns.update({"_ran": self.ran, "_valf": self.valf, "_fre0": self.free_area})
+            ns.update({"_ran": self.ran, "_valf": self.valf, "_fre0": self.free_area, "_sroom": self.string_room})
         ns.update(self._trig_functions())
         if self.dialect.arithmetic == "decimal":
             from yaseer.basic.arithmetic import decimal_arith  # here: only --arith decimal loads the decimal module

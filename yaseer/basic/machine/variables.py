@@ -97,6 +97,7 @@ class Variables:
         FRE counts them: casio_words.variable_bytes) is Out of memory (the Casio's OM error)
         and is not made; ``old``: the array, its sizes and the budget before (None: none)."""
         words = self.dialect.words
+        self.string_slack = 0  # the strings' room is counted afresh at the next string stored
         if words is None or words.variable_area is None or self.variable_bytes() <= words.variable_area:
             return
         array, dims, elements = old if old is not None else (None, None, None)
@@ -151,14 +152,20 @@ class Variables:
             return float(free - self.string_space.garbage(strings))
         return float(8 * (MAX_TOTAL_ELEMENTS - self.array_elements))
 
-    def measure_memory(self, block_locals: dict) -> tuple[int, int]:
-        """(GW's free bytes without garbage, the bytes its strings hold), the running block's
-        ``block_locals`` (its scalars' Python locals, not yet stored back) over the scalars."""
+    def scalars_with(self, block_locals: dict) -> dict:
+        """The scalars with the running block's ``block_locals`` (its scalars' Python locals,
+        not yet stored back) over them."""
         scalars = self.scalars
         if block_locals:
             names = {local_name(name): name for name in scalars}
             scalars = dict(scalars)
             scalars.update((names[local], value) for local, value in block_locals.items() if local in names)
+        return scalars
+
+    def measure_memory(self, block_locals: dict) -> tuple[int, int]:
+        """(GW's free bytes without garbage, the bytes its strings hold), the running block's
+        ``block_locals`` (its scalars' Python locals, not yet stored back) over the scalars."""
+        scalars = self.scalars_with(block_locals)
         return memory_model.free_and_strings(self.dialect.free_memory, self.programs.get(0, {}), scalars,
                                              self.arrays, self.array_dims, self.fns)
 
@@ -168,6 +175,7 @@ class Variables:
         its RESUME is then RESUME without error, as PC-BASIC shows)."""
         for name in self.scalars:
             self.scalars[name] = initial_value(name)
+        self.string_slack = 0
         self.arrays.clear()
         self.array_dims.clear()
         self.array_elements = 0
