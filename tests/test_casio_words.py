@@ -456,6 +456,20 @@ def test_list_in_a_program_lists_its_range_then_stands_by():  # LIST.md items 3,
     assert run_text("10 LIST -10\n20 END") == "10 LIST -10\n"
 
 
+def test_list_period_in_a_program_lists_the_line_it_runs():  # LIST.md item 4: the line executed last
+    assert run_text('10 PRINT 1\n20 PRINT 2: LIST .: PRINT 3\n30 PRINT 4') == " 1 \n 2 \n20 PRINT 2:LIST .:PRINT 3\n"
+    assert run_text('10 LLIST .\n20 END') == "10 LLIST .\n"  # no --printer: beside the screen
+
+
+def test_edit_in_a_program_shows_the_program_from_its_line():  # EDIT.md items 1-3
+    # the edit mode displays the program from the line (or the first line above it), then
+    # waits for keys: the run ends there
+    program = "10 PRINT 1\n20 EDIT 25\n30 PRINT 3\n40 END"
+    assert run_text(program) == " 1 \n30 PRINT 3\n40 END\n"
+    assert run_text("10 EDIT .\n20 END") == "10 EDIT .\n20 END\n"  # the line running
+    assert error_of("10 EDIT") == "Syntax error in 10"  # (yaseer: the line number or the period is needed)
+
+
 def test_save_and_load_in_a_program_then_stand_by(tmp_path):  # SAVE_SAVE_ALL.md, LOAD_LOAD_ALL.md
     # the manual's sample file names: SAVE "CAS0:TEST"; LOAD "DEMO1"; ,A the ASCII format
     assert run_text('10 PRINT "SAVED"\n20 SAVE "CAS0:TEST",A\n30 PRINT "NOT REACHED"', files=tmp_path) == "SAVED\n"

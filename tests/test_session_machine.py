@@ -225,3 +225,35 @@ def test_list_all_and_new_all_cover_every_program_area(session):
     after(session, "NEW ALL")
     assert after(session, "LIST ALL") == ""
     assert after(session, "PRINT A") == " 0 \n"
+
+
+def test_list_and_edit_period_show_the_line_most_recently_handled(session):
+    # LIST.md item 4, EDIT.md item 2: "." is the line most recently written, edited or
+    # executed; after an error, the line in which the error was generated
+    after(session, "10 PRINT 1", "20 X = 1/0", "30 PRINT 3")
+    assert after(session, "LIST .") == "30 PRINT 3\n"  # written last
+    assert after(session, "RUN") == " 1 \nDivision by zero in 20\n"
+    assert after(session, "LIST .") == "20 X=1/0\n"  # the error's line
+    after(session, "EDIT 10")
+    assert after(session, "LIST .") == "10 PRINT 1\n"  # edited last
+    after(session, "20 END")
+    assert after(session, "RUN", "LIST .") == " 1 \n20 END\n"  # executed last
+    session.handle("EDIT .")
+    assert session.edit_text == "20 END"
+
+
+def test_a_program_that_loads_another_leaves_it_in_the_session(tmp_path):
+    # LOAD_LOAD_ALL.md: LOAD in a program replaces the program, then command standby: the
+    # session's LIST and RUN see the program the machine now holds (gw: NEW likewise)
+    (tmp_path / "NEXT.BAS").write_text("10 PRINT 2\n")
+    shown = []
+    casio = Session(write=shown.append, engine=MachineEngine(shown.append, files=tmp_path), directory=tmp_path)
+    for line in ('10 LOAD "NEXT"', "RUN", "LIST", "RUN"):
+        casio.handle(line)
+    assert "".join(shown) == "10 PRINT 2\n 2 \n"
+    shown.clear()
+    gw = Session(write=shown.append, engine=MachineEngine(shown.append, dialect="gw"), directory=tmp_path,
+                 dialect="gw")
+    for line in ("10 PRINT 7", "20 NEW", "RUN", "LIST"):
+        gw.handle(line)
+    assert "".join(shown) == " 7 \n"

@@ -206,6 +206,7 @@ class Session:
     printer: Callable[[str], object] | None = None
     dialect: str = "casio"
     auto: tuple[int, int] | None = None  # AUTO: (number offered next, step)
+    current_line: int | None = None  # the line most recently written, edited or run (LIST ., EDIT .)
     _auto_step: int = 10
     _can_continue: bool = False
 
@@ -264,6 +265,7 @@ class Session:
         """Type ``number text``: store (or, with no text, delete) a line."""
         if text.strip():
             self.program[number] = text
+            self.current_line = number
             self._show_entry_messages({number: text})
         else:
             self.program.pop(number, None)
@@ -307,7 +309,7 @@ class Session:
                 for number in sorted(self.programs[area]):
                     write(f"{number} {detokenize(self.programs[area][number], self._dialect())}\n")
             return
-        first, last = parse_range(argument)
+        first, last = self._current_range(argument) or parse_range(argument)
         if not self.program and self.area in LIBRARY_AREAS:
             from yaseer.library_text import LIBRARY_TEXT
 
@@ -357,13 +359,26 @@ class Session:
         self._can_continue = False
 
     def command_edit(self, argument: str) -> None:
-        """EDIT n: put line n up for editing as the next input."""
-        if not argument.isdigit():
+        """EDIT n (casio also EDIT .): put line n up for editing as the next input."""
+        current = self._current_range(argument)
+        if current is None and not argument.isdigit():
             raise BasicError("Syntax error", SYNTAX_ERROR)
-        number = int(argument)
+        number = current[0] if current is not None else int(argument)
         if number not in self.program:
             raise BasicError("Undefined line number", UNDEFINED_LINE)
+        self.current_line = number
         self.edit_text = self.listed(number)
+
+    def _current_range(self, argument: str) -> tuple[int, int] | None:
+        """``.`` where the dialect reads it (casio: LIST.md item 4, EDIT.md item 2): the line
+        most recently written, edited or run (after an error, the error's line) as a range
+        of one line; None for any other argument.  No such line yet: Syntax error."""
+        words = self._dialect().words
+        if argument.strip() != "." or words is None or not words.current_line_period:
+            return None
+        if self.current_line is None:
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return self.current_line, self.current_line
 
     def _dialect(self):
         from yaseer.basic.dialects.dialect import get_dialect
@@ -469,13 +484,30 @@ class Session:
         try:
             action()
         except BasicError as error:
+            self._take_back_programs()
             if in_program:
                 self._can_continue = error.code == BREAK and error.line is not None
+            if error.line is not None:
+                self.current_line = error.line
             self.write(f"{error}\n")
             if error.code == SYNTAX_ERROR and error.area == self.area and error.line in self.program:
                 self.edit_text = self.listed(error.line)  # GW-BASIC offers the line for editing
             return
+        self._take_back_programs()
+        last = getattr(self.engine, "last_line", None)
+        if in_program and last is not None:
+            self.current_line = last
         if in_program:
+            self._can_continue = False
+
+    def _take_back_programs(self) -> None:
+        """The areas a program changed (its LOAD, NEW, DELETE, RENUM, LOAD ALL) become the
+        session's: LIST then shows what the machine holds."""
+        changed = getattr(self.engine, "changed_programs", None)
+        if changed is None:
+            return
+        for area, lines in changed().items():
+            self.programs[area] = dict(lines)
             self._can_continue = False
 
 
@@ -614,6 +646,24 @@ class MachineEngine:
                 from yaseer import binding
 
                 binding.install(machine)
+        self._given = {area: dict(lines) for area, lines in machine.programs.items()}
+
+    def changed_programs(self) -> dict[int, Program]:
+        """The areas whose lines the machine changed since the session gave them (a
+        program's LOAD, NEW, ...): area -> its lines now (empty when it has none)."""
+        if self._machine is None:
+            return {}
+        held = self._machine.programs
+        given = getattr(self, "_given", {})
+        changed = {area: dict(held.get(area, {})) for area in set(held) | set(given)
+                   if held.get(area, {}) != given.get(area, {})}
+        self._given = {area: dict(lines) for area, lines in held.items()}
+        return changed
+
+    @property
+    def last_line(self) -> int | None:
+        """The line the machine ran last (None before any run)."""
+        return None if self._machine is None else self._machine.line
 
     def _finish(self, outcome: str, direct: bool = False) -> None:
         if outcome == "stop":

@@ -276,6 +276,8 @@ class InputOutputCompiler:
         if stmt.option is not None and stmt.name in options and stmt.option not in options[stmt.name]:
             raise syntax_error()
         argument = stmt.argument
+        if argument == ast.CURRENT_LINE:  # LIST . / EDIT . in a program: its own line, the one executed last
+            argument = self.line if stmt.name == "EDIT" else (self.line, self.line)
         if argument is not None and not isinstance(argument, (int, tuple)):
             argument = self.string(argument, scope)
         else:

@@ -141,7 +141,13 @@ RESERVED_ONLY = ("CSR", "KEY", "MID", "VAC", "VAR", "AS", "OUT", "PUT", "CALC")
 # files closed, then command standby: the run ends); NEW [ALL] and RUN are refused with
 # the FC error (NEW.md item 7, RUN.md item 5: "cannot be used within a program"; the FC
 # error's meaning 2, "illegal command used in ... program mode").  ALL: every program area.
-PROGRAM_COMMANDS = ("LIST", "LLIST", "SAVE", "LOAD", "NEW", "RUN", "ALL")
+PROGRAM_COMMANDS = ("LIST", "LLIST", "SAVE", "LOAD", "NEW", "RUN", "ALL", "EDIT")
+# LIST ., LLIST . and EDIT .: a period for the line most recently handled (LIST.md item 4,
+# EDIT.md item 2).  EDIT n in a program (EDIT.md: the edit mode "displays the program from the
+# specified line number", or the first line above it) shows the lines from there as LIST does,
+# then the run ends (the edit mode waits for keys; BRK leaves it).
+CURRENT_LINE_PERIOD = True
+EDIT_LISTS_FROM = True
 REFUSED_COMMANDS = ("NEW", "RUN")
 COMMAND_OPTIONS = {"LOAD": "A", "SAVE": "A", "RUN": ""}
 # The variable area's bytes (CLEAR.md: 8192 on the FX-880P and an FX-850P of 32 KB; FRE 2
@@ -206,6 +212,8 @@ class Words:
     reserved_variables = RESERVED_VARIABLES
     open_words = OPEN_WORDS
     refused_commands = REFUSED_COMMANDS
+    current_line_period = CURRENT_LINE_PERIOD
+    edit_lists_from = EDIT_LISTS_FROM
     command_options = COMMAND_OPTIONS
     variable_area = VARIABLE_AREA
     system_memory = SYSTEM_MEMORY

@@ -104,6 +104,8 @@ class Chaining:
             if not doomed or (first is not None and first not in program and first == last):
                 raise error_for(ILLEGAL_FUNCTION_CALL)
             raise ChainTo({n: t for n, t in program.items() if n not in doomed}, False, None, True, None, False)
+        elif name == "EDIT" and words is not None and words.edit_lists_from:
+            self._list_lines(program, (argument, None), 0)  # the edit mode shows the program from there
         elif name == "EDIT" and argument not in program:
             raise error_for(UNDEFINED_LINE)
         elif name == "RENUM":

@@ -364,6 +364,8 @@ class _ToAst:
 
     def list_stmt(self, c):
         c, everything = _without_all(c)
+        if len(c) > 1 and isinstance(c[1], Token):  # LIST . (the Casio's PERIOD)
+            return ast.Command(c[0].value, ast.CURRENT_LINE)
         return ast.Command(c[0].value, c[1] if len(c) > 1 else (None, None), everything=everything)
 
     def load_stmt(self, c):
@@ -382,7 +384,7 @@ class _ToAst:
         return ast.Command("DELETE", c[1])
 
     def edit_stmt(self, c):
-        return ast.Command("EDIT", _line_number(c[1]))
+        return ast.Command("EDIT", ast.CURRENT_LINE if c[1].type == "PERIOD" else _line_number(c[1]))
 
     def renum_stmt(self, c):
         """RENUM [new][, [old][, step]]: (new, old, step), None where left out."""

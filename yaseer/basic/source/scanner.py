@@ -505,6 +505,9 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
         elif ch == "?":
             i += 1
             yield "PRINT", "PRINT", start, i
+        elif ch == "." and dialect.words and dialect.words.current_line_period:
+            i += 1
+            yield "PERIOD", ".", start, i  # LIST . / EDIT .: the current line (the grammar places it)
         else:
             raise _syntax_error()
 

@@ -358,10 +358,16 @@ class Chain:
     run: bool = True
 
 
+# The period of LIST . and EDIT . (the Casio: LIST.md item 4, EDIT.md item 2): the line most
+# recently handled (written, edited or executed; after an error, the error's line).
+CURRENT_LINE = (".",)
+
+
 @_node
 class Command:
     """A command run by a program: ``name`` RUN LIST LLIST LOAD SAVE NEW SYSTEM DELETE EDIT
-    KEY; ``argument`` its file name expression, line or line range; ``option`` the
+    KEY; ``argument`` its file name expression, line, line range or :data:`CURRENT_LINE`
+    (the Casio's ``LIST .``, ``EDIT .``); ``option`` the
     letter after the comma (``,R`` ``,A`` ``,P``) or KEY's ON/OFF; ``everything`` the
     Casio's ALL (NEW ALL, LIST ALL, SAVE ALL, LOAD ALL: every program area)."""
     name: str
