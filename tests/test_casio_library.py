@@ -447,3 +447,39 @@ def test_interval_estimates(program, keys, expected):
     # shown to 4 significant digits (the programs' ROUND)
     low, high = interval(program, keys)
     assert low == pytest.approx(expected[0], rel=SHOWN) and high == pytest.approx(expected[1], rel=SHOWN)
+
+
+# The metric conversions (LIB5950-5980) leave for the CAL mode with EXE, which asks for the
+# value and shows the converted one.  The units' definitions (international yard and pound,
+# 1959: the inch 2.54 cm, the foot 12 inches, the yard 3 feet, the mile 1760 yards, the pound
+# 453.59237 g, the ounce 1/16 pound; the acre 4840 square yards) give the exact factor; the
+# programs' factors have 6 significant digits.
+INCH, FOOT, YARD = Fraction(254, 100), Fraction(254 * 12, 100), Fraction(254 * 36, 100)  # in cm
+MILE, POUND = 1760 * YARD, Fraction(45359237, 100000)  # cm, g
+CONVERSIONS = [  # program, the record (1 the first shown), value typed, label of the result, exact value
+    ("LIB5950", 2, 10, r"X\[in\]=", 10 / INCH),
+    ("LIB5950", 5, 100000, r"X\[mile\]=", 100000 / MILE),
+    ("LIB5950", 14, 36, r"X\[yd\]=", 36 * INCH / YARD),
+    ("LIB5950", 26, 1, r"X\[cm\]=", MILE),
+    ("LIB5960", 2, 10000, r"X\[acre\]=", 10000 / (4840 * (YARD / 100) ** 2)),
+    ("LIB5970", 2, 1000, r"X\[in³\]=", 1000 / INCH ** 3),
+    ("LIB5980", 2, 100, r"X\[oz\]=", 100 / (POUND / 16)),
+    ("LIB5980", 3, 1000, r"X\[lb\]=", 1000 / POUND),
+]
+
+
+@pytest.mark.parametrize("program, record, typed, label, exact", CONVERSIONS,
+                         ids=[f"{c[0]}-{c[1]}" for c in CONVERSIONS])
+def test_metric_conversions_in_the_cal_mode(program, record, typed, label, exact):
+    keys = DOWN * (record - 1) + "\n" + f"{typed}\n"
+    assert first(program, keys, label) == pytest.approx(float(exact), rel=2e-6)
+
+
+def test_the_memory_calculator_evaluates_what_is_typed():
+    # LIB1000: an expression typed, EXE shows its value, M+ (the cursor-right key) adds it to
+    # the memory; exact in fractions
+    last = screens("LIB1000", "7*6-5/4\n")[-1]
+    assert float(last.splitlines()[1].split()[0]) == float(Fraction(7 * 6) - Fraction(5, 4))
+    last = screens("LIB1000", "2^10/8\x1c3*7\x1c")[-1]
+    values = [float(v) for v in last.splitlines()[1].split()]
+    assert values == [21.0, float(Fraction(2 ** 10, 8) + 21)]  # the last value; the memory 128 + 21
