@@ -295,7 +295,6 @@ def _formula(text: str, dialect) -> tuple:
     right-hand side in the order they first appear).  A label is the variable's name with
     the ``[...]`` comment written after it; the expression is read without the comments."""
     from yaseer.basic.source import syntax_tree as ast
-    from yaseer.basic.source.parser import parse_statements
 
     labels = {}
     for match in _COMMENTED.finditer(text):
@@ -306,13 +305,7 @@ def _formula(text: str, dialect) -> tuple:
         left, right = None, plain
     else:
         left = left.strip()
-    try:
-        statements = parse_statements("X=" + right, dialect)
-    except BasicError:
-        raise BasicError("Syntax error", SYNTAX_ERROR) from None
-    if len(statements) != 1 or not isinstance(statements[0], ast.Let):
-        raise BasicError("Syntax error", SYNTAX_ERROR)
-    names = dict.fromkeys(n.name for n in _nodes(statements[0].value) if isinstance(n, ast.Var))
+    names = dict.fromkeys(n.name for n in _nodes(_expression(right, dialect)) if isinstance(n, ast.Var))
     asked = [(name, labels.get(name, name)) for name in names if not name.endswith("$")]
     left_label = labels.get(left, left) if left is not None else ""
     return left, left_label, right, asked
@@ -321,6 +314,21 @@ def _formula(text: str, dialect) -> tuple:
 # A variable name with the comment in brackets written after it (``x[cm]``), and a name alone.
 _COMMENTED = re.compile(r"([A-Za-z][A-Za-z0-9]*)(\[[^\]]*\])")
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*")
+
+
+def _expression(text: str, dialect):
+    """The syntax tree of the BASIC expression ``text`` (read as the value of an assignment);
+    anything else is a Syntax error."""
+    from yaseer.basic.source import syntax_tree as ast
+    from yaseer.basic.source.parser import parse_statements
+
+    try:
+        statements = parse_statements("X=" + text, dialect)
+    except BasicError:
+        raise BasicError("Syntax error", SYNTAX_ERROR) from None
+    if len(statements) != 1 or not isinstance(statements[0], ast.Let):
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+    return statements[0].value
 
 
 def _number_answer(line: str, dialect) -> float | None:
@@ -344,15 +352,8 @@ def _valf_code(text: str, dialect) -> str:
     from yaseer.basic.source import syntax_tree as ast
     from yaseer.basic.compile.expressions import FnScope
     from yaseer.basic.compile.compiler import AreaCompiler
-    from yaseer.basic.source.parser import parse_statements
 
-    try:
-        statements = parse_statements("X=" + text, dialect)
-    except BasicError:
-        raise BasicError("Syntax error", SYNTAX_ERROR) from None
-    if len(statements) != 1 or not isinstance(statements[0], ast.Let):
-        raise BasicError("Syntax error", SYNTAX_ERROR)
-    node = statements[0].value
+    node = _expression(text, dialect)
     if any(isinstance(n, ast.Call) and n.name == "VALF" for n in _nodes(node)):
         raise casio_math.illegal()
     compiler = AreaCompiler([], direct=True, dialect=dialect)
