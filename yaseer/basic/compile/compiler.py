@@ -223,8 +223,11 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         if value_kind != "s":
             value_code = self.numbers.stored(value_code, value_kind, target_kind)
         elif self.strings_in_area:  # the string must fit in the variable area (an element: counted whole)
-            old = scope.scalar(target.name, write=True) if isinstance(target, ast.Var) else "''"
-            value_code = f"_sroom({value_code}, {old})"
+            if isinstance(target, ast.Var):  # no longer than the old text: nothing to count (no call)
+                old = scope.scalar(target.name, write=True)
+                value_code = f"(_sv if len(_sv := {value_code}) <= len({old}) else _sroom(_sv, {old}))"
+            else:
+                value_code = f"_sroom({value_code}, '')"
         if isinstance(target, ast.Var):
             name = scope.scalar(target.name, write=True)
             if check:  # checked before the store: a trapped Overflow leaves the variable as it was
