@@ -261,6 +261,9 @@ def test_calcjmp_executes_the_formula_of_calc_in_the_cal_mode():
     assert result.screens[:4] == ["R[cm]?\n\n", "R[cm]?2\nH?\n", "H?1\nS[cm2]= 14.56637061\n", "R[cm]?\n\n"]
     assert result.screens[4:] == ["R[cm]?3\nH?\n", "H?\nS[cm2]= 31.27433388\n"]  # PI*4+2, PI*9+3 (H kept)
     assert result.text.count("NOT HERE") == 0
+    # a formula without "=" shows its value alone; a variable the program never named starts at 0
+    result = yaseer.run('10 CALC$="2*A+B": A=1: CALCJMP', input="3\n\n")
+    assert result.screens == ["A?\n\n", "A?3\nB?\n", "B?\n 6\n"]
 
 
 def test_mode_33_copies_the_cursors_line_into_calc():

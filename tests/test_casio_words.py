@@ -349,6 +349,7 @@ def test_verify_reads_a_saved_file_through(tmp_path):  # VERIFY.md: VERIFY "CAS0
 
 def test_calc_dollar_holds_a_formula():  # the library's CALC$ (LIB1000: VALF(CALC$); LIB5950: CALC$=s$)
     assert run_values('10 CALC$="2*X+1": X=4: PRINT VALF(CALC$); LEN(CALC$)\n') == [[9.0, 5.0]]
+    assert run_values('10 PRINT VALF("Q+1")\n') == [[1.0]]  # a variable the program never named is 0
 
 
 @pytest.mark.parametrize("statement, message", [

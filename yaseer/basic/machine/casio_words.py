@@ -17,6 +17,7 @@ import re
 from yaseer.basic.arithmetic import formatting
 from yaseer.basic.arithmetic import casio_math
 from yaseer.basic.dialects import casio
+from yaseer.basic.compile.number_models import initial_value
 from yaseer.basic.machine import io_statements, runtime, string_space
 from yaseer.basic.errors import (
     BasicError, OUT_OF_MEMORY, OVERFLOW, PASSWORD_PROTECTED, SYNTAX_ERROR, TYPE_MISMATCH, not_emulated,
@@ -146,8 +147,7 @@ class CasioWords:
         storage) is empty in its text: the comment and the repetition follow the library's
         use (LIB5950-5980: formulas such as ``X[in]=.393701*x[cm]``)."""
         left, left_label, right, asked = _formula(self.scalar("CALC$"), self.dialect)
-        code = _valf_code(right, self.dialect)
-        namespace = self.namespaces.get(0) or next(iter(self.namespaces.values()))
+        compiled = _valf_code(right, self.dialect)
         while True:
             self.clear_screen()
             for name, label in asked:
@@ -159,10 +159,10 @@ class CasioWords:
                     if values is not None:
                         self.set_scalar(name, values)
                         break
-            value = eval(code, namespace)  # noqa: S307 - code the compiler generated from BASIC
+            value = self._evaluated(compiled)
             if left is not None:
                 self.set_scalar(left, value)
-            self.print_items(0, (left_label + "=", value), False)
+            self.print_items(0, ((left_label + "=",) if left is not None else ()) + (value,), False)
             self._read_line("")  # the result stays until EXE, which executes the formula again
 
     def pb_tape(self, name: str = "") -> None:
@@ -284,7 +284,15 @@ class CasioWords:
     def valf(self, text: str) -> float:
         """VALF(s$): the numeric expression ``s$`` evaluated with the variables as they are
         (VALF.md); a VALF inside it is Illegal function call, a string Type mismatch."""
-        code = _valf_code(text, self.dialect)
+        return self._evaluated(_valf_code(text, self.dialect))
+
+    def _evaluated(self, compiled: tuple) -> float:
+        """The value of ``compiled`` (:func:`_valf_code`'s code and the scalars it reads) with
+        the variables as they are; a variable the program never named is made (0, or "")."""
+        code, names = compiled
+        for name in names:
+            if name not in self.scalars:
+                self.scalars[name] = initial_value(name)
         namespace = self.namespaces.get(0) or next(iter(self.namespaces.values()))
         return eval(code, namespace)  # noqa: S307 - code the compiler generated from BASIC
 
@@ -347,8 +355,9 @@ def _flat(array):
 
 
 @functools.lru_cache(maxsize=256)
-def _valf_code(text: str, dialect) -> str:
-    """The Python expression VALF evaluates for the BASIC expression ``text``."""
+def _valf_code(text: str, dialect) -> tuple[str, tuple[str, ...]]:
+    """The Python expression VALF evaluates for the BASIC expression ``text``, and the
+    names of the scalars it reads."""
     from yaseer.basic.source import syntax_tree as ast
     from yaseer.basic.compile.expressions import FnScope
     from yaseer.basic.compile.compiler import AreaCompiler
@@ -360,7 +369,7 @@ def _valf_code(text: str, dialect) -> str:
     code, kind = compiler.expr(node, FnScope(compiler, []))
     if kind == "s":
         raise BasicError("Type mismatch", TYPE_MISMATCH)
-    return code
+    return code, tuple(sorted(compiler.scalars))
 
 
 def _nodes(node):
