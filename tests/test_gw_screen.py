@@ -75,6 +75,30 @@ def test_locate_without_a_row_after_a_full_row_goes_to_the_next_row():
     assert rows(machine)[4] == "=" * 80 and rows(machine)[5] == "  X"
 
 
+def test_locate_without_a_column_after_a_full_row_takes_the_last_column():
+    """A missing column is SCNDRV.ASM SCNPOS's: the cursor's own, a full row's waiting wrap
+    (CSRX = LINLEN+1) as the last column; so an item that no longer fits starts the next row
+    (PC-BASIC 2.0.8 agrees)."""
+    machine, _ = run('10 CLS: PRINT STRING$(80, "*");\n20 LOCATE 10: PRINT "AB"; CSRLIN\n')
+    assert rows(machine)[9] == "" and rows(machine)[10] == "AB 11"
+    # SCNLOC sets a column that no longer waits to wrap: CSRLIN is the row itself (GTLINE), and a
+    # character still fits in the last column (PC-BASIC 2.0.8 keeps the full row's waiting wrap)
+    machine, _ = run('10 CLS: PRINT STRING$(80, "*");\n20 LOCATE 10: R = CSRLIN: LOCATE 7, 80: PRINT "A"\n'
+                     '30 PRINT R\n')
+    assert rows(machine)[6] == " " * 79 + "A" and rows(machine)[8] == " 10"
+
+
+def test_cursor_codes_after_a_full_row_start_from_past_the_last_column():
+    """SCNDRV.ASM CTLDSP hands the cursor codes the true column (CSRX, LINLEN+1 after a full
+    row): CSRADV steps back from past the edge and moves to the first column of the next row,
+    CSRUP keeps the column past the edge on the row above.  (PC-BASIC 2.0.8 goes one column
+    further in both: tests/test_differential_gw_screen.py leaves these programs out.)"""
+    machine, _ = run('10 CLS: PRINT STRING$(80, "*"); CHR$(28); "A";\n')
+    assert rows(machine)[1] == "A"
+    machine, _ = run('10 CLS: PRINT STRING$(160, "#"); CHR$(30); CHR$(28); STRING$(80, "=");\n')
+    assert rows(machine)[0] == "#" * 80 and rows(machine)[1] == "=" * 80 and rows(machine)[2] == ""
+
+
 def test_cursor_codes_move_within_the_window():
     """CHR$(28..31) move right, left, up, down without scrolling; CHR$(11) homes, CHR$(12)
     clears the window (SCNDRV.ASM WCSADV, WCSREG, WCSUP, WCSDWN, WHOME); CHR$(0) and CHR$(8)

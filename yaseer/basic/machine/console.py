@@ -214,7 +214,8 @@ class Console:
     def locate(self, args: tuple) -> None:
         """LOCATE: the cursor to a cell of the screen (the dialect's rules: the Casio's
         0-based ``x, y``; GW's 1-based ``row, column`` with the cursor's visibility and
-        shape after them, GWSTS.ASM LOCATE).  Outside the screen (GW: also row 25 while
+        shape after them, GWSTS.ASM LOCATE; an omitted row is CSRLIN's, GTLINE, an omitted column
+        the cursor's own).  Outside the screen (GW: also row 25 while
         the keys are shown, outside a VIEW PRINT window as PC-BASIC 2.0.8 checks) is
         Illegal function call."""
         display = self._screen_model()
@@ -224,7 +225,10 @@ class Console:
         row, column = (first, second) if rules.row_first else (second, first)
         origin = rules.origin
         row = display.row() if row is None else row - origin
-        column = display.column() if column is None else column - origin
+        if column is None:  # the cursor's column, a full row's waiting wrap as the last (SCNDRV.ASM SCNPOS)
+            column = min(display.x, display.columns - 1)
+        else:
+            column -= origin
         top, bottom = (display.view_top, display.view_bottom) if display.view_set else (0, display.rows - 1)
         if display.keys_on and display.keys:
             bottom = min(bottom, display.rows - 2)
