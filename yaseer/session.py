@@ -292,11 +292,11 @@ class Session:
         following = number + step
         self.auto = (following, step) if following <= MAX_LINE_NUMBER else None
 
-    def listed(self, number: int) -> str:
-        """Line ``number`` of the current area as LIST shows it (``20 FOR J=1 TO 3``)."""
-        from yaseer.basic.dialects.dialect import get_dialect
-
-        return f"{number} {detokenize(self.program[number], get_dialect(self.dialect))}"
+    def listed(self, number: int, area: int | None = None) -> str:
+        """Line ``number`` of the current area (or of program area ``area``) as LIST shows
+        it (``20 FOR J=1 TO 3``)."""
+        lines = self.program if area is None else self.programs[area]
+        return f"{number} {detokenize(lines[number], self._dialect())}"
 
     # -- commands --
 
@@ -307,7 +307,7 @@ class Session:
             for area in sorted(a for a, lines in self.programs.items() if lines):
                 write(f"P{area}\n")
                 for number in sorted(self.programs[area]):
-                    write(f"{number} {detokenize(self.programs[area][number], self._dialect())}\n")
+                    write(self.listed(number, area) + "\n")
             return
         first, last = self._current_range(argument) or parse_range(argument)
         if not self.program and self.area in LIBRARY_AREAS:
