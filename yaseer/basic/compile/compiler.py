@@ -27,6 +27,8 @@ while a program runs; the plain variant carries no cost for tracing.
 
 from __future__ import annotations
 
+import re
+
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.blocks import data_statements, flatten, plan, splits, types_fixed, walk_statements
 from yaseer.basic.compile.expressions import (
@@ -110,6 +112,11 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
                  dynamic_loops=(), dialect=CASIO, def_types=None):
         self.area = area
         self.numbers = number_model(dialect, def_types)
+        # the binade caches' names differ between the variants run in one namespace (TRON, DEF types)
+        salt = "t" if trace else ""
+        if def_types is not None:
+            salt += "v" + variant_function("", def_types)
+        self.numbers.site_salt = salt
         self.program_areas = dialect.program_areas  # GOSUB PROG n, #n, "file:label"
         self.library_forms = dialect.library_forms  # THEN *
         self.locate_arguments = dialect.screen.locate_arguments  # LOCATE's (fewest, most)
@@ -744,6 +751,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit("raise _END")
         pieces = [(None, text) for text in self.prelude]
         pieces += [(b.first_line, self.block_source(b)) for b in self.blocks]
+        if self.numbers.cache_bases:  # each cache the code uses matches nothing until its operation writes it
+            used = sorted(set(_CACHE_WRITTEN.findall("".join(text for _, text in pieces))))
+            pieces.insert(0, (None, "".join(f"{base}h = -1e999\n" for base in used)))
         source = "\n".join(text for _, text in pieces)
         line_blocks = {number: self.entry_block[i] for number, i in self.line_first.items()
                        if i in self.entry_block}
@@ -833,6 +843,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         return "\n".join(out) + "\n"
 
 
+_CACHE_WRITTEN = re.compile(r"_zw[spq]\('(\w+)'")  # a binade cache's name where its writer is called
+
+
 def split_data(text: str) -> list[str]:
     """The items of a DATA statement's text: commas outside quotes separate them."""
     items, current, quoted = [], [], False
@@ -859,4 +872,15 @@ def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=(
     indices of FOR loops to run through the FOR stack even where they could be
     native (CONT resumes a native loop broken by Ctrl-C that way).
     """
-    return AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect, def_types).compile()
+    compiler = AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect, def_types)
+    compiled = compiler.compile()
+    if compiler.numbers.cache_bases and sum(len(text) for _, text in compiled.pieces) > CACHED_CODE_LIMIT:
+        compiler = AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect, def_types)
+        compiler.numbers.caching = False  # the code without them (the machine's limit is 4 MB)
+        compiled = compiler.compile()
+    return compiled
+
+
+# Python characters of an area beyond which its single operations go without their binade
+# caches (number_models: they add about a third to the code of a program of arithmetic)
+CACHED_CODE_LIMIT = 3 * 1024 * 1024

@@ -70,6 +70,8 @@ class PlainNumbers:
     widest = "n"  # the type of a number read by READ or INPUT (converted to the target's)
     integer = "n"  # the type of ERR, ERL
     pi = repr(3.141592653589793)  # PI: the double nearest to pi
+    cache_bases = ()  # (TypedNumbers: the binade caches its code uses)
+    site_salt = ""
 
     def set_types(self, statements) -> None:
         """No DEF types in this model."""
@@ -163,6 +165,9 @@ class TypedNumbers(PlainNumbers):
         self.letters: dict[str, str] = dict(def_types or {})
         self._temps = 0
         self.tests_inline = True
+        self.site_salt = ""  # in the cache names: apart from the other variants' in one namespace
+        self.cache_bases: list[str] = []  # the binade caches written (see _cached)
+        self.caching = True  # (off: the general code alone)
 
     def def_types(self) -> dict:
         return dict(self.letters)
@@ -247,12 +252,20 @@ class TypedNumbers(PlainNumbers):
         two numbers of one sign; those cases and the other sums go to the helper.  The range test is left out where it
         cannot fail: a sum with a constant below ``SMALL_CONSTANT`` (module single_arith).
         Each operand is evaluated once, in order: one that is not a local or a literal is
-        kept in a scratch local for the helper."""
+        kept in a scratch local for the helper.
+
+        Where it can be, the result goes through a binade cache first (:meth:`_cached`)."""
         if not self.tests_inline:  # the helpers alone (their calls nest least)
             return {"*": f"_sp({left} * {right})", "/": f"_dv({left}, {right})",
                     "+": f"_sadd({left}, {right})", "-": f"_ssub({left}, {right})"}[op]
+        # an integer literal written as a float: the same value, and float with float is
+        # Python's fast (specialised) operation
+        left, right = (repr(float(code)) if _is_int_literal(code) else code for code in (left, right))
         if op == "*":  # the exact product: the helper rounds it
-            return _tested(f"{left} * {right}", "_sp(_sv)", _PRODUCT_BAND, banded="_spb(_sv, _sh)")
+            general = lambda value: _tested(value, "_sp(_sv)", _PRODUCT_BAND, banded="_spb(_sv, _sh)")
+            # (in the cache's bounds and outside the band: the rounding near half a unit, single_arith.product_near_half)
+            return self._cached("p", f"{left} * {right}", "{c}n < _sv - (_sh := (_sv + {c}m) - {c}m) < {c}k",
+                                general, banded="_spb(_sv, _sh)")
         if op == "/":  # through the dialect's division-by-zero policy (arith_policy.py) when not tested
             if not _plain_operand(right):
                 return f"_dv({left}, {right})"
@@ -265,7 +278,9 @@ class TypedNumbers(PlainNumbers):
             # singles (single_arith.divide): the double's cut is the result wherever it is in range
             # (by a literal of at least 1 in size it cannot overflow: only the bottom is tested)
             at_least_one = _small_literal(right) and abs(float(right)) >= 1.0
-            return _cut_or(f"{first}{divisor}{kept} / {right}", f"_dv({kept}, {right})", at_least_one)
+            general = lambda value: _cut_or(value, f"_dv({kept}, {right})", at_least_one)
+            # (a single in the range is not 0: the rounded value is a true condition)
+            return self._cached("q", f"{first}{divisor}{kept} / {right}", "(_sh := (_sv + {c}m) - {c}m)", general)
         helper = "_sadd" if op == "+" else "_ssub"
         small = _small_literal(left) or _small_literal(right)
         first = second = a = b = None
@@ -279,8 +294,36 @@ class TypedNumbers(PlainNumbers):
         # near halfway is the nearest single; with a small constant (see _small_literal) an
         # inexact sum is inside the range, and the constant's sign is known here
         same_sign = f"{_one_sign(a, b, op == '+')} and {_SUM_BAND}"
-        return _tested(f"{first} {op} {second}", f"{helper}({a}, {b})", same_sign, in_range=not small,
-                       also=_not_half_unit_apart(a, b, op == "+"))
+        general = lambda value: _tested(value, f"{helper}({a}, {b})", same_sign, in_range=not small,
+                                        also=_not_half_unit_apart(a, b, op == "+"))
+        # in a cached binade (binade_cache.sum_group): an exact sum is GW's; an inexact one where
+        # the magnitudes add (a literal's sign the cache's bounds imply) outside the band
+        constant = _constant_added(a, b, op == "+")
+        if constant is not None:  # (an exact sum is inside the band)
+            test = "{c}n < _sv - (_sh := (_sv + {c}m) - {c}m) < {c}k"
+        else:
+            test = (f"((_sh := (_sv + {{c}}m) - {{c}}m) == _sv or {a} * {b} {'>' if op == '+' else '<'} 0 "
+                    "and {c}n < _sv - _sh < {c}k)")
+        return self._cached("s", f"{first} {op} {second}", test, general, constant)
+
+    def _cached(self, kind: str, value: str, test: str, general, constant=False,
+                banded: str | None = None) -> str:
+        """The code of a single ``+ - * /`` through a binade cache (module binade_cache): the
+        double ``_sv`` (``value``) inside the cache's bounds, passing ``test`` (code with
+        ``{c}`` for the cache's name), gives ``_sh``, its nearest single; any other takes
+        ``general(value code)`` (here: ``_sv``), whose result the writer ``_zw<kind>`` passes on
+        after it set the cache for ``_sv``'s binade (``constant``: see binade_cache.sum_group).
+        ``banded``: the code of a value inside the bounds that fails ``test``."""
+        if not self.caching:
+            return general(value)
+        cache = f"_Z{kind}{self.site_salt}{self._temp()}"
+        self.cache_bases.append(cache)
+        extra = "" if constant is False else f"{constant!r}, "
+        inside = f"(_sv := {value}) < {cache}h and _sv >= {cache}l"
+        written = f"_zw{kind}({cache!r}, _sv, {extra}{general('_sv')})"
+        if banded is not None:
+            return f"((_sh if {test.format(c=cache)} else {banded}) if {inside} else {written})"
+        return f"(_sh if {inside} and {test.format(c=cache)} else {written})"
 
     def helper(self, op: str, left: str, right: str) -> tuple[str, str]:
         names = {"\\": "_idiv", "MOD": "_mod", "AND": "_and", "OR": "_or", "XOR": "_xor",
@@ -425,7 +468,7 @@ def _cut_or(value: str, helper: str, no_overflow: bool = False) -> str:
     """The code of a single result that is the nearest single to ``value`` (a double never
     halfway between two singles): its cut, where that is in MBF's range, else ``helper``
     (``no_overflow``: ``value`` cannot be beyond the largest single, only its bottom is tested)."""
-    split = f'(_sc := (_sv := {value}) * 536870913.0)'
+    split = f"(_sc := {'_sv' if value == '_sv' else f'(_sv := {value})'} * 536870913.0)"
     if no_overflow:
         return f"(_sh if (_sh := {split} - (_sc - _sv)) >= {TINY!r} or _sh <= {-TINY!r} else {helper})"
     return f"(_sh if {_cut_in_range(split)} else {helper})"
@@ -438,6 +481,14 @@ def _one_sign(a: str, b: str, plus: bool) -> str:
         if _small_literal(this):
             return f"{other} {'>' if (float(this) > 0) == plus else '<='} 0"
     return f"({a} > 0) {'==' if plus else '!='} ({b} > 0)"
+
+
+def _constant_added(a: str, b: str, plus: bool) -> float | None:
+    """The literal's contribution to ``a + b`` (``plus``) or ``a - b``: its value, negated when
+    subtracted; None without a literal."""
+    if _small_literal(b):
+        return float(b) if plus else -float(b)
+    return float(a) if _small_literal(a) else None
 
 
 def _not_half_unit_apart(a: str, b: str, plus: bool) -> str | None:
@@ -467,7 +518,8 @@ def _tested(value: str, helper: str, band: str | None = None, in_range: bool = T
     the range cannot be left), where ``_sv`` lies inside the band around it (``banded``: the
     code for a cut in the range outside the band; else ``helper``).  Scratch locals
     ``_sv _sc _sh _sq`` are each read before anything else can assign them."""
-    exact = f"(_sv := {value}) == (_sh := (_sc := _sv * 536870913.0) - (_sc - _sv))"
+    computed = "_sv" if value == "_sv" else f"(_sv := {value})"
+    exact = f"{computed} == (_sh := (_sc := _sv * 536870913.0) - (_sc - _sv))"
     if also is not None:
         exact += f" and {also}"
     if in_range:
@@ -478,7 +530,7 @@ def _tested(value: str, helper: str, band: str | None = None, in_range: bool = T
         helper = f"(_sh if {_cut_in_range() + ' and ' if in_range else ''}{band} else {helper})"
     return f"(_sv if {exact} else {helper})"
 
-RANGE_CHECKED = ("(_w if ", "(_sv if ", "(_sh if ")  # how a range-checked double's and a tested single's code start
+RANGE_CHECKED = ("(_w if ", "(_sv if ", "(_sh if ", "((_sh if ")  # how a range-checked double's and a tested single's code start
 """(Their parentheses hold a conditional expression: a chain like ``A+B+C`` may not drop them.)"""
 
 

@@ -46,7 +46,7 @@ import math
 import sys
 from functools import lru_cache
 
-from yaseer.basic.arithmetic import arith_policy, casio_math, formatting, values
+from yaseer.basic.arithmetic import arith_policy, binade_cache, casio_math, formatting, values
 from yaseer.basic.compile.number_models import initial_value
 from yaseer.basic.compile import program_cache
 from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  MAX_STACK: GOSUB returns + open FOR loops together
@@ -427,6 +427,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             ns.update(values.RUNTIME)
             ns.update(runtime.single_loop_helpers())
             ns.update(arith_policy.helpers(self.arith, ns["_idiv"], ns["_mod"], ns["_pow"]))
+            ns.update(binade_cache.writers(ns))
             ns.update(val_numbers.helpers(self.arith, ns, self.dialect.largest_number))
         if self.dialect.free_memory is not None:  # strings take room in GW's 64 KB (string_space.py)
             ns.update(self.string_space.helpers(ns, self.dialect.string_length))
