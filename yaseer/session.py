@@ -152,13 +152,27 @@ def read_listing_file(name: str, directory: Path) -> Program:
     """LOAD: the program in file ``name`` (``.bas`` is tried if ``name`` has no suffix),
     inside ``directory`` only (yaseer.basic.machine.files.Sandbox: a name that leads out of it is
     ``Path/File access error``)."""
-    from yaseer.basic.machine.program_file import program_text
+    return read_program_file(name, directory)[0]
+
+
+def read_program_file(name: str, directory: Path) -> tuple[Program, bool]:
+    """:func:`read_listing_file`'s program, and whether the file was SAVEd protected (,P)."""
+    from yaseer.basic.machine.program_file import PROTECTED, program_text
     from yaseer.basic.machine.sandbox import Sandbox
 
     sandbox = Sandbox(directory)
-    if not sandbox.exists(name) and "." not in name.replace("\\", "/").rsplit("/", 1)[-1]:
+    if not sandbox.exists(sandbox.dos_name(name)) and "." not in name.replace("\\", "/").rsplit("/", 1)[-1]:
         name += ".bas"
-    return parse_listing(program_text(sandbox.read_bytes(name)))
+    data = sandbox.read_bytes(sandbox.dos_name(name))  # DOS ignores case: a program's SAVE "f" wrote F.BAS
+    return parse_listing(program_text(data)), data[:1] == bytes((PROTECTED,))
+
+
+def file_and_option(text: str) -> tuple[str, str]:
+    """``"\"F\",P"`` -> (``F``, ``P``): SAVE's file name and the letter after a comma ("" without one)."""
+    match = re.fullmatch(r'(\s*"[^"]*"?\s*)(?:,\s*([A-Za-z])\s*)?', text)
+    if not match:
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+    return file_name_argument(match.group(1)), (match.group(2) or "").upper()
 
 
 # --- the session ----------------------------------------------------------------
@@ -207,6 +221,7 @@ class Session:
     dialect: str = "casio"
     auto: tuple[int, int] | None = None  # AUTO: (number offered next, step)
     current_line: int | None = None  # the line most recently written, edited or run (LIST ., EDIT .)
+    protected_areas: set = field(default_factory=set)  # areas LOADed from a file SAVEd with ,P
     _auto_step: int = 10
     _can_continue: bool = False
 
@@ -261,8 +276,16 @@ class Session:
         """The program of the area being edited."""
         return self.programs[self.area]
 
+    def _refuse_protected(self) -> None:
+        """LIST, EDIT, a line typed and a SAVE other than ,P of a program LOADed from a
+        protected file: Illegal function call (GIODSK.ASM PROCHK, called by LIST, BUFLIN,
+        the line entry of GWMAIN.ASM and BINSAV)."""
+        if self.area in self.protected_areas:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+
     def store_line(self, number: int, text: str) -> None:
         """Type ``number text``: store (or, with no text, delete) a line."""
+        self._refuse_protected()
         if text.strip():
             self.program[number] = text
             self.current_line = number
@@ -310,6 +333,7 @@ class Session:
                     write(self.listed(number, area) + "\n")
             return
         first, last = self._current_range(argument) or parse_range(argument)
+        self._refuse_protected()
         if not self.program and self.area in LIBRARY_AREAS:
             from yaseer.library_text import LIBRARY_TEXT
 
@@ -364,6 +388,7 @@ class Session:
         if current is None and not argument.isdigit():
             raise BasicError("Syntax error", SYNTAX_ERROR)
         number = current[0] if current is not None else int(argument)
+        self._refuse_protected()
         if number not in self.program:
             raise BasicError("Undefined line number", UNDEFINED_LINE)
         self.current_line = number
@@ -395,12 +420,14 @@ class Session:
         if self._every_area(argument):
             for area in list(self.programs):
                 self.programs[area] = {}
+            self.protected_areas.clear()
             self._can_continue = False
             self.engine.reset()
             return
         if argument:
             raise BasicError("Syntax error", SYNTAX_ERROR)
         self.programs[self.area] = {}
+        self.protected_areas.discard(self.area)
         self._can_continue = False
         if self.area == 0:
             self.engine.reset()
@@ -415,19 +442,42 @@ class Session:
 
     def command_load(self, argument: str) -> None:
         """LOAD "file": replace the current area's program with the file's."""
-        self.programs[self.area] = read_listing_file(file_name_argument(argument), self.directory)
+        self.programs[self.area], protected = read_program_file(file_name_argument(argument), self.directory)
+        self._mark_protected(self.area, protected)
         self._show_entry_messages(self.program)
         self._can_continue = False
 
+    def _mark_protected(self, area: int, protected: bool) -> None:
+        if protected:
+            self.protected_areas.add(area)
+        else:
+            self.protected_areas.discard(area)
+
     def command_save(self, argument: str) -> None:
-        """SAVE "file": write the current area's program as a listing, in the session's
-        directory only; a name without an extension gets ``.bas`` (GW-BASIC adds ``.BAS``)."""
+        """SAVE "file"[,A|,P]: write the current area's program as a listing, in the session's
+        directory only; a name without an extension gets ``.bas`` (GW-BASIC adds ``.BAS``).
+        ``,P`` (a letter the dialect's SAVE takes): GW-BASIC's protected form
+        (machine/program_crunch.py, program_file.protected_file)."""
+        from yaseer.basic.compile.compiler import NO_WORDS
         from yaseer.basic.machine.sandbox import Sandbox
 
-        name = file_name_argument(argument)
+        name, option = file_and_option(argument)
+        words = self._dialect().words or NO_WORDS
+        if option and option not in words.command_options.get("SAVE", ""):
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        if option != "P":
+            self._refuse_protected()
         if not Path(name).suffix:
             name += ".bas"
-        Sandbox(self.directory).write_bytes(name, program_text(self.program).encode("utf-8"))
+        if option == "P":
+            from yaseer.basic.machine.program_crunch import tokenised_program
+            from yaseer.basic.machine.program_file import protected_file
+
+            codes = self._dialect().charset.codes
+            data = protected_file(tokenised_program({n: codes(t) for n, t in self.program.items()}))
+        else:
+            data = program_text(self.program).encode("utf-8")
+        Sandbox(self.directory).write_bytes(name, data)
 
     def command_run(self, argument: str) -> None:
         """RUN [line] or RUN "file": fresh variables, then run PROG 0 from its start (or ``line``).
@@ -435,7 +485,8 @@ class Session:
         ``RUN "file"`` loads the file into PROG 0 first (whatever area is being edited).
         """
         if argument.startswith('"'):
-            self.programs[0] = read_listing_file(file_name_argument(argument), self.directory)
+            self.programs[0], protected = read_program_file(file_name_argument(argument), self.directory)
+            self._mark_protected(0, protected)
             self._show_entry_messages(self.programs[0])
             argument = ""
         if argument and not argument.isdigit():
@@ -444,6 +495,7 @@ class Session:
         if start is not None and start not in self.programs[0]:
             raise BasicError("Undefined line number", UNDEFINED_LINE)
         self._can_continue = False
+        self._tell_protected()
         self._execute(lambda: self.engine.run(self.programs, start), in_program=True)
 
     def command_cont(self, argument: str) -> None:
@@ -470,8 +522,14 @@ class Session:
 
     command_bye = command_system
 
+    def _tell_protected(self) -> None:
+        """Let the engine's machine know whether PROG 0 is protected (its LIST, SAVE ... refuse it)."""
+        if hasattr(self.engine, "protected"):
+            self.engine.protected = 0 in self.protected_areas
+
     def direct(self, statement: str) -> None:
         """Run one direct-mode statement against the current variables."""
+        self._tell_protected()
         self._execute(lambda: self.engine.direct(statement, self.programs), in_program=False)
 
     def _execute(self, action: Callable[[], object], in_program: bool) -> None:
@@ -599,6 +657,7 @@ class MachineEngine:
         self._printer = _Screen(printer) if printer is not None else self._screen
         self._clear_screen = clear_screen
         self._machine = None  # made on first use: the prompt comes up without waiting for it
+        self.protected = False  # PROG 0 came from a file SAVEd with ,P (the session says so)
 
     @property
     def machine(self):
@@ -632,12 +691,14 @@ class MachineEngine:
         self._finish(self._guard(lambda: self.machine.execute_direct(statement)), direct=True)
 
     def sync(self, areas: dict[int, Program]) -> None:
-        """Give the machine every typed area whose program it does not have yet.
+        """Give the machine every typed area whose program it does not have yet, and
+        whether PROG 0 is protected (``protected``).
 
         Unchanged areas are left alone, so a STOPped program stays resumable.
         An area emptied by NEW gets its library program back (if it has one).
         """
         machine = self.machine
+        machine.program_protected = self.protected
         for area, program in areas.items():
             held = machine.programs.get(area)
             if program and held != {n: text.strip() for n, text in program.items()}:

@@ -56,13 +56,15 @@ class Chaining:
     def _program_lines(self, name: str, merge: bool = False) -> dict[int, str]:
         """The lines of program file ``name`` (``.BAS`` added to a name without ``.``), read
         as LOAD reads it; MERGE reads ASCII files only (``Bad file mode``)."""
-        from yaseer.basic.machine.program_file import TOKENISED, program_text
+        from yaseer.basic.machine.program_file import PROTECTED, TOKENISED, program_text
         from yaseer.basic.source.scanner import split_lines
 
         data = read_program(self.files.sandbox, self._program_name(name))
         if merge and data[:1] >= bytes((TOKENISED - 1,)):
             raise error_for(BAD_FILE_MODE)  # DSKCOM.ASM OKGET2
         text = program_text(data)
+        if not merge:
+            self.program_protected = data[:1] == bytes((PROTECTED,))
         return {number: line for number, line, _ in split_lines(text, self.dialect.joins_unnumbered_lines)}
 
     def program_command(self, name: str, argument, option, everything: bool = False) -> None:
@@ -92,11 +94,14 @@ class Chaining:
             if option == "R":
                 raise RunAgain(lines, None, True)
             raise ChainTo(lines, False, None, True, None, False)
+        if self.program_protected and (name in ("LIST", "LLIST", "EDIT") or (name == "SAVE" and option != "P")):
+            raise error_for(ILLEGAL_FUNCTION_CALL)  # GIODSK.ASM PROCHK: a protected program is not shown
         if name in ("LIST", "LLIST"):
             self._list_lines(program, argument, 1 if name == "LLIST" else 0)
         elif name == "SAVE":
-            self._save(program, argument)
+            self._save(program, argument, protected=option == "P")
         elif name == "NEW":
+            self.program_protected = False
             raise ChainTo({}, False, None, True, None, False)
         elif name == "DELETE":
             first, last = argument
@@ -174,16 +179,25 @@ class Chaining:
             if (first or 0) <= number <= (65529 if last is None else last):
                 self.print_items(device, (f"{number} {detokenize(program[number], self.dialect)}",), True)
 
-    def _save(self, program: dict, name: str, areas: dict | None = None) -> None:
+    def _save(self, program: dict, name: str, areas: dict | None = None, protected: bool = False) -> None:
         """SAVE: the program as an ASCII listing (CR LF lines, a Ctrl-Z at the end) in the
-        program's directory, in the machine's character codes; GW-BASIC's tokenised and
-        protected forms are not written.  ``areas``: SAVE ALL's areas (see ``_every_area``)."""
+        program's directory, in the machine's character codes; with ``protected`` (SAVE
+        "f",P) GW-BASIC's protected form (program_file.protected_file); GW-BASIC's plain
+        tokenised form is not written.  ``areas``: SAVE ALL's areas (see ``_every_area``)."""
         from yaseer.basic.source.scanner import detokenize
+
+        sandbox = self.files.sandbox
+        if protected:
+            from yaseer.basic.machine.program_crunch import tokenised_program
+            from yaseer.basic.machine.program_file import protected_file
+
+            data = protected_file(tokenised_program(program))
+            sandbox.write_bytes(sandbox.dos_name(self._program_name(name)), data)
+            return
 
         def listing(lines: dict) -> str:
             return "".join(f"{n} {detokenize(lines[n], self.dialect)}\r\n" for n in sorted(lines))
 
-        sandbox = self.files.sandbox
         if areas is None:
             text = listing(program)
         else:

@@ -243,6 +243,9 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.subscript_base = 0  # OPTION BASE
         # the program's sequential files, all in one directory (``files``; default the current one)
         words = self.dialect.words
+        # gw: program area 0 came from a file SAVEd with ,P (LIST, EDIT and a SAVE other than ,P
+        # refuse it: GIODSK.ASM PROCHK); LOAD, RUN "file" and CHAIN set it, NEW clears it
+        self.program_protected = False
         self.files = FileTable(Sandbox(files), self.dialect.file_devices, words.absent_devices if words else None)
         # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
         # ``yaseer run`` stops at once): see _on_interrupt.

@@ -89,17 +89,22 @@ def program_text(data: bytes, decode=None) -> str:
         return data.decode("latin-1")
 
 
-def unprotect(data: bytes) -> bytes:
-    """A protected program's bytes (after the 0xFE) as the tokenised bytes they scramble:
-    each byte less counter 1, XORed with the two tables' entries, plus counter 2 (counter 1
-    runs 11..1, counter 2 13..1, each starting again after 1)."""
-    out = bytearray(len(data))
+def _counters():
+    """PENCOD's and PDECOD's two counters, byte after byte: counter 1 runs 11..1, counter 2
+    13..1, each starting again after 1."""
     one, two = 11, 13
-    for i, byte in enumerate(data):
-        out[i] = (((byte - one) & 0xFF) ^ _LOGP[two - 1] ^ _EXPCN[one - 1]) + two & 0xFF
+    while True:
+        yield one, two
         one = one - 1 or 11
         two = two - 1 or 13
-    return bytes(out)
+
+
+def unprotect(data: bytes) -> bytes:
+    """A protected program's bytes (after the 0xFE) as the tokenised bytes they scramble
+    (GIODSK.ASM PDECOD): each byte less counter 1, XORed with the two tables' entries,
+    plus counter 2."""
+    return bytes((((byte - one) & 0xFF) ^ _LOGP[two - 1] ^ _EXPCN[one - 1]) + two & 0xFF
+                 for byte, (one, two) in zip(data, _counters()))
 
 
 def detokenise(data: bytes) -> str:
@@ -188,3 +193,17 @@ def _token(body: bytes, i: int) -> tuple[str | None, int]:
         return (text if "." in text or "E" in text else text + "!"), i + 5
     text = unsigned_text(double_of(mbf_double.from_bytes(value)), DOUBLE_DIGITS, "D")  # all 56 bits, as CVD
     return (text if "D" in text else text + "#"), i + 9
+
+
+def protect(data: bytes) -> bytes:
+    """Tokenised bytes scrambled as GIODSK.ASM PENCOD scrambles a program for SAVE "f",P
+    (the inverse of :func:`unprotect`): each byte less counter 2, XORed with the two
+    tables' entries, plus counter 1."""
+    return bytes((((byte - two) & 0xFF) ^ _EXPCN[one - 1] ^ _LOGP[two - 1]) + one & 0xFF
+                 for byte, (one, two) in zip(data, _counters()))
+
+
+def protected_file(tokenised: bytes) -> bytes:
+    """The bytes of a file SAVE "f",P writes: the 0xFE mark, the program's tokenised bytes
+    scrambled (GIODSK.ASM PROSAV), and the Ctrl-Z that ends a file."""
+    return bytes((PROTECTED,)) + protect(tokenised) + bytes((END_OF_FILE,))

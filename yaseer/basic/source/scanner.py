@@ -408,6 +408,18 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
     return (single, "!"), end
 
 
+def gw_number(upper: str, i: int) -> tuple[tuple, int]:
+    """The GW-BASIC number literal at ``upper[i]`` (a digit or ``.``; capitals) as
+    :func:`_scan_typed_number` reads it: ``((value, type), end)``; the tokeniser of
+    program files (machine/program_crunch.py) reads numbers with it."""
+    return _scan_typed_number(upper, i)
+
+
+def radix_number(upper: str, i: int) -> tuple[int, int]:
+    """``&H``/``&O``/``&`` at ``upper[i]``: (value, end), see :func:`_radix_number`."""
+    return _radix_number(upper, i)
+
+
 def _overflowed(largest: float, notes: list | None) -> float:
     """The value of a literal beyond the range: ``largest``, noting GW's message."""
     if notes is not None:
