@@ -109,8 +109,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
     (:mod:`~yaseer.basic.compile.loops`) are compiled by the mixins."""
 
     def __init__(self, lines: list, area: int = 0, direct: bool = False, entry_lines=(), trace: bool = False,
-                 dynamic_loops=(), dialect=CASIO, def_types=None):
+                 dynamic_loops=(), dialect=CASIO, def_types=None, statement_types=False):
         self.area = area
+        self.statement_types = statement_types  # DEF types switched as they run, even where fixed would do
         self.numbers = number_model(dialect, def_types)
         # the binade caches' names differ between the variants run in one namespace (TRON, DEF types)
         salt = "t" if trace else ""
@@ -567,7 +568,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         if not self.dynamic_types:
             return
         ranges = [first + last for first, last in stmt.ranges]
-        self.hand_over(f"_M.set_def_types({self.area}, {stmt.kind!r}, {ranges!r})")
+        area = None if self.direct else self.area  # None: the direct line (Machine.use_def_types)
+        self.hand_over(f"_M.set_def_types({area}, {stmt.kind!r}, {ranges!r})")
 
     def stmt_Resume(self, stmt, scope):
         if stmt.mode == "line":
@@ -730,7 +732,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         """Generate every block of the area (DEF types, DATA and DEF FN collected first)."""
         statements = [s for _, stmt in self.flat if not isinstance(stmt, BasicError)
                       for s in walk_statements(stmt) if isinstance(s, ast.DefType)]
-        self.dynamic_types = bool(statements) and self.numbers.typed and not self.direct and not types_fixed(self.flat)
+        self.dynamic_types = bool(statements) and self.numbers.typed and (
+            self.statement_types or not types_fixed(self.flat))
         if not self.dynamic_types:
             self.numbers.set_types(statements)
         for i, (number, stmt) in enumerate(self.flat):
@@ -863,19 +866,24 @@ def split_data(text: str) -> list[str]:
 
 
 def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=(),
-                 trace: bool = False, dynamic_loops=(), dialect=CASIO, def_types=None) -> CompiledArea:
+                 trace: bool = False, dynamic_loops=(), dialect=CASIO, def_types=None,
+                 statement_types: bool = False) -> CompiledArea:
     """Compile an area's parsed lines (``syntax_tree.Line`` in line order) for ``dialect``.
 
     ``entry_lines`` are lines that must start a block although no jump names
     them (RUN n, or a GOTO typed in direct mode); ``trace`` compiles the TRON
     variant (see the module docstring); ``dynamic_loops`` are the statement
     indices of FOR loops to run through the FOR stack even where they could be
-    native (CONT resumes a native loop broken by Ctrl-C that way).
+    native (CONT resumes a native loop broken by Ctrl-C that way); ``statement_types``
+    compiles DEFINT ... as switches of the type table where they run even where
+    applying them first would do (a RUN n typed in direct mode skips those before n).
     """
-    compiler = AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect, def_types)
+    compiler = AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect, def_types,
+                            statement_types)
     compiled = compiler.compile()
     if compiler.numbers.cache_bases and sum(len(text) for _, text in compiled.pieces) > CACHED_CODE_LIMIT:
-        compiler = AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect, def_types)
+        compiler = AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect, def_types,
+                            statement_types)
         compiler.numbers.caching = False  # the code without them (the machine's limit is 4 MB)
         compiled = compiler.compile()
     return compiled

@@ -215,7 +215,7 @@ class Chaining:
         kept = dict(self.files.open_files) if again.keep_files else {}
         for number in kept:
             del self.files.open_files[number]
-        self._compiled(0)
+        self._run_types(again.line if again.line in self.programs.get(0, {}) else None)
         self.reset()  # closes the files not kept
         self.files.open_files.update(kept)
         if again.line is None:

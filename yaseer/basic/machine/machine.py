@@ -246,6 +246,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         # gw: program area 0 came from a file SAVEd with ,P (LIST, EDIT and a SAVE other than ,P
         # refuse it: GIODSK.ASM PROCHK); LOAD, RUN "file" and CHAIN set it, NEW clears it
         self.program_protected = False
+        self._direct_line = None  # (compiled, program, namespace) of a direct line whose DEFs switch it
+        self._types_as_statements = None  # the program of area 0 a RUN n entered past its DEFs (_run_types)
         self.files = FileTable(Sandbox(files), self.dialect.file_devices, words.absent_devices if words else None)
         # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
         # ``yaseer run`` stops at once): see _on_interrupt.
@@ -334,7 +336,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         cache of compiled programs (:mod:`yaseer.basic.compile.program_cache`) and stored
         there after a compile (not the TRON variant, see ``set_trace``, nor one with
         ``dynamic_loops``, see ``cont``)."""
-        plain = not (direct or self.tracing or dynamic_loops)
+        statement_types = area == 0 and not direct and program == self._types_as_statements
+        plain = not (direct or self.tracing or dynamic_loops or statement_types)
         entry = program_cache.key(area, program, entry_lines, self.dialect) if plain else None
         cached = program_cache.load(entry) if entry else None
         if cached is not None:
@@ -347,7 +350,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             lines = [_parse_cached(number, text, self.dialect) for number, text in sorted(program.items())]
             compiled = compile_area(lines, area if isinstance(area, int) else 0, direct=direct,
                                     entry_lines=entry_lines, trace=self.tracing, dynamic_loops=dynamic_loops,
-                                    dialect=self.dialect, def_types=self.def_types if direct else None)
+                                    dialect=self.dialect, def_types=self.def_types if direct else None,
+                                    statement_types=statement_types)
             if sum(len(text) for _, text in compiled.pieces) > MAX_PYTHON_CHARACTERS:
                 raise BasicError("Out of memory", OUT_OF_MEMORY)
             codes = [None] * len(compiled.pieces)
@@ -362,6 +366,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             self.def_types = dict(compiled.def_types)
         if compiled.dynamic_types:
             compiled.variants[(_table_key(compiled.def_types), self.tracing)] = list(compiled.blocks)
+            if direct:  # its DEF statements switch it to its variant for the new table (use_def_types)
+                self._direct_line = (compiled, program, namespace)
         for name in compiled.scalars:
             self.scalars.setdefault(name, initial_value(name))
         if not direct:
@@ -523,7 +529,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             lines = [_parse_cached(number, text, self.dialect)
                      for number, text in sorted(self.programs.get(area, {}).items())]
             variant = compile_area(lines, area, entry_lines=extra, trace=on, dynamic_loops=compiled.dynamic_loops,
-                                   dialect=self.dialect, def_types=self.def_types if compiled.dynamic_types else None)
+                                   dialect=self.dialect, def_types=self.def_types if compiled.dynamic_types else None,
+                                   statement_types=compiled.dynamic_types)
             namespace = self.namespaces[area]
             for first_line, text in variant.pieces:
                 self._exec_piece(text, first_line, area, namespace)
@@ -542,14 +549,20 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
                 table[chr(code)] = _DEF_SUFFIX[kind]
         self.use_def_types(area, {letter: kind for letter, kind in table.items() if kind != "!"})
 
-    def use_def_types(self, area: int, table: dict) -> None:
+    def use_def_types(self, area: int | None, table: dict) -> None:
         """Make ``table`` (letter -> type character, single left out) the DEF types, and run
-        ``area`` on, if its types switch as it runs, in its variant compiled for it (each
-        compiled once, when first reached; they have the same blocks, as TRON's variant has)."""
+        ``area`` (None: the direct line running) on, if its types switch as it runs, in its
+        variant compiled for it (each compiled once, when first reached; they have the same
+        blocks, as TRON's variant has)."""
         if table == self.def_types:
             return
         self.def_types = table
-        compiled = self.compiled.get(area)
+        if area is None:
+            if self._direct_line is None:
+                return
+            compiled, program, namespace = self._direct_line
+        else:
+            compiled, program, namespace = self.compiled.get(area), self.programs.get(area, {}), self.namespaces.get(area)
         if compiled is None or not compiled.dynamic_types:
             return
         key = (_table_key(table), self.tracing)
@@ -558,13 +571,12 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             from yaseer.basic.compile.compiler import compile_area
 
             extra = tuple(self._extra_entries) if area == 0 else ()
-            lines = [_parse_cached(number, text, self.dialect)
-                     for number, text in sorted(self.programs.get(area, {}).items())]
-            variant = compile_area(lines, area, entry_lines=extra, trace=self.tracing,
-                                   dynamic_loops=compiled.dynamic_loops, dialect=self.dialect, def_types=table)
+            lines = [_parse_cached(number, text, self.dialect) for number, text in sorted(program.items())]
+            variant = compile_area(lines, area or 0, direct=area is None, entry_lines=extra, trace=self.tracing,
+                                   dynamic_loops=compiled.dynamic_loops, dialect=self.dialect, def_types=table,
+                                   statement_types=True)
             if variant.block_count != compiled.block_count:  # (a compile error cut a statement's blocks short)
                 raise BasicError("Internal error (the DEF type variants differ)", INTERNAL_ERROR)
-            namespace = self.namespaces[area]
             for first_line, text in variant.pieces:
                 self._exec_piece(text, first_line, area, namespace)
             blocks = compiled.variants[key] = [namespace[f"_b{b}"] for b in range(variant.block_count)]
@@ -682,7 +694,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         """RUN (from ``line``): returns "end" or "stop"; raises BasicError on an error."""
         if self.compiled.get(0) is not None and self.compiled[0].dynamic_loops:
             self._invalidate(0)  # the variant CONT made after a Ctrl-C: back to native loops
-        compiled = self._compiled(0)
+        self._run_types(line)
         for area in self.programs:
             self._compiled(area)
         self.reset()
@@ -690,6 +702,17 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         if line is not None:
             block = self._line_block(line)
         return self._execute(0, block)
+
+    def _run_types(self, line: int | None) -> None:
+        """Before RUN [line] resets the machine: RUN clears the DEF type table (BIMISC.ASM
+        CLEARC), so a program whose DEFs are applied before it runs (blocks.types_fixed)
+        but is entered at a later ``line`` is compiled with them switching the table where
+        they run (from the top it keeps the compile that applies them first)."""
+        compiled = self._compiled(0)
+        if line is not None and compiled.def_types and not compiled.dynamic_types and line != compiled.first_line:
+            self._types_as_statements = dict(self.programs[0])
+            self._invalidate(0)
+            self._compiled(0)
 
     def _line_block(self, line: int) -> int:
         """The block that starts at ``line`` of area 0 (recompiling so that one does)."""
@@ -776,6 +799,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         except DirectJump as jump:
             return self._execute(0, self._line_block(jump.line))
         finally:
+            self._direct_line = None
             if self.csv:  # a last line left open (PRINT A;) is still a row
                 self.end_line()
             self.end_drawing()
