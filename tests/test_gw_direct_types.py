@@ -10,18 +10,12 @@ import random
 
 import pytest
 
-from test_differential_support import PcBasic, base_seed, case_count, clean_output
+from test_differential_support import base_seed, case_count, clean_output
+from test_gw_language_rules import pc  # noqa: F401 - the module's PC-BASIC session
 
 from yaseer.session import MachineEngine, Session
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
-
-
-@pytest.fixture(scope="module")
-def pc():
-    session = PcBasic()
-    yield session
-    session.close()
 
 
 def gw_session() -> tuple[Session, list]:
