@@ -644,8 +644,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             # table's variant of the area has the same blocks (stmt_DefType)
             cond = f"_fail({err.message!r}, {err.code})"
         branches = [b for b in (stmt.then, stmt.otherwise) if isinstance(b, list)]
-        split = any(splits(s, self.plan.bare_returns) or isinstance(s, (ast.While, ast.Wend)) or self.zero_trip_target(s)
-                    for b in branches for s in b)
+        split = (self.plan.fine and bool(branches)) or any(
+            splits(s, self.plan.bare_returns) or isinstance(s, (ast.While, ast.Wend)) or self.zero_trip_target(s)
+            for b in branches for s in b)
         if not split:
             self.emit(f"if {cond}:")
             self.branch(stmt.then)
@@ -683,12 +684,24 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         else:
             self.emit("pass")
             for stmt in branch:
+                if self.plan.fine and after is not None:
+                    self.statement_block()
                 self.statement(stmt)
         if after is not None:
             self.block_next.setdefault(self.cur.number, after)
             self.emit(f"return {after}")
         self.depth -= 1
         self.indent -= 1
+
+    def statement_block(self) -> None:
+        """Start a new block for the branch statement that follows, where RESUME NEXT is
+        used: an error in it goes on with the statement after it in the branch (GW-BASIC's
+        RESUME NEXT goes to the statement after the failing one by its place in the text)."""
+        block = self.new_block()
+        self.block_next.setdefault(self.cur.number, block.number)
+        self.emit(f"return {block.number}")
+        self.cur, self.indent = block, 1
+        self.emit(f"_ln = {self.line}")
 
     # -- the program walk
     def set_line(self, number) -> None:
