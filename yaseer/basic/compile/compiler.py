@@ -112,6 +112,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
                  dynamic_loops=(), dialect=CASIO, def_types=None, statement_types=False):
         self.area = area
         self.statement_types = statement_types  # DEF types switched as they run, even where fixed would do
+        self.variables_made = dialect.variables_made  # SWAP's second variable must exist (see made)
+        self.watched: frozenset = frozenset()  # the names whose making is recorded (see made)
         self.numbers = number_model(dialect, def_types)
         # the binade caches' names differ between the variants run in one namespace (TRON, DEF types)
         salt = "t" if trace else ""
@@ -243,6 +245,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
                 self.emit(f"if _t - _t: _t = _ovf(_t, {target_kind!r})")
                 value_code = "_t"
             self.emit(f"{name} = {value_code}")
+            self.made(target)
             return
         element = self.element(target, scope)
         if check:
@@ -500,11 +503,27 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         if self.depth:  # the rest of the IF branch goes on in the block after the WEND
             self.continue_after(stmt, fall_through=False)
 
+    def made(self, target) -> None:
+        """Record that a statement made simple variable ``target`` (see Dialect.variables_made)
+        where a SWAP may ask: for the names that stand second in a SWAP of the area (so
+        other programs pay nothing), and for every name in a direct line."""
+        if self.variables_made and isinstance(target, ast.Var):
+            self.made_name(target.name)
+
+    def made_name(self, name: str) -> None:
+        """:meth:`made` for the simple variable called ``name``."""
+        name = self.numbers.name(name)
+        if self.direct or name in self.watched:
+            self.emit(f"_made.add({name!r})")
+
     def stmt_Swap(self, stmt, scope):
         first, kind = self.expr(stmt.first, scope)
         second, other = self.expr(stmt.second, scope)
         if kind != other:
             raise type_mismatch()
+        if self.variables_made and isinstance(stmt.second, ast.Var):
+            self.made(stmt.first)  # the first PTRGET made it before the second fails
+            self.emit(f"_swap2({self.numbers.name(stmt.second.name)!r}, {second})")
         t = self.new_temp()
         self.emit(f"{t} = {first}")
         self.assign(stmt.first, second, kind, scope, False)
@@ -560,6 +579,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         params = ", ".join("p" + local_name(self.numbers.name(p)) for p in stmt.params)
         self.prelude.append(f"def {fname}({params}):\n    {code}\n")
         self.emit(f"_M.fns[{self.numbers.name(stmt.name)!r}] = ({function}, {len(stmt.params)})")
+        if self.variables_made:
+            for param in stmt.params:  # DEF's PTRGET makes each parameter's variable
+                self.made_name(param)
 
     def stmt_DefType(self, stmt, scope):
         """Applied to the whole area before compiling where that gives GW's types
@@ -749,6 +771,10 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.statement_types or not types_fixed(self.flat))
         if not self.dynamic_types:
             self.numbers.set_types(statements)
+        if self.variables_made:
+            self.watched = frozenset(self.numbers.name(s.second.name) for _, stmt in self.flat
+                                     if not isinstance(stmt, BasicError) for s in walk_statements(stmt)
+                                     if isinstance(s, ast.Swap) and isinstance(s.second, ast.Var))
         for i, (number, stmt) in enumerate(self.flat):
             for s in ([] if isinstance(stmt, BasicError) else data_statements(stmt)):
                 self.data_lines.setdefault(number, len(self.data))

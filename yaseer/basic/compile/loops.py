@@ -42,6 +42,7 @@ class LoopCompiler:
         kind = self.kind_of(stmt.var)
         if kind not in self.numbers.loop_types:
             raise type_mismatch()
+        self.made(stmt.var)  # FOR's PTRGET makes the variable, whether or not its NEXT is found
         convert = self.numbers.convert
         start = convert(*self.typed(stmt.start, scope), kind)
         limit = convert(*self.typed(stmt.stop, scope), kind)

@@ -89,9 +89,10 @@ FIELDS = (
     "screen",  # ScreenRules: CASIO_SCREEN
     "string_length",  # int: 255
     "free_memory",  # int | None: None
+    "variables_made",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
-            True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None)
+            True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -225,6 +226,10 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         Casio; none in GW).
         ``default_dimension``: the largest subscript of an array used
         without DIM (10 in both: subscripts 0..10).
+        ``variables_made``: True when a simple variable exists only once a statement
+        has made it (GW-BASIC's PTRGET makes it on an assignment, INPUT, READ, FOR, a
+        DEF FN parameter, SWAP, but not when an expression reads it: BIPTRG.ASM SMKVAR),
+        so that SWAP's second variable must exist (BIMISC.ASM SWAP: Illegal function call).
         ``program_areas``: True when ``GOSUB PROG n`` is a statement (the
         library programs are bound at start); False in GW-BASIC, where PROG
         is no word: ``GOSUB PROG n`` is then a syntax error unless program
@@ -282,6 +287,7 @@ GW = Dialect(
     bracket_subscripts=True, display=(80, 25, 25), controls=tuple(sorted(GW_CONTROLS.items())), screen=GW_SCREEN,
     string_length=255,  # a string descriptor holds its length in one byte
     free_memory=60300,
+    variables_made=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

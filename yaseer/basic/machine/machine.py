@@ -247,6 +247,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         # refuse it: GIODSK.ASM PROCHK); LOAD, RUN "file" and CHAIN set it, NEW clears it
         self.program_protected = False
         self._direct_line = None  # (compiled, program, namespace) of a direct line whose DEFs switch it
+        # gw: the simple variables a statement made (recorded only where a SWAP may ask: compiler.made)
+        self.made: set[str] = set()
         self._types_as_statements = None  # the program of area 0 a RUN n entered past its DEFs (_run_types)
         self.files = FileTable(Sandbox(files), self.dialect.file_devices, words.absent_devices if words else None)
         # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
@@ -413,7 +415,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_bank": self.data_bank,
             "_on": self.on_index, "_for": self.for_push, "_next": self.next_frame,
             "_pop": self.stack.pop, "_next_any": self.next_any, "_stop": self._stopper(area),
-            "_dim": self.dim, "_clear": self.clear, "_read_n": rt.read_number,
+            "_dim": self.dim, "_clear": self.clear, "_made": self.made, "_swap2": self.swap_second, "_read_n": rt.read_number,
             "_read_s": rt.read_string, "_restore": rt.restore, "_restore_at": rt.restore_at,
             "_input": self.input_values,
             "_fn": self.user_function, "_resume": self.resume, "_resume_at": self.resume_at,

@@ -169,6 +169,18 @@ class Variables:
         return memory_model.free_and_strings(self.dialect.free_memory, self.programs.get(0, {}), scalars,
                                              self.arrays, self.array_dims, self.fns)
 
+    def swap_second(self, name: str, value) -> None:
+        """SWAP's second variable, a simple one, holding ``value``: it must exist (BIMISC.ASM
+        SWAP compares ARYTAB around its PTRGET: a variable made there is Illegal function
+        call, though it stays made).  One a statement made is in ``made`` where the compiler
+        recorded it (compiler.made); one holding a value other than 0 or "" was made anyway
+        (by a program that had no SWAP asking for it)."""
+        if name in self.made:
+            return
+        self.made.add(name)
+        if value == 0 or value == "":
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+
     def clear(self) -> None:
         """CLEAR: every variable to 0 or "", arrays back to their implicit state, no FN;
         no error trapping either (ON ERROR off, ERR and ERL 0, an error handler left:
@@ -187,6 +199,7 @@ class Variables:
         self.in_handler = False
         self.err = self.erl = 0.0
         self.string_space.reset()
+        self.made.clear()
         self.reset_def_types()
 
 
