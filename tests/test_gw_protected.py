@@ -201,3 +201,10 @@ def test_a_program_saves_itself_protected_as_pc_basic_does(pc, tmp_path):
     session, shown = gw_session(tmp_path)
     assert typed(session, shown, ["NEW"] + source.split("\n") + ["RUN"]) == ""
     assert (tmp_path / "ITSELF.BAS").read_bytes() == (pc_directory / "ITSELF.BAS").read_bytes()
+
+
+def test_a_program_that_loads_a_protected_file_leaves_it_protected(pc, tmp_path):
+    (tmp_path / "INNER.BAS").write_bytes(pc_saved(pc, '10 PRINT "inner"', "INNER"))
+    session, shown = gw_session(tmp_path)
+    assert typed(session, shown, ['10 LOAD "INNER"', "RUN", "LIST"]) == "Illegal function call\n"
+    assert typed(session, shown, ["RUN"]) == "inner\n"

@@ -567,6 +567,8 @@ class Session:
         for area, lines in changed().items():
             self.programs[area] = dict(lines)
             self._can_continue = False
+            if area == 0:  # a program's LOAD of a protected file protects what it loaded
+                self._mark_protected(0, bool(getattr(self.engine, "protected", False)))
 
 
 # --- the BASIC machine, as the session and the animation use it ---------------------
@@ -715,6 +717,7 @@ class MachineEngine:
         if self._machine is None:
             return {}
         held = self._machine.programs
+        self.protected = self._machine.program_protected
         given = getattr(self, "_given", {})
         changed = {area: dict(held.get(area, {})) for area in set(held) | set(given)
                    if held.get(area, {}) != given.get(area, {})}
