@@ -166,6 +166,10 @@ class _RecordingFrame(_Frame):
         return self.recorder.read(value, f"float({array}[{index}])")
 
     def scalar(self, name: str):
+        # a name that is the same in every dialect (upper case) and a number's: the dictionary of
+        # scalars read as machine.scalar reads it, without the method's calls
+        if name.isupper() and name.isalnum():
+            return self.recorder.read(super().scalar(name), f"float(_M.scalars.get({name!r}, 0.0))")
         return self.recorder.read(super().scalar(name), f"float(_M.scalar({name!r}))")
 
     def choice(self, name: str, index: int) -> float:
@@ -273,7 +277,8 @@ def _shelf(number: int, method: str | None):
 
 
 def _call_program(machine, number: int, method: str | None) -> _Frame | None:
-    """Run program ``number`` on ``machine``'s inputs; returns the frame to commit
+    """Run program ``number`` on ``machine``'s inputs, which none of its recorded paths in this
+    process holds for (:func:`make_area` tries them first); returns the frame to commit
     (None: a recording ran and committed its outputs).
 
     From the second call of a program on, each call is recorded once per path
@@ -287,8 +292,6 @@ def _call_program(machine, number: int, method: str | None) -> _Frame | None:
     records and compiles nothing."""
     key = (number, method)
     recordings = _recordings.get(key)
-    if recordings is not None and recordings.run(machine):
-        return None
     _calls[key] = calls = _calls.get(key, 0) + 1
     if method is None and (0 if recordings is None else len(recordings)) < MAX_RECORDINGS:
         from yaseer.linkages.recordings import Recordings
@@ -529,9 +532,14 @@ def _quiet_numpy():
 def make_area(number: int, method: str | None = None) -> Callable[[object], None]:
     """The program area ``number`` as a callable ``area(machine) -> None``."""
     program = PROGRAMS[number]
+    key = (number, method)
 
     def area(machine) -> None:
         try:
+            # a recorded path first, here: a call level less on every call that takes one
+            recordings = _recordings.get(key)
+            if recordings is not None and recordings.run(machine):
+                return
             frame = _call_program(machine, number, method)
         except BasicError:
             raise
@@ -540,6 +548,7 @@ def make_area(number: int, method: str | None = None) -> Callable[[object], None
         if frame is not None:
             frame.commit()
 
+    area.keeps_arrays = True  # it reads and writes elements only (Machine.call_area)
     area.__name__ = f"prog_{number}"
     area.__doc__ = program.__doc__
     return area

@@ -5,7 +5,7 @@ A recorded path is a compiled function that holds for the inputs its guards acce
 :class:`~yaseer.linkages.tracing.Retrace` for any other: whichever path a call tries, it gets
 the numbers the plain code computes or a Retrace, never other numbers.  A kept path is the code
 object of that function (its guards included) and its names, each one a function of
-:data:`tracing.BOUND`, a function the caller provides, an itemgetter of the reads, or a number:
+:data:`tracing.BOUND`, a function the caller provides, or a number:
 plain values :mod:`marshal` writes (nothing is pickled).
 
 Keys.  Every entry's key hashes the *toolchain*: the cache's format, yaseer's version, the Python,
@@ -25,9 +25,7 @@ damaged or foreign file is never loaded and the path is recorded again (and kept
 
 from __future__ import annotations
 
-import operator
 import os
-import re
 import sys
 from types import CodeType, FunctionType
 
@@ -36,11 +34,10 @@ from yaseer.linkages import tracing
 from yaseer.linkages.recordings import KEY_BUILTINS, compile_key
 from yaseer.version import __version__
 
-FORMAT = 1  # bump when the stored layout changes
+FORMAT = 2  # bump when the stored layout changes
 MAGIC = b"yaseer-recorded\n"
 KEPT = 256  # paths an index lists per program and method (the oldest are dropped)
 _LINKAGES = os.path.dirname(os.path.realpath(__file__))
-_GETTER = re.compile(r"_get_\d+(?:_\d+)+$")
 _NUMBERS = (bool, int, float, complex)
 _HELPERS = {name: value for name, value in tracing.namespace({}).items() if name != "__builtins__"}  # its own
 
@@ -72,8 +69,8 @@ def _key(*parts) -> str:
 
 def portable(names: dict, provided: dict) -> tuple | None:
     """``names`` (a record's globals) as plain values: (name, kind, value) triples, kind
-    ``bound`` (a function of :data:`tracing.BOUND` or ``provided``, by its name), ``getter`` (an
-    itemgetter of reads, rebuilt from its name) or ``number``; None when one is none of these."""
+    ``bound`` (a function of :data:`tracing.BOUND` or ``provided``, by its name) or ``number``;
+    None when one is none of these."""
     known = {**tracing.BOUND, **_HELPERS, **provided}
     plain = []
     for name, value in sorted(names.items()):
@@ -81,8 +78,6 @@ def portable(names: dict, provided: dict) -> tuple | None:
             continue
         if known.get(name) is value:
             plain.append((name, "bound", None))
-        elif _GETTER.match(name) and isinstance(value, operator.itemgetter):
-            plain.append((name, "getter", None))
         elif type(value) in _NUMBERS:
             plain.append((name, "number", value))
         else:
@@ -99,8 +94,6 @@ def restored(plain, provided: dict) -> dict | None:
             names[name] = known[name]
         elif kind == "bound" and name in _HELPERS:
             continue  # tracing.namespace adds them
-        elif kind == "getter" and _GETTER.match(name):
-            names[name] = operator.itemgetter(*(int(index) for index in name.split("_")[2:]))
         elif kind == "number" and type(value) in _NUMBERS:
             names[name] = value
         else:

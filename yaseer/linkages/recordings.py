@@ -86,16 +86,13 @@ class Recordings:
         except (LookupError, TypeError, ValueError):
             return ()
 
-    def _key_of(self, machine):
-        try:
-            return self._key(machine)
-        except (LookupError, TypeError, ValueError):  # an input missing or not a number: no key, every path tried
-            return None
-
     def run(self, machine) -> bool:
         """Run the path ``machine``'s inputs take (it commits its outputs); False when
         none of the paths holds for them."""
-        key = self._key_of(machine)
+        try:
+            key = self._key(machine)
+        except (LookupError, TypeError, ValueError):  # an input missing or not a number: no key, every path tried
+            key = None
         chosen = self._chosen.get(key)
         if chosen is not None:
             try:

@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import cmath
 import math
-import operator
 import re
 from types import SimpleNamespace
 
@@ -148,7 +147,7 @@ class Recorder:
         used once is computed where it is used (:func:`_fused`), and the values share a
         few variables (:func:`_registers`: a frame of hundreds of locals costs every
         call its clearing)."""
-        lines = _batched_finite_guards(_batched_reads(_float_parts(_once(self.lines) + epilogue, self.names), self.names))
+        lines = _batched_finite_guards(_batched_reads(_float_parts(_once(self.lines) + epilogue, self.names)))
         lines = _batched_fetches(_registers(_fused(_without_dead_lines(lines))))
         # an element read of an array shorter than at the recording raises IndexError: these
         # inputs take another path (the plain code reads 0 beyond the dimension)
@@ -188,7 +187,7 @@ _FLOAT, _COMPLEX = "float", "complex"
 _TYPED = (  # what a recorded expression computes, whatever the values: its type from its operands'
     (r"float\(.*|abs\((t\d+)\)|_(?:sqrt|cos|sin|arctan|radians|degrees|atan2|ldexp)\(.*|(t\d+)\.(?:real|imag)",
      lambda kinds: _FLOAT if all(kind in (_FLOAT, _COMPLEX) for kind in kinds) else None),
-    (r"(?:complex|_rect|_unit_degrees|_exp)\(.*", lambda kinds: _COMPLEX),
+    (r"(?:complex|_rect|_exp)\(.*|\(_quadrant\(.*", lambda kinds: _COMPLEX),
     (r"({0}) [-+*/%] ({0})|-({0})|\(({0}) if .* else ({0})\)".format(r"t\d+|_k\d+|-?[\d.]+(?:e[-+]?\d+)?j?|\([-\d.+e]+j\)"),
      lambda kinds: (None if None in kinds or not kinds else _COMPLEX if _COMPLEX in kinds else _FLOAT)),
 )
@@ -251,10 +250,11 @@ class _Pattern:
 _READ = _Pattern(r"(t\d+) = float\((_a_\w+)\[(\d+)\]\)$")
 
 
-def _batched_reads(lines: list[str], names: dict) -> list[str]:
+def _batched_reads(lines: list[str]) -> list[str]:
     """``lines`` with every element read of an array (``tN = float(_a_X[i])``) moved to
-    the first read of that array, all of them in one statement (one C call for the
-    elements, one for the conversions).  Reads are pure and the array's length guard
+    the first read of that array, one line each (a subscript of a list and a conversion of a
+    float cost least as separate steps: one C call reading them all and ``map(float, ...)``
+    cost a call three times as much).  Reads are pure and the array's length guard
     comes before its first read, so moving a read earlier changes nothing but time."""
     reads: dict[str, list[tuple[str, str]]] = {}
     for line in lines:
@@ -270,13 +270,7 @@ def _batched_reads(lines: list[str], names: dict) -> list[str]:
         elements = reads.pop(found.group(2), None)
         if elements is None:  # already read with the first
             continue
-        if len(elements) == 1:
-            out.append(line)
-            continue
-        indexes = tuple(int(index) for _, index in elements)
-        getter = f"_get_{'_'.join(map(str, indexes))}"
-        names.setdefault(getter, operator.itemgetter(*indexes))
-        out.append(f"{', '.join(name for name, _ in elements)} = _map(_float, {getter}({found.group(2)}))")
+        out += [f"{name} = _float({found.group(2)}[{index}])" for name, index in elements]
     return out
 
 
@@ -605,6 +599,18 @@ def _angle(vector):
     return vector.recorder.emit(_S.angle(vector.value), f"{callee}({vector.name}.imag, {vector.name}.real)")
 
 
+def _unit_degrees(angle):
+    """numerics.SCALAR.unit_degrees recorded as the expression it evaluates (the quadrants' exact
+    values, else the C call of u(radians)), without a Python call."""
+    if not isinstance(angle, Traced):
+        return _S.unit_degrees(angle)
+    recorder = angle.recorder
+    quadrant, rect, radians = (recorder.function(name, BOUND[name]) for name in ("_quadrant", "_rect", "_radians"))
+    # every quadrant's value is a nonzero complex number: ``or`` takes it when there is one
+    return recorder.emit(_S.unit_degrees(angle.value),
+                         f"({quadrant}({angle.name} % 360.0) or {rect}(1.0, {radians}({angle.name})))")
+
+
 def _unit_of(length):
     """numerics.SCALAR.unit_of recorded as its two C calls (ldexp(1.0, frexp(length)[1])), without a Python call."""
     if not isinstance(length, Traced):
@@ -616,18 +622,19 @@ def _unit_of(length):
 
 _S = numerics.SCALAR
 _CALLED = {**{name: getattr(_S, name) for name in
-              ("sqrt", "cos", "sin", "arctan", "radians", "degrees", "unit_degrees", "isfinite")}, "exp": cmath.exp}
+              ("sqrt", "cos", "sin", "arctan", "radians", "degrees", "isfinite")}, "exp": cmath.exp}
 
 #: Every function a record calls, under the name it has there (:meth:`Recorder.function`), and the
-#: exception its guards raise: a record's names are these, literals and itemgetters of its reads.
+#: exception its guards raise: a record's names are these and literals.
 BOUND = {**{f"_{name}": function for name, function in _CALLED.items()}, "_rect": cmath.rect,
-         "_atan2": math.atan2, "_ldexp": math.ldexp, "_frexp": math.frexp, "_Retrace": Retrace}
+         "_atan2": math.atan2, "_ldexp": math.ldexp, "_frexp": math.frexp, "_quadrant": numerics.QUADRANTS.get,
+         "_Retrace": Retrace}
 
 #: The :mod:`numerics` namespace of a recording.
 TRACE = SimpleNamespace(
     scalar=True, pi=math.pi, float=_as(float), complex=_as(complex),
     **{name: _call(name, function) for name, function in _CALLED.items()},
-    maximum=_maximum, unit=_unit, angle=_angle, unit_of=_unit_of,
+    maximum=_maximum, unit=_unit, unit_degrees=_unit_degrees, angle=_angle, unit_of=_unit_of,
     where=_where, any=lambda value: value, all=lambda value: value, real=lambda value: value.real,
     imag=lambda value: value.imag, zeros_like=_zero_like, ones_like=lambda value: 1.0,
 )

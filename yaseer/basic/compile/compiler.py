@@ -301,8 +301,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
 
     def stmt_GosubProg(self, stmt, scope):
         self.emit("#FLUSH#")
-        self.emit(f"_call({stmt.area}, _ln)")
-        self.emit("#RELOAD#")
+        self.emit(f"#CALL#_call({stmt.area}, _ln)")  # the arrays reloaded only if it says they may have changed
 
     def stmt_GosubArea(self, stmt, scope):
         self._call_program(f"_call({stmt.area}, _ln)")
@@ -820,8 +819,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         names = sorted(block.scalars)
         written = [n for n in names if block.scalars[n]]
         load = "; ".join(f"{local_name(n)} = _S[{n!r}]" for n in names)
-        load_arrays = "; ".join(f"{array_local(a)} = _A.get({a!r}) or _arr({a!r}, {d})"
-                                for a, d in sorted(block.arrays.items()))
+        load_arrays = _array_loads(block.arrays)
         store = "; ".join(f"_S[{n!r}] = {local_name(n)}" for n in written)
         loop_back = f"return {block.number}"
         self_loop = any(text == loop_back or text.endswith(": " + loop_back) for _, text in block.code)
@@ -835,9 +833,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             full_check = "if _full: _oom()"
         base = 2 if self_loop else 1
         out = [f"def _b{block.number}():"]
-        for text in (load, load_arrays):
-            if text:
-                out.append("    " + text)
+        if load:
+            out.append("    " + load)
+        out += ["    " + text for text in load_arrays]
         out.append("    _ln = None")
         if full_check == "if _full: _oom()":
             out.append(f"    _full = len(_stk) >= {MAX_STACK}")
@@ -851,9 +849,19 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
                     out.append(pad + store)
                 continue
             if text == "#RELOAD#":
-                for part in (load, load_arrays):
-                    if part:
-                        out.append(pad + part)
+                if load:
+                    out.append(pad + load)
+                out += [pad + text for text in load_arrays]
+                continue
+            if text.startswith("#CALL#"):  # a call that returns whether the arrays may have changed
+                call = text[6:]
+                if load_arrays:
+                    out.append(pad + f"if {call}:")
+                    out += [pad + "    " + line for line in load_arrays]
+                else:
+                    out.append(pad + call)
+                if load:
+                    out.append(pad + load)
                 continue
             if text.startswith("#ARRAY#"):
                 name = text[7:]
@@ -886,6 +894,17 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
 
 
 _CACHE_WRITTEN = re.compile(r"_zw[spq]\('(\w+)'")  # a binade cache's name where its writer is called
+
+
+def _array_loads(arrays: dict[str, int]) -> list[str]:
+    """The lines binding a block's arrays (name -> dimensions) to its locals: subscripts of the
+    dictionary of arrays where all exist (a method call each cost a GOSUB PROG, which reloads
+    them after the call, a few microseconds), else each made at its first use as ``_arr`` does."""
+    if not arrays:
+        return []
+    names = sorted(arrays)
+    return [f"try: {'; '.join(f'{array_local(a)} = _A[{a!r}]' for a in names)}",
+            f"except KeyError: {'; '.join(f'{array_local(a)} = _A.get({a!r}) or _arr({a!r}, {arrays[a]})' for a in names)}"]
 
 
 def split_data(text: str) -> list[str]:

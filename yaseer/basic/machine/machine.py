@@ -406,7 +406,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         """The globals the generated code of ``area`` runs with: the machine's state and helpers."""
         ns = {
             "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range, "type": type, "int": int,
-                             "BaseException": BaseException},
+                             "BaseException": BaseException, "KeyError": KeyError},
             "_M": self, "_S": self.scalars, "_A": self.arrays, "_arr": self.array_nd, "_ix": self.subscript_check(0),
             "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_wh": self.while_loops, "_END": END, "_DirectJump": DirectJump,
             "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
@@ -604,17 +604,24 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             ns.update(functions)
 
     # ------------------------------------------------------------ program areas (GOSUB PROG)
-    def call_area(self, n: int, line=None) -> None:
-        """GOSUB PROG n (at BASIC ``line``): run program area n and come back."""
+    def call_area(self, n: int, line=None) -> bool:
+        """GOSUB PROG n (at BASIC ``line``): run program area n and come back.  Returns whether
+        the arrays may have been replaced (DIM, ERASE, CLEAR), so that the caller looks up the
+        arrays it holds again: not after a Python area marked ``keeps_arrays`` (one that only
+        reads and writes elements, or makes an array not made yet) when no hook ran."""
         self.line = line
         python_area = self.python_areas.get(n)
         if python_area is not None:
             python_area(self)
+            changed = not getattr(python_area, "keeps_arrays", False)
         else:
             self._call_basic_area(n)
+            changed = True
         for hook in self.area_hooks:
             self.line = line
             hook(self, n)
+            changed = True
+        return changed
 
     def call_file(self, name: str, line=None) -> None:
         """GOSUB "file:label" (and GOTO, which ends when it comes back): run the program
