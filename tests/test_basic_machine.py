@@ -315,6 +315,34 @@ def test_python_area_reads_and_writes_shared_state():
     assert machine.screen.stream.getvalue().split() == ["20.0,2.0", "40.0,3.0"]
 
 
+def test_a_python_area_that_replaces_an_array_is_seen_after_it_unless_it_says_it_keeps_them():
+    # A Python area may ERASE and make an array anew (as a BASIC area's DIM may): the calling
+    # block looks its arrays up again after the call.  One marked ``keeps_arrays`` (the library
+    # programs: elements only) is taken at its word, and the block keeps the arrays it holds.
+    def area(machine):
+        machine.arrays["X"] = [7.0] * 11
+
+    for keeps, shown in ((False, ["7.0"]), (True, ["1.0"])):
+        area.keeps_arrays = keeps
+        machine = Machine(screen=io.StringIO(), output_format="csv")
+        machine.load("10 X(2)=1: GOSUB PROG 1: PRINT X(2)")
+        machine.set_area(1, area)
+        machine.run()
+        assert machine.screen.stream.getvalue().split() == shown
+
+
+def test_the_library_programs_keep_the_arrays_they_are_given():
+    from yaseer import binding
+
+    machine = Machine(screen=io.StringIO(), output_format="csv")
+    binding.install(machine)
+    assert all(machine.python_areas[number].keeps_arrays for number in (1, 2, 3, 5))
+    # what they make is made where the block did not hold it: X(4), the coupler point at A, is seen
+    machine.load("10 L(11)=1.2: L(12)=0.3: L(13)=1: L(14)=0.8: GOSUB PROG 2: PRINT X(4) > 0")
+    machine.run()
+    assert machine.screen.stream.getvalue().split() == ["-1.0"]
+
+
 def test_python_area_error_gets_the_calling_line():
     def area(machine):
         raise BasicError("Mechanism cannot be assembled (PROG 2)", ILLEGAL_FUNCTION_CALL)
