@@ -103,49 +103,10 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
             return x
         return result(OVERFLOW, x < 0, "#")
 
-    # A double + - * / (values.double_add ...: MATH1.ASM/MATH2.ASM's $FADDD, $FMULD,
-    # $FDIVD on the 56-bit mantissas), with a fast path for two floats whose exact
-    # result a float holds and MBF's range too (then no routine rounds anything).
-    wide, limit, tiny = values.Wide, 2.0 ** 127, 2.0 ** -128
-    exact_add, exact_subtract = values.double_add, values.double_subtract
-    exact_multiply, exact_divide = values.double_multiply, values.double_divide
-
-    def double_add(a, b):
-        if type(a) is not wide and type(b) is not wide:
-            s = a + b  # exact when both differences give the other operand back (Dekker)
-            if s - a == b and s - b == a and (tiny <= s < limit or -limit < s <= -tiny or not s):
-                return s
-        r = exact_add(a, b)
-        return r if type(r) is wide or -limit < r < limit else result(OVERFLOW, r < 0, "#")
-
-    def double_subtract(a, b):
-        if type(a) is not wide and type(b) is not wide:
-            s = a - b
-            if s + b == a and a - s == b and (tiny <= s < limit or -limit < s <= -tiny or not s):
-                return s
-        r = exact_subtract(a, b)
-        return r if type(r) is wide or -limit < r < limit else result(OVERFLOW, r < 0, "#")
-
-    def double_multiply(a, b):
-        if type(a) is not wide and type(b) is not wide:
-            p = a * b  # exact when both factors have at most 26 bits (Veltkamp's split)
-            if (a == (c := a * 134217729.0) - (c - a) and b == (c := b * 134217729.0) - (c - b)
-                    and (tiny <= p < limit or -limit < p <= -tiny or not p)):
-                return p
-        r = exact_multiply(a, b)
-        return r if type(r) is wide or -limit < r < limit else result(OVERFLOW, r < 0, "#")
-
-    def double_divide(a, b):
-        if type(a) is not wide and type(b) is not wide and b:
-            q = a / b  # exact when the quotient and the divisor have at most 26 bits and give a back
-            if (q * b == a and q == (c := q * 134217729.0) - (c - q) and b == (c := b * 134217729.0) - (c - b)
-                    and (tiny <= q < limit or -limit < q <= -tiny or not q)):
-                return q
-        try:
-            r = exact_divide(a, b)
-            return r if type(r) is wide or -limit < r < limit else result(OVERFLOW, r < 0, "#")
-        except ZeroDivisionError:
-            return result(DIVISION_BY_ZERO, a < 0, "#")
+    # A double + - * / (values.double_operations: MATH1.ASM/MATH2.ASM's $FADDD, $FMULD,
+    # $FDIVD on the 56-bit mantissas), beyond the range or by 0 the policy's value.
+    double_add, double_subtract, double_multiply, double_divide = values.double_operations(
+        lambda negative: result(OVERFLOW, negative, "#"), lambda a: result(DIVISION_BY_ZERO, a < 0, "#"))
 
     def divider(quotient, kind: str):
         """``/`` of the type ``kind`` (``"!"`` or ``"#"``) by ``quotient(a, b)``."""

@@ -252,28 +252,189 @@ def double_of(p: tuple[bool, int, int]) -> float:
     return wide
 
 
-def _exactly(routine):
-    """A double operation on the exact 56-bit values; beyond the range an infinity with
-    its sign (which the compiled code's checks hand to the overflow policy)."""
-    parts, nearest = mbf_double.parts, mbf_double.nearest_float
-
-    def run(a, b):  # (double_parts and double_of written out: the slow path of every double loop)
-        try:
-            p = routine(a.parts if type(a) is Wide else parts(a), b.parts if type(b) is Wide else parts(b))
-        except mbf_double.Overflow as overflow:
-            return -math.inf if overflow.negative else math.inf
-        if not p[2] & 7:
-            return nearest(p)
-        wide = Wide(nearest(p))
-        wide.parts = p
-        return wide
-    return run
+def _low_bits(shift: int) -> list[int]:
+    """The 6 low bits ``$SHRA``'s bit steps leave after ``shift`` (1..7) steps, for each
+    value of the register's low ``6 + shift`` bits (the bits above move down untouched):
+    each step shifts right one bit and sets bit 5, the sticky bit ST, when bit 4 is 1."""
+    table = []
+    for low in range(64 << shift):
+        register = low
+        for _ in range(shift):
+            register >>= 1
+            if register & 0x10:
+                register |= 0x20
+        table.append(register & 0x3F)
+    return table
 
 
-double_add = _exactly(mbf_double.add)
-double_subtract = _exactly(mbf_double.subtract)
-double_multiply = _exactly(mbf_double.multiply)
-double_divide = _exactly(mbf_double.divide)  # (by 0: ZeroDivisionError, for the caller's policy)
+# $SHRA's byte steps keep of each dropped byte its bit 5 only: the bits of the register
+# that set ST after ``n`` byte steps; its bit steps by table (built at a shift's first use).
+_BYTE_STICKY = [sum(0x20 << 8 * k for k in range(n)) for n in range(8)]
+_LOW_BITS: list = [None] * 8
+
+
+def double_operations(overflow, by_zero):
+    """The double ``+ - * /`` (``_dad _dsb _dml _ddv``) of two operands (floats, which
+    every double yaseer holds is exactly, or :class:`Wide`), each mbf_double's routine
+    (``$FADDD``, ``$FSUBD``, ``$FMULD``, ``$FDIVD``) on the exact 56-bit values written
+    out in one frame: they run on every fractional double of a gw program, where a call
+    costs more than the work (tests/test_mbf_double.py holds them to the routines bit for
+    bit).  Two floats whose exact result a float holds inside MBF's range take a float
+    path first (no routine rounds anything there).  A result beyond the range is
+    ``overflow(negative)``, one below it 0; a division by 0 is ``by_zero(a)``."""
+    frexp, parts, wide = math.frexp, mbf_double.parts, Wide
+    scale = [2.0 ** (exponent - 184) for exponent in range(256)]
+    two56, limit, tiny, split = 2.0 ** 56, 2.0 ** 127, 2.0 ** -128, 134217729.0
+    byte_sticky, low_bits = _BYTE_STICKY, _LOW_BITS
+
+    known: dict = {}  # the parts of the first floats seen (a program's constants among them)
+
+    def operand(x):
+        """A float's parts (mbf_double.parts, the common case written out)."""
+        p = known.get(x)
+        if p is None:
+            m, e = frexp(x)
+            if -128 < e < 128 and m:
+                p = (True, e + 128, int(-m * two56)) if m < 0 else (False, e + 128, int(m * two56))
+            else:
+                p = parts(x)
+            if len(known) < 256:
+                known[x] = p
+        return p
+
+    def made(negative: bool, exponent: int, mantissa: int):
+        """The result (values.double_of) of a rounded mantissa."""
+        if exponent > 255:
+            return overflow(negative)
+        if exponent <= 0:
+            return 0.0
+        value = mantissa * scale[exponent]  # (the int made a float, rounded half to even, then scaled exactly)
+        if negative:
+            value = -value
+        if not mantissa & 7:
+            return value
+        result = wide(value)
+        result.parts = (negative, exponent, mantissa)
+        return result
+
+    def add(a, b, flip: bool = False):
+        if type(a) is not wide and type(b) is not wide:
+            s = a - b if flip else a + b  # exact when both operands come back (Dekker)
+            if ((s + b == a and a - s == b) if flip else (s - a == b and s - b == a)) and (
+                    tiny <= s < limit or -limit < s <= -tiny or not s):
+                return s
+            na, ea, ma = operand(a)
+            nb, eb, mb = operand(b)
+        else:
+            na, ea, ma = a.parts if type(a) is wide else operand(a)
+            nb, eb, mb = b.parts if type(b) is wide else operand(b)
+        if flip:
+            nb = not nb
+        if not eb:
+            return made(na, ea, ma) if ea else 0.0
+        if not ea:
+            return made(nb, eb, mb)
+        if ea < eb:
+            na, ea, ma, nb, eb, mb = nb, eb, mb, na, ea, ma
+        shift = ea - eb
+        if shift >= 57:
+            return made(na, ea, ma)
+        register, other = ma << 8, mb << 8
+        if shift >= 8:  # $SHRA
+            other = (other >> (shift & ~7)) | (0x20 if other & byte_sticky[shift >> 3] else 0)
+            shift &= 7
+        if shift:
+            table = low_bits[shift]
+            if table is None:
+                table = low_bits[shift] = _low_bits(shift)
+            other = (other >> shift) & ~0x3F | table[other & ((64 << shift) - 1)]
+        if na == nb:
+            register += other
+            if register >> 64:
+                register >>= 1
+                ea += 1
+        else:
+            register -= other
+            if register < 0:
+                register, na = -register, not na
+            if not register:
+                return 0.0
+            shift = 64 - register.bit_length()  # $NORMD
+            register <<= shift
+            ea -= shift
+        register += 0x80  # $ROUND
+        if register >> 64:
+            register >>= 1
+            ea += 1
+        mantissa = register >> 8
+        if not register & 0xFF:
+            mantissa &= ~1
+        return made(na, ea, mantissa)
+
+    def subtract(a, b):
+        return add(a, b, True)
+
+    def multiply(a, b):
+        if type(a) is not wide and type(b) is not wide:
+            p = a * b  # exact when both factors have at most 26 bits (Veltkamp's split)
+            if (a == (c := a * split) - (c - a) and b == (c := b * split) - (c - b)
+                    and (tiny <= p < limit or -limit < p <= -tiny or not p)):
+                return p
+        na, ea, ma = a.parts if type(a) is wide else operand(a)
+        nb, eb, mb = b.parts if type(b) is wide else operand(b)
+        if not ea or not eb:
+            return 0.0
+        product = ma * mb  # 2**110 .. 2**112
+        if product >> 111:
+            exponent, mantissa, rest, half = ea + eb - 128, product >> 56, product & 0xFFFFFFFFFFFFFF, 1 << 55
+        else:
+            exponent, mantissa, rest, half = ea + eb - 129, product >> 55, product & 0x7FFFFFFFFFFFFF, 1 << 54
+        if rest > half or (rest == half and mantissa & 1):
+            mantissa += 1
+            if mantissa >> 56:
+                mantissa >>= 1
+                exponent += 1
+        return made(na != nb, exponent, mantissa)
+
+    def divide(a, b):
+        if type(a) is not wide and type(b) is not wide:
+            if not b:
+                return by_zero(a)
+            q = a / b  # exact when the quotient and the divisor have at most 26 bits and give a back
+            if (q * b == a and q == (c := q * split) - (c - q) and b == (c := b * split) - (c - b)
+                    and (tiny <= q < limit or -limit < q <= -tiny or not q)):
+                return q
+        na, ea, ma = a.parts if type(a) is wide else operand(a)
+        nb, eb, mb = b.parts if type(b) is wide else operand(b)
+        if not eb:
+            return by_zero(a)
+        if not ea:
+            return 0.0
+        quotient, rest = divmod(ma << 64, mb)  # 64 or 65 bits, then the remainder as a sticky bit
+        if quotient >> 64:
+            exponent, mantissa, rest = ea - eb + 129, quotient >> 9, (quotient & 0x1FF) << 1 | (rest != 0)
+            half = 0x200
+        else:
+            exponent, mantissa, rest = ea - eb + 128, quotient >> 8, (quotient & 0xFF) << 1 | (rest != 0)
+            half = 0x100
+        if rest > half or (rest == half and mantissa & 1):
+            mantissa += 1
+            if mantissa >> 56:
+                mantissa >>= 1
+                exponent += 1
+        return made(na != nb, exponent, mantissa)
+
+    return add, subtract, multiply, divide
+
+
+def _infinity(negative: bool) -> float:
+    return -math.inf if negative else math.inf
+
+
+def _no_quotient(a) -> float:
+    raise ZeroDivisionError("division by zero")
+
+
 
 
 class Wide(Double):
@@ -372,6 +533,11 @@ class Wide(Double):
     def __ceil__(self):
         whole, fraction = self._whole()
         return -whole if self.parts[0] else whole + fraction
+
+
+# Beyond the range an infinity with its sign (the compiled code's checks hand it to the
+# overflow policy); by 0 ZeroDivisionError (for the caller's policy).
+double_add, double_subtract, double_multiply, double_divide = double_operations(_infinity, _no_quotient)
 
 
 def double_from_decimal(whole: str, fraction: str, exponent: int) -> float:
