@@ -236,17 +236,23 @@ def read_number(text: str, largest: float | None = None) -> tuple[float, int]:
 
 
 def val_typed(text: str, largest: float) -> tuple[float, str]:
-    """VAL in gw: the number (:func:`read_number`) and the type GW-BASIC's reader gives
-    it, as its tokeniser types a literal: ``"#"`` for a ``D`` exponent, a ``#`` after
-    it or more than 7 significant digits, else ``"!"`` (``&H``/``&O`` numbers too),
-    whose value is the one GW's conversion gives (``values.single_literal``),
-    infinite beyond the single range."""
-    value, _, kind, literal = _read(text, largest)
-    if kind == "!" and literal and 0.0 < abs(value) < math.inf:
+    """VAL in gw: the number (:func:`read_number`) and its type as GW-BASIC's VAL gives
+    them.  VAL reads with ``FINDBL`` (BISTRS.ASM VAL; MATH1.ASM ``$FINDB``, the reader's
+    forced-double entry): a double, whatever the digits, exponent letter or ``#``
+    (``VAL("1.1")`` is the double 1.1); only a ``!`` after the number makes it single
+    (``$FINS``), whose value is the one GW's conversion gives (``values.single_literal``).
+    ``&H``/``&O`` numbers are GW's integers (``OCTCNS``), kept as singles of the same value.
+    Beyond the range infinite."""
+    value, end, kind, literal = _read(text, largest)
+    if not literal:
+        return value, "!"
+    if text[end:].lstrip(_BLANKS)[:1] != "!":
+        return value, "#"
+    if 0.0 < abs(value) < math.inf:
         from yaseer.basic.arithmetic.values import single_literal, to_single
 
         value = math.copysign(to_single(single_literal(literal)), value)
-    return value, kind
+    return value, "!"
 
 
 def _read(text: str, largest: float | None) -> tuple[float, int, str, str]:

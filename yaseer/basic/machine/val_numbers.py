@@ -1,10 +1,9 @@
 """VAL in gw: a number whose BASIC type is known only when it runs.
 
-GW-BASIC's VAL reads its text with the reader its tokeniser uses for literals, and the
-text decides the result's type: a double for a ``D`` exponent, a ``#`` or more than 7
-significant digits, else a single (``gwfunctions.val_typed``; PC-BASIC 2.0.8 shows the
-same: ``VAL("1")/3`` is .3333334, ``VAL("1#")/3`` .3333333333333333, ``VAL("-1E+39")``
-Overflow and -1.701412E+38).  The compiler gives VAL the type ``"?"``
+GW-BASIC's VAL reads its text with the number reader's forced-double entry (BISTRS.ASM
+VAL calls FINDBL): a double, unless a ``!`` after the number makes it single
+(``gwfunctions.val_typed``: ``VAL("1")/3`` is .3333333333333333, ``VAL("1!")/3``
+.3333334, ``VAL("-1E+39")`` Overflow and -1.701411834604692D+38).  The compiler gives VAL the type ``"?"``
 (``number_models.TypedNumbers``): the value is a plain float for a single and a
 :class:`numbers.Double` for a double, and the helpers below give an operation on such a
 value the type GW-BASIC gives it (a single with a single or an integer stays single, a
