@@ -377,3 +377,20 @@ def test_literal_and_val_type_with_trailing_zeros_as_pcbasic(pc):
     cases = [f"PRINT {text}" for text in literals] + [f'PRINT VAL("{text}")' for text in literals]
     reference = cases[:len(literals)] + [f'PRINT VAL("{read_as_double(text)}")' for text in literals]
     assert differing_rows(pc, cases, reference=reference) == []
+
+
+def test_print_using_rounds_a_doubles_16_digits_from_its_56_bits_as_pcbasic(pc):
+    """PRINT USING of a double rounds the 16 digits PRINT finds from its 56-bit mantissa
+    (GW's PUFOUT on the double's digits, as a single's 7): ``2#/3`` with sixteen places is
+    .6666666666666667 (the nearest IEEE double's digits gave ...666).  Quotients and
+    products of doubles, fixed-point fields of 8 to 16 places, against PC-BASIC 2.0.8."""
+    rng = random.Random(base_seed() + 24)
+    cases = ['PRINT USING "##.################"; 2#/3']
+    for _ in range(case_count(200)):
+        a, b = rng.randint(1, 99999), rng.randint(3, 9999)
+        places = rng.randint(8, 16)
+        whole = "#" * max(1, 16 - places - len(str(a // b)) + 1) if rng.random() < 0.5 else "####"
+        value = rng.choice([f"{a}#/{b}", f"-{a}#/{b}", f"({a}#/{b})*{rng.randint(2, 99)}#"])
+        cases.append(f'PRINT USING "{whole}.{"#" * places}"; {value}')
+    bad = differing_rows(pc, cases)
+    assert not bad, f"{len(bad)} of {len(cases)} differ, e.g. {bad[:5]}"

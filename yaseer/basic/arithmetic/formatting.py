@@ -273,10 +273,49 @@ def _wide():
     return Context(prec=800, Emax=1000, Emin=-1000)
 
 
-def _decimal(x: float):
-    """The shortest ``decimal.Decimal`` that reads back as ``abs(x)``."""
+class Shown(float):
+    """A gw double on its way to PRINT USING, with its exact 56-bit value (``parts``, as
+    mbf_double's), from which :func:`_bracketed` finds the digits the field shows."""
+
+    __slots__ = ("parts",)
+
+
+def _bracketed(parts, places: int):
+    """``abs`` of a 56-bit double rounded to ``places`` decimals, at most 16 significant
+    digits (zeros after them), as MATH1.ASM's PUFOUT finds them: ``$FOTNV`` brackets the
+    double into 16 whole digits (times or divided by a power of ten, in double
+    precision), the digits beyond the field are divided out (``$FDIVD``) and the rest
+    rounded half up.  (The power of ten here is the nearest double to it: GW's table
+    holds 10**0..10**23 exactly and multiplies beyond.)"""
     from decimal import Decimal
 
+    from yaseer.basic.arithmetic import mbf_double
+
+    _, exponent, mantissa = parts
+    if not exponent:
+        return Decimal(0).scaleb(-places)
+    shift = exponent - 184
+    exact = Decimal(mantissa << shift) if shift >= 0 else Decimal(f"{mantissa * 5 ** -shift}E{shift}")
+    bracket = 15 - exact.adjusted()
+    places = min(places, bracket)
+    p = (False, exponent, mantissa)
+    ten = mbf_double.from_decimal(1, abs(bracket))
+    p = mbf_double.multiply(p, ten) if bracket >= 0 else mbf_double.divide(p, ten)
+    if bracket > places:
+        p = mbf_double.divide(p, mbf_double.from_decimal(1, bracket - places))
+    _, exponent, mantissa = p
+    shift = exponent - 184
+    whole = mantissa << shift if shift >= 0 else (mantissa >> -shift) + (mantissa >> (-shift - 1) & 1)
+    return Decimal(whole).scaleb(-places)
+
+
+def _decimal(x: float):
+    """``abs(x)`` as a ``decimal.Decimal``: a :class:`Shown`'s 16 digits, else the
+    shortest decimal that reads back as the float."""
+    from decimal import Decimal
+
+    if type(x) is Shown:
+        return _bracketed(x.parts, 99)
     return Decimal(repr(abs(float(x))))
 
 
@@ -297,7 +336,10 @@ def _fixed_body(x: float, field: NumericField) -> str:
     from decimal import ROUND_HALF_UP, Decimal, localcontext
 
     with localcontext(_wide()):
-        rounded = _decimal(x).quantize(Decimal(1).scaleb(-field.decimals), rounding=ROUND_HALF_UP)
+        if type(x) is Shown:
+            rounded = _bracketed(x.parts, field.decimals).quantize(Decimal(1).scaleb(-field.decimals))
+        else:
+            rounded = _decimal(x).quantize(Decimal(1).scaleb(-field.decimals), rounding=ROUND_HALF_UP)
     whole, _, fraction = f"{rounded:f}".partition(".")
     if field.comma:
         whole = _group_thousands(whole)
@@ -403,7 +445,7 @@ def _format_value(value: Value, field: StringField | NumericField) -> str:
         raise BasicError("Type mismatch", TYPE_MISMATCH)
     if is_string:
         return format_string(value, field)
-    return format_number(float(value), field)
+    return format_number(value if type(value) is Shown else float(value), field)
 
 
 def using(fmt: str, values: Sequence[float | str], pieces: bool = False):

@@ -203,7 +203,8 @@ class InputOutput:
         """PRINT USING's values as floats and strings (a typed single as its 7 digits)."""
         singles = self.dialect.typed_numbers
         return [(_single_decimal(v) if singles and v == v and v - v == 0 else v) if type(v) is float
-                else v if type(v) is str else _as_number(v) for v in items]
+                else v if type(v) is str else _double_decimal(v) if isinstance(v, values.Double) and v - v == 0
+                else _as_number(v) for v in items]
 
     def print_using(self, device: int, fmt: str, values: tuple, newline: bool) -> None:
         """PRINT USING fmt; values (the format rules live in ``formatting.using``)."""
@@ -431,6 +432,16 @@ def _single_decimal(x: float) -> float:
     the binary value: ``2.675`` is 2.68, ``1/3`` .3333334000 with ten places)."""
     text = values.unsigned_text(x, values.SINGLE_DIGITS, "E")
     return -float(text) if x < 0 else float(text)
+
+
+def _double_decimal(x) -> float:
+    """A gw double with its exact 56-bit value, whose digits PRINT USING finds as
+    MATH1.ASM's PUFOUT does (formatting.Shown): ``2#/3`` with sixteen places is
+    .6666666666666667 (the nearest IEEE double's digits gave ...666), as PC-BASIC 2.0.8
+    prints."""
+    shown = formatting.Shown(x)
+    shown.parts = values.double_parts(x)
+    return shown
 
 
 def _as_number(value):
