@@ -317,6 +317,16 @@ def double_operations(overflow, by_zero):
         result.parts = (negative, exponent, mantissa)
         return result
 
+    def nearest(negative: bool, exponent: int, mantissa: int, rest: int, half: int):
+        """The result of a mantissa with ``rest`` below it (``half`` its half unit),
+        rounded half to even (mbf_double._nearest)."""
+        if rest > half or (rest == half and mantissa & 1):
+            mantissa += 1
+            if mantissa >> 56:
+                mantissa >>= 1
+                exponent += 1
+        return made(negative, exponent, mantissa)
+
     def add(a, b, flip: bool = False):
         if type(a) is not wide and type(b) is not wide:
             s = a - b if flip else a + b  # exact when both operands come back (Dekker)
@@ -389,12 +399,7 @@ def double_operations(overflow, by_zero):
             exponent, mantissa, rest, half = ea + eb - 128, product >> 56, product & 0xFFFFFFFFFFFFFF, 1 << 55
         else:
             exponent, mantissa, rest, half = ea + eb - 129, product >> 55, product & 0x7FFFFFFFFFFFFF, 1 << 54
-        if rest > half or (rest == half and mantissa & 1):
-            mantissa += 1
-            if mantissa >> 56:
-                mantissa >>= 1
-                exponent += 1
-        return made(na != nb, exponent, mantissa)
+        return nearest(na != nb, exponent, mantissa, rest, half)
 
     def divide(a, b):
         if type(a) is not wide and type(b) is not wide:
@@ -417,12 +422,7 @@ def double_operations(overflow, by_zero):
         else:
             exponent, mantissa, rest = ea - eb + 128, quotient >> 8, (quotient & 0xFF) << 1 | (rest != 0)
             half = 0x100
-        if rest > half or (rest == half and mantissa & 1):
-            mantissa += 1
-            if mantissa >> 56:
-                mantissa >>= 1
-                exponent += 1
-        return made(na != nb, exponent, mantissa)
+        return nearest(na != nb, exponent, mantissa, rest, half)
 
     return add, subtract, multiply, divide
 
