@@ -413,3 +413,28 @@ def test_a_complex_constant_keeps_the_signs_of_its_zeros():
         run([0.0])
         assert [math.copysign(1.0, part) for part in (done[0].real, done[0].imag)] == \
             [math.copysign(1.0, part) for part in (product.value.real, product.value.imag)], constant
+
+
+def test_the_key_function_gives_the_values_of_its_tests_as_written():
+    # compile_key reads each element once and writes a test of a float as the comparison it
+    # is; the values must be those of the tests' own texts, element by element, on any input
+    from types import SimpleNamespace
+
+    from yaseer.linkages.recordings import KEY_BUILTINS, compile_key
+
+    tests = ["bool((float(_a_L[10]) == 0.0))", "bool((float(_a_W[5]) != 0))", "bool(float(_a_F[29]))",
+             "bool((float(_a_Q[2]) == 2.0))", "bool((float(_a_Q[2]) == 3.0))", "bool(float(_a_F[34]))",
+             "len(_a_T) > 3", "bool((float(_a_R[8]) < float(_a_R[9])))", "bool((float(_a_R[8]) <= 0))",
+             "bool((float(_M.scalars.get('G', 0.0)) > 1e-05))", "bool((float(_a_L[10]) == 1.0))"]
+    key = compile_key(tests)
+    rng = random.Random(22)
+    choices = [0.0, -0.0, 1.0, 2.0, 3.0, 2, 0, math.nan, math.inf, -math.inf, 1e-300, -5e-324]
+    for _ in range(2000):
+        pick = lambda: rng.choice(choices) if rng.random() < 0.8 else rng.uniform(-3.0, 3.0)  # noqa: E731
+        arrays = {name: [pick() for _ in range(rng.choice((3, 40)) if name == "T" else 40)]
+                  for name in ("L", "W", "F", "Q", "T", "R")}
+        m = SimpleNamespace(arrays=arrays, scalars={"G": pick()})
+        names = {"__builtins__": dict(KEY_BUILTINS), "_M": m, **{f"_a_{name}": a for name, a in arrays.items()}}
+        expected = tuple(eval(test, names) for test in tests)
+        got = key(m)
+        assert got == expected and all(type(a) is type(b) for a, b in zip(got, expected))

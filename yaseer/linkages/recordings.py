@@ -115,11 +115,28 @@ class Recordings:
         return False
 
 
+_READ_TEXT = re.compile(r"float\(_a_(\w+)\[(\d+)\]\)")
+_COMPARED = re.compile(r"bool\((\((?:_e\w+|[-\d.e]+) (?:==|!=|<=?|>=?) (?:_e\w+|[-\d.e]+)\))\)")
+_TRUTH = re.compile(r"bool\((_e\w+)\)")
+
+
 def compile_key(tests) -> "Callable":
     """The function ``key(_M)``: the tuple of ``tests``' values (Python texts reading
-    ``_M``'s arrays as ``_a_X`` and its scalars)."""
-    arrays = dict.fromkeys(name for test in tests for name in _ARRAY.findall(test))
+    ``_M``'s arrays as ``_a_X`` and its scalars).
+
+    Each element the tests read is read and made a float once (most tests read a choice,
+    ``Q(n)`` several times), and a test of a float is written as the comparison it is:
+    ``bool((x == 2.0))`` as ``(x == 2.0)``, ``bool(x)`` as ``(x != 0.0)`` (NaN too is true):
+    the same values with fewer calls, on every call of a program."""
+    reads: dict[str, str] = {}  # the text reading an element -> its local
+
+    def local(found) -> str:
+        return reads.setdefault(found.group(0), f"_e{found.group(1)}_{found.group(2)}")
+
+    tests = [_TRUTH.sub(r"(\1 != 0.0)", _COMPARED.sub(r"\1", _READ_TEXT.sub(local, test))) for test in tests]
+    arrays = dict.fromkeys(name for test in [*tests, *reads] for name in _ARRAY.findall(test))
     lines = ["_arrays = _M.arrays"] + [f"_a_{name} = _arrays[{name!r}]" for name in arrays]
+    lines += [f"{name} = {text}" for text, name in reads.items()]
     lines.append(f"return ({''.join(test + ', ' for test in tests)})")
     text = "def key(_M):\n" + "".join(f"    {line}\n" for line in lines)
     namespace = {"__builtins__": dict(KEY_BUILTINS)}
