@@ -557,6 +557,17 @@ class Session:
             self.current_line = last
         if in_program:
             self._can_continue = False
+        self._take_auto()
+
+    def _take_auto(self) -> None:
+        """AUTO run by the program or the direct line: the session numbers the lines typed
+        next (the step left out after a comma: the one AUTO used last)."""
+        take = getattr(self.engine, "take_auto", None)
+        request = take() if take is not None else None
+        if request is not None:
+            start, step = request
+            self._auto_step = self._auto_step if step is None else step
+            self.auto = (start, self._auto_step)
 
     def _take_back_programs(self) -> None:
         """The areas a program changed (its LOAD, NEW, DELETE, RENUM, LOAD ALL) become the
@@ -710,6 +721,13 @@ class MachineEngine:
 
                 binding.install(machine)
         self._given = {area: dict(lines) for area, lines in machine.programs.items()}
+
+    def take_auto(self) -> tuple[int, int | None] | None:
+        """The AUTO a program or direct line ran (start, step or None), once; None if none."""
+        if self._machine is None:
+            return None
+        request, self._machine.auto_request = self._machine.auto_request, None
+        return request
 
     def changed_programs(self) -> dict[int, Program]:
         """The areas whose lines the machine changed since the session gave them (a

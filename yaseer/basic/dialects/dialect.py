@@ -44,7 +44,7 @@ RANDOM_FILE_WORDS = ("FIELD", "GET", "PUT", "LSET", "RSET", "RESET")
 # ... and the statements that load other programs into a running one (yaseer/basic/machine/chaining.py)
 CHAIN_WORDS = ("CHAIN", "COMMON", "MERGE", "DELETE")
 # ... the commands a program may also run (LIST, SAVE, RUN "file"...) and KEY ON/OFF
-COMMAND_WORDS = ("RUN", "LIST", "LLIST", "LOAD", "SAVE", "NEW", "EDIT", "RENUM", "KEY", "OFF", "SYSTEM")
+COMMAND_WORDS = ("RUN", "LIST", "LLIST", "LOAD", "SAVE", "NEW", "EDIT", "RENUM", "AUTO", "KEY", "OFF", "SYSTEM")
 # ... and the text screen's (yaseer/basic/machine/display.py) and keyboard's
 SCREEN_WORDS = ("LOCATE", "CSRLIN", "COLOR", "SCREEN", "VIEW", "INKEY$")
 

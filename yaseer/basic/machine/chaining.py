@@ -84,6 +84,8 @@ class Chaining:
             self._every_area(name, argument)
         if name == "KEY":
             return
+        if name == "AUTO":
+            self._auto_mode(*argument)
         if name == "RUN":
             if isinstance(argument, str):
                 raise RunAgain(self._program_lines(argument), None, option == "R")
@@ -122,6 +124,16 @@ class Chaining:
             for message in messages:
                 self.print_items(0, (message,), True)
             raise ChainTo(renumbered, False, None, True, None, False)
+        raise ProgramEnd()
+
+    def _auto_mode(self, start: int | None, step: int | None) -> None:
+        """AUTO [start][, [step]] in a program (GWMAIN.ASM AUTO): the program stops and the
+        command level numbers the lines typed next from ``start`` (10) by ``step`` (10; None:
+        the step AUTO used last), which the session takes up (``auto_request``); a step of
+        0 is Illegal function call.  Run without the session, the program ends there."""
+        if step == 0:
+            raise error_for(ILLEGAL_FUNCTION_CALL)
+        self.auto_request = (10 if start is None else start, step)
         raise ProgramEnd()
 
     def _every_area(self, name: str, argument) -> None:

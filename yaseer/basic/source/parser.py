@@ -396,6 +396,21 @@ class _ToAst:
                 values[place] = _line_number(token)
         return ast.Command("RENUM", tuple(values))
 
+    def auto_stmt(self, c):
+        """AUTO [start | .][, [step]]: (start, step); start None: 10; step 10 without a comma,
+        None after a comma alone (the step AUTO used last)."""
+        start, step = None, 10
+        for k, token in enumerate(c[1:]):
+            if token.type == "PERIOD":
+                start = ast.CURRENT_LINE
+            elif token.type == "COMMA":
+                step = None
+            elif k == 0:
+                start = _line_number(token)
+            else:
+                step = _line_number(token)
+        return ast.Command("AUTO", (start, step))
+
     def key_stmt(self, c):
         return ast.Key(c[1].type)
 

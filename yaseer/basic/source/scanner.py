@@ -63,7 +63,7 @@ DIALECT_WORDS = {
     "FIELD": "FIELD", "GET": "GET", "PUT": "PUT", "LSET": "LSET", "RSET": "LSET", "RESET": "RESET",
     "CHAIN": "CHAIN", "COMMON": "COMMON", "MERGE": "MERGE", "DELETE": "DELETE",
     "RUN": "RUN", "LIST": "LIST", "LLIST": "LIST", "LOAD": "LOAD", "SAVE": "SAVE", "NEW": "NEW",
-    "EDIT": "EDIT", "RENUM": "RENUM", "KEY": "KEY", "OFF": "OFF", "SYSTEM": "SYSTEM", "ALL": "ALL",
+    "EDIT": "EDIT", "RENUM": "RENUM", "AUTO": "AUTO", "KEY": "KEY", "OFF": "OFF", "SYSTEM": "SYSTEM", "ALL": "ALL",
     "CSRLIN": "SYSVAR", "COLOR": "COLOR", "SCREEN": "SCREEN", "VIEW": "VIEW",
 }
 # GW-BASIC reads these keywords even when name characters follow (``FNA``, ``TAB(``).
