@@ -146,6 +146,8 @@ class InputOutputCompiler:
             value = f"{values}[{n}]"
             if kinds[n] == "n" and not self.numbers.typed:  # None: an empty answer keeps the value
                 value = f"({value} if {value} is not None else {self.expr(target, scope)[0]})"
+            elif kinds[n] == "s" and self.counts_strings:  # copied out of the keyboard buffer (LETCN6)
+                value = f"_scopy({value})"
             self.assign(target, value, "s" if kinds[n] == "s" else self.numbers.widest,
                         scope, self.numbers.typed and kinds[n] != "s")
 

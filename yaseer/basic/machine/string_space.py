@@ -1,7 +1,7 @@
 """GW-BASIC's string space: where a new string must find room, or ``Out of string space``.
 
 GW-BASIC puts every string it makes (a ``+``, STRING$, SPACE$, LEFT$ ..., a string read
-from a file, a copy of another variable's string) below the last one, in the free bytes
+from a file or typed at INPUT or LINE INPUT, a copy of another variable's string) below the last one, in the free bytes
 between the variables and the strings (BISTRS.ASM ``GETSPA``).  When they run out it
 collects the garbage once (``GARBAG``: only the strings variables still hold are kept)
 and tries again; if the string still does not fit: ``Out of string space`` (error 14).
@@ -12,8 +12,9 @@ yaseer keeps its strings in Python and has no garbage, so it counts: the bytes o
 strings made since the last collection, against the free bytes counted then; a collection
 counts the strings the variables hold now (machine/memory_model.py, with the running
 block's own values, which it has not stored back yet), and the garbage is what was made
-since less what the variables hold of it.  A literal assigned is not a new string (GW
-points into the program text).
+since less what the variables hold of it.  A literal assigned is not a new string, nor is
+a string READ takes from DATA (GW points into the program text: GWMAIN.ASM LETCN6 copies
+a string only from the keyboard buffer, a file buffer or the string space).
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ from yaseer.basic.errors import OUT_OF_STRING_SPACE, BasicError, STRING_TOO_LONG
 
 # the helpers of the generated code that make a new string (their result is taken from the space)
 MAKERS = ("_string", "_space", "_left", "_right", "_mid", "_chr", "_strs", "_hex", "_oct",
-          "_mki", "_mks", "_mkd", "_fin_s", "_fline", "_input_chars", "_date", "_time")
+          "_mki", "_mks", "_mkd", "_fin_s", "_fline", "_input_chars", "_date", "_time", "_line_input")
 _BLOCK = re.compile(r"_b\d+$")  # a block function of the generated code
 
 
