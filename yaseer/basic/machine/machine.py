@@ -241,8 +241,6 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self._line_values: tuple[list, list] = ([], [])
         self.tracing = False  # TRON: lines run are shown (the dialect's trace_mark)
         self.subscript_base = 0  # OPTION BASE
-        # the program's sequential files, all in one directory (``files``; default the current one)
-        words = self.dialect.words
         # gw: program area 0 came from a file SAVEd with ,P (LIST, EDIT and a SAVE other than ,P
         # refuse it: GIODSK.ASM PROCHK); LOAD, RUN "file" and CHAIN set it, NEW clears it
         self.program_protected = False
@@ -251,6 +249,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         # gw: the simple variables a statement made (recorded only where a SWAP may ask: compiler.made)
         self.made: set[str] = set()
         self._types_as_statements = None  # the program of area 0 a RUN n entered past its DEFs (_run_types)
+        # the program's sequential files, all in one directory (``files``; default the current one)
+        words = self.dialect.words
         self.files = FileTable(Sandbox(files), self.dialect.file_devices, words.absent_devices if words else None)
         # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
         # ``yaseer run`` stops at once): see _on_interrupt.
