@@ -941,7 +941,7 @@ def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=(
     compiled = compiler.compile()
     if compiler.numbers.cache_bases and sum(len(text) for _, text in compiled.pieces) > CACHED_CODE_LIMIT:
         compiler = AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect, def_types,
-                            statement_types)
+                                statement_types)
         compiler.numbers.caching = False  # the code without them (the machine's limit is 4 MB)
         compiled = compiler.compile()
     return compiled
