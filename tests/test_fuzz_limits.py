@@ -43,12 +43,13 @@ def test_same_variable_for_loop_reentered_by_goto_reuses_its_frame():
 
 
 def test_the_largest_allowed_array_works():
-    # yaseer's own budget, in gw (whose 64 KB yaseer does not enforce on arrays); casio's
-    # arrays end at the FX-850P's 8192-byte variable area first (CLEAR.md: test_casio_words)
-    for source in ('10 DIM A(1999999): A(1999999) = 1: PRINT A(1999999)\n',
-                   '10 DIM A$(240000): A$(240000) = "x": PRINT A$(240000)\n'):
+    # gw's arrays end at GW-BASIC's 64 KB segment (test_gw_memory), casio's at the FX-850P's
+    # 8192-byte variable area (CLEAR.md: test_casio_words), both before yaseer's own budget
+    for source in ('10 DIM A(14000): A(14000) = 1: PRINT A(14000)\n',
+                   '10 DIM A$(14000): A$(14000) = "x": PRINT A$(14000)\n'):
         result = yaseer.run(source, dialect="gw")
         assert result.error is None, result.error
+    assert yaseer.run('10 DIM A(1999999)\n', dialect="gw").error == "Out of memory in 10"
     assert run_mutant('10 DIM A(1999999)\n', with_prog5=False) == "Out of memory in 10"
 
 

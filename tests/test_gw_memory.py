@@ -141,3 +141,28 @@ def test_strings_typed_at_input_take_string_space_as_pcbasic(tmp_path):
         machine.run()
         ours = [row for row in screen.getvalue().split("\n") if row.startswith("F")]
         assert ours == theirs, (source, answers)
+
+
+def test_arrays_beyond_the_64_kb_segment_are_out_of_memory_as_pcbasic(pc):
+    """An array that does not fit in GW-BASIC's segment with the program, the variables and
+    their strings is Out of memory (7) and is not made; where the string space's garbage is
+    in the way it is collected first (GWMAIN.ASM REASON, BISTRS.ASM GARBAG): generated
+    programs against PC-BASIC 2.0.8's FRE(0) and errors."""
+    import random
+
+    from test_differential_support import base_seed, case_count
+
+    rng = random.Random(base_seed() + 53)
+    out_of_memory = 0
+    for _ in range(max(case_count() // 5, 20)):
+        kind = rng.choice(["", "%", "#", "$"])
+        before = rng.choice(["", 'FOR I=1 TO 100: T$=STRING$(200,"x"): NEXT: ',
+                             "DIM C$(100): FOR I=1 TO 100: C$(I)=SPACE$(100): NEXT: ", "X=1: Y#=2: "])
+        source = (f"10 ON ERROR GOTO 100\n20 {before}PRINT FRE(0): DIM A{kind}({rng.randint(1000, 16000)}): PRINT FRE(0)\n"
+                  f"30 DIM D({rng.randint(1, 9000)}): PRINT FRE(0): ERASE A{kind}: PRINT FRE(0): END\n"
+                  '100 PRINT "E";ERR;ERL;FRE(0): END\n')
+        pc.statement("ON ERROR GOTO 0")
+        theirs = pc.program(source)
+        out_of_memory += "E 7 " in theirs
+        assert run_gw(source) == theirs, source
+    assert out_of_memory >= 4, out_of_memory  # the programs reach the limit, not only use memory

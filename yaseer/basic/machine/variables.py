@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import math
 
-from yaseer.basic.machine import memory_model, runtime
+from yaseer.basic.machine import memory_model, runtime, string_space
 from yaseer.basic.errors import BasicError, DUPLICATE_DEFINITION, ILLEGAL_FUNCTION_CALL, OUT_OF_MEMORY, SUBSCRIPT_OUT_OF_RANGE
 from yaseer.basic.compile.number_models import initial_value, local_name
 
@@ -95,10 +95,15 @@ class Variables:
         """Where the dialect's variable area has a size (casio: 8192 bytes, CLEAR.md's
         FX-880P figure), an array that does not fit in it with the other variables (bytes as
         FRE counts them: casio_words.variable_bytes) is Out of memory (the Casio's OM error)
-        and is not made; ``old``: the array, its sizes and the budget before (None: none)."""
+        and is not made; in gw one that does not fit in the 64 KB segment with the program,
+        the variables and the strings they hold (memory_model, FRE("") below 0); ``old``:
+        the array, its sizes and the budget before (None: none)."""
         words = self.dialect.words
         self.string_slack = 0  # the strings' room is counted afresh at the next string stored
-        if words is None or words.variable_area is None or self.variable_bytes() <= words.variable_area:
+        if words is not None and words.variable_area is not None:
+            if self.variable_bytes() <= words.variable_area:
+                return
+        elif self.dialect.free_memory is None or self._room_for_array():
             return
         array, dims, elements = old if old is not None else (None, None, None)
         if array is None:
@@ -107,6 +112,15 @@ class Variables:
         else:
             self.arrays[name], self.array_dims[name], self.array_elements = array, dims, elements
         raise BasicError("Out of memory", OUT_OF_MEMORY)
+
+    def _room_for_array(self) -> bool:
+        """gw: do the arrays fit in the 64 KB segment with the program, the variables and the
+        strings they hold?  Where the garbage of the string space is in the way it is
+        collected first, whether or not the array then fits (GWMAIN.ASM REASON calls GARBAG)."""
+        free, strings = self.measure_memory(string_space.block_locals())
+        if free - self.string_space.garbage(strings) < 0:
+            self.string_space.reset()
+        return free >= 0
 
     def erase(self, name: str) -> None:
         """ERASE name: forget the array (a later DIM may size it again); not there: Illegal function call."""
