@@ -17,9 +17,12 @@ roundings).  Here each step is a few exact float64 operations and a cheap roundi
   carry, outside the 1/512 band where the carry's lost bit makes GW round otherwise
   (an exact tie lost no bit).  Of two signs: single_arith.register_difference (the
   same register steps on floats).
-* Every other case (a product at least as large as the coefficient, a sum that carries
-  into the half-way band) is single_arith.add itself: the results are the same by
-  construction.
+* A product larger than the coefficient (the usual case in LOG's polynomials) takes the
+  same steps in the product's register: its leading power of two found by the ufp of
+  Rump, Ogita and Oishi, the magic numbers of its unit and twice it.
+* Every other case (a product as large as the coefficient or 2**29 times larger, a sum
+  that carries into the half-way band) is single_arith.add itself: the results are the
+  same by construction.
 
 The caller keeps the argument where no step can leave MBF's range (``x`` at least
 :data:`LEAST_ARGUMENT`, at most 1, coefficients below 100 in size).
@@ -39,6 +42,10 @@ _MAGIC = 1.5 * 2.0 ** 52  # (v + _MAGIC * q) - _MAGIC * q: v rounded half to eve
 # $FMULS's result is the nearest single where p's distance below it, over p's leading power
 # of two, lies in [-3/8, 1/2) units of 2**-23 (single_arith.product)
 _PRODUCT_LOW, _PRODUCT_HIGH = -0.375 * 2.0 ** -23, 0.5 * 2.0 ** -23
+# times a leading power of two T: the magic numbers of its unit u = T * 2**-23 and of 2u, and the carry's band
+_HALF_MAGIC = _MAGIC * 2.0 ** -23
+_MAGIC_2U = _MAGIC * 2.0 ** -22
+_BAND_2U = 0.498046875 * 2.0 ** -22
 
 
 def _coefficient_plan(c: float) -> tuple:
@@ -87,10 +94,35 @@ def poly(x: float, planned: tuple) -> float | None:
         else:
             small = cut
             same = positive
-        if small >= large:  # the product is the larger (or as large): single_arith's own
-            total = add(cut, c)
-            if not total:
-                return None
+        if small >= large:  # the product is the larger (or as large): its register, the same steps
+            if small == large or large * 536870912.0 < small:  # (equal: 0 or exact; far apart: add's own)
+                total = add(cut, c)
+                if not total:
+                    return None
+                continue
+            q = small * _UFP
+            ptop = q - _UFP_LOW * q
+            if same:
+                s = small + large
+                if s < 2.0 * ptop:
+                    magic = ptop * _HALF_MAGIC
+                    r = (s + magic) - magic
+                else:
+                    magic = ptop * _MAGIC_2U
+                    r = (s + magic) - magic
+                    if s >= 4.0 * ptop or not (-_BAND_2U * ptop < s - r < _BAND_2U * ptop
+                                                or s - r == ptop * 1.1920928955078125e-07
+                                                or r - s == ptop * 1.1920928955078125e-07):
+                        total = add(cut, c)
+                        continue
+            else:
+                r = register_difference(small, large, ptop)
+                if not r:
+                    total = add(cut, c)
+                    if not total:
+                        return None
+                    continue
+            total = -r if cut < 0 else r
             continue
         if same:
             s = large + small
