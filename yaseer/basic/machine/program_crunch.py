@@ -35,7 +35,7 @@ from __future__ import annotations
 from yaseer.basic.errors import OVERFLOW, error_for
 from yaseer.basic.machine.gwfunctions import mkd, mks
 from yaseer.basic.machine.program_file import TOKENS, TWO_BYTE_TOKENS
-from yaseer.basic.source.scanner import gw_number, radix_number
+from yaseer.basic.source.scanner import LINE_NUMBER_WORDS, gw_number, radix_number
 
 # GW-BASIC 3.23's program start (TXTTAB) with its default /F:3 /S:128 file buffers: the
 # address the links of a SAVEd program count from (PC-BASIC 2.0.8 uses the same).
@@ -46,8 +46,6 @@ _WORDS.update({word: bytes((prefix, code)) for prefix, table in TWO_BYTE_TOKENS.
                for code, word in table.items()})
 _LONGEST = max(map(len, _WORDS))
 _OPERATORS = {word: bytes((code,)) for code, word in TOKENS.items() if word in "+-*/^\\>=<" and len(word) == 1}
-_LINE_WORDS = frozenset(("GOTO", "GOSUB", "THEN", "ELSE", "RESTORE", "RESUME", "RUN", "LIST", "LLIST", "DELETE",
-                         "EDIT", "RENUM", "AUTO", "RETURN", "ERL"))
 _NO_BLANK_AFTER = frozenset(("FN", "USR"))
 _NAME = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789.")
 _LINE_NUMBER, _NUMBER, _IN_NAME = 1, 0, -1  # DONUM: what a digit starts
@@ -100,7 +98,7 @@ def crunch_line(text: str) -> bytes:
                 elif word == "REM":
                     return bytes(out + _codes(text[end:]))
                 data = word == "DATA"
-                donum = _LINE_NUMBER if word in _LINE_WORDS else _NUMBER
+                donum = _LINE_NUMBER if word in LINE_NUMBER_WORDS else _NUMBER
             i = end
         elif c.isdigit() or c == ".":
             if donum == _IN_NAME or (donum == _LINE_NUMBER and c == "."):

@@ -526,13 +526,13 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
 
 # After these words GW-BASIC's tokeniser reads a number as a line number (GWMAIN.ASM LINRES),
 # and goes on so past commas, operators and blanks until a name, another word or a colon.
-_LINE_WORDS = frozenset(("RESTORE", "AUTO", "RENUM", "DELETE", "EDIT", "RESUME", "ERL", "ELSE", "RUN",
+LINE_NUMBER_WORDS = frozenset(("RESTORE", "AUTO", "RENUM", "DELETE", "EDIT", "RESUME", "ERL", "ELSE", "RUN",
                          "LIST", "LLIST", "GOTO", "RETURN", "THEN", "GOSUB"))
 
 
 def line_number_spans(text: str, dialect: Dialect = CASIO) -> list[tuple[int, int, int]]:
     """``(start, end, number)`` of each line number the statements ``text`` name (see
-    ``_LINE_WORDS``), as RENUM changes them; the 0 of ``ON ERROR GOTO 0`` is not one
+    ``LINE_NUMBER_WORDS``), as RENUM changes them; the 0 of ``ON ERROR GOTO 0`` is not one
     (GWMAIN.ASM SCCLIN leaves it).  Numbers up to a character no token starts with."""
     spans: list[tuple[int, int, int]] = []
     after, words = False, ["", ""]
@@ -550,7 +550,7 @@ def line_number_spans(text: str, dialect: Dialect = CASIO) -> list[tuple[int, in
             elif kind == "_COLON":
                 after = False
             elif kind not in ("STRING", "DATA_TEXT") and isinstance(value, str) and value[:1].isalpha():
-                after = value.upper() in _LINE_WORDS
+                after = value.upper() in LINE_NUMBER_WORDS
                 words = [words[1], value.upper()]
     except BasicError:
         pass
