@@ -5,6 +5,7 @@ import math
 
 import pytest
 
+from alarm_support import stop_alarm
 from test_basic_helpers import error_of, run_rows, run_text, run_values
 from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL
 from yaseer.basic.machine.machine import Machine
@@ -497,8 +498,7 @@ def _interrupted_run(program: str, after_seconds: float = 0.2) -> tuple[Machine,
         with pytest.raises(BasicError) as info:
             machine.run()
     finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
+        stop_alarm(previous)
     return machine, info.value
 
 

@@ -15,6 +15,8 @@ from pathlib import Path
 
 import pytest
 
+from alarm_support import stop_alarm
+
 from yaseer.basic.errors import BasicError
 from yaseer.basic.machine.machine import Machine
 from yaseer.session import MachineEngine, Session
@@ -37,8 +39,7 @@ def watchdog(seconds: int = 5):
     try:
         yield
     finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, previous)
+        stop_alarm(previous)
     assert not fired, "a statement blocked"
 
 

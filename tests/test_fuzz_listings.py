@@ -27,6 +27,8 @@ from pathlib import Path
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from alarm_support import stop_alarm
+
 from yaseer import binding
 from yaseer.basic.errors import BasicError
 from yaseer.basic.machine.machine import INTERNAL_ERROR, Machine
@@ -61,8 +63,7 @@ class Budget:
         os.kill(os.getpid(), signal.SIGINT)  # the machine's own SIGINT handler, or KeyboardInterrupt
 
     def __exit__(self, *exc):
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, self.previous)
+        stop_alarm(self.previous)
         return False
 
 
