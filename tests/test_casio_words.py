@@ -468,7 +468,8 @@ def test_edit_in_a_program_shows_the_program_from_its_line():  # EDIT.md items 1
     program = "10 PRINT 1\n20 EDIT 25\n30 PRINT 3\n40 END"
     assert run_text(program) == " 1 \n30 PRINT 3\n40 END\n"
     assert run_text("10 EDIT .\n20 END") == "10 EDIT .\n20 END\n"  # the line running
-    assert error_of("10 EDIT") == "Syntax error in 10"  # (yaseer: the line number or the period is needed)
+    assert run_text("10 PRINT 1\n20 EDIT\n30 END") == " 1 \n10 PRINT 1\n20 EDIT\n30 END\n"  # from the first line
+    assert error_of("10 EDIT", dialect="gw") == "Syntax error in 10"  # GW-BASIC's EDIT needs its line
 
 
 def test_save_and_load_in_a_program_then_stand_by(tmp_path):  # SAVE_SAVE_ALL.md, LOAD_LOAD_ALL.md

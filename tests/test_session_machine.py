@@ -240,6 +240,8 @@ def test_list_and_edit_period_show_the_line_most_recently_handled(session):
     assert after(session, "RUN", "LIST .") == " 1 \n20 END\n"  # executed last
     session.handle("EDIT .")
     assert session.edit_text == "20 END"
+    session.handle("EDIT")  # EDIT.md: without a line number, the first line
+    assert session.edit_text == "10 PRINT 1"
 
 
 def test_a_program_that_loads_another_leaves_it_in_the_session(tmp_path):

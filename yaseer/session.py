@@ -385,6 +385,9 @@ class Session:
     def command_edit(self, argument: str) -> None:
         """EDIT n (casio also EDIT .): put line n up for editing as the next input."""
         current = self._current_range(argument)
+        words = self._dialect().words
+        if not argument and words is not None and words.edit_lists_from and self.program:
+            current = (min(self.program),) * 2  # EDIT alone: the first line (EDIT.md, its parameter)
         if current is None and not argument.isdigit():
             raise BasicError("Syntax error", SYNTAX_ERROR)
         number = current[0] if current is not None else int(argument)

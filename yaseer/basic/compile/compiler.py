@@ -82,6 +82,7 @@ class _NoWords:
     routine_calls: dict = {}
     reads_variables = writes_variables = sets_x_y = empty_statements = frozenset()
     variable_area = None
+    edit_lists_from = False
     computed_restore = empty_on_targets = truncates = asks_each = False
     command_options = {"LOAD": "R", "SAVE": "AP", "RUN": "R"}  # GW-BASIC's LOAD ,R; SAVE ,A ,P; RUN ,R
 

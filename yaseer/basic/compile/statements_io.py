@@ -278,6 +278,8 @@ class InputOutputCompiler:
         if stmt.option is not None and stmt.name in options and stmt.option not in options[stmt.name]:
             raise syntax_error()
         argument = stmt.argument
+        if stmt.name == "EDIT" and argument is None and not self.words.edit_lists_from:
+            raise syntax_error()  # GW-BASIC's EDIT needs its line
         if argument == ast.CURRENT_LINE:  # LIST . / EDIT . in a program: its own line, the one executed last
             argument = self.line if stmt.name == "EDIT" else (self.line, self.line)
         if argument is not None and not isinstance(argument, (int, tuple)):

@@ -143,9 +143,10 @@ RESERVED_ONLY = ("CSR", "KEY", "MID", "VAC", "VAR", "AS", "OUT", "PUT", "CALC")
 # error's meaning 2, "illegal command used in ... program mode").  ALL: every program area.
 PROGRAM_COMMANDS = ("LIST", "LLIST", "SAVE", "LOAD", "NEW", "RUN", "ALL", "EDIT")
 # LIST ., LLIST . and EDIT .: a period for the line most recently handled (LIST.md item 4,
-# EDIT.md item 2).  EDIT n in a program (EDIT.md: the edit mode "displays the program from the
-# specified line number", or the first line above it) shows the lines from there as LIST does,
-# then the run ends (the edit mode waits for keys; BRK leaves it).
+# EDIT.md item 2).  EDIT [n] in a program (EDIT.md: the edit mode "displays the program from the
+# specified line number", or the first line above it; without one from the first line) shows
+# the lines from there as LIST does, then the run ends (the edit mode waits for keys; BRK
+# leaves it).
 CURRENT_LINE_PERIOD = True
 EDIT_LISTS_FROM = True
 REFUSED_COMMANDS = ("NEW", "RUN")

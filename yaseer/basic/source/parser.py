@@ -384,6 +384,8 @@ class _ToAst:
         return ast.Command("DELETE", c[1])
 
     def edit_stmt(self, c):
+        if len(c) == 1:  # EDIT alone: from the first line (the Casio's; the compiler refuses it elsewhere)
+            return ast.Command("EDIT", None)
         return ast.Command("EDIT", ast.CURRENT_LINE if c[1].type == "PERIOD" else _line_number(c[1]))
 
     def renum_stmt(self, c):
