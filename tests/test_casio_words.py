@@ -244,6 +244,18 @@ def test_pass_registers_and_cancels():  # PASS.md, part-12-2: the PR error is co
                       '30 PRINT ERR: END\n') == [[21.0]]  # the first 8 characters count
 
 
+def test_a_registered_password_refuses_list_edit_save_and_the_data_bank(tmp_path):
+    # PASS.md item 5 (LIST.md item 11, EDIT.md item 4, SAVE_SAVE_ALL.md item 6, LIST#.md
+    # item 5, NEW#.md item 2, SAVE#.md item 7): the PR error, code 21 (part-12-2)
+    for command in ("LIST", "LIST 10", "LLIST", "LIST ALL", "EDIT 10", "EDIT", 'SAVE "F"', "LIST#", "NEW#",
+                    'SAVE# "D"'):
+        assert error_of(f'10 PASS "KEY": {command}') == "Password protected in 10", command
+    assert run_values('10 ON ERROR GOTO 30\n20 PASS "KEY": LIST\n30 PRINT ERR: END\n') == [[21.0]]
+    # cancelled by the same password: LIST shows the program again
+    assert run_text('10 PASS "KEY": PASS "KEY": LIST 10\n').startswith("10 PASS")
+    assert run_values('10 WRITE# "A": PASS "K": RESTORE#: READ# A$: PRINT LEN(A$)\n') == [[1.0]]
+
+
 def test_set_output_format():  # SET.md: 10/3 with two decimals, two digits, then as before
     assert run_text("10 A = 10/3\n20 SET F2\n30 PRINT A\n40 SET E2\n50 PRINT A\n60 SET N: PRINT A\n") == \
         " 3.33 \n 3.3E+00 \n 3.333333333 \n"

@@ -244,6 +244,25 @@ def test_list_and_edit_period_show_the_line_most_recently_handled(session):
     assert session.edit_text == "10 PRINT 1"
 
 
+def test_a_registered_password_protects_every_program_area(session, tmp_path):
+    # PASS.md: one password for P0-P9; while it is registered no program is written, listed,
+    # edited, erased or saved (item 5: PR error); RUN and LOAD go on (LOAD.md item 5); the
+    # same password again cancels it
+    after(session, "10 PRINT 1", "PROG 3", "10 PRINT 3", "PROG 0")
+    (tmp_path / "OTHER.bas").write_text("10 PRINT 2\n")
+    assert after(session, 'PASS "SECRET"') == ""
+    for typed in ("20 PRINT 9", "10", "LIST", "LIST ALL", "LLIST", "EDIT 10", "EDIT", "NEW", "NEW ALL",
+                  'SAVE "MINE"'):
+        assert after(session, typed) == "Password protected\n", typed
+    assert after(session, "PROG 3", "LIST", "10 END") == "Password protected\n" * 2
+    assert after(session, "PROG 0", "RUN") == " 1 \n"  # the password outlives RUN's fresh machine
+    assert after(session, "LIST") == "Password protected\n"
+    assert after(session, 'LOAD "OTHER"', "RUN") == " 2 \n"
+    assert after(session, 'PASS "WRONG"') == "Wrong password\n"
+    assert after(session, 'PASS "SECRET"', "LIST", "20 END", "LIST") == "10 PRINT 2\n10 PRINT 2\n20 END\n"
+    assert not (tmp_path / "MINE.bas").exists()
+
+
 def test_a_program_that_loads_another_leaves_it_in_the_session(tmp_path):
     # LOAD_LOAD_ALL.md: LOAD in a program replaces the program, then command standby: the
     # session's LIST and RUN see the program the machine now holds (gw: NEW likewise)

@@ -47,6 +47,7 @@ from yaseer.basic.errors import (
     SYNTAX_ERROR,
     UNDEFINED_LINE,
     BasicError,
+    password_protected,
 )
 
 MAX_LINE_NUMBER = 65529  # the largest line number MS-BASIC accepts
@@ -282,6 +283,13 @@ class Session:
         the line entry of GWMAIN.ASM and BINSAV)."""
         if self.area in self.protected_areas:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        self._refuse_password()
+
+    def _refuse_password(self) -> None:
+        """A password registered (PASS, casio): a program written, LIST, LLIST, EDIT, NEW and
+        SAVE, in any area, are the PR error (PASS.md item 5)."""
+        if getattr(self.engine, "password", None) is not None:
+            raise password_protected()
 
     def store_line(self, number: int, text: str) -> None:
         """Type ``number text``: store (or, with no text, delete) a line."""
@@ -327,6 +335,7 @@ class Session:
         """LIST [range]: show the stored lines of the current area as the machine lists them."""
         write = write or self.write
         if self._every_area(argument):  # LIST ALL (casio, LIST.md item 13): areas P0-P9 in turn
+            self._refuse_password()
             for area in sorted(a for a, lines in self.programs.items() if lines):
                 write(f"P{area}\n")
                 for number in sorted(self.programs[area]):
@@ -362,6 +371,7 @@ class Session:
         """DELETE range: remove lines; a single missing line is an error."""
         if not argument:
             raise BasicError("Syntax error", SYNTAX_ERROR)
+        self._refuse_password()  # a program write (PASS.md item 5)
         first, last = parse_range(argument)
         doomed = lines_in_range(self.program, first, last)
         if not doomed and first == last:
@@ -372,6 +382,7 @@ class Session:
 
     def command_renum(self, argument: str) -> None:
         """RENUM [new[,old[,step]]] (defaults 10, first line, 10)."""
+        self._refuse_password()  # a program write (PASS.md item 5)
         values = [part.strip() for part in argument.split(",")] if argument else []
         if len(values) > 3 or not all(value.isdigit() or value == "" for value in values):
             raise BasicError("Syntax error", SYNTAX_ERROR)
@@ -420,6 +431,7 @@ class Session:
     def command_new(self, argument: str) -> None:
         """NEW: erase the current area's program (and the variables if it is PROG 0); NEW ALL
         (casio, NEW.md item 6): every area's program and all variables."""
+        self._refuse_password()  # NEW.md item 4
         if self._every_area(argument):
             for area in list(self.programs):
                 self.programs[area] = {}
@@ -470,6 +482,7 @@ class Session:
             raise BasicError("Syntax error", SYNTAX_ERROR)
         if option != "P":
             self._refuse_protected()
+        self._refuse_password()  # SAVE_SAVE_ALL.md item 6: yaseer's files are ASCII
         if not Path(name).suffix:
             name += ".bas"
         if option == "P":
@@ -674,6 +687,9 @@ class MachineEngine:
         self._clear_screen = clear_screen
         self._machine = None  # made on first use: the prompt comes up without waiting for it
         self.protected = False  # PROG 0 came from a file SAVEd with ,P (the session says so)
+        # casio: the password PASS registered; it outlives RUN's fresh machine and NEW ALL,
+        # as the machine keeps it until PASS cancels it (PASS.md)
+        self.password: str | None = None
 
     @property
     def machine(self):
@@ -715,6 +731,7 @@ class MachineEngine:
         """
         machine = self.machine
         machine.program_protected = self.protected
+        machine.password_set = self.password
         for area, program in areas.items():
             held = machine.programs.get(area)
             if program and held != {n: text.strip() for n, text in program.items()}:
@@ -767,3 +784,4 @@ class MachineEngine:
         finally:
             if self._machine is not None:
                 self._machine.end_line()
+                self.password = self._machine.password_set

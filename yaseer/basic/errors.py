@@ -49,7 +49,7 @@ BAD_RECORD_NUMBER = 63
 BAD_FILE_NAME = 64
 DIRECT_STATEMENT_IN_FILE = 66
 PATH_FILE_ACCESS_ERROR = 75
-PASSWORD_PROTECTED = 251  # yaseer's own: PASS with another password than the one set (Casio PR error)
+PASSWORD_PROTECTED = 251  # yaseer's own: the Casio PR error (a password registered, or PASS with another one)
 UNDEFINED_PROGRAM_AREA = 252  # yaseer's own: GOSUB PROG n with nothing in area n
 BREAK = 253  # yaseer's own: Ctrl-C (not trappable)
 
@@ -141,3 +141,9 @@ class OutputError(OSError):
     Not a BASIC error: the machine lets it through and the run stops; its
     ``filename`` names the stream (``standard output``, the ``--printer`` file).
     """
+
+
+def password_protected() -> BasicError:
+    """The Casio's PR error for a command refused while a password is registered (PASS.md
+    item 5; part-12-2: code 21).  Not in MESSAGES: GW-BASIC's ERROR 251 stays unprintable."""
+    return BasicError("Password protected", PASSWORD_PROTECTED)

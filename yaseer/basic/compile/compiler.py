@@ -83,6 +83,7 @@ class _NoWords:
     reads_variables = writes_variables = sets_x_y = empty_statements = frozenset()
     variable_area = None
     edit_lists_from = False
+    password_refuses = ()
     computed_restore = empty_on_targets = truncates = asks_each = False
     command_options = {"LOAD": "R", "SAVE": "AP", "RUN": "R"}  # GW-BASIC's LOAD ,R; SAVE ,A ,P; RUN ,R
 

@@ -150,10 +150,16 @@ PROGRAM_COMMANDS = ("LIST", "LLIST", "SAVE", "LOAD", "NEW", "RUN", "ALL", "EDIT"
 CURRENT_LINE_PERIOD = True
 EDIT_LISTS_FROM = True
 REFUSED_COMMANDS = ("NEW", "RUN")
-COMMAND_OPTIONS = {"LOAD": "A", "SAVE": "A", "RUN": ""}
+# The commands a registered password refuses (PASS.md item 5; LIST.md item 11, EDIT.md
+# item 4, NEW.md item 4, SAVE_SAVE_ALL.md item 6): the PR error.  SAVE in every form:
+# yaseer writes the ASCII format only, which a password forbids (SAVE's binary format,
+# which would carry the password, is not documented).  LOAD stays possible (LOAD.md
+# item 5: yaseer's files carry no password).
+PASSWORD_REFUSES = ("LIST", "LLIST", "EDIT", "NEW", "SAVE")
+COMMAND_OPTIONS = {"LOAD": "A", "SAVE": "A", "RUN": ""}  # ,A: the ASCII format (yaseer's only one)
 # The variable area's bytes (CLEAR.md: 8192 on the FX-880P and an FX-850P of 32 KB; FRE 2
 # reports it): an array that does not fit with the other variables is the OM error.
-VARIABLE_AREA = 8192  # ,A: the ASCII format (yaseer's only one)
+VARIABLE_AREA = 8192
 # Bytes of the system area a program reads with PEEK at power-on (address -> byte): the RAM's
 # size in pages of 256 bytes, low byte at &H6B4 (LIB0400, the library's memory test, reads
 # K = PEEK(&H6B4)/4 + PEEK(&H6B5)*64 kilobytes): the FX-880P's 32 KB (specifications.md).
@@ -213,6 +219,7 @@ class Words:
     reserved_variables = RESERVED_VARIABLES
     open_words = OPEN_WORDS
     refused_commands = REFUSED_COMMANDS
+    password_refuses = PASSWORD_REFUSES
     current_line_period = CURRENT_LINE_PERIOD
     edit_lists_from = EDIT_LISTS_FROM
     command_options = COMMAND_OPTIONS

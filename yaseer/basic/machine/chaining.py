@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from yaseer.basic.machine.files import read_program
 from yaseer.basic.errors import (
-    BAD_FILE_MODE, ILLEGAL_DIRECT, ILLEGAL_FUNCTION_CALL, UNDEFINED_LINE, error_for,
+    BAD_FILE_MODE, ILLEGAL_DIRECT, ILLEGAL_FUNCTION_CALL, UNDEFINED_LINE, error_for, password_protected,
 )
 from yaseer.basic.machine.signals import ProgramEnd
 
@@ -80,6 +80,8 @@ class Chaining:
         words = self.dialect.words
         if words is not None and name in words.refused_commands:
             raise error_for(ILLEGAL_DIRECT)
+        if words is not None and self.password_set is not None and name in words.password_refuses:
+            raise password_protected()  # PASS.md item 5
         if everything:
             self._every_area(name, argument)
         if name == "KEY":

@@ -15,7 +15,7 @@ file of the program's directory, one line each, in the machine's codes.
 from __future__ import annotations
 
 from yaseer.basic.errors import (
-    BasicError, ILLEGAL_FUNCTION_CALL, OUT_OF_DATA, STRING_TOO_LONG, TYPE_MISMATCH,
+    BasicError, ILLEGAL_FUNCTION_CALL, OUT_OF_DATA, STRING_TOO_LONG, TYPE_MISMATCH, password_protected,
 )
 
 RECORD_LENGTH = 255  # WRITE#.md item 6
@@ -88,8 +88,9 @@ class DataBank:
             self.record, self.item = self.record + 1, 0
         raise BasicError("Out of DATA", OUT_OF_DATA)
 
-    def clear(self) -> None:
-        """NEW#."""
+    def clear(self, machine) -> None:
+        """NEW# (refused, as LIST# and SAVE#, while ``machine`` has a password: PR)."""
+        _unlocked(machine)
         self.records.clear()
         self.restore()
 
@@ -117,16 +118,26 @@ class DataBank:
 
     def list(self, machine) -> None:
         """LIST#: each record on a line of its own."""
+        _unlocked(machine)
         for record in self.records:
             machine.print_items(0, (record,), True)
 
     def save(self, machine, name: str) -> None:
         """SAVE# "name": the records into the file (its bytes are the machine's codes)."""
+        _unlocked(machine)
         machine.files.sandbox.write_bytes(_file_name(machine, name), self.text().encode("latin-1"))
 
     def load_file(self, machine, name: str, append: bool) -> None:
         """LOAD# "name"[, M]."""
         self.load(machine.files.sandbox.read_bytes(_file_name(machine, name)).decode("latin-1"), append)
+
+
+def _unlocked(machine) -> None:
+    """LIST#, NEW# and SAVE# cannot be executed for data protected by a password (LIST#.md
+    item 5, NEW#.md item 2, SAVE#.md item 7; PASS.md: one password for the programs and the
+    DATA BANK): the PR error."""
+    if machine.password_set is not None:
+        raise password_protected()
 
 
 def _file_name(machine, name: str) -> str:
