@@ -84,6 +84,7 @@ class _NoWords:
     variable_area = None
     edit_lists_from = False
     password_refuses = ()
+    read_mismatch = output_eof = False
     computed_restore = empty_on_targets = truncates = asks_each = False
     command_options = {"LOAD": "R", "SAVE": "AP", "RUN": "R"}  # GW-BASIC's LOAD ,R; SAVE ,A ,P; RUN ,R
 

@@ -167,8 +167,8 @@ class InputOutputCompiler:
                             "s" if text else self.numbers.widest, scope, False)
         elif word == "RESTORE#":
             self._bank_restore(args, scope)
-        elif word in ("LIST#", "NEW#") and not args:
-            self.emit("_bank().list(_M)" if word == "LIST#" else "_bank().clear(_M)")
+        elif word in ("LIST#", "LLIST#", "NEW#") and not args:
+            self.emit("_bank().clear(_M)" if word == "NEW#" else f"_bank().list(_M, {int(word == 'LLIST#')})")
         elif word == "SAVE#" and len(args) == 1:
             self.emit(f"_bank().save(_M, {self.string(args[0], scope)})")
         elif word == "LOAD#" and len(args) in (1, 2):

@@ -156,6 +156,11 @@ REFUSED_COMMANDS = ("NEW", "RUN")
 # which would carry the password, is not documented).  LOAD stays possible (LOAD.md
 # item 5: yaseer's files carry no password).
 PASSWORD_REFUSES = ("LIST", "LLIST", "EDIT", "NEW", "SAVE")
+# READ of an item that is no number into a numeric variable: the TM error of the READ's line
+# (READ.md item 2), not GW-BASIC's Syntax error in the DATA line.
+READ_MISMATCH = True
+# EOF of a file opened FOR OUTPUT is 0 (EOF.md item 4), not GW-BASIC's Bad file mode.
+OUTPUT_EOF = True
 COMMAND_OPTIONS = {"LOAD": "A", "SAVE": "A", "RUN": ""}  # ,A: the ASCII format (yaseer's only one)
 # The variable area's bytes (CLEAR.md: 8192 on the FX-880P and an FX-850P of 32 KB; FRE 2
 # reports it): an array that does not fit with the other variables is the OM error.
@@ -220,6 +225,8 @@ class Words:
     open_words = OPEN_WORDS
     refused_commands = REFUSED_COMMANDS
     password_refuses = PASSWORD_REFUSES
+    read_mismatch = READ_MISMATCH
+    output_eof = OUTPUT_EOF
     current_line_period = CURRENT_LINE_PERIOD
     edit_lists_from = EDIT_LISTS_FROM
     command_options = COMMAND_OPTIONS

@@ -263,7 +263,7 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
 CASIO = Dialect(
     name="casio", keyword_first=True, pi_keyword=True,
     own_words=("DEG", "RAD", "XOR", "EQV", "IMP", "LOCATE", "INKEY$", "PEEK",
-               "WRITE#", "READ#", "RESTORE#", "LIST#", "NEW#", "SAVE#", "LOAD#")
+               "WRITE#", "READ#", "RESTORE#", "LIST#", "LLIST#", "NEW#", "SAVE#", "LOAD#")
     + casio_words.PROGRAM_COMMANDS,
     typed_numbers=False,
     print_digits=10,

@@ -61,6 +61,31 @@ def modulo(a: float, b: float) -> float:
     return runtime.modulo(_operand16(a), _operand16(b))
 
 
+# The string functions' counts, truncated to integers in the pages' ranges (else Illegal
+# function call): CHR_STRING.md 0 <= code < 256, LEFT_STRING.md and RIGHT_STRING.md
+# 0 <= count < 256, MID_STRING.md 1 <= position < 256 and 0 <= count < 256; yaseer's common
+# runtime rounds them (runtime.cint).
+def chr_dollar(code: float) -> str:
+    return chr(_whole_in(code, 0, 255))
+
+
+def left_dollar(s: str, n: float) -> str:
+    return s[:_whole_in(n, 0, 255)]
+
+
+def right_dollar(s: str, n: float) -> str:
+    k = _whole_in(n, 0, 255)
+    return s[len(s) - k:] if k < len(s) else s
+
+
+def mid_dollar(s: str, start: float, n: float | None = None) -> str:
+    i = _whole_in(start, 1, 255) - 1
+    return s[i:] if n is None else s[i:i + _whole_in(n, 0, 255)]
+
+
+STRING_FUNCTIONS = {"_chr": chr_dollar, "_left": left_dollar, "_right": right_dollar, "_mid": mid_dollar}
+
+
 # The operators whose operands the Casio truncates (part 6: "Fractions are truncated in
 # ¥ and MOD"; logical operations: "operands truncated to integers"), where yaseer's
 # common runtime rounds them (runtime.cint).

@@ -1,7 +1,7 @@
 """The FX-850P/880P's DATA BANK: records (lines of text) a program writes, reads and searches.
 
-The owner's manual, part 5 and the pages WRITE#, READ#, RESTORE#, LIST#, NEW#, SAVE# and
-LOAD#: a record is one line of items separated by commas (at most 255 characters); one
+The owner's manual, part 5 and the pages WRITE#, READ#, RESTORE#, LIST#, LLIST#, NEW#, SAVE#
+and LOAD#: a record is one line of items separated by commas (at most 255 characters); one
 pointer says where the next READ# or WRITE# goes.  ``RESTORE#`` puts it before the first
 record; ``RESTORE# "text"`` on the next item, searching forward from the pointer, that
 begins with the text (mode 0, the default) or holds it (mode 1).  ``WRITE# a, b`` writes
@@ -116,11 +116,13 @@ class DataBank:
             raise BasicError("Type mismatch", TYPE_MISMATCH)
         return value
 
-    def list(self, machine) -> None:
-        """LIST#: each record on a line of its own."""
+    def list(self, machine, device: int = 0) -> None:
+        """LIST# (``device`` 0) or LLIST# (1, the printer): each record on a line of its own.
+        (The pages say the record's number is shown too, but not how: yaseer shows the
+        records alone.)"""
         _unlocked(machine)
         for record in self.records:
-            machine.print_items(0, (record,), True)
+            machine.print_items(device, (record,), True)
 
     def save(self, machine, name: str) -> None:
         """SAVE# "name": the records into the file (its bytes are the machine's codes)."""
@@ -133,9 +135,9 @@ class DataBank:
 
 
 def _unlocked(machine) -> None:
-    """LIST#, NEW# and SAVE# cannot be executed for data protected by a password (LIST#.md
-    item 5, NEW#.md item 2, SAVE#.md item 7; PASS.md: one password for the programs and the
-    DATA BANK): the PR error."""
+    """LIST#, LLIST#, NEW# and SAVE# cannot be executed for data protected by a password
+    (LIST#.md item 5, LLIST#.md item 3, NEW#.md item 2, SAVE#.md item 7; PASS.md: one password
+    for the programs and the DATA BANK): the PR error."""
     if machine.password_set is not None:
         raise password_protected()
 

@@ -55,7 +55,7 @@ from yaseer.basic.machine import gwfunctions, runtime, string_space, val_numbers
 from yaseer.basic.machine.files import FileTable, Sandbox
 from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
     BasicError, OutputError, BREAK, INPUT_PAST_END, OUT_OF_DATA, OUT_OF_MEMORY, STRING_TOO_LONG, SYNTAX_ERROR,
-    UNDEFINED_LINE,
+    TYPE_MISMATCH, UNDEFINED_LINE,
     UNDEFINED_PROGRAM_AREA, undefined_line_message,
 )
 from yaseer.basic.machine.console import Console
@@ -121,6 +121,9 @@ class _AreaRuntime:
             raise err.at(line, self.number) from None
         if value is None:
             self.data_index -= 1
+            words = self.machine.dialect.words
+            if words is not None and words.read_mismatch:
+                raise BasicError("Type mismatch", TYPE_MISMATCH)  # the READ's error (casio: READ.md item 2)
             raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number)
         return value
 
@@ -252,6 +255,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         # the program's sequential files, all in one directory (``files``; default the current one)
         words = self.dialect.words
         self.files = FileTable(Sandbox(files), self.dialect.file_devices, words.absent_devices if words else None)
+        self._output_eof = bool(words and words.output_eof)  # casio: EOF of an output file is 0 (EOF.md item 4)
         # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
         # ``yaseer run`` stops at once): see _on_interrupt.
         self.resumable_breaks = False
@@ -446,6 +450,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         if self.dialect.words:  # the casio functions (dialects/casio.py)
             ns.update(casio_math.RUNTIME)
             ns.update(casio_words.OPERATORS)
+            ns.update(casio_words.STRING_FUNCTIONS)
             ns.update({"_ran": self.ran, "_valf": self.valf, "_fre0": self.free_area, "_sroom": self.string_room})
         ns.update(self._trig_functions())
         if self.dialect.arithmetic == "decimal":
@@ -479,7 +484,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_pruf": self.print_using_to, "_writef": self.write_to,
             "_fin_n": self.file_number, "_fin_s": lambda n: self.files.get(n).read_field(False, self.dialect.string_length),
             "_fline": lambda n: self.files.get(n).read_line(self.dialect.string_length),
-            "_eof": lambda n: -1.0 if self.files.get(n).at_end() else 0.0,
+            "_eof": lambda n: -1.0 if self.files.get(n).at_end(self._output_eof) else 0.0,
             "_lof": lambda n: float(self.files.get(n).length()),
             "_loc": lambda n: float(self.files.get(n).records()),
             "_input_chars": self.input_chars, "_inkey": self.inkey, "_input_keys": self.input_keys,

@@ -58,7 +58,7 @@ DIALECT_WORDS = {
     "PROG": "PROG", "DEG": "DEG", "RAD": "RAD", "PI": "SYSVAR", "XOR": "XOR", "EQV": "EQV",
     "IMP": "IMP", "DEFINT": "DEFTYPE", "DEFSNG": "DEFTYPE", "DEFDBL": "DEFTYPE", "DEFSTR": "DEFTYPE",
     "LOCATE": "LOCATE", "INKEY$": "SYSVAR", "PEEK": "FUNC",
-    "WRITE#": "BANK", "READ#": "BANK", "RESTORE#": "BANK", "LIST#": "BANK", "NEW#": "BANK",
+    "WRITE#": "BANK", "READ#": "BANK", "RESTORE#": "BANK", "LIST#": "BANK", "LLIST#": "BANK", "NEW#": "BANK",
     "SAVE#": "BANK", "LOAD#": "BANK",
     "FIELD": "FIELD", "GET": "GET", "PUT": "PUT", "LSET": "LSET", "RSET": "LSET", "RESET": "RESET",
     "CHAIN": "CHAIN", "COMMON": "COMMON", "MERGE": "MERGE", "DELETE": "DELETE",
