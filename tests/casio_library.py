@@ -36,11 +36,16 @@ DEFAULT_RESULT = r"(?m)^(?!.*\?\s*$).*=\s*-?\.?\d"
 # Keys for a program without a script of its own: a menu's first choice, then 2 for each number.
 DEFAULT_KEYS = "1" + "2\n" * 8
 END_OF_KEYS = "Input past end"
-# Programs whose copy in the library is damaged: the machine stores any line and stops at a
-# bad one with its own SN error when it runs it, so the run shows that error (LIB0900's line
-# 220 ends in ``THENa``, 260 and 300 in ``ELSEa``: text lost where the copy was made).
+# Programs that end in an error of their own when RUN: LIB0900 is the BASIC program behind the
+# PB commands (PBLOAD, PBLOAD ALL, PBLOAD#, PBGET; PBLOAD_PBGET.md names its work variables a-y
+# and a$-p$, which its lines 110-120 clear but for j and l$).  It reads the command typed (the two-byte
+# codes of PBLOAD or PBGET at address 512) and, where the command is none of its forms,
+# executes ``a`` (lines 220, 260, 300, 2150, 2230; ``READ`` alone in 735 and 6040): a
+# statement of no format, stored as every line is and the SN error when it runs (part 6,
+# "Errors": a syntax error is reported as the line executes).  RUN typed is no PB command,
+# so the machine stops at line 220 with its SN error; nothing of the copy is damaged.
 # PROGRAM -> the error line the run must stop with; counted apart, neither loaded nor run.
-DAMAGED = {"LIB0900": "Syntax error in 220"}
+OWN_ERROR = {"LIB0900": "Syntax error in 220"}
 # Hardware self-tests that never wait for a key once a test fails: the first result on the
 # screen, then the machine's endless failure beep (LIB0400 tests the RAM chips' bytes, the
 # ROM, the printer, the RS-232C port and the cassette, which yaseer does not have); run for
@@ -132,7 +137,7 @@ def main(argv: list[str]) -> int:
     wanted = {a.upper().removesuffix(".BAS") for a in argv if not a.startswith("-")}
     scripts = key_scripts()
     chosen = [p for p in programs(folder) if not wanted or p.stem.upper() in wanted]
-    loaded = ran = damaged = endless = 0
+    loaded = ran = own_error = endless = 0
     for program in chosen:
         name = program.stem.upper()
         errors = syntax_errors(program)
@@ -143,11 +148,11 @@ def main(argv: list[str]) -> int:
         if keys.startswith("@"):  # a subprogram: run by the program that calls it (GOSUB "LIB0:...")
             caller, _, keys = keys[1:].partition(" ")
             runs = folder / f"{caller}.bas"
-        if name in DAMAGED:
+        if name in OWN_ERROR:
             stdout, stderr, status = run(runs, keys, folder)
             first = next((line for line in stderr.splitlines() if line.strip()), "")
-            problem = None if first == DAMAGED[name] else f"expected {DAMAGED[name]!r}, got {first!r}"
-            damaged += problem is None
+            problem = None if first == OWN_ERROR[name] else f"expected {OWN_ERROR[name]!r}, got {first!r}"
+            own_error += problem is None
         elif name in ENDLESS:
             stdout, stderr, status = run(runs, keys, folder, seconds=ENDLESS_SECONDS)
             problem = None if re.search(pattern, stdout) else f"no result matching {pattern!r} on the screen"
@@ -159,10 +164,12 @@ def main(argv: list[str]) -> int:
         if verbose and (errors or problem):
             print(f"{program.name}: {'load: ' + errors[0] + ' ' if errors else ''}"
                   f"{'run: ' + problem if problem else ''}")
-    print(f"casio library: {len(chosen)} programs, {loaded} load without a syntax error, "
+    files = sum(1 for p in folder.iterdir() if p.suffix.lower() == ".bas")
+    print(f"casio library: {len(chosen)} programs ({files} .bas files, {', '.join(sorted(NOT_PROGRAMS))} the table "
+          f"of contents), {loaded} load without a syntax error, "
           f"{ran} run to their first result without an error line; "
-          f"{damaged} of {len(DAMAGED)} damaged in the library's copy stop with the machine's own error "
-          f"({', '.join(f'{k}: {v}' for k, v in DAMAGED.items())}); "
+          f"{own_error} of {len(OWN_ERROR)} PB-command program stops at RUN with its own error as the machine does "
+          f"({', '.join(f'{k}: {v}' for k, v in OWN_ERROR.items())}); "
           f"{endless} of {len(ENDLESS)} hardware self-test shows its first result, then beeps without end "
           f"({', '.join(sorted(ENDLESS))})")
     return 0
