@@ -48,3 +48,16 @@ def test_the_result_is_there_for_the_next_cell(executed):
 
 def test_the_notebook_stays_small(executed):
     assert len(nbformat.writes(executed).encode()) < 60_000
+
+
+def test_a_library_program_shows_its_lcd(executed):
+    # Becker's LIB5615 (the area of a circle) for r = 2: the LCD panel shows pi*r^2 to the
+    # display's 10 digits; the library is not part of the repository (YASEER_CASIO_LIBRARY)
+    import os
+
+    library = os.environ.get("YASEER_CASIO_LIBRARY")
+    if not library or not (Path(library) / "LIB5615.bas").is_file():
+        pytest.skip("Becker's library is absent: set YASEER_CASIO_LIBRARY to its sources folder")
+    lcd = html_of(cell(executed, "library"))
+    assert lcd.count("background:#c8d4b0") >= 2  # the prompt's panel and the result's
+    assert f"Area = {math.pi * 2 * 2:.10g}" in lcd

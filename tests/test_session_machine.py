@@ -244,6 +244,16 @@ def test_list_and_edit_period_show_the_line_most_recently_handled(session):
     assert session.edit_text == "10 PRINT 1"
 
 
+def test_edit_in_a_program_puts_its_line_up_for_editing(session):
+    # EDIT.md items 1, 3: the edit mode shows the program from the line (or the first one
+    # above it) and that line can be edited: the session offers it as the typed EDIT does
+    after(session, "10 PRINT 1", "20 EDIT 15", "30 PRINT 3")
+    assert after(session, "RUN") == " 1 \n20 EDIT 15\n30 PRINT 3\n"
+    assert session.edit_text == "20 EDIT 15"  # was None: the run ended with nothing to edit
+    after(session, "20 PRINT 2")  # the line as the user edited it, EXE
+    assert after(session, "RUN") == " 1 \n 2 \n 3 \n" and session.edit_text is None
+
+
 def test_a_registered_password_protects_every_program_area(session, tmp_path):
     # PASS.md: one password for P0-P9; while it is registered no program is written, listed,
     # edited, erased or saved (item 5: PR error); RUN and LOAD go on (LOAD.md item 5); the

@@ -574,6 +574,16 @@ class Session:
         if in_program:
             self._can_continue = False
         self._take_auto()
+        self._take_edit()
+
+    def _take_edit(self) -> None:
+        """EDIT run by the program (casio, EDIT.md item 1): the edit mode showed the program from
+        its line, and the session puts that line up for editing, as the typed EDIT does."""
+        take = getattr(self.engine, "take_edit", None)
+        number = take() if take is not None else None
+        if number is not None and number in self.program:
+            self.current_line = number
+            self.edit_text = self.listed(number)
 
     def _take_auto(self) -> None:
         """AUTO run by the program or the direct line: the session numbers the lines typed
@@ -748,6 +758,13 @@ class MachineEngine:
             return None
         request, self._machine.auto_request = self._machine.auto_request, None
         return request
+
+    def take_edit(self) -> int | None:
+        """The line a program's EDIT put up for editing, once; None if none."""
+        if self._machine is None:
+            return None
+        number, self._machine.edit_request = self._machine.edit_request, None
+        return number
 
     def changed_programs(self) -> dict[int, Program]:
         """The areas whose lines the machine changed since the session gave them (a

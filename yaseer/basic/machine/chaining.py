@@ -115,6 +115,8 @@ class Chaining:
             raise ChainTo({n: t for n, t in program.items() if n not in doomed}, False, None, True, None, False)
         elif name == "EDIT" and words is not None and words.edit_lists_from:
             self._list_lines(program, (argument, None), 0)  # the edit mode shows the program from there
+            shown = [n for n in sorted(program) if n >= (argument or 0)]
+            self.edit_request = shown[0] if shown else None  # the session puts that line up for editing
         elif name == "EDIT" and argument not in program:
             raise error_for(UNDEFINED_LINE)
         elif name == "RENUM":

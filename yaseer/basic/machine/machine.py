@@ -248,6 +248,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         # refuse it: GIODSK.ASM PROCHK); LOAD, RUN "file" and CHAIN set it, NEW clears it
         self.program_protected = False
         self.auto_request = None  # gw: AUTO run by a program: (start, step or None) for the session
+        self.edit_request = None  # casio: the line a program's EDIT put up for editing, for the session
         self._direct_line = None  # (compiled, program, namespace) of a direct line whose DEFs switch it
         # gw: the simple variables a statement made (recorded only where a SWAP may ask: compiler.made)
         self.made: set[str] = set()
