@@ -91,11 +91,13 @@ class OpenFile:
             raise error_for(BAD_FILE_MODE)
         return self.data
 
-    def at_end(self, output_reads_false: bool = False) -> bool:
-        """EOF: an output file is Bad file mode (GIODSK.ASM DSKEOF), or with
-        ``output_reads_false`` not at its end (the Casio: EOF.md item 4, 0 for FOR OUTPUT)."""
-        if output_reads_false and self.stream is not None:
-            return False
+    @property
+    def is_output(self) -> bool:
+        """Opened for output (or append)."""
+        return self.stream is not None
+
+    def at_end(self) -> bool:
+        """EOF: an output file is Bad file mode (GIODSK.ASM DSKEOF)."""
         data = self._input()
         return self.position >= len(data)
 

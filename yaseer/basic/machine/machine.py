@@ -485,7 +485,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_pruf": self.print_using_to, "_writef": self.write_to,
             "_fin_n": self.file_number, "_fin_s": lambda n: self.files.get(n).read_field(False, self.dialect.string_length),
             "_fline": lambda n: self.files.get(n).read_line(self.dialect.string_length),
-            "_eof": lambda n: -1.0 if self.files.get(n).at_end(self._output_eof) else 0.0,
+            "_eof": self.end_of_file,
             "_lof": lambda n: float(self.files.get(n).length()),
             "_loc": lambda n: float(self.files.get(n).records()),
             "_input_chars": self.input_chars, "_inkey": self.inkey, "_input_keys": self.input_keys,
@@ -643,6 +643,14 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             self.load(text, area)
             self.file_areas[name] = area
         self.call_area(area, line)
+
+    def end_of_file(self, n) -> float:
+        """EOF(n): -1 at the end of an input file, else 0; an output file is Bad file mode, or 0
+        where the dialect says so (casio: EOF.md item 4)."""
+        file = self.files.get(n)
+        if self._output_eof and getattr(file, "is_output", False):
+            return 0.0
+        return -1.0 if file.at_end() else 0.0
 
     def data_bank(self):
         """The Casio's DATA BANK (machine/databank.py), made when a program first uses it."""
