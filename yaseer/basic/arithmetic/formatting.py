@@ -285,8 +285,9 @@ def _bracketed(parts, places: int):
     digits (zeros after them), as MATH1.ASM's PUFOUT finds them: ``$FOTNV`` brackets the
     double into 16 whole digits (times or divided by a power of ten, in double
     precision), the digits beyond the field are divided out (``$FDIVD``) and the rest
-    rounded half up.  (The power of ten here is the nearest double to it: GW's table
-    holds 10**0..10**23 exactly and multiplies beyond.)"""
+    rounded half up.  (The power of ten here is the nearest double to it, as GW's table
+    holds it, in one step; below 1E-23, 10**38 first and the rest then: ``$FOTNV`` steps
+    by its own table there, not followed yet.)"""
     from decimal import Decimal
 
     from yaseer.basic.arithmetic import mbf_double
@@ -298,11 +299,17 @@ def _bracketed(parts, places: int):
     exact = Decimal(mantissa << shift) if shift >= 0 else Decimal(f"{mantissa * 5 ** -shift}E{shift}")
     bracket = 15 - exact.adjusted()
     places = min(places, bracket)
+    if bracket - places > 17:  # every one of the 16 digits divided out: less than a tenth, 0
+        return Decimal(0).scaleb(-places)
     p = (False, exponent, mantissa)
-    ten = mbf_double.from_decimal(1, abs(bracket))
-    p = mbf_double.multiply(p, ten) if bracket >= 0 else mbf_double.divide(p, ten)
+    scale = bracket
+    while scale > 38:  # (GW's powers of ten end at 10**38, and $FOTNV takes at most that a step)
+        p = mbf_double.multiply(p, mbf_double.power_of_ten(38))
+        scale -= 38
+    ten = mbf_double.power_of_ten(abs(scale))
+    p = mbf_double.multiply(p, ten) if scale >= 0 else mbf_double.divide(p, ten)
     if bracket > places:
-        p = mbf_double.divide(p, mbf_double.from_decimal(1, bracket - places))
+        p = mbf_double.divide(p, mbf_double.power_of_ten(bracket - places))
     _, exponent, mantissa = p
     shift = exponent - 184
     whole = mantissa << shift if shift >= 0 else (mantissa >> -shift) + (mantissa >> (-shift - 1) & 1)
@@ -354,7 +361,8 @@ def _scientific_digits_before(field: NumericField) -> int:
 
 
 def _scientific_body(x: float, field: NumericField) -> str:
-    """Mantissa and exponent of ``abs(x)`` for a ``^^^^`` field: ``1.25E+01``, ``.13E+02``, ``E+00``.
+    """Mantissa and exponent of ``abs(x)`` for a ``^^^^`` field: ``1.25E+01``, ``.13E+02``, ``E+00``
+    (``D`` for a gw double, :class:`Shown`).
 
     Zero shows no digit left of the point (GW-BASIC prints ``  E+00`` for
     ``##^^^^``); with no mantissa digit at all only the exponent is shown.
@@ -367,7 +375,8 @@ def _scientific_body(x: float, field: NumericField) -> str:
         with localcontext(_wide()):
             mantissa, exponent = _scientific_parts(x, field)
     sign = "-" if exponent < 0 else "+"
-    return f"{mantissa}E{sign}{abs(exponent):0{field.exponent_digits}d}"
+    marker = "D" if type(x) is Shown else "E"  # MATH1.ASM $PUEXP: D for a double
+    return f"{mantissa}{marker}{sign}{abs(exponent):0{field.exponent_digits}d}"
 
 
 def _scientific_parts(x: float, field: NumericField) -> tuple[str, int]:
@@ -428,7 +437,7 @@ def format_number(x: float, field: NumericField) -> str:
 
 def _exponent_overflows(body: str, field: NumericField) -> bool:
     """Whether an E-notation exponent needs more digits than the field's ``^`` give it."""
-    return bool(field.exponent_digits) and len(body.split("E")[1]) - 1 > field.exponent_digits
+    return bool(field.exponent_digits) and len(body.replace("D", "E").split("E")[1]) - 1 > field.exponent_digits
 
 
 def format_string(s: str, field: StringField) -> str:

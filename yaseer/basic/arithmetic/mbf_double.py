@@ -218,6 +218,41 @@ def from_bytes(data: bytes) -> tuple[bool, int, int]:
     return bool(mantissa >> 55), exponent, mantissa | (1 << 55)
 
 
+def from_integer(whole: int) -> tuple[bool, int, int]:
+    """A whole number of at most 56 significant bits (or exact in them) as a double."""
+    if not whole:
+        return ZERO
+    magnitude = -whole if whole < 0 else whole
+    size = magnitude.bit_length()
+    mantissa = magnitude << (56 - size) if size <= 56 else magnitude >> (size - 56)
+    return whole < 0, size + 128, mantissa
+
+
+def _nearest_power_of_ten(n: int) -> tuple[bool, int, int]:
+    """10**n (n >= 0) rounded half to even to 56 bits."""
+    numerator = 10 ** n
+    size = numerator.bit_length()
+    if size <= 56:
+        return from_integer(numerator)
+    mantissa, rest = numerator >> (size - 56), numerator & ((1 << (size - 56)) - 1)
+    half = 1 << (size - 57)
+    if rest > half or (rest == half and mantissa & 1):
+        mantissa += 1  # (10**n is never 2**56 - 1 times a power of two: no carry out)
+    return False, size + 128, mantissa
+
+
+# MATH1.ASM's table of powers of ten $DP00..: 10**0 to 10**38 as doubles, exact up to
+# 10**24 (5**24 < 2**56), the nearest 56 bits beyond (checked against the table's bytes)
+_POWERS = [_nearest_power_of_ten(n) for n in range(39)]
+_TEN = _POWERS[1]
+_EXACT_DIGITS = 1 << 56  # digits read so far below this: their value is exact
+
+
+def power_of_ten(n: int) -> tuple[bool, int, int]:
+    """10**n (0 <= n <= 38) as GW's table of powers of ten holds it."""
+    return _POWERS[n]
+
+
 def from_decimal(digits: int, power: int) -> tuple[bool, int, int]:
     """The double nearest to ``digits * 10**power`` (half to even), as GW-BASIC's number
     reader (``$FIN`` with ``MDPTEN``: the digits as a double, times or divided by a power

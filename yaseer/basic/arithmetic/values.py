@@ -154,15 +154,34 @@ def int_result(x):
     return single_arith.product(float(x))
 
 
+def nearest_integer(x) -> int:
+    """``x`` rounded half away from zero, exactly: GW's CINT (MATH2.ASM ``$CINC``/``$CIND``)
+    shifts the magnitude's whole part out of the mantissa and adds the last bit shifted
+    out, the one worth a half, so only the value decides (a double within a 56th bit
+    below a half rounds down).  ``x + 0.5`` rounded first would round up
+    .49999999999999994 (IEEE) or a :class:`Wide` just below a half (56 bits)."""
+    if type(x) is Wide:
+        negative, exponent, mantissa = x.parts
+        shift = 184 - exponent
+        whole = mantissa << -shift if shift <= 0 else (mantissa + (1 << (shift - 1))) >> shift
+        return -whole if negative else whole
+    if x >= 0.5:  # x + 0.5 is exact below 2**52, or rounds without passing a whole number
+        return int(x + 0.5)
+    if x > -0.5:
+        return 0
+    return -int(-x + 0.5)
+
+
 def to_int(x) -> int:
-    """CINT: ``x`` rounded half away from zero; ``Overflow`` outside -32768..32767."""
+    """CINT: ``x`` rounded half away from zero (:func:`nearest_integer`); ``Overflow``
+    outside -32768..32767."""
     if type(x) is int:
         if INT_MIN <= x <= INT_MAX:
             return x
         raise _overflow()
     if x != x:
         raise _overflow()
-    r = int(x + 0.5) if x >= 0 else -int(-x + 0.5)
+    r = nearest_integer(x)
     if INT_MIN <= r <= INT_MAX:
         return r
     raise _overflow()
@@ -542,7 +561,7 @@ double_add, double_subtract, double_multiply, double_divide = double_operations(
 
 def double_from_decimal(whole: str, fraction: str, exponent: int) -> float:
     """The double GW's number reader gives the decimal ``whole.fraction E exponent``
-    (digit strings; mbf_double.from_decimal): the nearest 56-bit value, a float or a
+    (digit strings; mbf_double.from_decimal, ``$FIN``'s steps): a float or a
     :class:`Wide`; beyond the range an infinity."""
     try:
         return double_of(mbf_double.from_decimal(int(whole + fraction or "0"), exponent - len(fraction)))
@@ -567,6 +586,32 @@ def single_of_double(x) -> float:
     if r >= single_arith.LIMIT:
         return -math.inf if negative else math.inf
     return -r if negative else r
+
+
+def _whole_double(whole: int) -> float:
+    """A whole number of at most 56 significant bits as a double (a float below 2**53, else
+    :func:`double_of` of its exact parts)."""
+    if -9007199254740992 <= whole <= 9007199254740992:
+        return float(whole)
+    return double_of(mbf_double.from_integer(whole))
+
+
+def whole_floor(x) -> float:
+    """INT of a single or a double: the largest whole number not above ``x``, on a
+    :class:`Wide`'s 56 bits (MATH2.ASM ``$DINT``: the fraction's bits shifted out of the
+    mantissa, a negative number's magnitude less 1 first and plus 1 after), so that
+    ``INT(2#^55 + 1)`` keeps its last bit."""
+    if type(x) is Wide:
+        return _whole_double(math.floor(x))
+    return float(math.floor(x))
+
+
+def whole_fix(x) -> float:
+    """FIX: ``x`` with its fraction dropped, on a :class:`Wide`'s 56 bits (MATH1.ASM
+    ``FIXER``: INT of the magnitude, the sign put back)."""
+    if type(x) is Wide:
+        return _whole_double(math.trunc(x))
+    return float(math.trunc(x))
 
 
 def printed_double(x) -> "Double":
@@ -640,7 +685,7 @@ RUNTIME = {
     "_ia": int_result, "_ci": to_int, "_dbl": printed_double, "_wd": wide_literal, "_WD": Wide, "_irange": int_range,
     "_idiv": int_divide, "_mod": int_modulo, "_and": logical_and, "_or": logical_or,
     "_xor": logical_xor, "_eqv": logical_eqv, "_imp": logical_imp, "_not": logical_not,
-    "_sgn": sign, "_len": len, "_strs": str_dollar,
+    "_sgn": sign, "_len": len, "_strs": str_dollar, "_floor": whole_floor, "_fix": whole_fix,
     "_cint": to_int, "_csng": single_arith.from_double, "_cdbl": float,
     "_sadd": single_arith.add, "_ssub": single_arith.subtract, "_sp": single_arith.product,
     "_spb": single_arith.product_near_half,

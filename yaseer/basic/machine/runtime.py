@@ -13,6 +13,7 @@ import operator
 from collections import deque
 from itertools import repeat
 
+from yaseer.basic.arithmetic.values import Wide, nearest_integer
 from yaseer.basic.errors import (
     BasicError, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_CALL, OVERFLOW, STRING_TOO_LONG,
 )
@@ -35,14 +36,19 @@ def overflow() -> None:
 
 
 def subscript(x: float) -> int:
-    """An array subscript: rounded to the nearest integer.
+    """An array subscript: rounded to the nearest integer, half away from zero (GW's
+    INTIDX takes CINT's integer: values.nearest_integer, exact on a double's 56 bits).
 
-    A negative subscript is ``Illegal function call`` (as GW-BASIC, checked with
-    PC-BASIC); one above the dimension is ``Subscript out of range`` (an IndexError).
+    A negative subscript, -.5 among them, is ``Illegal function call`` (GWMAIN.ASM
+    INTIDX, as PC-BASIC 2.0.8); one above the dimension is ``Subscript out of range``
+    (an IndexError).
     """
-    if x < -0.5:
+    if x >= 0.5 and type(x) is not Wide:  # (the common case: x + 0.5 is exact, see nearest_integer)
+        return int(x + 0.5)
+    k = nearest_integer(x)
+    if k < 0:
         raise illegal_function_call()
-    return int(x + 0.5)
+    return k
 
 
 def subscript_truncated(x: float) -> int:
@@ -63,8 +69,9 @@ def subscript_from_one(x: float) -> int:
 
 
 def cint(x: float) -> int:
-    """Round to an integer for the logical operators, ON and CHR$ (half away from zero)."""
-    return int(x + 0.5) if x >= 0 else -int(-x + 0.5)
+    """Round to an integer for the logical operators, ON and CHR$ (half away from zero,
+    exactly: values.nearest_integer)."""
+    return nearest_integer(x)
 
 
 def power(a: float, b: float) -> float:
