@@ -254,32 +254,40 @@ def power_of_ten(n: int) -> tuple[bool, int, int]:
 
 
 def from_decimal(digits: int, power: int) -> tuple[bool, int, int]:
-    """The double nearest to ``digits * 10**power`` (half to even), as GW-BASIC's number
-    reader (``$FIN`` with ``MDPTEN``: the digits as a double, times or divided by a power
-    of ten by ``$FMULD``/``$FDIVD``) gives it for up to 16 digits and powers up to 10**24,
-    where both are exact and one rounding is made.  Raises :class:`Overflow` beyond the
-    range; below it 0."""
+    """The double GW-BASIC's number reader gives ``digits * 10**power`` (``digits``: all
+    the digits typed, as an integer; ``power``: the exponent less the digits after the
+    point), step by step as ``$FIN`` makes it (MATH1.ASM, MATH2.ASM):
+
+    * ``$FIDIG`` takes the digits one by one, the number so far times ten (``$FMULD``
+      by 10) plus the digit (``$FADDD``): exact while below 2**56 (16 digits and some
+      17), then each step rounds;
+    * ``$FINE``/``MDPTEN`` apply the power once: times 10**power (``$FMULD``) up to
+      10**38 (beyond: Overflow), divided by 10**-power (``$FDIVD``) down to 10**-38, below
+      that divided by 10**(-power - 38) and then by 10**38, below 10**-76 zero.  The
+      powers are the table's (:func:`power_of_ten`).
+
+    Up to 16 digits and powers up to 10**24 this is the exact value rounded once; beyond,
+    a second rounding may make the last bit differ from the nearest.  Raises
+    :class:`Overflow` beyond the range; below it 0."""
     if not digits:
         return ZERO
-    numerator, denominator = (digits * 10 ** power, 1) if power >= 0 else (digits, 10 ** -power)
-    shift = 56 - (numerator.bit_length() - denominator.bit_length())  # the quotient near 2**56
-    while True:
-        top, bottom = (numerator << shift, denominator) if shift >= 0 else (numerator, denominator << -shift)
-        mantissa, rest = divmod(top, bottom)
-        if mantissa >> 56:
-            shift -= 1
-        elif not mantissa >> 55:
-            shift += 1
-        else:
-            break
-    if 2 * rest > bottom or (2 * rest == bottom and mantissa & 1):
-        mantissa += 1
-        if mantissa >> 56:
-            mantissa >>= 1
-            shift -= 1
-    exponent = 184 - shift
-    if exponent > 255:
-        raise Overflow(False)
-    if exponent <= 0:
+    if digits < _EXACT_DIGITS:
+        number = from_integer(digits)
+    else:
+        text = str(digits)
+        exact, used = 0, 0
+        while exact * 10 + int(text[used]) < _EXACT_DIGITS:
+            exact, used = exact * 10 + int(text[used]), used + 1
+        number = from_integer(exact)
+        for digit in text[used:]:
+            number = add(multiply(number, _TEN), from_integer(int(digit)))
+    if power > 0:
+        if power > 38:
+            raise Overflow(False)
+        return multiply(number, _POWERS[power])
+    if power < -76:
         return ZERO
-    return False, exponent, mantissa
+    if power < -38:
+        number = divide(number, _POWERS[-power - 38])
+        power = -38
+    return divide(number, _POWERS[-power]) if power else number
