@@ -92,10 +92,16 @@ def divide(a, b) -> float:
 
 
 def rounded(x) -> float:
-    """Any value (a literal, READ, INPUT, a Python area's result) as a 12-digit decimal."""
-    if x != x or x in (float("inf"), float("-inf")):
+    """Any value (a literal, READ, INPUT, a Python area's result) as a 12-digit decimal:
+    :func:`dec`'s decimal (the one every operation reads the value as), as a float, 0
+    below 1E-99 in size, ``Overflow`` from 1E+100 on (without the decimal module: the
+    nearest double of a decimal is monotone in it, so the doubles compare as the decimals)."""
+    if x != x or x in (math.inf, -math.inf):
         return x
-    return _checked(CONTEXT.plus, dec(x))
+    value = float(format(x, ".12g"))
+    if -1e100 < value < 1e100:
+        return value if value >= 1e-99 or value <= -1e-99 else 0.0
+    raise BasicError("Overflow", OVERFLOW)
 
 
 def power(a, b) -> float:
@@ -216,17 +222,34 @@ def log10(x) -> float:
     return _checked(CONTEXT.log10, d)
 
 
+def held(x):
+    """A number Python code stores (a Python area, the API) as the program holds it: a
+    12-digit decimal (:func:`rounded`); one of 1E+100 or more in size, an infinity or NaN as
+    it is (the operation that reads it gives the Overflow)."""
+    return rounded(x) if -9.999999999995e99 < x < 9.999999999995e99 else x
+
+
+def rounding(f):
+    """``f`` with its numeric result rounded to 12 digits (:func:`rounded`): of a tuple (POL's
+    and REC's pair, INPUT's list of values) each number; strings and None (an INPUT item left as it
+    was) as they are."""
+    def rounded_call(*args):
+        value = f(*args)
+        if type(value) in (tuple, list):
+            return type(value)(v if v is None or type(v) is str else rounded(v) for v in value)
+        return value if value is None or type(value) is str else rounded(value)
+    return rounded_call
+
+
 def rounding_all(functions: dict) -> dict:
-    """``functions`` (name -> callable) with each numeric result rounded to 12 digits
-    (a pair, POL's and REC's, each of its two; strings as they are)."""
-    def rounding(f):
-        def rounded_call(*args):
-            value = f(*args)
-            if type(value) is tuple:
-                return tuple(rounded(v) for v in value)
-            return value if type(value) is str else rounded(value)
-        return rounded_call
+    """``functions`` (name -> callable) with each numeric result rounded to 12 digits."""
     return {name: rounding(f) for name, f in functions.items()}
+
+
+# The compiled code's helpers that bring numbers in from outside the arithmetic (READ, INPUT,
+# INPUT#, VAL, RND, RAN#): each gives 12-digit decimals, as the calculator stores them, so
+# that every value the program holds is one (the compiled + - * / rely on it: decimal_scales.py)
+ENTERING = ("_read_n", "_input", "_fin_n", "_val", "_rnd", "_rndf", "_ran")
 
 
 # ------------------------------------------------------------------ trigonometry

@@ -796,8 +796,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         pieces = [(None, text) for text in self.prelude]
         pieces += [(b.first_line, self.block_source(b)) for b in self.blocks]
         if self.numbers.cache_bases:  # each cache the code uses matches nothing until its operation writes it
-            used = sorted(set(_CACHE_WRITTEN.findall("".join(text for _, text in pieces))))
-            pieces.insert(0, (None, "".join(f"{base}h = -1e999\n" for base in used)))
+            pieces.insert(0, (None, self.numbers.cache_prelude("".join(text for _, text in pieces))))
         source = "\n".join(text for _, text in pieces)
         line_blocks = {number: self.entry_block[i] for number, i in self.line_first.items()
                        if i in self.entry_block}
@@ -896,7 +895,6 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         return "\n".join(out) + "\n"
 
 
-_CACHE_WRITTEN = re.compile(r"_zw[spq]\('(\w+)'")  # a binade cache's name where its writer is called
 
 
 def _array_loads(arrays: dict[str, int]) -> list[str]:

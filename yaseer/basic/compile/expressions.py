@@ -298,7 +298,7 @@ class ExpressionCompiler:
                 return self.numbers.power(left, lkind, right, rkind, whole)
             if (self.numbers.square_by_product and isinstance(node.right, ast.Num)
                     and node.right.value == 2.0 and _simple_operand(left)):
-                return f"({left} * {left})", "n"
+                return self.numbers.arithmetic("*", left, lkind, left, lkind)
         return self.numbers.helper(op, left, right)
 
     def expr_Call(self, node, scope):

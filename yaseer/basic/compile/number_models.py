@@ -17,6 +17,7 @@ expression; :func:`number_model` picks the model from ``Dialect.typed_numbers``.
 
 from __future__ import annotations
 
+import re
 from math import frexp
 
 from yaseer.basic.arithmetic.single_arith import LIMIT, SMALL_CONSTANT, TINY
@@ -325,6 +326,11 @@ class TypedNumbers(PlainNumbers):
             return f"((_sh if {test.format(c=cache)} else {banded}) if {inside} else {written})"
         return f"(_sh if {inside} and {test.format(c=cache)} else {written})"
 
+    def cache_prelude(self, source: str) -> str:
+        """The module code that sets the binade caches ``source`` writes to match nothing."""
+        used = sorted(set(_CACHE_WRITTEN.findall(source)))
+        return "".join(f"{base}h = -1e999\n" for base in used)
+
     def helper(self, op: str, left: str, right: str) -> tuple[str, str]:
         names = {"\\": "_idiv", "MOD": "_mod", "AND": "_and", "OR": "_or", "XOR": "_xor",
                  "EQV": "_eqv", "IMP": "_imp"}
@@ -530,7 +536,8 @@ def _tested(value: str, helper: str, band: str | None = None, in_range: bool = T
         helper = f"(_sh if {_cut_in_range() + ' and ' if in_range else ''}{band} else {helper})"
     return f"(_sv if {exact} else {helper})"
 
-RANGE_CHECKED = ("(_w if ", "(_sv if ", "(_sh if ", "((_sh if ")  # how a range-checked double's and a tested single's code start
+# how a range-checked double's, a tested single's and a scaled decimal's code start
+RANGE_CHECKED = ("(_w if ", "(_sv if ", "(_sh if ", "((_sh if ", "(_dn / ")
 """(Their parentheses hold a conditional expression: a chain like ``A+B+C`` may not drop them.)"""
 
 
@@ -567,11 +574,21 @@ def _is_int_literal(code: str) -> bool:
 
 class DecimalNumbers(PlainNumbers):
     """``--arith decimal`` (casio): floats that stand for 12-digit decimals; ``+ - * /``,
-    ``^``, literals and FOR steps through yaseer/basic/arithmetic/decimal_arith.py."""
+    ``^``, literals and FOR steps through yaseer/basic/arithmetic/decimal_arith.py.
 
-    square_by_product = False
+    Each ``+ - * /`` is written inline first: the float result scaled by its operation's
+    cached power of ten, kept where it is surely the 12-digit decimal's
+    (yaseer/basic/arithmetic/decimal_scales.py, whose docstring proves it), else the
+    routine of decimal_arith through the cache's writer."""
+
+    square_by_product = True  # X^2 is decimal_arith.power's product X*X, rounded once
     pi = "3.1415926536"  # PI inside the FX-850P: 11 digits (PI.md; shown 3.141592654)
     _OPERATIONS = {"+": "_dadd", "-": "_dsub", "*": "_dmul", "/": "_ddiv13"}
+
+    def __init__(self):
+        self._temps = 0
+        self.cache_bases: list[str] = []  # the scale caches written (see _scaled)
+        self.caching = True  # (off: the routines alone)
 
     def literal(self, value, kind: str) -> tuple[str, str]:
         from yaseer.basic.arithmetic.decimal_arith import rounded
@@ -579,7 +596,43 @@ class DecimalNumbers(PlainNumbers):
         return repr(rounded(float(value))), "n"
 
     def arithmetic(self, op: str, left: str, lkind: str, right: str, rkind: str) -> tuple[str, str]:
-        return f"{self._OPERATIONS[op]}({left}, {right})", "n"
+        if not self.caching:
+            return f"{self._OPERATIONS[op]}({left}, {right})", "n"
+        return self._scaled(op, left, right), "n"
+
+    def _scaled(self, op: str, left: str, right: str) -> str:
+        """The code of ``left op right`` through a scale cache ``_D<n>`` (decimal_scales.py):
+        ``_dt`` the scaled float result, ``_dn`` it rounded to a whole number; a sum of two
+        operands that are not literals tests the first one against the cache's bounds
+        ``_D<n>l``, ``_D<n>h``.  Each operand is evaluated once, in order (a scratch local
+        ``_x<n>``, ``_y<n>`` keeps one that is not a local or a literal for the writer)."""
+        from yaseer.basic.arithmetic.decimal_scales import BAND, BOTTOM, MAGIC, TOP
+
+        self._temps += 1
+        n = self._temps
+        cache = f"_D{self.site_salt}{n}"
+        self.cache_bases.append(cache)
+        first, a = (left, left) if _plain_operand(left) else (f"(_x{n} := {left})", f"_x{n}")
+        second, b = (right, right) if _plain_operand(right) else (f"(_y{n} := {right})", f"_y{n}")
+        routine = self._OPERATIONS[op]
+        guard = ""
+        if op in "*/":
+            written = f"_zd({cache!r}, {routine}, {a}, {b})"
+        else:
+            constants = [abs(float(x)) for x in (a, b) if _small_literal(x)]
+            if constants:
+                written = f"_zdc({cache!r}, {routine}, {a}, {b}, {max(constants)!r})"
+            else:
+                guard = f" and {cache}l < {a} < {cache}h"
+                written = f"_zdg({cache!r}, {routine}, {a}, {b})"
+        return (f"(_dn / {cache} if 0.0 < (_dt := ({first} {op} {second}) * {cache}) < {TOP!r}{guard} and "
+                f"((_dn := _dt + {MAGIC!r} - {MAGIC!r}) == _dt or _dt >= {BOTTOM!r} and "
+                f"{-BAND!r} < _dt - _dn < {BAND!r}) else {written})")
+
+    def cache_prelude(self, source: str) -> str:
+        """The module code that sets the caches ``source`` writes to match nothing."""
+        used = sorted(set(_SCALE_WRITTEN.findall(source)))
+        return "".join(f"{name} = 1e999 - 1e999\n{name}l = {name}h = 0.0\n" for name in used)
 
     def loop_helpers(self, kind: str) -> tuple[str, str]:
         return "_frange", "_dadd({var}, {step})"
@@ -591,6 +644,10 @@ class DecimalNumbers(PlainNumbers):
         def whole(node) -> bool:
             return node is None or (isinstance(node, ast.Num) and float(node.value).is_integer())
         return whole(stmt.start) and whole(stmt.step)
+
+
+_CACHE_WRITTEN = re.compile(r"_zw[spq]\('(\w+)'")  # a binade cache's name where its writer is called
+_SCALE_WRITTEN = re.compile(r"_zd[cg]?\('(\w+)'")  # a scale cache's name where its writer is called
 
 
 def number_model(dialect, def_types=None) -> PlainNumbers:

@@ -455,12 +455,14 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             ns.update({"_ran": self.ran, "_valf": self.valf, "_fre0": self.free_area, "_sroom": self.string_room})
         ns.update(self._trig_functions())
         if self.dialect.arithmetic == "decimal":
-            from yaseer.basic.arithmetic import decimal_arith  # here: only --arith decimal loads the decimal module
+            from yaseer.basic.arithmetic import decimal_arith, decimal_scales  # here: only --arith decimal loads the decimal module
 
             if self.dialect.words:
                 ns.update(decimal_arith.rounding_all(casio_math.RUNTIME))
             ns.update(decimal_arith.RUNTIME)
             ns.update(self._trig_functions())
+            ns.update(decimal_arith.rounding_all({name: ns[name] for name in decimal_arith.ENTERING if name in ns}))
+            ns.update(decimal_scales.writers(ns))
         self.namespaces[area] = ns
         return ns
 
@@ -628,7 +630,28 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             self.line = line
             hook(self, n)
             changed = True
+        if (python_area is not None or self.area_hooks) and self.dialect.arithmetic == "decimal":
+            self._decimal_values()
         return changed
+
+    def _decimal_values(self) -> None:
+        """Every number in the scalars and arrays as a 12-digit decimal (``--arith decimal``),
+        after Python code stored its own (the compiled arithmetic relies on it, decimal_scales.py)."""
+        from yaseer.basic.arithmetic.decimal_arith import held
+
+        def each(values: list) -> None:
+            for i, v in enumerate(values):
+                if type(v) is list:
+                    each(v)
+                elif type(v) is not str:
+                    values[i] = held(v)
+
+        scalars = self.scalars
+        for name, v in list(scalars.items()):
+            if type(v) is not str:
+                scalars[name] = held(v)
+        for array in self.arrays.values():
+            each(array)
 
     def call_file(self, name: str, line=None) -> None:
         """GOSUB "file:label" (and GOTO, which ends when it comes back): run the program
@@ -838,6 +861,10 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         """RND's next number, the first time an area draws one: from then on each area's
         ``_rndf`` (RND and RND(x) with a constant x > 0) is the generator's own drawer."""
         draw = self.random.drawer()
+        if self.dialect.arithmetic == "decimal":  # (12-digit decimals, as the namespace's other entries)
+            from yaseer.basic.arithmetic.decimal_arith import rounding
+
+            draw = rounding(draw)
         for namespace in self.namespaces.values():
             namespace["_rndf"] = draw
         return draw()

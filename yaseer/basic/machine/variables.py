@@ -44,7 +44,14 @@ class Variables:
 
     def set_scalar(self, name: str, value) -> None:
         name = self.variable_name(name)
-        self.scalars[name] = str(value) if name.endswith("$") else float(value)
+        if name.endswith("$"):
+            self.scalars[name] = str(value)
+        elif self.dialect.arithmetic == "decimal":  # (a 12-digit decimal, as every value it holds)
+            from yaseer.basic.arithmetic.decimal_arith import held
+
+            self.scalars[name] = held(float(value))
+        else:
+            self.scalars[name] = float(value)
 
     def array(self, name: str) -> list:
         """The 1-D array ``name`` as a mutable list indexed by subscript."""

@@ -1,0 +1,135 @@
+"""The scale caches of ``--arith decimal``'s compiled ``+ - * /`` (casio): the 12-digit
+decimal result from the float result, with no decimal module, where that is sure.
+
+Every number the decimal arithmetic holds is the nearest double to a decimal of at most
+12 significant digits, from 1E-99 to 9.99999999999E+99 in size, or 0 (decimal_arith.py;
+its entry points round what comes in: literals, READ, INPUT, VAL, RND, RAN#, a Python
+area's values).  For two such doubles ``a`` and ``b`` (standing for the decimals ``A``
+and ``B``) the compiled code (number_models.DecimalNumbers) computes, without a call::
+
+    t = fl(fl(a op b) * S)          S = +-10**k, 0 <= k <= 22 (an exact double)
+    n = (t + M) - M                 M = 1.5 * 2**52: t rounded to an integer (|t| < 2**51)
+
+and gives ``fl(n / S)`` when ``0 < t < 10**12`` and either ``t == n`` (the exact test) or
+``t >= 10**11`` and ``|t - n| < 1/2 - 2**-8`` (the band test); any other result takes
+the decimal module's routine (:func:`writers`), which then keeps, for this operation,
+the ``S`` of its result's decade (``x`` from ``10**e`` to ``10**(e+1)``: ``S`` =
+``10**(11-e)``, with the result's sign) in a global of the area's namespace.  ``n / S``
+is correctly rounded (two exact doubles), so it is the nearest double to the decimal
+``n * 10**-k``; what remains is that this decimal is the 12-digit rounding (half up)
+of the exact ``X = A op B``.
+
+**The error.**  Write ``u = 2**-53``; each double is within ``u`` (relative) of what it
+stands for (``a`` of ``A``, and every operation rounds to nearest).  For ``*`` and ``/``,
+``t`` is ``X*S`` times four such factors: ``|t - X*S| <= 4.0001 u |X*S|``, and ``t <
+10**12`` makes this below ``4.5e-4``.  For ``+`` and ``-`` the operands' own errors do
+not shrink with the result: ``|t - X*S| <= u |S| (|A| + |B| + |X|) (1 + 2u) + u |t|``.
+The compiled code makes sure ``|S a| < 10**13`` (a variable operand: the test ``l < a
+< h`` on the first one, whose bounds the writer keeps with ``S``; a literal ``c``: the
+writer keeps no ``S`` with ``|S c| > 10**13``); the other operand is then below
+``10**13 + 10**12`` after scaling, and ``|t - X*S| <= 2.5e-3 < 2**-8``.  Call this
+bound ``E`` (below ``2**-8`` in every case).
+
+**The band test** (``10**11 <= t < 10**12``, ``|t - n| < 1/2 - 2**-8``): ``|X*S - n| <
+1/2``, so ``n`` is the integer nearest ``X*S`` and no tie.  If ``X*S`` is in ``[10**11,
+10**12)`` the 12-digit rounding of ``X`` is at the unit ``1/|S|``: it is ``n / S``.  If
+``X*S`` lies just below ``10**11`` (within ``E``), ``X``'s 12 digits end a place lower and
+``10 X S`` is within ``10 E < 1/2`` below ``10**12``: it rounds to ``10**12``, the value
+``10**11 / S = n / S`` (``n`` is ``10**11``).  Just above ``10**12`` likewise (``n =
+10**12``).
+
+**The exact test** (``t`` a whole number, ``0 < t < 10**12``): ``|X*S| < 10**12``, so
+the unit of ``X``'s 12 digits is ``10**-j / |S|`` for some ``j >= 0``, and the rounding
+of ``X`` is ``t / S`` when ``|X*S - t| 10**j < 1/2``.  For ``*`` and ``/`` the error is
+relative: ``4.0001 u |X*S| 10**j < 4.0001 u 10**12 < 1/2``.  For ``+`` and ``-``:
+if ``|A| + |B| <= 1.25 |X|`` (no cancellation: one sign, or exponents two decades
+apart, ``|X| >= 0.9 max``) the error is again relative (``3.3 u``).  Else the two
+decades ``e_A, e_B`` differ by at most one, ``X`` is a multiple of the finer operand's
+unit ``q = 10**(min(e_A, e_B) - 11)``, and the operands are below ``10**(min + 2) = q
+10**13``: ``E <= 2.4e-3 q |S|``.  If ``q |S| >= 1`` then ``X*S`` is a whole number
+within ``E < 1`` of ``t``: equal, and ``X`` (at most 12 digits) is its own rounding.
+If ``q |S| = 10**-m < 1``, ``X*S`` and ``t`` are both multiples of ``10**-m`` within
+``2.4e-3 * 10**-m`` of each other: equal again.
+
+The range: ``S`` is kept only for results from 1E-11 to below 1E+12 (``k`` from 0 to
+22), so a fast result is from 1E-22 to 1E+12 in size, never near the ends of the range
+(1E-99, 1E+100), and never 0 (``t > 0``): an overflow, an underflow to 0, a result of
+the other sign and a division by 0 (Python's ZeroDivisionError, the same BASIC error)
+take the routine.  tests/test_decimal_scales.py compares the compiled code with the
+routine on hundreds of thousands of operands.
+"""
+
+from __future__ import annotations
+
+from math import nan
+
+MAGIC = 1.5 * 2.0 ** 52  # (t + MAGIC) - MAGIC: t rounded to a whole number (|t| < 2**51)
+TOP = 1e12  # a scaled result below it has at most 12 digits before the point
+BOTTOM = 1e11  # ... and from it on exactly 12 (the band test's decade)
+BAND = 0.5 - 2.0 ** -8  # |t - n| below it: no rounding boundary within the error E
+GUARD = 1e13  # |S a| below it for an operand of a sum: bounds the operands' own errors
+_SCALES = {e: 10.0 ** (11 - e) for e in range(-11, 12)}  # exact doubles 10**0 .. 10**22
+_DECADES = sorted((10.0 ** e, e) for e in range(-11, 12))
+
+
+def scale(x: float) -> float:
+    """``S`` of the decade of ``x`` (a nonzero own decimal from 1E-11 to below 1E+12),
+    with its sign; NaN (a scale no value matches) for any other ``x``.  The decade's
+    power of ten is a decimal of one digit, so comparing the doubles compares the
+    decimals."""
+    size = abs(x)
+    if not 1e-11 <= size < 1e12:
+        return nan
+    exponent = -11
+    for power, e in _DECADES:
+        if size >= power:
+            exponent = e
+        else:
+            break
+    s = _SCALES[exponent]
+    return s if x > 0 else -s
+
+
+def writers(namespace: dict) -> dict:
+    """The compiled code's ``_zd(name, operation, a, b)`` (``*`` and ``/``), ``_zdc(name,
+    operation, a, b, c)`` (``+`` or ``-`` with a literal of size ``c``) and ``_zdg(name,
+    operation, a, b)`` (``+`` or ``-`` of two variables, guarded on ``a``): the result of
+    ``operation(a, b)`` (decimal_arith's routine: its errors are raised), after keeping the
+    ``S`` of its decade in ``namespace[name]`` (see the module docstring).  A result of 0
+    keeps the scale there was (0 is never fast, any ``S`` holds)."""
+
+    def product(name, operation, a, b):
+        result = operation(a, b)
+        if result:
+            namespace[name] = scale(result)
+        return result
+
+    def with_constant(name, operation, a, b, c):
+        result = operation(a, b)
+        if result:
+            s = scale(result)
+            namespace[name] = s if abs(s) * c <= GUARD else nan
+        return result
+
+    def guarded(name, operation, a, b):
+        result = operation(a, b)
+        if result:
+            s = scale(result)
+            namespace[name] = nan  # matches nothing until the bounds fit it
+            if s == s:
+                bound = GUARD / abs(s)
+                namespace[name + "l"], namespace[name + "h"] = -bound, bound
+                namespace[name] = s
+        return result
+
+    return {"_zd": product, "_zdc": with_constant, "_zdg": guarded}
+
+
+def initial(names) -> dict:
+    """The namespace entries of the caches ``names`` before their first result: scales that
+    match nothing (and a guard that lets nothing through)."""
+    entries = {}
+    for name in names:
+        entries[name] = nan
+        entries[name + "l"] = entries[name + "h"] = 0.0
+    return entries
