@@ -265,3 +265,44 @@ def test_a_program_in_decimal():
                        "20 E=1E50: F=0: ON ERROR GOTO 40: F=E^2\n30 END\n40 F=-1: RESUME 30\n")
     assert machine.scalar("A") == 1.0 and machine.scalar("B") == 0.0 and machine.scalar("C") == 0.999999999999
     assert machine.scalar("D") == 1.00000000002 and machine.scalar("F") == -1.0
+
+
+def test_rounded_within_is_the_rounding_of_every_number_in_reach():
+    """decimal_scales.rounded_within (SQR, EXP, LOG, SIN, COS from the float functions): where it
+    answers, both ends of the reach round (by the decimal module, half up) to its answer;
+    and it answers for most values."""
+    rng = random.Random(11)
+    answered = 0
+    for _ in range(60000):
+        value = float(f"{rng.randrange(10 ** 15, 10 ** 16)}e{rng.randint(-27, -5)}") * rng.choice((1, -1))
+        if rng.random() < 0.2:  # near a rounding boundary: a 12-digit decimal and a half unit
+            value = float(f"{rng.randrange(10 ** 11, 10 ** 12)}5e{rng.randint(-23, -1)}")
+        error = abs(value) * rng.choice((4e-16, 6e-16, 1e-15, 1e-14, 1e-13))
+        found = decimal_scales.rounded_within(value, error)
+        if found is None:
+            continue
+        answered += 1
+        for end in (Decimal(value) - Decimal(error) * Decimal("1.0001"), Decimal(value) + Decimal(error) * Decimal("1.0001")):
+            assert float(CONTEXT.plus(end)) == found, (value, error, found)
+    assert answered > 30000
+
+
+@pytest.mark.parametrize("function", ["sin", "cos"])
+@pytest.mark.parametrize("degrees", [True, False])
+def test_sine_and_cosine_of_whole_numbers_against_mpmath(function, degrees):
+    """A whole angle is its own decimal exactly: the float path's bound has no term for the
+    angle's distance from its decimal (BM8's SIN(K)); the result is mpmath's, rounded half up
+    to 12 digits."""
+    import mpmath
+
+    mpmath.mp.dps = 50
+    rng = random.Random(function + str(degrees))
+    angles = list(range(1, 3000)) + [rng.randrange(1, 10 ** rng.randint(4, 9)) for _ in range(3000)]
+    for k in angles:
+        for x in (k, -k):
+            arg = mpmath.mpf(x) * mpmath.pi / 180 if degrees else mpmath.mpf(x)
+            exact = (mpmath.sin if function == "sin" else mpmath.cos)(arg)
+            if degrees and x % 90 == 0:
+                continue  # (exact at right angles: test_decimal_arith)
+            expected = float(CONTEXT.plus(Decimal(mpmath.nstr(exact, 40, min_fixed=-60, max_fixed=60))))
+            assert getattr(decimal_arith, function)(float(x), degrees) == expected, (function, degrees, x)

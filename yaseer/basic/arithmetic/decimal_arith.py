@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 from decimal import ROUND_HALF_UP, Context, Decimal, Overflow as DecimalOverflow
 
+from yaseer.basic.arithmetic.decimal_scales import rounded_within
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_CALL, OVERFLOW
 
 DIGITS = 12  # inside; the display shows 10 (formatting.number_to_text)
@@ -126,14 +127,27 @@ def power(a, b) -> float:
 # (a few in a thousand lie too near a rounding boundary and take the decimal module).
 
 def _own_decimal(x) -> bool:
-    """Is ``x`` the nearest float to its decimal (every value the arithmetic makes is)?"""
+    """Is ``x`` the nearest float to its decimal (every value the arithmetic makes is)?  A whole
+    number below 1E+12 in size is (it is its decimal, of at most 12 digits), without formatting."""
+    if -1e12 < x < 1e12 and x % 1.0 == 0.0:
+        return True
     return x == x and abs(x) != math.inf and float(format(x, _OWN_FORMAT)) == x
+
+
+def _off_own(x, per_unit: float) -> float:
+    """How far an own decimal's angle ``x`` may be from its decimal, times ``per_unit``: 0 for a
+    whole number below 1E+15 (its double is its decimal: the decimal's digits after the point
+    would be more than half the double's unit away), else half the double's unit, ``x * 2**-53``
+    (``per_unit`` then carries the 1.1e-16 and the angle's unit)."""
+    return 0.0 if x % 1.0 == 0.0 and -1e15 < x < 1e15 else abs(x) * per_unit
 
 
 def _surely(value: float, error: float):
     """``value`` rounded to DIGITS digits as a float when every number within ``error``
     of it rounds to the same, else None.  (The ends' roundings agree only when no
     halfway point lies between them, so half up and half even agree there.)"""
+    if 1e-11 <= abs(value) < 1e12:  # the common decades: the scaled float's whole number
+        return rounded_within(value, error)
     if not 1e-90 < abs(value) < 1e90:
         return None
     low = format(value - error, _DIGITS_FORMAT)
@@ -188,7 +202,7 @@ def _float_sine_or_cosine(x, degrees: bool, which: int):
         return None
     if not degrees:
         value = math.cos(x) if which else math.sin(x)
-        return _surely(value, abs(x) * 1.2e-16 + 4e-16 + abs(value) * 4e-16)
+        return _surely(value, _off_own(x, 1.2e-16) + 4e-16 + abs(value) * 4e-16)
     angle = math.fmod(x, 360.0)
     if angle > 180.0:
         angle -= 360.0
@@ -204,7 +218,7 @@ def _float_sine_or_cosine(x, degrees: bool, which: int):
     if angle > 45.0:  # the other function of the complement
         angle, which = 90.0 - angle, 1 - which
     value = sign * (math.cos(math.radians(angle)) if which else math.sin(math.radians(angle)))
-    return _surely(value, abs(value) * 6e-16 + abs(x) * 2.2e-18)
+    return _surely(value, abs(value) * 6e-16 + _off_own(x, 2.2e-18))
 
 
 def log10(x) -> float:

@@ -61,7 +61,7 @@ routine on hundreds of thousands of operands.
 
 from __future__ import annotations
 
-from math import nan
+from math import floor, frexp, log10, nan
 
 MAGIC = 1.5 * 2.0 ** 52  # (t + MAGIC) - MAGIC: t rounded to a whole number (|t| < 2**51)
 TOP = 1e12  # a scaled result below it has at most 12 digits before the point
@@ -69,7 +69,18 @@ BOTTOM = 1e11  # ... and from it on exactly 12 (the band test's decade)
 BAND = 0.5 - 2.0 ** -8  # |t - n| below it: no rounding boundary within the error E
 GUARD = 1e13  # |S a| below it for an operand of a sum: bounds the operands' own errors
 _SCALES = {e: 10.0 ** (11 - e) for e in range(-11, 12)}  # exact doubles 10**0 .. 10**22
-_DECADES = sorted((10.0 ** e, e) for e in range(-11, 12))
+_POWERS = {e: 10.0 ** e for e in range(-12, 14)}  # the decades' ends (decimals of one digit)
+# a binade's lowest decade: 2**(b-1) <= x < 2**b has floor(log10 x) this or one more
+_LOW_DECADE = {b: floor((b - 1) * log10(2.0)) for b in range(-40, 42)}
+
+
+def decade_scale(size: float) -> float:
+    """``10**(11 - e)`` for ``10**e <= size < 10**(e+1)``, ``size`` from 1E-11 to below 1E+12
+    (a double; the decade's powers of ten are compared as doubles, exact or the nearest)."""
+    e = _LOW_DECADE[frexp(size)[1]]
+    if size >= _POWERS[e + 1]:
+        e += 1
+    return _SCALES[e]
 
 
 def scale(x: float) -> float:
@@ -77,52 +88,92 @@ def scale(x: float) -> float:
     with its sign; NaN (a scale no value matches) for any other ``x``.  The decade's
     power of ten is a decimal of one digit, so comparing the doubles compares the
     decimals."""
-    size = abs(x)
-    if not 1e-11 <= size < 1e12:
+    if not 1e-11 <= abs(x) < 1e12:
         return nan
-    exponent = -11
-    for power, e in _DECADES:
-        if size >= power:
-            exponent = e
-        else:
-            break
-    s = _SCALES[exponent]
+    s = decade_scale(abs(x))
     return s if x > 0 else -s
 
 
+def rounded_within(value: float, error: float):
+    """The 12-digit rounding of every number within ``error`` of ``value``, when it is one
+    (no rounding boundary in between) and lies from 1E-11 to below 1E+12 in size: as the
+    nearest double; else None.  The scaled ``t`` (its product's rounding counted) and its
+    reach must stay inside one decade and less than 1/2 from the whole number ``n`` nearest
+    ``t``: then every number in reach rounds to ``n``, and ``n / S`` is the double (two exact
+    doubles divided).  No halfway point is in reach, so rounding half up or half to even agree."""
+    size = abs(value)
+    if not 1e-11 <= size < 1e12:
+        return None
+    s = decade_scale(size)
+    t = size * s
+    reach = error * s + t * 2.3e-16
+    if BOTTOM <= t - reach and t + reach < TOP:
+        n = (t + MAGIC) - MAGIC
+        if abs(t - n) + reach < 0.4999:
+            return n / s if value > 0 else -(n / s)
+    return None
+
+
+def scaled_result(r: float, s: float):
+    """The compiled code's tests on the float result ``r`` with the scale ``s`` (module
+    docstring): the 12-digit decimal's double, or None where they do not hold."""
+    t = r * s
+    if 0.0 < t < TOP:
+        n = (t + MAGIC) - MAGIC
+        if n == t or t >= BOTTOM and -BAND < t - n < BAND:
+            return n / s
+    return None
+
+
 def writers(namespace: dict) -> dict:
-    """The compiled code's ``_zd(name, operation, a, b)`` (``*`` and ``/``), ``_zdc(name,
-    operation, a, b, c)`` (``+`` or ``-`` with a literal of size ``c``) and ``_zdg(name,
-    operation, a, b)`` (``+`` or ``-`` of two variables, guarded on ``a``): the result of
-    ``operation(a, b)`` (decimal_arith's routine: its errors are raised), after keeping the
-    ``S`` of its decade in ``namespace[name]`` (see the module docstring).  A result of 0
-    keeps the scale there was (0 is never fast, any ``S`` holds)."""
+    """The compiled code's ``_zd(name, routine, a, b)`` (``*`` and ``/``), ``_zdc(name,
+    routine, a, b, c)`` (``+`` or ``-`` with a literal of size ``c``) and ``_zdg(name,
+    routine, a, b)`` (``+`` or ``-`` of two variables, guarded on ``a``), for a result the
+    cached scale did not give: the scale of the float result's own decade is kept in
+    ``namespace[name]`` and tried at once (the same tests, in Python; a sum's guard with
+    that scale); where they fail, ``routine(a, b)`` (decimal_arith's ``_dadd`` ...: its
+    errors are raised) gives the result, and the scale of its decade is kept.  A scale
+    that is NaN matches nothing; a result of 0 is never the tests' (any scale holds)."""
+    floats = {namespace["_dadd"]: float.__add__, namespace["_dsub"]: float.__sub__,
+              namespace["_dmul"]: float.__mul__, namespace["_ddiv13"]: float.__truediv__}
 
-    def product(name, operation, a, b):
-        result = operation(a, b)
-        if result:
-            namespace[name] = scale(result)
-        return result
-
-    def with_constant(name, operation, a, b, c):
-        result = operation(a, b)
-        if result:
-            s = scale(result)
-            namespace[name] = s if abs(s) * c <= GUARD else nan
-        return result
-
-    def guarded(name, operation, a, b):
-        result = operation(a, b)
-        if result:
-            s = scale(result)
-            namespace[name] = nan  # matches nothing until the bounds fit it
-            if s == s:
-                bound = GUARD / abs(s)
-                namespace[name + "l"], namespace[name + "h"] = -bound, bound
+    def retried(name, routine, a, b, fits):
+        """The float path with the scale of the float result's decade, else the routine."""
+        if type(a) is float and type(b) is float and b:
+            r = floats[routine](a, b)
+            s = scale(r)
+            if s == s and fits(s):
                 namespace[name] = s
+                found = scaled_result(r, s)
+                if found is not None:
+                    return found
+        result = routine(a, b)
+        if result:
+            s = scale(result)
+            namespace[name] = s if s == s and fits(s) else nan
         return result
+
+    def product(name, routine, a, b):
+        return retried(name, routine, a, b, _any)
+
+    def with_constant(name, routine, a, b, c):
+        return retried(name, routine, a, b, lambda s: abs(s) * c <= GUARD)
+
+    def guarded(name, routine, a, b):
+        def fits(s):
+            bound = GUARD / abs(s)
+            if -bound < a < bound:
+                namespace[name] = nan  # (matches nothing until the bounds fit it)
+                namespace[name + "l"], namespace[name + "h"] = -bound, bound
+                return True
+            return False
+        return retried(name, routine, a, b, fits)
 
     return {"_zd": product, "_zdc": with_constant, "_zdg": guarded}
+
+
+def _any(s: float) -> bool:
+    return True
 
 
 def initial(names) -> dict:

@@ -36,7 +36,7 @@ class LoopCompiler:
 
     def stepping(self, var_node, var: str, step: str) -> str:
         """The code of ``var + step`` for a FOR variable (rounded to its type)."""
-        return self.numbers.loop_helpers(self.kind_of(var_node))[1].format(var=var, step=step)
+        return self.numbers.stepped(self.kind_of(var_node), var, step)
 
     def stmt_For(self, stmt, scope, native_next: int | None = None):
         kind = self.kind_of(stmt.var)
@@ -241,13 +241,12 @@ class LoopCompiler:
 
         Only for a scalar FOR with constant bounds and fewer than 16 passes (the short
         loops :meth:`loop_mode` would run as ``while``, and those that never run) whose numbers are plain doubles
-        stepped by a plain ``+`` (the casio dialect's), or gw singles whose values are all whole numbers below
-        2**24; None for any other loop.
+        stepped by a plain ``+`` (the casio dialect's), or whose values are all whole numbers below the
+        model's ``whole_steps_below`` (gw singles: 2**24; decimal: 1E+12, exact in both arithmetics);
+        None for any other loop.
         """
-        whole_singles = self.numbers.typed  # gw: a single loop whose values are whole and exact in 24 bits
-        if whole_singles and self.kind_of(stmt.var) != "!":
-            return None
-        if not whole_singles and self.numbers.loop_helpers("n")[1] != "{var} + {step}":
+        whole_below = self.numbers.whole_steps_below
+        if self.numbers.typed and self.kind_of(stmt.var) != "!":
             return None
         if not isinstance(stmt.var, ast.Var) or self.kind_of(stmt.var) == "s":
             return None
@@ -259,8 +258,8 @@ class LoopCompiler:
         while (value <= limit) if step > 0 else (value >= limit):
             values.append(value)
             value = value + step
-        if whole_singles and not all(v == int(v) and abs(v) < 2.0 ** 24 for v in values + [value]):
-            return None  # (a single sum of whole numbers below 2**24 is exact: GW's sum is the double's)
+        if whole_below is not None and not all(v == int(v) and abs(v) < whole_below for v in values + [value]):
+            return None  # (a sum of whole numbers below it is exact: the arithmetic's sum is the double's)
         return values, value
 
     def native_loop(self, i: int) -> int:

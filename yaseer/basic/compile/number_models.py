@@ -72,6 +72,7 @@ class PlainNumbers:
     integer = "n"  # the type of ERR, ERL
     pi = repr(3.141592653589793)  # PI: the double nearest to pi
     cache_bases = ()  # (TypedNumbers: the binade caches its code uses)
+    whole_steps_below = None  # a short constant loop is run at compile time: any (None), or whole values below this
     site_salt = ""
 
     def set_types(self, statements) -> None:
@@ -132,6 +133,10 @@ class PlainNumbers:
         """(values helper, increment template) of a FOR loop over a variable of ``kind``."""
         return "_frange", "{var} + {step}"
 
+    def stepped(self, kind: str, var: str, step: str) -> str:
+        """The code of a FOR variable ``var`` of ``kind`` plus its ``step``."""
+        return self.loop_helpers(kind)[1].format(var=var, step=step)
+
     def may_iterate(self, stmt, kind: str) -> bool:
         """May a native loop iterate (count or values mode) rather than add the step itself?"""
         return True
@@ -146,6 +151,7 @@ class TypedNumbers(PlainNumbers):
     # statement needs no overflow test of its own (a DEF FN's value is not known here)
     kinds_in_range = frozenset("!")
     loop_types = frozenset("%!")  # FOR D# is Type mismatch in GW-BASIC (checked with PC-BASIC)
+    whole_steps_below = 2.0 ** 24  # (a single sum of whole numbers below 2**24 is exact: GW's sum is the double's)
     widest = "#"
     integer = "%"
     _SUFFIX = {"INT": "%", "SNG": "!", "DBL": "#", "STR": "$"}
@@ -634,8 +640,14 @@ class DecimalNumbers(PlainNumbers):
         used = sorted(set(_SCALE_WRITTEN.findall(source)))
         return "".join(f"{name} = 1e999 - 1e999\n{name}l = {name}h = 0.0\n" for name in used)
 
+    whole_steps_below = 1e12  # (a sum of whole numbers below 1E+12 is exact in 12 digits)
+
     def loop_helpers(self, kind: str) -> tuple[str, str]:
         return "_frange", "_dadd({var}, {step})"
+
+    def stepped(self, kind: str, var: str, step: str) -> str:
+        """``var + step`` inline (:meth:`_scaled`)."""
+        return self._scaled("+", var, step) if self.caching else super().stepped(kind, var, step)
 
     def may_iterate(self, stmt, kind: str) -> bool:
         """Only whole-number loops iterate (exact in both arithmetics); any other adds
