@@ -147,9 +147,11 @@ class TypedNumbers(PlainNumbers):
 
     typed = True
     # a single: the inline paths give values in MBF's range, the helpers they fall back on
-    # give the policy's value where GW's operation overflows (arith_policy.helpers): a
+    # give the policy's value where GW's operation overflows (arith_policy.helpers); a
+    # double: its + - * / (values.double_operations through the policy, the inline sum
+    # tested for the range) and its sources (literals, CDBL, CVD, INT ...) likewise: a
     # statement needs no overflow test of its own (a DEF FN's value is not known here)
-    kinds_in_range = frozenset("!")
+    kinds_in_range = frozenset("!#")
     loop_types = frozenset("%!")  # FOR D# is Type mismatch in GW-BASIC (checked with PC-BASIC)
     whole_steps_below = 2.0 ** 24  # (a single sum of whole numbers below 2**24 is exact: GW's sum is the double's)
     widest = "#"
