@@ -20,7 +20,8 @@ def test_auto_in_a_program_stops_it_and_numbers_the_lines_typed_next():
     assert session.prompt == "105 "
     typed(session, shown, "PRINT 2")
     typed(session, shown, "")  # Enter on a free number ends AUTO
-    assert typed(session, shown, "LIST") == '10 PRINT "a":AUTO 100,5:PRINT "b"\n100 PRINT 1\n105 PRINT 2\n'
+    # LIST shows the line's blanks as typed (its tokens listed back, as PC-BASIC lists it)
+    assert typed(session, shown, "LIST") == '10 PRINT "a": AUTO 100, 5: PRINT "b"\n100 PRINT 1\n105 PRINT 2\n'
 
 
 def test_auto_in_a_program_takes_the_last_step_after_a_comma_and_refuses_zero():

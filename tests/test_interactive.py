@@ -112,7 +112,7 @@ def test_errors_leave_the_session_alive(terminal):
 def test_save_and_load_files_in_the_working_directory(terminal, tmp_path):
     terminal.type("10 PRINT 1")
     terminal.type('SAVE "one.bas"')
-    assert (tmp_path / "one.bas").read_text() == "10 PRINT 1\n"
+    assert (tmp_path / "one.bas").read_bytes() == b"10 PRINT 1\r\n\x1a"  # as a program's SAVE writes it
     (tmp_path / "two.bas").write_text("5 REM two\n")
     terminal.type('LOAD "two"')
     assert terminal.type("LIST") == "5 REM two\n"

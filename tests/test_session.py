@@ -169,7 +169,8 @@ def test_edit_puts_the_line_up_for_the_next_input(session):
 def test_save_then_load_round_trip(session, tmp_path):
     type_lines(session, "20 PRINT 2", "10 PRINT 1")
     session.handle('SAVE "prog.bas"')
-    assert (tmp_path / "prog.bas").read_text() == "10 PRINT 1\n20 PRINT 2\n"
+    # the listing a program's SAVE writes (program_crunch.saved_program): CR LF lines and a Ctrl-Z
+    assert (tmp_path / "prog.bas").read_bytes() == b"10 PRINT 1\r\n20 PRINT 2\r\n\x1a"
     session.handle("NEW")
     assert after(session, "LIST") == ""
     session.handle('LOAD "prog"')  # .bas is tried when the name has no suffix

@@ -24,7 +24,7 @@ TYPE_CHECKING = False
 if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up time)
     from typing import IO, Mapping, Union
 
-    Listing = Union[str, "os.PathLike[str]"]
+    Listing = Union[str, bytes, "os.PathLike[str]"]
 
 _LINE_NUMBER = re.compile(r"\s*\d")
 
@@ -83,6 +83,8 @@ class Result:
     library call.  ``screens``: for a program that drew on the display (LOCATE, CLS),
     the display's shown rows (one text of a line each) every time it waited for a key
     and when it ended, as the output shows them.  ``name``: the listing's file stem (None for program text).
+    ``protected``: the listing came from a file SAVEd with ,P; the program may not LIST, LLIST
+    or SAVE itself but with ,P (GIODSK.ASM PROCHK), as in GW-BASIC.
 
     Compared and shown by its fields as a dataclass would be, but a plain class:
     importing dataclasses costs every start several milliseconds.
@@ -93,9 +95,10 @@ class Result:
     def __init__(self, listing: str, name: str | None = None, text: str = "", error: str | None = None,
                  status: str = "end", line: int | None = None, exception: Exception | None = None,
                  frames: list | None = None, lines: list | None = None, _rows: object = None,
-                 screens: list | None = None, glyphs: list | None = None) -> None:
+                 screens: list | None = None, glyphs: list | None = None, protected: bool = False) -> None:
         self.listing = listing
         self.name = name
+        self.protected = protected
         self.text = text
         self.error = error
         self.status = status
@@ -202,7 +205,7 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
         prog: Mapping[int, Listing] | None = None, input=None, angle: str | None = None,
         raise_errors: bool = False, screen: IO[str] | None = None, printer: IO[str] | None = None,
         output_format: str = "text", keep: bool = True, files=None, finer: int = 1) -> Result:
-    """Run ``listing`` (a path, or the program text) once on a fresh machine.
+    """Run ``listing`` (a path, the program text, or a program file's bytes) once on a fresh machine.
 
     ``method``: the method of library program n (``{2: "newton"}``); ``prog``:
     program area n loaded from a path or text (``{5: "programs/prog5.bas"}``);
@@ -237,12 +240,12 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
     try:
         from yaseer.basic.dialects.dialect import get_dialect
 
-        result.listing, result.name = _source(listing, get_dialect(dialect).charset)
+        result.listing, result.name, result.protected = _source(listing, get_dialect(dialect).charset)
         if finer != 1:
             from yaseer.finer import finer_steps
 
             result.listing = finer_steps(result.listing, finer)
-        areas = {n: _area_text(n, _source(text)[0]) for n, text in numbers.items()}
+        areas = {n: _area_text(n, _source(text, get_dialect(dialect).charset)[0]) for n, text in numbers.items()}
         input_stream = _input_stream(input, opened)
     except BasicError as error:
         return _failed(result, error, raise_errors)
@@ -281,6 +284,7 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
         machine.line_hooks.append(lambda device, values: result.lines.append(values))
     try:
         machine.load(result.listing)
+        machine.program_protected = result.protected
         if library:
             binding.install(machine, methods or None)
         for number, text in areas.items():
@@ -329,26 +333,36 @@ def _failed(result: Result, error, raise_errors: bool) -> Result:
     return result
 
 
-def _source(listing: Listing, charset=None) -> tuple[str, str | None]:
-    """(program text, file stem or None): a path-like, or a one-line str that is no BASIC line, is a file
-    (read as UTF-8 or, with a ``charset`` (yaseer/basic/dialects/charset.py), in the machine's codes when it is not)."""
+def _source(listing: Listing, charset=None) -> tuple[str, str | None, bool]:
+    """(program text, file stem or None, protected): a path-like, or a one-line str that is no
+    BASIC line, is a file; bytes are a file's contents.  A file is read as LOAD reads it
+    (program_file.program_text: ASCII, tokenised or protected; as the ``charset`` shows it,
+    yaseer/basic/dialects/charset.py); ``protected``: it was SAVEd with ,P."""
     from yaseer.basic.errors import DEVICE_IO_ERROR, FILE_NOT_FOUND, BasicError
 
     if isinstance(listing, str) and not os.path.isfile(listing) \
             and ("\n" in listing or not listing.strip() or _LINE_NUMBER.match(listing)):
-        return listing, None
+        return listing, None, False
+    if isinstance(listing, bytes):
+        return _file_text(listing, charset, None)
     if not isinstance(listing, (str, os.PathLike)):
-        raise TypeError(f"a listing is a path or the program text, not {type(listing).__name__}")
-    from yaseer.basic.machine.program_file import program_text
-
+        raise TypeError(f"a listing is a path, the program text or a file's bytes, not {type(listing).__name__}")
     try:
         with open(listing, "rb") as binary:
-            text = program_text(binary.read(), charset.program_text if charset is not None else None)
-        return text.replace("\r\n", "\n").replace("\r", "\n"), _stem(listing)  # as text mode reads lines
+            data = binary.read()
     except FileNotFoundError:
         raise BasicError(f"File not found: {_shown(listing)}", FILE_NOT_FOUND) from None
     except OSError as error:
         raise BasicError(f"Cannot read {_shown(listing)}: {error.strerror or error}", DEVICE_IO_ERROR) from None
+    return _file_text(data, charset, _stem(listing))
+
+
+def _file_text(data: bytes, charset, name: str | None) -> tuple[str, str | None, bool]:
+    """:func:`_source`'s answer for a program file's bytes (lines end in LF, as text mode reads them)."""
+    from yaseer.basic.machine.program_file import is_protected, program_text
+
+    text = program_text(data, charset)
+    return text.replace("\r\n", "\n").replace("\r", "\n"), name, is_protected(data)
 
 
 def _stem(path) -> str:

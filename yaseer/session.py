@@ -39,7 +39,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
-from yaseer.basic.source.scanner import detokenize, entry_messages
+from yaseer.basic.source.scanner import entry_messages
 from yaseer.basic.errors import (
     BREAK,
     CANT_CONTINUE,
@@ -62,8 +62,10 @@ Program = dict[int, str]  # line number -> statement text (without the number)
 _NUMBERED = re.compile(r"\s*(\d+)(?=[\sA-Za-z'?]|$)\s?(.*)$", re.S)
 
 
-def split_numbered(text: str) -> tuple[int, str] | None:
+def split_numbered(text: str, keeps_blanks: bool = False) -> tuple[int, str] | None:
     """``"10 PRINT X"`` -> ``(10, "PRINT X")``; None if the text has no line number.
+    ``keeps_blanks`` (``Dialect.tokenised_programs``): the text keeps the blanks after it
+    (scanner.split_lines); else they are dropped.
 
     Raises ``Syntax error`` for a number beyond :data:`MAX_LINE_NUMBER`.
     """
@@ -73,10 +75,11 @@ def split_numbered(text: str) -> tuple[int, str] | None:
     number = int(match.group(1))
     if number > MAX_LINE_NUMBER:
         raise BasicError("Syntax error", SYNTAX_ERROR)
-    return number, match.group(2).rstrip()
+    body = match.group(2)
+    return number, body if keeps_blanks else body.rstrip()
 
 
-def parse_listing(text: str) -> Program:
+def parse_listing(text: str, keeps_blanks: bool = False) -> Program:
     """A listing file as line -> text, read as the machine reads a file.
 
     Blank lines are skipped; a line that does not start with a line number
@@ -87,7 +90,7 @@ def parse_listing(text: str) -> Program:
     from yaseer.basic.source.scanner import split_lines
 
     program: Program = {}
-    for number, body, _ in split_lines(text):
+    for number, body, _ in split_lines(text, keeps_blanks=keeps_blanks):
         if number > MAX_LINE_NUMBER:
             raise BasicError("Syntax error", SYNTAX_ERROR)
         program[number] = body
@@ -149,23 +152,26 @@ def file_name_argument(text: str) -> str:
     return match.group(1).strip()
 
 
-def read_listing_file(name: str, directory: Path) -> Program:
+def read_listing_file(name: str, directory: Path, dialect=None) -> Program:
     """LOAD: the program in file ``name`` (``.bas`` is tried if ``name`` has no suffix),
     inside ``directory`` only (yaseer.basic.machine.files.Sandbox: a name that leads out of it is
-    ``Path/File access error``)."""
-    return read_program_file(name, directory)[0]
+    ``Path/File access error``), as the ``dialect``'s character set shows it
+    (program_file.program_text), its lines' blanks kept as the dialect keeps them."""
+    return read_program_file(name, directory, dialect)[0]
 
 
-def read_program_file(name: str, directory: Path) -> tuple[Program, bool]:
+def read_program_file(name: str, directory: Path, dialect=None) -> tuple[Program, bool]:
     """:func:`read_listing_file`'s program, and whether the file was SAVEd protected (,P)."""
-    from yaseer.basic.machine.program_file import PROTECTED, program_text
+    from yaseer.basic.machine.program_file import is_protected, program_text
     from yaseer.basic.machine.sandbox import Sandbox
 
     sandbox = Sandbox(directory)
     if not sandbox.exists(sandbox.dos_name(name)) and "." not in name.replace("\\", "/").rsplit("/", 1)[-1]:
         name += ".bas"
     data = sandbox.read_bytes(sandbox.dos_name(name))  # DOS ignores case: a program's SAVE "f" wrote F.BAS
-    return parse_listing(program_text(data)), data[:1] == bytes((PROTECTED,))
+    if dialect is None:
+        return parse_listing(program_text(data)), is_protected(data)
+    return parse_listing(program_text(data, dialect.charset), dialect.tokenised_programs), is_protected(data)
 
 
 def file_and_option(text: str) -> tuple[str, str]:
@@ -259,7 +265,7 @@ class Session:
             return
         if not text.strip():
             return
-        numbered = split_numbered(text)
+        numbered = split_numbered(text, self._dialect().tokenised_programs)
         if numbered is not None:
             self.store_line(*numbered)
             return
@@ -294,7 +300,7 @@ class Session:
     def store_line(self, number: int, text: str) -> None:
         """Type ``number text``: store (or, with no text, delete) a line."""
         self._refuse_protected()
-        if text.strip():
+        if text.strip(" "):
             self.program[number] = text
             self.current_line = number
             self._show_entry_messages({number: text})
@@ -326,8 +332,11 @@ class Session:
     def listed(self, number: int, area: int | None = None) -> str:
         """Line ``number`` of the current area (or of program area ``area``) as LIST shows
         it (``20 FOR J=1 TO 3``)."""
+        from yaseer.basic.machine.program_crunch import listed_line
+
         lines = self.program if area is None else self.programs[area]
-        return f"{number} {detokenize(lines[number], self._dialect())}"
+        charset = self._dialect().charset  # the session keeps lines as typed; LIST lists the machine's codes
+        return f"{number} {charset.symbols(listed_line(charset.codes(lines[number]), self._dialect()))}"
 
     # -- commands --
 
@@ -457,7 +466,8 @@ class Session:
 
     def command_load(self, argument: str) -> None:
         """LOAD "file": replace the current area's program with the file's."""
-        self.programs[self.area], protected = read_program_file(file_name_argument(argument), self.directory)
+        name = file_name_argument(argument)
+        self.programs[self.area], protected = read_program_file(name, self.directory, self._dialect())
         self._mark_protected(self.area, protected)
         self._show_entry_messages(self.program)
         self._can_continue = False
@@ -469,10 +479,11 @@ class Session:
             self.protected_areas.discard(area)
 
     def command_save(self, argument: str) -> None:
-        """SAVE "file"[,A|,P]: write the current area's program as a listing, in the session's
-        directory only; a name without an extension gets ``.bas`` (GW-BASIC adds ``.BAS``).
-        ``,P`` (a letter the dialect's SAVE takes): GW-BASIC's protected form
-        (machine/program_crunch.py, program_file.protected_file)."""
+        """SAVE "file"[,A|,P]: write the current area's program, in the session's directory
+        only; a name without an extension gets ``.bas`` (GW-BASIC adds ``.BAS``).  The file
+        is the one a program's SAVE writes (program_crunch.saved_program): gw's tokens, ``,A``
+        the listing, ``,P`` (a letter the dialect's SAVE takes) GW-BASIC's protected form;
+        casio's listing."""
         from yaseer.basic.compile.compiler import NO_WORDS
         from yaseer.basic.machine.sandbox import Sandbox
 
@@ -485,14 +496,11 @@ class Session:
         self._refuse_password()  # SAVE_SAVE_ALL.md item 6: yaseer's files are ASCII
         if not Path(name).suffix:
             name += ".bas"
-        if option == "P":
-            from yaseer.basic.machine.program_crunch import tokenised_program
-            from yaseer.basic.machine.program_file import protected_file
+        from yaseer.basic.machine.program_crunch import saved_program
 
-            codes = self._dialect().charset.codes
-            data = protected_file(tokenised_program({n: codes(t) for n, t in self.program.items()}))
-        else:
-            data = program_text(self.program).encode("utf-8")
+        dialect = self._dialect()
+        codes = dialect.charset.codes  # the session keeps lines as typed: the file holds the machine's codes
+        data = saved_program({n: codes(t) for n, t in self.program.items()}, option, dialect)
         Sandbox(self.directory).write_bytes(name, data)
 
     def command_run(self, argument: str) -> None:
@@ -501,7 +509,8 @@ class Session:
         ``RUN "file"`` loads the file into PROG 0 first (whatever area is being edited).
         """
         if argument.startswith('"'):
-            self.programs[0], protected = read_program_file(file_name_argument(argument), self.directory)
+            name = file_name_argument(argument)
+            self.programs[0], protected = read_program_file(name, self.directory, self._dialect())
             self._mark_protected(0, protected)
             self._show_entry_messages(self.programs[0])
             argument = ""

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import sys
 
-from yaseer.commands.options import RUN_OPTIONS, Option, read_text, run_settings
+from yaseer.commands.options import RUN_OPTIONS, Option, run_settings
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:  # annotations only
@@ -54,7 +54,8 @@ def main(args: Namespace) -> int:
     from yaseer.commands.output import open_for_writing
     from yaseer.progress import output_progress
 
-    listing = read_text(args.file) if args.file == "-" else args.file
+    # standard input's bytes are a program file's: the API reads them as LOAD does (and keeps ,P)
+    listing = sys.stdin.buffer.read() if args.file == "-" else args.file
     settings = run_settings(args)
     printer = None
     try:

@@ -8,7 +8,8 @@ codes (:meth:`CharacterSet.codes`) as they come in, and what the screen, the pri
 the LCD's screens show is turned into symbols (:meth:`CharacterSet.symbols`) as it goes
 out.
 
-* :data:`LATIN1`: code n is ``chr(n)`` (GW-BASIC as yaseer has always run it).
+* :data:`LATIN1`: code n is ``chr(n)``.
+* :data:`CP437`: GW-BASIC's, the IBM PC's code page 437 (``é`` is code 130, ``│`` 179).
 * :data:`CASIO`: the FX-850P/880P's codes as the owner's manual's character code
   table (part 12) draws them: 0..127 are ASCII, 128..255 the symbols of the table
   (Greek letters, superscripts, half-width katakana, arrows, card suits ...).  Where the
@@ -59,6 +60,11 @@ class CharacterSet:
         return f"CharacterSet({self.name!r})"
 
     @property
+    def symbols_table(self) -> dict[int, str] | None:
+        """:meth:`symbols`'s ``str.translate`` table (None: codes are shown as they are)."""
+        return self._to_symbols
+
+    @property
     def own_symbols(self) -> bool:
         """True when codes 128..255 are shown as symbols of their own (not Latin-1)."""
         return self._to_symbols is not None
@@ -95,5 +101,9 @@ class CharacterSet:
             return self.symbols(data.decode("latin-1"))
 
 
-LATIN1 = CharacterSet("latin-1")  # gw reads and shows characters as it always has
+LATIN1 = CharacterSet("latin-1")  # code n is chr(n): a machine without symbols of its own
+# The IBM PC's characters (code page 437, the table GW-BASIC's screen shows and its files hold):
+# what PC-BASIC 2.0.8 shows and saves by default; 0..127 stay ASCII (their control actions
+# are the screen's, dialects/screens.py).
+CP437 = CharacterSet("cp437", bytes(range(128, 256)).decode("cp437"))
 CASIO = CharacterSet("casio", _CASIO_HIGH)

@@ -26,7 +26,7 @@ from collections import namedtuple
 
 from yaseer.basic.arithmetic.values import DOUBLE_LARGEST
 from yaseer.basic.arithmetic.randomness import GwRandom, RepeatableRandom
-from yaseer.basic.dialects.charset import CASIO as CASIO_CHARACTERS, CASIO_CONTROLS, LATIN1
+from yaseer.basic.dialects.charset import CASIO as CASIO_CHARACTERS, CASIO_CONTROLS, CP437, LATIN1
 from yaseer.basic.dialects import casio as casio_words
 from yaseer.basic.dialects.screens import CASIO_SCREEN, GW_CONTROLS, GW_SCREEN
 
@@ -90,9 +90,10 @@ FIELDS = (
     "string_length",  # int: 255
     "free_memory",  # int | None: None
     "variables_made",  # bool: False
+    "tokenised_programs",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
-            True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False)
+            True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -230,6 +231,12 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         has made it (GW-BASIC's PTRGET makes it on an assignment, INPUT, READ, FOR, a
         DEF FN parameter, SWAP, but not when an expression reads it: BIPTRG.ASM SMKVAR),
         so that SWAP's second variable must exist (BIMISC.ASM SWAP: Illegal function call).
+        ``tokenised_programs``: True when the machine keeps a program as GW-BASIC's tokens
+        (GWMAIN.ASM CRUNCH, machine/program_crunch.py): LIST and SAVE ,A show the tokens
+        listed back (GWLIST.ASM), a plain SAVE writes them (0xFF, GIODSK.ASM BINSAV), and a
+        typed line keeps its blanks but the one after its number (GWMAIN.ASM MAIN:
+        "one space always printed after line #"); False: LIST shows the dialect's own
+        listing (scanner.detokenize) and SAVE writes it.
         ``program_areas``: True when ``GOSUB PROG n`` is a statement (the
         library programs are bound at start); False in GW-BASIC, where PROG
         is no word: ``GOSUB PROG n`` is then a syntax error unless program
@@ -286,7 +293,7 @@ GW = Dialect(
     printer_width=80, joins_unnumbered_lines=False, names_missing_line=False, spaced_relations=True,
     bracket_subscripts=True, display=(80, 25, 25), controls=tuple(sorted(GW_CONTROLS.items())), screen=GW_SCREEN,
     string_length=255,  # a string descriptor holds its length in one byte
-    free_memory=60300,
+    free_memory=60300, charset=CP437, tokenised_programs=True,
     variables_made=True,
 )
 

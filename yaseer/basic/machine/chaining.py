@@ -56,21 +56,24 @@ class Chaining:
     def _program_lines(self, name: str, merge: bool = False) -> dict[int, str]:
         """The lines of program file ``name`` (``.BAS`` added to a name without ``.``), read
         as LOAD reads it; MERGE reads ASCII files only (``Bad file mode``)."""
-        from yaseer.basic.machine.program_file import PROTECTED, TOKENISED, program_text
+        from yaseer.basic.machine.program_file import TOKENISED, is_protected, program_text
         from yaseer.basic.source.scanner import split_lines
 
         data = read_program(self.files.sandbox, self._program_name(name))
         if merge and data[:1] >= bytes((TOKENISED - 1,)):
             raise error_for(BAD_FILE_MODE)  # DSKCOM.ASM OKGET2
-        text = program_text(data)
+        charset = self.dialect.charset
+        text = charset.codes(program_text(data, charset))  # as shown, then in the machine's codes
         if not merge:
-            self.program_protected = data[:1] == bytes((PROTECTED,))
-        return {number: line for number, line, _ in split_lines(text, self.dialect.joins_unnumbered_lines)}
+            self.program_protected = is_protected(data)
+        dialect = self.dialect
+        return {number: line for number, line, _ in
+                split_lines(text, dialect.joins_unnumbered_lines, dialect.tokenised_programs)}
 
     def program_command(self, name: str, argument, option, everything: bool = False) -> None:
         """A command run by a program (GW-BASIC runs them and, but for RUN, returns to
         direct mode: the run ends): RUN [line | "file"[,R]], LIST/LLIST [range], LOAD
-        "file"[,R], SAVE "file"[,A|,P] (always as an ASCII listing), NEW, SYSTEM, DELETE
+        "file"[,R], SAVE "file"[,A|,P] (program_crunch.saved_program), NEW, SYSTEM, DELETE
         range, EDIT line (ends the run: there is no editor in a run), RENUM [new][, [old][,
         step]] (source/renumbering.py; its messages on the screen), KEY ON/OFF (the
         function-key line is the screen's: nothing where output is not a terminal).
@@ -103,7 +106,7 @@ class Chaining:
         if name in ("LIST", "LLIST"):
             self._list_lines(program, argument, 1 if name == "LLIST" else 0)
         elif name == "SAVE":
-            self._save(program, argument, protected=option == "P")
+            self._save(program, argument, option=option or "")
         elif name == "NEW":
             self.program_protected = False
             raise ChainTo({}, False, None, True, None, False)
@@ -167,10 +170,11 @@ class Chaining:
         from yaseer.basic.machine.program_file import program_text
         from yaseer.basic.source.scanner import split_lines
 
-        text = program_text(read_program(self.files.sandbox, self._program_name(name)))
+        charset = self.dialect.charset
+        text = charset.codes(program_text(read_program(self.files.sandbox, self._program_name(name)), charset))
         areas: dict[int, list[str]] = {0: []}
         current = areas[0]
-        for row in text.splitlines():
+        for row in text.split("\n"):
             header = row.split()
             if len(header) == 2 and header[0].upper() == "PROG" and header[1].isdigit():
                 current = areas.setdefault(int(header[1]), [])
@@ -188,38 +192,25 @@ class Chaining:
 
     def _list_lines(self, program: dict, line_range, device: int) -> None:
         """LIST / LLIST: the lines in ``line_range`` as LIST shows them."""
-        from yaseer.basic.source.scanner import detokenize
+        from yaseer.basic.machine.program_crunch import listed_line
 
         first, last = line_range
         for number in sorted(program):
             if (first or 0) <= number <= (65529 if last is None else last):
-                self.print_items(device, (f"{number} {detokenize(program[number], self.dialect)}",), True)
+                self.print_items(device, (f"{number} {listed_line(program[number], self.dialect)}",), True)
 
-    def _save(self, program: dict, name: str, areas: dict | None = None, protected: bool = False) -> None:
-        """SAVE: the program as an ASCII listing (CR LF lines, a Ctrl-Z at the end) in the
-        program's directory, in the machine's character codes; with ``protected`` (SAVE
-        "f",P) GW-BASIC's protected form (program_file.protected_file); GW-BASIC's plain
-        tokenised form is not written.  ``areas``: SAVE ALL's areas (see ``_every_area``)."""
-        from yaseer.basic.source.scanner import detokenize
-
-        sandbox = self.files.sandbox
-        if protected:
-            from yaseer.basic.machine.program_crunch import tokenised_program
-            from yaseer.basic.machine.program_file import protected_file
-
-            data = protected_file(tokenised_program(program))
-            sandbox.write_bytes(sandbox.dos_name(self._program_name(name)), data)
-            return
-
-        def listing(lines: dict) -> str:
-            return "".join(f"{n} {detokenize(lines[n], self.dialect)}\r\n" for n in sorted(lines))
+    def _save(self, program: dict, name: str, areas: dict | None = None, option: str = "") -> None:
+        """SAVE "f"[,A|,P]: the program as ``option`` asks (program_crunch.saved_program) in the
+        program's directory.  ``areas``: SAVE ALL's areas (see ``_every_area``), one listing
+        after another."""
+        from yaseer.basic.machine.program_crunch import ascii_file, listing_text, saved_program
 
         if areas is None:
-            text = listing(program)
+            data = saved_program(program, option, self.dialect)
         else:
-            text = "".join(f"PROG {n}\r\n" + listing(lines) for n, lines in areas.items())
-        text = self.dialect.charset.codes(text) + "\x1a"
-        sandbox.write_bytes(sandbox.dos_name(self._program_name(name)), text.encode("latin-1", errors="replace"))
+            data = ascii_file("".join(f"PROG {n}\r\n" + listing_text(lines, self.dialect) for n, lines in areas.items()))
+        sandbox = self.files.sandbox
+        sandbox.write_bytes(sandbox.dos_name(self._program_name(name)), data)
 
     def run_again(self, again: RunAgain) -> int:
         """Carry out RUN: the program (a new one from a file), fresh variables, the files

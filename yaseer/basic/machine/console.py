@@ -51,9 +51,12 @@ class SymbolStream:
     def __init__(self, stream, charset):
         self.stream = stream
         self.charset = charset
+        write, symbols = stream.write, charset.symbols_table
 
-    def write(self, text: str):
-        return self.stream.write(self.charset.symbols(text))
+        def shown(text: str):  # one call a PRINT item (no method lookups): ASCII passes as it is
+            return write(text if text.isascii() else text.translate(symbols))
+
+        self.write = shown
 
     def flush(self) -> None:
         self.stream.flush()

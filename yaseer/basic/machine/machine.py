@@ -280,7 +280,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         text = self.dialect.charset.codes(text)  # symbols typed or read (a UTF-8 file's) as the machine's codes
         stopped = None
         try:
-            lines = split_lines(text, self.dialect.joins_unnumbered_lines)
+            lines = split_lines(text, self.dialect.joins_unnumbered_lines, self.dialect.tokenised_programs)
         except DirectStatementInFile as error:  # the lines before it are loaded
             lines, stopped = error.lines, error
         for number, statement_text, _ in lines:

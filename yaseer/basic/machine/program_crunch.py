@@ -32,10 +32,12 @@ file holds exactly these bytes after its first byte.
 
 from __future__ import annotations
 
-from yaseer.basic.errors import OVERFLOW, error_for
+from yaseer.basic.errors import OVERFLOW, BasicError, error_for
 from yaseer.basic.machine.gwfunctions import mkd, mks
-from yaseer.basic.machine.program_file import TOKENS, TWO_BYTE_TOKENS
-from yaseer.basic.source.scanner import LINE_NUMBER_WORDS, gw_number, radix_number
+from yaseer.basic.machine.program_file import (
+    END_OF_FILE, TOKENISED, TOKENS, TWO_BYTE_TOKENS, line_text, protected_file,
+)
+from yaseer.basic.source.scanner import LINE_NUMBER_WORDS, detokenize, gw_number, radix_number
 
 # GW-BASIC 3.23's program start (TXTTAB) with its default /F:3 /S:128 file buffers: the
 # address the links of a SAVEd program count from (PC-BASIC 2.0.8 uses the same).
@@ -47,6 +49,7 @@ _WORDS.update({word: bytes((prefix, code)) for prefix, table in TWO_BYTE_TOKENS.
 _LONGEST = max(map(len, _WORDS))
 _OPERATORS = {word: bytes((code,)) for code, word in TOKENS.items() if word in "+-*/^\\>=<" and len(word) == 1}
 _NO_BLANK_AFTER = frozenset(("FN", "USR"))
+_CAPITALS = str.maketrans("abcdefghijklmnopqrstuvwxyz", "ABCDEFGHIJKLMNOPQRSTUVWXYZ")
 _NAME = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789.")
 _LINE_NUMBER, _NUMBER, _IN_NAME = 1, 0, -1  # DONUM: what a digit starts
 _COLON, _REM, _QUOTE_REM, _DATA, _ELSE, _WHILE, _PLUS = 0x3A, 0x8F, 0xD9, 0x84, 0xA1, 0xB1, 0xE9
@@ -55,7 +58,7 @@ _COLON, _REM, _QUOTE_REM, _DATA, _ELSE, _WHILE, _PLUS = 0x3A, 0x8F, 0xD9, 0x84, 
 def crunch_line(text: str) -> bytes:
     """The tokens of a program line's ``text`` (after its number; characters are the
     machine's codes 0-255), as CRUNCH stores them (see the module docstring)."""
-    upper = text.upper()
+    upper = text.translate(_CAPITALS)  # a-z only (MAKUPL): str.upper() makes code 223 two letters
     n = len(text)
     out = bytearray()
     donum = _NUMBER
@@ -200,3 +203,43 @@ def tokenised_program(program: dict[int, str], start: int = TEXT_START) -> bytes
         body = number.to_bytes(2, "little") + crunch_line(program[number]) + bytes(1)
         out += (start + len(out) + 2 + len(body)).to_bytes(2, "little") + body
     return bytes(out + bytes(2))
+
+
+def saved_program(program: dict[int, str], option: str, dialect) -> bytes:
+    """The bytes SAVE writes for ``program`` (line number -> text in the machine's codes,
+    ``chr(0..255)``; a character beyond is written as ``?``): the one writer of program
+    files, for the session's SAVE and a program's.  ``option`` "P": GW-BASIC's protected
+    form (GIODSK.ASM PROSAV: 0xFE, the tokens scrambled by PENCOD, a Ctrl-Z); "A": the
+    ``dialect``'s listing (:func:`listing_text`, :func:`ascii_file`); "" (a plain SAVE):
+    where the dialect keeps tokens (``tokenised_programs``) its tokenised form (GIODSK.ASM
+    BINSAV: 0xFF, the tokens, a Ctrl-Z), else the listing."""
+    if option == "P":
+        return protected_file(tokenised_program(program))
+    if option == "" and dialect.tokenised_programs:
+        return bytes((TOKENISED,)) + tokenised_program(program) + bytes((END_OF_FILE,))
+    return ascii_file(listing_text(program, dialect))
+
+
+def listing_text(program: dict[int, str], dialect) -> str:
+    """``program``'s lines as LIST shows them, each ending in CR LF (SAVE ,A)."""
+    return "".join(f"{n} {listed_line(program[n], dialect)}\r\n" for n in sorted(program))
+
+
+def listed_line(text: str, dialect) -> str:
+    """A line's text (the machine's codes) as LIST shows it after its number: where the
+    ``dialect`` keeps programs as tokens (``tokenised_programs``, GW-BASIC), the tokens
+    CRUNCH makes of it listed back (GWLIST.ASM LIST: keywords and names in capitals, the
+    blanks as typed); else the dialect's listing (scanner.detokenize).  A line CRUNCH
+    refuses (a ``&H`` constant beyond 65535) is shown as it is."""
+    if not dialect.tokenised_programs:
+        return detokenize(text, dialect)
+    try:
+        return line_text(crunch_line(text))
+    except BasicError:
+        return text
+
+
+def ascii_file(text: str) -> bytes:
+    """An ASCII program file's bytes: ``text`` (the machine's codes) and the Ctrl-Z GW-BASIC
+    ends a file with (GIODSK.ASM DSKEOF)."""
+    return _codes(text) + bytes((END_OF_FILE,))

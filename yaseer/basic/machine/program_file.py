@@ -68,25 +68,32 @@ _EXPCN = bytes((0o174, 0o210, 0o131, 0o164, 0o340, 0o227, 0o046, 0o167, 0o304, 0
 _LOGP = bytes((0o232, 0o367, 0o031, 0o203, 0o044, 0o143, 0o103, 0o203, 0o165, 0o315, 0o215, 0o204, 0o251))
 
 
-def program_text(data: bytes, decode=None) -> str:
-    """The text of a program file's ``data`` (any of the three kinds, see the module docstring);
-    ``decode`` reads an ASCII file's bytes (a character set's, yaseer/basic/dialects/charset.py;
-    default: UTF-8, else byte for byte)."""
-    if data[:1] == bytes((PROTECTED,)):
-        return detokenise(unprotect(data[1:]))
-    if data[:1] == bytes((TOKENISED,)):
-        return detokenise(data[1:])
+def program_text(data: bytes, charset=None) -> str:
+    """The text of a program file's ``data`` (any of the three kinds, see the module docstring),
+    as it is shown: with a ``charset`` (yaseer/basic/dialects/charset.py) the machine's codes
+    128..255 of a tokenised file are its symbols, and an ASCII file is read as the character
+    set reads one (UTF-8 when it is, else the machine's codes); without one, codes stay
+    ``chr(code)`` and an ASCII file is UTF-8, else read byte for byte."""
+    if data[:1] in (bytes((PROTECTED,)), bytes((TOKENISED,))):
+        body = unprotect(data[1:]) if data[0] == PROTECTED else data[1:]
+        text = detokenise(body)
+        return text if charset is None else charset.symbols(text)
     if data.startswith(BYTE_ORDER_MARK):
         data = data[len(BYTE_ORDER_MARK):]
     cut = data.find(END_OF_FILE)
     if cut >= 0:
         data = data[:cut]
-    if decode is not None:
-        return decode(data)
+    if charset is not None:
+        return charset.program_text(data)
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError:
         return data.decode("latin-1")
+
+
+def is_protected(data: bytes) -> bool:
+    """Was the program file ``data`` SAVEd with ,P (GIODSK.ASM PROLOD sets PROFLG on its 0xFE)?"""
+    return data[:1] == bytes((PROTECTED,))
 
 
 def _counters():
@@ -121,6 +128,11 @@ def detokenise(data: bytes) -> str:
     return "".join(line + "\n" for line in lines)
 
 
+def line_text(tokens: bytes) -> str:
+    """One line's tokens (without link, number and the 0 that ends it) as LIST shows them."""
+    return _line_text(tokens, 0)[0]
+
+
 def _line_text(body: bytes, i: int) -> tuple[str, int]:
     """The tokens of the line that starts at ``body[i]``, as LIST shows them, and the index
     after the 0 byte that ends it (a number's bytes may hold zeros: tokens are read one by one)."""
@@ -152,16 +164,21 @@ def _line_text(body: bytes, i: int) -> tuple[str, int]:
             out.append(chr(byte))
             i += 1
             continue
-        if word[:1].isalpha() and out and (out[-1][-1:].isalnum() or out[-1][-1:] == "."):
+        if word[:1].isalpha() and out and (_alnum(out[-1][-1:]) or out[-1][-1:] == "."):
             out.append(" ")  # keep a keyword apart from the name before it
         out.append(word)
         if word in ("REM", "DATA"):
             text = word.lower()
         elif word == "WHILE" and i < n and body[i] == _PLUS:
             i += 1  # GW-BASIC stores WHILE with a + token LIST does not show
-        if word[-1:].isalpha() and word != "FN" and i < n and (chr(body[i]).isalnum() or body[i] == ord(".")):
+        if word[-1:].isalpha() and word != "FN" and i < n and (_alnum(chr(body[i])) or body[i] == ord(".")):
             out.append(" ")  # ... and from the name after it
     return "".join(out), i
+
+
+def _alnum(character: str) -> bool:
+    """An ASCII letter or digit (a byte from 128 up is a token or a character, never one)."""
+    return character.isascii() and character.isalnum()
 
 
 def _token(body: bytes, i: int) -> tuple[str | None, int]:

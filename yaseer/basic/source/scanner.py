@@ -159,6 +159,7 @@ _RELATIONS = {
 }
 _NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)(E[+-]?\d+)?")
 _LINE_NUMBER = re.compile(r"\s*(\d+)(?=[\sA-Za-z'?]|$)\s?")
+_LINE_BREAK = re.compile(r"\r\n|\n|\r")
 
 
 def _syntax_error() -> BasicError:
@@ -752,23 +753,32 @@ class DirectStatementInFile(BasicError):
         return self
 
 
-def split_lines(source: str, joins_unnumbered: bool = True) -> list[tuple[int, str, int]]:
+def split_lines(source: str, joins_unnumbered: bool = True, keeps_blanks: bool = False) -> list[tuple[int, str, int]]:
     """Split a listing into ``(line number, statement text, physical line index)``.
 
-    A physical line that begins with a number followed by a space, a letter or
-    the end of the line starts a new program line; any other non-blank line
-    continues the previous one (joined with one space), or, when not
-    ``joins_unnumbered`` (``Dialect.joins_unnumbered_lines``), ends the reading with
-    :class:`DirectStatementInFile` (GW-BASIC's LOAD).  Text before the first
-    numbered line is a syntax error (``BasicError`` with no line).
+    Lines end at CR LF, LF or CR only (a machine's codes 28-31 and 133, which
+    ``str.splitlines`` would also break at, are characters of a line).  A physical line
+    that begins with a number followed by a space, a letter or the end of the line starts
+    a new program line; any other non-blank line continues the previous one (joined with
+    one space), or, when not ``joins_unnumbered`` (``Dialect.joins_unnumbered_lines``),
+    ends the reading with :class:`DirectStatementInFile` (GW-BASIC's LOAD).  Text before
+    the first numbered line is a syntax error (``BasicError`` with no line).
+    ``keeps_blanks`` (``Dialect.tokenised_programs``): a line's text keeps its blanks but
+    the one after the number (GWMAIN.ASM MAIN eats one: LIST prints one); else it is
+    stripped.  A text of blanks only is empty (the line is deleted).
     """
     lines: list[tuple[int, str, int]] = []
-    for index, physical in enumerate(source.splitlines()):
+    for index, physical in enumerate(_LINE_BREAK.split(source)):
         if not physical.strip():
             continue
         match = _LINE_NUMBER.match(physical)
         if match:
-            lines.append((int(match.group(1)), physical[match.end():].strip(), index))
+            text = physical[match.end():]
+            if keeps_blanks:
+                text = text if text.strip(" ") else ""
+            else:
+                text = text.strip()
+            lines.append((int(match.group(1)), text, index))
         elif not joins_unnumbered:
             raise DirectStatementInFile(lines)
         elif lines:

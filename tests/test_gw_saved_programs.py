@@ -1,0 +1,222 @@
+"""Program files as GW-BASIC writes and reads them, against PC-BASIC 2.0.8 where it agrees with
+the source: the characters 128..255 of a program are the IBM PC's codes (code page 437) in
+every form SAVE writes (one writer, program_crunch.saved_program, for the session's SAVE and a
+program's; GIODSK.ASM BINSAV/PROSAV and the ASCII save store the bytes of the line as CRUNCH
+left them) and read back through the same character set (LOAD, RUN "f", CHAIN); a program from
+a protected file keeps its protection however it is run (GIODSK.ASM PROCHK).
+"""
+
+from __future__ import annotations
+
+import random
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from test_differential_support import base_seed, case_count, clean_output
+from test_gw_protected import generated_lines
+
+import yaseer
+from yaseer.basic.dialects.dialect import GW
+from yaseer.basic.machine.program_file import program_text
+from yaseer.session import MachineEngine, Session
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+
+# Codes 128..255 as code page 437 shows them (what a GW-BASIC screen shows and a person types).
+HIGH = bytes(range(128, 256)).decode("cp437")
+# Lines holding every code 128..255 in a string and after REM (CRUNCH copies both as they are).
+HIGH_LINES = [f'{10 * (k + 1)} PRINT "{HIGH[32 * k:32 * k + 32]}": REM {HIGH[32 * k:32 * k + 32]}'
+              for k in range(4)]
+HIGH_OUTPUT = "".join(HIGH[32 * k:32 * k + 32] + "\n" for k in range(4))
+
+
+@pytest.fixture(scope="module")
+def pc(tmp_path_factory):
+    """A PC-BASIC session on drive C: (a fresh directory): (session, directory)."""
+    import pcbasic
+
+    directory = tmp_path_factory.mktemp("pcbasic")
+    session = pcbasic.Session(output_streams=None, input_streams=None, hide_protected=True,
+                              devices={"C:": str(directory)}, current_device="C:")
+    session.start()
+    yield session, directory
+    session.close()
+
+
+def gw_session(directory: Path) -> tuple[Session, list]:
+    shown: list[str] = []
+    engine = MachineEngine(shown.append, dialect="gw", files=directory)
+    return Session(write=shown.append, engine=engine, directory=directory, dialect="gw"), shown
+
+
+def typed(session: Session, shown: list, lines) -> str:
+    shown.clear()
+    for line in lines:
+        session.handle(line)
+    return "".join(shown)
+
+
+def pc_file(pc, lines, save: str, name: str) -> bytes:
+    """The bytes PC-BASIC writes for ``lines`` typed and then ``save`` (a SAVE command)."""
+    session, directory = pc
+    session.execute("NEW")
+    session.execute("\n".join(lines))
+    session.execute(save)
+    return (directory / f"{name}.BAS").read_bytes()
+
+
+@pytest.mark.parametrize("option", ["", ",A", ",P"])
+def test_the_session_saves_codes_128_to_255_as_pc_basic(pc, tmp_path, option):
+    session, shown = gw_session(tmp_path)
+    theirs = pc_file(pc, HIGH_LINES, f'SAVE "HIGH"{option}', "HIGH")
+    assert typed(session, shown, ["NEW"] + HIGH_LINES + [f'SAVE "HIGH"{option}']) == ""
+    mine = (tmp_path / "HIGH.bas").read_bytes()
+    assert mine == theirs
+    assert bytes(range(128, 256)) in b"".join(mine.split(b'"')[1::2]) or option != ",A"
+
+
+@pytest.mark.parametrize("option", ["", ",A", ",P"])
+def test_a_program_saves_codes_128_to_255_as_pc_basic(pc, tmp_path, option):
+    """The defect this file was written for: a program's SAVE "f",P wrote ``│`` as ``?`` and
+    ``é`` as 0xE9, not code page 437's 0xB3 and 0x82."""
+    lines = [f'10 PRINT "│é{HIGH}"', f'20 SAVE "SELF"{option}']
+    pc_session, pc_directory = pc
+    pc_session.execute("NEW")
+    pc_session.execute("\n".join(lines))
+    pc_session.execute("RUN")
+    session, shown = gw_session(tmp_path)
+    typed(session, shown, ["NEW"] + lines + ["RUN"])
+    mine = (tmp_path / "SELF.BAS").read_bytes()
+    assert mine == (pc_directory / "SELF.BAS").read_bytes()
+    if option == ",A":
+        assert mine.startswith(b'10 PRINT "\xb3\x82\x80\x81')
+
+
+@pytest.mark.parametrize("option", ["", ",A", ",P"])
+def test_codes_128_to_255_read_back_through_every_reader(pc, tmp_path, option):
+    """A file SAVEd by the session: LOAD lists the characters typed; RUN "f", a program's
+    LOAD, CHAIN and ``yaseer run`` print them; PC-BASIC prints the same from the same file."""
+    session, shown = gw_session(tmp_path)
+    typed(session, shown, ["NEW"] + HIGH_LINES + [f'SAVE "HIGH"{option}'])
+    listed = typed(session, shown, ["NEW", 'LOAD "HIGH"', "LIST"])
+    if option != ",P":
+        assert listed == "".join(line + "\n" for line in HIGH_LINES)
+    assert typed(session, shown, ['RUN "HIGH"']) == HIGH_OUTPUT
+    assert typed(session, shown, ["NEW", '10 LOAD "HIGH",R']) + typed(session, shown, ["RUN"]) == HIGH_OUTPUT
+    assert typed(session, shown, ["NEW", '10 CHAIN "HIGH"', "RUN"]) == HIGH_OUTPUT
+    assert typed(session, shown, ["NEW", '10 RUN "HIGH"', "RUN"]) == HIGH_OUTPUT
+    pc_session, pc_directory = pc
+    (pc_directory / "MINE.BAS").write_bytes((tmp_path / "HIGH.bas").read_bytes())
+    pc_session.execute("NEW")
+    assert clean_output(pc_session.execute('RUN "MINE"')) == clean_output(HIGH_OUTPUT)  # it drops code 255 (NBSP) with the cursor
+    assert yaseer.run(tmp_path / "HIGH.bas", dialect="gw").text == HIGH_OUTPUT
+    assert program_text((tmp_path / "HIGH.bas").read_bytes(), GW.charset).startswith(HIGH_LINES[0])
+
+
+def test_codes_show_as_the_pc_shows_them(pc):
+    """CHR$ and ASC answer code page 437's codes, as GW-BASIC's and PC-BASIC's."""
+    source = '10 PRINT CHR$(130); CHR$(179); CHR$(233); ASC("é"); ASC("│")'
+    pc_session, _ = pc
+    pc_session.execute("NEW")
+    theirs = clean_output(pc_session.execute(source + "\nRUN"))
+    assert yaseer.run(source, dialect="gw").text == theirs == "é│Θ 130  179 \n"
+
+
+def protected_file(tmp_path: Path, lines) -> Path:
+    session, shown = gw_session(tmp_path)
+    typed(session, shown, ["NEW"] + list(lines) + ['SAVE "PROT",P'])
+    return tmp_path / "PROT.bas"
+
+
+@pytest.mark.parametrize("refused", ["LIST", "LLIST", 'SAVE "COPY"', 'SAVE "COPY",A', "EDIT 10"])
+def test_a_protected_file_run_by_the_api_stays_protected(tmp_path, refused):
+    """GIODSK.ASM PROCHK: a program loaded from a ,P file may not show itself, however it is
+    started (before, ``yaseer.run`` and ``yaseer run`` ran it unprotected)."""
+    path = protected_file(tmp_path, ['10 PRINT "A"', f"20 {refused}", '30 PRINT "B"'])
+    result = yaseer.run(path, dialect="gw", files=tmp_path)
+    assert (result.text, result.error, result.protected) == ("A\n", "Illegal function call in 20", True)
+    assert not (tmp_path / "COPY.BAS").exists()
+    assert yaseer.run(path.read_bytes(), dialect="gw", files=tmp_path).error == "Illegal function call in 20"
+
+
+def test_a_protected_program_may_save_itself_with_p(tmp_path):
+    path = protected_file(tmp_path, ['10 PRINT "A"', '20 SAVE "AGAIN",P'])
+    assert yaseer.run(path, dialect="gw", files=tmp_path).error is None
+    assert (tmp_path / "AGAIN.BAS").read_bytes() == path.read_bytes()
+
+
+def test_yaseer_run_keeps_the_protection(tmp_path):
+    path = protected_file(tmp_path, ['10 PRINT "A"', "20 LIST"])
+    for arguments, stdin in (([str(path)], None), (["-"], path.read_bytes())):
+        done = subprocess.run([sys.executable, "-m", "yaseer", "--dialect", "gw", "run", *arguments],
+                              input=stdin, capture_output=True, cwd=tmp_path, timeout=60)
+        assert (done.stdout, done.stderr, done.returncode) == (b"A\n", b"Illegal function call in 20\n", 1)
+
+
+def test_an_ascii_program_is_not_protected(tmp_path):
+    (tmp_path / "OPEN.BAS").write_text('10 PRINT "A"\n20 LIST\n')
+    result = yaseer.run(tmp_path / "OPEN.BAS", dialect="gw")
+    assert (result.text, result.error, result.protected) == ('A\n10 PRINT "A"\n20 LIST\n', None, False)
+
+
+def test_the_api_reads_bytes_as_a_file(tmp_path):
+    assert yaseer.run(b'10 PRINT "\x82"\r\n\x1a', dialect="gw").text == "é\n"
+
+
+def blanked(rng: random.Random, lines: dict[int, str]) -> list[str]:
+    """``lines`` typed with blanks before the number, after it and after the text."""
+    return [" " * rng.choice([0, 0, 1, 2]) + str(n) + " " * rng.choice([0, 1, 1, 2, 3]) + text
+            + " " * rng.choice([0, 0, 1, 3]) for n, text in sorted(lines.items())]
+
+
+def test_generated_programs_save_and_list_as_pc_basic(pc, tmp_path):
+    """Generated lines (every rule of CRUNCH, test_gw_protected's generator) typed with blanks
+    around them: plain SAVE (tokenised, 0xFF), ,A and ,P write PC-BASIC's bytes, and LIST
+    shows PC-BASIC's listing (the blanks kept as typed, but the one after the number)."""
+    pc_session, _ = pc
+    rng = random.Random(base_seed() + 4096)
+    session, shown = gw_session(tmp_path)
+    for k in range(case_count(30)):
+        typed_lines = blanked(rng, generated_lines(rng))
+        for option in ("", ",A", ",P"):
+            theirs = pc_file(pc, typed_lines, f'SAVE "GEN{k}"{option}', f"GEN{k}")
+            typed(session, shown, ["NEW"] + typed_lines + [f'SAVE "GEN{k}"{option}'])
+            assert (tmp_path / f"GEN{k}.bas").read_bytes() == theirs, (option, typed_lines)
+        assert typed(session, shown, ["LIST"]) == clean_output(pc_session.execute("LIST")), typed_lines
+
+
+def test_a_program_saves_itself_tokenised_as_pc_basic(pc, tmp_path):
+    lines = ["10 A=1.5:  B%=-300  ", '20 SAVE "PLAIN"', '30 PRINT "not reached"']
+    pc_session, pc_directory = pc
+    pc_session.execute("NEW")
+    pc_session.execute("\n".join(lines))
+    pc_session.execute("RUN")
+    session, shown = gw_session(tmp_path)
+    assert typed(session, shown, ["NEW"] + lines + ["RUN"]) == ""
+    mine = (tmp_path / "PLAIN.BAS").read_bytes()
+    assert mine == (pc_directory / "PLAIN.BAS").read_bytes() and mine[0] == 0xFF
+
+
+def test_merge_refuses_a_tokenised_file(tmp_path):
+    """GW-BASIC merges ASCII files only (DSKCOM.ASM OKGET2: a first byte 0xFF or 0xFE is Bad
+    file mode; PC-BASIC 2.0.8 says Direct statement in file here, the source decides); SAVE
+    "f",A writes one that merges."""
+    session, shown = gw_session(tmp_path)
+    typed(session, shown, ["NEW", '20 PRINT "merged"', 'SAVE "PART"', 'SAVE "TEXT",A'])
+    assert typed(session, shown, ["NEW", '10 MERGE "PART"', "RUN"]) == "Bad file mode in 10\n"
+    assert typed(session, shown, ["NEW", '10 MERGE "TEXT"', "RUN", "LIST"]) == \
+        '10 MERGE "TEXT"\n20 PRINT "merged"\n'
+
+
+def test_blanks_around_a_line_are_kept_as_gw_keeps_them(tmp_path):
+    """GWMAIN.ASM MAIN skips one blank after the line number (LIST prints one) and CRUNCH
+    keeps every other blank; a line of blanks only deletes the line."""
+    session, shown = gw_session(tmp_path)
+    assert typed(session, shown, ["NEW", "  10   PRINT 1  ", "20PRINT 2", "30 PRINT 3", "30   ", "LIST"]) == \
+        "10   PRINT 1  \n20 PRINT 2\n"
+    (tmp_path / "BLANKS.BAS").write_bytes(b"10   PRINT 1  \r\n20 PRINT 2\t\r\n\x1a")
+    assert typed(session, shown, ['LOAD "BLANKS"', "LIST"]) == "10   PRINT 1  \n20 PRINT 2\t\n"
+    assert typed(session, shown, ['10 LOAD "BLANKS"', "RUN", "LIST"]) == "10   PRINT 1  \n20 PRINT 2\t\n"
