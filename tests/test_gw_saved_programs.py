@@ -220,3 +220,27 @@ def test_blanks_around_a_line_are_kept_as_gw_keeps_them(tmp_path):
     (tmp_path / "BLANKS.BAS").write_bytes(b"10   PRINT 1  \r\n20 PRINT 2\t\r\n\x1a")
     assert typed(session, shown, ['LOAD "BLANKS"', "LIST"]) == "10   PRINT 1  \n20 PRINT 2\t\n"
     assert typed(session, shown, ['10 LOAD "BLANKS"', "RUN", "LIST"]) == "10   PRINT 1  \n20 PRINT 2\t\n"
+
+
+def test_the_current_line_is_gw_s_dot(pc, tmp_path):
+    """``.`` in LIST, LLIST, DELETE, EDIT, AUTO and RENUM is GW's DOT (GWMAIN.ASM LINSPC): the
+    line last typed, listed (GWLIST.ASM LIST), edited (SCNEDT.ASM EDIT) or stopped in by an
+    error or Break; a run that ends leaves it.  The same commands typed into PC-BASIC give
+    the same listings."""
+    pc_session, _ = pc
+    session, shown = gw_session(tmp_path)
+    steps = ["NEW", "10 PRINT 1", "20 PRINT 2", "30 PRINT 3", "40 PRINT 4", "LIST .", "25 PRINT 25",
+             "LIST .", "LIST 10-20", "LIST .", "RUN", "LIST .", "30 X=1/0: PRINT 7: ERROR 5", "RUN", "LIST .",
+             "20 STOP", "RUN", "LIST .", "LIST .-", "LIST -.", "DELETE .", "LIST", "LIST 25", "RENUM 100, .", "LIST"]
+    for step in steps:
+        assert typed(session, shown, [step]) == clean_output(pc_session.execute(step)), step
+    assert typed(session, shown, ["LIST 100", "EDIT ."]) == "100 PRINT 25\n"
+    assert session.edit_text == "100 PRINT 25"
+    typed(session, shown, ["LIST 20", "AUTO ., 5"])
+    assert session.auto == (20, 5)
+
+
+def test_a_period_beside_digits_is_no_line(tmp_path):
+    session, shown = gw_session(tmp_path)
+    assert typed(session, shown, ["NEW", "10 PRINT 1", "LIST 1.5", "DELETE .5"]) == "Syntax error\nSyntax error\n"
+    assert typed(session, shown, ["NEW", "LIST ."]) == ""  # DOT before any line: line 0, none here

@@ -51,6 +51,7 @@ from yaseer.basic.errors import (
 )
 
 MAX_LINE_NUMBER = 65529  # the largest line number MS-BASIC accepts
+_PERIOD = re.compile(r"(?<![\d.])\.(?![\d.])")  # the current line's ``.`` in LIST ., DELETE 10-. ...
 AREAS = range(10)  # PROG 0 (the listing) to PROG 9, as on the pocket computers
 LIBRARY_AREAS = (1, 2, 3, 5)  # the areas yaseer.binding fills with Python programs
 PROMPT_READY = "Ready"
@@ -274,7 +275,7 @@ class Session:
             self.direct(text.strip())
             return
         name, argument = command.group(1).upper(), command.group(2).strip()
-        getattr(self, f"command_{name.lower()}")(argument)
+        getattr(self, f"command_{name.lower()}")(self._current_line_read(name, argument))
 
     # -- the program store --
 
@@ -350,7 +351,7 @@ class Session:
                 for number in sorted(self.programs[area]):
                     write(self.listed(number, area) + "\n")
             return
-        first, last = self._current_range(argument) or parse_range(argument)
+        first, last = parse_range(argument)
         self._refuse_protected()
         if not self.program and self.area in LIBRARY_AREAS:
             from yaseer.library_text import LIBRARY_TEXT
@@ -359,6 +360,8 @@ class Session:
             return
         for number in lines_in_range(self.program, first, last):
             write(self.listed(number) + "\n")
+            if self._dialect().current_line_listed:
+                self.current_line = number  # GWLIST.ASM LIST keeps each line shown in DOT
 
     def command_llist(self, argument: str) -> None:
         """LLIST [range]: LIST to the printer."""
@@ -403,8 +406,8 @@ class Session:
         self._can_continue = False
 
     def command_edit(self, argument: str) -> None:
-        """EDIT n (casio also EDIT .): put line n up for editing as the next input."""
-        current = self._current_range(argument)
+        """EDIT n (and EDIT ., see ``_current_line_read``): put line n up for editing as the next input."""
+        current = None
         words = self._dialect().words
         if not argument and words is not None and words.edit_lists_from and self.program:
             current = (min(self.program),) * 2  # EDIT alone: the first line (EDIT.md, its parameter)
@@ -417,16 +420,21 @@ class Session:
         self.current_line = number
         self.edit_text = self.listed(number)
 
-    def _current_range(self, argument: str) -> tuple[int, int] | None:
-        """``.`` where the dialect reads it (casio: LIST.md item 4, EDIT.md item 2): the line
-        most recently written, edited or run (after an error, the error's line) as a range
-        of one line; None for any other argument.  No such line yet: Syntax error."""
-        words = self._dialect().words
-        if argument.strip() != "." or words is None or not words.current_line_period:
-            return None
-        if self.current_line is None:
-            raise BasicError("Syntax error", SYNTAX_ERROR)
-        return self.current_line, self.current_line
+    def _current_line_read(self, name: str, argument: str) -> str:
+        """``argument`` of command ``name`` with each ``.`` that stands for a line number (not
+        beside a digit or another ``.``) made the current line's number, where the dialect's
+        ``name`` reads it so (``Dialect.current_line_commands``): the line last typed, edited,
+        stopped in by an error or Break, and in gw listed (GW's DOT), in casio run.  Before any
+        such line: line 0 in gw (``current_line_listed``), a Syntax error in casio."""
+        dialect = self._dialect()
+        if "." not in argument or name not in dialect.current_line_commands:
+            return argument
+        current = self.current_line
+        if current is None:
+            if not dialect.current_line_listed:
+                raise BasicError("Syntax error", SYNTAX_ERROR)
+            current = 0
+        return _PERIOD.sub(str(current), argument)
 
     def _dialect(self):
         from yaseer.basic.dialects.dialect import get_dialect
@@ -578,8 +586,8 @@ class Session:
             return
         self._take_back_programs()
         last = getattr(self.engine, "last_line", None)
-        if in_program and last is not None:
-            self.current_line = last
+        if in_program and last is not None and not self._dialect().current_line_listed:
+            self.current_line = last  # casio: the line last run (GW's DOT stays: no error)
         if in_program:
             self._can_continue = False
         self._take_auto()

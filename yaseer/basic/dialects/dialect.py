@@ -91,9 +91,11 @@ FIELDS = (
     "free_memory",  # int | None: None
     "variables_made",  # bool: False
     "tokenised_programs",  # bool: False
+    "current_line_commands",  # tuple[str, ...]: ()
+    "current_line_listed",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
-            True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False)
+            True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -237,6 +239,14 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         typed line keeps its blanks but the one after its number (GWMAIN.ASM MAIN:
         "one space always printed after line #"); False: LIST shows the dialect's own
         listing (scanner.detokenize) and SAVE writes it.
+        ``current_line_commands``: the session's commands that read ``.`` as the current
+        line (casio's LIST, LLIST, EDIT: LIST.md item 4, EDIT.md item 2; gw's LIST, LLIST,
+        DELETE, EDIT, AUTO's start and RENUM's first two numbers: GWMAIN.ASM LINSPC, called
+        by SCNLIN, AUTO and RESEQ, and SCNEDT.ASM EDIT).  ``current_line_listed``: True
+        (GW's DOT) when LIST and LLIST make the last line they show the current line and a
+        run changes it only by an error or Break (GWLIST.ASM LIST, GWMAIN.ASM's error
+        path), and ``.`` before any such line is line 0; False (casio): the line last run is
+        the current one, and ``.`` before any is a Syntax error.
         ``program_areas``: True when ``GOSUB PROG n`` is a statement (the
         library programs are bound at start); False in GW-BASIC, where PROG
         is no word: ``GOSUB PROG n`` is then a syntax error unless program
@@ -280,6 +290,7 @@ CASIO = Dialect(
     empty_input_keeps=True, library_forms=True, file_devices=("CAS0:", "CAS1:"),
     words=casio_words.WORDS, names_keep_case=True, name_length=15, hex_literals=True,
     string_length=255,  # the manual, part 6: string variables hold up to 255 characters (else ST error)
+    current_line_commands=("LIST", "LLIST", "EDIT"),
 )
 
 GW = Dialect(
@@ -294,6 +305,7 @@ GW = Dialect(
     bracket_subscripts=True, display=(80, 25, 25), controls=tuple(sorted(GW_CONTROLS.items())), screen=GW_SCREEN,
     string_length=255,  # a string descriptor holds its length in one byte
     free_memory=60300, charset=CP437, tokenised_programs=True,
+    current_line_commands=("LIST", "LLIST", "DELETE", "EDIT", "AUTO", "RENUM"), current_line_listed=True,
     variables_made=True,
 )
 

@@ -80,6 +80,8 @@ class DisplayStream(OutputStream):
         super().__init__(stream, width)
         self.display = display
         self._tail: list[str] = []
+        # ASCII text needs no symbols: written past a SymbolStream (every PRINT item's path)
+        self._ascii_write = stream.stream.write if isinstance(stream, SymbolStream) else stream.write
         controls = display.controls
         # codes that place text (the display is drawn on) and codes that move the cursor otherwise
         # than one column a character (the display must say where the column is)
@@ -105,11 +107,17 @@ class DisplayStream(OutputStream):
         if width is not None:
             column = self.column
             if "\n" not in text and column + len(text) < width:
-                self.stream.write(text)
+                if text.isascii():
+                    self._ascii_write(text)
+                else:
+                    self.stream.write(text)
                 self.column = column + len(text)
                 return
             text = self._folded(text)
-        self.stream.write(text)
+        if text.isascii():
+            self._ascii_write(text)
+        else:
+            self.stream.write(text)
         newline = text.rfind("\n")
         self.column = len(text) - newline - 1 if newline >= 0 else self.column + len(text)
 
