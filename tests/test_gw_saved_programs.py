@@ -16,12 +16,11 @@ from pathlib import Path
 import pytest
 
 from test_differential_support import base_seed, case_count, clean_output
-from test_gw_protected import generated_lines
+from test_gw_protected import generated_lines, gw_session, pc, typed  # noqa: F401 (pc: the fixture)
 
 import yaseer
 from yaseer.basic.dialects.dialect import GW
 from yaseer.basic.machine.program_file import program_text
-from yaseer.session import MachineEngine, Session
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 
@@ -31,32 +30,6 @@ HIGH = bytes(range(128, 256)).decode("cp437")
 HIGH_LINES = [f'{10 * (k + 1)} PRINT "{HIGH[32 * k:32 * k + 32]}": REM {HIGH[32 * k:32 * k + 32]}'
               for k in range(4)]
 HIGH_OUTPUT = "".join(HIGH[32 * k:32 * k + 32] + "\n" for k in range(4))
-
-
-@pytest.fixture(scope="module")
-def pc(tmp_path_factory):
-    """A PC-BASIC session on drive C: (a fresh directory): (session, directory)."""
-    import pcbasic
-
-    directory = tmp_path_factory.mktemp("pcbasic")
-    session = pcbasic.Session(output_streams=None, input_streams=None, hide_protected=True,
-                              devices={"C:": str(directory)}, current_device="C:")
-    session.start()
-    yield session, directory
-    session.close()
-
-
-def gw_session(directory: Path) -> tuple[Session, list]:
-    shown: list[str] = []
-    engine = MachineEngine(shown.append, dialect="gw", files=directory)
-    return Session(write=shown.append, engine=engine, directory=directory, dialect="gw"), shown
-
-
-def typed(session: Session, shown: list, lines) -> str:
-    shown.clear()
-    for line in lines:
-        session.handle(line)
-    return "".join(shown)
 
 
 def pc_file(pc, lines, save: str, name: str) -> bytes:
