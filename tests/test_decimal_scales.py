@@ -306,3 +306,56 @@ def test_sine_and_cosine_of_whole_numbers_against_mpmath(function, degrees):
                 continue  # (exact at right angles: test_decimal_arith)
             expected = float(CONTEXT.plus(Decimal(mpmath.nstr(exact, 40, min_fixed=-60, max_fixed=60))))
             assert getattr(decimal_arith, function)(float(x), degrees) == expected, (function, degrees, x)
+
+
+def _expression(rng: random.Random, depth: int) -> str:
+    """A random BASIC expression of + - * / over A, B, C, K and literals (no division by 0)."""
+    if depth == 0 or rng.random() < 0.25:
+        return rng.choice(["A", "B", "C", "K", "K", "2", "3", "4", "5", ".5", ".125", "8", "1E3", "0.1", "7"])
+    op = rng.choice("+-*/")
+    left = _expression(rng, depth - 1)
+    if op == "/":
+        right = rng.choice(["2", "4", "8", "3", ".5", "K", "A", left if left in "ABCK" else "2"])
+    else:
+        right = _expression(rng, depth - 1)
+    return f"({left}{op}{right})"
+
+
+def _results(program: str, caching: bool, monkeypatch) -> list:
+    """Y() after ``program``, compiled with the inline paths (``caching``) or the routines alone."""
+    monkeypatch.setenv("YASEER_CACHE_DIR", "")  # (the compiled-program cache does not tell the two apart)
+    original = DecimalNumbers.__init__
+
+    def init(self):
+        original(self)
+        self.caching = caching
+    monkeypatch.setattr(DecimalNumbers, "__init__", init)
+    try:
+        _, machine = run(program)
+    finally:
+        monkeypatch.setattr(DecimalNumbers, "__init__", original)
+    return [repr(v) for row in machine.arrays["Y"] for v in row]
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_compiled_statements_equal_the_routines(monkeypatch, seed):
+    """Whole statements (their exact float forms where their variables are whole and small, the
+    scale caches elsewhere) give the values decimal_arith's routines give, bit for bit, over
+    values that pass and fail the tests: whole numbers at and beyond the bounds, halves,
+    tenths, negatives, large and small numbers."""
+    rng = random.Random(seed)
+    values = [1, 2, 3, 7, -5, 999, 1000, 12345, 31622, 31623, 99999, 123456789, 599999999, 600000000,
+              899999999, 900000000, 999999999, 1000000000, 2.5, -0.5, 0.1, 0.125, 1234.5678, 1e-5, 3e11,
+              -123456789012, 0.333333333333, 9.99999999999e20]
+    rows = 20
+    expressions = [_expression(rng, 3) for _ in range(40)]
+    lines = [f"10 DIM Y({rows},{len(expressions)})", f"20 FOR R=1 TO {rows}: READ A,B,C,K"]
+    lines += [f"{30 + i} Y(R,{i})={e}" for i, e in enumerate(expressions)]
+    lines.append(f"{30 + len(expressions)} NEXT R")
+    # (half of them whole numbers of any size up to 1E+10: the exact forms' bounds are round numbers)
+    data = [(rng.choice(values) if rng.random() < 0.5 else rng.randrange(1, 10 ** rng.randint(1, 10)))
+            * rng.choice((1, 1, -1)) for _ in range(4 * rows)]
+    lines += [f"{1000 + i} DATA {','.join(repr(float(v)) for v in data[i:i + 8])}" for i in range(0, len(data), 8)]
+    program = "\n".join(lines) + "\n"
+    fast, routines = _results(program, True, monkeypatch), _results(program, False, monkeypatch)
+    assert fast == routines

@@ -595,6 +595,7 @@ class DecimalNumbers(PlainNumbers):
 
     def __init__(self):
         self._temps = 0
+        self._exact: dict[str, tuple] = {}  # code with an exact form -> (its tree, its scaled code)
         self.cache_bases: list[str] = []  # the scale caches written (see _scaled)
         self.caching = True  # (off: the routines alone)
 
@@ -604,9 +605,34 @@ class DecimalNumbers(PlainNumbers):
         return repr(rounded(float(value))), "n"
 
     def arithmetic(self, op: str, left: str, lkind: str, right: str, rkind: str) -> tuple[str, str]:
+        """``left op right``: its float code where a test of its variables shows every step
+        is exact (:func:`_exact_form`), else inline through a scale cache (:meth:`_scaled`)."""
         if not self.caching:
             return f"{self._OPERATIONS[op]}({left}, {right})", "n"
+        (left_tree, left_scaled), (right_tree, right_scaled) = self._operand(left), self._operand(right)
+        if left_tree is not None and right_tree is not None:
+            tree = (op, left_tree, right_tree)
+            exact = _exact_form(tree)
+            if exact is not None:
+                scaled = self._scaled(op, left_scaled, right_scaled)
+                code = f"({exact[0]} if {exact[1]} else {scaled})"
+                self._exact[code] = (tree, scaled)
+                return code, "n"
         return self._scaled(op, left, right), "n"
+
+    def _operand(self, code: str) -> tuple[tuple | None, str]:
+        """(the expression tree of operand ``code`` for :func:`_exact_form`, or None; the code
+        of its scaled form): a local, a literal, or an operation this model wrote with an
+        exact form (its code may have lost its outer parentheses in a chain)."""
+        for form in (code, f"({code})"):
+            found = self._exact.get(form)
+            if found is not None:
+                return found
+        if code.isidentifier():
+            return ("var", code), code
+        if _small_literal(code):
+            return ("num", float(code)), code
+        return None, code
 
     def _scaled(self, op: str, left: str, right: str) -> str:
         """The code of ``left op right`` through a scale cache ``_D<n>`` (decimal_scales.py):
@@ -658,6 +684,78 @@ class DecimalNumbers(PlainNumbers):
         def whole(node) -> bool:
             return node is None or (isinstance(node, ast.Num) and float(node.value).is_integer())
         return whole(stmt.start) and whole(stmt.step)
+
+
+def _exact_form(tree) -> tuple[str, str] | None:
+    """(float code, test code) of an expression ``tree`` of ``+ - * /`` over locals and
+    literals whose float code is decimal_arith's result wherever the test holds; None if none.
+
+    The test: each local is a whole number below a bound ``B`` in size (the largest of a few
+    round numbers that works).  Then every step's value, as every operand's, is a multiple of
+    1/8 below 1E+9 in size (:func:`_dyadic`), which is where decimal_arith's ``add``,
+    ``subtract``, ``multiply`` and ``divide`` give the float operation's own result (their
+    small-number path, exact in both arithmetics): the float code computes what their
+    composition computes, bit for bit, signed zeros and division by zero included."""
+    names = sorted(_locals_of(tree))
+    for bound in _WHOLE_BOUNDS:
+        if _dyadic(tree, bound) is not None:
+            break
+    else:
+        return None
+    test = " and ".join(f"{-bound!r} < {name} < {bound!r} and not {name} % 1.0" for name in names) or "True"
+    return _float_code(tree), test
+
+
+# the bounds tried for the locals of an exact form, largest first: m * 10**e
+_WHOLE_BOUNDS = sorted((m * 10.0 ** e for m in range(1, 10) for e in range(9)), reverse=True)
+_EIGHTHS_LIMIT = 1e9  # decimal_arith's small-number path: multiples of 1/8 below 1E+9
+
+
+def _dyadic(tree, bound: float) -> tuple[int, float] | None:
+    """(d, m): the value of ``tree`` is a multiple of 2**-d (d at most 3) below m in size when
+    its locals are whole numbers below ``bound``; None where that is not shown (a step beyond
+    1E+9 or finer than 1/8, a division by anything but a power of two or the dividend itself)."""
+    kind = tree[0]
+    if kind == "var":
+        return 0, bound
+    if kind == "num":
+        value = tree[1]
+        for d in range(4):
+            if (value * 2 ** d) % 1.0 == 0.0 and abs(value) < _EIGHTHS_LIMIT:
+                return d, abs(value)
+        return None
+    op, left, right = tree
+    if op == "/" and left == right and left[0] == "var":
+        return 0, 1.0  # x / x is 1 (or, for 0, the division by zero of both)
+    a = _dyadic(left, bound)
+    b = _dyadic(right, bound)
+    if a is None or b is None:
+        return None
+    if op in "+-":
+        d, size = max(a[0], b[0]), a[1] + b[1]
+    elif op == "*":
+        d, size = a[0] + b[0], a[1] * b[1]
+    elif right[0] == "num" and right[1] in (1.0, 2.0, 4.0, 8.0):
+        d, size = a[0] + (1.0, 2.0, 4.0, 8.0).index(right[1]), a[1] / right[1]
+    else:
+        return None
+    return (d, size) if d <= 3 and size < _EIGHTHS_LIMIT else None
+
+
+def _locals_of(tree) -> set:
+    if tree[0] == "var":
+        return {tree[1]}
+    if tree[0] == "num":
+        return set()
+    return _locals_of(tree[1]) | _locals_of(tree[2])
+
+
+def _float_code(tree) -> str:
+    if tree[0] == "var":
+        return tree[1]
+    if tree[0] == "num":
+        return repr(tree[1])
+    return f"({_float_code(tree[1])} {tree[0]} {_float_code(tree[2])})"
 
 
 _CACHE_WRITTEN = re.compile(r"_zw[spq]\('(\w+)'")  # a binade cache's name where its writer is called
