@@ -20,6 +20,7 @@ angle give exact values, as in the binary arithmetic.
 from __future__ import annotations
 
 import math
+from functools import partial
 from decimal import ROUND_HALF_UP, Context, Decimal, Overflow as DecimalOverflow
 
 from yaseer.basic.arithmetic.decimal_scales import rounded_within
@@ -146,8 +147,9 @@ def _surely(value: float, error: float):
     """``value`` rounded to DIGITS digits as a float when every number within ``error``
     of it rounds to the same, else None.  (The ends' roundings agree only when no
     halfway point lies between them, so half up and half even agree there.)"""
-    if 1e-11 <= abs(value) < 1e12:  # the common decades: the scaled float's whole number
-        return rounded_within(value, error)
+    found = rounded_within(value, error)  # the common decades: the scaled float's whole number
+    if found is not None or 1e-11 <= abs(value) < 1e12:
+        return found
     if not 1e-90 < abs(value) < 1e90:
         return None
     low = format(value - error, _DIGITS_FORMAT)
@@ -378,7 +380,8 @@ def trig_functions(unit: str) -> dict:
         return {"_sin": lambda x: sin(multiply(x, 0.9)), "_cos": lambda x: cos(multiply(x, 0.9)),
                 "_tan": lambda x: tan(multiply(x, 0.9)), "_atn": lambda x: divide(atn(x), 0.9)}
     degrees = unit != "RAD"
-    return {"_sin": lambda x: sin(x, degrees), "_cos": lambda x: cos(x, degrees),
+    return {"_sin": partial(_sine_or_cosine, degrees=degrees, which=0),
+            "_cos": partial(_sine_or_cosine, degrees=degrees, which=1),
             "_tan": lambda x: tan(x, degrees), "_atn": lambda x: atn(x, degrees)}
 
 

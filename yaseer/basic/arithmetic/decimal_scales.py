@@ -100,18 +100,27 @@ def rounded_within(value: float, error: float):
     nearest double; else None.  The scaled ``t`` (its product's rounding counted) and its
     reach must stay inside one decade and less than 1/2 from the whole number ``n`` nearest
     ``t``: then every number in reach rounds to ``n``, and ``n / S`` is the double (two exact
-    doubles divided).  No halfway point is in reach, so rounding half up or half to even agree."""
-    size = abs(value)
-    if not 1e-11 <= size < 1e12:
-        return None
-    s = decade_scale(size)
-    t = size * s
-    reach = error * s + t * 2.3e-16
+    doubles divided).  No halfway point is in reach, so rounding half up or half to even agree.
+    The scale of the last value's decade (with its sign) is tried first: a function called
+    in a loop mostly stays in one decade."""
+    global _last_scale
+    s = _last_scale
+    t = value * s
+    if not BOTTOM <= t < TOP:
+        size = abs(value)
+        if not 1e-11 <= size < 1e12:
+            return None
+        s = _last_scale = decade_scale(size) if value > 0 else -decade_scale(size)
+        t = value * s
+    reach = abs(error * s) + t * 2.3e-16
     if BOTTOM <= t - reach and t + reach < TOP:
         n = (t + MAGIC) - MAGIC
-        if abs(t - n) + reach < 0.4999:
-            return n / s if value > 0 else -(n / s)
+        if reach - 0.4999 < t - n < 0.4999 - reach:
+            return n / s
     return None
+
+
+_last_scale = 1e11  # (any scale: only a first guess, tested before it is used)
 
 
 def scaled_result(r: float, s: float):
