@@ -472,3 +472,16 @@ def test_a_gw_program_prints_the_machines_digits():
     inverse = fdivs(Fraction(1), reference_exp(fmuls(half, reference_log(Fraction(4)))))
     expected = f"{str_dollar(float(root))} -512 {str_dollar(float(inverse))} \n"
     assert run_gw("10 PRINT 2^.5; (-8)^3; 4^-.5\n") == expected
+
+
+def test_the_log_memo_forgets_its_oldest_quarter(monkeypatch):
+    """The LOG memo keeps at most its size, dropping the oldest quarter when full (a loop over
+    whole numbers still finds K/2's ratio at K), and its values are the memo-less ones."""
+    monkeypatch.setattr(gw, "_LOG_RATIOS", {})
+    monkeypatch.setattr(gw, "_LOG_MEMO_SIZE", 16)
+    odd = [float(k) for k in range(3, 200, 2)]
+    remembered = [gw.log(x) for x in odd]
+    assert len(gw._LOG_RATIOS) <= 16
+    assert math.frexp(odd[-1])[0] in gw._LOG_RATIOS and math.frexp(odd[0])[0] not in gw._LOG_RATIOS
+    monkeypatch.setattr(gw, "_LOG_RATIOS", _Forgetful())
+    assert remembered == [gw.log(x) for x in odd]
