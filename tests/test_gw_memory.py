@@ -53,10 +53,11 @@ def _string_space_program(rng) -> str:
     an error prints its code, the pass and FRE(0)."""
     size = rng.randint(200, 600)
     makers = [f'STRING$({rng.randint(100, 255)}, "X")', f"SPACE$({rng.randint(100, 255)})",
-              f'STRING$({rng.randint(1, 200)}, 65) + "{"Y" * rng.randint(1, 20)}"', "B$"]
-    # (no LEFT$, MID$ or + of a variable: PC-BASIC copies the variable's string first, which
-    # a collection then keeps, where GW's EVAL hands the operation the variable's own string;
-    # nor of a new string: GW's collection keeps that temporary, yaseer's does not)
+              f'B$ + "{"Y" * rng.randint(1, 20)}"', "B$"]
+    # (no LEFT$ or MID$ of a variable: PC-BASIC copies the variable's string first, which a
+    # collection then keeps, where GW's EVAL hands the operation the variable's own string;
+    # nor a + of a new string: GW's collection keeps both sides while it makes the sum (CAT
+    # calls STRINI before FRETMP), PC-BASIC neither: tests/test_gw_string_temporaries.py)
     body = [f"A$(I) = {rng.choice(makers)}" for _ in range(rng.randint(1, 3))]
     if rng.random() < 0.6:
         body.append(f"IF I MOD {rng.randint(2, 7)} = 0 THEN A$(I \\ 3) = \"\"")

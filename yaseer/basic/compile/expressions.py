@@ -45,6 +45,10 @@ _FUNCTIONS = {
     "SCREEN": (("nn", "nnn"), "n", "_M.screen_char"),
 }
 
+# the functions that use a string argument up without making a string of it (gw's string
+# space gives a temporary's bytes back: BISTRS.ASM LEN1, STRCMP, INSTR and STRNG$ call FRESTR)
+_USING_UP = frozenset({"LEN", "ASC", "VAL", "INSTR", "STRING$", "CVI", "CVS", "CVD"})
+
 # Values without arguments: name -> (Python expression, "s" or None for the integer type).
 _SYSTEM_VARIABLES = {
     "ERR": ("_M.err", None), "ERL": ("_M.erl", None), "TIMER": ("_timer()", "n"),
@@ -195,6 +199,39 @@ def calls_fn(node) -> bool:
     return isinstance(node, ast.Call) and any(calls_fn(a) for a in node.args)
 
 
+def makes_string(node) -> bool:
+    """Can evaluating ``node`` make a new string (take string space, maybe collect)?"""
+    if isinstance(node, (ast.Call, ast.SysVar)) and node.name.endswith("$"):
+        return True
+    if isinstance(node, ast.FnCall) or (isinstance(node, ast.Binary) and node.op == "+"
+                                         and ast.expr_type(node) == "s"):
+        return True
+    if isinstance(node, ast.Binary):
+        return makes_string(node.left) or makes_string(node.right)
+    if isinstance(node, ast.Unary):
+        return makes_string(node.operand)
+    return isinstance(node, (ast.Call, ast.Elem)) and any(
+        makes_string(arg) for arg in (node.args if isinstance(node, ast.Call) else node.indices))
+
+
+def _temporary(node) -> bool:
+    """Is ``node``'s value a string an operation made (not a variable's or a literal)?"""
+    return ast.expr_type(node) == "s" and not isinstance(node, (ast.Str, ast.Var, ast.Elem))
+
+
+_MAKERS = frozenset(helper for _, result, helper in _FUNCTIONS.values() if result == "s") | {"_cat"}
+
+
+def _used_at_once(node, code: str) -> str:
+    """``code`` of a new string used up as soon as it is made: the making function's
+    ``_u`` form (it needs the room, a collection if there is none, but leaves the count as
+    it was: machine/string_space.py), else ``_drop`` of it."""
+    helper = code[:code.find("(")]
+    if helper in _MAKERS and isinstance(node, (ast.Call, ast.Binary)):
+        return f"{helper}_u{code[len(helper):]}"
+    return f"_drop({code})"
+
+
 def _simple_operand(code: str) -> bool:
     return code.replace("_", "a").replace("[", "").replace("]", "").isalnum()
 
@@ -203,6 +240,31 @@ class ExpressionCompiler:
     """The expression methods of ``AreaCompiler`` (they use its ``numbers``, ``plan``,
     ``fn_params``, ``string_length`` and the native-loop facts ``whole_index`` and
     ``counting_vars``)."""
+
+    def held(self, nodes, codes: list, used_up: bool = False) -> int:
+        """Hold each temporary string of ``nodes`` (their Python ``codes``, changed in place)
+        while a later one can make a string, so that a collection then keeps it (gw's
+        string space, machine/string_space.py); the number held (``_free`` lets them go).
+        ``used_up``: the operation makes no string of them, so each gives its bytes back
+        when it is the last made (``_drop`` now, ``_release`` for those held)."""
+        if not self.counts_strings:
+            return 0
+        held = 0
+        for k, node in enumerate(nodes):
+            if not _temporary(node):
+                continue
+            if any(makes_string(later) for later in nodes[k + 1:]):
+                codes[k] = f"_hold({codes[k]})"
+                held += 1
+            elif used_up:
+                codes[k] = _used_at_once(node, codes[k])
+        return held
+
+    def let_go(self, code: str, held: int, used_up: bool = False) -> str:
+        """``code`` letting its ``held`` temporaries go (see :meth:`held`)."""
+        if not held:
+            return code
+        return f"{'_release' if used_up else '_free'}({code}{'' if held == 1 else f', {held}'})"
 
     def expr(self, node, scope) -> tuple[str, str]:
         """(Python source, "n" or "s") for an expression node."""
@@ -275,12 +337,19 @@ class ExpressionCompiler:
         op = node.op
         left, lkind = self.expr(node.left, scope)
         right, rkind = self.expr(node.right, scope)
+        if lkind == "s" and rkind == "s" and (op in _PY_RELATIONS or op == "+"):
+            codes = [left, right]
+            relation = op in _PY_RELATIONS
+            held = self.held([node.left, node.right], codes, used_up=relation)
+            if relation:
+                return self.numbers.truth(self.let_go(f"{codes[0]} {_PY_RELATIONS[op]} {codes[1]}", held, True))
+            if held:  # (the sum lets its held left side go itself)
+                return f"_cath({codes[0]}, {codes[1]})", "s"
+            return f"_cat({codes[0]}, {codes[1]})", "s"
         if op in _PY_RELATIONS:
             if (lkind == "s") != (rkind == "s"):
                 raise type_mismatch()
             return self.numbers.truth(f"{left} {_PY_RELATIONS[op]} {right}")
-        if op == "+" and lkind == "s" and rkind == "s":
-            return f"_cat({left}, {right})", "s"
         if lkind not in NUMERIC or rkind not in NUMERIC:
             raise type_mismatch()
         if op in ("+", "-", "*", "/"):
@@ -322,6 +391,11 @@ class ExpressionCompiler:
             scope.uses_fn = True  # VALF and FRE read the variables: the block's values are stored first
         if own and node.name in self.words.sets_x_y:
             return self.pair_to_x_y(f"{helper}({', '.join(codes)})", scope), "n"
+        used_up = node.name in _USING_UP
+        held = self.held(args, codes, used_up)
+        if held:
+            code, kind = self.numbers.call(node.name, helper, codes, kinds, result)
+            return self.let_go(code, held, used_up), kind
         return self.numbers.call(node.name, helper, codes, kinds, result)
 
     def pair_to_x_y(self, pair: str, scope) -> str:
@@ -349,7 +423,8 @@ class ExpressionCompiler:
                 code = self.numbers.convert(code, kind, self.numbers.kind(params[k]))
             args.append(code)
         name = self.numbers.name(node.name)
-        return f"_fn({name!r}, {len(node.args)})({', '.join(args)})", self.kind_of(node)
+        held = self.held(list(node.args), args)
+        return self.let_go(f"_fn({name!r}, {len(node.args)})({', '.join(args)})", held), self.kind_of(node)
 
     def expr_SysVar(self, node, scope):
         if node.name == "PI":
@@ -364,6 +439,10 @@ class ExpressionCompiler:
             right, rkind = self.expr(node.right, scope)
             if (lkind == "s") != (rkind == "s"):
                 raise type_mismatch()
+            codes = [left, right]
+            if lkind == "s":
+                held = self.held([node.left, node.right], codes, used_up=True)
+                return self.let_go(f"{codes[0]} {_PY_RELATIONS[node.op]} {codes[1]}", held, True)
             return f"{left} {_PY_RELATIONS[node.op]} {right}"
         if isinstance(node, ast.Binary) and node.op in ("AND", "OR") and _is_relation(node):
             # AND and OR are operators, not control flow: both sides run (an RND or an

@@ -57,7 +57,9 @@ class InputOutputCompiler:
                     return parts, False
                 if kind != "s" and items[k + 1:k + 2] == [","]:
                     parts.append("_NUMCOMMA")  # a number a comma follows (see Machine._blank_before_comma)
-                parts.append(self.numbers.printable(code, kind))
+                codes = [code]
+                self.held([item], codes, used_up=True)  # a new string printed gives its bytes back (STRPRT)
+                parts.append(self.numbers.printable(codes[0], kind))
         # a PRINT ending in a separator, TAB(n) or SPC(n) keeps the line open
         newline = not items or not (items[-1] in (",", ";") or isinstance(items[-1], (ast.Tab, ast.Spc)))
         return parts, newline

@@ -190,7 +190,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         # state: see dialect.py); ``angle`` overrides its start-up unit ("deg"/"rad").
         self.dialect = dialects.get_dialect(dialect)
         self.def_types: dict = {}  # gw: letter -> type character of the last DEF statements
-        self.string_space = string_space.StringSpace(self.measure_memory)  # gw: GW's 64 KB for strings
+        self.string_space = string_space.StringSpace(self.measure_memory, self.held_strings)  # gw: GW's 64 KB for strings
         self.arith = arith_policy.ArithmeticPolicy(self)  # division by zero, overflow: stop or go on
         # how PRINT shows a number: typed (GW: integers, 7-digit singles, 16-digit D doubles) or not
         self._printed_number, self._number_text = (
@@ -825,6 +825,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.show_messages(entry_messages(text, self.dialect))
         compiled = self._compile("direct", {0: text}, direct=True)
         self.namespaces.pop("direct", None)
+        self.string_space.temps.clear()  # those of a line that failed before
         try:
             self.line = None
             try:

@@ -114,13 +114,14 @@ def free_and_strings(total: int, program: dict, scalars: dict, arrays: dict, arr
             elements *= size + 1
         used += _name_bytes(name) + 3 + 2 * len(dims) + elements * _VALUE_BYTES.get(name[-1], 4)
         if name.endswith("$"):
-            strings += sum(len(v) for v in _flat(arrays.get(name, ())))
+            strings += sum(len(v) for v in flat_strings(arrays.get(name, ())))
     return total - used - strings, strings
 
 
-def _flat(values):
+def flat_strings(values):
+    """The strings of array ``values`` (nested lists), every dimension walked."""
     for value in values:
         if isinstance(value, list):
-            yield from _flat(value)
+            yield from flat_strings(value)
         elif type(value) is str:
             yield value

@@ -121,6 +121,7 @@ class ErrorTrapping:
         self.erl = float(err.line or 0)
         for stream in self.streams:
             stream.row = []
+        self.string_space.temps.clear()  # the failed statement's temporaries are let go
         self.in_handler = True
         self.pending_error = err
         self.error_point = (area, block)

@@ -15,6 +15,12 @@ block's own values, which it has not stored back yet), and the garbage is what w
 since less what the variables hold of it.  A literal assigned is not a new string, nor is
 a string READ takes from DATA (GW points into the program text: GWMAIN.ASM LETCN6 copies
 a string only from the keyboard buffer, a file buffer or the string space).
+
+A string an operation is still working on is a temporary (BISTRS.ASM PUTNEW puts its
+descriptor in TEMPST): a collection keeps it (GARBAG walks TEMPST before the variables),
+and an operation that uses it up without making a string of it frees it, giving its bytes
+back when it is the last string made (FRETMP moves FRETOP up over it), so it leaves no
+garbage.  The compiler marks both (compile/expressions.py ``held``).
 """
 
 from __future__ import annotations
@@ -46,14 +52,24 @@ def block_locals() -> dict:
 
 class StringSpace:
     """The string space's count (see the module docstring).  ``measure(block_locals)`` is
-    (bytes free with no garbage, bytes the strings hold) as memory_model counts them.
+    (bytes free with no garbage, bytes the strings hold) as memory_model counts them;
+    ``held(block_locals)`` the ids of the string objects the variables hold.
+
+    ``temps`` are the temporaries an operation still works on (GW's TEMPST): the left
+    side of a ``+`` or a relation, or an earlier argument of a function, while the rest is
+    evaluated (the compiler holds them with ``_hold`` only where that rest can make a
+    string, and lets them go with ``_free``); a collection keeps them, as it keeps the
+    strings a making function works on (GARBAG walks TEMPST before the variables).
 
     ``count`` is [bytes of the strings made so far, the count at which the free bytes run
     out]: a new string adds its length and compares, nothing more (the generated code's
     string operations call it often)."""
 
-    def __init__(self, measure: Callable[[dict], tuple[int, int]]):
+    def __init__(self, measure: Callable[[dict], tuple[int, int]], held: Callable[[dict], set]):
         self.measure = measure
+        self.held = held
+        self.temps: list = []
+        self.last: list = [None]  # the last string made (those used up at once are not)
         self.count = [0, -1]  # -1: count the free bytes at the next string
         self.base = None  # (strings held, count) at the last collection; None: none since a reset
 
@@ -61,18 +77,40 @@ class StringSpace:
         """CLEAR, RUN, FRE(""): no garbage (the next string counts afresh)."""
         self.count[1] = -1
         self.base = None
+        self.last[0] = None
 
-    def collect(self, needed: int) -> None:
+    def collect(self, needed: int, operands: tuple = ()) -> None:
         """GARBAG, after a string of ``needed`` bytes did not fit: room for it, or Out of
-        string space (the count then stands as if it had not been made)."""
+        string space (the count then stands as if it had not been made).  The
+        temporaries and the strings ``operands`` the new one is made from are kept."""
         count = self.count
         count[0] -= needed
-        free, strings = self.measure(block_locals())
+        names = block_locals()
+        free, strings = self.measure(names)
+        kept = self.kept(names, operands)
+        free -= kept
         count[1] = count[0] + free
-        self.base = (strings, count[0])
+        self.base = (strings + kept, count[0])
         if free < needed:
             raise BasicError("Out of string space", OUT_OF_STRING_SPACE)
         count[0] += needed
+
+    def kept(self, names: dict, operands: tuple = ()) -> int:
+        """The bytes of the temporaries (and of ``operands``) a collection keeps: those in
+        the string space, not a variable's own string (an operation works on that one in
+        place) nor a literal's (it stays in the program text)."""
+        temps = [text for text in (*self.temps, *operands) if type(text) is str and text]
+        if not temps:
+            return 0
+        held = self.held(names)
+        seen = set()
+        kept = 0
+        for text in temps:
+            key = id(text)
+            if key not in held and key not in seen:
+                seen.add(key)
+                kept += len(text)
+        return kept
 
     def garbage(self, strings: int) -> int:
         """The bytes of garbage when the variables hold ``strings`` bytes of strings."""
@@ -84,26 +122,60 @@ class StringSpace:
     def helpers(self, namespace: dict, longest: int) -> dict:
         """Namespace entries that take each new string from the space: ``_cat`` (``+``, at
         most ``longest`` characters), ``_scopy`` (another variable's string copied) and the
-        :data:`MAKERS` of ``namespace`` wrapped."""
-        count, collect = self.count, self.collect
+        :data:`MAKERS` of ``namespace` wrapped; ``_hold``/``_free`` (see the class) and
+        ``_drop``/``_release``: a temporary used up by a function that makes no string from
+        it (LEN, ASC, VAL, INSTR, STRING$'s character, a relation, PRINT) gives its bytes
+        back when it is the last string made (BISTRS.ASM FRETMP moves FRETOP up over it),
+        so it leaves no garbage; ``last`` holds the last string made for that.  Each
+        maker's ``_u`` form is for a string used up as soon as it is made: it needs the
+        room (a collection where there is none) and leaves the count as it was."""
+        count, collect, temps = self.count, self.collect, self.temps
+        last = self.last
 
         def take(text: str) -> str:
             made = count[0] + len(text)
             count[0] = made
-            if made > count[1]:
+            if made > count[1]:  # (what it copies is a variable's or outside the space)
                 collect(len(text))
+            last[0] = text
             return text
 
-        def concat(a: str, b: str) -> str:
-            text = a + b
-            n = len(text)
-            if n > longest:
-                raise BasicError("String too long", STRING_TOO_LONG)
-            made = count[0] + n
-            count[0] = made
-            if made > count[1]:
-                collect(n)
+        def hold(text: str) -> str:
+            temps.append(text)
             return text
+
+        def free(value, held: int = 1):
+            del temps[-held:]
+            return value
+
+        def drop(text: str) -> str:
+            if text is last[0]:
+                count[0] -= len(text)
+                last[0] = None  # (the string made before it is not known: it stays)
+            return text
+
+        def release(value, held: int = 1):
+            for text in reversed(temps[-held:]):
+                drop(text)
+            del temps[-held:]
+            return value
+
+        def summing(lets_go: bool):
+            """``+`` (``lets_go``: its left side was held, and is let go)."""
+            def concat(a: str, b: str) -> str:
+                text = a + b
+                n = len(text)
+                if n > longest:
+                    raise BasicError("String too long", STRING_TOO_LONG)
+                made = count[0] + n
+                count[0] = made
+                if made > count[1]:
+                    collect(n, (a, b))
+                last[0] = text
+                if lets_go:
+                    temps.pop()
+                return text
+            return concat
 
         def taking(function):
             def made_by(*args):
@@ -111,10 +183,24 @@ class StringSpace:
                 made = count[0] + len(text)
                 count[0] = made
                 if made > count[1]:
-                    collect(len(text))
+                    collect(len(text), args)
+                last[0] = text
                 return text
             return made_by
 
+        def passing(function):
+            def made_and_used(*args):
+                text = function(*args)
+                n = len(text)
+                if count[0] + n > count[1]:  # the room is needed while it is used
+                    count[0] += n
+                    collect(n, args)
+                    count[0] -= n
+                return text
+            return made_and_used
+
         entries = {name: taking(namespace[name]) for name in MAKERS if name in namespace}
-        entries.update(_cat=concat, _scopy=take)
+        entries.update({f"{name}_u": passing(namespace[name]) for name in MAKERS if name in namespace})
+        entries.update(_cat=summing(False), _cath=summing(True), _cat_u=passing(namespace["_cat"]), _scopy=take, _hold=hold, _free=free,
+                       _drop=drop, _release=release)
         return entries

@@ -167,9 +167,9 @@ class Variables:
         number, 264 a string element: the most it can hold), whatever x is."""
         if self.dialect.free_memory is not None:
             free, strings = self.measure_memory({})
-            if type(argument) is str:
+            if type(argument) is str:  # (GARBA2 keeps the temporaries an operation works on)
                 self.string_space.reset()
-                return float(free)
+                return float(free - self.string_space.kept({}))
             return float(free - self.string_space.garbage(strings))
         return float(8 * (MAX_TOTAL_ELEMENTS - self.array_elements))
 
@@ -189,6 +189,19 @@ class Variables:
         scalars = self.scalars_with(block_locals)
         return memory_model.free_and_strings(self.dialect.free_memory, self.programs.get(0, {}), scalars,
                                              self.arrays, self.array_dims, self.fns)
+
+    def held_strings(self, block_locals: dict) -> set:
+        """The ids of the string objects the variables hold (``block_locals`` as in
+        :meth:`measure_memory`) and the literals of the compiled program (they stay in the
+        program text): an operation on one of them makes no temporary."""
+        held = {id(value) for value in self.scalars_with(block_locals).values() if type(value) is str}
+        for name, values in self.arrays.items():
+            if name.endswith("$"):
+                held.update(id(value) for value in memory_model.flat_strings(values))
+        for compiled in self.compiled.values():  # the literals: they stay in the program text
+            for block in compiled.blocks:
+                held.update(_literal_ids(block.__code__))
+        return held
 
     def swap_second(self, name: str, value) -> None:
         """SWAP's second variable, a simple one, holding ``value``: it must exist (BIMISC.ASM
@@ -220,8 +233,20 @@ class Variables:
         self.in_handler = False
         self.err = self.erl = 0.0
         self.string_space.reset()
+        self.string_space.temps.clear()
         self.made.clear()
         self.reset_def_types()
+
+
+def _literal_ids(code) -> list:
+    """The ids of the string constants of ``code`` and of the code inside it."""
+    ids = []
+    for constant in code.co_consts:
+        if type(constant) is str:
+            ids.append(id(constant))
+        elif hasattr(constant, "co_consts"):
+            ids.extend(_literal_ids(constant))
+    return ids
 
 
 def _check_clear_arguments(*sizes) -> None:
