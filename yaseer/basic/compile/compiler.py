@@ -117,6 +117,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.statement_types = statement_types  # DEF types switched as they run, even where fixed would do
         self.variables_made = dialect.variables_made  # SWAP's second variable must exist (see made)
         self.watched: frozenset = frozenset()  # the names whose making is recorded (see made)
+        self.read_commits = dialect.read_commits  # a READ ends with _read_end (Dialect.read_commits)
         self.numbers = number_model(dialect, def_types)
         # the binade caches' names differ between the variants run in one namespace (TRON, DEF types)
         salt = "t" if trace else ""

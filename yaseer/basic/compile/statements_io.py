@@ -215,6 +215,8 @@ class InputOutputCompiler:
             kind = "s" if self.kind_of(target) == "s" else self.numbers.widest
             self.assign(target, "_read_s()" if kind == "s" else "_read_n()", kind, scope,
                         self.numbers.typed and kind != "s")  # beyond the range: Overflow's policy
+        if self.read_commits:
+            self.emit("_read_end()")
 
     def stmt_Restore(self, stmt, scope):
         if stmt.target is not None and not isinstance(stmt.target, int):  # RESTORE (expression)

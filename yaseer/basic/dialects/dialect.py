@@ -93,9 +93,10 @@ FIELDS = (
     "tokenised_programs",  # bool: False
     "current_line_commands",  # tuple[str, ...]: ()
     "current_line_listed",  # bool: False
+    "read_commits",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
-            True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False)
+            True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -247,6 +248,11 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         run changes it only by an error or Break (GWLIST.ASM LIST, GWMAIN.ASM's error
         path), and ``.`` before any such line is line 0; False (casio): the line last run is
         the current one, and ``.`` before any is a Syntax error.
+        ``read_commits``: True when the DATA pointer moves only as a READ ends (GWMAIN.ASM
+        READ keeps it on the stack, BIMISC.ASM RESFIN stores DATPTR): a READ that fails
+        leaves it where that READ started, and a numeric variable is given the number at
+        the start of an item that is not one (0 if none) before the Syntax error in the
+        DATA line (DOASIG assigns, STRDN2 then finds no comma: TRMNOK, DATSNE).
         ``program_areas``: True when ``GOSUB PROG n`` is a statement (the
         library programs are bound at start); False in GW-BASIC, where PROG
         is no word: ``GOSUB PROG n`` is then a syntax error unless program
@@ -307,6 +313,7 @@ GW = Dialect(
     free_memory=60300, charset=CP437, tokenised_programs=True,
     current_line_commands=("LIST", "LLIST", "DELETE", "EDIT", "AUTO", "RENUM"), current_line_listed=True,
     variables_made=True,
+    read_commits=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

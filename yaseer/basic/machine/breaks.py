@@ -124,6 +124,7 @@ class Breaks:
                             dynamic_loops=forced)
         if old_runtime is not None:
             self.runtimes[0].data_index = old_runtime.data_index
+            self.runtimes[0].data_start = old_runtime.data_start
         self._renumber_blocks(_block_mapping(old, new))
         body = 0
         for index, key, value, limit, step in loops:

@@ -100,8 +100,12 @@ class _AreaRuntime:
         self.number = number
         self.compiled = compiled
         self.data_index = 0
+        self.data_start = 0  # where the READ running started (read_commits: GW's DATPTR)
+        self.failed: int | None = None  # read_commits: the DATA line of an item that was no number
 
     def read_item(self) -> tuple[str, int]:
+        if self.failed is not None:  # the READ stops at the variable given a bad item's number
+            self.read_end()
         data = self.compiled.data
         if self.data_index >= len(data):
             raise BasicError("Out of DATA", OUT_OF_DATA)
@@ -114,18 +118,39 @@ class _AreaRuntime:
         the DATA line, and the pointer stays on it (a READ of a string, in an error
         handler, reads it again, as GW-BASIC does)."""
         text, line = self.read_item()
+        dialect = self.machine.dialect
         try:
-            value = gwfunctions.number_field(text, self.machine.dialect.largest_number)
+            value = gwfunctions.number_field(text, dialect.largest_number)
         except BasicError as err:
             self.data_index -= 1
             raise err.at(line, self.number) from None
         if value is None:
+            if dialect.read_commits:  # the number at its start is assigned, then the error
+                if text.strip() in ("+", "-"):
+                    return 0.0  # (FIN reads a sign and no digits as 0: nothing is left)
+                self.failed = line
+                return gwfunctions.read_number(text, dialect.largest_number)[0]
             self.data_index -= 1
             words = self.machine.dialect.words
             if words is not None and words.read_mismatch:
                 raise BasicError("Type mismatch", TYPE_MISMATCH)  # the READ's error (casio: READ.md item 2)
             raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number)
         return value
+
+    def read_end(self) -> None:
+        """The end of a READ (read_commits): the DATA pointer is kept, or, after an item
+        that was no number, Syntax error in its DATA line."""
+        if self.failed is not None:
+            line, self.failed = self.failed, None
+            raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number)
+        self.data_start = self.data_index
+
+    def abandon(self) -> None:
+        """An error stopped the statement running (read_commits): a READ among it leaves
+        the DATA pointer where it started."""
+        if self.machine.dialect.read_commits:
+            self.data_index = self.data_start
+            self.failed = None
 
     def read_string(self) -> str:
         """The next DATA item as a string: a quoted item is the text between its quotes
@@ -152,10 +177,10 @@ class _AreaRuntime:
 
     def restore(self, line) -> None:
         if line is None:
-            self.data_index = 0
+            self.data_index = self.data_start = 0
             return
         later = [i for number, i in self.compiled.data_lines.items() if number >= line]
-        self.data_index = min(later) if later else len(self.compiled.data)
+        self.data_index = self.data_start = min(later) if later else len(self.compiled.data)
 
 
 _DEF_SUFFIX = {"INT": "%", "SNG": "!", "DBL": "#", "STR": "$"}
@@ -422,7 +447,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_on": self.on_index, "_for": self.for_push, "_next": self.next_frame,
             "_pop": self.stack.pop, "_next_any": self.next_any, "_stop": self._stopper(area),
             "_dim": self.dim, "_clear": self.clear, "_made": self.made, "_swap2": self.swap_second, "_read_n": rt.read_number,
-            "_read_s": rt.read_string, "_restore": rt.restore, "_restore_at": rt.restore_at,
+            "_read_s": rt.read_string, "_read_end": rt.read_end, "_restore": rt.restore, "_restore_at": rt.restore_at,
             "_input": self.input_values,
             "_fn": self.user_function, "_resume": self.resume, "_resume_at": self.resume_at,
             "_error_off": self.error_trapping_off, "_error": self.raise_error,

@@ -122,6 +122,8 @@ class ErrorTrapping:
         for stream in self.streams:
             stream.row = []
         self.string_space.temps.clear()  # the failed statement's temporaries are let go
+        for runtime in self.runtimes.values():
+            runtime.abandon()
         self.in_handler = True
         self.pending_error = err
         self.error_point = (area, block)

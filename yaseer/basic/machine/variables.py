@@ -228,7 +228,7 @@ class Variables:
         self.explicit_arrays.clear()
         self.fns.clear()
         for rt in self.runtimes.values():
-            rt.data_index = 0
+            rt.data_index = rt.data_start = 0
         self.on_error = None
         self.in_handler = False
         self.err = self.erl = 0.0
