@@ -102,6 +102,7 @@ class _AreaRuntime:
         self.data_index = 0
         self.data_start = 0  # where the READ running started (read_commits: GW's DATPTR)
         self.failed: int | None = None  # read_commits: the DATA line of an item that was no number
+        self.read_texts: dict[int, str] = {}  # gw: the string READ gave of each item (string_space.text)
 
     def read_item(self) -> tuple[str, int]:
         if self.failed is not None:  # the READ stops at the variable given a bad item's number
@@ -165,6 +166,10 @@ class _AreaRuntime:
             text = text[1:] if end < 0 else text[1:end]
         if len(text) > self.machine.dialect.string_length:
             raise BasicError("String too long", STRING_TOO_LONG).at(line, self.number)
+        if len(text) > 1 and self.machine.dialect.free_memory is not None:
+            # the string stays in the DATA text (LETCN6 copies none): one object an item
+            text = self.read_texts.setdefault(self.data_index, text)
+            self.machine.string_space.text[id(text)] = text
         return text
 
     def restore_at(self, value: float) -> None:
@@ -416,6 +421,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         try:
             if code is None:
                 code = compile(text, f"<BASIC area {area}>", "exec")
+            if self.dialect.free_memory is not None:
+                self.string_space.keep_text(code)
             exec(code, namespace)
             return code
         except SyntaxError as exc:

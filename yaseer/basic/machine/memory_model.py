@@ -19,8 +19,9 @@ variables, the arrays, and from the top down the strings; FRE is what lies betwe
 * a DEF FN: that header and 4 bytes, and 8 bytes a parameter (PC-BASIC 2.0.8's count);
 * an array: that header with its size (2), dimension count (1) and 2 bytes a dimension,
   then its elements;
-* the strings: every string value's characters (GW-BASIC keeps a string literal assigned
-  as it is in the program text, yaseer counts it too); FRE(0) also counts the garbage
+* the strings: every string value's characters but those that stay in the program text
+  (a literal assigned, a string READ from DATA, a copy of either: GW's LETCN6 copies none;
+  a literal of one character is counted, as Python shares it with made strings); FRE(0) also counts the garbage
   the strings made since the last collection left (machine/string_space.py), FRE("")
   collects it first.
 """
@@ -95,15 +96,17 @@ def free_bytes(total: int, program: dict, scalars: dict, arrays: dict, array_dim
 
 
 def free_and_strings(total: int, program: dict, scalars: dict, arrays: dict, array_dims: dict,
-                     fns: dict) -> tuple[int, int]:
-    """(:func:`free_bytes`, the bytes of those strings)."""
+                     fns: dict, text=()) -> tuple[int, int]:
+    """(:func:`free_bytes`, the bytes of those strings); a string whose id is in ``text``
+    stays in the program text (a literal's, DATA's) and takes no string space."""
     used = sum(line_bytes(text) for text in program.values())
     strings = 0
     for name, value in scalars.items():
         if type(value) is str:
             if value:
                 used += _name_bytes(name) + 3
-                strings += len(value)
+                if id(value) not in text:
+                    strings += len(value)
         elif value:
             used += _name_bytes(name) + _VALUE_BYTES.get(name[-1], 4)
     for name, (_, parameters) in fns.items():  # a DEF FN: its entry, and a variable a parameter
@@ -114,7 +117,7 @@ def free_and_strings(total: int, program: dict, scalars: dict, arrays: dict, arr
             elements *= size + 1
         used += _name_bytes(name) + 3 + 2 * len(dims) + elements * _VALUE_BYTES.get(name[-1], 4)
         if name.endswith("$"):
-            strings += sum(len(v) for v in flat_strings(arrays.get(name, ())))
+            strings += sum(len(v) for v in flat_strings(arrays.get(name, ())) if id(v) not in text)
     return total - used - strings, strings
 
 

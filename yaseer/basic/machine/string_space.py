@@ -69,9 +69,23 @@ class StringSpace:
         self.measure = measure
         self.held = held
         self.temps: list = []
+        self.text: dict = {}  # id -> string that stays in the program text (see keep_text)
         self.last: list = [None]  # the last string made (those used up at once are not)
         self.count = [0, -1]  # -1: count the free bytes at the next string
         self.base = None  # (strings held, count) at the last collection; None: none since a reset
+
+    def keep_text(self, code) -> None:
+        """Note the string literals of generated ``code`` (and of the code inside it): a
+        variable given one points into the program text and takes no string space (GW's
+        LETCN6 copies no literal), nor does a copy of such a variable.  (The dictionary
+        keeps each object, so its id is not used again.  A literal of one character is
+        left out: Python shares those with every made string of that character.)"""
+        for constant in code.co_consts:
+            if type(constant) is str:
+                if len(constant) > 1:
+                    self.text[id(constant)] = constant
+            elif hasattr(constant, "co_consts"):
+                self.keep_text(constant)
 
     def reset(self) -> None:
         """CLEAR, RUN, FRE(""): no garbage (the next string counts afresh)."""
@@ -95,11 +109,24 @@ class StringSpace:
             raise BasicError("Out of string space", OUT_OF_STRING_SPACE)
         count[0] += needed
 
+    def collected(self, free: int, strings: int, names: dict) -> int:
+        """A collection now (FRE(""), GWMAIN.ASM REASON) with ``free`` bytes free without
+        garbage and ``strings`` bytes held (``names``: the running block's locals): the
+        count starts again from here (the garbage later strings leave is counted from
+        it); the bytes free after it, less the temporaries it keeps."""
+        kept = self.kept(names)
+        self.count[1] = self.count[0] + free - kept
+        self.base = (strings + kept, self.count[0])
+        self.last[0] = None
+        return free - kept
+
     def kept(self, names: dict, operands: tuple = ()) -> int:
         """The bytes of the temporaries (and of ``operands``) a collection keeps: those in
         the string space, not a variable's own string (an operation works on that one in
-        place) nor a literal's (it stays in the program text)."""
-        temps = [text for text in (*self.temps, *operands) if type(text) is str and text]
+        place) nor a literal's (it stays in the program text).  An operand of one character
+        is taken for a literal (Python shares such strings: see keep_text)."""
+        temps = [text for text in self.temps if text]
+        temps += [text for text in operands if type(text) is str and len(text) > 1]
         if not temps:
             return 0
         held = self.held(names)
@@ -130,9 +157,11 @@ class StringSpace:
         maker's ``_u`` form is for a string used up as soon as it is made: it needs the
         room (a collection where there is none) and leaves the count as it was."""
         count, collect, temps = self.count, self.collect, self.temps
-        last = self.last
+        last, in_text = self.last, self.text
 
         def take(text: str) -> str:
+            if id(text) in in_text:  # a literal's or DATA's: it stays where it is
+                return text
             made = count[0] + len(text)
             count[0] = made
             if made > count[1]:  # (what it copies is a variable's or outside the space)

@@ -124,9 +124,10 @@ class Variables:
         """gw: do the arrays fit in the 64 KB segment with the program, the variables and the
         strings they hold?  Where the garbage of the string space is in the way it is
         collected first, whether or not the array then fits (GWMAIN.ASM REASON calls GARBAG)."""
-        free, strings = self.measure_memory(string_space.block_locals())
+        names = string_space.block_locals()
+        free, strings = self.measure_memory(names)
         if free - self.string_space.garbage(strings) < 0:
-            self.string_space.reset()
+            self.string_space.collected(free, strings, names)
         return free >= 0
 
     def erase(self, name: str) -> None:
@@ -168,8 +169,7 @@ class Variables:
         if self.dialect.free_memory is not None:
             free, strings = self.measure_memory({})
             if type(argument) is str:  # (GARBA2 keeps the temporaries an operation works on)
-                self.string_space.reset()
-                return float(free - self.string_space.kept({}))
+                return float(self.string_space.collected(free, strings, {}))
             return float(free - self.string_space.garbage(strings))
         return float(8 * (MAX_TOTAL_ELEMENTS - self.array_elements))
 
@@ -188,7 +188,7 @@ class Variables:
         ``block_locals`` (its scalars' Python locals, not yet stored back) over the scalars."""
         scalars = self.scalars_with(block_locals)
         return memory_model.free_and_strings(self.dialect.free_memory, self.programs.get(0, {}), scalars,
-                                             self.arrays, self.array_dims, self.fns)
+                                             self.arrays, self.array_dims, self.fns, self.string_space.text)
 
     def held_strings(self, block_locals: dict) -> set:
         """The ids of the string objects the variables hold (``block_locals`` as in
@@ -198,9 +198,7 @@ class Variables:
         for name, values in self.arrays.items():
             if name.endswith("$"):
                 held.update(id(value) for value in memory_model.flat_strings(values))
-        for compiled in self.compiled.values():  # the literals: they stay in the program text
-            for block in compiled.blocks:
-                held.update(_literal_ids(block.__code__))
+        held.update(self.string_space.text)  # the literals and DATA: they stay in the program text
         return held
 
     def swap_second(self, name: str, value) -> None:
@@ -236,17 +234,6 @@ class Variables:
         self.string_space.temps.clear()
         self.made.clear()
         self.reset_def_types()
-
-
-def _literal_ids(code) -> list:
-    """The ids of the string constants of ``code`` and of the code inside it."""
-    ids = []
-    for constant in code.co_consts:
-        if type(constant) is str:
-            ids.append(id(constant))
-        elif hasattr(constant, "co_consts"):
-            ids.extend(_literal_ids(constant))
-    return ids
 
 
 def _check_clear_arguments(*sizes) -> None:
