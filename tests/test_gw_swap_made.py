@@ -66,3 +66,48 @@ def test_direct_lines_make_variables_too(pc):
     pc.statement("CLEAR")
     for line in ("A=1: SWAP A,B", "B=0", "SWAP A,B: PRINT A;B", "CLEAR", "PRINT C: SWAP A,C", "SWAP A,C: PRINT A;C"):
         assert typed(session, shown, line) == pc.statement(line), line
+
+
+def _chaining_pair(rng: random.Random) -> tuple[str, str]:
+    """A first program that makes some variables (0 or "" among the values), names some
+    in COMMON and CHAINs (with ALL or not); a second that SWAPs each of them second."""
+    names = ["X", "Y", "Z$", "W"]
+    values = {"$": ['""', '"q"'], "": ["0", "1"]}
+    made = [f"{n} = {rng.choice(values['$' if n.endswith('$') else ''])}" for n in names if rng.random() < 0.6]
+    first = ["10 " + (": ".join(made) or "REM")]
+    common = [n for n in names if rng.random() < 0.5]
+    if common:
+        first.append(f"{rng.choice([5, 20])} COMMON " + ", ".join(common))
+    first.append('30 CHAIN "NEXT"' + (", , ALL" if rng.random() < 0.3 else ""))
+    second = ["10 ON ERROR GOTO 100"]
+    second += [f"{20 + k} SWAP {'A$' if n.endswith('$') else 'A'}, {n}" for k, n in enumerate(names)]
+    second += ['90 PRINT "done"; A; A$: END', '100 PRINT "E"; ERR; ERL: RESUME NEXT']
+    return "\n".join(sorted(first, key=lambda line: int(line.split()[0]))) + "\n", "\r\n".join(second) + "\r\n"
+
+
+def test_variables_a_chain_passes_on_made_stay_made_as_pcbasic(tmp_path):
+    """CHAIN passes COMMON's variables (with ALL every one) on as they are (FIVEO.ASM
+    CHAIN): one the first program made, with 0 or "" too, exists for the second program's
+    SWAP; one it named in COMMON but never made does not (PC-BASIC 2.0.8, which follows
+    the source).  The first program records those makings (compiler._watched_names)."""
+    from test_gw_files import pcbasic_run
+
+    rng = random.Random(base_seed() + 2405)
+    for k in range(case_count(30)):
+        first, second = _chaining_pair(rng)
+        theirs, ours = tmp_path / f"p{k}", tmp_path / f"y{k}"
+        for directory in (theirs, ours):
+            directory.mkdir()
+            (directory / "NEXT.BAS").write_text(second)
+        assert yaseer_run(first, ours) == pcbasic_run(first, theirs), (first, second)
+
+
+def test_field_makes_its_variables_as_pcbasic(tmp_path):
+    """FIELD's PTRGET makes each variable (a field of width 0 holds ""): SWAP may take it."""
+    from test_gw_files import pcbasic_run
+
+    source = ('10 ON ERROR GOTO 100: OPEN "R", 1, "F.DAT", 10: FIELD #1, 0 AS B$, 10 AS C$\n'
+              '20 SWAP A$, B$: PRINT "ok"; LEN(A$): END\n100 PRINT "E"; ERR; ERL: RESUME NEXT\n')
+    (tmp_path / "p").mkdir()
+    (tmp_path / "y").mkdir()
+    assert yaseer_run(source, tmp_path / "y") == pcbasic_run(source, tmp_path / "p") == "ok 0 \n"

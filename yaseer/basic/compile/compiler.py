@@ -775,9 +775,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         if not self.dynamic_types:
             self.numbers.set_types(statements)
         if self.variables_made:
-            self.watched = frozenset(self.numbers.name(s.second.name) for _, stmt in self.flat
-                                     if not isinstance(stmt, BasicError) for s in walk_statements(stmt)
-                                     if isinstance(s, ast.Swap) and isinstance(s.second, ast.Var))
+            self.watched = _watched_names(self.flat, self.numbers.name)
         for i, (number, stmt) in enumerate(self.flat):
             for s in ([] if isinstance(stmt, BasicError) else data_statements(stmt)):
                 self.data_lines.setdefault(number, len(self.data))
@@ -896,6 +894,28 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         return "\n".join(out) + "\n"
 
 
+
+
+class _EveryName:
+    """Every name (a program that CHAINs with ALL passes each variable it made on)."""
+
+    def __contains__(self, name) -> bool:
+        return True
+
+
+def _watched_names(flat, full_name):
+    """The simple variables whose making an area records (compiler.made): the second of a
+    SWAP (it must exist), and those a CHAIN passes on made to a program whose SWAP may ask
+    (COMMON's; with CHAIN ... ALL every one).  ``full_name``: a name with its type."""
+    statements = [s for _, stmt in flat if not isinstance(stmt, BasicError) for s in walk_statements(stmt)]
+    chains = [s for s in statements if isinstance(s, ast.Chain) and s.run]
+    if any(chain.everything for chain in chains):
+        return _EveryName()
+    names = {full_name(s.second.name) for s in statements if isinstance(s, ast.Swap) and isinstance(s.second, ast.Var)}
+    if chains:
+        names.update(full_name(name) for s in statements if isinstance(s, ast.Common)
+                     for name, is_array in s.names if not is_array)
+    return frozenset(names)
 
 
 def _array_loads(arrays: dict[str, int]) -> list[str]:

@@ -250,6 +250,7 @@ class InputOutputCompiler:
                         for width, target in stmt.fields)
         for _, target in stmt.fields:
             scope.scalar(target.name)  # known to the machine from the start
+            self.made(target)  # FIELD's PTRGET makes it (a SWAP may ask: compiler.made)
         number = self.new_temp()
         self.emit(f"{number} = ({self.numeric(stmt.number, scope)}, ({pairs}))")
         self.emit("#FLUSH#")  # FIELD stores the variables' slices in the machine's scalars

@@ -288,12 +288,16 @@ class Chaining:
                 raise error_for(UNDEFINED_LINE).at(self.line)
             block = self._line_block(chain.line)
         self._compiled(0)
+        # the variables passed on that the first program made (it recorded COMMON's or, with
+        # ALL, every making: compiler._watched_names), or that hold a value other than 0 or ""
+        made = {name for name, value in kept_scalars.items() if name in self.made or value}
         self.clear()
         self.stack.clear()
         self.on_error = None
         self.in_handler = False
         self.pending_error = None
         self.scalars.update(kept_scalars)
+        self.made.update(made)  # those passed on that exist stay made (a SWAP may ask)
         for name, (values, dims, explicit) in kept_arrays.items():
             self.arrays[name] = values
             if dims is not None:
