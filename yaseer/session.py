@@ -593,11 +593,16 @@ class Session:
         self._take_auto()
         self._take_edit()
 
+    def _taken(self, request: str):
+        """The engine's ``request`` (the machine's ``auto_request`` or ``edit_request``), once;
+        None if none (or an engine without a machine's requests)."""
+        take = getattr(self.engine, "take_request", None)
+        return take(request) if take is not None else None
+
     def _take_edit(self) -> None:
         """EDIT run by the program (casio, EDIT.md item 1): the edit mode showed the program from
         its line, and the session puts that line up for editing, as the typed EDIT does."""
-        take = getattr(self.engine, "take_edit", None)
-        number = take() if take is not None else None
+        number = self._taken("edit_request")
         if number is not None and number in self.program:
             self.current_line = number
             self.edit_text = self.listed(number)
@@ -605,8 +610,7 @@ class Session:
     def _take_auto(self) -> None:
         """AUTO run by the program or the direct line: the session numbers the lines typed
         next (the step left out after a comma: the one AUTO used last)."""
-        take = getattr(self.engine, "take_auto", None)
-        request = take() if take is not None else None
+        request = self._taken("auto_request")
         if request is not None:
             start, step = request
             self._auto_step = self._auto_step if step is None else step
@@ -769,19 +773,15 @@ class MachineEngine:
                 binding.install(machine)
         self._given = {area: dict(lines) for area, lines in machine.programs.items()}
 
-    def take_auto(self) -> tuple[int, int | None] | None:
-        """The AUTO a program or direct line ran (start, step or None), once; None if none."""
+    def take_request(self, request: str):
+        """The machine's ``request``, once (None if none): ``auto_request``, the AUTO a program
+        or direct line ran (start, step or None); ``edit_request``, the line a program's EDIT
+        put up for editing."""
         if self._machine is None:
             return None
-        request, self._machine.auto_request = self._machine.auto_request, None
-        return request
-
-    def take_edit(self) -> int | None:
-        """The line a program's EDIT put up for editing, once; None if none."""
-        if self._machine is None:
-            return None
-        number, self._machine.edit_request = self._machine.edit_request, None
-        return number
+        value = getattr(self._machine, request)
+        setattr(self._machine, request, None)
+        return value
 
     def changed_programs(self) -> dict[int, Program]:
         """The areas whose lines the machine changed since the session gave them (a

@@ -132,7 +132,7 @@ class _AreaRuntime:
                 self.failed = line
                 return gwfunctions.read_number(text, dialect.largest_number)[0]
             self.data_index -= 1
-            words = self.machine.dialect.words
+            words = dialect.words
             if words is not None and words.read_mismatch:
                 raise BasicError("Type mismatch", TYPE_MISMATCH)  # the READ's error (casio: READ.md item 2)
             raise BasicError("Syntax error", SYNTAX_ERROR).at(line, self.number)

@@ -149,7 +149,7 @@ class StringSpace:
     def helpers(self, namespace: dict, longest: int) -> dict:
         """Namespace entries that take each new string from the space: ``_cat`` (``+``, at
         most ``longest`` characters), ``_scopy`` (another variable's string copied) and the
-        :data:`MAKERS` of ``namespace` wrapped; ``_hold``/``_free`` (see the class) and
+        :data:`MAKERS` of ``namespace`` wrapped; ``_hold``/``_free`` (see the class) and
         ``_drop``/``_release``: a temporary used up by a function that makes no string from
         it (LEN, ASC, VAL, INSTR, STRING$'s character, a relation, PRINT) gives its bytes
         back when it is the last string made (BISTRS.ASM FRETMP moves FRETOP up over it),
