@@ -51,7 +51,8 @@ OWN_ERROR = {"LIB0900": "Syntax error in 220"}
 # ROM, the printer, the RS-232C port and the cassette, which yaseer does not have); run for
 # ENDLESS_SECONDS and counted apart.
 ENDLESS = {"LIB0400"}
-ENDLESS_SECONDS = 5
+# (5 s was too short on a loaded machine: at a load of 7 the first screen came later.)
+ENDLESS_SECONDS = 15
 
 
 def library() -> Path | None:
