@@ -113,6 +113,26 @@ def test_gosub():  # GOSUB.md items 1, 3: nested subroutines; a missing line is 
     assert error_of("10 GOSUB 500") == "Undefined line number 500 in 10"
 
 
+def test_gosub_to_a_program_area_is_a_level(tmp_path):  # GOSUB.md: GOSUB #n; item 2's 96 levels
+    for levels, error in ((96, None), (97, "Out of memory in 10 (PROG 1)")):
+        area = tmp_path / f"deep{levels}.bas"
+        area.write_text(f"10 N=N+1: IF N<{levels} THEN GOSUB #1\n20 RETURN\n")
+        result = run("10 GOSUB #1: PRINT N", prog={1: str(area)})
+        assert (result.error, result.text) == (error, " 96 \n" if error is None else "")
+
+
+def test_gosub_nests_96_levels():  # GOSUB.md item 2: up to 96 levels; beyond, the OM error (code 1)
+    def deep(levels: int, **options):
+        return run(f'10 GOSUB 20: PRINT "BACK"; N: END\n20 N=N+1: IF N<{levels} THEN GOSUB 20\n30 RETURN', **options)
+    assert (deep(96).text, deep(96).error) == ("BACK 96 \n", None)
+    assert deep(97).error == "Out of memory in 20"  # was BACK 97
+    assert deep(97, dialect="gw").text == "BACK 97 \n"  # GW-BASIC's stack holds more
+    assert run("10 ON ERROR GOTO 40\n20 GOSUB 30\n30 ON 1 GOSUB 30\n40 PRINT ERR; N: END").text == " 1  0 \n"
+    # a subroutine that only returns, called at the 96th level, is the 97th
+    assert run("10 GOSUB 20: END\n20 N=N+1: IF N<96 THEN GOSUB 20: RETURN\n30 GOSUB 90: RETURN\n90 RETURN").error == \
+        "Out of memory in 30"
+
+
 def test_return():  # RETURN.md items 1-2: back after the GOSUB; without one the GS error (code 25)
     assert run_text('10 GOSUB 30: PRINT "BACK": END\n30 PRINT "SUB";: RETURN\n') == "SUBBACK\n"
     assert error_of("10 RETURN") == "RETURN without GOSUB in 10"

@@ -85,6 +85,7 @@ class _NoWords:
     edit_lists_from = False
     password_refuses = ()
     read_mismatch = output_eof = False
+    gosub_levels = None
     computed_restore = empty_on_targets = truncates = asks_each = False
     command_options = {"LOAD": "R", "SAVE": "AP", "RUN": "R"}  # GW-BASIC's LOAD ,R; SAVE ,A ,P; RUN ,R
 
@@ -130,6 +131,10 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.late_errors = dialect.errors_when_reached  # a DEF FN body's errors when it is called
         self.names_missing_line = dialect.names_missing_line
         self.words = dialect.words or NO_WORDS  # the dialect's own words (dialects/casio.py)
+        # the test of a full stack before a GOSUB: the stack's length, or (a dialect that counts
+        # GOSUB levels: casio, GOSUB.md item 2) its GOSUB entries once the stack is that long
+        levels = self.words.gosub_levels
+        self.stack_full = f"len(_stk) >= {MAX_STACK}" if levels is None else f"len(_stk) >= {levels} and _deep()"
         self.string_length = dialect.string_length  # the longest literal (characters)
         self.counts_strings = dialect.free_memory is not None  # strings take room (string_space.py)
         self.strings_in_area = self.words.variable_area is not None  # casio: a stored string takes room (_sroom)
@@ -299,7 +304,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         target = self.jump(stmt.target)
         block, indent = self.cur, self.indent
         ret = self.continuation()
-        block.code.append((indent, f"if len(_stk) >= {MAX_STACK}: _oom()"))
+        block.code.append((indent, f"if {self.stack_full}: _oom()"))
         block.code.append((indent, f"_stk.append({ret})"))
         block.code.append((indent, target))
 
@@ -828,7 +833,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         # ends its block, so unless the block pops (a NEXT through the stack), clears
         # or calls out, the stack's length cannot change while the block runs: it is
         # measured once, as the block starts.
-        full_check = f"if len(_stk) >= {MAX_STACK}: _oom()"
+        full_check = f"if {self.stack_full}: _oom()"
         if any(text == "#FULL#" for _, text in block.code) and not any(
                 name in text for _, text in block.code for name in _STACK_CHANGES):
             full_check = "if _full: _oom()"
@@ -839,7 +844,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         out += ["    " + text for text in load_arrays]
         out.append("    _ln = None")
         if full_check == "if _full: _oom()":
-            out.append(f"    _full = len(_stk) >= {MAX_STACK}")
+            out.append(f"    _full = {self.stack_full}")
         out.append("    try:")
         if self_loop:
             out.append("        while True:")

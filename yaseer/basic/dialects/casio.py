@@ -159,6 +159,9 @@ PASSWORD_REFUSES = ("LIST", "LLIST", "EDIT", "NEW", "SAVE")
 # READ of an item that is no number into a numeric variable: the TM error of the READ's line
 # (READ.md item 2), not GW-BASIC's Syntax error in the DATA line.
 READ_MISMATCH = True
+# GOSUB levels (GOSUB.md item 2: up to 96, beyond that the OM error); a GOSUB to a program
+# area (#n, PROG n, "file:label") is a level too.
+GOSUB_LEVELS = 96
 # EOF of a file opened FOR OUTPUT is 0 (EOF.md item 4), not GW-BASIC's Bad file mode.
 OUTPUT_EOF = True
 COMMAND_OPTIONS = {"LOAD": "A", "SAVE": "A", "RUN": ""}  # ,A: the ASCII format (yaseer's only one)
@@ -227,6 +230,7 @@ class Words:
     password_refuses = PASSWORD_REFUSES
     read_mismatch = READ_MISMATCH
     output_eof = OUTPUT_EOF
+    gosub_levels = GOSUB_LEVELS
     current_line_period = CURRENT_LINE_PERIOD
     edit_lists_from = EDIT_LISTS_FROM
     command_options = COMMAND_OPTIONS

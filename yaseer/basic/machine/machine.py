@@ -287,6 +287,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         words = self.dialect.words
         self.files = FileTable(Sandbox(files), self.dialect.file_devices, words.absent_devices if words else None)
         self._output_eof = bool(words and words.output_eof)  # casio: EOF of an output file is 0 (EOF.md item 4)
+        self.gosub_levels = words.gosub_levels if words else None  # casio: 96 (GOSUB.md item 2)
         # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
         # ``yaseer run`` stops at once): see _on_interrupt.
         self.resumable_breaks = False
@@ -449,7 +450,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_wh": self.while_loops, "_END": END, "_DirectJump": DirectJump,
             "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
             "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,
-            "_oom": self._out_of_memory, "_call": self.call_area, "_call_file": self.call_file,
+            "_oom": self._out_of_memory, "_deep": self.gosubs_full, "_call": self.call_area, "_call_file": self.call_file,
             "_bank": self.data_bank,
             "_on": self.on_index, "_for": self.for_push, "_next": self.next_frame,
             "_pop": self.stack.pop, "_next_any": self.next_any, "_stop": self._stopper(area),
@@ -720,7 +721,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         """Run BASIC program area ``n`` until its RETURN (its own line numbers, shared variables)."""
         if n not in self.programs:
             raise BasicError(f"Undefined program area {n}", UNDEFINED_PROGRAM_AREA)
-        if self.area_depth >= MAX_AREA_DEPTH:
+        levels = self.gosub_levels
+        if self.area_depth >= MAX_AREA_DEPTH or (levels is not None and len(self.stack) >= levels and self.gosubs_full()):
             raise BasicError("Out of memory", OUT_OF_MEMORY)
         compiled = self._compiled(n)
         mark = len(self.stack)

@@ -49,9 +49,15 @@ class ControlStack:
 
     def gosub(self, return_block: int) -> None:
         """GOSUB: remember the block to come back to (the generated code inlines this)."""
-        if len(self.stack) >= MAX_STACK:
+        levels = self.gosub_levels
+        if len(self.stack) >= MAX_STACK or (levels is not None and len(self.stack) >= levels and self.gosubs_full()):
             raise BasicError("Out of memory", OUT_OF_MEMORY)
         self.stack.append(return_block)
+
+    def gosubs_full(self) -> bool:
+        """Does the stack hold the dialect's GOSUB levels already (casio: 96, GOSUB.md item 2)?
+        A return block and a program area's mark are a level each; FOR loops are none."""
+        return sum(1 for entry in self.stack if type(entry) is int or entry is AREA_MARK) >= self.gosub_levels
 
     def gosub_return(self) -> int:
         """RETURN: the block to go back to (-2 ends a BASIC area); FOR loops opened since the GOSUB close."""
