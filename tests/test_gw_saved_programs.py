@@ -217,3 +217,54 @@ def test_a_period_beside_digits_is_no_line(tmp_path):
     session, shown = gw_session(tmp_path)
     assert typed(session, shown, ["NEW", "10 PRINT 1", "LIST 1.5", "DELETE .5"]) == "Syntax error\nSyntax error\n"
     assert typed(session, shown, ["NEW", "LIST ."]) == ""  # DOT before any line: line 0, none here
+
+
+DIRECT_FILE = b"10 PRINT 1\r\n20 PRINT 2\r\nPRINT 3\r\n30 PRINT 4\r\n"
+
+
+def test_the_session_s_load_stops_at_a_line_without_number(pc, tmp_path):
+    """GIO86.ASM DIRDO: an ASCII file's line without a number is ``Direct statement in file``;
+    the lines before it are the program and the last of them the current line (GWMAIN.ASM
+    keeps each line entered in DOT).  The session's LOAD joined the line onto line 20."""
+    pc_session, pc_directory = pc
+    (pc_directory / "DIRECT.BAS").write_bytes(DIRECT_FILE)
+    (tmp_path / "DIRECT.BAS").write_bytes(DIRECT_FILE)
+    session, shown = gw_session(tmp_path)
+    for step in ["NEW", 'LOAD "DIRECT"', "LIST", "LIST .", "NEW", 'RUN "DIRECT"', "LIST"]:
+        assert typed(session, shown, [step]) == clean_output(pc_session.execute(step)), step
+
+
+@pytest.mark.parametrize("command", ['LOAD "DIRECT"', 'CHAIN "DIRECT"', 'LOAD "DIRECT",R'])
+def test_a_program_s_load_stops_at_a_line_without_number(pc, tmp_path, command):
+    """LOAD and CHAIN in a program: the lines before the line without a number replace the
+    program, and ``Direct statement in file`` ends the run (the old program's ON ERROR went
+    with it), as PC-BASIC 2.0.8 does; before, yaseer trapped it and kept the old program."""
+    pc_session, pc_directory = pc
+    (pc_directory / "DIRECT.BAS").write_bytes(DIRECT_FILE)
+    (tmp_path / "DIRECT.BAS").write_bytes(DIRECT_FILE)
+    session, shown = gw_session(tmp_path)
+    steps = ["NEW", "5 ON ERROR GOTO 100", '7 PRINT "A"', f"8 {command}", '9 PRINT "B"',
+             '100 PRINT "TRAP";ERR: END', "RUN", "LIST", "LIST ."]
+    for step in steps:
+        assert typed(session, shown, [step]) == clean_output(pc_session.execute(step)), step
+
+
+def test_run_file_and_merge_stop_at_a_line_without_number(tmp_path):
+    """RUN "f" reads the file as LOAD does (DIRDO's error: PC-BASIC 2.0.8 says Undefined line
+    number here, the source decides); MERGE enters the lines before it into the program."""
+    (tmp_path / "DIRECT.BAS").write_bytes(DIRECT_FILE)
+    session, shown = gw_session(tmp_path)
+    assert typed(session, shown, ["NEW", '10 PRINT "A"', '15 RUN "DIRECT"', "RUN", "LIST"]) == \
+        "A\nDirect statement in file\n10 PRINT 1\n20 PRINT 2\n"
+    typed(session, shown, ["NEW", '5 PRINT "A"', '15 MERGE "DIRECT"', "RUN"])
+    assert typed(session, shown, ["LIST"]) == '5 PRINT "A"\n10 PRINT 1\n15 MERGE "DIRECT"\n20 PRINT 2\n'
+
+
+def test_the_api_and_yaseer_run_stop_at_a_line_without_number(tmp_path):
+    (tmp_path / "DIRECT.BAS").write_bytes(DIRECT_FILE)
+    for listing in (tmp_path / "DIRECT.BAS", DIRECT_FILE):
+        result = yaseer.run(listing, dialect="gw")
+        assert (result.text, result.error) == ("", "Direct statement in file")
+    done = subprocess.run([sys.executable, "-m", "yaseer", "--dialect", "gw", "run", "DIRECT.BAS"],
+                          capture_output=True, cwd=tmp_path, timeout=60)
+    assert (done.stdout, done.stderr, done.returncode) == (b"", b"Direct statement in file\n", 1)

@@ -37,7 +37,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable
+from typing import Callable, NamedTuple
 
 from yaseer.basic.source.scanner import entry_messages
 from yaseer.basic.errors import (
@@ -157,22 +157,39 @@ def read_listing_file(name: str, directory: Path, dialect=None) -> Program:
     """LOAD: the program in file ``name`` (``.bas`` is tried if ``name`` has no suffix),
     inside ``directory`` only (yaseer.basic.machine.files.Sandbox: a name that leads out of it is
     ``Path/File access error``), as the ``dialect``'s character set shows it
-    (program_file.program_text), its lines' blanks kept as the dialect keeps them."""
-    return read_program_file(name, directory, dialect)[0]
+    (program_file.program_text), read as the dialect's LOAD reads it (scanner.program_lines).
+    A line without a number raises the ``Direct statement in file`` that stopped the reading."""
+    program, _, stopped, _ = read_program_file(name, directory, dialect)
+    if stopped is not None:
+        raise stopped
+    return program
 
 
-def read_program_file(name: str, directory: Path, dialect=None) -> tuple[Program, bool]:
-    """:func:`read_listing_file`'s program, and whether the file was SAVEd protected (,P)."""
+class ProgramFile(NamedTuple):
+    """A program file as LOAD reads it (:func:`read_program_file`)."""
+
+    program: Program  # the lines before a line without a number, where the dialect stops there
+    protected: bool  # SAVEd with ,P
+    stopped: BasicError | None  # the ``Direct statement in file`` that stopped the reading
+    typed: bool  # an ASCII file, whose lines are entered as typed ones (GW's DOT: the last)
+
+
+def read_program_file(name: str, directory: Path, dialect=None) -> ProgramFile:
+    """:func:`read_listing_file`'s program, and what else LOAD learns from the file."""
+    from yaseer.basic.dialects.dialect import CASIO
     from yaseer.basic.machine.program_file import is_protected, program_text
     from yaseer.basic.machine.sandbox import Sandbox
+    from yaseer.basic.source.scanner import program_lines
 
     sandbox = Sandbox(directory)
     if not sandbox.exists(sandbox.dos_name(name)) and "." not in name.replace("\\", "/").rsplit("/", 1)[-1]:
         name += ".bas"
     data = sandbox.read_bytes(sandbox.dos_name(name))  # DOS ignores case: a program's SAVE "f" wrote F.BAS
-    if dialect is None:
-        return parse_listing(program_text(data)), is_protected(data)
-    return parse_listing(program_text(data, dialect.charset), dialect.tokenised_programs), is_protected(data)
+    dialect = dialect or CASIO
+    program, stopped = program_lines(program_text(data, dialect.charset), dialect)
+    if any(number > MAX_LINE_NUMBER for number in program):
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+    return ProgramFile(program, is_protected(data), stopped, data[:1] not in (b"\xfe", b"\xff"))
 
 
 def file_and_option(text: str) -> tuple[str, str]:
@@ -475,10 +492,19 @@ class Session:
     def command_load(self, argument: str) -> None:
         """LOAD "file": replace the current area's program with the file's."""
         name = file_name_argument(argument)
-        self.programs[self.area], protected = read_program_file(name, self.directory, self._dialect())
-        self._mark_protected(self.area, protected)
-        self._show_entry_messages(self.program)
+        self._read_program(self.area, name)
         self._can_continue = False
+
+    def _read_program(self, area: int, name: str) -> None:
+        """LOAD's and RUN "file"'s reading: area ``area`` holds file ``name``'s program (the
+        lines before a line without a number, whose error is raised after them)."""
+        self.programs[area], protected, stopped, typed = read_program_file(name, self.directory, self._dialect())
+        self._mark_protected(area, protected)
+        self._show_entry_messages(self.programs[area])
+        if typed and self.programs[area] and self._dialect().current_line_listed:
+            self.current_line = next(reversed(self.programs[area]))  # entered as typed: GW's DOT
+        if stopped is not None:
+            raise stopped
 
     def _mark_protected(self, area: int, protected: bool) -> None:
         if protected:
@@ -517,10 +543,8 @@ class Session:
         ``RUN "file"`` loads the file into PROG 0 first (whatever area is being edited).
         """
         if argument.startswith('"'):
-            name = file_name_argument(argument)
-            self.programs[0], protected = read_program_file(name, self.directory, self._dialect())
-            self._mark_protected(0, protected)
-            self._show_entry_messages(self.programs[0])
+            self._can_continue = False
+            self._read_program(0, file_name_argument(argument))
             argument = ""
         if argument and not argument.isdigit():
             raise BasicError("Syntax error", SYNTAX_ERROR)

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from yaseer.basic.machine.files import read_program
 from yaseer.basic.errors import (
-    BAD_FILE_MODE, ILLEGAL_DIRECT, ILLEGAL_FUNCTION_CALL, UNDEFINED_LINE, error_for, password_protected,
+    BAD_FILE_MODE, BasicError, ILLEGAL_DIRECT, ILLEGAL_FUNCTION_CALL, UNDEFINED_LINE, error_for, password_protected,
 )
 from yaseer.basic.machine.signals import ProgramEnd
 
@@ -34,10 +34,12 @@ if TYPE_CHECKING:
 class ChainTo(ProgramEnd):
     """The program is being replaced (CHAIN) or merged into (MERGE): what to do next."""
 
-    def __init__(self, lines: dict, merge: bool, line, everything: bool, delete, run: bool):
+    def __init__(self, lines: dict, merge: bool, line, everything: bool, delete, run: bool,
+                 stopped: BasicError | None = None):
         super().__init__()
         self.lines, self.merge, self.line = lines, merge, line
         self.everything, self.delete, self.run = everything, delete, run
+        self.stopped = stopped  # the file's ``Direct statement in file``: raised once the lines are in
 
 
 class RunAgain(ProgramEnd):
@@ -53,11 +55,14 @@ class RunAgain(ProgramEnd):
 class Chaining:
     """CHAIN and MERGE on the machine's programs and variables (a mixin of ``Machine``)."""
 
-    def _program_lines(self, name: str, merge: bool = False) -> dict[int, str]:
+    def _program_lines(self, name: str, merge: bool = False) -> tuple[dict[int, str], BasicError | None]:
         """The lines of program file ``name`` (``.BAS`` added to a name without ``.``), read
-        as LOAD reads it; MERGE reads ASCII files only (``Bad file mode``)."""
+        as LOAD reads it (scanner.program_lines), and the ``Direct statement in file`` that
+        stopped the reading (None if none: the lines before it are the program's); MERGE reads
+        ASCII files only (``Bad file mode``).  An ASCII file's lines are entered as typed ones:
+        the last is the current line (``_entered``)."""
         from yaseer.basic.machine.program_file import TOKENISED, is_protected, program_text
-        from yaseer.basic.source.scanner import split_lines
+        from yaseer.basic.source.scanner import program_lines
 
         data = read_program(self.files.sandbox, self._program_name(name))
         if merge and data[:1] >= bytes((TOKENISED - 1,)):
@@ -66,9 +71,10 @@ class Chaining:
         text = charset.codes(program_text(data, charset))  # as shown, then in the machine's codes
         if not merge:
             self.program_protected = is_protected(data)
-        dialect = self.dialect
-        return {number: line for number, line, _ in
-                split_lines(text, dialect.joins_unnumbered_lines, dialect.tokenised_programs)}
+        lines, stopped = program_lines(text, self.dialect)
+        if data[:1] < bytes((TOKENISED - 1,)):
+            self._entered(lines)
+        return lines, stopped
 
     def program_command(self, name: str, argument, option, everything: bool = False) -> None:
         """A command run by a program (GW-BASIC runs them and, but for RUN, returns to
@@ -91,16 +97,16 @@ class Chaining:
             return
         if name == "AUTO":
             self._auto_mode(*argument)
+        if name in ("RUN", "LOAD") and isinstance(argument, str):
+            lines, stopped = self._program_lines(argument)
+            if stopped is not None:  # the lines before it are the program; nothing runs
+                raise ChainTo(lines, False, None, True, None, False, stopped)
+            if name == "RUN" or option == "R":
+                raise RunAgain(lines, None, name == "LOAD" or option == "R")
+            raise ChainTo(lines, False, None, True, None, False)
         if name == "RUN":
-            if isinstance(argument, str):
-                raise RunAgain(self._program_lines(argument), None, option == "R")
             raise RunAgain(None, argument, False)
         program = self.programs.get(0, {})
-        if name == "LOAD":
-            lines = self._program_lines(argument)
-            if option == "R":
-                raise RunAgain(lines, None, True)
-            raise ChainTo(lines, False, None, True, None, False)
         if self.program_protected and (name in ("LIST", "LLIST", "EDIT") or (name == "SAVE" and option != "P")):
             raise error_for(ILLEGAL_FUNCTION_CALL)  # GIODSK.ASM PROCHK: a protected program is not shown
         if name in ("LIST", "LLIST"):
@@ -234,12 +240,12 @@ class Chaining:
     def chain(self, name: str, merge: bool, line, everything: bool, delete, run: bool = True) -> None:
         """CHAIN / MERGE as the statement runs: the file is read (its errors are this
         statement's) and the range checked, then :class:`ChainTo` ends the block."""
-        lines = self._program_lines(name, merge)
+        lines, stopped = self._program_lines(name, merge)
         if line is not None:
             line = self._chain_line(line)
         if delete is not None:
             self._check_range(delete)
-        raise ChainTo(lines, merge, line, everything, delete, run)
+        raise ChainTo(lines, merge, line, everything, delete, run and stopped is None, stopped)
 
     @staticmethod
     def _chain_line(line) -> int:
@@ -275,6 +281,10 @@ class Chaining:
         self.programs[0] = program
         self._invalidate(0)
         self._extra_entries.clear()
+        if chain.stopped is not None:
+            if not chain.merge:
+                self.on_error = None  # the old program's handler went with it
+            raise chain.stopped
         if not chain.run:
             return None
         kept_scalars = {k: v for k, v in self.scalars.items() if keep is None or k in keep}

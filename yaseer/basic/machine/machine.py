@@ -73,7 +73,7 @@ from yaseer.basic.machine.stack import AREA_MARK, ControlStack, ForFrame  # noqa
 from yaseer.basic.machine.variables import (  # noqa: F401  (the array limits are re-exported)
     MAX_ARRAY_ELEMENTS, MAX_TOTAL_ELEMENTS, Variables, _check_clear_arguments,
 )
-from yaseer.basic.source.scanner import DirectStatementInFile, entry_messages, split_lines
+from yaseer.basic.source.scanner import entry_messages, program_lines
 from yaseer.basic.machine.screen import OutputStream
 
 TYPE_CHECKING = False
@@ -279,6 +279,10 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.program_protected = False
         self.auto_request = None  # gw: AUTO run by a program: (start, step or None) for the session
         self.edit_request = None  # casio: the line a program's EDIT put up for editing, for the session
+        # gw: GW's DOT, the line ``.`` stands for in LIST, LLIST, DELETE, EDIT, AUTO and RENUM
+        # (GWMAIN.ASM LINSPC): the line last entered, listed or edited, or where an error
+        # stopped or was trapped (``Dialect.current_line_listed``); the session hands it over
+        self.current_line = 0
         self._direct_line = None  # (compiled, program, namespace) of a direct line whose DEFs switch it
         # gw: the simple variables a statement made (recorded only where a SWAP may ask: compiler.made)
         self.made: set[str] = set()
@@ -307,25 +311,23 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         A listing over :data:`MAX_LISTING_CHARACTERS` is Out of memory before it is parsed."""
         if len(text) > MAX_LISTING_CHARACTERS:
             raise BasicError("Out of memory", OUT_OF_MEMORY)
-        program: dict[int, str] = {}
         text = self.dialect.charset.codes(text)  # symbols typed or read (a UTF-8 file's) as the machine's codes
-        stopped = None
-        try:
-            lines = split_lines(text, self.dialect.joins_unnumbered_lines, self.dialect.tokenised_programs)
-        except DirectStatementInFile as error:  # the lines before it are loaded
-            lines, stopped = error.lines, error
-        for number, statement_text, _ in lines:
-            if statement_text:
-                program[number] = statement_text
-                if entered:
-                    self.show_messages(entry_messages(statement_text, self.dialect))
-            else:
-                program.pop(number, None)
+        program, stopped = program_lines(text, self.dialect)  # a line without a number: the lines before it load
+        if entered:
+            for statement_text in program.values():
+                self.show_messages(entry_messages(statement_text, self.dialect))
+            self._entered(program)
         self.programs[area] = program
         self.python_areas.pop(area, None)
         self._invalidate(area)
         if stopped is not None:
             raise stopped
+
+    def _entered(self, program: dict[int, str]) -> None:
+        """Lines read in as if typed (an ASCII file's LOAD goes through GWMAIN.ASM's line
+        entry, which keeps each line's number in DOT): the current line is the last read."""
+        if program and self.dialect.current_line_listed:
+            self.current_line = next(reversed(program))
 
     def set_line(self, number: int, text: str, area: int = 0) -> None:
         """Enter (or, with empty text, delete) one program line, as typed."""

@@ -787,3 +787,24 @@ def split_lines(source: str, joins_unnumbered: bool = True, keeps_blanks: bool =
         else:
             raise BasicError(f"Syntax error (no line number: {physical.strip()[:30]!r})", SYNTAX_ERROR)
     return lines
+
+
+def program_lines(text: str, dialect: Dialect = CASIO) -> tuple[dict[int, str], DirectStatementInFile | None]:
+    """A program file's text as the ``dialect``'s LOAD reads it (the one reader of program
+    text: LOAD, RUN "f", CHAIN and MERGE in a program, the session's LOAD, the API and
+    ``yaseer run``): line number -> text in the order the lines were read, a later line of a
+    number replacing an earlier one and a line of blanks deleting it (:func:`split_lines`, with the dialect's
+    ``joins_unnumbered_lines`` and ``tokenised_programs``); and the
+    :class:`DirectStatementInFile` that stopped the reading at a line without a number
+    (GIO86.ASM DIRDO: the lines before it are loaded), None if none."""
+    stopped = None
+    try:
+        lines = split_lines(text, dialect.joins_unnumbered_lines, dialect.tokenised_programs)
+    except DirectStatementInFile as error:
+        lines, stopped = error.lines, error
+    program: dict[int, str] = {}
+    for number, statement_text, _ in lines:
+        program.pop(number, None)  # the dict's order is the order the lines were read in
+        if statement_text:
+            program[number] = statement_text
+    return program, stopped
