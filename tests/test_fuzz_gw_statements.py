@@ -2,7 +2,7 @@
 CLS, KEY, SCREEN, VIEW PRINT, WIDTH, CSRLIN, POS, SCREEN(), INKEY$, PRINT of control
 codes, FRE, RETURN's forms, DEF FN bodies, bad IF branches, MID$ onto itself, WHILE,
 RANDOMIZE, LPOS, PRINT USING, DEFINT/DEFSTR run as statements, CLEAR, blanks inside
-numbers, filling the string space, RENUM, with arguments in and out of range,
+numbers, filling the string space, RENUM, ``.`` as the current line, with arguments in and out of range,
 left out or of the wrong type.  Each program ends normally or with a BASIC error line
 naming its line (never a Python exception), and writes nothing in its directory.
 
@@ -53,6 +53,9 @@ def statement(data) -> str:
         f"DIM S$(300): FOR K = 0 TO 300: S$(K) = SPACE$({a}): NEXT", f'T$ = STRING$({a}, "T") + T$',
         'PRINT FRE(0); FRE(""); FRE(X)', "ERASE S$",
         f"RENUM {a}, , {b}", f"RENUM , {a}", "RENUM",
+        # "." as the current line (GW's DOT) where a line number may stand, and where it may not
+        "LIST .", "LIST 10-.", "LLIST .-", f"DELETE .-{a}", "DELETE .", "EDIT .", f"AUTO ., {a}", "AUTO .",
+        f"RENUM {a}, .", "RENUM ., ., .", "LIST .5", "LIST . - .", 'CHAIN "NONE", , DELETE .-', "GOTO .",
     ]
     return data.draw(st.sampled_from(choices))
 

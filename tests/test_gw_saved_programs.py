@@ -268,3 +268,61 @@ def test_the_api_and_yaseer_run_stop_at_a_line_without_number(tmp_path):
     done = subprocess.run([sys.executable, "-m", "yaseer", "--dialect", "gw", "run", "DIRECT.BAS"],
                           capture_output=True, cwd=tmp_path, timeout=60)
     assert (done.stdout, done.stderr, done.returncode) == (b"", b"Direct statement in file\n", 1)
+
+
+@pytest.mark.parametrize("steps", [
+    ["10 PRINT 1", "20 LIST .", "30 PRINT 3", "RUN", "LIST 10", "RUN", "LIST ."],
+    ["10 LIST 20", "20 LIST .", "30 PRINT 3", "RUN", "LIST ."],
+    ["10 PRINT 1", "20 LIST 10-.", "30 PRINT 3", "LIST 10", "RUN", "LIST .", "LIST -.", "LIST .-"],
+    ["10 PRINT 1", "20 DELETE .", "30 PRINT 3", "RUN", "LIST"],
+    ["10 PRINT 1", "20 DELETE 10-.", "30 PRINT 3", "40 PRINT 4", "LIST 30", "RUN", "LIST"],
+    ["10 PRINT 1", "20 RENUM 100,.", "30 PRINT 3", "LIST 20", "RUN", "LIST"],
+    ["10 PRINT 1", "20 RENUM .,.", "30 PRINT 3", "LIST 30", "RUN", "LIST"],
+    ["10 PRINT 1", "20 LIST . - .", "30 PRINT 3", "RUN"],
+], ids=["list", "list-sets-dot", "range", "delete", "delete-range", "renum", "renum-both", "blanks"])
+def test_a_running_program_reads_dot(pc, tmp_path, steps):
+    """``.`` in a program's LIST, LLIST, DELETE and RENUM is GW's DOT as the statement runs
+    (GWMAIN.ASM LINSPC): the line last typed or listed; the program's LIST sets it
+    (GWLIST.ASM LIST).  Before, a program's ``.`` was line 0.  PC-BASIC 2.0.8 shows the same."""
+    pc_session, _ = pc
+    session, shown = gw_session(tmp_path)
+    for step in ["NEW"] + steps:
+        assert typed(session, shown, [step]) == clean_output(pc_session.execute(step)), (steps, step)
+
+
+def test_an_ascii_file_s_last_line_is_dot(pc, tmp_path):
+    """An ASCII file's lines are entered as typed ones (GWMAIN.ASM keeps each in DOT): the
+    session's LOAD, the API and ``yaseer run`` start the program with its last line current."""
+    pc_session, pc_directory = pc
+    data = b"10 PRINT 1\r\n20 LIST .\r\n30 PRINT 3\r\n"
+    (pc_directory / "DOTS.BAS").write_bytes(data)
+    (tmp_path / "DOTS.BAS").write_bytes(data)
+    session, shown = gw_session(tmp_path)
+    for step in ["NEW", "LIST 10", 'LOAD "DOTS"', "RUN"]:
+        assert typed(session, shown, [step]) == clean_output(pc_session.execute(step)), step
+    expected = clean_output(pc_session.execute('RUN "DOTS"'))
+    assert yaseer.run(tmp_path / "DOTS.BAS", dialect="gw").text == expected == " 1 \n30 PRINT 3\n"
+    done = subprocess.run([sys.executable, "-m", "yaseer", "--dialect", "gw", "run", "DOTS.BAS"],
+                          capture_output=True, cwd=tmp_path, timeout=60)
+    assert done.stdout.decode() == expected
+
+
+def test_dot_in_a_program_as_the_source_keeps_it(tmp_path):
+    """Where PC-BASIC 2.0.8 differs the source decides: GWMAIN.ASM ERROR stores the error's line
+    in DOT before it looks for a trap (PC-BASIC leaves DOT), so a handler's ``LIST .`` and a
+    later ``LIST .`` show the line in error; SCNEDT.ASM EDIT stores its line in DOT before it
+    looks for it; AUTO reads its start with LINSPC; RENUM's step is read by LINGET (no ``.``)."""
+    session, shown = gw_session(tmp_path)
+    assert typed(session, shown, ["NEW", "10 ON ERROR GOTO 100", "20 ERROR 5", "30 END", "100 LIST .",
+                                  "110 RESUME 30", "RUN", "LIST ."]) == "20 ERROR 5\n20 ERROR 5\n"
+    assert typed(session, shown, ["NEW", "10 PRINT 1", "20 ERROR 5", "30 LIST .", "RUN", "RUN 30"]) == \
+        " 1 \nIllegal function call in 20\n20 ERROR 5\n"
+    typed(session, shown, ["NEW", "10 PRINT 1", "20 AUTO ., 5", "30 PRINT 3", "LIST 10", "RUN"])
+    assert session.auto == (10, 5)
+    session.interrupt()
+    assert typed(session, shown, ["NEW", "10 EDIT 30", "20 LIST .", "30 PRINT 3", "LIST 10", "RUN", "RUN 20"]) == \
+        "10 EDIT 30\n30 PRINT 3\n"
+    assert typed(session, shown, ["NEW", "10 EDIT 25", "20 LIST .", "RUN", "RUN 20"]) == \
+        "Undefined line number in 10\n10 EDIT 25\n"  # EDIT's 25, then the error's 10
+    assert typed(session, shown, ["NEW", "10 RENUM 100, ., ."]) == ""
+    assert typed(session, shown, ["RUN"]) == "Syntax error in 10\n"

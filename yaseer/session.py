@@ -596,10 +596,15 @@ class Session:
         placed at a line) may be continued; one that ends otherwise may not.
         A direct statement leaves that as it was.
         """
+        keeps_dot = self._dialect().current_line_listed and hasattr(self.engine, "current_line")
+        if keeps_dot:  # GW's DOT: the program's LIST ., EDIT . ... read it, its LIST and errors set it
+            self.engine.current_line = self.current_line or 0
         try:
             action()
         except BasicError as error:
             self._take_back_programs()
+            if keeps_dot:
+                self.current_line = self.engine.current_line
             if in_program:
                 self._can_continue = error.code == BREAK and error.line is not None
             if error.line is not None:
@@ -609,6 +614,8 @@ class Session:
                 self.edit_text = self.listed(error.line)  # GW-BASIC offers the line for editing
             return
         self._take_back_programs()
+        if keeps_dot:
+            self.current_line = self.engine.current_line
         last = getattr(self.engine, "last_line", None)
         if in_program and last is not None and not self._dialect().current_line_listed:
             self.current_line = last  # casio: the line last run (GW's DOT stays: no error)
@@ -742,6 +749,7 @@ class MachineEngine:
         self._clear_screen = clear_screen
         self._machine = None  # made on first use: the prompt comes up without waiting for it
         self.protected = False  # PROG 0 came from a file SAVEd with ,P (the session says so)
+        self.current_line = 0  # gw: GW's DOT, handed to the machine for each run and taken back
         # casio: the password PASS registered; it outlives RUN's fresh machine and NEW ALL,
         # as the machine keeps it until PASS cancels it (PASS.md)
         self.password: str | None = None
@@ -835,6 +843,7 @@ class MachineEngine:
     def _guard(self, action: Callable[[], str]) -> str:
         """Run ``action``; a line left open (``PRINT 1;``, TRON's ``[30]``) is ended
         before the prompt or the error message, as MS-BASIC does."""
+        self.machine.current_line = self.current_line
         try:
             return action()
         except KeyboardInterrupt:  # between the machine's own checks
@@ -843,3 +852,4 @@ class MachineEngine:
             if self._machine is not None:
                 self._machine.end_line()
                 self.password = self._machine.password_set
+                self.current_line = self._machine.current_line

@@ -129,6 +129,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.library_forms = dialect.library_forms  # THEN *
         self.locate_arguments = dialect.screen.locate_arguments  # LOCATE's (fewest, most)
         self.late_errors = dialect.errors_when_reached  # a DEF FN body's errors when it is called
+        # "." in LIST, EDIT ...: GW's DOT, the machine's current_line as the statement runs
+        # (Dialect.current_line_listed); else (casio) the line the statement is in
+        self.dot_runs = dialect.current_line_listed
         self.names_missing_line = dialect.names_missing_line
         self.words = dialect.words or NO_WORDS  # the dialect's own words (dialects/casio.py)
         # the test of a full stack before a GOSUB: the stack's length, or (a dialect that counts

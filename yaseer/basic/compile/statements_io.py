@@ -274,7 +274,7 @@ class InputOutputCompiler:
         line = "None" if stmt.line is None else self.numeric(stmt.line, scope)
         self.emit("#FLUSH#")  # the variables a CHAIN keeps are the machine's
         self.emit(f"_chain({self.string(stmt.file, scope)}, {stmt.merge}, {line}, {stmt.everything}, "
-                  f"{stmt.delete!r}, {stmt.run})")
+                  f"{line_specs(stmt.delete)}, {stmt.run})")
 
     def stmt_Command(self, stmt, scope):
         """RUN, LIST, LOAD, SAVE ... in a program: the machine's ``program_command``; the
@@ -285,12 +285,12 @@ class InputOutputCompiler:
         argument = stmt.argument
         if stmt.name == "EDIT" and argument is None and not self.words.edit_lists_from:
             raise syntax_error()  # GW-BASIC's EDIT needs its line
-        if argument == ast.CURRENT_LINE:  # LIST . / EDIT . in a program: its own line, the one executed last
+        if argument == ast.CURRENT_LINE and not self.dot_runs:  # casio's LIST . / EDIT .: its own line
             argument = self.line if stmt.name == "EDIT" else (self.line, self.line)
         if argument is not None and not isinstance(argument, (int, tuple)):
             argument = self.string(argument, scope)
         else:
-            argument = repr(argument)
+            argument = line_specs(argument)
         self.emit("#FLUSH#")
         self.emit(f"_command({stmt.name!r}, {argument}, {stmt.option!r}, {stmt.everything})")
         self.emit("#RELOAD#")
@@ -338,3 +338,14 @@ class InputOutputCompiler:
 
     def stmt_Files(self, stmt, scope):
         self.emit(f"_files({'None' if stmt.pattern is None else self.string(stmt.pattern, scope)})")
+
+
+def line_specs(value) -> str:
+    """Python source for a command's line numbers ``value`` (a number, None, or a tuple of
+    them): each :data:`ast.CURRENT_LINE` in it, GW's ``.`` (GWMAIN.ASM LINSPC), is the
+    machine's current line (DOT) when the statement runs."""
+    if value == ast.CURRENT_LINE:
+        return "_M.current_line"
+    if isinstance(value, tuple):
+        return "(" + "".join(line_specs(item) + ", " for item in value) + ")"
+    return repr(value)

@@ -127,7 +127,10 @@ class Chaining:
             shown = [n for n in sorted(program) if n >= (argument or 0)]
             self.edit_request = shown[0] if shown else None  # the session puts that line up for editing
         elif name == "EDIT" and argument not in program:
+            self._edited(argument)
             raise error_for(UNDEFINED_LINE)
+        elif name == "EDIT":
+            self._edited(argument)
         elif name == "RENUM":
             from yaseer.basic.source.renumbering import renumber  # here: only RENUM needs it
 
@@ -138,6 +141,12 @@ class Chaining:
                 self.print_items(0, (message,), True)
             raise ChainTo(renumbered, False, None, True, None, False)
         raise ProgramEnd()
+
+    def _edited(self, number: int) -> None:
+        """EDIT's line is the current line, whether it exists or not (SCNEDT.ASM EDIT stores
+        DOT before FNDLIN looks for it)."""
+        if self.dialect.current_line_listed:
+            self.current_line = number
 
     def _auto_mode(self, start: int | None, step: int | None) -> None:
         """AUTO [start][, [step]] in a program (GWMAIN.ASM AUTO): the program stops and the
@@ -203,6 +212,8 @@ class Chaining:
         first, last = line_range
         for number in sorted(program):
             if (first or 0) <= number <= (65529 if last is None else last):
+                if self.dialect.current_line_listed:
+                    self.current_line = number  # GWLIST.ASM LIST keeps each line shown in DOT
                 self.print_items(device, (f"{number} {listed_line(program[number], self.dialect)}",), True)
 
     def _save(self, program: dict, name: str, areas: dict | None = None, option: str = "") -> None:

@@ -119,6 +119,8 @@ class ErrorTrapping:
             return None
         self.err = float(self.err_codes.get(err.code, err.code))  # the dialect's codes (casio: the manual's)
         self.erl = float(err.line or 0)
+        if err.line is not None and self.dialect.current_line_listed:
+            self.current_line = err.line  # GWMAIN.ASM ERROR sets DOT before it looks for a trap
         for stream in self.streams:
             stream.row = []
         self.string_space.temps.clear()  # the failed statement's temporaries are let go

@@ -29,10 +29,18 @@ def _number_value(token: Token):
 
 
 def _line_number(token: Token) -> int:
+    if token.value == ast.CURRENT_LINE:  # "." where only a number may stand (RENUM's step)
+        raise BasicError("Syntax error", SYNTAX_ERROR)
     value = _number_value(token)
     if value != int(value) or value < 0:
         raise BasicError("Syntax error", SYNTAX_ERROR)
     return int(value)
+
+
+def _line_spec(token: Token):
+    """A line number where GWMAIN.ASM LINSPC reads one: the scanner's "." (the current line,
+    :data:`ast.CURRENT_LINE`, resolved as the statement runs) or a number."""
+    return ast.CURRENT_LINE if token.value == ast.CURRENT_LINE else _line_number(token)
 
 
 _OPERATOR_NAMES = {
@@ -330,13 +338,13 @@ class _ToAst:
         return ("delete", c[2])
 
     def line_range(self, c):
-        numbers = [_line_number(t) if t.type == "NUMBER" else t.type for t in c]
+        numbers = [_line_spec(t) if t.type == "NUMBER" else t.type for t in c]
         first = numbers[0] if numbers[0] != "MINUS" else None
         last = numbers[-1] if numbers[-1] != "MINUS" else None
         return (first, last)
 
     def line_range_one(self, c):
-        return (_line_number(c[0]),) * 2
+        return (_line_spec(c[0]),) * 2
 
     def common_stmt(self, c):
         return ast.Common([x for x in c[1:] if not isinstance(x, Token)])
@@ -386,7 +394,7 @@ class _ToAst:
     def edit_stmt(self, c):
         if len(c) == 1:  # EDIT alone: from the first line (the Casio's; the compiler refuses it elsewhere)
             return ast.Command("EDIT", None)
-        return ast.Command("EDIT", ast.CURRENT_LINE if c[1].type == "PERIOD" else _line_number(c[1]))
+        return ast.Command("EDIT", ast.CURRENT_LINE if c[1].type == "PERIOD" else _line_spec(c[1]))
 
     def renum_stmt(self, c):
         """RENUM [new][, [old][, step]]: (new, old, step), None where left out."""
@@ -395,7 +403,7 @@ class _ToAst:
             if token.type == "COMMA":
                 place += 1
             else:
-                values[place] = _line_number(token)
+                values[place] = _line_spec(token) if place < 2 else _line_number(token)
         return ast.Command("RENUM", tuple(values))
 
     def auto_stmt(self, c):
@@ -408,7 +416,7 @@ class _ToAst:
             elif token.type == "COMMA":
                 step = None
             elif k == 0:
-                start = _line_number(token)
+                start = _line_spec(token)
             else:
                 step = _line_number(token)
         return ast.Command("AUTO", (start, step))

@@ -26,6 +26,7 @@ import re
 from yaseer.basic.dialects.dialect import CASIO, Dialect
 from yaseer.basic.errors import DIRECT_STATEMENT_IN_FILE, BasicError, OVERFLOW, SYNTAX_ERROR, error_message
 from yaseer.basic.dialects.reserved import GW_RESERVED_WORDS, UNSUPPORTED
+from yaseer.basic.source.syntax_tree import CURRENT_LINE
 
 # Statement and operator keywords every dialect reserves: each is its own terminal type.
 STATEMENT_KEYWORDS = (
@@ -558,6 +559,13 @@ def line_number_spans(text: str, dialect: Dialect = CASIO) -> list[tuple[int, in
     return spans
 
 
+# After LIST, LLIST, DELETE, EDIT, AUTO and RENUM (``Dialect.current_line_commands``) GW-BASIC's
+# CRUNCH keeps a "." as it is (DONUM set: "EDIT .") and LINSPC reads it as the current line;
+# where a lone "." is otherwise the number 0 (gw) the scanner gives such a NUMBER the value
+# CURRENT_LINE, up to a token that is no part of a line range or list.
+_LINE_SPEC_TOKENS = frozenset(("NUMBER", "MINUS", "COMMA"))
+
+
 class Token:
     """One lexeme as the parser takes it: ``type``, its terminal's name in grammar.lark, and
     ``value``, its text (a number: its value, or ``(value, type)`` where the dialect types it)."""
@@ -582,12 +590,16 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
     Raises ``BasicError("Syntax error")`` for a character no token can start with.
     """
     tokens: list = []
-    for kind, value, start, _ in _lexemes(text, dialect):
+    line_spec = False  # after a word whose line numbers may be "." (see below), up to another kind of token
+    for kind, value, start, end in _lexemes(text, dialect):
         if kind == "REMARK" and tokens and text[start] == "'":
             break
         if _joins_go(tokens, kind, value, dialect.keyword_first):
             tokens[-1] = Token(_GO_JOINED[value], "GO" + value)
             continue
+        if line_spec and kind == "NUMBER" and text[start:end].strip() == ".":
+            value = CURRENT_LINE  # a lone "." where GWMAIN.ASM LINSPC reads a line number: DOT
+        line_spec = kind in dialect.current_line_commands or (line_spec and kind in _LINE_SPEC_TOKENS)
         tokens.append(Token(kind, value))
     if dialect.bracket_subscripts:
         _subscript_brackets(tokens)
