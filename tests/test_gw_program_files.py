@@ -87,7 +87,7 @@ def yaseer_output(text: str, directory: Path | None = None) -> str:
 def test_a_tokenised_file_reads_as_pcbasic_lists_it(pc):
     data, listed = saved(pc, TOKEN_PROGRAM, "TOKENS")
     assert data[0] == 0xFF
-    assert program_text(data) == listed
+    assert program_text(data, exact=False) == listed  # as LIST shows it (program_text keeps all 56 bits)
 
 
 def test_a_protected_file_unscrambles_to_the_tokenised_one(pc):
@@ -123,7 +123,7 @@ def test_double_constants_of_a_tokenised_file_list_from_all_56_bits(pc):
         digits = str(rng.randrange(10 ** 15, 10 ** 16))
         lines.append(f"{10 * (k + 1)} A#={digits[0]}.{digits[1:]}#: B#={rng.randrange(1, 10 ** 16)}#: PRINT A#; B#")
     data, listed = saved(pc, "\n".join(lines), "DOUBLES")
-    assert program_text(data) == listed
+    assert program_text(data, exact=False) == listed  # as LIST shows it (program_text keeps all 56 bits)
     session, _ = pc
     session.execute("NEW")
     assert yaseer_output(program_text(data)) == clean_output(session.execute('RUN "DOUBLES"'))
@@ -182,3 +182,41 @@ def test_yaseer_run_reads_a_tokenised_file(tmp_path, pc):
     done = subprocess.run([sys.executable, "-m", "yaseer", "run", "--dialect", "gw", str(path)],
                           capture_output=True, text=True, cwd=tmp_path)
     assert (done.stdout, done.stderr, done.returncode) == ("", "Direct statement in file\n", 1)
+
+
+def test_double_constants_keep_their_56_bits_through_load_run_and_save(pc, tmp_path):
+    """A tokenised file's double constant is 0x1F and MKD$'s 8 bytes; GW-BASIC runs them as
+    they are and SAVE writes them back (the program is its tokens).  For bytes whose 16
+    listed digits do not hold them (PC-BASIC 2.0.8, given its own listing back, stores other
+    bytes) yaseer ran the 16 digits read again; now the program prints PC-BASIC's bytes and
+    value, lists PC-BASIC's digits, and the session's LOAD and SAVE give the file back."""
+    from test_gw_protected import gw_session, typed
+
+    import yaseer
+
+    session, directory = pc
+    base, _ = saved(pc, "10 A#=1.5#: X$=MKD$(A#): FOR I=1 TO 8: PRINT ASC(MID$(X$,I,1));: NEXT: PRINT A#", "EXACT")
+    at = base.index(0x1F) + 1
+    ours, shown = gw_session(tmp_path)
+    rng = random.Random(base_seed() + 1956)
+    held = 0
+    for k in range(case_count(12)):
+        constant = bytes(rng.randrange(256) for _ in range(6)) + bytes((rng.randrange(128), rng.randrange(90, 170)))
+        data = base[:at] + constant + base[at + 8:]
+        (directory / f"EXACT{k}.BAS").write_bytes(data)
+        (tmp_path / f"EXACT{k}.BAS").write_bytes(data)
+        session.execute("NEW")
+        theirs = clean_output(session.execute(f'RUN "EXACT{k}"'))
+        listed = clean_output(session.execute("LIST"))
+        session.execute(listed.strip())
+        session.execute(f'SAVE "AGAIN{k}"')
+        if (directory / f"AGAIN{k}.BAS").read_bytes()[at:at + 8] == constant:
+            held += 1  # 16 digits hold these bytes: not the case this test is about
+            continue
+        assert theirs.split()[:8] == [str(byte) for byte in constant]
+        assert yaseer_output(program_text(data)) == theirs
+        assert yaseer.run(data, dialect="gw").text == theirs
+        assert typed(ours, shown, ["NEW", f'LOAD "EXACT{k}"', "LIST"]) == listed
+        assert typed(ours, shown, ["RUN", f'SAVE "SAVED{k}"']) == theirs
+        assert (tmp_path / f"SAVED{k}.bas").read_bytes() == data
+    assert held < case_count(12) // 2  # most 56-bit constants are beyond 16 digits

@@ -31,12 +31,13 @@ from __future__ import annotations
 import re
 
 from yaseer.basic.machine.program_file import TOKENS, TWO_BYTE_TOKENS
+from yaseer.basic.source.scanner import EXACT_DOUBLE
 
 _VALUE_BYTES = {"%": 2, "!": 4, "#": 8, "$": 3}
 _ONE_BYTE = frozenset(word for word in TOKENS.values() if word.isalpha() or word.endswith(("$", "(")))
 _TWO_BYTES = frozenset(word for table in TWO_BYTE_TOKENS.values() for word in table.values())
 _JUMPS = frozenset(("GOTO", "GOSUB", "THEN", "ELSE", "RESTORE", "RUN", "RESUME", "LIST", "DELETE", "RETURN"))
-_PIECE = re.compile(r'"[^"]*"?|[A-Za-z][A-Za-z0-9.]*[$%!#]?|&[HhOo]?[0-9A-Fa-f]+|[0-9.]+(?:[EeDd][-+]?[0-9]+)?[%!#]?|.')
+_PIECE = re.compile(r'\x1f[0-9A-F]{16}|"[^"]*"?|[A-Za-z][A-Za-z0-9.]*[$%!#]?|&[HhOo]?[0-9A-Fa-f]+|[0-9.]+(?:[EeDd][-+]?[0-9]+)?[%!#]?|.')
 
 
 def line_bytes(text: str) -> int:
@@ -61,6 +62,9 @@ def line_bytes(text: str) -> int:
             continue
         if first == "'":
             return size + len(text) - text.find("'") + 2
+        if first == EXACT_DOUBLE and len(piece) > 1:  # a file's double constant kept as its 8 bytes
+            size += 9
+            continue
         if first.isdigit() or (first == "." and len(piece) > 1) or first == "&":
             size += _number_bytes(piece, after_jump)
             continue

@@ -37,7 +37,9 @@ from yaseer.basic.machine.gwfunctions import mkd, mks
 from yaseer.basic.machine.program_file import (
     END_OF_FILE, TOKENISED, TOKENS, TWO_BYTE_TOKENS, line_text, protected_file,
 )
-from yaseer.basic.source.scanner import LINE_NUMBER_WORDS, detokenize, gw_number, radix_number
+from yaseer.basic.source.scanner import (
+    EXACT_DOUBLE, LINE_NUMBER_WORDS, detokenize, exact_double, gw_number, radix_number,
+)
 
 # GW-BASIC 3.23's program start (TXTTAB) with its default /F:3 /S:128 file buffers: the
 # address the links of a SAVEd program count from (PC-BASIC 2.0.8 uses the same).
@@ -74,6 +76,9 @@ def crunch_line(text: str) -> bytes:
         elif c == " ":
             out.append(0x20)
             i += 1
+        elif c == EXACT_DOUBLE and not data and exact_double(upper, i) is not None:
+            constant, i = exact_double(upper, i)  # a file's double constant: its own bytes back
+            out += bytes((0x1F,)) + constant
         elif data:
             out += _codes(c)
             i += 1

@@ -22,6 +22,7 @@ from __future__ import annotations
 from yaseer.basic.arithmetic import mbf_double
 from yaseer.basic.arithmetic.values import DOUBLE_DIGITS, SINGLE_DIGITS, double_of, unsigned_text
 from yaseer.basic.machine.gwfunctions import _from_mbf
+from yaseer.basic.source.scanner import EXACT_DOUBLE, gw_number
 
 END_OF_FILE = 0x1A  # Ctrl-Z
 TOKENISED = 0xFF
@@ -68,15 +69,16 @@ _EXPCN = bytes((0o174, 0o210, 0o131, 0o164, 0o340, 0o227, 0o046, 0o167, 0o304, 0
 _LOGP = bytes((0o232, 0o367, 0o031, 0o203, 0o044, 0o143, 0o103, 0o203, 0o165, 0o315, 0o215, 0o204, 0o251))
 
 
-def program_text(data: bytes, charset=None) -> str:
+def program_text(data: bytes, charset=None, exact: bool = True) -> str:
     """The text of a program file's ``data`` (any of the three kinds, see the module docstring),
     as it is shown: with a ``charset`` (yaseer/basic/dialects/charset.py) the machine's codes
     128..255 of a tokenised file are its symbols, and an ASCII file is read as the character
     set reads one (UTF-8 when it is, else the machine's codes); without one, codes stay
-    ``chr(code)`` and an ASCII file is UTF-8, else read byte for byte."""
+    ``chr(code)`` and an ASCII file is UTF-8, else read byte for byte.  ``exact``: a tokenised
+    file's double constants keep all their bits (:func:`detokenise`); False: as LIST shows them."""
     if data[:1] in (bytes((PROTECTED,)), bytes((TOKENISED,))):
         body = unprotect(data[1:]) if data[0] == PROTECTED else data[1:]
-        text = detokenise(body)
+        text = detokenise(body, exact)
         return text if charset is None else charset.symbols(text)
     if data.startswith(BYTE_ORDER_MARK):
         data = data[len(BYTE_ORDER_MARK):]
@@ -114,16 +116,18 @@ def unprotect(data: bytes) -> bytes:
                  for byte, (one, two) in zip(data, _counters()))
 
 
-def detokenise(data: bytes) -> str:
-    """A tokenised program (after the 0xFF) as numbered text lines; a file cut short ends
-    with its last whole line."""
+def detokenise(data: bytes, exact: bool = False) -> str:
+    """A tokenised program (after the 0xFF) as numbered text lines, as LIST shows them; a file
+    cut short ends with its last whole line.  ``exact``: a double constant is its 16 digits
+    only where they read back to its 8 bytes, else scanner.EXACT_DOUBLE and the bytes (the
+    program then keeps all 56 bits, and SAVE writes them back)."""
     lines = []
     i = 0
     while i + 4 <= len(data):
         if data[i] == 0 and data[i + 1] == 0:  # the zero link: the end
             break
         number = data[i + 2] | data[i + 3] << 8
-        text, i = _line_text(data, i + 4)
+        text, i = _line_text(data, i + 4, exact)
         lines.append(f"{number} {text}")
     return "".join(line + "\n" for line in lines)
 
@@ -133,9 +137,11 @@ def line_text(tokens: bytes) -> str:
     return _line_text(tokens, 0)[0]
 
 
-def _line_text(body: bytes, i: int) -> tuple[str, int]:
+def _line_text(body: bytes, i: int, exact: bool = False) -> tuple[str, int]:
     """The tokens of the line that starts at ``body[i]``, as LIST shows them, and the index
-    after the 0 byte that ends it (a number's bytes may hold zeros: tokens are read one by one)."""
+    after the 0 byte that ends it (a number's bytes may hold zeros: tokens are read one by one);
+    ``exact``: a double constant that its 16 digits do not hold is written as its bytes
+    (:func:`detokenise`)."""
     out: list[str] = []
     n = len(body)
     quoted = False  # inside a string
@@ -159,7 +165,7 @@ def _line_text(body: bytes, i: int) -> tuple[str, int]:
             out.append("'")
             text, i = "rem", i + 3
             continue
-        word, i = _token(body, i)
+        word, i = _token(body, i, exact)
         if word is None:
             out.append(chr(byte))
             i += 1
@@ -181,8 +187,9 @@ def _alnum(character: str) -> bool:
     return character.isascii() and character.isalnum()
 
 
-def _token(body: bytes, i: int) -> tuple[str | None, int]:
-    """The text of the token or number at ``body[i]`` and the index after it (None: a plain byte)."""
+def _token(body: bytes, i: int, exact: bool = False) -> tuple[str | None, int]:
+    """The text of the token or number at ``body[i]`` and the index after it (None: a plain
+    byte); ``exact``: see :func:`_line_text`."""
     byte = body[i]
     rest = body[i + 1:]
     if byte in TWO_BYTE_TOKENS and rest:
@@ -208,8 +215,18 @@ def _token(body: bytes, i: int) -> tuple[str | None, int]:
     if byte == 0x1D:
         text = unsigned_text(_from_mbf(value), SINGLE_DIGITS, "E")
         return (text if "." in text or "E" in text else text + "!"), i + 5
-    text = unsigned_text(double_of(mbf_double.from_bytes(value)), DOUBLE_DIGITS, "D")  # all 56 bits, as CVD
-    return (text if "D" in text else text + "#"), i + 9
+    parts = mbf_double.from_bytes(value)
+    text = unsigned_text(double_of(parts), DOUBLE_DIGITS, "D")  # all 56 bits, as CVD
+    text = text if "D" in text else text + "#"
+    if exact and _read_back(text) != value:
+        text = EXACT_DOUBLE + value.hex().upper()
+    return text, i + 9
+
+
+def _read_back(text: str) -> bytes:
+    """The 8 bytes a double constant's listed ``text`` gives when the line is read again."""
+    number = gw_number(text, 0)[0][0]
+    return mbf_double.to_bytes(getattr(number, "parts", None) or mbf_double.parts(number))
 
 
 def protect(data: bytes) -> bytes:

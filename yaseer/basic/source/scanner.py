@@ -410,6 +410,22 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
     return (single, "!"), end
 
 
+# A double constant as a tokenised program file holds it (the 0x1F token and MKD$'s 8 bytes)
+# where the 16 digits LIST shows would not read back to the same 56 bits: this control
+# character and the 8 bytes in 16 hexadecimal digits (program_file.detokenise writes it,
+# program_crunch.crunch_line stores it back as its bytes).  GW-BASIC's CRUNCH makes any typed
+# control character a blank, so no line typed into GW-BASIC holds one.
+EXACT_DOUBLE = "\x1f"
+_EXACT_DOUBLE = re.compile("\x1f([0-9A-F]{16})")
+
+
+def exact_double(text: str, i: int) -> tuple[bytes, int] | None:
+    """The 8 bytes of an :data:`EXACT_DOUBLE` constant at ``text[i]`` and the position after
+    it; None if there is none."""
+    match = _EXACT_DOUBLE.match(text, i)
+    return (bytes.fromhex(match.group(1)), match.end()) if match else None
+
+
 def gw_number(upper: str, i: int) -> tuple[tuple, int]:
     """The GW-BASIC number literal at ``upper[i]`` (a digit or ``.``; capitals) as
     :func:`_scan_typed_number` reads it: ``((value, type), end)``; the tokeniser of
@@ -477,6 +493,14 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
         elif ch == "'":
             yield "REMARK", text[i + 1:], start, n
             return
+        elif ch == EXACT_DOUBLE and typed:
+            found = exact_double(upper, i)
+            if found is None:
+                raise _syntax_error()
+            from yaseer.basic.arithmetic.values import wide_literal  # here: only such files need it
+
+            data, i = found
+            yield "NUMBER", (wide_literal(data.hex()), "#"), start, i
         elif ch.isdigit() or (ch == "." and i + 1 < n and upper[i + 1].isdigit()) or (ch in "&." and typed):
             value, i = _scan_typed_number(upper, i, notes) if typed else _scan_number(upper, i)
             yield "NUMBER", value, start, i
