@@ -326,3 +326,35 @@ def test_dot_in_a_program_as_the_source_keeps_it(tmp_path):
         "Undefined line number in 10\n10 EDIT 25\n"  # EDIT's 25, then the error's 10
     assert typed(session, shown, ["NEW", "10 RENUM 100, ., ."]) == ""
     assert typed(session, shown, ["RUN"]) == "Syntax error in 10\n"
+
+
+def test_the_api_and_the_report_do_not_list_a_protected_program(tmp_path):
+    """GW-BASIC never lists a program SAVEd with ,P (GIODSK.ASM PROCHK: LIST is Illegal
+    function call): ``Result.listing`` is "" (``Result.protected`` says why) and ``yaseer
+    report`` puts a note where the listing goes; the program still runs.  Before, both
+    showed the program's text."""
+    path = protected_file(tmp_path, ['10 PRINT "SECRET" + "WORD"', "20 PRINT 1"])
+    for listing in (path, path.read_bytes()):
+        result = yaseer.run(listing, dialect="gw", files=tmp_path)
+        assert (result.listing, result.protected, result.text) == ("", True, "SECRETWORD\n 1 \n")
+    page = tmp_path / "page.html"
+    done = subprocess.run([sys.executable, "-m", "yaseer", "--dialect", "gw", "report", str(path), "--out", str(page)],
+                          capture_output=True, text=True, cwd=tmp_path, timeout=300)
+    assert done.returncode == 0, done.stderr
+    text = page.read_text()
+    assert 'id="protected"' in text and "SECRETWORD" in text and "SECRET&quot;" not in text and "PRINT" not in text
+
+
+def test_the_api_lists_a_tokenised_file_as_list_shows_it(pc):
+    """``Result.listing`` of a tokenised file is PC-BASIC 2.0.8's LIST of it, while the program
+    computes with its double constant's 56 bits (1/3 rounded up in the last bit, which the
+    listing's 16 digits do not give): it prints what PC-BASIC prints."""
+    data = pc_file(pc, ["10 A#=1.5#: PRINT A#*3#; A#"], 'SAVE "THIRD"', "THIRD")
+    at = data.index(0x1F) + 1
+    data = data[:at] + bytes.fromhex("ABAAAAAAAAAA2A7F") + data[at + 8:]
+    session, directory = pc
+    (directory / "THIRD.BAS").write_bytes(data)
+    session.execute("NEW")
+    printed = clean_output(session.execute('RUN "THIRD"'))
+    result = yaseer.run(data, dialect="gw")
+    assert (result.listing, result.text) == (clean_output(session.execute("LIST")), printed)

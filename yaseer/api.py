@@ -84,7 +84,9 @@ class Result:
     the display's shown rows (one text of a line each) every time it waited for a key
     and when it ended, as the output shows them.  ``name``: the listing's file stem (None for program text).
     ``protected``: the listing came from a file SAVEd with ,P; the program may not LIST, LLIST
-    or SAVE itself but with ,P (GIODSK.ASM PROCHK), as in GW-BASIC.
+    or SAVE itself but with ,P (GIODSK.ASM PROCHK), as in GW-BASIC.  ``listing``: the program
+    as LIST shows it (a tokenised file's lines listed back); "" for a protected program, which
+    GW-BASIC never lists.
 
     Compared and shown by its fields as a dataclass would be, but a plain class:
     importing dataclasses costs every start several milliseconds.
@@ -240,16 +242,18 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
     try:
         from yaseer.basic.dialects.dialect import get_dialect
 
-        result.listing, result.name, result.protected = _source(listing, get_dialect(dialect).charset)
+        program, result.listing, result.name, result.protected = _source(listing, get_dialect(dialect).charset)
         if finer != 1:
             from yaseer.finer import finer_steps
 
-            result.listing = finer_steps(result.listing, finer)
+            program = finer_steps(program, finer)
+            result.listing = "" if result.protected else program
         areas = {n: _area_text(n, _source(text, get_dialect(dialect).charset)[0]) for n, text in numbers.items()}
         input_stream = _input_stream(input, opened)
     except BasicError as error:
         return _failed(result, error, raise_errors)
-    execute(result, areas, methods, input_stream, angle, dialect, screen, printer, output_format, keep, files)
+    execute(result, areas, methods, input_stream, angle, dialect, screen, printer, output_format, keep, files,
+            program)
     for handle in opened:
         handle.close()
     if result.exception is not None and raise_errors:
@@ -258,8 +262,9 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
 
 
 def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str | None, dialect: str,
-            screen, printer, output_format: str, keep: bool, files=None) -> None:
-    """Load, bind and run ``result.listing``; fill in ``result`` (text, rows, frames, error, status)."""
+            screen, printer, output_format: str, keep: bool, files=None, program: str | None = None) -> None:
+    """Load, bind and run ``program`` (default ``result.listing``); fill in ``result`` (text,
+    rows, frames, error, status)."""
     from yaseer import binding
     from yaseer.basic.errors import BasicError
     from yaseer.basic.machine.machine import Machine
@@ -283,7 +288,7 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
         machine.area_hooks.append(recorder.hook)
         machine.line_hooks.append(lambda device, values: result.lines.append(values))
     try:
-        machine.load(result.listing)
+        machine.load(result.listing if program is None else program)
         machine.program_protected = result.protected
         if library:
             binding.install(machine, methods or None)
@@ -333,16 +338,17 @@ def _failed(result: Result, error, raise_errors: bool) -> Result:
     return result
 
 
-def _source(listing: Listing, charset=None) -> tuple[str, str | None, bool]:
-    """(program text, file stem or None, protected): a path-like, or a one-line str that is no
-    BASIC line, is a file; bytes are a file's contents.  A file is read as LOAD reads it
-    (program_file.program_text: ASCII, tokenised or protected; as the ``charset`` shows it,
-    yaseer/basic/dialects/charset.py); ``protected``: it was SAVEd with ,P."""
+def _source(listing: Listing, charset=None) -> tuple[str, str, str | None, bool]:
+    """(program text, its listing, file stem or None, protected): a path-like, or a one-line
+    str that is no BASIC line, is a file; bytes are a file's contents.  A file is read as LOAD
+    reads it (program_file.program_text: ASCII, tokenised or protected; as the ``charset``
+    shows it, yaseer/basic/dialects/charset.py); ``protected``: it was SAVEd with ,P.  The
+    listing is the program as LIST shows it (see :class:`Result`)."""
     from yaseer.basic.errors import DEVICE_IO_ERROR, FILE_NOT_FOUND, BasicError
 
     if isinstance(listing, str) and not os.path.isfile(listing) \
             and ("\n" in listing or not listing.strip() or _LINE_NUMBER.match(listing)):
-        return listing, None, False
+        return listing, listing, None, False
     if isinstance(listing, bytes):
         return _file_text(listing, charset, None)
     if not isinstance(listing, (str, os.PathLike)):
@@ -357,12 +363,19 @@ def _source(listing: Listing, charset=None) -> tuple[str, str | None, bool]:
     return _file_text(data, charset, _stem(listing))
 
 
-def _file_text(data: bytes, charset, name: str | None) -> tuple[str, str | None, bool]:
-    """:func:`_source`'s answer for a program file's bytes (lines end in LF, as text mode reads them)."""
+def _file_text(data: bytes, charset, name: str | None) -> tuple[str, str, str | None, bool]:
+    """:func:`_source`'s answer for a program file's bytes (lines end in LF, as text mode reads
+    them): the program keeps a tokenised file's double constants whole, the listing shows
+    their digits; a protected program has no listing (GIODSK.ASM PROCHK: GW-BASIC's LIST of it
+    is Illegal function call)."""
     from yaseer.basic.machine.program_file import is_protected, program_text
 
-    text = program_text(data, charset)
-    return text.replace("\r\n", "\n").replace("\r", "\n"), name, is_protected(data)
+    def lines(text: str) -> str:
+        return text.replace("\r\n", "\n").replace("\r", "\n")
+
+    protected = is_protected(data)
+    program = lines(program_text(data, charset))
+    return program, "" if protected else lines(program_text(data, charset, exact=False)), name, protected
 
 
 def _stem(path) -> str:

@@ -1,9 +1,9 @@
 """A one-page handout of a run: one self-contained HTML file.
 
-The page holds the listing, what it printed (the screen, and the rows as a
-table under their column names), the plots as inline SVG, the animation as the
-same player ``yaseer animate --out x.html`` writes (frames as PNG data), and for
-the paper's examples the errata that apply.  Nothing is fetched: no scripts,
+The page holds the listing (a note instead for a program saved protected: GW-BASIC lists
+none), what it printed (the screen, and the rows as a table under their column names),
+the plots as inline SVG, the animation as the same player ``yaseer animate --out x.html``
+writes (frames as PNG data), and for the paper's examples the errata that apply.  Nothing is fetched: no scripts,
 fonts, styles or images from anywhere (matplotlib's SVG draws its text as
 paths).  An error that stopped the run is shown in red where the output ends.
 """
@@ -36,7 +36,11 @@ def build_page(result, listing_path: Path | None = None, printed_program_5: bool
     if listing_path is not None:
         parts.append(f'<p class="meta">{html.escape(str(listing_path))}</p>')
     parts.append("<h2>The listing</h2>")
-    parts.append(f"<pre>{html.escape(result.listing)}</pre>")
+    if result.protected:  # GIODSK.ASM PROCHK: GW-BASIC never lists such a program
+        parts.append('<p class="meta" id="protected">The program was saved protected (SAVE ,P): '
+                     "it is not listed, as GW-BASIC does not list it.</p>")
+    else:
+        parts.append(f"<pre>{html.escape(result.listing)}</pre>")
     parts.append("<h2>What it printed</h2>")
     parts.append(f'<pre id="screen">{html.escape(result.text)}</pre>')
     if result.screens:  # a program that drew on the display: the LCD as it showed it
