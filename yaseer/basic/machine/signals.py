@@ -119,7 +119,7 @@ class ErrorTrapping:
             return None
         self.err = float(self.err_codes.get(err.code, err.code))  # the dialect's codes (casio: the manual's)
         self.erl = float(err.line or 0)
-        if err.line is not None and self.dialect.current_line_listed:
+        if err.line and self.dialect.current_line_listed:  # a direct statement's error is at line 0: no DOT
             self.current_line = err.line  # GWMAIN.ASM ERROR sets DOT before it looks for a trap
         for stream in self.streams:
             stream.row = []
