@@ -7,11 +7,9 @@ variables, the arrays, and from the top down the strings; FRE is what lies betwe
 (PC-BASIC 2.0.8 counts the same way, ``memory.py`` ``_get_free``).  With no program
 60300 bytes are free (the figure GW-BASIC's banner shows; ``Dialect.free_memory``).
 
-* a program line: a 2-byte link, a 2-byte line number, its tokens and a 0 byte; a
-  keyword one byte (two for the 0xFD/0xFE/0xFF tables' words: FRE, CHR$, FIELD ...,
-  and for ELSE, which a colon precedes),
-  an integer literal 1 (0-9), 2 (10-255) or 3 bytes, a line number after a jump 3, a
-  single 5, a double 9, and every other character (blanks included) one byte;
+* a program line: a 2-byte link, a 2-byte line number, its tokens as CRUNCH stores them
+  (machine/program_crunch.py: a number after GOTO, ERL, LIST ... a 3-byte line-number
+  token, LINRES) and a 0 byte;
 * a simple variable: its type, two name characters, the count of the others and those
   others, then its value (2 bytes an integer, 4 a single, 8 a double, 3 a string's
   descriptor); one that was never given a value other than 0 or "" is not counted (GW
@@ -28,62 +26,26 @@ variables, the arrays, and from the top down the strings; FRE is what lies betwe
 
 from __future__ import annotations
 
-import re
-
-from yaseer.basic.machine.program_file import TOKENS, TWO_BYTE_TOKENS
-from yaseer.basic.source.scanner import EXACT_DOUBLE
+from yaseer.basic.errors import BasicError
+from yaseer.basic.machine.program_crunch import crunch_line
 
 _VALUE_BYTES = {"%": 2, "!": 4, "#": 8, "$": 3}
-_ONE_BYTE = frozenset(word for word in TOKENS.values() if word.isalpha() or word.endswith(("$", "(")))
-_TWO_BYTES = frozenset(word for table in TWO_BYTE_TOKENS.values() for word in table.values())
-_JUMPS = frozenset(("GOTO", "GOSUB", "THEN", "ELSE", "RESTORE", "RUN", "RESUME", "LIST", "DELETE", "RETURN"))
-_PIECE = re.compile(r'\x1f[0-9A-F]{16}|"[^"]*"?|[A-Za-z][A-Za-z0-9.]*[$%!#]?|&[HhOo]?[0-9A-Fa-f]+|[0-9.]+(?:[EeDd][-+]?[0-9]+)?[%!#]?|.')
+_LINE_BYTES: dict[str, int] = {}  # a line's text -> its bytes (FRE counts every line each time)
 
 
 def line_bytes(text: str) -> int:
-    """The bytes line ``text`` (without its number) takes tokenised (see the module docstring)."""
-    size = 5
-    after_jump = False
-    for piece in _PIECE.findall(text):
-        first = piece[0]
-        if first.isalpha():
-            word = piece.upper()
-            if word in ("REM", "DATA"):
-                return size + len(text) - text.upper().find(word) - len(word) + 1
-            if word in _TWO_BYTES:
-                size += 2
-            elif word in _ONE_BYTE or word.rstrip("(") in _ONE_BYTE:
-                size += 1 + (word == "ELSE")  # CRUNCH stores a colon before ELSE (KRNSVC)
-            elif word.startswith("FN") and len(word) > 2:
-                size += 1 + len(word) - 2
-            else:
-                size += len(piece)
-            after_jump = word in _JUMPS
-            continue
-        if first == "'":
-            return size + len(text) - text.find("'") + 2
-        if first == EXACT_DOUBLE and len(piece) > 1:  # a file's double constant kept as its 8 bytes
-            size += 9
-            continue
-        if first.isdigit() or (first == "." and len(piece) > 1) or first == "&":
-            size += _number_bytes(piece, after_jump)
-            continue
-        if first not in " ,":
-            after_jump = False
-        size += len(piece)
+    """The bytes line ``text`` (without its number) takes in GW-BASIC's program text: its
+    link, number, tokens and 0 (a line CRUNCH would not take, as its characters)."""
+    size = _LINE_BYTES.get(text)
+    if size is None:
+        try:
+            size = len(crunch_line(text)) + 5
+        except BasicError:  # (an &H number past &HFFFF: GW refuses the line)
+            size = len(text) + 5
+        if len(_LINE_BYTES) > 50_000:
+            _LINE_BYTES.clear()
+        _LINE_BYTES[text] = size
     return size
-
-
-def _number_bytes(piece: str, line_number: bool) -> int:
-    if piece[0] == "&":
-        return 3
-    if line_number and piece.isdigit():
-        return 3
-    if piece.isdigit() and int(piece) <= 32767:
-        value = int(piece)
-        return 1 if value <= 9 else 2 if value <= 255 else 3
-    digits = len(piece.rstrip("%!#").replace(".", "").lstrip("0"))
-    return 9 if piece.endswith("#") or "D" in piece.upper() or digits > 7 else 5
 
 
 def _name_bytes(name: str) -> int:
