@@ -30,7 +30,7 @@ from __future__ import annotations
 import re
 
 from yaseer.basic.source import syntax_tree as ast
-from yaseer.basic.compile.blocks import data_statements, flatten, plan, splits, types_fixed, walk_statements
+from yaseer.basic.compile.blocks import data_statements, flatten, nodes, plan, splits, types_fixed, walk_statements
 from yaseer.basic.compile.expressions import (
     BlockScope, CompileError, ExpressionCompiler, FnScope, calls_fn, may_overflow, syntax_error, type_mismatch,
 )
@@ -118,6 +118,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.statement_types = statement_types  # DEF types switched as they run, even where fixed would do
         self.variables_made = dialect.variables_made  # SWAP's second variable must exist (see made)
         self.watched: frozenset = frozenset()  # the names whose making is recorded (see made)
+        self.counts_made = False  # each making is counted and checked against the 64 KB (see made)
         self.read_commits = dialect.read_commits  # a READ ends with _read_end (Dialect.read_commits)
         self.numbers = number_model(dialect, def_types)
         # the binade caches' names differ between the variants run in one namespace (TRON, DEF types)
@@ -252,12 +253,12 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
                 value_code = f"_sroom({value_code}, '')"
         if isinstance(target, ast.Var):
             name = scope.scalar(target.name, write=True)
+            self.made(target)  # LET's PTRGET makes the variable before its value is worked out
             if check:  # checked before the store: a trapped Overflow leaves the variable as it was
                 self.emit(f"_t = {value_code}")
                 self.emit(f"if _t - _t: _t = _ovf(_t, {target_kind!r})")
                 value_code = "_t"
             self.emit(f"{name} = {value_code}")
-            self.made(target)
             return
         element = self.element(target, scope)
         if check:
@@ -515,16 +516,23 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.continue_after(stmt, fall_through=False)
 
     def made(self, target) -> None:
-        """Record that a statement made simple variable ``target`` (see Dialect.variables_made)
+        """Record that a statement makes simple variable ``target`` (see Dialect.variables_made)
         where a SWAP may ask: for the names that stand second in a SWAP of the area (so
-        other programs pay nothing), and for every name in a direct line."""
+        other programs pay nothing), and for every name in a direct line.  Where the area
+        counts its makings (``counts_made``: it reads FRE or may fill the 64 KB, see
+        :func:`_counts_made`) each name is made as GW's PTRGET makes it: counted from then
+        on by FRE even while it holds 0 or "", and ``Out of memory`` where it does not fit
+        (``_mk``: machine/variables.py)."""
         if self.variables_made and isinstance(target, ast.Var):
-            self.made_name(target.name)
+            self.made_name(target.name, counted=True)
 
-    def made_name(self, name: str) -> None:
-        """:meth:`made` for the simple variable called ``name``."""
+    def made_name(self, name: str, counted: bool = False) -> None:
+        """:meth:`made` for the simple variable called ``name`` (``counted``: taking its
+        bytes as a variable; a DEF FN parameter's are the function's, memory_model)."""
         name = self.numbers.name(name)
-        if self.direct or name in self.watched:
+        if counted and self.counts_made:
+            self.emit(f"if {name!r} not in _made: _mk({name!r})")
+        elif self.direct or name in self.watched:
             self.emit(f"_made.add({name!r})")
 
     def stmt_Swap(self, stmt, scope):
@@ -784,6 +792,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.numbers.set_types(statements)
         if self.variables_made:
             self.watched = _watched_names(self.flat, self.numbers.name)
+            self.counts_made = self.counts_strings and _counts_made(self.flat)
         for i, (number, stmt) in enumerate(self.flat):
             for s in ([] if isinstance(stmt, BasicError) else data_statements(stmt)):
                 self.data_lines.setdefault(number, len(self.data))
@@ -924,6 +933,15 @@ def _watched_names(flat, full_name):
         names.update(full_name(name) for s in statements if isinstance(s, ast.Common)
                      for name, is_array in s.names if not is_array)
     return frozenset(names)
+
+
+def _counts_made(flat) -> bool:
+    """Does an area count the making of its simple variables (compiler.made)?  Where it
+    reads FRE (a variable holding 0 or "" is counted from the statement that made it).
+    Other areas pay nothing for it: their variables are counted while they hold a value
+    other than 0 or "" (memory_model)."""
+    return any(isinstance(node, ast.Call) and node.name == "FRE"
+               for _, stmt in flat if not isinstance(stmt, BasicError) for node in nodes(stmt))
 
 
 def _array_loads(arrays: dict[str, int]) -> list[str]:

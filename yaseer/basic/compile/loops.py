@@ -271,6 +271,7 @@ class LoopCompiler:
         self.idle_body = j == i + 1 and not self.trace
         passes = self.constant_passes(stmt) if self.idle_body else None
         if passes is not None:  # a short delay loop: its variable's final value
+            self.made(stmt.var)
             self.emit(f"{scope.scalar(stmt.var.name, write=True)} = {passes[1]!r}")
             self.line = None
             self.set_line(self.flat[j][0])

@@ -12,8 +12,9 @@ variables, the arrays, and from the top down the strings; FRE is what lies betwe
   token, LINRES) and a 0 byte;
 * a simple variable: its type, two name characters, the count of the others and those
   others, then its value (2 bytes an integer, 4 a single, 8 a double, 3 a string's
-  descriptor); one that was never given a value other than 0 or "" is not counted (GW
-  makes one when it is first assigned);
+  descriptor); one holding 0 or "" only where a statement made it (GW's PTRGET makes it
+  when LET, FOR, INPUT, READ ... first name it, before the value is worked out; a
+  program that reads FRE records the makings: compiler.made);
 * a DEF FN: that header and 4 bytes, and 8 bytes a parameter (PC-BASIC 2.0.8's count);
 * an array: that header with its size (2), dimension count (1) and 2 bytes a dimension,
   then its elements;
@@ -62,9 +63,10 @@ def free_bytes(total: int, program: dict, scalars: dict, arrays: dict, array_dim
 
 
 def free_and_strings(total: int, program: dict, scalars: dict, arrays: dict, array_dims: dict,
-                     fns: dict, text=()) -> tuple[int, int]:
+                     fns: dict, text=(), made=()) -> tuple[int, int]:
     """(:func:`free_bytes`, the bytes of those strings); a string whose id is in ``text``
-    stays in the program text (a literal's, DATA's) and takes no string space."""
+    stays in the program text (a literal's, DATA's) and takes no string space; a simple
+    variable named in ``made`` is counted whatever it holds (a statement made it)."""
     used = sum(line_bytes(text) for text in program.values())
     strings = 0
     for name, value in scalars.items():
@@ -73,7 +75,9 @@ def free_and_strings(total: int, program: dict, scalars: dict, arrays: dict, arr
                 used += _name_bytes(name) + 3
                 if id(value) not in text:
                     strings += len(value)
-        elif value:
+            elif name in made:
+                used += _name_bytes(name) + 3
+        elif value or name in made:
             used += _name_bytes(name) + _VALUE_BYTES.get(name[-1], 4)
     for name, (_, parameters) in fns.items():  # a DEF FN: its entry, and a variable a parameter
         used += _name_bytes(name) + 4 + 8 * parameters

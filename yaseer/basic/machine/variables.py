@@ -121,13 +121,17 @@ class Variables:
         raise BasicError("Out of memory", OUT_OF_MEMORY)
 
     def _room_for_array(self) -> bool:
-        """gw: do the arrays fit in the 64 KB segment with the program, the variables and the
+        """gw: do the variables and arrays fit in the 64 KB segment with the program, the variables and the
         strings they hold?  Where the garbage of the string space is in the way it is
-        collected first, whether or not the array then fits (GWMAIN.ASM REASON calls GARBAG)."""
+        collected first, whether or not the array then fits (GWMAIN.ASM REASON calls GARBAG);
+        else the room new strings have left is counted again (less what was just made)."""
         names = string_space.block_locals()
         free, strings = self.measure_memory(names)
-        if free - self.string_space.garbage(strings) < 0:
-            self.string_space.collected(free, strings, names)
+        space = self.string_space
+        if free - space.garbage(strings) < 0:
+            space.collected(free, strings, names)
+        elif space.count[1] >= 0:  # the room left for new strings is less what was just made
+            space.count[1] = space.count[0] + free - space.garbage(strings)
         return free >= 0
 
     def erase(self, name: str) -> None:
@@ -188,7 +192,8 @@ class Variables:
         ``block_locals`` (its scalars' Python locals, not yet stored back) over the scalars."""
         scalars = self.scalars_with(block_locals)
         return memory_model.free_and_strings(self.dialect.free_memory, self.programs.get(0, {}), scalars,
-                                             self.arrays, self.array_dims, self.fns, self.string_space.text)
+                                             self.arrays, self.array_dims, self.fns, self.string_space.text,
+                                             self.made)
 
     def held_strings(self, block_locals: dict) -> set:
         """The ids of the string objects the variables hold (``block_locals`` as in
@@ -200,6 +205,17 @@ class Variables:
                 held.update(id(value) for value in memory_model.flat_strings(values))
         held.update(self.string_space.text)  # the literals and DATA: they stay in the program text
         return held
+
+    def make_variable(self, name: str) -> None:
+        """GW's PTRGET makes simple variable ``name`` (compiler.made, in an area that counts
+        its makings): FRE counts it from now on, whatever it holds; where it does not fit
+        in the 64 KB segment with the program, the other variables and the strings (the
+        garbage collected first) it is ``Out of memory`` and is not made (BIPTRG.ASM
+        SMKVAR moves the arrays up with BLTU, whose REASON gives OMERR)."""
+        self.made.add(name)
+        if not self._room_for_array():
+            self.made.discard(name)
+            raise BasicError("Out of memory", OUT_OF_MEMORY)
 
     def swap_second(self, name: str, value) -> None:
         """SWAP's second variable, a simple one, holding ``value``: it must exist (BIMISC.ASM

@@ -1,0 +1,101 @@
+"""Simple variables in GW-BASIC's 64 KB as PTRGET makes them (BIPTRG.ASM SMKVAR): a
+variable exists from the statement that first names it as a target (LET, FOR, READ ...),
+before that statement works out its value, whatever the value is, so ``F = FRE("")``
+counts F and ``A = 0`` counts A; where a new variable does not fit (BLTU's REASON, after a
+garbage collection) it is ``Out of memory`` (7) and is not made.  Generated programs with
+variables given 0, "" and other values, strings, an array that leaves little room and
+FRE(0)/FRE("") printed between, against PC-BASIC 2.0.8 (machine/memory_model.py,
+compiler.made)."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+
+from test_differential_support import base_seed, case_count, run_gw
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+
+_NAMES = ["A", "B", "AB", "XY1", "LONGER", "Q%", "R%", "COUNT%", "D#", "BIG#", "S$", "T$", "NAM$", "K!", "P1!"]
+
+
+def _statement(rng, names) -> str:
+    name = rng.choice(names)
+    string = name.endswith("$")
+    value = rng.choice(['""', '"AB"', f'STRING$({rng.randint(1, 60)}, "x")', 'S$ + "Z"']) if string else \
+        rng.choice(["0", "1", str(rng.randint(2, 999)), "FRE(0)", "-0"])
+    return rng.choice([
+        f"{name} = {value}", f"{name} = {value}", "PRINT FRE(0)", 'PRINT FRE("")', f"READ {name}",
+        f'F = FRE("")', "PRINT F", "FOR I = 0 TO 0: NEXT" if not string else f"{name} = {name}",
+        f"PRINT {name}", f"SWAP {name}, {name}",
+    ])
+
+
+def _program(rng) -> str:
+    names = rng.sample(_NAMES, rng.randint(4, len(_NAMES)))
+    lines = ["10 ON ERROR GOTO 900"]
+    if rng.random() < 0.7:  # an array that leaves a few hundred bytes, so that variables run out
+        lines.append(f"20 DIM Z(FRE(0) / 4 - {rng.randint(8, 40)}): PRINT FRE(0)")
+    for k in range(rng.randint(2, 6)):
+        lines.append(f"{30 + k} " + ": ".join(_statement(rng, names) for _ in range(rng.randint(2, 6))))
+    lines += ['800 PRINT FRE(0); FRE(""): END', "850 DATA 00, 07, \"\", ABC, 00, 12, \"\", 00, 05, QQ, 00, 00, 03, \"\", 09",
+              '900 PRINT "E"; ERR; ERL; FRE(0): END']
+    return "\n".join(lines) + "\n"
+
+
+@pytest.fixture(scope="module")
+def pc_reason():
+    """PC-BASIC 2.0.8 with its room test made GW-BASIC's: REASON (BIMISC.ASM) refuses a new
+    end of the variables only past FRETOP, so a variable that fits exactly (FRE = its
+    bytes) is made, where PC-BASIC's ``check_free`` refuses it (``free <= size``)."""
+    from pcbasic.basic.memory.memory import DataSegment
+
+    from test_differential_support import PcBasic
+
+    original = DataSegment.check_free
+
+    def check_free(self, size, err):
+        if self._get_free() < size:
+            self._collect_garbage()
+            if self._get_free() < size:
+                from pcbasic.basic.base import error
+
+                raise error.BASICError(err)
+
+    DataSegment.check_free = check_free
+    session = PcBasic()
+    yield session
+    session.close()
+    DataSegment.check_free = original
+
+
+def test_variables_are_made_and_counted_as_pcbasic(pc_reason):
+    pc = pc_reason
+    rng = random.Random(base_seed() + 71)
+    bad = []
+    count = max(case_count() // 3, 40)
+    out_of_memory = 0
+    for _ in range(count):
+        source = _program(rng)
+        pc.statement("ON ERROR GOTO 0")
+        theirs, ours = pc.program(source), run_gw(source)
+        out_of_memory += "E 7 " in theirs
+        if theirs != ours:
+            bad.append((source, theirs, ours))
+    assert not bad, f"{len(bad)} of {count} differ, e.g. {bad[:2]}"
+    assert out_of_memory >= count // 8, out_of_memory  # the programs reach the limit
+
+
+@pytest.mark.parametrize("source, expected", [
+    ('10 F = FRE(""): PRINT F\n', " 60272 \n"),  # the line 20 bytes, F (4 + 4) made before FRE runs
+    ('10 A = 0: B$ = "": C% = 0: PRINT FRE(0)\n', " 60243 \n"),  # A 8, B$ 4 + 3, C% 4 + 2
+    ("10 FOR I = 0 TO 0: NEXT: PRINT FRE(0)\n", " 60264 \n"),
+    ("10 PRINT A: PRINT FRE(0): A = A: PRINT FRE(0)\n", " 0 \n 60267 \n 60259 \n"),  # reading makes none
+])
+def test_a_variable_holding_zero_is_counted_from_its_making(source, expected):
+    """Values worked out from the layout (60300 less the line: link 2, number 2, tokens, 0;
+    less 4 bytes of header and the value's bytes a variable; FRE's token 2 bytes) and as
+    PC-BASIC 2.0.8 prints them."""
+    assert run_gw(source) == expected
+
