@@ -2,9 +2,9 @@
 segment the program, its variables, arrays and strings leave, against PC-BASIC 2.0.8 (which
 counts GW-BASIC's layout the same way) on programs whose every variable gets a value other
 than 0 or "" from an expression, and on two of the classic workloads.  Where the model
-differs (a literal of one character, a variable given 0, an array used without DIM
-counted from the start of its block) is written in the module's docstring and
-docs/compatibility.md."""
+differs (a literal of one character) is written in the module's docstring and
+docs/compatibility.md; variables given 0 or "" and arrays used without DIM:
+tests/test_gw_memory_making.py."""
 
 from __future__ import annotations
 

@@ -261,6 +261,10 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.emit(f"{name} = {value_code}")
             return
         element = self.element(target, scope)
+        if self.counts_made:  # LET's PTRGET makes an array used without DIM before the value is worked out
+            name = self.numbers.name(target.name)
+            local = array_local(name)
+            self.emit(f"if {local} is None: {local} = _arr({name!r}, {len(target.indices)})")
         if check:
             self.emit(f"_t = {value_code}")
             self.emit(f"if _t - _t: _t = _ovf(_t, {target_kind!r})")
@@ -837,7 +841,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         names = sorted(block.scalars)
         written = [n for n in names if block.scalars[n]]
         load = "; ".join(f"{local_name(n)} = _S[{n!r}]" for n in names)
-        load_arrays = _array_loads(block.arrays)
+        load_arrays = _array_loads(block.arrays, lazy=self.counts_made)
         store = "; ".join(f"_S[{n!r}] = {local_name(n)}" for n in written)
         loop_back = f"return {block.number}"
         self_loop = any(text == loop_back or text.endswith(": " + loop_back) for _, text in block.code)
@@ -944,13 +948,17 @@ def _counts_made(flat) -> bool:
                for _, stmt in flat if not isinstance(stmt, BasicError) for node in nodes(stmt))
 
 
-def _array_loads(arrays: dict[str, int]) -> list[str]:
+def _array_loads(arrays: dict[str, int], lazy: bool = False) -> list[str]:
     """The lines binding a block's arrays (name -> dimensions) to its locals: subscripts of the
     dictionary of arrays where all exist (a method call each cost a GOSUB PROG, which reloads
-    them after the call, a few microseconds), else each made at its first use as ``_arr`` does."""
+    them after the call, a few microseconds), else each made as the block starts as ``_arr``
+    does.  ``lazy`` (an area that counts its makings: compiler.made): None for one not made
+    yet, which the block makes where it first uses it (expressions.BlockScope.array)."""
     if not arrays:
         return []
     names = sorted(arrays)
+    if lazy:
+        return ["; ".join(f"{array_local(a)} = _A.get({a!r})" for a in names)]
     return [f"try: {'; '.join(f'{array_local(a)} = _A[{a!r}]' for a in names)}",
             f"except KeyError: {'; '.join(f'{array_local(a)} = _A.get({a!r}) or _arr({a!r}, {arrays[a]})' for a in names)}"]
 

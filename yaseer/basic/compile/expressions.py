@@ -99,7 +99,10 @@ class BlockScope:
         block = self.compiler.cur
         name = self.compiler.numbers.name(name)
         block.arrays.setdefault(name, ndim)
-        return array_local(name)
+        local = array_local(name)
+        if self.compiler.counts_made:  # made where it is first used, not as the block starts
+            return f"({local} or ({local} := _arr({name!r}, {ndim})))"
+        return local
 
 
 class FnScope:
