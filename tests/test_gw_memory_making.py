@@ -138,3 +138,37 @@ def test_arrays_used_without_dim_are_made_where_they_are_first_used_as_pcbasic(p
         if theirs != ours:
             bad.append((source, theirs, ours))
     assert not bad, f"{len(bad)} of {count} differ, e.g. {bad[:2]}"
+
+
+def _many_variables_program(rng) -> str:
+    """A long program that makes simple variables until the 64 KB run out: a few each line,
+    a count of the lines passed, and an error handler printing ERR, ERL, the count and
+    FRE(0) (an area that does not read FRE does not check its makings: docs/compatibility.md)."""
+    letters = "ABCDEGHJKLMNPQSUVWXYZ"  # (no F: FN starts a function)
+    numbers = rng.sample(range(1, 9999), 4000)
+    names = [f"{rng.choice(letters)}{n}{rng.choice(['', '', '%', '!', '#', '$'])}" for n in numbers]
+    lines, k = ["10 ON ERROR GOTO 9000"], 0
+    number = 20
+    while k < len(names):
+        step = rng.randint(1, 8)
+        parts = [f'{name}={"" if not name.endswith("$") else chr(34) + "AB" + chr(34)}'
+                 f'{rng.randint(0, 9) if not name.endswith("$") else ""}' for name in names[k:k + step]]
+        lines.append(f"{number} " + ":".join(parts + ["C=C+1"]))
+        k += step
+        number += 1
+    lines += ['8999 PRINT "DONE"; C: END', '9000 PRINT "E"; ERR; ERL; C; FRE(0): END']
+    return "\n".join(lines) + "\n"
+
+
+def test_a_program_that_makes_many_variables_runs_out_of_memory_as_pcbasic(pc_reason):
+    """A new simple variable that does not fit is ``Out of memory`` at the statement that
+    makes it (BIPTRG.ASM SMKVAR, BLTU, REASON), in a program that reads FRE (the areas
+    that count their makings: compiler._counts_made); against PC-BASIC 2.0.8 with GW's
+    room test."""
+    rng = random.Random(base_seed() + 73)
+    for _ in range(3):
+        source = _many_variables_program(rng)
+        pc_reason.statement("ON ERROR GOTO 0")
+        theirs = pc_reason.program(source)
+        assert "E 7 " in theirs
+        assert run_gw(source) == theirs

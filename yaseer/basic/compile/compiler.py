@@ -523,8 +523,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         """Record that a statement makes simple variable ``target`` (see Dialect.variables_made)
         where a SWAP may ask: for the names that stand second in a SWAP of the area (so
         other programs pay nothing), and for every name in a direct line.  Where the area
-        counts its makings (``counts_made``: it reads FRE or may fill the 64 KB, see
-        :func:`_counts_made`) each name is made as GW's PTRGET makes it: counted from then
+        counts its makings (``counts_made``: it reads FRE, see :func:`_counts_made`) each name is made as GW's PTRGET makes it: counted from then
         on by FRE even while it holds 0 or "", and ``Out of memory`` where it does not fit
         (``_mk``: machine/variables.py)."""
         if self.variables_made and isinstance(target, ast.Var):
@@ -943,7 +942,7 @@ def _counts_made(flat) -> bool:
     """Does an area count the making of its simple variables (compiler.made)?  Where it
     reads FRE (a variable holding 0 or "" is counted from the statement that made it).
     Other areas pay nothing for it: their variables are counted while they hold a value
-    other than 0 or "" (memory_model)."""
+    other than 0 or "" (memory_model), and a new one is not checked against the 64 KB."""
     return any(isinstance(node, ast.Call) and node.name == "FRE"
                for _, stmt in flat if not isinstance(stmt, BasicError) for node in nodes(stmt))
 

@@ -49,6 +49,11 @@ def line_bytes(text: str) -> int:
     return size
 
 
+def variable_bytes(name: str) -> int:
+    """The bytes simple variable ``name`` (with its type character) takes: header and value."""
+    return _name_bytes(name) + _VALUE_BYTES.get(name[-1], 4)
+
+
 def _name_bytes(name: str) -> int:
     """A variable's header: its type, two name characters, the count of the others and those."""
     letters = len(name.rstrip("%!#$"))

@@ -124,13 +124,16 @@ class Variables:
         """gw: do the variables and arrays fit in the 64 KB segment with the program, the variables and the
         strings they hold?  Where the garbage of the string space is in the way it is
         collected first, whether or not the array then fits (GWMAIN.ASM REASON calls GARBAG);
-        else the room new strings have left is counted again (less what was just made)."""
+        else the room new strings have left is counted again (less what was just made), which
+        make_variable then takes its bytes from without counting the whole segment again."""
         names = string_space.block_locals()
         free, strings = self.measure_memory(names)
         space = self.string_space
         if free - space.garbage(strings) < 0:
             space.collected(free, strings, names)
-        elif space.count[1] >= 0:  # the room left for new strings is less what was just made
+        else:  # the room left for new strings, less what was just made (none is garbage if none was known)
+            if space.base is None:
+                space.base = (strings, space.count[0])
             space.count[1] = space.count[0] + free - space.garbage(strings)
         return free >= 0
 
@@ -213,6 +216,11 @@ class Variables:
         garbage collected first) it is ``Out of memory`` and is not made (BIPTRG.ASM
         SMKVAR moves the arrays up with BLTU, whose REASON gives OMERR)."""
         self.made.add(name)
+        count = self.string_space.count
+        size = memory_model.variable_bytes(name)
+        if count[1] - count[0] >= size and count[1] >= 0:  # room the strings surely leave
+            count[1] -= size
+            return
         if not self._room_for_array():
             self.made.discard(name)
             raise BasicError("Out of memory", OUT_OF_MEMORY)
