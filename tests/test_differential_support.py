@@ -306,6 +306,21 @@ def run_gw(source: str) -> str:
     return run_yaseer(source, angle=None, dialect="gw")
 
 
+def gw_programs_differing(pc, make, count: int, mark: str | None = None, tail: int | None = None):
+    """Run ``count`` programs ``make()`` in PC-BASIC session ``pc`` and in yaseer's gw:
+    ([(source, PC-BASIC's output, yaseer's)] where they differ, the outputs cut to their
+    last ``tail`` characters; how many of PC-BASIC's outputs hold ``mark``)."""
+    bad, marked = [], 0
+    for _ in range(count):
+        source = make()
+        pc.statement("ON ERROR GOTO 0")
+        theirs, ours = pc.program(source), run_gw(source)
+        marked += mark is not None and mark in theirs
+        if theirs != ours:
+            bad.append((source, theirs[-tail:] if tail else theirs, ours[-tail:] if tail else ours))
+    return bad, marked
+
+
 def run_direct(text: str, dialect: str = "gw") -> str:
     """yaseer's output for one statement typed in direct mode, then its error line if it fails
     (as PC-BASIC shows a direct statement)."""

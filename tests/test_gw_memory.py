@@ -78,19 +78,11 @@ def test_string_space_fills_and_is_collected_as_pcbasic(pc):
     FRE("") without it as PC-BASIC 2.0.8 reports them (BISTRS.ASM GETSPA, GARBAG, FRE)."""
     import random
 
-    from test_differential_support import base_seed, case_count
+    from test_differential_support import base_seed, case_count, gw_programs_differing
 
     rng = random.Random(base_seed() + 51)
-    bad = []
     count = max(case_count() // 10, 12)
-    errors = 0
-    for _ in range(count):
-        source = _string_space_program(rng)
-        pc.statement("ON ERROR GOTO 0")
-        theirs, ours = pc.program(source), run_gw(source)
-        errors += "E 14" in theirs
-        if theirs != ours:
-            bad.append((source, theirs[-200:], ours[-200:]))
+    bad, errors = gw_programs_differing(pc, lambda: _string_space_program(rng), count, "E 14", tail=200)
     assert not bad, f"{len(bad)} of {count} differ, e.g. {bad[:2]}"
     assert errors >= count // 5, errors  # the programs reach the limit, not only collect
 

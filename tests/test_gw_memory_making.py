@@ -13,7 +13,7 @@ import random
 
 import pytest
 
-from test_differential_support import base_seed, case_count, run_gw
+from test_differential_support import base_seed, case_count, gw_programs_differing, run_gw
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 
@@ -71,18 +71,9 @@ def pc_reason():
 
 
 def test_variables_are_made_and_counted_as_pcbasic(pc_reason):
-    pc = pc_reason
     rng = random.Random(base_seed() + 71)
-    bad = []
     count = max(case_count() // 3, 40)
-    out_of_memory = 0
-    for _ in range(count):
-        source = _program(rng)
-        pc.statement("ON ERROR GOTO 0")
-        theirs, ours = pc.program(source), run_gw(source)
-        out_of_memory += "E 7 " in theirs
-        if theirs != ours:
-            bad.append((source, theirs, ours))
+    bad, out_of_memory = gw_programs_differing(pc_reason, lambda: _program(rng), count, "E 7 ")
     assert not bad, f"{len(bad)} of {count} differ, e.g. {bad[:2]}"
     assert out_of_memory >= count // 8, out_of_memory  # the programs reach the limit
 
@@ -129,14 +120,8 @@ def test_arrays_used_without_dim_are_made_where_they_are_first_used_as_pcbasic(p
     with the default size, ``NOTDIM``), so FRE(0) printed before it, in the same statement
     or line, does not count it; generated programs against PC-BASIC 2.0.8."""
     rng = random.Random(base_seed() + 72)
-    bad = []
     count = max(case_count() // 3, 40)
-    for _ in range(count):
-        source = _array_program(rng)
-        pc.statement("ON ERROR GOTO 0")
-        theirs, ours = pc.program(source), run_gw(source)
-        if theirs != ours:
-            bad.append((source, theirs, ours))
+    bad, _ = gw_programs_differing(pc, lambda: _array_program(rng), count)
     assert not bad, f"{len(bad)} of {count} differ, e.g. {bad[:2]}"
 
 

@@ -11,7 +11,7 @@ import random
 
 import pytest
 
-from test_differential_support import base_seed, case_count, run_gw
+from test_differential_support import base_seed, case_count, gw_programs_differing
 from yaseer.basic.machine.memory_model import line_bytes
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
@@ -36,16 +36,14 @@ def _statement(rng) -> str:
 
 def test_line_numbers_take_three_bytes_where_crunch_takes_them_as_pcbasic(pc):
     rng = random.Random(base_seed() + 61)
-    bad = []
     count = max(case_count() // 5, 30)
-    for _ in range(count):
+
+    def program() -> str:
         lines = [f"{20 + i} " + ": ".join(_statement(rng) for _ in range(rng.randint(1, 3)))
                  for i in range(rng.randint(1, 4))]
-        source = "10 GOTO 100\n" + "\n".join(lines) + "\n100 PRINT FRE(0)\n"
-        pc.statement("ON ERROR GOTO 0")
-        theirs, ours = pc.program(source), run_gw(source)
-        if theirs != ours:
-            bad.append((source, theirs, ours))
+        return "10 GOTO 100\n" + "\n".join(lines) + "\n100 PRINT FRE(0)\n"
+
+    bad, _ = gw_programs_differing(pc, program, count)
     assert not bad, f"{len(bad)} of {count} differ, e.g. {bad[:3]}"
 
 

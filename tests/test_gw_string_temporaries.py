@@ -23,7 +23,7 @@ import random
 
 import pytest
 
-from test_differential_support import base_seed, case_count, run_gw
+from test_differential_support import base_seed, case_count, gw_programs_differing, run_gw
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 
@@ -116,12 +116,6 @@ def test_used_up_strings_leave_no_garbage_as_pcbasic(pc):
     """Where each statement uses up at most one new string, PC-BASIC 2.0.8's giving back at
     the next expression and GW's at once leave the same FRE(0)."""
     rng = random.Random(base_seed() + 54)
-    bad = []
     count = max(case_count() // 15, 12)
-    for _ in range(count):
-        source = _used_up_program(rng)
-        pc.statement("ON ERROR GOTO 0")
-        theirs, ours = pc.program(source), run_gw(source)
-        if theirs != ours:
-            bad.append((source, theirs[-300:], ours[-300:]))
+    bad, _ = gw_programs_differing(pc, lambda: _used_up_program(rng), count, tail=300)
     assert not bad, f"{len(bad)} of {count} differ, e.g. {bad[:1]}"
