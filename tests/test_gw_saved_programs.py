@@ -358,3 +358,18 @@ def test_the_api_lists_a_tokenised_file_as_list_shows_it(pc):
     printed = clean_output(session.execute('RUN "THIRD"'))
     result = yaseer.run(data, dialect="gw")
     assert (result.listing, result.text) == (clean_output(session.execute("LIST")), printed)
+
+
+def test_chain_s_delete_range_and_a_direct_error_as_the_source_reads_dot(tmp_path):
+    """CHAIN MERGE's DELETE range is read by GWMAIN.ASM SCNLIN, whose LINSPC takes ``.`` as DOT
+    (FIVEO.ASM CHAIN; PC-BASIC 2.0.8 calls it Illegal function call, the source decides); a
+    direct statement's error, even one a program's ON ERROR catches, leaves DOT (GWMAIN.ASM
+    ERROR stores it only when the line is not the direct one)."""
+    (tmp_path / "OV.BAS").write_bytes(b'100 PRINT "OVERLAY"\r\n110 LIST\r\n')
+    session, shown = gw_session(tmp_path)
+    assert typed(session, shown, ["NEW", '10 PRINT "A"', '20 CHAIN MERGE "OV", 100, DELETE .-40', "30 PRINT 3",
+                                  "40 PRINT 4", "50 PRINT 5", "LIST 30", "RUN"]) == \
+        '30 PRINT 3\nA\nOVERLAY\n10 PRINT "A"\n20 CHAIN MERGE "OV", 100, DELETE .-40\n50 PRINT 5\n' \
+        '100 PRINT "OVERLAY"\n110 LIST\n'
+    typed(session, shown, ["NEW", "10 ON ERROR GOTO 100", "20 STOP", "100 RESUME NEXT", "RUN", "LIST 10"])
+    assert typed(session, shown, ["ERROR 5", "LIST ."])[-len("10 ON ERROR GOTO 100\n"):] == "10 ON ERROR GOTO 100\n"
