@@ -410,20 +410,24 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
     return (single, "!"), end
 
 
-# A double constant as a tokenised program file holds it (the 0x1F token and MKD$'s 8 bytes)
-# where the 16 digits LIST shows would not read back to the same 56 bits: this control
-# character and the 8 bytes in 16 hexadecimal digits (program_file.detokenise writes it,
-# program_crunch.crunch_line stores it back as its bytes).  GW-BASIC's CRUNCH makes any typed
-# control character a blank, so no line typed into GW-BASIC holds one.
-EXACT_DOUBLE = "\x1f"
-_EXACT_DOUBLE = re.compile("\x1f([0-9A-F]{16})")
+# A number constant as a tokenised program file holds it (the 0x1F token and MKD$'s 8 bytes,
+# the 0x1D token and MKS$'s 4) where the digits LIST shows (16, 7) would not read back to the
+# same bits: the token's own control character and the bytes in hexadecimal
+# (program_file.detokenise writes it, program_crunch.crunch_line stores it back as its
+# bytes).  GW-BASIC's CRUNCH makes any typed control character a blank, so no line typed
+# into GW-BASIC holds one.
+EXACT_DOUBLE, EXACT_SINGLE = "\x1f", "\x1d"
+EXACT_MARKERS = EXACT_DOUBLE + EXACT_SINGLE
+_EXACT = re.compile("\x1f([0-9A-F]{16})|\x1d([0-9A-F]{8})")
 
 
-def exact_double(text: str, i: int) -> tuple[bytes, int] | None:
-    """The 8 bytes of an :data:`EXACT_DOUBLE` constant at ``text[i]`` and the position after
-    it; None if there is none."""
-    match = _EXACT_DOUBLE.match(text, i)
-    return (bytes.fromhex(match.group(1)), match.end()) if match else None
+def exact_constant(text: str, i: int) -> tuple[str, bytes, int] | None:
+    """The marker (:data:`EXACT_DOUBLE` or :data:`EXACT_SINGLE`) and bytes of an exact
+    constant at ``text[i]``, and the position after it; None if there is none."""
+    match = _EXACT.match(text, i)
+    if match is None:
+        return None
+    return text[i], bytes.fromhex(match.group(1) or match.group(2)), match.end()
 
 
 def gw_number(upper: str, i: int) -> tuple[tuple, int]:
@@ -493,14 +497,17 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
         elif ch == "'":
             yield "REMARK", text[i + 1:], start, n
             return
-        elif ch == EXACT_DOUBLE and typed:
-            found = exact_double(upper, i)
+        elif ch in EXACT_MARKERS and typed:
+            found = exact_constant(upper, i)
             if found is None:
                 raise _syntax_error()
             from yaseer.basic.arithmetic.values import wide_literal  # here: only such files need it
 
-            data, i = found
-            yield "NUMBER", (wide_literal(data.hex()), "#"), start, i
+            marker, data, i = found
+            if marker == EXACT_DOUBLE:
+                yield "NUMBER", (wide_literal(data.hex()), "#"), start, i
+            else:  # a single's 4 bytes are a double's with 4 low bytes of 0: exact in a float
+                yield "NUMBER", (wide_literal("00000000" + data.hex()), "!"), start, i
         elif ch.isdigit() or (ch == "." and i + 1 < n and upper[i + 1].isdigit()) or (ch in "&." and typed):
             value, i = _scan_typed_number(upper, i, notes) if typed else _scan_number(upper, i)
             yield "NUMBER", value, start, i
