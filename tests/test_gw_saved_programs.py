@@ -307,6 +307,37 @@ def test_an_ascii_file_s_last_line_is_dot(pc, tmp_path):
     assert done.stdout.decode() == expected
 
 
+def test_a_tokenised_file_leaves_dot(tmp_path):
+    """A tokenised file's lines are not entered as typed ones (DSKCOM.ASM's binary LOAD copies
+    them; only GWMAIN.ASM's line entry and LIST store DOT): the API and ``yaseer run`` start
+    it with DOT 0, as a fresh PC-BASIC 2.0.8 runs it (before, the last line was current)."""
+    import pcbasic
+
+    (tmp_path / "DOTS.BAS").write_bytes(b"\xff")  # replaced below by PC-BASIC's own SAVE
+    session = pcbasic.Session(output_streams=None, input_streams=None, devices={"C:": str(tmp_path)},
+                              current_device="C:")
+    session.start()
+    try:
+        session.execute("NEW")
+        session.execute("10 PRINT 1\n20 LIST .\n30 PRINT 3")
+        session.execute('SAVE "DOTS"')
+    finally:
+        session.close()
+    fresh = pcbasic.Session(output_streams=None, input_streams=None, devices={"C:": str(tmp_path)},
+                            current_device="C:")
+    fresh.start()
+    try:
+        expected = clean_output(fresh.execute('RUN "DOTS"'))
+    finally:
+        fresh.close()
+    data = (tmp_path / "DOTS.BAS").read_bytes()
+    assert data[0] == 0xFF and expected == " 1 \n"
+    assert yaseer.run(data, dialect="gw").text == expected
+    done = subprocess.run([sys.executable, "-m", "yaseer", "--dialect", "gw", "run", "DOTS.BAS"],
+                          capture_output=True, cwd=tmp_path, timeout=60)
+    assert done.stdout.decode() == expected
+
+
 def test_dot_in_a_program_as_the_source_keeps_it(tmp_path):
     """Where PC-BASIC 2.0.8 differs the source decides: GWMAIN.ASM ERROR stores the error's line
     in DOT before it looks for a trap (PC-BASIC leaves DOT), so a handler's ``LIST .`` and a
