@@ -490,7 +490,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             ns.update({"_ran": self.ran, "_valf": self.valf, "_fre0": self.free_area, "_sroom": self.string_room})
         ns.update(self._trig_functions())
         if self.dialect.arithmetic == "decimal":
-            from yaseer.basic.arithmetic import decimal_arith, decimal_scales  # here: only --arith decimal loads the decimal module
+            from yaseer.basic.arithmetic import decimal_arith, decimal_calls, decimal_scales  # here: only --arith decimal loads the decimal module
 
             if self.dialect.words:
                 ns.update(decimal_arith.rounding_all(casio_math.RUNTIME))
@@ -498,6 +498,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             ns.update(self._trig_functions())
             ns.update(decimal_arith.rounding_all({name: ns[name] for name in decimal_arith.ENTERING if name in ns}))
             ns.update(decimal_scales.writers(ns))
+            ns.update(decimal_calls.helpers(ns))
+            ns["_rndr"] = self._first_raw_draw
         self.namespaces[area] = ns
         return ns
 
@@ -896,15 +898,25 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
 
     def _first_draw(self) -> float:
         """RND's next number, the first time an area draws one: from then on each area's
-        ``_rndf`` (RND and RND(x) with a constant x > 0) is the generator's own drawer."""
-        draw = self.random.drawer()
-        if self.dialect.arithmetic == "decimal":  # (12-digit decimals, as the namespace's other entries)
+        ``_rndf`` (RND and RND(x) with a constant x > 0) is the generator's own drawer
+        (in decimal arithmetic rounded to 12 digits, as the namespace's other entries)."""
+        return self._set_drawers()[1]()
+
+    def _first_raw_draw(self) -> float:
+        """``_rndr``'s first number (decimal arithmetic, whose compiled code rounds it): from then
+        on each area's ``_rndr`` is the generator's own drawer, ``_rndf`` as :meth:`_first_draw`."""
+        return self._set_drawers()[0]()
+
+    def _set_drawers(self) -> tuple:
+        """Every area's ``_rndr`` and ``_rndf``: (the generator's drawer, the one RND calls)."""
+        draw = rounded_draw = self.random.drawer()
+        if self.dialect.arithmetic == "decimal":
             from yaseer.basic.arithmetic.decimal_arith import rounding
 
-            draw = rounding(draw)
+            rounded_draw = rounding(draw)
         for namespace in self.namespaces.values():
-            namespace["_rndf"] = draw
-        return draw()
+            namespace["_rndr"], namespace["_rndf"] = draw, rounded_draw
+        return draw, rounded_draw
 
     def randomize(self, seed, kind: str = "!") -> None:
         """RANDOMIZE seed; ``kind`` is the seed's type ("%", "!", "#", see yaseer.basic.arithmetic.randomness).
