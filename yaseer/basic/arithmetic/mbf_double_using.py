@@ -127,3 +127,11 @@ def scientific_digits(p: tuple[bool, int, int], digits: int) -> tuple[int, int]:
         n = _rounded_whole(mbf_double.multiply(mbf_double.from_integer(n), TENTH))
         power += 1
     return n, power
+
+
+def printed_digits(p: tuple[bool, int, int]) -> tuple[int, int]:
+    """PRINT's (and STR$'s) 16 digits of a nonzero double's magnitude, as ``$FOFMT`` finds
+    them (MATH1.ASM): ``$FOTNV``'s bracket rounded to a whole number by ``$FOTCV``;
+    ``(n, power)``, the magnitude about ``n * 10**power``, ``n`` of 16 digits."""
+    b, power = bracketed(p)
+    return _rounded_whole(b), power
