@@ -106,6 +106,33 @@ def test_for_next_step():  # FOR_NEXT_STEP.md items 1, 6, 7, 8
     assert run_text("10 FOR I=1 TO 3: GOTO 30\n20 NEXT I: PRINT I: END\n30 PRINT I;: GOTO 20\n") == " 1  2  3  4 \n"
 
 
+def _loops(depth: int, names: str = "ABDEGHJKLMPQRSUVWXYZ") -> list[str]:
+    """``depth`` nested one-pass FOR statements over distinct two-character names."""
+    return [f"FOR {names[k % 20]}{k // 20} = 1 TO 1" for k in range(depth)]
+
+
+def test_for_nests_29_levels():  # FOR_NEXT_STEP.md item 4, specifications.md: 29 FOR levels; a 30th is OM
+    for depth in (29, 30):
+        fors = _loops(depth)
+        body = fors + ["C = C + 1"] + ["NEXT"] * depth + ["PRINT C"]
+        by_lines = "".join(f"{10 * (n + 1)} {statement}\n" for n, statement in enumerate(body))
+        expected = (None, " 1 \n") if depth == 29 else (f"Out of memory in {10 * depth}", "")  # the 30th FOR's line
+        assert (run(by_lines).error, run(by_lines).text) == expected
+        one_line = run("10 " + ": ".join(body))
+        assert (one_line.error, one_line.text) == ((None, " 1 \n") if depth == 29 else ("Out of memory in 10", ""))
+        assert run(by_lines, dialect="gw").text == " 1 \n"  # GW-BASIC's stack holds more
+    # a FOR that re-opens its loop (a GOTO back to it) takes no new level: 100 passes in 2 levels
+    assert run_text("10 FOR I=1 TO 100: FOR J=1 TO 2\n20 C=C+1: GOTO 40\n30 NEXT J\n40 NEXT I: PRINT C\n") == " 100 \n"
+    # RETURN closes the loops its subroutine opened; a subroutine's FOR at the 30th level is OM
+    inside = _loops(28)
+    sub = "90 FOR Z=1 TO 1: FOR Y=1 TO 1: N=N+1: NEXT Y, Z: RETURN"
+    assert run("10 " + ": ".join(inside + ["GOSUB 90"] + ["NEXT"] * 28 + ["PRINT N: END"]) + "\n" + sub).error == \
+        "Out of memory in 90"
+    assert run("10 " + ": ".join(_loops(27) + ["GOSUB 90"] + ["NEXT"] * 27 + ["PRINT N: END"]) + "\n" + sub).text == " 1 \n"
+    # ON ERROR sees the OM error's code 1 (part-12-2-error-messages.md)
+    assert run("5 ON ERROR GOTO 90\n10 " + ": ".join(_loops(30)) + "\n90 PRINT ERR: END").text == " 1 \n"
+
+
 def test_gosub():  # GOSUB.md items 1, 3: nested subroutines; a missing line is the UL error
     program = ('10 GOSUB 40\n20 PRINT "C"\n30 END\n40 PRINT "A";\n50 GOSUB 70\n60 RETURN\n'
                '70 PRINT "B";\n80 RETURN\n')

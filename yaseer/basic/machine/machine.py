@@ -292,6 +292,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.files = FileTable(Sandbox(files), self.dialect.file_devices, words.absent_devices if words else None)
         self._output_eof = bool(words and words.output_eof)  # casio: EOF of an output file is 0 (EOF.md item 4)
         self.gosub_levels = words.gosub_levels if words else None  # casio: 96 (GOSUB.md item 2)
+        self.for_levels = words.for_levels if words else None  # casio: 29 (FOR_NEXT_STEP.md item 4)
         # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
         # ``yaseer run`` stops at once): see _on_interrupt.
         self.resumable_breaks = False
@@ -452,7 +453,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_wh": self.while_loops, "_END": END, "_DirectJump": DirectJump,
             "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
             "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,
-            "_oom": self._out_of_memory, "_deep": self.gosubs_full, "_call": self.call_area, "_call_file": self.call_file,
+            "_oom": self._out_of_memory, "_deep": self.gosubs_full, "_loops": self.open_loops, "_call": self.call_area, "_call_file": self.call_file,
             "_bank": self.data_bank,
             "_on": self.on_index, "_for": self.for_push, "_next": self.next_frame,
             "_pop": self.stack.pop, "_next_any": self.next_any, "_stop": self._stopper(area),
