@@ -262,7 +262,7 @@ BANK = '10 NEW#: WRITE# "OAK", 30: WRITE# "ELM", 12: WRITE# "ASH", 7\n'
 
 
 def test_write_hash():  # WRITE_HASH.md: records of items at the pointer
-    assert run(BANK + "20 LIST#").text == "OAK, 30\nELM, 12\nASH, 7\n"
+    assert run(BANK + "20 LIST#").text == "1 OAK, 30\n2 ELM, 12\n3 ASH, 7\n"
 
 
 def test_read_hash():  # READ_HASH.md: item after item, across records
@@ -273,8 +273,11 @@ def test_restore_hash():  # RESTORE_HASH.md: to the next item beginning with the
     assert run(BANK + '20 RESTORE#: RESTORE# "AS": READ# C$, C: PRINT C$; C').text == "ASH 7 \n"
 
 
-def test_list_hash():  # LIST_HASH.md item 1: the records in sequence
-    assert run(BANK + "20 LIST#").text.splitlines() == ["OAK, 30", "ELM, 12", "ASH, 7"]
+def test_list_hash():  # LIST_HASH.md items 1-2: the records in sequence, each after its record number
+    records = ["OAK, 30", "ELM, 12", "ASH, 7"]
+    assert run(BANK + "20 LIST#").text.splitlines() == [f"{n} {r}" for n, r in enumerate(records, 1)]
+    # part 5: the record number is the DATA BANK's line number: a record written later is listed later
+    assert run(BANK + '20 WRITE# "FIR", 2: LIST#').text.splitlines()[-1] == "4 FIR, 2"
 
 
 def test_new_hash():  # NEW_HASH.md item 1: all records cleared
@@ -283,13 +286,13 @@ def test_new_hash():  # NEW_HASH.md item 1: all records cleared
 
 def test_save_hash_and_load_hash(tmp_path):  # SAVE_HASH.md items 1-3, LOAD_HASH.md items 1-2 (,M appends)
     program = BANK + '20 SAVE# "CAS0:TREES": NEW#: LOAD# "TREES": LOAD# "CAS0:TREES", M: LIST#'
-    assert run(program, files=tmp_path).text.splitlines() == ["OAK, 30", "ELM, 12", "ASH, 7"] * 2
+    assert run(program, files=tmp_path).text.splitlines() == [f"{n} {r}" for n, r in enumerate(["OAK, 30", "ELM, 12", "ASH, 7"] * 2, 1)]
 
 
-def test_llist_hash():  # LLIST_HASH.md items 1, 3: the records to the printer; not with a password
+def test_llist_hash():  # LLIST_HASH.md items 1-3: the records to the printer; not with a password
     printer = io.StringIO()
     result = run(BANK + '20 LLIST#: PRINT "DONE"', printer=printer)
-    assert (result.text, printer.getvalue()) == ("DONE\n", "OAK, 30\nELM, 12\nASH, 7\n")  # was a Syntax error
+    assert (result.text, printer.getvalue()) == ("DONE\n", "1 OAK, 30\n2 ELM, 12\n3 ASH, 7\n")  # was a Syntax error
     assert run(BANK + '20 PASS "K": LLIST#').error == "Password protected in 20"
 
 
