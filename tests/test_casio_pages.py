@@ -11,6 +11,7 @@ import io
 import math
 
 import mpmath
+import pytest
 
 import yaseer
 from test_basic_helpers import error_of, run_text, run_values
@@ -104,6 +105,17 @@ def test_for_next_step():  # FOR_NEXT_STEP.md items 1, 6, 7, 8
     assert run_values("10 FOR I=1 TO 12 STEP 3\n20 FOR J=1 TO 4 STEP 0.5\n30 S=S+I*J\n40 NEXT J,I\n50 PRINT S\n") \
         == [[total]]  # item 6: NEXT J,I
     assert run_text("10 FOR I=1 TO 3: GOTO 30\n20 NEXT I: PRINT I: END\n30 PRINT I;: GOTO 20\n") == " 1  2  3  4 \n"
+
+
+def test_input_takes_a_numeric_expression():  # INPUT.md items 5, 7, 9; part-12-2 TM
+    program = "10 B=5: INPUT A: PRINT A: GOTO 10"
+    answers = ["3*4", "B+1", "SQR 2", "B", "7", ""]
+    result = run(program, "".join(a + "\n" for a in answers))
+    printed = [line for line in result.text.splitlines() if not line.startswith("?")]
+    assert [float(x) for x in printed] == [12.0, 6.0, pytest.approx(math.sqrt(2), rel=1e-9), 5.0, 7.0, 7.0]
+    assert run("10 INPUT A", '"X"\n').error == "Type mismatch in 10"  # item 5
+    assert run("10 INPUT A: PRINT A", "1+\n2\n").text.count("?Redo from start") == 1
+    assert "?Redo from start" in run("10 INPUT A: PRINT A", "3*4\n2\n", dialect="gw").text  # gw: a number only
 
 
 def _loops(depth: int, names: str = "ABDEGHJKLMPQRSUVWXYZ") -> list[str]:
