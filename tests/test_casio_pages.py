@@ -114,6 +114,8 @@ def test_input_takes_a_numeric_expression():  # INPUT.md items 5, 7, 9; part-12-
     printed = [line for line in result.text.splitlines() if not line.startswith("?")]
     assert [float(x) for x in printed] == [12.0, 6.0, pytest.approx(math.sqrt(2), rel=1e-9), 5.0, 7.0, 7.0]
     assert run("10 INPUT A", '"X"\n').error == "Type mismatch in 10"  # item 5
+    # a name is its variable (0 until assigned), not Python's infinity or NaN
+    assert run("10 inf=2: INPUT A, B: PRINT A; B", "inf\nnan\n").text.splitlines()[-1] == " 2  0 "
     assert run("10 INPUT A: PRINT A", "1+\n2\n").text.count("?Redo from start") == 1
     assert "?Redo from start" in run("10 INPUT A: PRINT A", "3*4\n2\n", dialect="gw").text  # gw: a number only
 
