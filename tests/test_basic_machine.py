@@ -194,7 +194,7 @@ def test_input_from_a_stream():
 
 
 def test_input_redo_on_bad_number():
-    machine = Machine(screen=io.StringIO(), input_stream=io.StringIO("x\n4\n"))
+    machine = Machine(screen=io.StringIO(), input_stream=io.StringIO("1+\n4\n"))  # (x: a variable, INPUT.md item 9)
     machine.load("10 INPUT N: PRINT N")
     machine.run()
     assert "?Redo from start" in machine.screen.stream.getvalue()

@@ -213,7 +213,7 @@ def test_the_data_bank_writes_searches_reads_saves_and_loads(tmp_path):
                '70 RESTORE# "E", 1: RESTORE# "HE": READ# D$, M: PRINT D$; M\n'
                '80 RESTORE# "DOG"')
     result = yaseer.run(program, files=tmp_path)
-    assert result.text == "SHE\nHE, 12\nSHE\nSHEHE 24 SHE\nHE 12 \n"
+    assert result.text == "1 SHE\n2 HE, 12\n3 SHE\nSHEHE 24 SHE\nHE 12 \n"  # LIST#: record numbers
     assert result.error == "Out of DATA in 80"  # the manual's DA error: no item begins with DOG
     assert (tmp_path / "BANK").read_text() == "SHE\nHE, 12\nSHE\n"
 

@@ -11,6 +11,7 @@ import io
 import math
 
 import mpmath
+import pytest
 
 import yaseer
 from test_basic_helpers import error_of, run_text, run_values
@@ -104,6 +105,46 @@ def test_for_next_step():  # FOR_NEXT_STEP.md items 1, 6, 7, 8
     assert run_values("10 FOR I=1 TO 12 STEP 3\n20 FOR J=1 TO 4 STEP 0.5\n30 S=S+I*J\n40 NEXT J,I\n50 PRINT S\n") \
         == [[total]]  # item 6: NEXT J,I
     assert run_text("10 FOR I=1 TO 3: GOTO 30\n20 NEXT I: PRINT I: END\n30 PRINT I;: GOTO 20\n") == " 1  2  3  4 \n"
+
+
+def test_input_takes_a_numeric_expression():  # INPUT.md items 5, 7, 9; part-12-2 TM
+    program = "10 B=5: INPUT A: PRINT A: GOTO 10"
+    answers = ["3*4", "B+1", "SQR 2", "B", "7", ""]
+    result = run(program, "".join(a + "\n" for a in answers))
+    printed = [line for line in result.text.splitlines() if not line.startswith("?")]
+    assert [float(x) for x in printed] == [12.0, 6.0, pytest.approx(math.sqrt(2), rel=1e-9), 5.0, 7.0, 7.0]
+    assert run("10 INPUT A", '"X"\n').error == "Type mismatch in 10"  # item 5
+    # a name is its variable (0 until assigned), not Python's infinity or NaN
+    assert run("10 inf=2: INPUT A, B: PRINT A; B", "inf\nnan\n").text.splitlines()[-1] == " 2  0 "
+    assert run("10 INPUT A: PRINT A", "1+\n2\n").text.count("?Redo from start") == 1
+    assert "?Redo from start" in run("10 INPUT A: PRINT A", "3*4\n2\n", dialect="gw").text  # gw: a number only
+
+
+def _loops(depth: int, names: str = "ABDEGHJKLMPQRSUVWXYZ") -> list[str]:
+    """``depth`` nested one-pass FOR statements over distinct two-character names."""
+    return [f"FOR {names[k % 20]}{k // 20} = 1 TO 1" for k in range(depth)]
+
+
+def test_for_nests_29_levels():  # FOR_NEXT_STEP.md item 4, specifications.md: 29 FOR levels; a 30th is OM
+    for depth in (29, 30):
+        fors = _loops(depth)
+        body = fors + ["C = C + 1"] + ["NEXT"] * depth + ["PRINT C"]
+        by_lines = "".join(f"{10 * (n + 1)} {statement}\n" for n, statement in enumerate(body))
+        expected = (None, " 1 \n") if depth == 29 else (f"Out of memory in {10 * depth}", "")  # the 30th FOR's line
+        assert (run(by_lines).error, run(by_lines).text) == expected
+        one_line = run("10 " + ": ".join(body))
+        assert (one_line.error, one_line.text) == ((None, " 1 \n") if depth == 29 else ("Out of memory in 10", ""))
+        assert run(by_lines, dialect="gw").text == " 1 \n"  # GW-BASIC's stack holds more
+    # a FOR that re-opens its loop (a GOTO back to it) takes no new level: 100 passes in 2 levels
+    assert run_text("10 FOR I=1 TO 100: FOR J=1 TO 2\n20 C=C+1: GOTO 40\n30 NEXT J\n40 NEXT I: PRINT C\n") == " 100 \n"
+    # RETURN closes the loops its subroutine opened; a subroutine's FOR at the 30th level is OM
+    inside = _loops(28)
+    sub = "90 FOR Z=1 TO 1: FOR Y=1 TO 1: N=N+1: NEXT Y, Z: RETURN"
+    assert run("10 " + ": ".join(inside + ["GOSUB 90"] + ["NEXT"] * 28 + ["PRINT N: END"]) + "\n" + sub).error == \
+        "Out of memory in 90"
+    assert run("10 " + ": ".join(_loops(27) + ["GOSUB 90"] + ["NEXT"] * 27 + ["PRINT N: END"]) + "\n" + sub).text == " 1 \n"
+    # ON ERROR sees the OM error's code 1 (part-12-2-error-messages.md)
+    assert run("5 ON ERROR GOTO 90\n10 " + ": ".join(_loops(30)) + "\n90 PRINT ERR: END").text == " 1 \n"
 
 
 def test_gosub():  # GOSUB.md items 1, 3: nested subroutines; a missing line is the UL error
@@ -235,7 +276,7 @@ BANK = '10 NEW#: WRITE# "OAK", 30: WRITE# "ELM", 12: WRITE# "ASH", 7\n'
 
 
 def test_write_hash():  # WRITE_HASH.md: records of items at the pointer
-    assert run(BANK + "20 LIST#").text == "OAK, 30\nELM, 12\nASH, 7\n"
+    assert run(BANK + "20 LIST#").text == "1 OAK, 30\n2 ELM, 12\n3 ASH, 7\n"
 
 
 def test_read_hash():  # READ_HASH.md: item after item, across records
@@ -246,8 +287,11 @@ def test_restore_hash():  # RESTORE_HASH.md: to the next item beginning with the
     assert run(BANK + '20 RESTORE#: RESTORE# "AS": READ# C$, C: PRINT C$; C').text == "ASH 7 \n"
 
 
-def test_list_hash():  # LIST_HASH.md item 1: the records in sequence
-    assert run(BANK + "20 LIST#").text.splitlines() == ["OAK, 30", "ELM, 12", "ASH, 7"]
+def test_list_hash():  # LIST_HASH.md items 1-2: the records in sequence, each after its record number
+    records = ["OAK, 30", "ELM, 12", "ASH, 7"]
+    assert run(BANK + "20 LIST#").text.splitlines() == [f"{n} {r}" for n, r in enumerate(records, 1)]
+    # part 5: the record number is the DATA BANK's line number: a record written later is listed later
+    assert run(BANK + '20 WRITE# "FIR", 2: LIST#').text.splitlines()[-1] == "4 FIR, 2"
 
 
 def test_new_hash():  # NEW_HASH.md item 1: all records cleared
@@ -256,13 +300,13 @@ def test_new_hash():  # NEW_HASH.md item 1: all records cleared
 
 def test_save_hash_and_load_hash(tmp_path):  # SAVE_HASH.md items 1-3, LOAD_HASH.md items 1-2 (,M appends)
     program = BANK + '20 SAVE# "CAS0:TREES": NEW#: LOAD# "TREES": LOAD# "CAS0:TREES", M: LIST#'
-    assert run(program, files=tmp_path).text.splitlines() == ["OAK, 30", "ELM, 12", "ASH, 7"] * 2
+    assert run(program, files=tmp_path).text.splitlines() == [f"{n} {r}" for n, r in enumerate(["OAK, 30", "ELM, 12", "ASH, 7"] * 2, 1)]
 
 
-def test_llist_hash():  # LLIST_HASH.md items 1, 3: the records to the printer; not with a password
+def test_llist_hash():  # LLIST_HASH.md items 1-3: the records to the printer; not with a password
     printer = io.StringIO()
     result = run(BANK + '20 LLIST#: PRINT "DONE"', printer=printer)
-    assert (result.text, printer.getvalue()) == ("DONE\n", "OAK, 30\nELM, 12\nASH, 7\n")  # was a Syntax error
+    assert (result.text, printer.getvalue()) == ("DONE\n", "1 OAK, 30\n2 ELM, 12\n3 ASH, 7\n")  # was a Syntax error
     assert run(BANK + '20 PASS "K": LLIST#').error == "Password protected in 20"
 
 

@@ -75,8 +75,11 @@ def with_answers(program: str, answers: list[str], dialect: str) -> tuple[str, s
 
 @pytest.mark.parametrize("dialect", DIALECTS)
 def test_input_reads_numbers_as_gw_basic(dialect):
-    """Python's float syntax does not leak into INPUT: inf, nan, 1_2 ask again."""
-    ours, theirs = with_answers(INPUT_PROGRAM, INPUT_ANSWERS, dialect)
+    """Python's float syntax does not leak into INPUT: inf, nan, 1_2 ask again.  (casio: a
+    name typed is the numeric expression of its variable, INPUT.md item 9, so the answers
+    that are names are left out here; tests/test_casio_pages.py reads them as variables.)"""
+    answers = [a for a in INPUT_ANSWERS if dialect == "gw" or a not in ("inf", "nan", "abc")]
+    ours, theirs = with_answers(INPUT_PROGRAM, answers, dialect)
     if dialect == "casio":  # the FX-850P keeps A's value (1D2) on an empty answer (its INPUT page, item 7)
         assert "? \n 0 \n" in theirs
         theirs = theirs.replace("? \n 0 \n", "? \n 100 \n", 1)

@@ -10,12 +10,15 @@ which GW-BASIC loads too).
 from __future__ import annotations
 
 import io
+import os
 import random
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from test_differential_programgen import random_program
 from test_differential_support import base_seed, case_count, clean_output
@@ -184,39 +187,72 @@ def test_yaseer_run_reads_a_tokenised_file(tmp_path, pc):
     assert (done.stdout, done.stderr, done.returncode) == ("", "Direct statement in file\n", 1)
 
 
-def test_double_constants_keep_their_56_bits_through_load_run_and_save(pc, tmp_path):
-    """A tokenised file's double constant is 0x1F and MKD$'s 8 bytes; GW-BASIC runs them as
-    they are and SAVE writes them back (the program is its tokens).  For bytes whose 16
-    listed digits do not hold them (PC-BASIC 2.0.8, given its own listing back, stores other
-    bytes) yaseer ran the 16 digits read again; now the program prints PC-BASIC's bytes and
-    value, lists PC-BASIC's digits, and the session's LOAD and SAVE give the file back."""
+@pytest.mark.parametrize("kind, token, size", [("#", 0x1F, 8), ("!", 0x1D, 4)])
+def test_number_constants_keep_their_bits_through_load_run_and_save(pc, tmp_path, kind, token, size):
+    """A tokenised file's double constant is 0x1F and MKD$'s 8 bytes, a single's 0x1D and
+    MKS$'s 4; GW-BASIC runs them as they are and SAVE writes them back (the program is its
+    tokens).  For bytes whose listed digits (16, 7) do not hold them (PC-BASIC 2.0.8, given its
+    own listing back, stores other bytes) yaseer ran the digits read again; now the program
+    prints PC-BASIC's bytes and value, lists PC-BASIC's digits, and the session's LOAD and
+    SAVE give the file back."""
     from test_gw_protected import gw_session, typed
 
     import yaseer
 
     session, directory = pc
-    base, _ = saved(pc, "10 A#=1.5#: X$=MKD$(A#): FOR I=1 TO 8: PRINT ASC(MID$(X$,I,1));: NEXT: PRINT A#", "EXACT")
-    at = base.index(0x1F) + 1
+    base, _ = saved(pc, f"10 A{kind}=1.5{kind}: X$=MK{'D' if size == 8 else 'S'}$(A{kind}): "
+                        f"FOR I=1 TO {size}: PRINT ASC(MID$(X$,I,1)): NEXT: PRINT A{kind}", f"EXACT{size}")
+    at = base.index(token) + 1
     ours, shown = gw_session(tmp_path)
-    rng = random.Random(base_seed() + 1956)
+    rng = random.Random(base_seed() + 1956 + size)
     held = 0
     for k in range(case_count(12)):
-        constant = bytes(rng.randrange(256) for _ in range(6)) + bytes((rng.randrange(128), rng.randrange(90, 170)))
-        data = base[:at] + constant + base[at + 8:]
-        (directory / f"EXACT{k}.BAS").write_bytes(data)
-        (tmp_path / f"EXACT{k}.BAS").write_bytes(data)
+        constant = bytes(rng.randrange(256) for _ in range(size - 2)) + bytes((rng.randrange(128), rng.randrange(90, 170)))
+        data = base[:at] + constant + base[at + size:]
+        name = f"EXACT{size}{k}"
+        (directory / f"{name}.BAS").write_bytes(data)
+        (tmp_path / f"{name}.BAS").write_bytes(data)
         session.execute("NEW")
-        theirs = clean_output(session.execute(f'RUN "EXACT{k}"'))
+        theirs = clean_output(session.execute(f'RUN "{name}"'))
         listed = clean_output(session.execute("LIST"))
         session.execute(listed.strip())
-        session.execute(f'SAVE "AGAIN{k}"')
-        if (directory / f"AGAIN{k}.BAS").read_bytes()[at:at + 8] == constant:
-            held += 1  # 16 digits hold these bytes: not the case this test is about
+        session.execute(f'SAVE "AGAIN{size}{k}"')
+        if (directory / f"AGAIN{size}{k}.BAS").read_bytes()[at:at + size] == constant:
+            held += 1  # the digits hold these bytes: not the case this test is about
             continue
-        assert theirs.split()[:8] == [str(byte) for byte in constant]
+        assert theirs.split()[:size] == [str(byte) for byte in constant]
         assert yaseer_output(program_text(data)) == theirs
         assert yaseer.run(data, dialect="gw").text == theirs
-        assert typed(ours, shown, ["NEW", f'LOAD "EXACT{k}"', "LIST"]) == listed
-        assert typed(ours, shown, ["RUN", f'SAVE "SAVED{k}"']) == theirs
-        assert (tmp_path / f"SAVED{k}.bas").read_bytes() == data
-    assert held < case_count(12) // 2  # most 56-bit constants are beyond 16 digits
+        assert typed(ours, shown, ["NEW", f'LOAD "{name}"', "LIST"]) == listed
+        assert typed(ours, shown, ["RUN", f'SAVE "SAVED{size}{k}"']) == theirs
+        assert (tmp_path / f"SAVED{size}{k}.bas").read_bytes() == data
+    assert held < case_count(12) * 3 // 4  # many constants are beyond their listed digits
+
+
+@settings(max_examples=int(os.environ.get("YASEER_FUZZ_EXAMPLES", 60)), deadline=None, derandomize=True,
+          database=None, suppress_health_check=list(HealthCheck))
+@given(constants=st.lists(st.tuples(st.sampled_from([(0x1F, 8), (0x1D, 4)]), st.binary(min_size=8, max_size=8)),
+                          min_size=1, max_size=12))
+def test_any_constant_bytes_come_back_from_the_text_unchanged(constants):
+    """Whatever the bytes after a 0x1F or 0x1D token (any sign, exponent, mantissa), the
+    program's text gives them back: SAVE's tokens are the file's, byte for byte, and the
+    program loads and runs without a Python error."""
+    from yaseer.basic.machine.program_crunch import TEXT_START, tokenised_program
+    from yaseer.basic.source.scanner import program_lines
+
+    from yaseer.basic.dialects.dialect import GW
+
+    body = bytearray()
+    for k, ((token, size), raw) in enumerate(constants):
+        tokens = b"A" + bytes((0xE7, token)) + raw[:size] + b":" + bytes((0x91,)) + b" A"  # A=<constant>:PRINT A
+        line = (10 * (k + 1)).to_bytes(2, "little") + tokens + bytes(1)
+        body += (TEXT_START + len(body) + 2 + len(line)).to_bytes(2, "little") + line
+    body += bytes(2)
+    program, stopped = program_lines(program_text(b"\xff" + bytes(body)), GW)
+    assert stopped is None and tokenised_program(program) == bytes(body)
+    machine = Machine(screen=io.StringIO(), dialect="gw")
+    machine.load(program_text(b"\xff" + bytes(body)))
+    try:
+        machine.run()
+    except BasicError as err:
+        assert err.code == 6, err  # a constant beyond the range: Overflow

@@ -307,6 +307,37 @@ def test_an_ascii_file_s_last_line_is_dot(pc, tmp_path):
     assert done.stdout.decode() == expected
 
 
+def test_a_tokenised_file_leaves_dot(tmp_path):
+    """A tokenised file's lines are not entered as typed ones (DSKCOM.ASM's binary LOAD copies
+    them; only GWMAIN.ASM's line entry and LIST store DOT): the API and ``yaseer run`` start
+    it with DOT 0, as a fresh PC-BASIC 2.0.8 runs it (before, the last line was current)."""
+    import pcbasic
+
+    (tmp_path / "DOTS.BAS").write_bytes(b"\xff")  # replaced below by PC-BASIC's own SAVE
+    session = pcbasic.Session(output_streams=None, input_streams=None, devices={"C:": str(tmp_path)},
+                              current_device="C:")
+    session.start()
+    try:
+        session.execute("NEW")
+        session.execute("10 PRINT 1\n20 LIST .\n30 PRINT 3")
+        session.execute('SAVE "DOTS"')
+    finally:
+        session.close()
+    fresh = pcbasic.Session(output_streams=None, input_streams=None, devices={"C:": str(tmp_path)},
+                            current_device="C:")
+    fresh.start()
+    try:
+        expected = clean_output(fresh.execute('RUN "DOTS"'))
+    finally:
+        fresh.close()
+    data = (tmp_path / "DOTS.BAS").read_bytes()
+    assert data[0] == 0xFF and expected == " 1 \n"
+    assert yaseer.run(data, dialect="gw").text == expected
+    done = subprocess.run([sys.executable, "-m", "yaseer", "--dialect", "gw", "run", "DOTS.BAS"],
+                          capture_output=True, cwd=tmp_path, timeout=60)
+    assert done.stdout.decode() == expected
+
+
 def test_dot_in_a_program_as_the_source_keeps_it(tmp_path):
     """Where PC-BASIC 2.0.8 differs the source decides: GWMAIN.ASM ERROR stores the error's line
     in DOT before it looks for a trap (PC-BASIC leaves DOT), so a handler's ``LIST .`` and a
@@ -358,3 +389,18 @@ def test_the_api_lists_a_tokenised_file_as_list_shows_it(pc):
     printed = clean_output(session.execute('RUN "THIRD"'))
     result = yaseer.run(data, dialect="gw")
     assert (result.listing, result.text) == (clean_output(session.execute("LIST")), printed)
+
+
+def test_chain_s_delete_range_and_a_direct_error_as_the_source_reads_dot(tmp_path):
+    """CHAIN MERGE's DELETE range is read by GWMAIN.ASM SCNLIN, whose LINSPC takes ``.`` as DOT
+    (FIVEO.ASM CHAIN; PC-BASIC 2.0.8 calls it Illegal function call, the source decides); a
+    direct statement's error, even one a program's ON ERROR catches, leaves DOT (GWMAIN.ASM
+    ERROR stores it only when the line is not the direct one)."""
+    (tmp_path / "OV.BAS").write_bytes(b'100 PRINT "OVERLAY"\r\n110 LIST\r\n')
+    session, shown = gw_session(tmp_path)
+    assert typed(session, shown, ["NEW", '10 PRINT "A"', '20 CHAIN MERGE "OV", 100, DELETE .-40', "30 PRINT 3",
+                                  "40 PRINT 4", "50 PRINT 5", "LIST 30", "RUN"]) == \
+        '30 PRINT 3\nA\nOVERLAY\n10 PRINT "A"\n20 CHAIN MERGE "OV", 100, DELETE .-40\n50 PRINT 5\n' \
+        '100 PRINT "OVERLAY"\n110 LIST\n'
+    typed(session, shown, ["NEW", "10 ON ERROR GOTO 100", "20 STOP", "100 RESUME NEXT", "RUN", "LIST 10"])
+    assert typed(session, shown, ["ERROR 5", "LIST ."])[-len("10 ON ERROR GOTO 100\n"):] == "10 ON ERROR GOTO 100\n"

@@ -242,7 +242,7 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
     try:
         from yaseer.basic.dialects.dialect import get_dialect
 
-        program, result.listing, result.name, result.protected = _source(listing, get_dialect(dialect).charset)
+        program, result.listing, result.name, result.protected, entered = _source(listing, get_dialect(dialect).charset)
         if finer != 1:
             from yaseer.finer import finer_steps
 
@@ -253,7 +253,7 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
     except BasicError as error:
         return _failed(result, error, raise_errors)
     execute(result, areas, methods, input_stream, angle, dialect, screen, printer, output_format, keep, files,
-            program)
+            program, entered)
     for handle in opened:
         handle.close()
     if result.exception is not None and raise_errors:
@@ -262,9 +262,11 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
 
 
 def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str | None, dialect: str,
-            screen, printer, output_format: str, keep: bool, files=None, program: str | None = None) -> None:
-    """Load, bind and run ``program`` (default ``result.listing``); fill in ``result`` (text,
-    rows, frames, error, status)."""
+            screen, printer, output_format: str, keep: bool, files=None, program: str | None = None,
+            entered: bool = True) -> None:
+    """Load, bind and run ``program`` (default ``result.listing``; ``entered``: its lines are
+    read as typed ones, not a tokenised file's: Machine.load); fill in ``result`` (text, rows,
+    frames, error, status)."""
     from yaseer import binding
     from yaseer.basic.errors import BasicError
     from yaseer.basic.machine.machine import Machine
@@ -288,7 +290,7 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
         machine.area_hooks.append(recorder.hook)
         machine.line_hooks.append(lambda device, values: result.lines.append(values))
     try:
-        machine.load(result.listing if program is None else program)
+        machine.load(result.listing if program is None else program, entered=entered)
         machine.program_protected = result.protected
         if library:
             binding.install(machine, methods or None)
@@ -338,17 +340,19 @@ def _failed(result: Result, error, raise_errors: bool) -> Result:
     return result
 
 
-def _source(listing: Listing, charset=None) -> tuple[str, str, str | None, bool]:
-    """(program text, its listing, file stem or None, protected): a path-like, or a one-line
+def _source(listing: Listing, charset=None) -> tuple[str, str, str | None, bool, bool]:
+    """(program text, its listing, file stem or None, protected, entered): a path-like, or a one-line
     str that is no BASIC line, is a file; bytes are a file's contents.  A file is read as LOAD
     reads it (program_file.program_text: ASCII, tokenised or protected; as the ``charset``
     shows it, yaseer/basic/dialects/charset.py); ``protected``: it was SAVEd with ,P.  The
-    listing is the program as LIST shows it (see :class:`Result`)."""
+    listing is the program as LIST shows it (see :class:`Result`); ``entered``: the lines are
+    read as typed ones (program text, an ASCII file), not a tokenised file's (GW-BASIC's line
+    entry prints their messages and keeps each number in DOT)."""
     from yaseer.basic.errors import DEVICE_IO_ERROR, FILE_NOT_FOUND, BasicError
 
     if isinstance(listing, str) and not os.path.isfile(listing) \
             and ("\n" in listing or not listing.strip() or _LINE_NUMBER.match(listing)):
-        return listing, listing, None, False
+        return listing, listing, None, False, True
     if isinstance(listing, bytes):
         return _file_text(listing, charset, None)
     if not isinstance(listing, (str, os.PathLike)):
@@ -363,7 +367,7 @@ def _source(listing: Listing, charset=None) -> tuple[str, str, str | None, bool]
     return _file_text(data, charset, _stem(listing))
 
 
-def _file_text(data: bytes, charset, name: str | None) -> tuple[str, str, str | None, bool]:
+def _file_text(data: bytes, charset, name: str | None) -> tuple[str, str, str | None, bool, bool]:
     """:func:`_source`'s answer for a program file's bytes (lines end in LF, as text mode reads
     them): the program keeps a tokenised file's double constants whole, the listing shows
     their digits; a protected program has no listing (GIODSK.ASM PROCHK: GW-BASIC's LIST of it
@@ -375,7 +379,8 @@ def _file_text(data: bytes, charset, name: str | None) -> tuple[str, str, str | 
 
     protected = is_protected(data)
     program = lines(program_text(data, charset))
-    return program, "" if protected else lines(program_text(data, charset, exact=False)), name, protected
+    listing = "" if protected else lines(program_text(data, charset, exact=False))
+    return program, listing, name, protected, data[:1] not in (b"\xfe", b"\xff")
 
 
 def _stem(path) -> str:

@@ -23,6 +23,7 @@ import math
 from functools import partial
 from decimal import ROUND_HALF_UP, Context, Decimal, Overflow as DecimalOverflow
 
+from yaseer.basic.arithmetic.decimal_calls import angle_functions
 from yaseer.basic.arithmetic.decimal_scales import rounded_within
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_CALL, OVERFLOW
 
@@ -374,13 +375,14 @@ def atn(x, degrees: bool = True) -> float:
 
 
 def trig_functions(unit: str) -> dict:
-    """The compiled code's ``_sin _cos _tan _atn`` in decimal arithmetic, in ``unit``
+    """The compiled code's ``_sin _cos _tan _atn`` (and the float ``_fsin _fcos`` its inline
+    SIN and COS try first: decimal_calls.py) in decimal arithmetic, in ``unit``
     ("DEG", "RAD" or "GRA": a grad is 0.9 degree, exactly in decimal)."""
     if unit == "GRA":
-        return {"_sin": lambda x: sin(multiply(x, 0.9)), "_cos": lambda x: cos(multiply(x, 0.9)),
+        return {**angle_functions(unit), "_sin": lambda x: sin(multiply(x, 0.9)), "_cos": lambda x: cos(multiply(x, 0.9)),
                 "_tan": lambda x: tan(multiply(x, 0.9)), "_atn": lambda x: divide(atn(x), 0.9)}
     degrees = unit != "RAD"
-    return {"_sin": partial(_sine_or_cosine, degrees=degrees, which=0),
+    return {**angle_functions(unit), "_sin": partial(_sine_or_cosine, degrees=degrees, which=0),
             "_cos": partial(_sine_or_cosine, degrees=degrees, which=1),
             "_tan": lambda x: tan(x, degrees), "_atn": lambda x: atn(x, degrees)}
 

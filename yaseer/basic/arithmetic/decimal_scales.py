@@ -87,11 +87,22 @@ def scale(x: float) -> float:
     """``S`` of the decade of ``x`` (a nonzero own decimal from 1E-11 to below 1E+12),
     with its sign; NaN (a scale no value matches) for any other ``x``.  The decade's
     power of ten is a decimal of one digit, so comparing the doubles compares the
-    decimals."""
-    if not 1e-11 <= abs(x) < 1e12:
-        return nan
-    s = decade_scale(abs(x))
-    return s if x > 0 else -s
+    decimals.  (:func:`decade_scale`'s steps, from one table by the binade: the writers
+    call this on every result their site's scale missed.)"""
+    if 0.0 < x < TOP:
+        edge, low, high = _BINADES.get(frexp(x)[1], _OUTSIDE)
+        return low if x < edge else high
+    if -TOP < x < 0.0:
+        edge, low, high = _BINADES.get(frexp(x)[1], _OUTSIDE)
+        return -low if -edge < x else -high
+    return nan
+
+
+# a binade's (the power of ten above its lowest decade, the scale of that decade, of the next),
+# NaN for a decade outside 1E-11 .. 1E+12
+_BINADES = {b: (_POWERS.get(e + 1, nan), _SCALES.get(e, nan), _SCALES.get(e + 1, nan))
+            for b, e in _LOW_DECADE.items()}
+_OUTSIDE = (nan, nan, nan)
 
 
 def rounded_within(value: float, error: float):
@@ -123,17 +134,6 @@ def rounded_within(value: float, error: float):
 _last_scale = 1e11  # (any scale: only a first guess, tested before it is used)
 
 
-def scaled_result(r: float, s: float):
-    """The compiled code's tests on the float result ``r`` with the scale ``s`` (module
-    docstring): the 12-digit decimal's double, or None where they do not hold."""
-    t = r * s
-    if 0.0 < t < TOP:
-        n = (t + MAGIC) - MAGIC
-        if n == t or t >= BOTTOM and -BAND < t - n < BAND:
-            return n / s
-    return None
-
-
 def writers(namespace: dict) -> dict:
     """The compiled code's ``_zd(name, routine, a, b)`` (``*`` and ``/``), ``_zdc(name,
     routine, a, b, c)`` (``+`` or ``-`` with a literal of size ``c``) and ``_zdg(name,
@@ -146,24 +146,25 @@ def writers(namespace: dict) -> dict:
     floats = {namespace["_dadd"]: float.__add__, namespace["_dsub"]: float.__sub__,
               namespace["_dmul"]: float.__mul__, namespace["_ddiv13"]: float.__truediv__}
 
-    def retried(name, routine, a, b, fits):
-        """The float path with the scale of the float result's decade, else the routine."""
+    def retried(name, routine, a, b, fits=None):
+        """The float path with the scale of the float result's decade (the compiled code's
+        tests), else the routine; ``fits`` tests a scale (None: any scale fits, a product's or
+        a quotient's)."""
         if type(a) is float and type(b) is float and b:
             r = floats[routine](a, b)
             s = scale(r)
-            if s == s and fits(s):
+            if s == s and (fits is None or fits(s)):
                 namespace[name] = s
-                found = scaled_result(r, s)
-                if found is not None:
-                    return found
+                t = r * s
+                if 0.0 < t < TOP:
+                    n = (t + MAGIC) - MAGIC
+                    if n == t or t >= BOTTOM and -BAND < t - n < BAND:
+                        return n / s
         result = routine(a, b)
         if result:
             s = scale(result)
-            namespace[name] = s if s == s and fits(s) else nan
+            namespace[name] = s if s == s and (fits is None or fits(s)) else nan
         return result
-
-    def product(name, routine, a, b):
-        return retried(name, routine, a, b, _any)
 
     def with_constant(name, routine, a, b, c):
         return retried(name, routine, a, b, lambda s: abs(s) * c <= GUARD)
@@ -178,11 +179,7 @@ def writers(namespace: dict) -> dict:
             return False
         return retried(name, routine, a, b, fits)
 
-    return {"_zd": product, "_zdc": with_constant, "_zdg": guarded}
-
-
-def _any(s: float) -> bool:
-    return True
+    return {"_zd": retried, "_zdc": with_constant, "_zdg": guarded}
 
 
 def initial(names) -> dict:

@@ -282,38 +282,19 @@ class Shown(float):
 
 def _bracketed(parts, places: int):
     """``abs`` of a 56-bit double rounded to ``places`` decimals, at most 16 significant
-    digits (zeros after them), as MATH1.ASM's PUFOUT finds them: ``$FOTNV`` brackets the
-    double into 16 whole digits (times or divided by a power of ten, in double
-    precision), the digits beyond the field are divided out (``$FDIVD``) and the rest
-    rounded half up.  (The power of ten here is the nearest double to it, as GW's table
-    holds it, in one step; below 1E-23, 10**38 first and the rest then: ``$FOTNV`` steps
-    by its own table there, not followed yet.)"""
+    digits (zeros after them), as MATH2.ASM's ``$PUF`` finds them (``$FOTNV``'s table
+    steps, a ``$DIV10`` a digit too many, ``$FOTCV``'s half added: mbf_double_using;
+    from 10**16 up the 16 digits and zeros, as PC-BASIC 2.0.8 fills the field, where
+    ``$PUF`` writes ``$FOUT``'s free format after the ``%``)."""
     from decimal import Decimal
 
-    from yaseer.basic.arithmetic import mbf_double
+    from yaseer.basic.arithmetic import mbf_double_using
 
     _, exponent, mantissa = parts
     if not exponent:
         return Decimal(0).scaleb(-places)
-    shift = exponent - 184
-    exact = Decimal(mantissa << shift) if shift >= 0 else Decimal(f"{mantissa * 5 ** -shift}E{shift}")
-    bracket = 15 - exact.adjusted()
-    places = min(places, bracket)
-    if bracket - places > 17:  # every one of the 16 digits divided out: less than a tenth, 0
-        return Decimal(0).scaleb(-places)
-    p = (False, exponent, mantissa)
-    scale = bracket
-    while scale > 38:  # (GW's powers of ten end at 10**38, and $FOTNV takes at most that a step)
-        p = mbf_double.multiply(p, mbf_double.power_of_ten(38))
-        scale -= 38
-    ten = mbf_double.power_of_ten(abs(scale))
-    p = mbf_double.multiply(p, ten) if scale >= 0 else mbf_double.divide(p, ten)
-    if bracket > places:
-        p = mbf_double.divide(p, mbf_double.power_of_ten(bracket - places))
-    _, exponent, mantissa = p
-    shift = exponent - 184
-    whole = mantissa << shift if shift >= 0 else (mantissa >> -shift) + (mantissa >> (-shift - 1) & 1)
-    return Decimal(whole).scaleb(-places)
+    digits, shown = mbf_double_using.fixed_digits((False, exponent, mantissa), places)
+    return Decimal(digits).scaleb(-shown)
 
 
 def _decimal(x: float):
@@ -384,7 +365,13 @@ def _scientific_parts(x: float, field: NumericField) -> tuple[str, int]:
     from decimal import ROUND_HALF_UP, Decimal
 
     before = _scientific_digits_before(field)
-    value = _decimal(x)
+    if type(x) is Shown and x.parts[1] and before + field.decimals:  # a double: $PUFE's digits
+        from yaseer.basic.arithmetic import mbf_double_using
+
+        digits, power = mbf_double_using.scientific_digits(x.parts, before + field.decimals)
+        value = Decimal(digits).scaleb(power)
+    else:
+        value = _decimal(x)
     quantum = Decimal(1).scaleb(-field.decimals)
     exponent = value.adjusted() + 1 - before
     scaled = value.scaleb(-exponent).quantize(quantum, rounding=ROUND_HALF_UP)

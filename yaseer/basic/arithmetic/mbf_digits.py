@@ -1,4 +1,5 @@
-"""PRINT's digits of a single or a double as GW-BASIC's output routine finds them.
+"""PRINT's digits of a single as GW-BASIC's output routine finds them (a double's:
+:mod:`yaseer.basic.arithmetic.mbf_double_using`).
 
 The number, as a working number of its format (a 32-bit mantissa for a single, 64
 bits for a double: the 24 or 56 bits and a guard byte; see
@@ -8,8 +9,7 @@ by ten in working precision; its guard byte is rounded half up after each of the
 two loops, then it is rounded half up to an integer of n digits.  This is the
 routine as PC-BASIC 2.0.8 reproduces it (``Float.to_decimal``), which the
 differential tests compare against: ``825157.625!`` shows as 825157.7 (the guard
-byte is rounded before the last digit is), ``CDBL(9.625066757202148!)`` as
-9.625066757202149.
+byte is rounded before the last digit is).
 """
 
 from __future__ import annotations
@@ -36,7 +36,6 @@ def _format(width: int, bits: int, digits: int) -> Format:
 
 
 SINGLE = _format(32, 24, 7)
-DOUBLE = _format(64, 56, 16)
 
 
 def decimal_digits(x, form: Format = SINGLE) -> tuple[int, int]:

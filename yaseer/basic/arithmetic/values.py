@@ -27,7 +27,7 @@ import functools
 import math
 import struct
 
-from yaseer.basic.arithmetic import mbf_digits, mbf_double, single_arith
+from yaseer.basic.arithmetic import mbf_digits, mbf_double, mbf_double_using, single_arith
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
 
 INT_MIN, INT_MAX = -32768, 32767
@@ -630,15 +630,14 @@ def _single_digits(x: float) -> tuple[str, int]:
 
 def _double_digits(x: float) -> tuple[str, int]:
     """``abs(x)`` (double precision) to at most 16 significant digits as GW's output
-    routine finds them from the 56 bits (``$FOUT`` as PC-BASIC reproduces it,
-    :mod:`yaseer.basic.arithmetic.mbf_digits`): a :class:`Wide`'s own, a float's exactly
-    (every double yaseer holds is an MBF value: read to the nearest 56 bits, or the
-    result of GW's routines).  ``CDBL(1.1)`` is 1.100000023841858, ``1# / 3``
-    .3333333333333333, ``12345670# / 3`` 4115223.333333333."""
-    if type(x) is Wide:
-        return mbf_digits.digit_string_of(x.parts[1], x.parts[2] << 8, mbf_digits.DOUBLE)
-    _, exponent, mantissa = mbf_double.parts(x)
-    return mbf_digits.digit_string_of(exponent, mantissa << 8, mbf_digits.DOUBLE)
+    routine finds them from the 56 bits (MATH1.ASM ``$FOFMT``: ``$FOTNV``'s bracket by its
+    table of powers of ten, ``$FOTCV``'s half added, :func:`mbf_double_using.printed_digits`):
+    a :class:`Wide`'s own, a float's exactly (every double yaseer holds is an MBF value:
+    read to the nearest 56 bits, or the result of GW's routines).  ``CDBL(1.1)`` is
+    1.100000023841858, ``1# / 3`` .3333333333333333, ``12345670# / 3`` 4115223.333333333."""
+    p = x.parts if type(x) is Wide else mbf_double.parts(x)
+    n, power = mbf_double_using.printed_digits(p)
+    return str(n).rstrip("0") or "0", power + len(str(n)) - 1
 
 
 def unsigned_text(x, digits: int, marker: str) -> str:

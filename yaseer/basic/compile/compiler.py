@@ -85,7 +85,7 @@ class _NoWords:
     edit_lists_from = False
     password_refuses = ()
     read_mismatch = output_eof = False
-    gosub_levels = None
+    gosub_levels = for_levels = None
     computed_restore = empty_on_targets = truncates = asks_each = False
     command_options = {"LOAD": "R", "SAVE": "AP", "RUN": "R"}  # GW-BASIC's LOAD ,R; SAVE ,A ,P; RUN ,R
 

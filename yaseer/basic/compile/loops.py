@@ -267,6 +267,12 @@ class LoopCompiler:
         j = self.plan.native[i]
         stmt = self.flat[i][1]
         scope = BlockScope(self)
+        levels = self.words.for_levels
+        if levels is not None:
+            # a dialect's FOR levels (casio: FOR_NEXT_STEP.md item 4): the loops open on the
+            # stack and the native loops around this one leave room for it, or OM
+            room = levels - len(self.open_loops)
+            self.emit(f"if len(_stk) >= {room} and _loops() >= {room}: _oom()")
         # nothing between FOR and NEXT (and no TRON line marks): a delay loop
         self.idle_body = j == i + 1 and not self.trace
         passes = self.constant_passes(stmt) if self.idle_body else None

@@ -668,6 +668,45 @@ class DecimalNumbers(PlainNumbers):
         used = sorted(set(_SCALE_WRITTEN.findall(source)))
         return "".join(f"{name} = 1e999 - 1e999\n{name}l = {name}h = 0.0\n" for name in used)
 
+    # the float value of a function the compiled code rounds through a scale cache
+    # (decimal_calls.py): {x} the argument, {first} its first evaluation
+    _FLOAT_CALLS = {
+        "_sqrt": "(_msqrt({x}) if {first} > 0.0 else _nan)",
+        "_log": "(_mlog({x}) if 0.0 < {first} < 1e100 else _nan)",
+        "_log10": "(_mlog10({x}) if 0.0 < {first} < 1e100 else _nan)",
+        "_exp": "(_mexp({x}) if -20.0 < {first} < 20.0 else _nan)",
+        "_sin": "_fsin({first})", "_cos": "_fcos({first})",
+    }
+
+    def call(self, name: str, helper: str, codes: list[str], kinds: list[str], result: str) -> tuple[str, str]:
+        """SQR LN LOG EXP SIN COS and RND's next number inline: the float function's value
+        through a scale cache ``_D<n>`` (decimal_calls.py proves it), else decimal_arith's
+        routine through the cache's writer ``_zdf``."""
+        from yaseer.basic.arithmetic.decimal_calls import LARGEST_SCALE
+        from yaseer.basic.arithmetic.decimal_scales import BAND, BOTTOM, MAGIC, TOP
+
+        form = self._FLOAT_CALLS.get(helper)
+        if not self.caching or (form is None and helper != "_rndf") or len(codes) != (helper != "_rndf"):
+            return super().call(name, helper, codes, kinds, result)
+        self._temps += 1
+        n = self._temps
+        cache = f"_D{self.site_salt}{n}"
+        self.cache_bases.append(cache)
+        if helper == "_rndf":  # the number drawn is rounded by ``_d13`` (decimal_arith.rounded)
+            x, routine = "_dv", "_d13"
+            # a number drawn is below 1: the scale of its decade, 0.1 up or 0.01 up, not a cache's
+            scaled = f"(_dv := _rndr()) * (_ds := {1e12!r} if _dv >= 0.1 else {1e13!r})"
+            cache_value = "_ds"
+        else:
+            x = codes[0]
+            first = x if _plain_operand(x) else f"(_x{n} := {x})"
+            x = x if _plain_operand(x) else f"_x{n}"
+            scaled = f"(_dv := {form.format(x=x, first=first)}) * {cache}"
+            cache_value, routine = cache, helper
+        return (f"(_dn / {cache_value} if {BOTTOM!r} <= (_dt := {scaled}) < {TOP!r} and "
+                f"{-BAND!r} < _dt - (_dn := _dt + {MAGIC!r} - {MAGIC!r}) < {BAND!r} else "
+                f"_zdf({cache!r}, {routine}, {x}, _dv, {LARGEST_SCALE[helper]!r}))"), "n"
+
     whole_steps_below = 1e12  # (a sum of whole numbers below 1E+12 is exact in 12 digits)
 
     def loop_helpers(self, kind: str) -> tuple[str, str]:
@@ -759,7 +798,7 @@ def _float_code(tree) -> str:
 
 
 _CACHE_WRITTEN = re.compile(r"_zw[spq]\('(\w+)'")  # a binade cache's name where its writer is called
-_SCALE_WRITTEN = re.compile(r"_zd[cg]?\('(\w+)'")  # a scale cache's name where its writer is called
+_SCALE_WRITTEN = re.compile(r"_zd[cgf]?\('(\w+)'")  # a scale cache's name where its writer is called
 
 
 def number_model(dialect, def_types=None) -> PlainNumbers:

@@ -162,6 +162,14 @@ READ_MISMATCH = True
 # GOSUB levels (GOSUB.md item 2: up to 96, beyond that the OM error); a GOSUB to a program
 # area (#n, PROG n, "file:label") is a level too.
 GOSUB_LEVELS = 96
+# FOR ~ NEXT levels (FOR_NEXT_STEP.md item 4 and specifications.md "Number of stacks": 29).
+# The manual names no error for a 30th; it is the OM error, the error of the other stack's
+# overflow (GOSUB.md item 2) and of "system overflow" (part-12-2-error-messages.md, OM).
+FOR_LEVELS = 29
+# INPUT into a numeric variable takes a numeric expression (INPUT.md item 9: "3*4", "A+1",
+# "SQR 2"), evaluated with the variables as they are, as VALF evaluates one; a string is the TM
+# error (item 5).
+INPUT_EXPRESSIONS = True
 # EOF of a file opened FOR OUTPUT is 0 (EOF.md item 4), not GW-BASIC's Bad file mode.
 OUTPUT_EOF = True
 COMMAND_OPTIONS = {"LOAD": "A", "SAVE": "A", "RUN": ""}  # ,A: the ASCII format (yaseer's only one)
@@ -231,6 +239,8 @@ class Words:
     read_mismatch = READ_MISMATCH
     output_eof = OUTPUT_EOF
     gosub_levels = GOSUB_LEVELS
+    for_levels = FOR_LEVELS
+    input_expressions = INPUT_EXPRESSIONS
     current_line_period = CURRENT_LINE_PERIOD
     edit_lists_from = EDIT_LISTS_FROM
     command_options = COMMAND_OPTIONS

@@ -311,6 +311,19 @@ class CasioWords:
         (VALF.md); a VALF inside it is Illegal function call, a string Type mismatch."""
         return self._evaluated(_valf_code(text, self.dialect))
 
+    def input_expression(self, text: str) -> list | None:
+        """INPUT's answer for a numeric variable that is no number: ``[value]`` of the numeric
+        expression typed (INPUT.md item 9), evaluated as VALF evaluates one (in the run's
+        arithmetic); a string is Type mismatch (item 5); None for an answer that does not
+        read as an expression (asked again)."""
+        try:
+            value = self.valf(text)
+        except BasicError as err:
+            if err.code == SYNTAX_ERROR:
+                return None
+            raise
+        return [value]
+
     def _evaluated(self, compiled: tuple) -> float:
         """The value of ``compiled`` (:func:`_valf_code`'s code and the scalars it reads) with
         the variables as they are; a variable the program never named is made (0, or "")."""

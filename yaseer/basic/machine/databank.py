@@ -117,12 +117,13 @@ class DataBank:
         return value
 
     def list(self, machine, device: int = 0) -> None:
-        """LIST# (``device`` 0) or LLIST# (1, the printer): each record on a line of its own.
-        (The pages say the record's number is shown too, but not how: yaseer shows the
-        records alone.)"""
+        """LIST# (``device`` 0) or LLIST# (1, the printer): each record on a line of its own,
+        after its record number (LIST_HASH.md item 2, LLIST_HASH.md item 2).  The pages do
+        not show the form; part 5 calls the record number the DATA BANK's line number, so a
+        record is shown as LIST shows a program line: the number (from 1), a blank, the data."""
         _unlocked(machine)
-        for record in self.records:
-            machine.print_items(device, (record,), True)
+        for number, record in enumerate(self.records, 1):
+            machine.print_items(device, (f"{number} {record}",), True)
 
     def save(self, machine, name: str) -> None:
         """SAVE# "name": the records into the file (its bytes are the machine's codes)."""

@@ -266,6 +266,8 @@ class InputOutput:
             if not line and len(kinds) == 1 and self.dialect.empty_input_keeps:
                 return [None if kind == "n" else "" for kind in kinds]
             values = parse_input(line, kinds, self.dialect.largest_number, self.dialect.string_length)
+            if values is None and kinds == "n" and self.dialect.words is not None and self.dialect.words.input_expressions:
+                values = self.input_expression(line)  # casio: a numeric expression (casio_words.py)
             if values is not None:
                 return values
             self.screen.write("?Redo from start\n")

@@ -292,6 +292,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.files = FileTable(Sandbox(files), self.dialect.file_devices, words.absent_devices if words else None)
         self._output_eof = bool(words and words.output_eof)  # casio: EOF of an output file is 0 (EOF.md item 4)
         self.gosub_levels = words.gosub_levels if words else None  # casio: 96 (GOSUB.md item 2)
+        self.for_levels = words.for_levels if words else None  # casio: 29 (FOR_NEXT_STEP.md item 4)
         # Ctrl-C stops a run where CONT can resume it exactly (the session wants this;
         # ``yaseer run`` stops at once): see _on_interrupt.
         self.resumable_breaks = False
@@ -452,7 +453,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_wh": self.while_loops, "_END": END, "_DirectJump": DirectJump,
             "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
             "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,
-            "_oom": self._out_of_memory, "_deep": self.gosubs_full, "_call": self.call_area, "_call_file": self.call_file,
+            "_oom": self._out_of_memory, "_deep": self.gosubs_full, "_loops": self.open_loops, "_call": self.call_area, "_call_file": self.call_file,
             "_bank": self.data_bank,
             "_on": self.on_index, "_for": self.for_push, "_next": self.next_frame,
             "_pop": self.stack.pop, "_next_any": self.next_any, "_stop": self._stopper(area),
@@ -490,7 +491,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             ns.update({"_ran": self.ran, "_valf": self.valf, "_fre0": self.free_area, "_sroom": self.string_room})
         ns.update(self._trig_functions())
         if self.dialect.arithmetic == "decimal":
-            from yaseer.basic.arithmetic import decimal_arith, decimal_scales  # here: only --arith decimal loads the decimal module
+            from yaseer.basic.arithmetic import decimal_arith, decimal_calls, decimal_scales  # here: only --arith decimal loads the decimal module
 
             if self.dialect.words:
                 ns.update(decimal_arith.rounding_all(casio_math.RUNTIME))
@@ -498,6 +499,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             ns.update(self._trig_functions())
             ns.update(decimal_arith.rounding_all({name: ns[name] for name in decimal_arith.ENTERING if name in ns}))
             ns.update(decimal_scales.writers(ns))
+            ns.update(decimal_calls.helpers(ns))
+            ns["_rndr"] = self._first_raw_draw
         self.namespaces[area] = ns
         return ns
 
@@ -896,15 +899,25 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
 
     def _first_draw(self) -> float:
         """RND's next number, the first time an area draws one: from then on each area's
-        ``_rndf`` (RND and RND(x) with a constant x > 0) is the generator's own drawer."""
-        draw = self.random.drawer()
-        if self.dialect.arithmetic == "decimal":  # (12-digit decimals, as the namespace's other entries)
+        ``_rndf`` (RND and RND(x) with a constant x > 0) is the generator's own drawer
+        (in decimal arithmetic rounded to 12 digits, as the namespace's other entries)."""
+        return self._set_drawers()[1]()
+
+    def _first_raw_draw(self) -> float:
+        """``_rndr``'s first number (decimal arithmetic, whose compiled code rounds it): from then
+        on each area's ``_rndr`` is the generator's own drawer, ``_rndf`` as :meth:`_first_draw`."""
+        return self._set_drawers()[0]()
+
+    def _set_drawers(self) -> tuple:
+        """Every area's ``_rndr`` and ``_rndf``: (the generator's drawer, the one RND calls)."""
+        draw = rounded_draw = self.random.drawer()
+        if self.dialect.arithmetic == "decimal":
             from yaseer.basic.arithmetic.decimal_arith import rounding
 
-            draw = rounding(draw)
+            rounded_draw = rounding(draw)
         for namespace in self.namespaces.values():
-            namespace["_rndf"] = draw
-        return draw()
+            namespace["_rndr"], namespace["_rndf"] = draw, rounded_draw
+        return draw, rounded_draw
 
     def randomize(self, seed, kind: str = "!") -> None:
         """RANDOMIZE seed; ``kind`` is the seed's type ("%", "!", "#", see yaseer.basic.arithmetic.randomness).

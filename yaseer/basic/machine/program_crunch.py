@@ -38,7 +38,7 @@ from yaseer.basic.machine.program_file import (
     END_OF_FILE, TOKENISED, TOKENS, TWO_BYTE_TOKENS, line_text, protected_file,
 )
 from yaseer.basic.source.scanner import (
-    EXACT_DOUBLE, LINE_NUMBER_WORDS, detokenize, exact_double, gw_number, radix_number,
+    EXACT_MARKERS, LINE_NUMBER_WORDS, detokenize, exact_constant, gw_number, radix_number,
 )
 
 # GW-BASIC 3.23's program start (TXTTAB) with its default /F:3 /S:128 file buffers: the
@@ -76,9 +76,9 @@ def crunch_line(text: str) -> bytes:
         elif c == " ":
             out.append(0x20)
             i += 1
-        elif c == EXACT_DOUBLE and not data and exact_double(upper, i) is not None:
-            constant, i = exact_double(upper, i)  # a file's double constant: its own bytes back
-            out += bytes((0x1F,)) + constant
+        elif c in EXACT_MARKERS and not data and exact_constant(upper, i) is not None:
+            marker, constant, i = exact_constant(upper, i)  # a file's number constant: its own bytes back
+            out += _codes(marker) + constant
         elif data:
             out += _codes(c)
             i += 1

@@ -21,8 +21,8 @@ from __future__ import annotations
 
 from yaseer.basic.arithmetic import mbf_double
 from yaseer.basic.arithmetic.values import DOUBLE_DIGITS, SINGLE_DIGITS, double_of, unsigned_text
-from yaseer.basic.machine.gwfunctions import _from_mbf
-from yaseer.basic.source.scanner import EXACT_DOUBLE, gw_number
+from yaseer.basic.machine.gwfunctions import _from_mbf, mks
+from yaseer.basic.source.scanner import gw_number
 
 END_OF_FILE = 0x1A  # Ctrl-Z
 TOKENISED = 0xFF
@@ -118,9 +118,10 @@ def unprotect(data: bytes) -> bytes:
 
 def detokenise(data: bytes, exact: bool = False) -> str:
     """A tokenised program (after the 0xFF) as numbered text lines, as LIST shows them; a file
-    cut short ends with its last whole line.  ``exact``: a double constant is its 16 digits
-    only where they read back to its 8 bytes, else scanner.EXACT_DOUBLE and the bytes (the
-    program then keeps all 56 bits, and SAVE writes them back)."""
+    cut short ends with its last whole line.  ``exact``: a double or single constant is its
+    16 or 7 digits only where they read back to its 8 or 4 bytes, else scanner.EXACT_DOUBLE
+    or EXACT_SINGLE and the bytes (the program then keeps all their bits, and SAVE writes
+    them back)."""
     lines = []
     i = 0
     while i + 4 <= len(data):
@@ -214,18 +215,21 @@ def _token(body: bytes, i: int, exact: bool = False) -> tuple[str | None, int]:
         return str(int.from_bytes(value, "little", signed=True)), i + 3
     if byte == 0x1D:
         text = unsigned_text(_from_mbf(value), SINGLE_DIGITS, "E")
-        return (text if "." in text or "E" in text else text + "!"), i + 5
-    parts = mbf_double.from_bytes(value)
-    text = unsigned_text(double_of(parts), DOUBLE_DIGITS, "D")  # all 56 bits, as CVD
-    text = text if "D" in text else text + "#"
-    if exact and _read_back(text) != value:
-        text = EXACT_DOUBLE + value.hex().upper()
-    return text, i + 9
+        text = text if "." in text or "E" in text else text + "!"
+    else:
+        text = unsigned_text(double_of(mbf_double.from_bytes(value)), DOUBLE_DIGITS, "D")  # all 56 bits, as CVD
+        text = text if "D" in text else text + "#"
+    if exact and _read_back(text, size) != value:
+        text = chr(byte) + value.hex().upper()  # scanner.EXACT_SINGLE / EXACT_DOUBLE
+    return text, i + 1 + size
 
 
-def _read_back(text: str) -> bytes:
-    """The 8 bytes a double constant's listed ``text`` gives when the line is read again."""
+def _read_back(text: str, size: int) -> bytes:
+    """The ``size`` bytes (4: a single, 8: a double) a constant's listed ``text`` gives when
+    the line is read again."""
     number = gw_number(text, 0)[0][0]
+    if size == 4:
+        return mks(number).encode("latin-1")
     return mbf_double.to_bytes(getattr(number, "parts", None) or mbf_double.parts(number))
 
 

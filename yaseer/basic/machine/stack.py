@@ -59,6 +59,11 @@ class ControlStack:
         A return block and a program area's mark are a level each; FOR loops are none."""
         return sum(1 for entry in self.stack if type(entry) is int or entry is AREA_MARK) >= self.gosub_levels
 
+    def open_loops(self) -> int:
+        """How many FOR loops the stack holds open (a dialect's FOR levels count them: casio's
+        29, FOR_NEXT_STEP.md item 4; a native loop's enclosing native loops are added by its code)."""
+        return sum(1 for entry in self.stack if type(entry) is ForFrame)
+
     def gosub_return(self) -> int:
         """RETURN: the block to go back to (-2 ends a BASIC area); FOR loops opened since the GOSUB close."""
         stack = self.stack
@@ -89,7 +94,8 @@ class ControlStack:
             if frame.key == key:  # re-entering a loop: drop it and the loops inside it
                 del stack[k:]
                 break
-        if len(stack) >= MAX_STACK:
+        levels = self.for_levels
+        if len(stack) >= MAX_STACK or (levels is not None and len(stack) >= levels and self.open_loops() >= levels):
             raise BasicError("Out of memory", OUT_OF_MEMORY)
         stack.append(ForFrame(key, limit, step, body, next_id))
 

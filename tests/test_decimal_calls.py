@@ -1,0 +1,250 @@
+"""The compiled SQR, LN, LOG, EXP, SIN, COS and RND of ``--arith decimal`` (number_models.
+DecimalNumbers.call, their proof in yaseer/basic/arithmetic/decimal_calls.py) against mpmath
+at 40 digits rounded half up to 12 digits, on the argument's 12-digit decimal, and against
+decimal_arith's routine (the code before the inline path) on every argument: thousands of
+generated arguments per function and unit, among them the hard ones (near 1 for LN and LOG,
+angles near the zeros of SIN and COS, large whole angles, fractions beyond a turn, perfect
+squares, the range's ends).  Each family counts the results the inline path gave, so that a
+path never taken fails; planted bugs (a wider band, a larger scale, a raw sine of any angle)
+must be caught."""
+
+from __future__ import annotations
+
+import math
+import random
+from fractions import Fraction
+
+import mpmath
+import pytest
+
+from yaseer.basic.arithmetic import decimal_arith, decimal_calls
+from yaseer.basic.compile.number_models import DecimalNumbers
+from yaseer.basic.errors import BasicError
+
+MP_FUNCTIONS = {"_sqrt": mpmath.sqrt, "_log": mpmath.log, "_log10": mpmath.log10, "_exp": mpmath.exp,
+                "_sin": mpmath.sin, "_cos": mpmath.cos}
+TURN = {"DEG": 360, "GRA": 400, "RAD": None}
+
+
+def round12(value: Fraction) -> float:
+    """``value`` rounded half up (away from zero) to 12 significant digits, as a float."""
+    if value == 0:
+        return 0.0
+    sign = -1 if value < 0 else 1
+    value = abs(value)
+    exponent = math.floor(math.log10(value))
+    while value >= Fraction(10) ** (exponent + 1):
+        exponent += 1
+    while value < Fraction(10) ** exponent:
+        exponent -= 1
+    scale = Fraction(10) ** (11 - exponent)
+    return sign * float(Fraction(math.floor(value * scale + Fraction(1, 2))) / scale)
+
+
+def reference(helper: str, x: float, unit: str = "DEG"):
+    """mpmath's value of the function at ``x``'s 12-digit decimal rounded to 12 digits; None at a
+    right angle (the arithmetic's value is exact there)."""
+    mpmath.mp.dps = 40
+    d = Fraction(format(x, ".12g"))
+    arg = mpmath.mpf(d.numerator) / d.denominator
+    if helper in ("_sin", "_cos"):
+        if unit == "GRA":  # (the FX-850P's grads are 0.9 degree: the degrees rounded to 12 digits)
+            d = Fraction(format(round12(d * Fraction(9, 10)), ".12g"))
+            arg = mpmath.mpf(d.numerator) / d.denominator
+        if unit != "RAD" and d % 90 == 0:
+            return None
+        arg = arg * mpmath.pi / 180 if unit != "RAD" else arg
+    value = MP_FUNCTIONS[helper](arg)
+    if value == 0:
+        return 0.0
+    exact = Fraction(mpmath.nstr(value, 38, min_fixed=-400, max_fixed=400))
+    return round12(exact)
+
+
+class Site:
+    """One compiled call of ``helper`` on the local ``x`` with its cache, counting the results its
+    inline path gave."""
+
+    def __init__(self, helper: str, unit: str = "DEG", mutate=None):
+        model = DecimalNumbers()
+        code, _ = model.call(helper, helper, ["x"] if helper != "_rndf" else [], ["n"], "n")
+        if mutate is not None:
+            code = mutate(code)
+        self.namespace = {**decimal_arith.RUNTIME, **decimal_arith.trig_functions(unit)}
+        self.namespace.update({name: math.nan for name in model.cache_bases})
+        self.namespace.update(decimal_calls.helpers(self.namespace))
+        self.routine = self.namespace[helper if helper != "_rndf" else "_d13"]
+        self.slow = self.routines = 0
+        writer = self.namespace["_zdf"]
+
+        def counted(*args):
+            self.slow += 1
+            return writer(*args)
+
+        def counted_routine(*args):
+            self.routines += 1
+            return self.routine(*args)
+        self.namespace["_zdf"] = counted
+        self.namespace[helper if helper != "_rndf" else "_d13"] = counted_routine
+        exec(f"def run(x):\n    return {code}\n", self.namespace)
+        self.run = self.namespace["run"]
+        self.calls = 0
+
+    def __call__(self, x: float):
+        self.calls += 1
+        return self.run(x)
+
+    @property
+    def fast(self) -> int:
+        return self.calls - self.slow
+
+
+def own(x: float) -> float:
+    return float(format(x, ".12g"))
+
+
+def arguments(helper: str, unit: str, rng: random.Random) -> list[float]:
+    """Generated own decimals for ``helper``: mostly in a few decades in turn (a loop's
+    arguments), with the hard cases among them."""
+    values = []
+    if helper == "_sqrt":
+        for _ in range(1500):
+            values.append(own(rng.uniform(1, 10) * 10.0 ** rng.randint(-30, 30)))
+        values += [float(k * k) for k in range(1, 300)] + [own(k * k * 1e-6) for k in range(1, 200)]
+        values += [9.99999999999e99, 1e-99, 0.0, -4.0]
+    elif helper in ("_log", "_log10"):
+        for _ in range(1200):
+            values.append(own(rng.uniform(1, 10) * 10.0 ** rng.randint(-40, 40)))
+        values += [own(1 + k * 1e-11) for k in range(-60, 60)] + [own(1 + k * 1e-6) for k in range(-60, 60)]
+        values += [10.0 ** k for k in range(-20, 21)] + [float(k) for k in range(1, 400)]
+        values += [9.99999999999e99, 1e-99, 0.0, -1.0]
+    elif helper == "_exp":
+        for _ in range(1500):
+            values.append(own(rng.uniform(-25, 25)))
+        values += [float(k) for k in range(-30, 31)] + [own(k * 1e-9) for k in range(-50, 50)]
+    elif helper in ("_sin", "_cos"):
+        turn = TURN[unit] or 6.283185307179586
+        for _ in range(800):
+            values.append(own(rng.uniform(-turn, turn)))
+        for _ in range(300):
+            values.append(float(rng.randint(-10 ** 6, 10 ** 6)))
+        for _ in range(200):
+            values.append(own(rng.randint(-10 ** 14, 10 ** 14)))
+        for _ in range(200):
+            values.append(own(rng.uniform(-1e6, 1e6)))  # a fraction beyond a turn: the routine
+        if unit != "RAD":
+            quarter = TURN[unit] // 4
+            for k in range(-12, 13):
+                for off in (0.0, 1e-9, -1e-9, 1e-5, -1e-5, 0.01, -0.01):
+                    values.append(own(k * quarter + off))
+        else:
+            for k in range(-6, 7):
+                for off in (1e-6, -1e-6, 1e-3):
+                    values.append(own(k * math.pi + off))
+    return sorted(values)
+
+
+CASES = [("_sqrt", "DEG"), ("_log", "DEG"), ("_log10", "DEG"), ("_exp", "DEG"),
+         ("_sin", "DEG"), ("_cos", "DEG"), ("_sin", "GRA"), ("_cos", "GRA"), ("_sin", "RAD"), ("_cos", "RAD")]
+
+
+def outcome(function, x):
+    try:
+        return function(x)
+    except BasicError as exc:
+        return ("error", exc.code)
+
+
+@pytest.mark.parametrize("helper, unit", CASES)
+def test_inline_function_is_mpmaths_rounding_and_the_routines(helper, unit):
+    rng = random.Random(hash((helper, unit)) & 0xFFFF)
+    site = Site(helper, unit)
+    checked = 0
+    for x in arguments(helper, unit, rng):
+        got = outcome(site, x)
+        assert got == outcome(site.routine, x), (helper, unit, x, got)
+        # (a whole angle in radians from 1E+9 up: the routine's 25-digit reduction by 2 pi loses
+        # digits there, as it did before; the inline path leaves those to it)
+        if unit == "RAD" and abs(x) >= 1e9:
+            continue
+        if type(got) is float and x > 0 or helper in ("_exp", "_sin", "_cos"):
+            expected = reference(helper, x, unit)
+            if expected is not None and abs(expected) >= 1e-99:
+                assert got == expected, (helper, unit, x, got, expected)
+                checked += 1
+    assert checked > 1000
+    if unit == "GRA":  # (the routine rounds the angle in degrees to 12 digits first: no float value)
+        assert site.routines == site.calls
+        return
+    # the inline path is common (runs of one decade), the routine takes the hard arguments
+    assert site.fast > site.calls * 0.3 and site.routines < site.calls * 0.5, (site.fast, site.routines, site.calls)
+
+
+def test_rnd_is_the_number_drawn_rounded_to_12_digits():
+    site = Site("_rndf")
+    rng = random.Random(5)
+    drawn = [rng.random() for _ in range(20000)]
+    # halfway between 12-digit decimals: 13 digits ending in 5, exactly a double (k / 2**13)
+    drawn += [k / 8192 for k in range(1, 8192)]
+    drawn += [1e-5, 0.0999999999999999, 0.1, 0.0, 0.9999999999999999, 2.0 ** -40]
+    values = iter(drawn)
+    site.namespace["_rndr"] = lambda: next(values)
+    for v in drawn:
+        assert site(None) == float(format(v, ".12g")) == decimal_arith.rounded(v), v
+    assert site.fast > site.calls * 0.6 and site.routines > 100  # (the halfway cases take the routine)
+
+
+@pytest.mark.parametrize("helper, unit, mutate", [
+    ("_log", "DEG", lambda code: code.replace(", 1000000000000.0))", ", 1e+22))")),  # any scale near LN(1)
+    ("_log10", "DEG", lambda code: code.replace(", 1000000000000.0))", ", 1e+22))")),
+    ("_sin", "DEG", lambda code: code.replace("-0.49609375 <", "-0.5 <").replace("< 0.49609375", "< 0.5")),
+])
+def test_planted_bugs_are_caught(helper, unit, mutate):
+    site = Site(helper, unit, mutate)
+    rng = random.Random(3)
+    wrong = 0
+    xs = arguments(helper, unit, rng)
+    if helper == "_sin":  # many values that the band test's margin turns away
+        xs = [own(rng.uniform(0, 360)) for _ in range(20000)]
+    for x in xs:
+        got = outcome(site, x)
+        expected = reference(helper, x, unit) if type(got) is float else None
+        wrong += expected is not None and got != expected
+    assert wrong > 0
+
+
+def test_raw_sine_of_any_angle_would_be_wrong():
+    """The raw sine refuses a fraction beyond a turn: taking it would give wrong digits."""
+    rng = random.Random(11)
+    wrong = 0
+    for _ in range(400):
+        x = own(rng.uniform(1e8, 1e9))
+        float_value = math.sin(math.fmod(x, 360.0) * (math.pi / 180.0))
+        expected = reference("_sin", x)
+        wrong += own(float_value) != expected
+        assert math.isnan(decimal_calls.angle_functions("DEG")["_fsin"](x))
+    assert wrong > 0
+
+
+def test_inline_functions_in_a_program_change_unit_with_angle():
+    import io
+
+    from yaseer.basic.dialects.dialect import CASIO
+    from yaseer.basic.machine.machine import Machine
+
+    program = ("10 FOR K=1 TO 40: A(K)=SIN(K*9): NEXT K\n20 ANGLE 1\n"
+               "30 FOR K=1 TO 40: B(K)=SIN(K/10): C(K)=SQR(K)+LN(K)+LOG(K)+EXP(K/10)+COS(K): D(K)=RND(1): NEXT K\n")
+    machine = Machine(screen=io.StringIO(), printer=io.StringIO(), dialect=CASIO.with_arithmetic("decimal"))
+    machine.load("5 DIM A(40),B(40),C(40),D(40)\n" + program)
+    machine.run()
+    arrays = machine.arrays
+    for k in range(1, 41):
+        assert arrays["A"][k] == (decimal_arith.sin(k * 9.0)), k
+        assert arrays["B"][k] == decimal_arith.trig_functions("RAD")["_sin"](own(k / 10)), k
+        parts = [decimal_arith.sqrt(k), decimal_arith.log(k), decimal_arith.log10(k),
+                 decimal_arith.exp(own(k / 10)), decimal_arith.trig_functions("RAD")["_cos"](float(k))]
+        total = parts[0]
+        for part in parts[1:]:
+            total = decimal_arith.add(total, part)
+        assert arrays["C"][k] == total, k
+        assert arrays["D"][k] == own(arrays["D"][k]) and 0 <= arrays["D"][k] < 1
