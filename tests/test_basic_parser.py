@@ -107,3 +107,13 @@ def test_precedence_of_relations_and_logic():
     stmt = one("A = 1 < 2 AND NOT 3 = 4 OR 0")
     assert stmt.value.op == "OR"
     assert stmt.value.left.op == "AND"
+
+
+def test_a_gw_statement_the_scanner_cannot_read_is_bad_when_reached():
+    # NAME is a reserved word, then a "$" no token starts with: the PRINT before it stays
+    line = parse_line(10, 'PRINT "A": NAME$="": PRINT "B"', GW)
+    assert line.error is None
+    assert [type(s).__name__ for s in line.statements] == ["Print", "BasicError", "Print"]
+    assert str(line.statements[1]) == "Syntax error"
+    # casio keeps reporting the whole line (its errors are found before the line runs)
+    assert str(parse_line(10, 'PRINT "A": X=1@').error) == "Syntax error"

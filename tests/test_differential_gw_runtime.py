@@ -130,6 +130,29 @@ def test_generated_errors_where_execution_reaches_them_match_pcbasic(pc):
     assert_generated_match(pc, error_program, 13, 100)
 
 
+# Statements the whole-line reading refuses in other ways: a reserved word as a variable
+# (``NAME$``: the word, then a ``$`` no token starts with), brackets, stray operators, a
+# bad THEN branch before a good ELSE.
+BROKEN = ['NAME$ = ""', "NAME = 1", "PRINT$ = 1", "LEN$ = 2", "TO = 1", "CLS$ = \"A\"",
+          "X = (1", "X = 1)", "X = *2", "X = [1]", "X == 1", "X = 1 2 3 @", "@", "A = 1 = ",
+          "IF {k} > 2 THEN NAME$ = 1 ELSE PRINT {k}", "IF {k} > 2 THEN PRINT {k} ELSE END$ = 1"]
+
+
+def broken_program(rng: random.Random) -> str:
+    statements = [rng.choice(GOOD).format(k=rng.randint(0, 5)) for _ in range(rng.randint(1, 3))]
+    statements.append(rng.choice(BROKEN).format(k=rng.randint(0, 5)))
+    if rng.random() < 0.4:
+        statements.append(rng.choice(["PRINT 99", "NAME$ = 2", "X = (", "PRINT 98;"]))
+    handler = rng.random() < 0.3  # RESUME NEXT runs the statements after the bad one
+    head = "5 ON ERROR GOTO 100\n" if handler else ""
+    tail = "40 END\n100 PRINT \"ERR\"; ERR: RESUME NEXT\n" if handler else ""
+    return f"{head}10 PRINT \"START\"\n20 {': '.join(statements)}\n30 PRINT \"NEXT LINE\"\n{tail}"
+
+
+def test_generated_unscannable_statements_run_what_precedes_them_as_pcbasic(pc):
+    assert_generated_match(pc, broken_program, 17, 120)
+
+
 # ---------------------------------------------------------------- FOR bound to its NEXT
 
 def loop_program(rng: random.Random) -> str:

@@ -200,3 +200,36 @@ def test_literals_and_data_take_no_string_space_as_pcbasic(pc):
         source = _literal_program(rng)
         pc.statement("ON ERROR GOTO 0")
         assert run_gw(source) == pc.program(source), source
+
+
+def option_base_program(rng) -> str:
+    """Arrays made with and without DIM, of each type and up to 3 dimensions, under OPTION
+    BASE 0 or 1: the bytes each takes (FRE before and after) and its largest subscripts."""
+    base = rng.choice((0, 1))
+    lines = [f"OPTION BASE {base}"]
+    for k in range(rng.randint(1, 4)):
+        name = f"A{k}{rng.choice(('', '%', '#', '$'))}"
+        ndim = rng.randint(1, 3)
+        value = '""' if name.endswith("$") else "1"  # (a literal's bytes: see the literals test)
+        if rng.random() < 0.5:
+            sizes = [rng.randint(base, 6) for _ in range(ndim)]
+            lines.append(f"X=FRE(0): DIM {name}({','.join(map(str, sizes))}): PRINT X-FRE(0)")
+        else:
+            sizes = [10] * ndim
+            lines.append(f"X=FRE(0): {name}({','.join(['1'] * ndim)})={value}: PRINT X-FRE(0)")
+        last = ",".join(map(str, sizes))
+        lines.append(f"{name}({last})={value}: PRINT {name}({last})")
+    lines.append(f"{name}({','.join(['11'] * ndim)})={value}")  # beyond the last: Subscript out of range
+    return "".join(f"{10 * (k + 1)} {text}\n" for k, text in enumerate(lines))
+
+
+def test_arrays_under_option_base_take_the_bytes_pcbasic_counts(pc):
+    # under OPTION BASE 1 an array has one entry fewer a dimension (BIPTRG.ASM: 10 without DIM)
+    import random
+
+    from test_differential_support import base_seed, case_count, gw_programs_differing
+
+    rng = random.Random(base_seed() + 41)
+    bad, marked = gw_programs_differing(pc, lambda: option_base_program(rng), case_count(60), "Subscript out of range")
+    assert not bad, bad[0]
+    assert marked == case_count(60)

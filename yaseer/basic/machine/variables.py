@@ -195,8 +195,17 @@ class Variables:
         ``block_locals`` (its scalars' Python locals, not yet stored back) over the scalars."""
         scalars = self.scalars_with(block_locals)
         return memory_model.free_and_strings(self.dialect.free_memory, self.programs.get(0, {}), scalars,
-                                             self.arrays, self.array_dims, self.fns, self.string_space.text,
+                                             self.arrays, self.held_dims(), self.fns, self.string_space.text,
                                              self.made)
+
+    def held_dims(self) -> dict:
+        """Each array's largest subscripts as GW's memory holds it: under OPTION BASE 1 one
+        entry fewer a dimension (BIPTRG.ASM reads each subscript less one, DEC DX after
+        INTIDX, before DIM adds the zero entry; one made without DIM has 10 entries, NOTDIM:
+        OPTVAL XOR 11), so A(10) holds A(1) to A(10)."""
+        if not self.subscript_base:
+            return self.array_dims
+        return {name: tuple(d - 1 for d in dims) for name, dims in self.array_dims.items()}
 
     def held_strings(self, block_locals: dict) -> set:
         """The ids of the string objects the variables hold (``block_locals`` as in

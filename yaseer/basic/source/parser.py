@@ -19,7 +19,7 @@ from yaseer.basic.dialects.dialect import CASIO, Dialect
 from yaseer.basic.errors import BasicError, MISSING_OPERAND, SYNTAX_ERROR
 from yaseer.basic.source.parse_tables import ACTIONS, END, RULES, START
 from yaseer.basic.dialects.reserved import UNSUPPORTED, mark_unsupported, unsupported_message
-from yaseer.basic.source.scanner import Token, tokenize
+from yaseer.basic.source.scanner import UNSCANNED, Token, tokenize, tokenize_statements
 
 
 def _number_value(token: Token):
@@ -733,6 +733,8 @@ def _grammar_error(exc: GrammarError, dialect: Dialect) -> BasicError:
     kind = exc.token.type
     if kind == UNSUPPORTED:
         return BasicError(unsupported_message(exc.token.value), SYNTAX_ERROR)
+    if kind == UNSCANNED:
+        return exc.token.value  # the scanner's own error for the statement
     jump_target = "HASH" in exc.expected and "NAME" not in exc.expected  # GOTO / GOSUB without a line: no operand
     if dialect.errors_when_reached and kind in _STATEMENT_ENDS and exc.expected & _OPERAND_STARTS and not jump_target:
         return BasicError("Missing operand", MISSING_OPERAND)
@@ -780,47 +782,57 @@ def _statements_after_error(tokens: list, bad_start: int, dialect: Dialect) -> l
     return []
 
 
-def _place_error(statements: list, err: BasicError) -> list:
-    """``statements`` followed by ``err`` (raised when reached); after an IF whose last
-    branch runs to the end of the line the error belongs to that branch."""
+def _place_error(statements: list, rest: list) -> list:
+    """``statements`` followed by ``rest`` (the error, raised when reached, then the statements
+    RESUME NEXT goes on with); after an IF whose last branch runs to the end of the line
+    they belong to that branch."""
     if statements and isinstance(statements[-1], ast.If):
         last = statements[-1]
         for field in ("otherwise", "then"):
             branch = getattr(last, field)
             if isinstance(branch, list) and branch:
-                setattr(last, field, _place_error(list(branch), err))
+                setattr(last, field, _place_error(list(branch), rest))
                 return statements
             if branch is not None:  # a line number: the rest of the line never runs
-                last.unreachable = list(last.unreachable) + [err]
+                last.unreachable = list(last.unreachable) + rest
                 return statements
-    return statements + [err]
+    return statements + rest
 
 
 def _recover(text: str, err: BasicError, dialect: Dialect):
     """The statements of a bad line with ``err`` in place of its first bad statement
-    (see :func:`_recover_tokens`); None when the line cannot even be scanned."""
-    try:
-        tokens = mark_unsupported(tokenize(text, dialect))
-    except BasicError:
-        return None
+    (see :func:`_recover_tokens`); a statement the scanner cannot read is bad in its turn."""
+    tokens = mark_unsupported(tokenize_statements(text, dialect))
+    if any(token.type == UNSCANNED for token in tokens):
+        try:  # err was the scanner's; an earlier statement may be bad in another way (``PRINT 1+``)
+            _parse(tokens)
+        except GrammarError as exc:
+            err = _grammar_error(exc, dialect)
+        except BasicError as exc:
+            err = exc
     return _recover_tokens(tokens, err, dialect)
 
 
 def _recover_tokens(tokens: list, err: BasicError, dialect: Dialect) -> list:
-    """The statements before the first bad one, ``err``, then the statements after it."""
+    """The statements before the first bad one, ``err``, then the statements after it
+    (inside the branch of an IF those before it end with, where the bad one belongs)."""
     good, bad_start = _statements_before_error(tokens)
-    if good and isinstance(good[-1], ast.If):
-        return _place_error(good, err)
+    return _place_error(good, _bad_and_after(tokens, bad_start, err, dialect))
+
+
+def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Dialect) -> list:
+    """The bad statement that starts at ``bad_start`` as it runs (see :func:`_recover_tokens`),
+    then the statements after it."""
     guarded = _guarding_if(tokens, bad_start, err, dialect)
     if guarded is not None:
-        return good + [guarded]
+        return [guarded]
     defined = _deferred_definition(tokens, bad_start, err)
     if defined is not None:
-        return good + [defined] + _statements_after_error(tokens, bad_start, dialect)
+        return [defined] + _statements_after_error(tokens, bad_start, dialect)
     touched = _touched_element(tokens, bad_start, err)
     if touched is not None:
-        return good + [touched] + _statements_after_error(tokens, bad_start, dialect)
-    return good + _printed_before_error(tokens, bad_start) + [err] + _statements_after_error(tokens, bad_start, dialect)
+        return [touched] + _statements_after_error(tokens, bad_start, dialect)
+    return _printed_before_error(tokens, bad_start) + [err] + _statements_after_error(tokens, bad_start, dialect)
 
 
 def _guarding_if(tokens: list, start: int, err: BasicError, dialect: Dialect):

@@ -642,6 +642,67 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
     return tokens
 
 
+UNSCANNED = "UNSCANNED"  # a statement the scanner cannot read; its value the scanner's error
+
+
+def _outside_quotes_colons(text: str, start: int = 0) -> list[int]:
+    """The places of the colons after ``start`` that are not inside a string literal."""
+    places, quoted = [], False
+    for k in range(start, len(text)):
+        if text[k] == '"':
+            quoted = not quoted
+        elif text[k] == ":" and not quoted:
+            places.append(k)
+    return places
+
+
+def tokenize_statements(text: str, dialect: Dialect = CASIO) -> list:
+    """The tokens of one line as :func:`tokenize` gives them, except that each statement
+    the scanner cannot read (``NAME$=1``: NAME is a reserved word, then a ``$``) is one
+    ``UNSCANNED`` token holding its ``BasicError``: GW-BASIC's tokeniser (GWMAIN.ASM
+    CRUNCH) stores any text, and the statement is found bad only when NEWSTT reaches it,
+    after the statements before it ran.  A statement ends at a colon outside quotes."""
+    try:
+        return tokenize(text, dialect)
+    except BasicError as whole:
+        error = whole
+    colons = _outside_quotes_colons(text)
+    good, bad_from = [], 0
+    for colon in colons:
+        try:
+            tokens = tokenize(text[:colon], dialect)
+        except BasicError as exc:
+            error = exc  # the first statement that does not scan ends at this colon
+            break
+        good, bad_from = tokens + [Token("_COLON", ":")], colon + 1
+    after = next((colon for colon in colons if colon >= bad_from), None)
+    bad = good + _scanned_start(text[bad_from:after], error, dialect)
+    if after is None:
+        return bad
+    return bad + [Token("_COLON", ":")] + tokenize_statements(text[after + 1:], dialect)
+
+
+def _scanned_start(statement: str, error: BasicError, dialect: Dialect) -> list:
+    """A statement that does not scan: the tokens before the first lexeme that fails, then
+    one ``UNSCANNED`` token (so ``IF 0 THEN NAME$=1`` keeps its IF and skips its branch)."""
+    read = 0
+    try:
+        for _kind, _value, _start, read in _lexemes(statement, dialect):
+            pass
+    except BasicError as exc:
+        error = exc
+    try:
+        head = tokenize(statement[:read], dialect)
+    except BasicError:
+        head = []
+    otherwise = _upper_outside_strings(statement).find("ELSE", read)
+    if otherwise < 0 or not any(token.type == "THEN" for token in head):
+        return head + [Token(UNSCANNED, error)]
+    # the bad THEN branch ends at ELSE: a false condition runs the ELSE branch (GWMAIN.ASM IF)
+    return head + [Token(UNSCANNED, error), Token("ELSE", "ELSE")] + tokenize_statements(
+        statement[otherwise + 4:], dialect)
+
+
 def _open_words(tokens: list, words: dict) -> None:
     """In an OPEN statement, the reserved words OPEN reads as the names its grammar expects
     (``words``: the dialect's ``open_words``, word sequence -> name: the Casio's ``OUT PUT``,
