@@ -325,6 +325,12 @@ class Session:
         else:
             self.program.pop(number, None)
         self._can_continue = False
+        self._program_edited()
+
+    def _program_edited(self) -> None:
+        """A typed line or DELETE changed the program: the engine applies the dialect's rule."""
+        if hasattr(self.engine, "program_edited"):
+            self.engine.program_edited()
 
     def _show_entry_messages(self, program: Program) -> None:
         """What GW-BASIC prints when it reads the lines ``program`` in (``Overflow`` for
@@ -408,6 +414,7 @@ class Session:
         for number in doomed:
             del self.program[number]
         self._can_continue = False
+        self._program_edited()
 
     def command_renum(self, argument: str) -> None:
         """RENUM [new[,old[,step]]] (defaults 10, first line, 10)."""
@@ -767,6 +774,12 @@ class MachineEngine:
     def reset(self) -> None:
         """Fresh variables and areas (NEW)."""
         self._machine = None
+
+    def program_edited(self) -> None:
+        """A program line was typed, replaced or deleted: where the dialect says so
+        (``edit_clears``: GW), the machine clears what RUN clears before it runs."""
+        if self._machine is not None and self._machine.dialect.edit_clears:
+            self._machine.reset()
 
     def run(self, areas: dict[int, Program], start: int | None) -> None:
         """RUN: a fresh machine with the typed areas' programs, from ``start`` or the top."""

@@ -306,12 +306,13 @@ statically nested blocks.  So loops nest as deep as the FOR stack allows (10,000
 innermost eight at native speed."""
 
 
-def plan(flat: list, entry_lines=(), dynamic_loops=()) -> Plan:
+def plan(flat: list, entry_lines=(), dynamic_loops=(), resumable: bool = False) -> Plan:
     """Decide the blocks of an area (see :class:`Plan`); the FORs at ``dynamic_loops``
-    (statement indices) are never native."""
+    (statement indices) are never native; ``resumable``: every statement starts a block
+    even without a RESUME here (a direct line whose error a program's handler may RESUME NEXT)."""
     n = len(flat)
     statements = [s for _, s in flat]
-    fine = any(isinstance(s, ast.Resume) and s.mode != "line"
+    fine = resumable or any(isinstance(s, ast.Resume) and s.mode != "line"
                for stmt in statements if not isinstance(stmt, BasicError) for s in walk_statements(stmt))
     bare_returns = bare_return_lines(flat, fine)
     first_index: dict[int, int] = {}

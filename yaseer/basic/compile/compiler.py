@@ -147,7 +147,10 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.trace = trace and not direct
         self.dynamic_loops = set(dynamic_loops)
         self.flat = flatten(lines)
-        self.plan = plan(self.flat, entry_lines, self.dynamic_loops)
+        # A direct line's error may be RESUMEd NEXT by the program's handler where the dialect
+        # traps it (GW), so each of its statements is a place to come back to.
+        self.plan = plan(self.flat, entry_lines, self.dynamic_loops,
+                         resumable=direct and dialect.direct_line_number is not None)
         self.line_first = {}
         for i, (number, _) in enumerate(self.flat):
             self.line_first.setdefault(number, i)

@@ -94,9 +94,12 @@ FIELDS = (
     "current_line_commands",  # tuple[str, ...]: ()
     "current_line_listed",  # bool: False
     "read_commits",  # bool: False
+    "direct_line_number",  # int | None: None
+    "edit_clears",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
-            True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False)
+            True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
+            None, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -253,6 +256,16 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         leaves it where that READ started, and a numeric variable is given the number at
         the start of an item that is not one (0 if none) before the Syntax error in the
         DATA line (DOASIG assigns, STRDN2 then finds no comma: TRMNOK, DATSNE).
+        ``direct_line_number``: the line number a direct statement runs under (GW's 65535:
+        GWMAIN.ASM ERROR stores CURLIN in ERRLIN and traps through ONELIN whatever the line,
+        so an ON ERROR GOTO left by a program catches a direct statement's error, ERL is
+        65535, and RESUME [NEXT] goes back into the direct line); None (casio): a direct
+        statement's error is never trapped (ON_ERROR_GOTO.md: "limited to BASIC program
+        execution").
+        ``edit_clears``: True when typing, replacing or DELETEing a program line in the
+        session clears what RUN clears (variables, arrays, FN, DEF types, OPTION BASE, RND's
+        seed, ON ERROR, open files, the stack; CONT impossible: GWMAIN.ASM FINI and GWLIST.ASM
+        DELETE end in BIMISC.ASM RUNC/CLEARC); False (casio) keeps them.
         ``program_areas``: True when ``GOSUB PROG n`` is a statement (the
         library programs are bound at start); False in GW-BASIC, where PROG
         is no word: ``GOSUB PROG n`` is then a syntax error unless program
@@ -314,6 +327,7 @@ GW = Dialect(
     current_line_commands=("LIST", "LLIST", "DELETE", "EDIT", "AUTO", "RENUM"), current_line_listed=True,
     variables_made=True,
     read_commits=True,
+    direct_line_number=65535, edit_clears=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -143,8 +143,8 @@ class Breaks:
                 item.body = mapping.get(item.body, item.body)
         for name in ("on_error", "error_point"):
             point = getattr(self, name)
-            if point is not None and point[0] == 0:
-                setattr(self, name, (0, mapping.get(point[1], point[1])))
+            if point is not None and point[0] == 0 and point[2:] in ((), (None,)):
+                setattr(self, name, (0, mapping.get(point[1], point[1]), *point[2:]))
 
 
 def _no_call_trace(frame, event, arg):

@@ -64,7 +64,8 @@ from yaseer.basic.machine.breaks import Breaks, _interrupt_handler
 from yaseer.basic.machine import casio_words
 from yaseer.basic.machine.casio_words import CasioWords
 from yaseer.basic.machine.signals import (  # noqa: F401  (the run-time exceptions are re-exported)
-    END, INTERNAL_ERROR, BreakPoint, DirectJump, ErrorTrapping, ProgramEnd, ProgramStop, to_basic_error,
+    END, INTERNAL_ERROR, BreakPoint, DirectJump, ErrorTrapping, ProgramEnd, ProgramStop, ResumeDirect,
+    to_basic_error,
 )
 from yaseer.basic.machine.io_statements import (  # noqa: F401  (the PRINT items are re-exported)
     COMMA, NUMBER_THEN_COMMA, InputOutput, Spc, Tab, _as_number, _same,
@@ -740,8 +741,13 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             del self.stack[mark:]
 
     # ------------------------------------------------------------ the run loop
-    def _run_area(self, area: int, compiled: CompiledArea, block: int) -> None:
-        """Run ``area`` from ``block`` until its RETURN (areas) or END (raises ProgramEnd)."""
+    def _run_area(self, area: int, compiled: CompiledArea, block: int, direct: bool = False) -> None:
+        """Run ``area`` from ``block`` until its RETURN (areas) or END (raises ProgramEnd).
+
+        ``direct``: ``compiled`` is a direct statement run against ``area``; an error of it that
+        the program's ON ERROR GOTO catches runs the handler in the program's code, and the
+        handler's RESUME [NEXT] comes back into ``compiled`` (ResumeDirect).
+        """
         blocks = compiled.blocks
         b = block
         while True:
@@ -751,12 +757,17 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
                 return
             except (ProgramEnd, ProgramStop, DirectJump, BrokenPipeError, OutputError):
                 raise
+            except ResumeDirect as back:
+                blocks, b = compiled.blocks, back.block
             except BaseException as exc:  # noqa: BLE001 - every error becomes a BASIC error
                 err = to_basic_error(exc)
                 err.at(self.line, area)
-                target = self._trap(err, area, b)
+                in_direct = direct and blocks is compiled.blocks
+                target = self._trap(err, area, b, compiled if in_direct else None)
                 if target is None:
                     raise err from None
+                if in_direct:
+                    blocks = self._compiled(area).blocks
                 b = target
 
     def reset(self) -> None:
@@ -811,6 +822,12 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             block = self._compiled(0).line_blocks[line]
         return block
 
+    def _ended(self) -> str:
+        """END (or the last line run): an error handler left so is left (BIMISC.ASM ENDST
+        clears ONEFLG), so the ON ERROR GOTO still set traps the next error."""
+        self.in_handler = False
+        return "end"
+
     def _execute(self, area: int, block: int) -> str:
         self.cont_point = None
         try:
@@ -833,7 +850,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
                 except RunAgain as again:  # RUN in the program
                     area, block = 0, self.run_again(again)
         except ProgramEnd:
-            return "end"
+            return self._ended()
         except BreakPoint as stop:
             self._disarm_break()
             if stop.area == 0 and stop.depth == 0:
@@ -868,7 +885,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         try:
             self.line = None
             try:
-                self._run_area(0, compiled, 0)
+                self._run_area(0, compiled, 0, direct=True)
             except BasicError as err:
                 if err.line == 0:
                     err.line = None
@@ -880,7 +897,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         except RunAgain as again:
             return self._execute(0, self.run_again(again))
         except ProgramEnd:
-            return "end"
+            return self._ended()
         except ProgramStop:
             return "stop"
         except DirectJump as jump:

@@ -48,6 +48,15 @@ class DirectJump(BaseException):
         self.line = line
 
 
+class ResumeDirect(BaseException):
+    """RESUME [NEXT] of an error a direct statement made: go back into the direct line at
+    ``block`` of its own code (the handler ran in the program's)."""
+
+    def __init__(self, block: int):
+        super().__init__(block)
+        self.block = block
+
+
 END = ProgramEnd  # raised as a class: a new instance each time (one shared instance would gather every
 # run's frames in its growing __traceback__ and keep every machine alive)
 
@@ -81,11 +90,14 @@ class ErrorTrapping:
         """RESUME / RESUME NEXT: the block of the failed statement, or of the one after it."""
         if not self.in_handler:
             raise _resume_without_error()
-        area, block = self.error_point
+        area, block, direct_code = self.error_point
         self.in_handler = False
         self.err = 0.0
+        code = direct_code or self._compiled(area)
         if next_statement:
-            return self._compiled(area).block_next.get(block, block + 1)
+            block = code.block_next.get(block, block + 1)
+        if direct_code is not None:
+            raise ResumeDirect(block)
         return block
 
     def resume_at(self, block: int) -> int:
@@ -110,16 +122,25 @@ class ErrorTrapping:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         raise BasicError.of_code(n)
 
-    def _trap(self, err: BasicError, area: int, block: int) -> int | None:
-        """The handler block for ``err`` if ON ERROR GOTO of this area catches it."""
+    def _trap(self, err: BasicError, area: int, block: int, direct_code=None) -> int | None:
+        """The handler block for ``err`` if ON ERROR GOTO of this area catches it.
+
+        ``direct_code``: the compiled direct statement that failed at ``block`` (None: the
+        program's own code); the dialect's ``direct_line_number`` says whether it is trapped.
+        """
         if self.on_error is None or self.in_handler or err.code == BREAK or not err.trappable:
             return None
         handler_area, handler_block = self.on_error
         if handler_area != area:
             return None
+        line = err.line or 0
+        if direct_code is not None:
+            line = self.dialect.direct_line_number
+            if line is None:
+                return None
         self.err = float(self.err_codes.get(err.code, err.code))  # the dialect's codes (casio: the manual's)
-        self.erl = float(err.line or 0)
-        if err.line and self.dialect.current_line_listed:  # a direct statement's error is at line 0: no DOT
+        self.erl = float(line)
+        if err.line and direct_code is None and self.dialect.current_line_listed:  # a direct error: no DOT
             self.current_line = err.line  # GWMAIN.ASM ERROR sets DOT before it looks for a trap
         for stream in self.streams:
             stream.row = []
@@ -128,7 +149,7 @@ class ErrorTrapping:
             runtime.abandon()
         self.in_handler = True
         self.pending_error = err
-        self.error_point = (area, block)
+        self.error_point = (area, block, direct_code)
         return handler_block
 
 
