@@ -281,9 +281,19 @@ def from_decimal(digits: int, power: int) -> tuple[bool, int, int]:
         number = from_integer(exact)
         for digit in text[used:]:
             number = add(multiply(number, _TEN), from_integer(int(digit)))
+    return scaled_by_power_of_ten(number, power)
+
+
+def scaled_by_power_of_ten(number: tuple[bool, int, int], power: int) -> tuple[bool, int, int]:
+    """``MDPTEN`` (MATH1.ASM): ``number`` times 10**power by one ``$FMULD`` by the table's
+    power (up to 10**38; beyond: :class:`Overflow` unless ``number`` is 0), or divided by
+    10**-power (``$FDIVD``), below 10**-38 by 10**(-power - 38) and then by 10**38,
+    below 10**-76 zero."""
     if power > 0:
         if power > 38:
-            raise Overflow(False)
+            if not number[1]:
+                return ZERO
+            raise Overflow(number[0])
         return multiply(number, _POWERS[power])
     if power < -76:
         return ZERO
@@ -291,3 +301,19 @@ def from_decimal(digits: int, power: int) -> tuple[bool, int, int]:
         number = divide(number, _POWERS[-power - 38])
         power = -38
     return divide(number, _POWERS[-power]) if power else number
+
+
+def single_rounded(p: tuple[bool, int, int]) -> tuple[bool, int, int]:
+    """``$CSD`` (MATH2.ASM): a double made single, its top 24 bits rounded up when the 25th
+    is 1 (``$ROUNM`` with bit 6 of the guard byte set: no tie to even), as a double again;
+    :class:`Overflow` when the rounding carries beyond exponent byte 255."""
+    negative, exponent, mantissa = p
+    if not exponent:
+        return ZERO
+    top = (mantissa >> 32) + (mantissa >> 31 & 1)
+    if top >> 24:
+        top >>= 1
+        exponent += 1
+        if exponent > 255:
+            raise Overflow(negative)
+    return negative, exponent, top << 32

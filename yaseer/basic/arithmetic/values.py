@@ -60,53 +60,15 @@ def to_single(x) -> float:
     return math.copysign(math.inf, r)
 
 
-# GW-BASIC reads a single-precision literal into Microsoft Binary Format: its digits as
-# an integer (cut to 24 bits), then divided or multiplied by ten once per decimal place
-# in a 32-bit working mantissa (24 bits and 8 guard bits), rounded to 24 bits at the
-# end.  That is not always the nearest single (``736.43455!`` reads as 736.4345...);
-# the routine below does the same steps (as PC-BASIC 2.0.8 reproduces them) so that
-# a literal has GW's value.  Working numbers: (exponent, mantissa), value
-# mantissa * 2**(exponent - 160), mantissa normalised to 32 bits.
-_MBF_TOP = 1 << 32
-_MBF_TEN = (132, 0xA0000000)
-
-
-def _mbf_div10(exponent: int, mantissa: int) -> tuple[int, int]:
-    """One division by ten: long division of the 32-bit mantissas (GW's order of steps)."""
-    divisor = _MBF_TEN[1]
-    exponent += 160 - _MBF_TEN[0] + 1  # the exponents subtract; each quotient bit takes one back
-    quotient, rest = 0, mantissa
-    while divisor > 0:
-        quotient <<= 1
-        exponent -= 1
-        if rest > divisor:
-            rest -= divisor
-            quotient += 1
-        divisor >>= 1
-    while quotient < (1 << 31):
-        exponent -= 1
-        quotient <<= 1
-    return exponent, quotient
-
-
-def _mbf_mul10(exponent: int, mantissa: int) -> tuple[int, int]:
-    """One multiplication by ten: 2x + 8x, the lower bits shifted out marked (sticky bit)."""
-    low, high = mantissa, mantissa  # 2x has exponent + 1, 8x exponent + 3
-    lost = low & 0b11
-    total = (low >> 2) + high
-    exponent += 3
-    if total >= _MBF_TOP:
-        exponent += 1
-        total >>= 1
-    if lost:
-        total |= 1
-    return exponent, total
-
-
-def single_literal(text: str) -> float:
-    """The single GW-BASIC reads for a literal's digits ``text`` (``736.43455``, ``1.5E3``)."""
+def single_literal(text: str, forced: bool = False) -> float:
+    """The single GW-BASIC reads for a literal's digits ``text`` (``736.43455``, ``1.5E3``);
+    ``forced``: the literal ends in ``!`` (``$FINS``), else zeros ending its fraction are
+    left out (such a literal is a single only as PC-BASIC 2.0.8 counts its digits; the
+    source's double made single gives the same value)."""
     digits, _, exponent = text.upper().replace("D", "E").partition("E")
     whole, _, fraction = digits.partition(".")
+    if not forced:
+        fraction = fraction.rstrip("0")
     mantissa = int(whole + fraction or "0")
     exp10 = int(exponent) if exponent.strip("+-") else 0
     return mbf_single(mantissa, exp10 - len(fraction)) if mantissa else 0.0
@@ -114,31 +76,24 @@ def single_literal(text: str) -> float:
 
 def mbf_single(mantissa: int, exp10: int) -> float:
     """The single GW-BASIC reads for the literal ``mantissa`` * 10 ** ``exp10``
-    (``mantissa`` > 0: all the digits typed, as an integer)."""
-    exponent = 152
-    while mantissa > 0xFFFFFF:  # cut to 24 bits (the low bits are dropped)
-        mantissa >>= 1
-        exponent += 1
-    while mantissa <= 0x7FFFFF:
-        mantissa <<= 1
-        exponent -= 1
-    mantissa <<= 8
-    for _ in range(-exp10):
-        exponent, mantissa = _mbf_div10(exponent, mantissa)
-    for _ in range(exp10):
-        exponent, mantissa = _mbf_mul10(exponent, mantissa)
-    while mantissa < (1 << 31) - 1:
-        exponent -= 1
-        mantissa <<= 1
-    low = mantissa & 0xFF
-    up = low > 0x80 or (low == 0x80 and mantissa & 0x100 != 0)
-    mantissa = (mantissa & 0xFFFFFF00) + 0x100 * up
-    if mantissa >= _MBF_TOP:
-        exponent += 1
-        mantissa >>= 1
-    if exponent <= 0:
-        return 0.0
-    return math.ldexp(mantissa, exponent - 160)
+    (``mantissa`` > 0: all the digits typed, as an integer), as ``$FIN`` makes it: up to
+    seven digits the number so far is an exact single (MATH2.ASM ``$FIDIG``), from the
+    eighth a double (mbf_double.from_decimal's steps) made single by ``$CSD``; the power
+    of ten applied once in double precision (MATH1.ASM ``$FINE``/``MDPTEN``: times or
+    divided by the table's 10**n, :func:`mbf_double.scaled_by_power_of_ten`) and made
+    single by ``$CSD`` (the 25th bit rounds up: ``720E8`` is 72000004096, where the
+    nearest single to the exact value, a tie, is even below it).  Beyond the range: an
+    infinity (the caller's Overflow)."""
+    try:
+        if mantissa < 10_000_000:
+            p = mbf_double.from_integer(mantissa)
+        else:
+            p = mbf_double.single_rounded(mbf_double.from_decimal(mantissa, 0))
+        if exp10:
+            p = mbf_double.single_rounded(mbf_double.scaled_by_power_of_ten(p, exp10))
+    except mbf_double.Overflow:
+        return math.inf
+    return mbf_double.nearest_float(p)
 
 
 def _overflow() -> BasicError:

@@ -251,7 +251,7 @@ def val_typed(text: str, largest: float) -> tuple[float, str]:
     if 0.0 < abs(value) < math.inf:
         from yaseer.basic.arithmetic.values import single_literal, to_single
 
-        value = math.copysign(to_single(single_literal(literal)), value)
+        value = math.copysign(to_single(single_literal(literal, forced=True)), value)
     return value, "!"
 
 

@@ -404,7 +404,7 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
         return (value, "#"), end
     single = to_single(value)
     if not single - single:  # in range: the value GW-BASIC's conversion gives (values.mbf_single)
-        single = single_literal(match.group(0).rstrip("!#%"))
+        single = single_literal(match.group(0).rstrip("!#%"), forced=suffix == "!")
     if single - single:  # beyond the single range
         single = _overflowed(SINGLE_LARGEST, notes)
     return (single, "!"), end
