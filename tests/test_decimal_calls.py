@@ -213,17 +213,19 @@ def test_planted_bugs_are_caught(helper, unit, mutate):
     assert wrong > 0
 
 
-def test_raw_sine_of_any_angle_would_be_wrong():
-    """The raw sine refuses a fraction beyond a turn: taking it would give wrong digits."""
+def test_a_fraction_of_a_degree_beyond_a_turn_takes_the_routine():
+    """The float sine of such an angle (its distance from its decimal moves it too far) would
+    give wrong digits: the inline code leaves every one to the routine."""
     rng = random.Random(11)
+    site = Site("_sin")
     wrong = 0
     for _ in range(400):
         x = own(rng.uniform(1e8, 1e9))
         float_value = math.sin(math.fmod(x, 360.0) * (math.pi / 180.0))
         expected = reference("_sin", x)
         wrong += own(float_value) != expected
-        assert math.isnan(decimal_calls.angle_functions("DEG")["_fsin"](x))
-    assert wrong > 0
+        assert site(x) == expected
+    assert wrong > 0 and site.routines == site.calls
 
 
 def test_inline_functions_in_a_program_change_unit_with_angle():

@@ -375,8 +375,8 @@ def atn(x, degrees: bool = True) -> float:
 
 
 def trig_functions(unit: str) -> dict:
-    """The compiled code's ``_sin _cos _tan _atn`` (and the float ``_fsin _fcos`` its inline
-    SIN and COS try first: decimal_calls.py) in decimal arithmetic, in ``unit``
+    """The compiled code's ``_sin _cos _tan _atn`` (and the bounds of the float SIN and COS its
+    inline code tries first: decimal_calls.py) in decimal arithmetic, in ``unit``
     ("DEG", "RAD" or "GRA": a grad is 0.9 degree, exactly in decimal)."""
     if unit == "GRA":
         return {**angle_functions(unit), "_sin": lambda x: sin(multiply(x, 0.9)), "_cos": lambda x: cos(multiply(x, 0.9)),

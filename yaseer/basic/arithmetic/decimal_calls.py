@@ -3,7 +3,7 @@
 module and no call of decimal_arith, where that is sure.
 
 The compiled code (number_models.DecimalNumbers.call) computes the float value ``v`` of the
-function (``math.sqrt`` and friends, or :func:`angle_functions`' ``_fsin``/``_fcos``, or the
+function (``math.sqrt`` and friends, SIN and COS within :func:`angle_functions`' bounds, or the
 generator's next number for RND), and with the call site's cached scale ``S`` (``+-10**k``,
 an exact double, the sign of the last result's)::
 
@@ -48,7 +48,7 @@ functions with mpmath's values rounded to 12 digits and with the routines.
 
 from __future__ import annotations
 
-from math import cos, exp, fmod, log, log10, nan, pi, sin, sqrt
+from math import cos, exp, fmod, inf, log, log10, nan, pi, sin, sqrt
 
 from yaseer.basic.arithmetic.decimal_scales import BAND, BOTTOM, MAGIC, TOP, scale
 
@@ -65,42 +65,19 @@ WHOLE_RADIAN_LIMIT = 1e9
 
 
 def angle_functions(unit: str) -> dict:
-    """The compiled code's float ``_fsin`` and ``_fcos`` in ``unit`` ("DEG", "RAD", "GRA"):
-    the float sine or cosine where the bound above holds, else NaN (always in grads)."""
+    """The constants of the compiled code's float SIN and COS in ``unit`` ("DEG", "RAD", "GRA"):
+    ``_msin(_mfmod(x, _Tu) * _Ru)`` where ``-_Fu < x < _Fu`` or ``x`` is whole below ``_Wu`` in
+    size (the bounds above), else NaN (always in grads).  In radians the turn is infinite:
+    ``fmod(x, inf)`` is ``x`` (a finite ``x``: the bounds come first)."""
     if unit == "RAD":
-        def raw_sin(x):
-            if -RADIAN_LIMIT < x < RADIAN_LIMIT or (x % 1.0 == 0.0 and -WHOLE_RADIAN_LIMIT < x < WHOLE_RADIAN_LIMIT):
-                return sin(x)
-            return nan
-
-        def raw_cos(x):
-            if -RADIAN_LIMIT < x < RADIAN_LIMIT or (x % 1.0 == 0.0 and -WHOLE_RADIAN_LIMIT < x < WHOLE_RADIAN_LIMIT):
-                return cos(x)
-            return nan
-        return {"_fsin": raw_sin, "_fcos": raw_cos}
+        return {"_Tu": inf, "_Ru": 1.0, "_Fu": RADIAN_LIMIT, "_Wu": WHOLE_RADIAN_LIMIT}
     if unit == "GRA":  # (decimal_arith's grads are degrees rounded to 12 digits first: the routine)
-        return {"_fsin": _none, "_fcos": _none}
-    turn = 360.0
-    per_unit = pi / 180.0
-
-    def turned_sin(x):
-        if -turn < x < turn or (x % 1.0 == 0.0 and -WHOLE_LIMIT < x < WHOLE_LIMIT):
-            return sin(fmod(x, turn) * per_unit)
-        return nan
-
-    def turned_cos(x):
-        if -turn < x < turn or (x % 1.0 == 0.0 and -WHOLE_LIMIT < x < WHOLE_LIMIT):
-            return cos(fmod(x, turn) * per_unit)
-        return nan
-    return {"_fsin": turned_sin, "_fcos": turned_cos}
-
-
-def _none(x) -> float:
-    return nan
+        return {"_Tu": 360.0, "_Ru": pi / 180.0, "_Fu": 0.0, "_Wu": 0.0}
+    return {"_Tu": 360.0, "_Ru": pi / 180.0, "_Fu": 360.0, "_Wu": WHOLE_LIMIT}
 
 
 def helpers(namespace: dict) -> dict:
-    """The compiled code's float functions (``_msqrt`` ...; ``_fsin`` and ``_fcos`` depend on
+    """The compiled code's float functions (``_msqrt`` ...; the bounds of SIN and COS depend on
     the angle unit: :func:`angle_functions`) and ``_zdf(name, routine, x, v, largest)``: for a value ``v`` of the
     function at ``x`` the site's cached scale did not give, the band test with the scale of
     ``v``'s own decade (kept for the site), else ``routine(x)`` (decimal_arith's, whose
@@ -122,4 +99,5 @@ def helpers(namespace: dict) -> dict:
             namespace[name] = s if -largest <= s <= largest else nan
         return result
 
-    return {"_zdf": function, "_msqrt": sqrt, "_mlog": log, "_mlog10": log10, "_mexp": exp, "_nan": nan}
+    return {"_zdf": function, "_msqrt": sqrt, "_mlog": log, "_mlog10": log10, "_mexp": exp, "_msin": sin,
+            "_mcos": cos, "_mfmod": fmod, "_nan": nan}

@@ -675,7 +675,8 @@ class DecimalNumbers(PlainNumbers):
         "_log": "(_mlog({x}) if 0.0 < {first} < 1e100 else _nan)",
         "_log10": "(_mlog10({x}) if 0.0 < {first} < 1e100 else _nan)",
         "_exp": "(_mexp({x}) if -20.0 < {first} < 20.0 else _nan)",
-        "_sin": "_fsin({first})", "_cos": "_fcos({first})",
+        "_sin": "(_msin(_mfmod({x}, _Tu) * _Ru) if -_Fu < {first} < _Fu or not {x} % 1.0 and -_Wu < {x} < _Wu else _nan)",
+        "_cos": "(_mcos(_mfmod({x}, _Tu) * _Ru) if -_Fu < {first} < _Fu or not {x} % 1.0 and -_Wu < {x} < _Wu else _nan)",
     }
 
     def call(self, name: str, helper: str, codes: list[str], kinds: list[str], result: str) -> tuple[str, str]:
