@@ -30,13 +30,19 @@ from yaseer.basic.arithmetic.mbf_double_using import FOTB
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 
 
-def r56(x: Fraction) -> Fraction:
-    """``x`` > 0 rounded half to even to 56 significant bits."""
+def scaled_to_bits(x: Fraction, bits: int) -> tuple[Fraction, Fraction]:
+    """``(x * scale, scale)`` for ``x`` > 0 and the power of two ``scale`` that puts ``bits``
+    significant bits before the point."""
     top = x.numerator.bit_length() - x.denominator.bit_length()
     if Fraction(2) ** top > x:
         top -= 1
-    scale = Fraction(2) ** (55 - top)
-    scaled = x * scale
+    scale = Fraction(2) ** (bits - 1 - top)
+    return x * scale, scale
+
+
+def r56(x: Fraction) -> Fraction:
+    """``x`` > 0 rounded half to even to 56 significant bits."""
+    scaled, scale = scaled_to_bits(x, 56)
     whole = math.floor(scaled)
     rest = scaled - whole
     if rest > Fraction(1, 2) or (rest == Fraction(1, 2) and whole % 2):

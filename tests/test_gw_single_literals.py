@@ -25,7 +25,7 @@ from fractions import Fraction
 import pytest
 
 from test_differential_support import base_seed, case_count, run_gw
-from test_gw_double_using import r56
+from test_gw_double_using import r56, scaled_to_bits
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 
@@ -35,11 +35,7 @@ SMALLEST = Fraction(2) ** -128  # MBF's smallest: exponent byte 1, mantissa .5
 
 def csd(x: Fraction) -> Fraction:
     """``$CSD``: ``x`` > 0 to 24 bits, rounded up when the 25th bit is 1."""
-    top = x.numerator.bit_length() - x.denominator.bit_length()
-    if Fraction(2) ** top > x:
-        top -= 1
-    scale = Fraction(2) ** (23 - top)
-    scaled = x * scale
+    scaled, scale = scaled_to_bits(x, 24)
     whole = math.floor(scaled)
     if scaled - whole >= Fraction(1, 2):
         whole += 1
