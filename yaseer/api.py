@@ -206,7 +206,7 @@ class Result:
 def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, str] | None = None,
         prog: Mapping[int, Listing] | None = None, input=None, angle: str | None = None,
         raise_errors: bool = False, screen: IO[str] | None = None, printer: IO[str] | None = None,
-        output_format: str = "text", keep: bool = True, files=None, finer: int = 1) -> Result:
+        output_format: str = "text", keep: bool = True, files=None, finer: int = 1, typed: str = "RUN") -> Result:
     """Run ``listing`` (a path, the program text, or a program file's bytes) once on a fresh machine.
 
     ``method``: the method of library program n (``{2: "newton"}``); ``prog``:
@@ -217,6 +217,8 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
     SIN COS TAN ATN at start (default: the dialect's); ``dialect``: ``"casio"``
     (the default, the paper's pocket computer) or ``"gw"`` (GW-BASIC 3.23);
     ``files``: the one directory OPEN, KILL, NAME and FILES use (default: the current one).
+    ``typed``: the line typed at the prompt that started the program (casio: PEEK reads it
+    from the input buffer, ``Dialect.words.input_buffer``; default ``"RUN"``).
     ``finer``: run every ``FOR ... STEP s`` loop with the step s/finer, so the listing itself
     computes that many times as many positions (:mod:`yaseer.finer`; for smoother animations).
     A BASIC error (and a missing file) is ``result.error``,
@@ -235,6 +237,7 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
 
     dialect, angle = check.dialect_choice(dialect), check.angle_choice(angle)
     output_format, files = check.output_format_choice(output_format), check.files_directory(files)
+    typed = check.typed_line(typed)
     methods = dict(check.method_choice(n, name) for n, name in (method or {}).items())
     numbers = {check.area_number(n): text for n, text in (prog or {}).items()}
     result = Result(listing="")
@@ -253,7 +256,7 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
     except BasicError as error:
         return _failed(result, error, raise_errors)
     execute(result, areas, methods, input_stream, angle, dialect, screen, printer, output_format, keep, files,
-            program, entered)
+            program, entered, typed)
     for handle in opened:
         handle.close()
     if result.exception is not None and raise_errors:
@@ -263,10 +266,10 @@ def run(listing: Listing, *, dialect: str | None = None, method: Mapping[int, st
 
 def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str | None, dialect: str,
             screen, printer, output_format: str, keep: bool, files=None, program: str | None = None,
-            entered: bool = True) -> None:
+            entered: bool = True, typed: str = "RUN") -> None:
     """Load, bind and run ``program`` (default ``result.listing``; ``entered``: its lines are
-    read as typed ones, not a tokenised file's: Machine.load); fill in ``result`` (text, rows,
-    frames, error, status)."""
+    read as typed ones, not a tokenised file's: Machine.load) as ``typed`` starts it (the line
+    typed, in the machine's input buffer); fill in ``result`` (text, rows, frames, error, status)."""
     from yaseer import binding
     from yaseer.basic.errors import BasicError
     from yaseer.basic.machine.machine import Machine
@@ -296,6 +299,7 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
             binding.install(machine, methods or None)
         for number, text in areas.items():
             machine.set_area(number, text)
+        machine.type_line(typed)
         result.status = machine.run()
         if result.status == "stop":
             result.line = machine.line

@@ -135,6 +135,13 @@ def files_directory(value: object) -> str | None:
     return path
 
 
+def typed_line(value: object) -> str:
+    """The line typed at the prompt that started the program: one line of text."""
+    if not isinstance(value, str) or "\n" in value or "\r" in value:
+        raise ArgumentError(f"typed is one line of text, not {value!r}")
+    return value
+
+
 def frames_per_second(value: object) -> float:
     """Frames a second of an animation: a finite positive number."""
     try:

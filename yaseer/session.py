@@ -268,6 +268,8 @@ class Session:
     def handle(self, text: str) -> None:
         """Act on one typed line; errors are shown, never raised."""
         self.edit_text = None
+        if hasattr(self.engine, "typed_line"):  # the machine's input buffer (PEEK) holds it
+            self.engine.typed_line = text
         try:
             self._dispatch(text)
         except BasicError as error:
@@ -760,6 +762,7 @@ class MachineEngine:
         # casio: the password PASS registered; it outlives RUN's fresh machine and NEW ALL,
         # as the machine keeps it until PASS cancels it (PASS.md)
         self.password: str | None = None
+        self.typed_line = "RUN"  # the line last typed (the session sets it): the machine's input buffer
 
     @property
     def machine(self):
@@ -787,15 +790,18 @@ class MachineEngine:
         self.reset()
         self.machine.set_trace(tracing)
         self.sync(areas)
+        self.machine.type_line(self.typed_line)
         self._finish(self._guard(lambda: self.machine.run(start)))
 
     def cont(self) -> None:
         """CONT: go on from the last STOP."""
+        self.machine.type_line(self.typed_line)
         self._finish(self._guard(self.machine.cont))
 
     def direct(self, statement: str, areas: dict[int, Program]) -> None:
         """Execute one direct-mode statement (a GOTO in it runs the typed program)."""
         self.sync(areas)
+        self.machine.type_line(self.typed_line)
         self._finish(self._guard(lambda: self.machine.execute_direct(statement)), direct=True)
 
     def sync(self, areas: dict[int, Program]) -> None:

@@ -195,8 +195,11 @@ RUN_OPTIONS = ("running the listing (the same in run, diff, plot, animate and re
     Option("--input", "answer INPUT statements with the lines of FILE (default: standard input)", metavar="FILE"),
     Option("--files", "the one directory the program's OPEN, KILL, NAME and FILES use "
                       "(default: the current directory; nothing outside it is ever touched)", metavar="DIR"),
+    Option("--typed", "casio: the line typed at the prompt that started the program (default RUN), which "
+                      "PEEK reads from the input buffer at address 512 (the library's PBLOAD/PBGET program "
+                      "reads its command there)", metavar="LINE", default="RUN"),
 ))
-"""--prog N=FILE, --method N=NAME, --dialect, --angle deg|rad, --arith, --input FILE, --files DIR:
+"""--prog N=FILE, --method N=NAME, --dialect, --angle deg|rad, --arith, --input FILE, --files DIR, --typed LINE:
 one titled group of a command's table."""
 
 
@@ -208,20 +211,22 @@ class RunSettings:
 
     def __init__(self, areas: dict[int, str] | None = None, methods: dict[int, str] | None = None,
                  dialect: object = "casio", angle: str | None = None, input: TextIO | None = None,
-                 files: str | None = None) -> None:
+                 files: str | None = None, typed: str = "RUN") -> None:
         self.areas = areas if areas is not None else {}  # area -> BASIC text (--prog)
         self.methods = methods if methods is not None else {}  # program -> method name (--method)
         self.dialect = dialect  # a dialect name, or a Dialect (--arith decimal)
         self.angle = angle  # None: the dialect's
         self.input = input  # the --input file, opened (None: standard input)
         self.files = files  # --files DIR: the directory of the program's files (None: the current one)
+        self.typed = typed  # --typed LINE: the line typed that started the program (the input buffer)
 
     def run_arguments(self) -> dict:
         """The keyword arguments of :func:`yaseer.run` these options give (INPUT from the keyboard without --input)."""
         import sys
 
         return {"method": self.methods, "prog": self.areas, "dialect": self.dialect, "angle": self.angle,
-                "input": self.input if self.input is not None else sys.stdin, "files": self.files}
+                "input": self.input if self.input is not None else sys.stdin, "files": self.files,
+                "typed": self.typed}
 
     def close(self) -> None:
         if self.input is not None:
@@ -245,7 +250,7 @@ def run_settings(args: Namespace) -> RunSettings:
             raise SystemExit(2) from None
     return RunSettings(areas=areas, methods=dict(args.method), dialect=dialect, angle=args.angle,
                        input=open(args.input, encoding="utf-8", errors="replace") if args.input else None,
-                       files=_files_directory(args.files))
+                       files=_files_directory(args.files), typed=getattr(args, "typed", "RUN"))
 
 
 def read_area(number: int, path: str) -> str:

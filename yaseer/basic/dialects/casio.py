@@ -123,7 +123,11 @@ CLOSES_PARENTHESES = True
 DATA_TO_LINE_END = True
 # Devices a file name may start with that yaseer does not have: OPEN of one ends the run
 # with one line naming it (OPEN.md lists COM0: for the RS-232C interface; LIB0400 tests it).
-ABSENT_DEVICES = {"COM0:": "the RS-232C port"}
+# PMT0: and PMT1: are the PB-100 series' tape, read in the positive or reverse phase: the
+# device the PB commands' program (LIB0900) opens for PBLOAD [0|1] and PBGET [0|1]
+# (PBLOAD_PBGET.md: "reads the specified program from tape and converts it from PB-100 series
+# format"; the manual names no device nor the tape's format).
+ABSENT_DEVICES = {"COM0:": "the RS-232C port", "PMT0:": "the PB-100 series' tape", "PMT1:": "the PB-100 series' tape"}
 # Reserved words of the manual's list (part 12) with no page and no use in a program: the
 # PB-100 series' CSR, KEY, MID, VAC, VAR (PBLOAD_PBGET.md: such words of a PB-100 program are
 # an SN error when run).
@@ -156,6 +160,13 @@ REFUSED_COMMANDS = ("NEW", "RUN")
 # which would carry the password, is not documented).  LOAD stays possible (LOAD.md
 # item 5: yaseer's files carry no password).
 PASSWORD_REFUSES = ("LIST", "LLIST", "EDIT", "NEW", "SAVE")
+# A statement that does not parse in the branch of an IF (THEN or ELSE) is the SN error when
+# that branch runs: the line runs up to the IF, whose condition decides (part 6, "Errors": an
+# error is reported as the line executes; the library's LIB0900 guards its deliberate SN
+# statements so, ``IF PEEK(m)<>4 THEN a``).  Any other bad statement makes the whole line the
+# error before any of it runs, as yaseer has always run the paper's listings (Example 5's line
+# 5070 prints nothing as printed).
+BRANCH_ERRORS_WHEN_REACHED = True
 # READ of an item that is no number into a numeric variable: the TM error of the READ's line
 # (READ.md item 2), not GW-BASIC's Syntax error in the DATA line.
 READ_MISMATCH = True
@@ -181,6 +192,16 @@ VARIABLE_AREA = 8192
 # K = PEEK(&H6B4)/4 + PEEK(&H6B5)*64 kilobytes): the FX-880P's 32 KB (specifications.md).
 # The manual documents no address; the ROM (segment &H4000 on) is not in yaseer's memory.
 SYSTEM_MEMORY = {0x6B4: (32 * 1024 // 256) % 256, 0x6B5: (32 * 1024 // 256) // 256}
+# The input buffer: the line last typed at the prompt and ended with EXE (a command, a
+# direct statement, RUN) stays in RAM from this address on, in the machine's codes (the
+# character code table, part-12-1), ended by a 0 byte.  The manual documents neither the
+# address nor the buffer; the library's conversion program LIB0900 (the BASIC program behind
+# PBLOAD/PBGET, PBLOAD_PBGET.md) reads the command that ran it from here.
+INPUT_BUFFER = 512
+# Reserved words the buffer holds as two-byte codes, not letters: the codes LIB0900 compares
+# (PBLOAD 4,179; PBGET 4,180; ALL 7,187).  The codes of the other words are documented
+# nowhere, so the buffer holds those as their letters.
+STORED_WORDS = {"PBLOAD": (4, 179), "PBGET": (4, 180), "ALL": (7, 187)}
 # ... and the names OPEN's grammar reads them as, inside an OPEN statement (scanner._open_words)
 OPEN_WORDS = {("OUT", "PUT"): "OUTPUT", ("AS",): "AS"}
 # Reserved string variables: CALC$, the formula CALCJMP hands to the CAL mode (the library's
@@ -237,6 +258,7 @@ class Words:
     refused_commands = REFUSED_COMMANDS
     password_refuses = PASSWORD_REFUSES
     read_mismatch = READ_MISMATCH
+    branch_errors_when_reached = BRANCH_ERRORS_WHEN_REACHED
     output_eof = OUTPUT_EOF
     gosub_levels = GOSUB_LEVELS
     for_levels = FOR_LEVELS
@@ -246,6 +268,8 @@ class Words:
     command_options = COMMAND_OPTIONS
     variable_area = VARIABLE_AREA
     system_memory = SYSTEM_MEMORY
+    input_buffer = INPUT_BUFFER
+    stored_words = STORED_WORDS
     reads_variables = READS_VARIABLES
     writes_variables = WRITES_VARIABLES
     line_to_calc = LINE_TO_CALC

@@ -37,6 +37,29 @@ TAIL_PIECES = 1024  # pieces of streamed text kept before they are cut to the sc
 _ANSI = (0, 4, 2, 6, 1, 5, 3, 7)
 
 
+def typed_codes(text: str, stored_words: dict) -> list[int]:
+    """The bytes the input buffer holds for a typed line ``text`` (in the machine's codes):
+    each of ``stored_words`` (word -> its codes) outside quotes as its codes, read where it
+    starts as the Casio reads keywords (part 6: a reserved word cannot start a name), every
+    other character as its code."""
+    words = sorted(stored_words, key=len, reverse=True)
+    upper = text.upper()  # keywords are read in either case
+    codes: list[int] = []
+    quoted = False
+    at = 0
+    while at < len(text):
+        character = text[at]
+        word = None if quoted else next((w for w in words if upper.startswith(w, at)), None)
+        if word is not None:
+            codes.extend(stored_words[word])
+            at += len(word)
+            continue
+        quoted ^= character == '"'
+        codes.append(ord(character) & 0xFF)
+        at += 1
+    return codes
+
+
 def end_of_keys() -> BasicError:
     """The key stream is over: the run ends (no ON ERROR handler can catch it, since no key
     will ever come: a program's handler that asks again would wait for ever)."""
@@ -472,6 +495,18 @@ class Console:
         if where == LAST_INPUT_KEY:
             return float(self.last_input_key)
         return float(self.memory.get(where, self.system_memory.get(where, 0)))
+
+    def type_line(self, text: str) -> None:
+        """A line typed and ended with EXE: where the dialect has an input buffer
+        (``words.input_buffer``), its bytes (:func:`typed_codes`) and a 0 after them go
+        into RAM from that address, for PEEK to read (segment 0)."""
+        words = self.dialect.words
+        start = getattr(words, "input_buffer", None)
+        if start is None:
+            return
+        codes = typed_codes(self.dialect.charset.codes(text), words.stored_words)
+        for offset, code in enumerate(codes + [0]):
+            self.memory[start + offset] = code
 
     def _address(self, address) -> int:
         offset = int(runtime.fix(address))

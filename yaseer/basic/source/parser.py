@@ -11,6 +11,8 @@ the line is reached, as the period interpreters did).
 
 from __future__ import annotations
 
+import re
+
 from itertools import chain
 
 
@@ -968,13 +970,63 @@ def _check_nesting(tokens: list) -> None:
         raise BasicError("Out of memory", OUT_OF_MEMORY)
 
 
+def _bad_else_branches(text: str, err: BasicError, dialect: Dialect) -> list | None:
+    """``IF c THEN s ELSE bad`` (IFs nested in the THEN branch may have ELSEs too): the line
+    before its first ELSE parsed, each ELSE branch given to the IF it belongs to, the innermost
+    first (a branch that does not parse is ``err``); None when the line is no such IF."""
+    places = [m.start() for m in re.finditer("ELSE", _blank_strings(text))]
+    if not places:
+        return None
+    try:
+        statements = parse_statements(text[:places[0]], dialect)
+    except BasicError:
+        return None
+    ifs = []  # the IFs the line ends with, outermost first: the ELSEs' owners
+    inner = statements[-1] if statements else None
+    while isinstance(inner, ast.If) and inner.otherwise is None:
+        ifs.append(inner)
+        inner = inner.then[-1] if isinstance(inner.then, list) and inner.then else None
+    ends = places[1:] + [len(text)]
+    if len(places) > len(ifs):
+        return None
+    for owner, start, end in zip(reversed(ifs), places, ends):
+        branch = text[start + 4:end].strip()
+        try:
+            owner.otherwise = int(branch) if branch.isdigit() else parse_statements(branch, dialect)
+        except BasicError:
+            owner.otherwise = [err]
+    return statements
+
+
+def _blank_strings(text: str) -> str:
+    """``text`` with every string literal blanked (same length), so a search finds only words."""
+    return re.sub(r'"[^"]*"?', lambda m: " " * len(m.group()), text)
+
+
+def _in_branch(text: str, err: BasicError, dialect: Dialect) -> list | None:
+    """Where the dialect finds only a bad IF branch when it runs (``words.branch_errors_when_reached``):
+    the line's statements with ``err`` inside the branch of the IF they end with, so the line runs
+    up to that IF and the branch is the error only if the condition takes it; None when the bad
+    statement is not in an IF's branch (the whole line is the error)."""
+    if not getattr(dialect.words, "branch_errors_when_reached", False):
+        return None
+    otherwise = _bad_else_branches(text, err, dialect)
+    if otherwise is not None:
+        return otherwise
+    statements = _recover(text, err, dialect)
+    if not statements or not isinstance(statements[-1], ast.If) or any(
+            isinstance(statement, BasicError) for statement in statements):
+        return None
+    return statements
+
+
 def parse_line(number: int, text: str, dialect: Dialect = CASIO) -> ast.Line:
     """Parse one numbered line; a syntax error is stored in ``Line.error`` or, where the
     dialect finds errors when execution reaches them, after the statements before it."""
     try:
         statements = parse_statements(text, dialect)
     except BasicError as err:
-        statements = _recover(text, err, dialect) if dialect.errors_when_reached else None
+        statements = _recover(text, err, dialect) if dialect.errors_when_reached else _in_branch(text, err, dialect)
         if statements is None or statements == [err]:
             return ast.Line(number, [], text, error=err)
         return ast.Line(number, statements, text)
