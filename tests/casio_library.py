@@ -89,7 +89,7 @@ def programs(folder: Path) -> list[Path]:
 def key_scripts(path: Path = KEYS) -> dict[str, tuple[str, str, str]]:
     """PROGRAM -> (keys, result pattern, typed line) from the key-script file.
 
-    One program a line: ``NAME | keys | pattern [| typed line]``; in keys ``\\n`` is EXE (a
+    One program a line: ``NAME | keys | pattern [| typed: line]``; in keys ``\\n`` is EXE (a
     line break) and other backslash escapes are Python's (``\\x1f``: the cursor-down key); an
     empty pattern is the default (a number after ``=`` on a line that is no prompt).  The
     typed line is the command typed at the prompt that starts the program (default ``RUN``;
@@ -100,9 +100,11 @@ def key_scripts(path: Path = KEYS) -> dict[str, tuple[str, str, str]]:
     for raw in path.read_text(encoding="utf-8").splitlines():
         if not raw.strip() or raw.lstrip().startswith("#"):
             continue
-        name, keys, pattern, *typed = (part.strip() for part in raw.split("|", 3))
+        name, keys, rest = (part.strip() for part in raw.split("|", 2))
+        typed = re.search(r"\|\s*typed:(.*)$", rest)  # (a pattern may hold "|" itself)
+        pattern = rest[:typed.start()].strip() if typed else rest
         scripts[name.upper()] = (keys.encode("latin-1", "backslashreplace").decode("unicode_escape"),
-                                 pattern or DEFAULT_RESULT, typed[0] if typed else "RUN")
+                                 pattern or DEFAULT_RESULT, typed.group(1).strip() if typed else "RUN")
     return scripts
 
 

@@ -110,3 +110,15 @@ def test_typed_is_one_line_of_text():
         yaseer.run(BUFFER, typed="RUN\nLIST")
     with pytest.raises(ArgumentError, match="typed is one line"):
         yaseer.run(BUFFER, typed=5)
+
+
+def test_a_key_script_may_name_the_line_typed(tmp_path):
+    """The library measurement's key scripts: ``NAME | keys | pattern [| typed: line]``,
+    a pattern holding ``|`` itself."""
+    from casio_library import DEFAULT_RESULT, key_scripts
+
+    script = tmp_path / "keys.txt"
+    script.write_text("A | 1\\n | x=|y= \nB |  |  | typed: PBLOAD 1\nC | 2\\n | Accept|Reject | typed: PBGET\n",
+                      encoding="utf-8")
+    assert key_scripts(script) == {"A": ("1\n", "x=|y=", "RUN"), "B": ("", DEFAULT_RESULT, "PBLOAD 1"),
+                                   "C": ("2\n", "Accept|Reject", "PBGET")}
