@@ -121,9 +121,14 @@ def with_blanks(text: str, rng: random.Random) -> str:
 
 def test_literals_with_blanks_inside_print_as_pcbasic(pc):
     """``PRINT 1 2`` is 12 and ``1 . 5 E 2`` is 150: MATH1.ASM FIN reads a number's
-    characters with CHRGTR, which steps over blanks (GWMAIN.ASM CHRCON)."""
+    characters with CHRGTR, which steps over blanks (GWMAIN.ASM CHRCON).  A single literal
+    PC-BASIC reads as another single than the source's steps is left out (see
+    test_gw_single_literals: its value then prints other digits, up to two units apart)."""
+    from test_gw_single_literals import pcbasic_reads_as_the_source
+
     rng = random.Random(base_seed() + 17)
     literals = [with_blanks(random_literal(rng), rng) for _ in range(case_count())]
+    literals = [text for text in literals if pcbasic_reads_as_the_source(text.replace(" ", "").replace("\t", ""))]
     literals = [text for text in literals if " " in text or "\t" in text] + ["&O 7", "&H 1F", "&o  5", "&H1 F"]
     cases = [f"PRINT {text}" for text in literals]
     assert_mostly_exact(differing_rows(pc, cases), len(cases))

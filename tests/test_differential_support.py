@@ -9,6 +9,13 @@ Values given to both sides are *exact in single precision* and have at most
 7 significant decimal digits, so GW-BASIC's single precision cannot decide
 any printed digit.
 
+PC-BASIC finds PRINT's 7 digits of a single by dividing by ten, where the GW-BASIC
+source multiplies by its table's powers of ten (about 3% of random singles print
+another 7th digit): the oracle runs PC-BASIC under
+``single_digits_support.source_single_digits``, so such a single prints the digits of
+the source's steps (a reference on fractions) in PC-BASIC's layout, and every other
+text is PC-BASIC's own.  ``PcBasic.differing`` lists the singles it changed.
+
 ``YASEER_DIFF_CASES`` (environment) raises the number of generated cases per
 test for a long run by hand; ``YASEER_DIFF_SEED`` changes the seed.
 """
@@ -43,14 +50,18 @@ class StepLimitExceeded(Exception):
 class PcBasic:
     """One headless PC-BASIC session running direct statements and whole programs."""
 
-    def __init__(self, double: bool = False) -> None:
-        """``double``: PC-BASIC's /D option (double-precision SIN, COS, ATN, SQR ... of double arguments)."""
+    def __init__(self, double: bool = False, source_digits: bool = True) -> None:
+        """``double``: PC-BASIC's /D option (double-precision SIN, COS, ATN, SQR ... of double
+        arguments); ``source_digits``: singles print the source's 7 digits (module docstring),
+        False for PC-BASIC's own output."""
         import pcbasic  # test dependency, imported only when a differential test runs
 
         self._session = pcbasic.Session(output_streams=None, input_streams=None, double=double)
         self._session.start()
         self._steps = 0
         self._session.set_hook(self._count_step)
+        self.differing: list = []  # (single, PC-BASIC's digits, the source's) it printed otherwise
+        self._source_digits = source_digits
 
     def _count_step(self, _token: bytes) -> None:
         self._steps += 1
@@ -58,9 +69,14 @@ class PcBasic:
             raise StepLimitExceeded()
 
     def _run(self, text: str) -> str:
+        from contextlib import nullcontext
+
+        from single_digits_support import source_single_digits
+
         self._steps = 0
         try:
-            out = self._session.execute(text)
+            with source_single_digits(self.differing) if self._source_digits else nullcontext():
+                out = self._session.execute(text)
         except StepLimitExceeded:
             out = "\n<step limit>"
         return clean_output(out)

@@ -55,8 +55,10 @@ INPUT_PROGRAM = "10 FOR I=1 TO 14\n20 INPUT A\n30 PRINT A\n40 NEXT\n"
 
 
 def with_answers(program: str, answers: list[str], dialect: str) -> tuple[str, str]:
-    """(yaseer's screen, PC-BASIC's screen) for ``program`` answered with ``answers``."""
+    """(yaseer's screen, PC-BASIC's screen) for ``program`` answered with ``answers``
+    (PC-BASIC's singles with the source's digits, as test_differential_support's oracle)."""
     import pcbasic
+    from single_digits_support import source_single_digits
 
     from yaseer.basic.machine.machine import Machine
 
@@ -64,7 +66,8 @@ def with_answers(program: str, answers: list[str], dialect: str) -> tuple[str, s
                               output_streams=None)
     session.start()
     session.execute(program)
-    theirs = clean_output(session.execute("RUN"))
+    with source_single_digits():
+        theirs = clean_output(session.execute("RUN"))
     session.close()
     screen = io.StringIO()
     machine = Machine(screen=screen, dialect=dialect, input_stream=io.StringIO("\n".join(answers) + "\n"))

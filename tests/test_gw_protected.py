@@ -13,6 +13,7 @@ from pathlib import Path
 
 import pytest
 
+from single_digits_support import SourceDigitsSession
 from test_differential_programgen import random_program
 from test_differential_support import base_seed, case_count, clean_output
 
@@ -33,7 +34,7 @@ def pc(tmp_path_factory):
     session = pcbasic.Session(output_streams=None, input_streams=None, hide_protected=True,
                               devices={"C:": str(directory)}, current_device="C:")
     session.start()
-    yield session, directory
+    yield SourceDigitsSession(session), directory  # singles print the source's digits (LIST: FOUT)
     session.close()
 
 

@@ -1,4 +1,6 @@
 10 REM A literal beyond the range prints Overflow when the line is read in, and is the largest number
+12 REM 1E+38 prints 9.999999E+37: MATH1.ASM $FOFMT brackets by MATH2.ASM $FOTNV's table (times 10^-32
+14 REM in double, $CSD) and adds .5 ($FOTCV). PC-BASIC 2.0.8's tens print 1E+38: the source decides.
 20 PRINT "START"
 30 X = 1E+39: PRINT X; -1E+39; 1E+39 * 0
 40 Y# = 1D+39: PRINT Y#; 1.0E39; 99999999999999999999999999999999999999999

@@ -29,7 +29,7 @@ GW-BASIC's result:
   reproduce; yaseer gives the nearest single to the true value (:func:`nearest`).
 * A double made single (:func:`from_double`, ``$CSD``): rounded half up on the
   guard byte's top bit.
-* PRINT's digits: :mod:`yaseer.basic.arithmetic.mbf_digits` (with this module's working sum and quotient).
+* PRINT's digits: :mod:`yaseer.basic.arithmetic.mbf_digits` (with this module's ``$FMULS`` and ``$FADDS``).
 
 The range is MBF's: exponent byte 1..255, values 2**-128 .. (1 - 2**-24) * 2**127.
 A result below it is 0; one at or beyond 2**127 is infinite with its sign, which
@@ -300,22 +300,6 @@ def divide(a, b) -> float:
     if not b:
         raise ZeroDivisionError("division by zero")
     return nearest(a / b)
-
-
-def working_quotient(exponent: int, rest: int, divisor_exponent: int, divisor: int, width: int = 32) -> tuple[int, int]:
-    """The working quotient of two ``width``-bit working numbers (magnitudes) as
-    PC-BASIC's output routine divides by ten: ``width`` steps of long division that
-    shift the divisor right, subtracting when the rest is greater."""
-    exponent += 128 + width + 1 - divisor_exponent
-    quotient = 0
-    while divisor:
-        quotient <<= 1
-        if rest > divisor:
-            rest -= divisor
-            quotient += 1
-        divisor >>= 1
-        exponent -= 1
-    return exponent, quotient
 
 
 def from_double(x) -> float:

@@ -575,11 +575,11 @@ def printed_double(x) -> "Double":
 
 
 def _single_digits(x: float) -> tuple[str, int]:
-    """``abs(x)`` (single precision) to 7 significant digits as GW-BASIC finds them
-    (:func:`yaseer.basic.arithmetic.mbf_digits.decimal_digits`: scaled by ten in MBF working
-    precision, rounded twice: ``1/3`` shows as ``.3333334``, 825157.625 as
-    ``825157.7``).  Returns (digit string without trailing zeros, exponent of the
-    first digit)."""
+    """``abs(x)`` (single precision) to 7 significant digits as GW-BASIC's ``$FOFMT``
+    finds them (:func:`yaseer.basic.arithmetic.mbf_digits.decimal_digits`: ``$FOTNV``'s
+    table of powers of ten in double precision, ``$CSD`` after each, ``$FOTCV``'s half
+    added: ``1/3`` shows as ``.3333334``, ``ATN(1.5)`` as ``.9827938``).  Returns (digit
+    string without trailing zeros, exponent of the first digit)."""
     return mbf_digits.digit_string(x)
 
 
