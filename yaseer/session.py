@@ -867,6 +867,10 @@ class MachineEngine:
             return action()
         except KeyboardInterrupt:  # between the machine's own checks
             raise BasicError("Break", BREAK) from None
+        except BasicError as err:
+            if self._machine is not None:
+                self._machine.note_untrapped(err)
+            raise
         finally:
             if self._machine is not None:
                 self._machine.end_line()

@@ -130,6 +130,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.library_forms = dialect.library_forms  # THEN *
         self.locate_arguments = dialect.screen.locate_arguments  # LOCATE's (fewest, most)
         self.late_errors = dialect.errors_when_reached  # a DEF FN body's errors when it is called
+        self.for_array_elements = dialect.for_array_elements  # FOR T(2) = ... (the paper's Example 3)
         # "." in LIST, EDIT ...: GW's DOT, the machine's current_line as the statement runs
         # (Dialect.current_line_listed); else (casio) the line the statement is in
         self.dot_runs = dialect.current_line_listed
@@ -814,7 +815,11 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.cur = self.blocks[end]
         self.indent = 1
         self.set_line(self.flat[-1][0] if self.flat else 0)
-        self.emit("raise _END")
+        if self.direct:  # a direct line's end is no END: a handler left running stays so (BIMISC.ASM ENDCON)
+            self.emit("return -1")
+        else:  # past a program's last line a handler still running is an error in GW
+            self.emit("_off_end(_ln)")
+            self.emit("raise _END")
         pieces = [(None, text) for text in self.prelude]
         pieces += [(b.first_line, self.block_source(b)) for b in self.blocks]
         if self.numbers.cache_bases:  # each cache the code uses matches nothing until its operation writes it

@@ -39,6 +39,8 @@ class LoopCompiler:
         return self.numbers.stepped(self.kind_of(var_node), var, step)
 
     def stmt_For(self, stmt, scope, native_next: int | None = None):
+        if isinstance(stmt.var, ast.Elem) and stmt.var.indices and not self.for_array_elements:
+            raise syntax_error()
         kind = self.kind_of(stmt.var)
         if kind not in self.numbers.loop_types:
             raise type_mismatch()

@@ -96,10 +96,13 @@ FIELDS = (
     "read_commits",  # bool: False
     "direct_line_number",  # int | None: None
     "edit_clears",  # bool: False
+    "handler_must_resume",  # bool: False
+    "for_array_elements",  # bool: True
+    "untrapped_errors_noted",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False)
+            None, False, False, True, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -266,6 +269,20 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         session clears what RUN clears (variables, arrays, FN, DEF types, OPTION BASE, RND's
         seed, ON ERROR, open files, the stack; CONT impossible: GWMAIN.ASM FINI and GWLIST.ASM
         DELETE end in BIMISC.ASM RUNC/CLEARC); False (casio) keeps them.
+        ``handler_must_resume``: True when running off the program's last line inside an
+        error handler is the error No RESUME in the last line run (GWMAIN.ASM PRGEND: ONEFLG
+        still set); END leaves a handler quietly in both dialects. False (casio, whose RESUME
+        page is silent): the run ends.
+        ``for_array_elements``: True when a FOR's control variable may be an array element
+        (the paper's Example 3: ``FOR T(2) = .1 TO 360.1``, although FOR_NEXT_STEP.md item 1
+        says array variables cannot be used: the paper's listings decide); False (GW: FOR
+        sets SUBFLG so PTRGET reads ``A`` alone and SYNCHR "=" meets the ``(``, GWMAIN.ASM
+        FOR): such a FOR is a Syntax error, before its variable's type is looked at.
+        ``untrapped_errors_noted``: True when an error no handler takes still sets ERR and
+        ERL (65535 for a direct line) and leaves a handler that was running (GWMAIN.ASM ERROR
+        stores ERRLIN and ERRFLG before NTMDCN looks for a trap; NOTRAP resets ONEFLG), so
+        ``PRINT ERR; ERL`` typed after a program stopped shows its error; False (casio:
+        ERR.md, "can only be changed within a program"): only a trapped error sets them.
         ``program_areas``: True when ``GOSUB PROG n`` is a statement (the
         library programs are bound at start); False in GW-BASIC, where PROG
         is no word: ``GOSUB PROG n`` is then a syntax error unless program
@@ -327,7 +344,8 @@ GW = Dialect(
     current_line_commands=("LIST", "LLIST", "DELETE", "EDIT", "AUTO", "RENUM"), current_line_listed=True,
     variables_made=True,
     read_commits=True,
-    direct_line_number=65535, edit_clears=True,
+    direct_line_number=65535, edit_clears=True, handler_must_resume=True,
+    for_array_elements=False, untrapped_errors_noted=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -54,9 +54,9 @@ from yaseer.basic.dialects import dialect as dialects
 from yaseer.basic.machine import gwfunctions, runtime, string_space, val_numbers
 from yaseer.basic.machine.files import FileTable, Sandbox
 from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
-    BasicError, OutputError, BREAK, INPUT_PAST_END, OUT_OF_DATA, OUT_OF_MEMORY, STRING_TOO_LONG, SYNTAX_ERROR,
+    BasicError, OutputError, BREAK, INPUT_PAST_END, NO_RESUME, OUT_OF_DATA, OUT_OF_MEMORY, STRING_TOO_LONG, SYNTAX_ERROR,
     TYPE_MISMATCH, UNDEFINED_LINE,
-    UNDEFINED_PROGRAM_AREA, undefined_line_message,
+    UNDEFINED_PROGRAM_AREA, error_for, undefined_line_message,
 )
 from yaseer.basic.machine.console import Console
 from yaseer.basic.machine.chaining import ChainTo, Chaining, RunAgain
@@ -451,7 +451,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range, "type": type, "int": int,
                              "BaseException": BaseException, "KeyError": KeyError},
             "_M": self, "_S": self.scalars, "_A": self.arrays, "_arr": self.array_nd, "_ix": self.subscript_check(0),
-            "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_wh": self.while_loops, "_END": END, "_DirectJump": DirectJump,
+            "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_wh": self.while_loops, "_END": END, "_off_end": self._ran_off_end, "_DirectJump": DirectJump,
             "_pr": self.print_items, "_pru": self.print_using, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
             "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,
             "_oom": self._out_of_memory, "_deep": self.gosubs_full, "_loops": self.open_loops, "_call": self.call_area, "_call_file": self.call_file,
@@ -827,6 +827,14 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         clears ONEFLG), so the ON ERROR GOTO still set traps the next error."""
         self.in_handler = False
         return "end"
+
+    def _ran_off_end(self, line: int) -> None:
+        """The program ran past its last ``line``: inside an error handler that is No RESUME
+        in that line, where the dialect says so (GWMAIN.ASM PRGEND); the handler's own
+        error is not trapped (ONEFLG is still set)."""
+        if self.in_handler and self.dialect.handler_must_resume:
+            self.line = line
+            raise error_for(NO_RESUME)
 
     def _execute(self, area: int, block: int) -> str:
         self.cont_point = None

@@ -122,6 +122,16 @@ class ErrorTrapping:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         raise BasicError.of_code(n)
 
+    def note_untrapped(self, err: BasicError) -> None:
+        """``err`` stopped the run or the direct line (no handler took it): where the dialect
+        says so it is ERR and ERL all the same and a handler running is left (see
+        ``Dialect.untrapped_errors_noted``).  A Break is no error (BIMISC.ASM STPEND)."""
+        if not self.dialect.untrapped_errors_noted or err.code == BREAK or err.code > 255:
+            return
+        self.err = float(self.err_codes.get(err.code, err.code))
+        self.erl = float(err.line if err.line is not None else self.dialect.direct_line_number)
+        self.in_handler = False
+
     def _trap(self, err: BasicError, area: int, block: int, direct_code=None) -> int | None:
         """The handler block for ``err`` if ON ERROR GOTO of this area catches it.
 
