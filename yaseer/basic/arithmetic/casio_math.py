@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 
-from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, OVERFLOW
+from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, OVERFLOW, error_for
 
 LARGEST = 9.999999999999e99  # the Casio's range ends below 1E+100 (specifications)
 RIGHT_ANGLE = {"DEG": 90.0, "RAD": math.pi / 2, "GRA": 100.0}  # one quarter turn in each unit
@@ -22,7 +22,24 @@ TO_RADIANS = {"DEG": math.pi / 180.0, "RAD": 1.0, "GRA": math.pi / 200.0}
 # DMS$'s degree sign: the character code &HDF, the small circle of the Casio character set
 # (part-12-1-character-code-table.md; shown as the half-width ﾟ): the table has no other
 DEGREE_SIGN = "\xdf"
-HYPERBOLIC_LIMIT = 230.2585092  # |x| of HYP SIN / HYP COS (the manual's page): ln(1E100)
+EXP_LIMIT = 230.2585092  # ln(1E+100) to the pages' ten digits: EXP's, HYP SIN's and HYP COS's argument
+# The argument each function's page allows (commands/*.md), one row a helper the compiled code
+# calls: helper -> (lowest, whether the lowest is allowed, highest, whether the highest is
+# allowed, the error beyond).  Beyond them the function is the page's error in both
+# arithmetics (binary keeps IEEE's range for + - * / on purpose, tests/test_scaled_mechanisms.py,
+# not for the functions): where the result would leave the calculation range, OV
+# (part-12-2: "value exceeds allowable calculation result or input range"), else MA
+# ("argument exceeds allowable calculation range", yaseer's Illegal function call).  (SQR, LN,
+# LOG, ASN, ACS, FACT, NCR, NPR, ROUND and HEX$ check their arguments in their own routines,
+# which each arithmetic needs anyway.)
+ARGUMENT_RANGES = {
+    "_exp": (-math.inf, False, EXP_LIMIT, True, OVERFLOW),  # EXP.md: argument <= 230.2585092
+    "_sinh": (-EXP_LIMIT, True, EXP_LIMIT, True, OVERFLOW),  # HYP_SIN_COS_TAN.md: |argument| <= 230.2585092
+    "_cosh": (-EXP_LIMIT, True, EXP_LIMIT, True, OVERFLOW),
+    "_asinh": (-5e99, False, 5e99, False, ILLEGAL_FUNCTION_CALL),  # HYP_ASN_ACS_ATN.md: |argument| < 5E+99
+    "_acosh": (1.0, True, 5e99, False, ILLEGAL_FUNCTION_CALL),  # 1 <= argument < 5E+99
+    "_atanh": (-1.0, False, 1.0, False, ILLEGAL_FUNCTION_CALL),  # -1 < argument < 1
+}
 
 
 def illegal() -> BasicError:
@@ -198,38 +215,18 @@ def hex4(x: float) -> str:
 
 # ------------------------------------------------------------------ hyperbolic functions
 
-def sinh(x: float) -> float:
-    if abs(x) > HYPERBOLIC_LIMIT:
-        raise overflow()
-    return math.sinh(x)
+def ranged(namespace: dict) -> dict:
+    """The helpers of :data:`ARGUMENT_RANGES` in ``namespace``, each checking its argument
+    against its page's range before it computes."""
+    return {name: _within(namespace[name], *bounds) for name, bounds in ARGUMENT_RANGES.items() if name in namespace}
 
 
-def cosh(x: float) -> float:
-    if abs(x) > HYPERBOLIC_LIMIT:
-        raise overflow()
-    return math.cosh(x)
-
-
-def tanh(x: float) -> float:
-    return math.tanh(x)
-
-
-def asinh(x: float) -> float:
-    if abs(x) >= 5e99:
-        raise illegal()
-    return math.asinh(x)
-
-
-def acosh(x: float) -> float:
-    if not 1 <= x < 5e99:
-        raise illegal()
-    return math.acosh(x)
-
-
-def atanh(x: float) -> float:
-    if not -1 < x < 1:
-        raise illegal()
-    return math.atanh(x)
+def _within(f, low: float, low_allowed: bool, high: float, high_allowed: bool, code: int):
+    def checked(x):
+        if (low < x or low_allowed and x == low) and (x < high or high_allowed and x == high):
+            return f(x)
+        raise error_for(code)
+    return checked
 
 
 # ------------------------------------------------------------------ angles
@@ -315,8 +312,8 @@ def asc(text: str) -> float:
 RUNTIME = {
     "_asc0": asc, "_log10": log10, "_cur": cube_root, "_frac": frac, "_fact": factorial, "_ncr": combinations,
     "_npr": permutations, "_round": round_at, "_degf": from_sexagesimal, "_dms": to_sexagesimal,
-    "_hex4": hex4, "_sinh": sinh, "_cosh": cosh, "_tanh": tanh, "_asinh": asinh, "_acosh": acosh,
-    "_atanh": atanh,
+    "_hex4": hex4, "_sinh": math.sinh, "_cosh": math.cosh, "_tanh": math.tanh, "_asinh": math.asinh,
+    "_acosh": math.acosh, "_atanh": math.atanh,
 }
 
 

@@ -502,6 +502,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             ns.update(decimal_scales.writers(ns))
             ns.update(decimal_calls.helpers(ns))
             ns["_rndr"] = self._first_raw_draw
+        if self.dialect.words:  # the casio functions' argument ranges, in either arithmetic
+            ns.update(casio_math.ranged(ns))
         self.namespaces[area] = ns
         return ns
 
