@@ -54,3 +54,89 @@ def test_a_number_after_a_line_number_word_is_a_line_number_token():
     assert line_bytes("ERL=100") - line_bytes("X=100") == 1
     assert line_bytes("LIST 1-2") == 5 + 1 + 1 + 3 + 1 + 3
     assert line_bytes("ERL=70000") == 5 + 1 + 1 + 3 + 3
+
+
+def _long_program(rng) -> str:
+    """Line 1 prints FRE(0) and ends; then lines of REM, of a PRINT of a string or of
+    statements never run, each at least as long as the one before, about 60 KB or more
+    in all: once one line does not fit none after it does."""
+    lengths = sorted(rng.randint(20, 250) for _ in range(rng.randint(380, 520)))
+    lines = ["1 PRINT FRE(0): END"]
+    for k, length in enumerate(lengths):
+        body = rng.choice([f"REM {'X' * length}", f'PRINT "{"Y" * length}"', "X = 1: " * (length // 7) + "GOTO 1"])
+        lines.append(f"{10 + k} {body}")
+    return "\n".join(lines) + "\n"
+
+
+def test_a_program_that_does_not_fit_stops_loading_as_pcbasic(pc):
+    """A line that does not fit in the 64 KB with the lines before it is Out of memory (7)
+    and loading stops there, the lines before it kept (GWMAIN.ASM: the line insertion
+    after NODEL moves the program up with BLTU, whose REASON refuses an end past FRETOP):
+    the program then prints the FRE(0) PC-BASIC 2.0.8 prints for the lines it took, and
+    typed in a session each line that does not fit says so, as PC-BASIC's do.  PC-BASIC
+    takes a line that leaves FRE -1 or -2 (its test allows 2 bytes more than REASON's);
+    those programs follow the source and are left out here."""
+    import io
+
+    from yaseer.basic.errors import BasicError
+    from yaseer.basic.machine.machine import Machine
+    from yaseer.session import MachineEngine, Session
+
+    rng = random.Random(base_seed() + 62)
+    compared = stopped = 0
+    for _ in range(max(case_count() // 30, 10)):
+        source = _long_program(rng)
+        pc.statement("ON ERROR GOTO 0")
+        theirs = pc.program(source)
+        free = int(theirs.split()[-1])
+        if free < 0:
+            continue
+        screen = io.StringIO()
+        machine = Machine(screen=screen, dialect="gw")
+        try:
+            machine.load(source)
+            refused = 0
+        except BasicError as error:
+            assert error.code == 7
+            refused = 1
+        machine.run()
+        assert screen.getvalue() == f" {free} \n", source[-300:]
+        assert refused == ("Out of memory" in theirs)
+        shown = []
+        session = Session(write=shown.append, engine=MachineEngine(shown.append, dialect="gw"), dialect="gw")
+        for line in source.splitlines():
+            session.handle(line)
+        assert "".join(shown).count("Out of memory") == theirs.count("Out of memory")
+        compared += 1
+        stopped += refused
+    assert compared >= 6 and stopped >= 3, (compared, stopped)
+
+
+def test_a_program_that_fills_the_segment_exactly_is_loaded():
+    """FRE 0 after the last line is room enough (REASON refuses only an end past FRETOP,
+    and FRE is FRETOP less STREND: BISTRS.ASM CLCDIF): a line of n bytes fits where FRE(0)
+    before it is n; one byte more is Out of memory, the lines before it kept and the line
+    of its number gone (ERAINS deletes the old line before the insertion)."""
+    import io
+
+    from yaseer.basic.errors import BasicError
+    from yaseer.basic.machine.machine import Machine
+
+    head = "1 PRINT FRE(0): END\n"
+    free = 60300 - (4 + 10 + 1)  # link and number; PRINT, blank, FRE (2), (, 0, ), :, blank, END; 0
+    filler = []
+    while free > 300:  # REM lines of 250 characters: 256 bytes each
+        filler.append(f"{10 + len(filler)} REM {'X' * 249}")
+        free -= 256
+    last = free - 7  # link, number, REM, blank and 0
+    exact = head + "\n".join(filler + [f"9000 REM {'Z' * last}"]) + "\n"
+    screen = io.StringIO()
+    machine = Machine(screen=screen, dialect="gw")
+    machine.load(exact)
+    machine.run()
+    assert screen.getvalue() == " 0 \n"
+    machine = Machine(screen=io.StringIO(), dialect="gw")
+    with pytest.raises(BasicError, match="Out of memory"):
+        machine.load(exact.replace("Z", "ZZ", 1))
+    assert 9000 not in machine.programs[0] and len(machine.programs[0]) == len(filler) + 1
+    assert Machine(screen=io.StringIO(), dialect="casio").load(exact.replace("Z", "ZZ", 1)) is None  # no limit

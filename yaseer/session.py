@@ -178,6 +178,7 @@ def read_program_file(name: str, directory: Path, dialect=None) -> ProgramFile:
     """:func:`read_listing_file`'s program, and what else LOAD learns from the file."""
     from yaseer.basic.dialects.dialect import CASIO
     from yaseer.basic.machine.program_file import is_protected, program_text
+    from yaseer.basic.machine.memory_model import fitting_lines
     from yaseer.basic.machine.sandbox import Sandbox
     from yaseer.basic.source.scanner import program_lines
 
@@ -187,6 +188,8 @@ def read_program_file(name: str, directory: Path, dialect=None) -> ProgramFile:
     data = sandbox.read_bytes(sandbox.dos_name(name))  # DOS ignores case: a program's SAVE "f" wrote F.BAS
     dialect = dialect or CASIO
     program, stopped = program_lines(program_text(data, dialect.charset), dialect)
+    program, full = fitting_lines({}, program, dialect.free_memory)  # gw: the lines that fit are loaded
+    stopped = full or stopped
     if any(number > MAX_LINE_NUMBER for number in program):
         raise BasicError("Syntax error", SYNTAX_ERROR)
     return ProgramFile(program, is_protected(data), stopped, data[:1] not in (b"\xfe", b"\xff"))
@@ -321,6 +324,7 @@ class Session:
         """Type ``number text``: store (or, with no text, delete) a line."""
         self._refuse_protected()
         if text.strip(" "):
+            self._fit_line(number, text)
             self.program[number] = text
             self.current_line = number
             self._show_entry_messages({number: text})
@@ -328,6 +332,18 @@ class Session:
             self.program.pop(number, None)
         self._can_continue = False
         self._program_edited()
+
+    def _fit_line(self, number: int, text: str) -> None:
+        """gw: a typed line that would take the program past the 64 KB is Out of memory and
+        is not entered; the line of its number is gone (memory_model.fitting_lines)."""
+        from yaseer.basic.machine.memory_model import fitting_lines
+
+        _, full = fitting_lines(self.program, {number: text}, self._dialect().free_memory)
+        if full is not None:
+            self.program.pop(number, None)
+            self._can_continue = False
+            self._program_edited()
+            raise full
 
     def _program_edited(self) -> None:
         """A typed line or DELETE changed the program: the engine applies the dialect's rule."""

@@ -20,6 +20,7 @@ The file is read when the statement runs, so a missing file is the statement's e
 
 from __future__ import annotations
 
+from yaseer.basic.machine import memory_model
 from yaseer.basic.machine.files import read_program
 from yaseer.basic.errors import (
     BAD_FILE_MODE, BasicError, ILLEGAL_DIRECT, ILLEGAL_FUNCTION_CALL, UNDEFINED_LINE, error_for, password_protected,
@@ -72,6 +73,9 @@ class Chaining:
         if not merge:
             self.program_protected = is_protected(data)
         lines, stopped = program_lines(text, self.dialect)
+        if not merge:  # (MERGE's lines must fit with the program they join: chained)
+            lines, full = memory_model.fitting_lines({}, lines, self.dialect.free_memory)
+            stopped = full or stopped
         if data[:1] < bytes((TOKENISED - 1,)):
             self._entered(lines)
         return lines, stopped
@@ -285,17 +289,19 @@ class Chaining:
             first = 0 if first is None else first
             last = max(program, default=0) if last is None else last
             program = {n: t for n, t in program.items() if not first <= n <= last}
-        if chain.merge:
-            program.update(chain.lines)
+        stopped = chain.stopped
+        if chain.merge:  # a line that does not fit with the program: Out of memory, not trapped
+            program, full = memory_model.fitting_lines(program, chain.lines, self.dialect.free_memory)
+            stopped = full or stopped  # (the line insertion clears ONELIN first: GWMAIN.ASM LEVFRE)
         else:
-            program = dict(chain.lines)
+            program, full = dict(chain.lines), None
         self.programs[0] = program
         self._invalidate(0)
         self._extra_entries.clear()
-        if chain.stopped is not None:
-            if not chain.merge:
+        if stopped is not None:
+            if not chain.merge or full is not None:
                 self.on_error = None  # the old program's handler went with it
-            raise chain.stopped
+            raise stopped
         if not chain.run:
             return None
         kept_scalars = {k: v for k, v in self.scalars.items() if keep is None or k in keep}

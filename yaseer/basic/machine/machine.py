@@ -51,7 +51,7 @@ from yaseer.basic.compile.number_models import initial_value
 from yaseer.basic.compile import program_cache
 from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  MAX_STACK: GOSUB returns + open FOR loops together
 from yaseer.basic.dialects import dialect as dialects
-from yaseer.basic.machine import gwfunctions, runtime, string_space, val_numbers
+from yaseer.basic.machine import gwfunctions, memory_model, runtime, string_space, val_numbers
 from yaseer.basic.machine.files import FileTable, Sandbox
 from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
     BasicError, OutputError, BREAK, INPUT_PAST_END, NO_RESUME, OUT_OF_DATA, OUT_OF_MEMORY, STRING_TOO_LONG, SYNTAX_ERROR,
@@ -315,6 +315,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             raise BasicError("Out of memory", OUT_OF_MEMORY)
         text = self.dialect.charset.codes(text)  # symbols typed or read (a UTF-8 file's) as the machine's codes
         program, stopped = program_lines(text, self.dialect)  # a line without a number: the lines before it load
+        program, full = memory_model.fitting_lines({}, program, self.dialect.free_memory)
+        stopped = full or stopped  # (a line that does not fit comes before the line without a number)
         if entered:
             for statement_text in program.values():
                 self.show_messages(entry_messages(statement_text, self.dialect))

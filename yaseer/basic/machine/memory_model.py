@@ -7,7 +7,10 @@ variables, the arrays, and from the top down the strings; FRE is what lies betwe
 (PC-BASIC 2.0.8 counts the same way, ``memory.py`` ``_get_free``).  With no program
 60300 bytes are free (the figure GW-BASIC's banner shows; ``Dialect.free_memory``).
 
-* a program line: a 2-byte link, a 2-byte line number, its tokens as CRUNCH stores them
+* a program line (a program that does not fit is Out of memory at the line that does
+  not fit, typed or read from a file: GWMAIN.ASM's line insertion after NODEL moves the
+  program up with BLTU, whose REASON refuses an end past FRETOP, the strings forgotten;
+  the lines before it stay: :func:`fitting_lines`): a 2-byte link, a 2-byte line number, its tokens as CRUNCH stores them
   (machine/program_crunch.py: a number after GOTO, ERL, LIST ... a 3-byte line-number
   token, LINRES) and a 0 byte;
 * a simple variable: its type, two name characters, the count of the others and those
@@ -27,7 +30,7 @@ variables, the arrays, and from the top down the strings; FRE is what lies betwe
 
 from __future__ import annotations
 
-from yaseer.basic.errors import BasicError
+from yaseer.basic.errors import OUT_OF_MEMORY, BasicError
 from yaseer.basic.machine.program_crunch import crunch_line
 
 _VALUE_BYTES = {"%": 2, "!": 4, "#": 8, "$": 3}
@@ -47,6 +50,39 @@ def line_bytes(text: str) -> int:
             _LINE_BYTES.clear()
         _LINE_BYTES[text] = size
     return size
+
+
+_MOST_BYTES_A_CHARACTER = 5  # "1#" is 9 bytes (a double), "GOTO 1" stores its 1 as 3
+
+
+def program_bytes(program: dict) -> int:
+    """The bytes the lines of ``program`` (number -> text) take in GW-BASIC's program text."""
+    return sum(line_bytes(text) for text in program.values())
+
+
+def fitting_lines(program: dict, lines: dict, total: int | None) -> tuple[dict, BasicError | None]:
+    """``program`` (number -> text) with ``lines`` entered one by one in their order, as
+    GW-BASIC enters a typed line or one LOAD, MERGE or CHAIN reads: each replaces the line of
+    its number, and the first that would take the program past ``total`` bytes (None: no
+    limit) is Out of memory, the lines before it entered (REASON: the program may end
+    exactly at the top).  (The new program, that error or None.)"""
+    merged = dict(program)
+    if total is None:
+        merged.update(lines)
+        return merged, None
+    # a bound from the characters first: most programs are not tokenised to know they fit
+    texts = list(program.values()) + list(lines.values())
+    if sum(_MOST_BYTES_A_CHARACTER * len(text) + 5 for text in texts) <= total:
+        merged.update(lines)
+        return merged, None
+    used = program_bytes(program)
+    for number, text in lines.items():
+        used += line_bytes(text) - (line_bytes(merged[number]) if number in merged else 0)
+        if used > total:  # (the old line of the number was deleted first: ERAINS calls DEL)
+            merged.pop(number, None)
+            return merged, BasicError("Out of memory", OUT_OF_MEMORY)
+        merged[number] = text
+    return merged, None
 
 
 def variable_bytes(name: str) -> int:
@@ -72,7 +108,7 @@ def free_and_strings(total: int, program: dict, scalars: dict, arrays: dict, arr
     """(:func:`free_bytes`, the bytes of those strings); a string whose id is in ``text``
     stays in the program text (a literal's, DATA's) and takes no string space; a simple
     variable named in ``made`` is counted whatever it holds (a statement made it)."""
-    used = sum(line_bytes(text) for text in program.values())
+    used = program_bytes(program)
     strings = 0
     for name, value in scalars.items():
         if type(value) is str:
