@@ -275,17 +275,25 @@ def _wide():
 
 class Shown(float):
     """A gw double on its way to PRINT USING, with its exact 56-bit value (``parts``, as
-    mbf_double's), from which :func:`_bracketed` finds the digits the field shows."""
+    mbf_double's), from which :func:`_bracketed` finds the digits the field shows; from
+    10**16 up also ``free`` (see :class:`Unfixed`)."""
 
-    __slots__ = ("parts",)
+    __slots__ = ("parts", "free")
+
+
+class Unfixed(float):
+    """A gw single on its way to PRINT USING (its 7 digits' value) that MATH2.ASM's ``$PUF``
+    finds too large for a fixed field, with ``free``: the text ``$FOUT`` (PRINT's free
+    format) gives its magnitude.  A fixed field shows ``%``, a blank and that text."""
+
+    __slots__ = ("free",)
 
 
 def _bracketed(parts, places: int):
     """``abs`` of a 56-bit double rounded to ``places`` decimals, at most 16 significant
     digits (zeros after them), as MATH2.ASM's ``$PUF`` finds them (``$FOTNV``'s table
     steps, a ``$DIV10`` a digit too many, ``$FOTCV``'s half added: mbf_double_using;
-    from 10**16 up the 16 digits and zeros, as PC-BASIC 2.0.8 fills the field, where
-    ``$PUF`` writes ``$FOUT``'s free format after the ``%``)."""
+    from 10**16 up the 16 digits and zeros, for a double that carries no ``free`` text)."""
     from decimal import Decimal
 
     from yaseer.basic.arithmetic import mbf_double_using
@@ -402,6 +410,12 @@ def format_number(x: float, field: NumericField) -> str:
     ``.`` when the field has room for it and no ``$``.
     """
     _check_finite(x)
+    free = getattr(x, "free", None)
+    if free is not None and not field.exponent_digits:
+        # MATH2.ASM $PUF: from 10**16 up (a single: $DP16's top four bytes) $FOUT's free
+        # format after a % and a blank; PUFOUT made the number positive before, so a
+        # minus, a +, $, ** and a trailing sign are not shown
+        return "% " + free
     negative = x < 0
     body = _scientific_body(x, field) if field.exponent_digits else _fixed_body(x, field)
     lead = ""
@@ -441,7 +455,7 @@ def _format_value(value: Value, field: StringField | NumericField) -> str:
         raise BasicError("Type mismatch", TYPE_MISMATCH)
     if is_string:
         return format_string(value, field)
-    return format_number(value if type(value) is Shown else float(value), field)
+    return format_number(value if type(value) is Shown or type(value) is Unfixed else float(value), field)
 
 
 def using(fmt: str, values: Sequence[float | str], pieces: bool = False):

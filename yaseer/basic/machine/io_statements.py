@@ -429,20 +429,35 @@ def _formatted(fmt: str, values: list, stream, pieces: bool = False):
         raise
 
 
+# MATH2.ASM $PUF prints a number from 10**16 up in free format (formatting.Unfixed): a
+# double compared with $DP16 (10**16, exact), a single with its top four bytes (10**16
+# cut to 24 bits, 9999999198822400)
+_PUF_SINGLE_LIMIT = 9999999198822400.0
+_PUF_DOUBLE_LIMIT = values.double_parts(1e16)[1:]
+
+
 def _single_decimal(x: float) -> float:
     """A single as the decimal of its 7 digits (GW-BASIC's PRINT USING rounds those, not
-    the binary value: ``2.675`` is 2.68, ``1/3`` .3333334000 with ten places)."""
+    the binary value: ``2.675`` is 2.68, ``1/3`` .3333334000 with ten places); from
+    ``$PUF``'s limit up marked with its free-format text."""
     text = values.unsigned_text(x, values.SINGLE_DIGITS, "E")
-    return -float(text) if x < 0 else float(text)
+    value = -float(text) if x < 0 else float(text)
+    if -_PUF_SINGLE_LIMIT < x < _PUF_SINGLE_LIMIT:
+        return value
+    unfixed = formatting.Unfixed(value)
+    unfixed.free = text
+    return unfixed
 
 
 def _double_decimal(x) -> float:
     """A gw double with its exact 56-bit value, whose digits PRINT USING finds as
     MATH1.ASM's PUFOUT does (formatting.Shown): ``2#/3`` with sixteen places is
     .6666666666666667 (the nearest IEEE double's digits gave ...666), as PC-BASIC 2.0.8
-    prints."""
+    prints; from 10**16 up with its free-format text (``$PUF``)."""
     shown = formatting.Shown(x)
-    shown.parts = values.double_parts(x)
+    shown.parts = parts = values.double_parts(x)
+    if parts[1:] >= _PUF_DOUBLE_LIMIT:
+        shown.free = values.unsigned_text(x, values.DOUBLE_DIGITS, "D")
     return shown
 
 
