@@ -8,7 +8,8 @@ programs a run generates (40 by default); ``YASEER_DIFF_SEED`` the seed.
 
 The corpus (tests/corpus/*.bas) holds the programs on which yaseer once
 differed from PC-BASIC, each with PC-BASIC's output in ``NAME.expected``
-(recorded by ``python tests/test_differential_programs.py --record``).  Open findings
+(recorded by ``python tests/test_differential_programs.py --record``; a single whose
+PC-BASIC digits are not the source's prints the source's, see test_differential_support).  Open findings
 wait in tests/corpus/pending/; ``--pending`` tells which of them yaseer now gets right.
 Where Microsoft's GW-BASIC source decides against PC-BASIC, ``NAME.expected`` holds
 the source's output, ``NAME.pcbasic`` PC-BASIC's, and the program's REM lines name
