@@ -216,6 +216,64 @@ def test_a_call_runs_the_one_path_its_inputs_take_whatever_the_mix():
     assert len(runs) == 64
 
 
+def test_inputs_that_are_no_plain_floats_give_the_plain_codes_bits():
+    # a recorded path reads an element as x - 0.0 (not float(x)): an int, a bool, a negative
+    # zero, a string float() parses, a row of a two-dimensional array and gw's doubles (a float
+    # subclass with arithmetic of its own) must give the plain code's bits or error, call by call
+    def scenario(change):
+        m = machine(2, 2.0, 1)
+        row = []
+        for call in range(6):
+            m.array("T")[12] = 12.5 * call
+            if call >= 3:  # the paths recorded on plain floats first
+                change(m, call)
+            try:
+                m.python_areas[2](m)
+            except BasicError as err:
+                row.append(str(err))
+            else:
+                row.append(_bits(m))
+        return row
+
+    def rows(m, call):
+        m.arrays["H"] = [[1.0, 2.0]] * 15
+
+    changes = [lambda m, call: m.array("L").__setitem__(11, 1 + call % 2),  # an int: 1.0 or 2.0
+               lambda m, call: m.array("M").__setitem__(7, call % 2 == 0),  # a bool
+               lambda m, call: m.array("D").__setitem__(2, -0.0),
+               lambda m, call: m.array("E").__setitem__(2, -0.0 if call % 2 else 0.0),
+               lambda m, call: m.array("L").__setitem__(11, "1.25"),
+               rows]
+    for change in changes:
+        recorded, plain = recorded_and_plain(lambda: scenario(change))
+        assert recorded == plain
+    assert isinstance(plain[-1], str) and "Type mismatch" in plain[-1]  # the rows
+
+    def gw_scenario():
+        m = Machine(screen=io.StringIO(), dialect="gw")
+        m.load("10 DEFDBL A-Z: A = 1#/3: B = 2#/7: C = 4#/3\n")
+        m.run()
+        third, sevenths, coupler = m.scalar("A#"), m.scalar("B#"), m.scalar("C#")
+        assert type(third) is not float and isinstance(third, float)  # doubles beyond a float's 53 bits
+        for name in "LTWADERHMIFZQUXYVNP":  # the arrays the library programs read and write (API names)
+            m.arrays[name] = [0.0] * 51
+        binding.install(m)
+        for name, elements in INPUTS[2].items():
+            for index, value in elements.items():
+                m.array(name)[index] = float(value)
+        m.array("Z")[2], m.array("Q")[2], m.array("R")[11], m.array("L")[13] = 2.0, 1.0, sevenths, coupler
+        m.set_scalar("G", 9.81)
+        row = []
+        for call in range(6):
+            m.array("T")[12] = third * (call + 1)
+            m.python_areas[2](m)
+            row.append(_bits(m))
+        return row
+
+    recorded, plain = recorded_and_plain(gw_scenario)
+    assert recorded == plain
+
+
 def test_a_recorded_call_never_enters_numpy_errstate(monkeypatch):
     # numpy imported by something else (a notebook): the plain code is run under
     # numpy.errstate (methods may use numpy), a recorded path, which uses none, is not
@@ -328,10 +386,10 @@ def _compiled_both_ways(number: int, z: float, q: float):
     made = {}
     real_compile = tracing.Recorder.compile
 
-    def capture(recorder, epilogue, label):
+    def capture(recorder, epilogue, label, *how):
         made["lines"] = [str(line) for line in recorder.lines + epilogue]
         made["names"] = recorder.names
-        return real_compile(recorder, epilogue, label)
+        return real_compile(recorder, epilogue, label, *how)
 
     m = machine(number, z, q) if number != 5 else machine_for(5)
     frame = binding._RecordingFrame(m, number, Recorder())

@@ -12,6 +12,14 @@ it.  A call computes its key, runs that path, and falls back to trying every pat
 only for a key not met before (or one whose path failed a guard on a computed
 value).  The key only chooses: every path still checks all its guards, so a
 wrong choice costs time, never a wrong number.
+
+Computing a whole key costs a call every test (a listing cycling Q(2) through 1..4
+read four elements and made seven tests, about 3% of the call): the keys met so far
+are compiled into a decision tree (:func:`compile_choice`) that makes only the tests
+which tell their paths apart on the way to a leaf, and names a key met there.  An
+input whose key was never met may be sent down the tree to a path it does not take:
+its guards refuse it, and the whole key is computed, as before, to find and remember
+the one it takes.
 """
 
 from __future__ import annotations
@@ -26,6 +34,7 @@ if TYPE_CHECKING:  # annotations only
 
 KEY_BUILTINS = {"float": float, "bool": bool, "len": len}  # all a key function may call
 MEMORY = 4096  # keys remembered (a listing whose every call has a new key starts over)
+TREE = 256  # keys a decision tree is compiled for (beyond: the whole key every call)
 _ARRAY = re.compile(r"\b_a_(\w+)\b")
 
 
@@ -44,6 +53,8 @@ class Recordings:
         self._outcomes: list[tuple] = []  # per path: the tests' values for the call recorded
         self._key = _no_key
         self._chosen: dict = {}  # key -> the path that ran for it
+        self._differing: list[str] = []  # the tests of the key
+        self._pick = _no_key  # a key met whose path the call likely takes (compile_choice)
 
     def __len__(self) -> int:
         return len(self._paths)
@@ -71,10 +82,23 @@ class Recordings:
         """The key of the paths' tests that tell them apart, and the path each key's calls take."""
         differing = [k for k in range(len(self._tests))
                      if len({outcome[k] if k < len(outcome) else None for outcome in self._outcomes}) > 1]
-        self._key = self._compile([self._tests[k] for k in differing]) if differing else _no_key
+        self._differing = [self._tests[k] for k in differing]
+        self._key = self._compile(self._differing) if differing else _no_key
         self._chosen.clear()
         for path, outcome in zip(self._paths, self._outcomes):
             self._chosen.setdefault(tuple(outcome[k] if k < len(outcome) else None for k in differing), path)
+        self._grow()
+
+    def _grow(self) -> None:
+        """The decision tree of the keys met (a key with an unknown test, None, is never
+        met: every call's key is known); the whole key beyond :data:`TREE` keys."""
+        if not self._differing:
+            self._pick = _no_key
+        elif len(self._chosen) > TREE:
+            self._pick = self._key
+        else:
+            self._pick = compile_choice(self._differing, [(key, path) for key, path in self._chosen.items()
+                                                          if None not in key])
 
     def _outcome(self, every, machine, index: int) -> tuple:
         """The tests' values for path ``index``: computed on ``machine`` for the path
@@ -90,16 +114,19 @@ class Recordings:
         """Run the path ``machine``'s inputs take (it commits its outputs); False when
         none of the paths holds for them."""
         try:
-            key = self._key(machine)
-        except (LookupError, TypeError, ValueError):  # an input missing or not a number: no key, every path tried
-            key = None
-        chosen = self._chosen.get(key)
+            chosen = self._chosen.get(self._pick(machine))
+        except (LookupError, TypeError, ValueError):  # an input missing or not a number: every path tried
+            chosen = None
         if chosen is not None:
             try:
                 chosen(machine)
                 return True
             except Retrace:
                 pass
+        try:
+            key = self._key(machine)
+        except (LookupError, TypeError, ValueError):
+            key = None
         for path in self._paths:
             if path is chosen:
                 continue
@@ -110,7 +137,10 @@ class Recordings:
             if key is not None:
                 if len(self._chosen) >= MEMORY:
                     self._chosen.clear()
+                new = key not in self._chosen
                 self._chosen[key] = path
+                if new:
+                    self._grow()
             return True
         return False
 
@@ -128,17 +158,83 @@ def compile_key(tests) -> "Callable":
     ``Q(n)`` several times), and a test of a float is written as the comparison it is:
     ``bool((x == 2.0))`` as ``(x == 2.0)``, ``bool(x)`` as ``(x != 0.0)`` (NaN too is true):
     the same values with fewer calls, on every call of a program."""
+    tests, reads = _plain_tests(tests)
+    arrays = dict.fromkeys(name for test in [*tests, *reads] for name in _ARRAY.findall(test))
+    lines = ["_arrays = _M.arrays"] + [f"_a_{name} = _arrays[{name!r}]" for name in arrays]
+    lines += [f"{name} = {text}" for text, name in reads.items()]
+    lines.append(f"return ({''.join(test + ', ' for test in tests)})")
+    return _function("key", lines, "<recorded paths' key>")
+
+
+def _plain_tests(tests) -> tuple[list[str], dict[str, str]]:
+    """``tests`` with each element read made a local (``float(_a_Q[2])`` -> ``_eQ_2``) and a
+    test of a float written as the comparison it is, and the reads (text -> local)."""
     reads: dict[str, str] = {}  # the text reading an element -> its local
 
     def local(found) -> str:
         return reads.setdefault(found.group(0), f"_e{found.group(1)}_{found.group(2)}")
 
-    tests = [_TRUTH.sub(r"(\1 != 0.0)", _COMPARED.sub(r"\1", _READ_TEXT.sub(local, test))) for test in tests]
-    arrays = dict.fromkeys(name for test in [*tests, *reads] for name in _ARRAY.findall(test))
-    lines = ["_arrays = _M.arrays"] + [f"_a_{name} = _arrays[{name!r}]" for name in arrays]
-    lines += [f"{name} = {text}" for text, name in reads.items()]
-    lines.append(f"return ({''.join(test + ', ' for test in tests)})")
-    text = "def key(_M):\n" + "".join(f"    {line}\n" for line in lines)
+    return [_TRUTH.sub(r"(\1 != 0.0)", _COMPARED.sub(r"\1", _READ_TEXT.sub(local, test))) for test in tests], reads
+
+
+def _function(name: str, lines: list[str], label: str):
+    """The function ``name(_M)`` of body ``lines``, calling nothing but :data:`KEY_BUILTINS`."""
+    text = f"def {name}(_M):\n" + "".join(f"    {line}\n" for line in lines)
     namespace = {"__builtins__": dict(KEY_BUILTINS)}
-    exec(compile(text, "<recorded paths' key>", "exec"), namespace)
-    return namespace["key"]
+    exec(compile(text, label, "exec"), namespace)
+    return namespace[name]
+
+
+_BOOLEAN = re.compile(r"\(.* (?:==|!=|<=?|>=?) .*\)$")
+
+
+def compile_choice(tests, entries) -> "Callable":
+    """The function ``pick(_M)``: the key of one of ``entries`` ((key, path) pairs, each key the
+    tuple of ``tests``' values, as :func:`compile_key` computes it) whose path the inputs of
+    ``_M`` likely take, or None.
+
+    A decision tree: each node makes the test that best tells apart the paths of the entries
+    that reach it, and reads an element only where a test needs it; a leaf is reached once the
+    entries there share a path (its key is returned: a key reaching a leaf need not be the
+    key returned, or any key met).  Made on the entries a caller has met, it returns for
+    each of their keys a key of the same path."""
+    tests, reads = _plain_tests(tests)
+    needs = [[(text, name) for text, name in reads.items() if re.search(rf"\b{name}\b", test)] for test in tests]
+    lines = ["_arrays = _M.arrays"]
+
+    def node(entries: list, done: frozenset, made: frozenset, indent: str) -> None:
+        if len({id(path) for _, path in entries}) <= 1:
+            lines.append(f"{indent}return {entries[0][0]!r}" if entries else f"{indent}return None")
+            return
+        best = min((k for k in range(len(tests)) if k not in done and len({key[k] for key, _ in entries}) > 1),
+                   key=lambda k: (sum(len({id(path) for key, path in entries if key[k] == value})
+                                      for value in {key[k] for key, _ in entries}), k))
+        for text, name in needs[best]:
+            if name not in made:
+                array = _ARRAY.search(text).group(1)
+                if f"_a_{array}" not in made:
+                    lines.append(f"{indent}_a_{array} = _arrays[{array!r}]")
+                    made |= {f"_a_{array}"}
+                lines.append(f"{indent}{name} = {text}")
+                made |= {name}
+        for array in _ARRAY.findall(tests[best]):
+            if f"_a_{array}" not in made:
+                lines.append(f"{indent}_a_{array} = _arrays[{array!r}]")
+                made |= {f"_a_{array}"}
+        values = list(dict.fromkeys(key[best] for key, _ in entries))
+        if set(values) <= {True, False} and _BOOLEAN.match(tests[best]):
+            branches = [(f"if {tests[best]}:", True), ("else:", False)]
+        else:
+            lines.append(f"{indent}_v{best} = {tests[best]}")
+            branches = [(f"{'if' if k == 0 else 'elif'} _v{best} == {value!r}:", value) for k, value in enumerate(values)]
+            branches.append(("else:", None))
+        for head, value in branches:
+            lines.append(indent + head)
+            chosen = [(key, path) for key, path in entries if value is not None and key[best] == value]
+            if value is None:
+                lines.append(f"{indent}    return None")
+            else:
+                node(chosen, done | {best}, made, indent + "    ")
+
+    node(list(entries), frozenset(), frozenset(), "")
+    return _function("pick", lines, "<recorded paths' choice>")

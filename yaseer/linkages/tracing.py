@@ -134,9 +134,17 @@ class Recorder:
         """The tests of the guards that read inputs alone, in order (see :class:`Guard`)."""
         return tuple(dict.fromkeys(line.key for line in self.lines if isinstance(line, Guard) and line.key))
 
-    def compile(self, epilogue: list[str], label: str):
+    def compile(self, epilogue: list[str], label: str, plain_numbers: bool = False):
         """The record as a function ``run(_M)`` (``_M``: what the recorded lines
         read their inputs from): the recorded lines, then ``epilogue``.
+
+        ``plain_numbers``: the machine recorded on keeps no number of a float subclass with
+        arithmetic of its own (no ``typed_numbers``: gw's doubles are such numbers).  Its
+        elements are then read as ``x - 0.0`` rather than ``float(x)``: the same float for a
+        float (-0.0 and NaN too) and for an int or a bool, an OverflowError where ``float``
+        raises one, in a third fewer instructions; a string, which ``float`` would parse, or a
+        row raises TypeError, and the call is left to the plain code (Retrace).  Such a record
+        refuses a machine whose numbers are typed (:func:`_batched_fetches`).
 
         The lines are compiled as recorded but for rewritings that keep every value
         and every guard: the reads of one array are made together where the first
@@ -147,12 +155,14 @@ class Recorder:
         used once is computed where it is used (:func:`_fused`), and the values share a
         few variables (:func:`_registers`: a frame of hundreds of locals costs every
         call its clearing)."""
-        lines = _batched_finite_guards(_batched_reads(_float_parts(_once(self.lines) + epilogue, self.names)))
-        lines = _batched_fetches(_registers(_fused(_without_dead_lines(lines))))
+        lines = _batched_finite_guards(_batched_reads(_float_parts(_once(self.lines) + epilogue, self.names),
+                                                      _SUBTRACTED if plain_numbers else _CONVERTED))
+        lines = _batched_fetches(_registers(_fused(_without_dead_lines(lines))), plain_numbers)
         # an element read of an array shorter than at the recording raises IndexError: these
         # inputs take another path (the plain code reads 0 beyond the dimension)
+        refused = "(IndexError, TypeError)" if plain_numbers else "IndexError"
         text = ("def run(_M):\n  try:\n" + "".join("    " + line.replace("\n", "\n    ") + "\n" for line in lines)
-                + "  except IndexError:\n    raise _Retrace from None\n")
+                + f"  except {refused}:\n    raise _Retrace from None\n")
         names = namespace(self.names)
         exec(compile(text, f"<traced {label}>", "exec"), names)
         return names["run"]
@@ -165,7 +175,7 @@ def namespace(names: dict) -> dict:
     return dict(names, _all=all, _map=map, _float=float,
                 __builtins__={"float": float, "complex": complex, "len": len, "abs": abs,
                               "isinstance": isinstance, "list": list, "str": str,
-                              "KeyError": KeyError, "IndexError": IndexError})
+                              "KeyError": KeyError, "IndexError": IndexError, "TypeError": TypeError})
 
 
 def _once(lines: list) -> list[str]:
@@ -248,9 +258,11 @@ class _Pattern:
 
 
 _READ = _Pattern(r"(t\d+) = float\((_a_\w+)\[(\d+)\]\)$")
+_CONVERTED = "_float({}[{}])"  # an element read (array, index) as float() makes it a float
+_SUBTRACTED = "{}[{}] - 0.0"  # ... as a subtraction makes it one (Recorder.compile's plain_numbers)
 
 
-def _batched_reads(lines: list[str]) -> list[str]:
+def _batched_reads(lines: list[str], form: str = _CONVERTED) -> list[str]:
     """``lines`` with every element read of an array (``tN = float(_a_X[i])``) moved to
     the first read of that array, one line each (a subscript of a list and a conversion of a
     float cost least as separate steps: one C call reading them all and ``map(float, ...)``
@@ -270,7 +282,7 @@ def _batched_reads(lines: list[str]) -> list[str]:
         elements = reads.pop(found.group(2), None)
         if elements is None:  # already read with the first
             continue
-        out += [f"{name} = _float({found.group(2)}[{index}])" for name, index in elements]
+        out += [f"{name} = {form.format(found.group(2), index)}" for name, index in elements]
     return out
 
 
@@ -370,15 +382,17 @@ def _registers(lines: list[str]) -> list[str]:
 _FETCH = _Pattern(r"(_a_\w+) = _arrays\.get\(('\w+')\) or _M\.array\('\w+'\)$")
 
 
-def _batched_fetches(lines: list[str]) -> list[str]:
+def _batched_fetches(lines: list[str], plain_numbers: bool = False) -> list[str]:
     """``lines`` with the arrays' look-ups (``_a_X = _arrays.get('X') or _M.array('X')``, each
     a method call) made first, all together, as subscripts of the dictionary of arrays; each
     look-up in its place is then made only where one of the arrays did not exist yet (the
-    machine makes an array at its first use: it is made where the recorded call made it)."""
+    machine makes an array at its first use: it is made where the recorded call made it).
+    ``plain_numbers`` (:meth:`Recorder.compile`): a machine whose numbers are typed is refused."""
     fetches = [found.groups() for found in map(_FETCH.match, lines) if found]
     if not fetches:
         return lines
     together = "; ".join(f"{array} = _arrays[{key}]" for array, key in fetches)
+    together += "\nexcept KeyError: _ready = False"
     out = []
     for line in lines:
         if _FETCH.match(line):
@@ -386,7 +400,9 @@ def _batched_fetches(lines: list[str]) -> list[str]:
         else:
             out.append(line)
         if line == "_arrays = _M.arrays":
-            out.append(f"try: {together}\nexcept KeyError: _ready = False\nelse: _ready = True")
+            out.append(f"try: {together}\nelse: _ready = True")
+            if plain_numbers:
+                out.append("if _M.dialect.typed_numbers: raise _Retrace")
     return out
 
 
