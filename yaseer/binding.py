@@ -219,8 +219,8 @@ class _RecordingFrame(_Frame):
         for name, value in self._scalars.items():
             lines.append(f"_M.set_scalar({name!r}, {_as_float(recorder, value)})")
         recorder.names.update(_provided(area))
-        return (recorder.compile(lines, f"PROG {area}", not self.machine.dialect.typed_numbers),
-                recorder.keys())
+        typed = getattr(getattr(self.machine, "dialect", None), "typed_numbers", False)  # a stand-in has none
+        return recorder.compile(lines, f"PROG {area}", not typed), recorder.keys()
 
     def plain(self) -> _Frame:
         """This call's outputs as a plain frame (concrete numbers)."""

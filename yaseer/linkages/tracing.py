@@ -139,7 +139,8 @@ class Recorder:
         read their inputs from): the recorded lines, then ``epilogue``.
 
         ``plain_numbers``: the machine recorded on keeps no number of a float subclass with
-        arithmetic of its own (no ``typed_numbers``: gw's doubles are such numbers).  Its
+        arithmetic of its own (its dialect has no ``typed_numbers``, or it has no dialect: gw's
+        doubles are such numbers).  Its
         elements are then read as ``x - 0.0`` rather than ``float(x)``: the same float for a
         float (-0.0 and NaN too) and for an int or a bool, an OverflowError where ``float``
         raises one, in a third fewer instructions; a string, which ``float`` would parse, or a
@@ -168,12 +169,16 @@ class Recorder:
         return names["run"]
 
 
+# what a machine without a dialect (a stand-in with arrays and scalars alone) holds: plain numbers
+_NO_DIALECT = SimpleNamespace(typed_numbers=False)
+
+
 def namespace(names: dict) -> dict:
     """The globals of a compiled record: its ``names`` (:attr:`Recorder.names`), the few helpers
     every record may call and the only builtins it may (:mod:`yaseer.linkages.recording_cache`
     gives a stored record the same)."""
-    return dict(names, _all=all, _map=map, _float=float,
-                __builtins__={"float": float, "complex": complex, "len": len, "abs": abs,
+    return dict(names, _all=all, _map=map, _float=float, _no_dialect=_NO_DIALECT,
+                __builtins__={"float": float, "complex": complex, "len": len, "abs": abs, "getattr": getattr,
                               "isinstance": isinstance, "list": list, "str": str,
                               "KeyError": KeyError, "IndexError": IndexError, "TypeError": TypeError})
 
@@ -402,7 +407,7 @@ def _batched_fetches(lines: list[str], plain_numbers: bool = False) -> list[str]
         if line == "_arrays = _M.arrays":
             out.append(f"try: {together}\nelse: _ready = True")
             if plain_numbers:
-                out.append("if _M.dialect.typed_numbers: raise _Retrace")
+                out.append("if getattr(_M, 'dialect', _no_dialect).typed_numbers: raise _Retrace")
     return out
 
 
