@@ -157,3 +157,39 @@ def test_a_program_that_makes_many_variables_runs_out_of_memory_as_pcbasic(pc_re
         theirs = pc_reason.program(source)
         assert "E 7 " in theirs
         assert run_gw(source) == theirs
+
+
+_FUNCTIONS = ["FNA(X)", "FNB%(X, Y)", "FNC#(Q%)", "FNLONG(Z$, X)", "FNE", "FNS$(W$)", "FNT!(LONGER)"]
+
+
+def _function_statement(rng) -> str:
+    head = rng.choice(_FUNCTIONS)
+    body = '"AB"' if "$" in head.split("(")[0] else str(rng.randint(0, 9))
+    return rng.choice([
+        f"DEF {head} = {body}", f"DEF {head} = {body}", f'S$ = STRING$({rng.randint(1, 40)}, "x")',
+        f'T$ = S$ + "{"y" * rng.randint(1, 9)}"', "PRINT FRE(0)", 'PRINT FRE("")', f"X = {rng.randint(0, 3)}",
+        f"Y = {rng.randint(0, 3)}", "PRINT X; Y",
+    ])
+
+
+def _function_program(rng) -> str:
+    lines = ["10 ON ERROR GOTO 900", f"20 DIM Z(FRE(0) / 4 - {rng.randint(10, 45)}): PRINT FRE(0)",
+             f'25 S$ = STRING$({rng.randint(1, 9)}, "s")']  # (a sum with "" is not a new string in yaseer)
+    for k in range(rng.randint(2, 6)):
+        lines.append(f"{30 + k} " + ": ".join(_function_statement(rng) for _ in range(rng.randint(1, 5))))
+    lines += ['800 PRINT FRE(0); FRE(""): END', '900 PRINT "E"; ERR; ERL; FRE(0): END']
+    return "\n".join(lines) + "\n"
+
+
+def test_def_fn_makes_its_entry_and_its_parameters_as_pcbasic(pc_reason):
+    """DEF FN makes a simple variable's entry of the function's type (GWEVAL.ASM DEF,
+    GETFNM's PTRGT2) and then each parameter's variable that does not exist yet (SCNLIS's
+    PTRGET), each taking its bytes from the room the strings leave: a DEF after a string
+    was stored leaves that much less room to the next strings (Out of string space where
+    it no longer fits) and one that does not fit is Out of memory; generated programs
+    against PC-BASIC 2.0.8 with GW's room test."""
+    rng = random.Random(base_seed() + 74)
+    count = max(case_count() // 3, 40)
+    bad, full = gw_programs_differing(pc_reason, lambda: _function_program(rng), count, "E 14 ")
+    assert not bad, f"{len(bad)} of {count} differ, e.g. {bad[:2]}"
+    assert full >= count // 10, full  # the programs reach the limit

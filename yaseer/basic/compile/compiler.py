@@ -604,10 +604,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             function = repr(function)
         params = ", ".join("p" + local_name(self.numbers.name(p)) for p in stmt.params)
         self.prelude.append(f"def {fname}({params}):\n    {code}\n")
-        self.emit(f"_M.fns[{self.numbers.name(stmt.name)!r}] = ({function}, {len(stmt.params)})")
-        if self.variables_made:
-            for param in stmt.params:  # DEF's PTRGET makes each parameter's variable
-                self.made_name(param)
+        names = tuple(self.numbers.name(p) for p in stmt.params)  # DEF's PTRGET makes each one's variable
+        self.emit(f"_dfn({self.numbers.name(stmt.name)!r}, {function}, {names!r})")
 
     def stmt_DefType(self, stmt, scope):
         """Applied to the whole area before compiling where that gives GW's types

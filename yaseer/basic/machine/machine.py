@@ -460,7 +460,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_bank": self.data_bank,
             "_on": self.on_index, "_for": self.for_push, "_next": self.next_frame,
             "_pop": self.stack.pop, "_next_any": self.next_any, "_stop": self._stopper(area),
-            "_dim": self.dim, "_clear": self.clear, "_made": self.made, "_mk": self.make_variable, "_swap2": self.swap_second, "_read_n": rt.read_number,
+            "_dim": self.dim, "_clear": self.clear, "_made": self.made, "_mk": self.make_variable, "_dfn": self.define_function, "_swap2": self.swap_second, "_read_n": rt.read_number,
             "_read_s": rt.read_string, "_read_end": rt.read_end, "_restore": rt.restore, "_restore_at": rt.restore_at,
             "_input": self.input_values,
             "_fn": self.user_function, "_resume": self.resume, "_resume_at": self.resume_at,

@@ -18,7 +18,8 @@ variables, the arrays, and from the top down the strings; FRE is what lies betwe
   descriptor); one holding 0 or "" only where a statement made it (GW's PTRGET makes it
   when LET, FOR, INPUT, READ ... first name it, before the value is worked out; a
   program that reads FRE records the makings: compiler.made);
-* a DEF FN: that header and 4 bytes, and 8 bytes a parameter (PC-BASIC 2.0.8's count);
+* a DEF FN: a simple variable's entry of the function's type, its parameters' variables
+  made by the DEF (GWEVAL.ASM DEF: GETFNM, then SCNLIS's PTRGET each);
 * an array: that header with its size (2), dimension count (1) and 2 bytes a dimension,
   then its elements;
 * the strings: every string value's characters but those that stay in the program text
@@ -90,6 +91,12 @@ def variable_bytes(name: str) -> int:
     return _name_bytes(name) + _VALUE_BYTES.get(name[-1], 4)
 
 
+def function_bytes(name: str) -> int:
+    """The bytes DEF FN ``name`` (with its type character) takes: a simple variable's entry
+    of the function's type (GWEVAL.ASM DEF; PC-BASIC 2.0.8 counts the same)."""
+    return variable_bytes(name)
+
+
 def _name_bytes(name: str) -> int:
     """A variable's header: its type, two name characters, the count of the others and those."""
     letters = len(name.rstrip("%!#$"))
@@ -120,8 +127,8 @@ def free_and_strings(total: int, program: dict, scalars: dict, arrays: dict, arr
                 used += _name_bytes(name) + 3
         elif value or name in made:
             used += _name_bytes(name) + _VALUE_BYTES.get(name[-1], 4)
-    for name, (_, parameters) in fns.items():  # a DEF FN: its entry, and a variable a parameter
-        used += _name_bytes(name) + 4 + 8 * parameters
+    for name in fns:  # a DEF FN's entry (its parameters are variables: DEF made them)
+        used += function_bytes(name)
     for name, dims in array_dims.items():
         elements = 1
         for size in dims:

@@ -225,14 +225,44 @@ class Variables:
         garbage collected first) it is ``Out of memory`` and is not made (BIPTRG.ASM
         SMKVAR moves the arrays up with BLTU, whose REASON gives OMERR)."""
         self.made.add(name)
-        count = self.string_space.count
-        size = memory_model.variable_bytes(name)
-        if count[1] - count[0] >= size and count[1] >= 0:  # room the strings surely leave
-            count[1] -= size
-            return
-        if not self._room_for_array():
+        if not self._take_room(memory_model.variable_bytes(name)):
             self.made.discard(name)
             raise BasicError("Out of memory", OUT_OF_MEMORY)
+
+    def define_function(self, name: str, function, parameters: tuple) -> None:
+        """DEF FN ``name``: ``function`` (the compiled body, or its name in a variant) with
+        the variables ``parameters`` (full names).  In gw a function defined for the first
+        time is a new simple variable (GWEVAL.ASM DEF: GETFNM's PTRGT2 makes an entry with
+        the function bit on its name, of the function's type): its bytes (memory_model) come
+        from the room left, after a garbage collection if need be, or it is ``Out of
+        memory`` and is not defined; then SCNLIS's PTRGET makes each parameter's variable
+        that does not exist yet, as a LET would (:meth:`make_variable`)."""
+        new = name not in self.fns
+        self.fns[name] = (function, len(parameters))
+        if new and self.dialect.free_memory is not None and not self._take_room(memory_model.function_bytes(name)):
+            del self.fns[name]
+            raise BasicError("Out of memory", OUT_OF_MEMORY)
+        if self.dialect.variables_made:
+            for parameter in parameters:
+                if parameter in self.made:
+                    continue
+                value = self.scalars.setdefault(parameter, initial_value(parameter))
+                if value or self.dialect.free_memory is None:  # (one holding a value is counted already)
+                    self.made.add(parameter)
+                else:
+                    self.make_variable(parameter)
+
+    def _take_room(self, size: int) -> bool:
+        """gw: can ``size`` bytes just added to the variables (already among them) have
+        room?  They come from the room new strings were counted to have left, without
+        counting the whole segment again, where that room surely holds them; else the
+        segment is counted again (:meth:`_room_for_array`)."""
+        count = self.string_space.count
+        if count[1] - count[0] >= size and count[1] >= 0:  # room the strings surely leave
+            count[1] -= size
+            return True
+        return self._room_for_array()
+
 
     def swap_second(self, name: str, value) -> None:
         """SWAP's second variable, a simple one, holding ``value``: it must exist (BIMISC.ASM
