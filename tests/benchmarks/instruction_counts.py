@@ -146,15 +146,25 @@ def decimal_group(pool, scale: float, programs) -> list:
                            for arith in ("binary", "decimal"))
         rows.append((workload.name, binary, decimal))
 
+    title = ("--arith decimal against binary (casio), instructions a pass of the main loop; "
+             f"goal: at most {DECIMAL_GOAL:g}x")
+    return [ratio_report(title, ("program", 8, "binary", "decimal", 10), rows, DECIMAL_GOAL)]
+
+
+def ratio_report(title: str, columns: tuple, rows: list, goal: float):
+    """A report printing ``rows`` of (label, reference count, count) and each count's ratio to
+    its reference against ``goal``; ``columns``: (label heading, its width, the reference's and
+    the count's headings, their width).  The counts are futures, read when it prints."""
+    label, label_width, reference_name, count_name, width = columns
+
     def report() -> None:
-        print(f"\n--arith decimal against binary (casio), instructions a pass of the main loop; "
-              f"goal: at most {DECIMAL_GOAL:g}x")
-        print(f"{'program':8} {'binary':>10} {'decimal':>10} {'ratio':>7}")
-        for name, binary, decimal in rows:
-            ratio = decimal.result() / binary.result()
-            print(f"{name:8} {binary.result():10.0f} {decimal.result():10.0f} {ratio:7.2f}  "
-                  f"{'met' if ratio <= DECIMAL_GOAL else 'NOT met'}", flush=True)
-    return [report]
+        print(f"\n{title}")
+        print(f"{label:{label_width}} {reference_name:>{width}} {count_name:>{width}} {'ratio':>7}")
+        for name, reference, count in rows:
+            ratio = count.result() / reference.result()
+            print(f"{name:{label_width}} {reference.result():{width}.0f} {count.result():{width}.0f} {ratio:7.2f}  "
+                  f"{'met' if ratio <= goal else 'NOT met'}", flush=True)
+    return report
 
 
 def gw_group(pool, scale: float) -> list:
@@ -165,14 +175,9 @@ def gw_group(pool, scale: float) -> list:
                      for dialect in ("casio", "gw")))
             for index, body in enumerate(SINGLE_BODIES)]
 
-    def report() -> None:
-        print(f"\nsingle-precision loop bodies, gw against casio, instructions a pass; goal: within {BODY_GOAL:g}x")
-        print(f"{'body':26} {'casio':>8} {'gw':>8} {'ratio':>7}")
-        for body, casio, gw in rows:
-            ratio = gw.result() / casio.result()
-            print(f"{body!r:26} {casio.result():8.0f} {gw.result():8.0f} {ratio:7.2f}  "
-                  f"{'met' if ratio <= BODY_GOAL else 'NOT met'}", flush=True)
-    return [report]
+    rows = [(repr(body), casio, gw) for body, casio, gw in rows]
+    title = f"single-precision loop bodies, gw against casio, instructions a pass; goal: within {BODY_GOAL:g}x"
+    return [ratio_report(title, ("body", 26, "casio", "gw", 8), rows, BODY_GOAL)]
 
 
 def prog2_group(pool, scale: float) -> list:
