@@ -22,7 +22,7 @@ from __future__ import annotations
 from math import floor
 
 from yaseer.basic.arithmetic import mbf_double, single_arith
-from yaseer.basic.arithmetic.mbf_double_using import FOTB
+from yaseer.basic.arithmetic.mbf_double_using import table_steps
 
 _MILLION = 1000000.0  # $DP06's single part: $FOTNV's lower bound
 
@@ -30,15 +30,7 @@ _MILLION = 1000000.0  # $DP06's single part: $FOTNV's lower bound
 def decimal_digits(x: float) -> tuple[int, int]:
     """``(n, power)`` with ``abs(x)`` shown as ``n * 10**power``, ``n`` of 7 digits (at
     most 8388608: the bracket stays below 2**23), for a nonzero single ``x``."""
-    p = mbf_double.parts(-x if x < 0 else x)
-    power = 0
-    while True:
-        n = FOTB[p[1]]
-        if not n:
-            break
-        power -= n
-        p = mbf_double.single_rounded(mbf_double.multiply(p, mbf_double.power_of_ten(n)) if n > 0
-                                      else mbf_double.divide(p, mbf_double.power_of_ten(-n)))
+    p, power = table_steps(mbf_double.parts(-x if x < 0 else x), mbf_double.single_rounded)
     y = mbf_double.nearest_float(p)  # a single: exact in a float
     if y < _MILLION:
         y = single_arith.product(y * 10.0)  # the exact product of 24 and 4 bits, rounded by $FMULS

@@ -52,18 +52,27 @@ _TEN = mbf_double.power_of_ten(1)
 _BILLION = mbf_double.power_of_ten(9)
 
 
-def bracketed(p: tuple[bool, int, int]) -> tuple[tuple[bool, int, int], int]:
-    """``$FOTNV`` of a nonzero double's magnitude ``p``: ``(b, power)``, ``b`` about 10**15 ..
-    10**16 and ``abs(p)`` about ``b * 10**power`` (module docstring)."""
-    p = (False, p[1], p[2])
+def table_steps(p: tuple[bool, int, int], rounded=None) -> tuple[tuple[bool, int, int], int]:
+    """``$FOTNV``'s walk by the ``$FOTB`` table from the nonnegative double ``p``: each step
+    multiplies or divides by the table's power of ten for ``p``'s exponent byte (``rounded``,
+    if given, applied to each result: a single's ``$CSD``); ``(p, power)`` once the table
+    says 0, with the original ``p`` about ``p * 10**power``."""
     power = 0
     while True:
         n = FOTB[p[1]]
         if not n:
-            break
+            return p, power
         power -= n
         p = mbf_double.multiply(p, mbf_double.power_of_ten(n)) if n > 0 else \
             mbf_double.divide(p, mbf_double.power_of_ten(-n))
+        if rounded is not None:
+            p = rounded(p)
+
+
+def bracketed(p: tuple[bool, int, int]) -> tuple[tuple[bool, int, int], int]:
+    """``$FOTNV`` of a nonzero double's magnitude ``p``: ``(b, power)``, ``b`` about 10**15 ..
+    10**16 and ``abs(p)`` about ``b * 10**power`` (module docstring)."""
+    p, power = table_steps((False, p[1], p[2]))
     if mbf_double.compare(p, _MILLION) < 0:
         p = mbf_double.multiply(p, _TEN)
         power -= 1
