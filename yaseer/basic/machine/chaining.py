@@ -279,9 +279,10 @@ class Chaining:
         if last not in program or (first is not None and first > last):
             raise error_for(ILLEGAL_FUNCTION_CALL)
 
-    def chained(self, chain: ChainTo) -> int | None:
+    def chained(self, chain: ChainTo) -> int | tuple | None:
         """Carry out a CHAIN or MERGE: the program and variables it leaves; the block of area
-        0 to run from (None: MERGE, which stops)."""
+        0 to run from (None: MERGE, which stops; a tuple: a direct line's error trapped, see
+        :meth:`_merged_direct_line`)."""
         program = dict(self.programs.get(0, {}))
         keep = None if chain.everything else self.common_names()
         if chain.delete is not None:
@@ -299,6 +300,8 @@ class Chaining:
         self._invalidate(0)
         self._extra_entries.clear()
         if stopped is not None:
+            if chain.merge and full is None and not stopped.lines:
+                return self._merged_direct_line(stopped)
             if not chain.merge or full is not None:
                 self.on_error = None  # the old program's handler went with it
             raise stopped
@@ -335,6 +338,23 @@ class Chaining:
         self.fns.update(functions)
         self.set_subscript_base(base)
         return block
+
+    def _merged_direct_line(self, stopped: BasicError) -> tuple:
+        """MERGE of a file whose first line has no number: GW-BASIC's MERGE reads the file
+        as typed lines (DSKCOM.ASM OKGETM goes to MAIN, which sets CURLIN to 65535), and
+        no line has yet been entered to clear the error trap (GWMAIN.ASM FINI's RUNC,
+        LEVFRE), so the program's ON ERROR GOTO traps ``Direct statement in file`` with
+        ERL 65535.  Returns ``(code, block)``: the file's line compiled as a direct
+        statement, which RESUME runs and RESUME NEXT skips (ERRTXT is the line GW crunched),
+        and the handler's block to run; raises ``stopped`` where nothing traps it.  After
+        RESUME [NEXT] the merge is over: the handler's first output closes file #0 (GIO86.ASM
+        FINPRT, NLONLY cleared by ERROR)."""
+        code = self._compile("direct", {0: stopped.statement}, direct=True)
+        self.namespaces.pop("direct", None)
+        handler = self._trap(stopped, 0, 0, code)
+        if handler is None:
+            raise stopped
+        return code, handler
 
     def common_names(self) -> set[str]:
         """The variables (typed names, as the machine keeps them) of the COMMON statements

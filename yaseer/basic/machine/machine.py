@@ -745,14 +745,16 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             del self.stack[mark:]
 
     # ------------------------------------------------------------ the run loop
-    def _run_area(self, area: int, compiled: CompiledArea, block: int, direct: bool = False) -> None:
+    def _run_area(self, area: int, compiled: CompiledArea, block: int, direct: bool = False,
+                  handler: bool = False) -> None:
         """Run ``area`` from ``block`` until its RETURN (areas) or END (raises ProgramEnd).
 
         ``direct``: ``compiled`` is a direct statement run against ``area``; an error of it that
         the program's ON ERROR GOTO catches runs the handler in the program's code, and the
-        handler's RESUME [NEXT] comes back into ``compiled`` (ResumeDirect).
+        handler's RESUME [NEXT] comes back into ``compiled`` (ResumeDirect).  ``handler``:
+        its error is already trapped, ``block`` is the handler's in the program's code.
         """
-        blocks = compiled.blocks
+        blocks = self._compiled(area).blocks if handler else compiled.blocks
         b = block
         while True:
             try:
@@ -840,27 +842,38 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             self.line = line
             raise error_for(NO_RESUME)
 
-    def _execute(self, area: int, block: int) -> str:
+    def _execute(self, area: int, block: int, direct_code: CompiledArea | None = None) -> str:
         self.cont_point = None
         try:
             with _interrupt_handler(self._on_interrupt):
-                return self._execute_loop(area, block)
+                return self._execute_loop(area, block, direct_code)
         finally:
             self._disarm_break()
 
-    def _execute_loop(self, area: int, block: int) -> str:
+    def _execute_loop(self, area: int, block: int, direct_code: CompiledArea | None = None) -> str:
+        """Run from ``block`` of ``area`` (with ``direct_code``: of the program's handler, for
+        an error of that direct line, which RESUME goes back into) to the end."""
         stopped = False
         try:
             while True:
+                in_direct = direct_code is not None  # (a STOP there leaves nothing to CONTinue)
                 try:
-                    self._run_area(area, self._compiled(area), block)
+                    if direct_code is None:
+                        self._run_area(area, self._compiled(area), block)
+                    else:
+                        code, direct_code = direct_code, None
+                        self._run_area(0, code, block, direct=True, handler=True)
                     break
                 except ChainTo as chain:  # CHAIN: on in the new program (MERGE: stop)
                     area, block = 0, self.chained(chain)
                     if block is None:
                         return "end"
+                    if isinstance(block, tuple):  # its file's direct line's error was trapped
+                        direct_code, block = block
                 except RunAgain as again:  # RUN in the program
                     area, block = 0, self.run_again(again)
+                except DirectJump as jump:  # GOTO in that direct line
+                    area, block = 0, self._line_block(jump.line)
         except ProgramEnd:
             return self._ended()
         except BreakPoint as stop:
@@ -871,7 +884,9 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             self.line = stop.line
             raise BasicError("Break", BREAK).at(stop.line) from None
         except ProgramStop as stop:
-            if stop.area == 0 and self.area_depth == 0:
+            if in_direct:
+                self.line = None  # a direct line's STOP: a plain "Break"
+            elif stop.area == 0 and self.area_depth == 0:
                 self.cont_point = (stop.area, stop.block)
             self.area_depth = 0
             stopped = True
@@ -905,6 +920,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             return "end"
         except ChainTo as chain:
             block = self.chained(chain)
+            if isinstance(block, tuple):  # its file's direct line's error was trapped
+                return self._execute(0, block[1], block[0])
             return "end" if block is None else self._execute(0, block)
         except RunAgain as again:
             return self._execute(0, self.run_again(again))

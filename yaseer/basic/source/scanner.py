@@ -846,11 +846,13 @@ def _upper_outside_strings(text: str) -> str:
 
 class DirectStatementInFile(BasicError):
     """A program file's line without a line number, where the dialect does not join it onto
-    the line before: loading stops there; ``lines`` holds the lines read before it."""
+    the line before: loading stops there; ``lines`` holds the lines read before it and
+    ``statement`` the line's own text (a direct statement, as GW-BASIC's MAIN read it)."""
 
-    def __init__(self, lines: list):
+    def __init__(self, lines: list, statement: str = ""):
         super().__init__(error_message(DIRECT_STATEMENT_IN_FILE), DIRECT_STATEMENT_IN_FILE)
         self.lines = lines
+        self.statement = statement
 
     def at(self, line, area: int = 0) -> "DirectStatementInFile":
         """Never placed at a line: GW-BASIC names none (the line is the file's, not the program's)."""
@@ -884,7 +886,7 @@ def split_lines(source: str, joins_unnumbered: bool = True, keeps_blanks: bool =
                 text = text.strip()
             lines.append((int(match.group(1)), text, index))
         elif not joins_unnumbered:
-            raise DirectStatementInFile(lines)
+            raise DirectStatementInFile(lines, physical.strip())
         elif lines:
             number, text, first = lines[-1]
             lines[-1] = (number, (text + " " + physical.strip()).strip(), first)
