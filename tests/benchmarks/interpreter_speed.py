@@ -145,10 +145,22 @@ def plain_python_range(n: int) -> float:
 OUTSIDE = tempfile.gettempdir()
 
 
+PROCESS_TIMEOUT = [120.0]  # seconds a whole process may take before its row is given up (--timeout)
+
+
+class ProcessTimeout(Exception):
+    """A measured process passed :data:`PROCESS_TIMEOUT` (a heavily loaded machine): the
+    caller prints one line and goes on with the next row."""
+
+
 def run_process(command: list[str]) -> None:
     # stdin closed: bwbasic falls into its interactive shell after an error
-    subprocess.run(command, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                   check=False, cwd=OUTSIDE, timeout=120, env=installed_env())
+    try:
+        subprocess.run(command, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                       check=False, cwd=OUTSIDE, timeout=PROCESS_TIMEOUT[0], env=installed_env())
+    except subprocess.TimeoutExpired:
+        raise ProcessTimeout(f"{Path(command[0]).name} passed its {PROCESS_TIMEOUT[0]:g} s timeout "
+                             f"(a loaded machine?)") from None
 
 
 def bwbasic_time(text: str, repeat: int) -> float:
@@ -208,8 +220,11 @@ def main() -> int:
     parser.add_argument("--decimal-only", action="store_true", help="only --arith decimal against binary")
     parser.add_argument("--python", default=sys.executable,
                         help="the Python of the whole-process runs (e.g. a venv with a regular pip install)")
+    parser.add_argument("--timeout", type=float, default=PROCESS_TIMEOUT[0],
+                        help="seconds a whole process (bwbasic or yaseer) may take; past it the row is skipped")
     args = parser.parse_args()
     PROCESS_PYTHON[0] = args.python
+    PROCESS_TIMEOUT[0] = args.timeout
     if args.decimal_only:
         decimal_against_binary(args.decimal_scale, args.repeat)
         return 0
@@ -217,7 +232,10 @@ def main() -> int:
     if not args.classic_only:
         loops_against_python_and_casio(args.repeat, have_bwbasic)
     if have_bwbasic:
-        classic_against_bwbasic(args)
+        try:
+            classic_against_bwbasic(args)
+        except ProcessTimeout as timeout:  # (the start-up's `10 END`: every row would time out too)
+            print(f"classic benchmarks: {timeout}; skipped")
     else:
         print("bwbasic not found on PATH: the classic comparisons are skipped")
     if args.classic_only:
@@ -264,7 +282,11 @@ def loops_against_python_and_casio(repeat: int, have_bwbasic: bool) -> None:
               f"{'met' if ratio <= BODY_GOAL else 'NOT met'})")
     if have_bwbasic:
         big = 1_000_000
-        t_bw = bwbasic_time(TIGHT_LOOP_BW.format(n=big), 1)
+        try:
+            t_bw = bwbasic_time(TIGHT_LOOP_BW.format(n=big), 1)
+        except ProcessTimeout as timeout:
+            print(f"tight loop, {big} passes: {timeout}; skipped")
+            return
         t_y = best_of(repeat, lambda: yaseer_in_process(TIGHT_LOOP.format(n=big)))
         print(f"tight loop, {big} passes: bwbasic {t_bw:.3f} s, yaseer {t_y:.3f} s: {t_bw / t_y:.0f}x faster")
 
@@ -291,23 +313,33 @@ def classic_against_bwbasic(args) -> None:
           f"{'process s':>10} {'x (process)':>11} {'gw s':>7} {'gw x':>6} {'gw process':>10} {'gw x':>6} {'start%':>6}"
           f"  goal: whole process >= {PROCESS_GOAL:g}x")
     for name, ms_text, bw_text in workloads:
-        base = bwbasic_time(bw_text, 1)
-        factor = min(MAX_SCALE, max(1.0, args.target / max(base, 1e-2)))
-        for _ in range(3):  # refine: bwbasic's start-up makes the first estimate low
-            t_bw = bwbasic_time(scaled(bw_text, factor), 1)
-            if abs(t_bw - args.target) < 0.2 * args.target:
-                break
-            factor = min(MAX_SCALE, factor * args.target / max(t_bw, 1e-2))
-        t_bw = bwbasic_time(scaled(bw_text, factor), args.repeat)
-        program = scaled(ms_text, factor)
-        t_y = best_of(args.repeat, lambda: yaseer_in_process(program))
-        t_p = yaseer_process_time(program, args.repeat)
-        t_gw = best_of(args.repeat, lambda: yaseer_in_process(program, "gw"))
-        t_gwp = yaseer_process_time(program, args.repeat, "gw")
-        verdict = "met" if min(t_bw / t_p, t_bw / t_gwp) >= PROCESS_GOAL else "NOT met"
-        print(f"{name:8} {factor:6.0f} {t_bw:10.3f} {t_y:9.4f} {t_bw / t_y:9.1f} {t_p:10.3f} {t_bw / t_p:11.1f} "
-              f"{t_gw:7.4f} {t_bw / t_gw:6.1f} {t_gwp:10.3f} {t_bw / t_gwp:6.1f} {100 * start_gw / t_gwp:5.0f}%  "
-              f"{verdict}", flush=True)
+        try:
+            classic_row(args, name, ms_text, bw_text, start_gw)
+        except ProcessTimeout as timeout:
+            print(f"{name:8} {timeout}; row skipped", flush=True)
+
+
+def classic_row(args, name: str, ms_text: str, bw_text: str, start_gw: float) -> None:
+    """One row of :func:`classic_against_bwbasic`: ``bw_text`` scaled to ``--target`` s of
+    bwbasic, ``ms_text`` scaled alike in yaseer."""
+    base = bwbasic_time(bw_text, 1)
+    factor = min(MAX_SCALE, max(1.0, args.target / max(base, 1e-2)))
+    for _ in range(3):  # refine: bwbasic's start-up makes the first estimate low
+        t_bw = bwbasic_time(scaled(bw_text, factor), 1)
+        if abs(t_bw - args.target) < 0.2 * args.target:
+            break
+        factor = min(MAX_SCALE, factor * args.target / max(t_bw, 1e-2))
+    t_bw = bwbasic_time(scaled(bw_text, factor), args.repeat)
+    program = scaled(ms_text, factor)
+    t_y = best_of(args.repeat, lambda: yaseer_in_process(program))
+    t_p = yaseer_process_time(program, args.repeat)
+    t_gw = best_of(args.repeat, lambda: yaseer_in_process(program, "gw"))
+    t_gwp = yaseer_process_time(program, args.repeat, "gw")
+    verdict = "met" if min(t_bw / t_p, t_bw / t_gwp) >= PROCESS_GOAL else "NOT met"
+    print(f"{name:8} {factor:6.0f} {t_bw:10.3f} {t_y:9.4f} {t_bw / t_y:9.1f} {t_p:10.3f} {t_bw / t_p:11.1f} "
+          f"{t_gw:7.4f} {t_bw / t_gw:6.1f} {t_gwp:10.3f} {t_bw / t_gwp:6.1f} {100 * start_gw / t_gwp:5.0f}%  "
+          f"{verdict}", flush=True)
+
 
 if __name__ == "__main__":
     raise SystemExit(main())
