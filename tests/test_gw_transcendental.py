@@ -324,6 +324,11 @@ def test_float_polynomial_equals_the_steps(name):
         fast = mbf_floats.poly(x, planned)
         handed_back += fast is None
         assert fast is None or fast == gw.poly_steps(x, coefficients), (name, x)
+        if x >= 2.0 ** -30:  # $POLYX, x * P(x*x), its products $FMULS
+            odd = mbf_floats.poly(x, planned, True)
+            handed_back += odd is None
+            assert odd is None or odd == single_arith.product(gw.poly_steps(single_arith.product(x * x),
+                                                                             coefficients) * x), (name, x)
     assert handed_back <= len(arguments) // 1000  # only a sum of exactly 0 is handed back
 
 
@@ -381,7 +386,7 @@ def test_functions_equal_their_step_by_step_form(monkeypatch):
     fast = [[f(x) for x in arguments] for f in functions]
     # every fast path defeated: $POLY step by step, differences on integers, the reduction
     # on integers, no memo
-    monkeypatch.setattr(mbf_floats, "poly", lambda x, planned: None)
+    monkeypatch.setattr(mbf_floats, "poly", lambda x, planned, odd=False: None)
     monkeypatch.setattr(mbf_floats, "fmuls", single_arith.product)
     monkeypatch.setattr(mbf_integers, "poly", lambda x, parts: None)
     monkeypatch.setattr(single_arith, "register_difference", lambda large, small, top: None)

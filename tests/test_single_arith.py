@@ -186,6 +186,28 @@ def test_differences_on_floats_are_the_register_steps():
     assert on_floats > 10000 and guard_rule > 300  # (GW other than the nearest single)
 
 
+def test_differences_near_half_a_unit_are_the_register_steps():
+    """add's float rule for a difference that keeps the larger operand's binade (the
+    nearest single, from 1/4 of a unit below it to 127/256 above) against the integer
+    register steps: the smaller operand 4 to 31 binades below (bits shifted out), its
+    low byte set to the patterns around a guard byte of 0x80, 0xA0 and 0xC0, and larger
+    operands next to a power of two (differences that leave its binade go the long way)."""
+    rng = random.Random(41)
+    reached = 0
+    for k in range(40000):
+        high = (1 << 23) + rng.randrange(64) if k % 3 == 0 else rng.randrange(1 << 23, 1 << 24)
+        large = math.ldexp(high, rng.randrange(-40, 40))
+        low = rng.choice([0x80, 0x7F, 0x81, 0xA0, 0x9F, 0xA1, 0xC0, 0xBF, 0xC1, 0x40, 0x3F, rng.randrange(256)])
+        small = math.ldexp((rng.randrange(1 << 15, 1 << 16) << 8) | low, math.frexp(large)[1] - 24 - rng.randrange(4, 32))
+        a, b = (large, -small) if rng.random() < 0.5 else (-small, large)
+        if rng.random() < 0.5:
+            a, b = -a, -b
+        expected = _long_way(a, b)
+        assert sa.add(a, b) == expected, (a, b)
+        reached += expected != nearest_single(Fraction(a) + Fraction(b))
+    assert reached > 1000  # (GW's rounding, not the nearest, is what these reach)
+
+
 def test_division_is_the_nearest_single_as_the_source_rounds():
     pc_differs = 0
     for a, b in pairs(3, 8000):

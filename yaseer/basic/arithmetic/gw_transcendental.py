@@ -105,6 +105,7 @@ _POLYNOMIALS = (_SIN_COEFFICIENTS, _ATN_REDUCTION, _ATN_COEFFICIENTS, _LOG_NUMER
                 _EXP_COEFFICIENTS)
 _PLANS = {id(c): mbf_floats.plan(c) for c in _POLYNOMIALS}
 _PARTS = {id(c): mbf_integers.coefficient_parts(c) for c in _POLYNOMIALS}
+_SIN_PLAN = _PLANS[id(_SIN_COEFFICIENTS)]
 
 
 def poly_steps(x: float, coefficients) -> float:
@@ -129,13 +130,12 @@ def _poly(x: float, coefficients) -> float:
 
 
 def _polyx(x: float, coefficients) -> float:
-    """``$POLYX``: ``x * P(x*x)``, each product ``$FMULS`` (mbf_floats.fmuls well inside the
-    range: ``x`` from 2**-30 to 1, and a polynomial's value from 2**-30 to 2**30)."""
+    """``$POLYX``: ``x * P(x*x)``, each product ``$FMULS`` (mbf_floats.poly's odd form for
+    ``x`` from 2**-30 to 1, where every step stays well inside the range)."""
     if 9.313225746154785e-10 <= x <= 1.0:  # 2**-30
-        value = _poly(mbf_floats.fmuls(x * x), coefficients)
-        if 9.313225746154785e-10 <= value <= 1073741824.0:
-            return mbf_floats.fmuls(value * x)
-        return product(value * x)
+        value = mbf_floats.poly(x, _PLANS[id(coefficients)], True)
+        if value is not None:
+            return value
     return product(_poly(product(x * x), coefficients) * x)
 
 
@@ -264,8 +264,10 @@ def _sine_of_quarter(t: float, negative: bool) -> float:
     2**-13: times 2*pi), negated when ``negative``."""
     if t < 1.220703125e-04:  # 2**-13
         result = product(t * _TWO_PI)
-    else:
-        result = _polyx(t, _SIN_COEFFICIENTS)
+    else:  # (t from 2**-13 to 1/4: mbf_floats' odd form, unless a sum is 0)
+        result = mbf_floats.poly(t, _SIN_PLAN, True)
+        if result is None:
+            result = _polyx(t, _SIN_COEFFICIENTS)
     return -result if negative and result else result
 
 

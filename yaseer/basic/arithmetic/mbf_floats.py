@@ -15,8 +15,12 @@ roundings).  Here each step is a few exact float64 operations and a cheap roundi
   multiple of ``q``.  Of one sign: the exact sum rounded at ``u`` (no carry: the
   guard byte and the sticky bit round as the exact sum does), or at ``2u`` after a
   carry, outside the 1/512 band where the carry's lost bit makes GW round otherwise
-  (an exact tie lost no bit).  Of two signs: single_arith.register_difference (the
-  same register steps on floats).
+  (an exact tie lost no bit).  Of two signs: single_arith.register_difference's
+  steps written out (no call) where the difference keeps the coefficient's binade: the
+  product cut toward 0 at the register's last place u/256 (``small - small % last``,
+  both exact), the exact difference rounded half to even at u, and GW's rounding down
+  of a guard byte ``10?xxxxx`` over an even mantissa; a difference that leaves the
+  binade (a normalising shift) is register_difference's.
 * A product larger than the coefficient (the usual case in LOG's polynomials) takes the
   same steps in the product's register: its leading power of two found by the ufp of
   Rump, Ogita and Oishi, the magic numbers of its unit and twice it.
@@ -32,7 +36,7 @@ from __future__ import annotations
 
 from math import frexp, ldexp
 
-from yaseer.basic.arithmetic.single_arith import add, product_near_half, register_difference
+from yaseer.basic.arithmetic.single_arith import add, product, product_near_half, register_difference
 
 LEAST_ARGUMENT = 2.0 ** -60  # below it the caller takes the integer steps (products leave the range)
 _SPLIT = 536870913.0  # 2**29 + 1: Veltkamp's split to 24 bits (the nearest single)
@@ -51,12 +55,13 @@ _BAND_2U = 0.498046875 * 2.0 ** -22
 def _coefficient_plan(c: float) -> tuple:
     """The constants of one ``$FADDS`` with the coefficient ``c`` (nonzero), see the module
     docstring: (c, |c|, c < 0, c > 0, its leading power of two U, 2U, 4U, its unit u, the
-    magic numbers of u and 2u, the carry's band 0.498046875 * 2u)."""
+    magic numbers of u and 2u, the carry's band 0.498046875 * 2u, and for a difference
+    the register's last place w = u/256, half a unit, a quarter and 3/8 of it)."""
     size = abs(c)
     top = ldexp(1.0, frexp(size)[1] - 1)
     unit = top * 2.0 ** -23
     return (c, size, c < 0, c > 0, top, 2.0 * top, 4.0 * top, unit, _MAGIC * unit, _MAGIC * 2.0 * unit,
-            0.498046875 * 2.0 * unit)
+            0.498046875 * 2.0 * unit, unit / 256.0, unit / 2.0, unit / 4.0, unit * 0.375)
 
 
 def plan(coefficients) -> tuple:
@@ -74,12 +79,17 @@ def fmuls(p: float) -> float:
     return product_near_half(p, cut)
 
 
-def poly(x: float, planned: tuple) -> float | None:
+def poly(x: float, planned: tuple, odd: bool = False) -> float | None:
     """``$POLY`` of ``x`` (a single, :data:`LEAST_ARGUMENT` <= x <= 1) over ``planned``
     (from :func:`plan`): Horner's rule, each step ``$FMULS`` and ``$FADDS`` as GW-BASIC
-    rounds them; None where a sum is 0 (the caller takes the integer steps)."""
+    rounds them; None where a sum is 0 (the caller takes the integer steps).  ``odd``:
+    ``$POLYX`` instead, ``x * P(x*x)`` (``x`` from 2**-30 to 1), each product ``$FMULS``."""
     total, steps = planned
-    for c, large, negative, positive, top, top2, top4, unit, magic_unit, magic_2unit, band in steps:
+    outer = x
+    if odd:
+        x = fmuls(x * x)
+    for (c, large, negative, positive, top, top2, top4, unit, magic_unit, magic_2unit, band, last, half, quarter,
+         three_eighths) in steps:
         p = total * x
         # $FMULS (fmuls, written out)
         split = p * _SPLIT
@@ -133,10 +143,21 @@ def poly(x: float, planned: tuple) -> float | None:
                 if s >= top4 or not (-band < s - r < band or s - r == unit or r - s == unit):
                     total = add(cut, c)
                     continue
-        else:
-            r = register_difference(large, small, top)
-            if not r:  # (None: the long way; 0 cannot be: the coefficient is the larger)
-                total = add(cut, c)
-                continue
+        else:  # a difference: single_arith.register_difference written out where no normalising shift comes
+            kept = small - small % last  # the product cut toward 0 at the register's last place
+            s = large - kept
+            if kept > half and s >= top:
+                r = (s + magic_unit) - magic_unit
+                if quarter < r - s < half and r - s != three_eighths and (r + magic_2unit) - magic_2unit != r:
+                    r -= unit  # GW's subtraction rounds this guard byte (0x81..0xBF but 0xA0) down
+            else:
+                r = register_difference(large, small, top)
+                if not r:  # (None: the long way; 0 cannot be: the coefficient is the larger)
+                    total = add(cut, c)
+                    continue
         total = -r if negative else r
-    return total
+    if not odd:
+        return total
+    if 9.313225746154785e-10 <= total <= 1073741824.0:  # 2**-30 to 2**30: well inside the range
+        return fmuls(total * outer)
+    return product(total * outer)

@@ -128,7 +128,13 @@ def add(a, b) -> float:
     addition, unless the carry shifted out a 1 below a guard byte of exactly 0x80
     (the sum is then 0.5 + 1/512 of a unit above the 24 bits: IEEE rounds up, GW
     half to even).  The nearest single is the split's cut where the sum is not
-    halfway (:func:`_units_below`); a halfway sum and every other goes the long way."""
+    halfway (:func:`_units_below`).  A subtraction whose difference keeps the larger
+    operand's binade (no normalising shift) is the exact difference rounded to the
+    nearest where that lies from 1/4 of a unit below it to 127/256 above: the register
+    holds the difference plus what the cut of the smaller operand lost (less than
+    1/256 of a unit), so its guard byte is below 0x80 where the nearest is below, and
+    at least 0xC0 where it is above (GW's rounding down of a guard byte ``10?xxxxx``
+    does not come in).  A halfway sum and every other goes the long way."""
     if not a:
         return b + 0.0
     if not b:
@@ -146,13 +152,16 @@ def add(a, b) -> float:
                 return total
             return -inf if total < 0 else inf
         q = total * 4503599627370497.0  # (see _units_below, written out here: the common path)
-        below = (total - cut) / (q - 0.9999999999999999 * q) * 8388608.0
+        top = q - 0.9999999999999999 * q
+        below = (total - cut) / top * 8388608.0
         if -LIMIT < cut < LIMIT:
             if (a > 0) == (b > 0):
                 if -0.498046875 < below < 0.498046875:
                     return cut
             elif -0.5 < below < 0.5 and (x * 8.0 >= y if x <= y else y * 8.0 >= x):
                 return cut
+            elif -0.25 <= below < 0.49609375 and (y if x <= y else x) < (top + top if top > 0 else -top - top):
+                return cut  # a difference in the larger operand's binade, not near half a unit: see below
     small, large = (a, b) if x <= y else (b, a)
     if (a > 0) != (b > 0) and TINY <= (y if x <= y else x) < LIMIT and x != y:  # a difference: on floats
         q = (y if x <= y else x) * 4503599627370497.0
