@@ -58,9 +58,9 @@ def table_power(n: int) -> Fraction:
     return r56(Fraction(10) ** n)
 
 
-def source_digits(x: Fraction) -> tuple[int, int]:
-    """``(n, power)``: PRINT shows the single ``x`` > 0 as the 7 digits of ``n`` times
-    ``10**power`` by the source's steps (module docstring)."""
+def source_bracket(x: Fraction) -> tuple[Fraction, int]:
+    """``$FOTNV`` of the single ``x`` > 0 by the source's steps (module docstring):
+    ``(y, power)``, ``y`` a single from 10**6 to 2**23, ``x`` about ``y * 10**power``."""
     power = 0
     while FOTB[exponent_byte(x)]:
         n = FOTB[exponent_byte(x)]
@@ -68,6 +68,13 @@ def source_digits(x: Fraction) -> tuple[int, int]:
         x = csd(r56(x * table_power(n)) if n > 0 else r56(x / table_power(-n)))
     if x < 10 ** 6:
         x, power = fmuls_by_ten(x), power - 1
+    return x, power
+
+
+def source_digits(x: Fraction) -> tuple[int, int]:
+    """``(n, power)``: PRINT shows the single ``x`` > 0 as the 7 digits of ``n`` times
+    ``10**power`` by the source's steps (module docstring)."""
+    x, power = source_bracket(x)
     if x.denominator != 1:
         x = x + Fraction(1, 2)
     return math.floor(x), power

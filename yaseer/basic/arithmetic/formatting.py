@@ -276,17 +276,20 @@ def _wide():
 class Shown(float):
     """A gw double on its way to PRINT USING, with its exact 56-bit value (``parts``, as
     mbf_double's), from which :func:`_bracketed` finds the digits the field shows; from
-    10**16 up also ``free`` (see :class:`Unfixed`)."""
+    10**16 up also ``free`` (see :class:`Single`)."""
 
     __slots__ = ("parts", "free")
 
 
-class Unfixed(float):
-    """A gw single on its way to PRINT USING (its 7 digits' value) that MATH2.ASM's ``$PUF``
-    finds too large for a fixed field, with ``free``: the text ``$FOUT`` (PRINT's free
-    format) gives its magnitude.  A fixed field shows ``%``, a blank and that text."""
+class Single(float):
+    """A gw single on its way to PRINT USING: its value is that of its 7 digits (PRINT's),
+    ``bracket`` MATH2.ASM's ``$FOTNV`` of its binary value (``(y, power)``, see
+    mbf_digits.bracket) from which a field finds the digits it shows (``$PUF``,
+    ``$PUFE``); ``free``, set only where ``$PUF`` finds it too large for a fixed field:
+    the text ``$FOUT`` (PRINT's free format) gives its magnitude.  A fixed field then
+    shows ``%``, a blank and that text."""
 
-    __slots__ = ("free",)
+    __slots__ = ("bracket", "free")
 
 
 def _bracketed(parts, places: int):
@@ -334,6 +337,11 @@ def _fixed_body(x: float, field: NumericField) -> str:
     with localcontext(_wide()):
         if type(x) is Shown:
             rounded = _bracketed(x.parts, field.decimals).quantize(Decimal(1).scaleb(-field.decimals))
+        elif type(x) is Single:  # $PUF: the bracket divided down to the field's decimals, then rounded
+            from yaseer.basic.arithmetic import mbf_digits
+
+            digits, shown = mbf_digits.fixed_digits(*x.bracket, field.decimals)
+            rounded = Decimal(digits).scaleb(-shown).quantize(Decimal(1).scaleb(-field.decimals))
         else:
             rounded = _decimal(x).quantize(Decimal(1).scaleb(-field.decimals), rounding=ROUND_HALF_UP)
     whole, _, fraction = f"{rounded:f}".partition(".")
@@ -377,6 +385,11 @@ def _scientific_parts(x: float, field: NumericField) -> tuple[str, int]:
         from yaseer.basic.arithmetic import mbf_double_using
 
         digits, power = mbf_double_using.scientific_digits(x.parts, before + field.decimals)
+        value = Decimal(digits).scaleb(power)
+    elif type(x) is Single and before + field.decimals:  # a single: $PUFE's digits
+        from yaseer.basic.arithmetic import mbf_digits
+
+        digits, power = mbf_digits.scientific_digits(*x.bracket, before + field.decimals)
         value = Decimal(digits).scaleb(power)
     else:
         value = _decimal(x)
@@ -455,7 +468,7 @@ def _format_value(value: Value, field: StringField | NumericField) -> str:
         raise BasicError("Type mismatch", TYPE_MISMATCH)
     if is_string:
         return format_string(value, field)
-    return format_number(value if type(value) is Shown or type(value) is Unfixed else float(value), field)
+    return format_number(value if type(value) is Shown or type(value) is Single else float(value), field)
 
 
 def using(fmt: str, values: Sequence[float | str], pieces: bool = False):

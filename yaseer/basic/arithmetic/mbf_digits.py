@@ -27,18 +27,31 @@ from yaseer.basic.arithmetic.mbf_double_using import table_steps
 _MILLION = 1000000.0  # $DP06's single part: $FOTNV's lower bound
 
 
-def decimal_digits(x: float) -> tuple[int, int]:
-    """``(n, power)`` with ``abs(x)`` shown as ``n * 10**power``, ``n`` of 7 digits (at
-    most 8388608: the bracket stays below 2**23), for a nonzero single ``x``."""
+def bracket(x: float) -> tuple[float, int]:
+    """``$FOTNV`` of a nonzero single ``x``: ``(y, power)``, ``y`` a single from 10**6 to
+    2**23 (not yet whole) with ``abs(x)`` about ``y * 10**power``."""
     p, power = table_steps(mbf_double.parts(-x if x < 0 else x), mbf_double.single_rounded)
     y = mbf_double.nearest_float(p)  # a single: exact in a float
     if y < _MILLION:
         y = single_arith.product(y * 10.0)  # the exact product of 24 and 4 bits, rounded by $FMULS
         power -= 1
+    return y, power
+
+
+def rounded_whole(y: float) -> int:
+    """``$FOTCV``'s whole number of a positive single ``y``: .5 added (``$FADDH``, a
+    ``$FADDS``) unless ``y`` is whole, the fraction cut (``$QINT``)."""
     whole = floor(y)
     if whole != y:
         whole = floor(single_arith.add(y, 0.5))
-    return whole, power
+    return whole
+
+
+def decimal_digits(x: float) -> tuple[int, int]:
+    """``(n, power)`` with ``abs(x)`` shown as ``n * 10**power``, ``n`` of 7 digits (at
+    most 8388608: the bracket stays below 2**23), for a nonzero single ``x``."""
+    y, power = bracket(x)
+    return rounded_whole(y), power
 
 
 def digit_string(x: float) -> tuple[str, int]:
@@ -47,3 +60,49 @@ def digit_string(x: float) -> tuple[str, int]:
     n, power = decimal_digits(x)
     shown = str(n)
     return shown.rstrip("0") or "0", power + len(shown) - 1
+
+
+# PRINT USING (MATH2.ASM $PUF, MATH1.ASM $PUFE) rounds a single where its field ends, not
+# its 7 digits: the bracket is divided by ten once per digit the field does not show
+# ($DIV10: $MLSP, a $FMULS by the double 0.1 made single by $CSD), then rounded to a whole
+# number.  So 1234564.6 shown with one digit fewer is 123456, not 123457 (the 7 digits
+# 1234565 rounded again).
+
+TENTH = 0.100000001490116119384765625  # $DPM01 made single ($CSD: 0xCCCCCD * 2**-27)
+
+
+def _tenths(y: float, times: int) -> float:
+    """``$DIV10`` ``times`` times on the single ``y``."""
+    for _ in range(times):
+        y = single_arith.product(y * TENTH)
+    return y
+
+
+def fixed_digits(y: float, power: int, places: int) -> tuple[int, int]:
+    """``$PUF``'s digits of a single bracketed as ``(y, power)`` (:func:`bracket`) for a
+    fixed field of ``places`` decimals: ``(n, shown)``, the magnitude printed as
+    ``n * 10**-shown`` (``shown`` <= ``places``: the field adds zeros)."""
+    if power >= 0:
+        return rounded_whole(y) * 10 ** power, 0
+    excess = -(places + power)  # digits right of the point beyond the field's
+    if excess > 0:
+        return rounded_whole(_tenths(y, excess)), places
+    return rounded_whole(y), -power
+
+
+def scientific_digits(y: float, power: int, digits: int) -> tuple[int, int]:
+    """``$PUFE``'s digits of a single bracketed as ``(y, power)`` for a ``^^^^`` field
+    showing ``digits`` (1 .. ) digits: ``(n, power)``, the magnitude printed as
+    ``n * 10**power`` with ``n`` below 10**digits.  Fewer than 7: the excess divided off,
+    .5 added and the fraction cut (``$VADDH``, ``$VINT``); a carry into a new digit
+    divides by ten once more (then ``$FOTCV`` rounds)."""
+    excess = 7 - digits
+    if excess <= 0:
+        return rounded_whole(y) * 10 ** -excess, power + excess
+    y = _tenths(y, excess)
+    n = floor(single_arith.add(y, 0.5))
+    power += excess
+    if n >= 10 ** digits:
+        n = rounded_whole(single_arith.product(n * TENTH))
+        power += 1
+    return n, power

@@ -9,7 +9,7 @@ from __future__ import annotations
 import re
 import sys
 
-from yaseer.basic.arithmetic import formatting, values
+from yaseer.basic.arithmetic import formatting, mbf_digits, values
 
 from yaseer.basic.machine import gwfunctions, runtime
 from yaseer.basic.errors import (
@@ -429,7 +429,7 @@ def _formatted(fmt: str, values: list, stream, pieces: bool = False):
         raise
 
 
-# MATH2.ASM $PUF prints a number from 10**16 up in free format (formatting.Unfixed): a
+# MATH2.ASM $PUF prints a number from 10**16 up in free format (formatting.Single's free): a
 # double compared with $DP16 (10**16, exact), a single with its top four bytes (10**16
 # cut to 24 bits, 9999999198822400)
 _PUF_SINGLE_LIMIT = 9999999198822400.0
@@ -437,16 +437,18 @@ _PUF_DOUBLE_LIMIT = values.double_parts(1e16)[1:]
 
 
 def _single_decimal(x: float) -> float:
-    """A single as the decimal of its 7 digits (GW-BASIC's PRINT USING rounds those, not
-    the binary value: ``2.675`` is 2.68, ``1/3`` .3333334000 with ten places); from
-    ``$PUF``'s limit up marked with its free-format text."""
-    text = values.unsigned_text(x, values.SINGLE_DIGITS, "E")
-    value = -float(text) if x < 0 else float(text)
-    if -_PUF_SINGLE_LIMIT < x < _PUF_SINGLE_LIMIT:
-        return value
-    unfixed = formatting.Unfixed(value)
-    unfixed.free = text
-    return unfixed
+    """A nonzero single as the decimal of its 7 digits (what PRINT shows), carrying
+    ``$FOTNV``'s bracket of its binary value, from which a field finds its digits
+    (formatting.Single); from ``$PUF``'s limit up marked with its free-format text."""
+    if not x:
+        return x
+    y, power = mbf_digits.bracket(x)
+    n = mbf_digits.rounded_whole(y)
+    shown = formatting.Single(f"-{n}e{power}" if x < 0 else f"{n}e{power}")
+    shown.bracket = y, power
+    shown.free = values.unsigned_text(x, values.SINGLE_DIGITS, "E") \
+        if not -_PUF_SINGLE_LIMIT < x < _PUF_SINGLE_LIMIT else None
+    return shown
 
 
 def _double_decimal(x) -> float:
