@@ -471,9 +471,20 @@ def _format_value(value: Value, field: StringField | NumericField) -> str:
     return format_number(value if type(value) is Shown or type(value) is Single else float(value), field)
 
 
-def using(fmt: str, values: Sequence[float | str], pieces: bool = False):
+def field_digits(field: NumericField) -> int:
+    """A numeric field's digit positions as GW-BASIC's PRINT USING scanner counts them
+    (BIPRTU.ASM, NUMNUM to ENDNUS): the positions before the point (``#``, commas, the two
+    of ``**`` or ``$$``, the three of ``**$``), a leading ``+``, the point and the ``#``
+    after it; not ``^^^^`` nor a trailing sign."""
+    return field.positions + field.decimals + field.point + (field.sign == "lead+")
+
+
+def using(fmt: str, values: Sequence[float | str], pieces: bool = False, most_digits: int | None = None):
     """PRINT USING fmt; values — the text printed (no newline); with ``pieces`` the list of
     its parts as (text, is a field) pairs (a field that does not fit the row moves to the next).
+    A numeric field of more than ``most_digits`` digit positions (:func:`field_digits`; None:
+    no limit) is ``Illegal function call`` when a value reaches it, whatever the value
+    (BIPRTU.ASM checks after FRMEVL, before PUFOUT looks at the type: ``CMP AL,25``).
 
     The format is reused from its start while values remain; after the last
     value, literal text is copied up to the next field or the end of the format.
@@ -498,6 +509,8 @@ def using(fmt: str, values: Sequence[float | str], pieces: bool = False):
             break
         else:
             try:
+                if most_digits is not None and type(token) is NumericField and field_digits(token) > most_digits:
+                    raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
                 out.append(_format_value(values[next_value], token))
             except BasicError as error:
                 error.printed = "".join(out)

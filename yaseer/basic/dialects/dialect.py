@@ -99,10 +99,11 @@ FIELDS = (
     "handler_must_resume",  # bool: False
     "for_array_elements",  # bool: True
     "untrapped_errors_noted",  # bool: False
+    "using_digits",  # int | None: None
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False)
+            None, False, False, True, False, None)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -139,6 +140,11 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         arithmetic as the FX-850P family's BCD, yaseer/basic/arithmetic/decimal_arith.py).
 
     Print rules
+        ``using_digits``: the most digit positions a PRINT USING numeric field may have
+        (GW-BASIC's 24, BIPRTU.ASM: the positions before the point, ``**`` and ``$$``
+        two, ``**$`` three, each comma and a leading ``+`` one, plus the point and the
+        ``#`` after it; a field with more is ``Illegal function call`` when a value
+        reaches it); None: no limit (casio, whose manual has no PRINT USING).
         ``print_digits``: significant digits PRINT and STR$ show for the
         default numeric type (10 on the 10-digit Casio display; 7 for
         GW-BASIC's single precision; GW doubles show 16).
@@ -346,6 +352,7 @@ GW = Dialect(
     read_commits=True,
     direct_line_number=65535, edit_clears=True, handler_must_resume=True,
     for_array_elements=False, untrapped_errors_noted=True,
+    using_digits=24,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

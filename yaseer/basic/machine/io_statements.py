@@ -220,11 +220,12 @@ class InputOutput:
             if newline:
                 self._csv_row(stream)
             return
-        text = _formatted(fmt, values, stream)
+        most = self.dialect.using_digits
+        text = _formatted(fmt, values, stream, most)
         if stream.width is None or stream.column + len(text) <= stream.width:
             stream.write(text)
         else:  # a field that does not fit the row starts the next one, as a PRINT item does
-            for text, field in _formatted(fmt, values, stream, pieces=True):
+            for text, field in _formatted(fmt, values, stream, most, pieces=True):
                 if field:
                     stream.item(text)
                 else:
@@ -358,7 +359,7 @@ class InputOutput:
 
     def print_using_to(self, stream, fmt: str, values: tuple, newline: bool) -> None:
         """PRINT #n, USING."""
-        stream.write(_formatted(fmt, self._using_values(values), stream))
+        stream.write(_formatted(fmt, self._using_values(values), stream, self.dialect.using_digits))
         if newline:
             stream.end_line()
 
@@ -420,10 +421,11 @@ def _same(value):
     return value
 
 
-def _formatted(fmt: str, values: list, stream, pieces: bool = False):
-    """``formatting.using``; on an error the text before it is written to ``stream`` first."""
+def _formatted(fmt: str, values: list, stream, most_digits: int | None, pieces: bool = False):
+    """``formatting.using`` (``most_digits``: the dialect's ``using_digits``); on an error the
+    text before it is written to ``stream`` first."""
     try:
-        return formatting.using(fmt, values, pieces)
+        return formatting.using(fmt, values, pieces, most_digits)
     except BasicError as error:
         stream.write(getattr(error, "printed", ""))
         raise
