@@ -125,7 +125,8 @@ def random_double(rng: random.Random) -> bytes:
 def random_field(rng: random.Random) -> tuple[str, int, bool]:
     """A field, the digits it shows (decimals; for ``^^^^`` all of them), and whether it is ``^^^^``."""
     if rng.random() < 0.5:
-        before, places = rng.randint(1, 8), rng.randint(0, 16)
+        places = rng.randint(0, 16)
+        before = rng.randint(1, min(8, 23 - places))  # GW's fields hold 24 digit positions and the point
         return "#" * before + "." + "#" * places, places, False
     before, places = rng.randint(2, 9), rng.randint(0, 14)
     return "#" * before + ("." + "#" * places if places else "") + "^^^^", before - 1 + places, True

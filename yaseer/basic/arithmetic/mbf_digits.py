@@ -22,7 +22,7 @@ from __future__ import annotations
 from math import floor
 
 from yaseer.basic.arithmetic import mbf_double, single_arith
-from yaseer.basic.arithmetic.mbf_double_using import table_steps
+from yaseer.basic.arithmetic.mbf_double_using import field_digits, scientific_field_digits, table_steps
 
 _MILLION = 1000000.0  # $DP06's single part: $FOTNV's lower bound
 
@@ -78,16 +78,15 @@ def _tenths(y: float, times: int) -> float:
     return y
 
 
+def _half_added_cut(y: float) -> int:
+    return floor(single_arith.add(y, 0.5))
+
+
 def fixed_digits(y: float, power: int, places: int) -> tuple[int, int]:
     """``$PUF``'s digits of a single bracketed as ``(y, power)`` (:func:`bracket`) for a
     fixed field of ``places`` decimals: ``(n, shown)``, the magnitude printed as
     ``n * 10**-shown`` (``shown`` <= ``places``: the field adds zeros)."""
-    if power >= 0:
-        return rounded_whole(y) * 10 ** power, 0
-    excess = -(places + power)  # digits right of the point beyond the field's
-    if excess > 0:
-        return rounded_whole(_tenths(y, excess)), places
-    return rounded_whole(y), -power
+    return field_digits(y, power, places, _tenths, rounded_whole)
 
 
 def scientific_digits(y: float, power: int, digits: int) -> tuple[int, int]:
@@ -96,13 +95,4 @@ def scientific_digits(y: float, power: int, digits: int) -> tuple[int, int]:
     ``n * 10**power`` with ``n`` below 10**digits.  Fewer than 7: the excess divided off,
     .5 added and the fraction cut (``$VADDH``, ``$VINT``); a carry into a new digit
     divides by ten once more (then ``$FOTCV`` rounds)."""
-    excess = 7 - digits
-    if excess <= 0:
-        return rounded_whole(y) * 10 ** -excess, power + excess
-    y = _tenths(y, excess)
-    n = floor(single_arith.add(y, 0.5))
-    power += excess
-    if n >= 10 ** digits:
-        n = rounded_whole(single_arith.product(n * TENTH))
-        power += 1
-    return n, power
+    return scientific_field_digits(y, power, digits, 7, _tenths, _half_added_cut, rounded_whole, float)

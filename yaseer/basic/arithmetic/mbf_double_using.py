@@ -108,34 +108,53 @@ def _rounded_whole(p: tuple[bool, int, int]) -> int:
     return _whole(mbf_double.add(p, HALF))
 
 
+def field_digits(b, power: int, places: int, tenths, rounded_whole) -> tuple[int, int]:
+    """``$PUF``'s steps for a fixed field of ``places`` decimals on a bracket ``b`` (the
+    magnitude about ``b * 10**power``; a double's or a single's, with its ``tenths(b, k)``,
+    ``$DIV10`` k times, and its ``rounded_whole``, ``$FOTCV``): ``(n, shown)``, the
+    magnitude printed as ``n * 10**-shown`` (``shown`` <= ``places``: the field adds zeros)."""
+    if power >= 0:
+        return rounded_whole(b) * 10 ** power, 0
+    excess = -(places + power)  # digits right of the point beyond the field's
+    if excess > 0:
+        return rounded_whole(tenths(b, excess)), places
+    return rounded_whole(b), -power
+
+
+def scientific_field_digits(b, power: int, digits: int, printable: int, tenths, half_added_cut,
+                            rounded_whole, number) -> tuple[int, int]:
+    """``$PUFE``'s steps for a ``^^^^`` field showing ``digits`` digits on a bracket ``b`` of
+    ``printable`` digits (16 or 7), with the type's ``tenths`` and ``rounded_whole`` (see
+    :func:`field_digits`), ``half_added_cut`` (``$VADDH``, ``$VINT``) and ``number`` (a whole
+    number as the type): ``(n, power)``, the magnitude printed as ``n * 10**power``."""
+    excess = printable - digits
+    if excess <= 0:
+        return rounded_whole(b) * 10 ** -excess, power + excess
+    n = half_added_cut(tenths(b, excess))
+    power += excess
+    if n >= 10 ** digits:  # the rounding carried into a new digit: one more $DIV10
+        n = rounded_whole(tenths(number(n), 1))
+        power += 1
+    return n, power
+
+
+def _half_added_cut(p: tuple[bool, int, int]) -> int:
+    return _whole(mbf_double.add(p, HALF))
+
+
 def fixed_digits(p: tuple[bool, int, int], places: int) -> tuple[int, int]:
     """``$PUF``'s digits of a nonzero double's magnitude for a field of ``places``
     decimals (from 10**16 up: its 16 digits and zeros): ``(n, shown)`` with the magnitude printed as ``n * 10**-shown``
     (``shown`` <= ``places``: the field adds zeros after the 16 digits)."""
-    b, power = bracketed(p)
-    if power >= 0:
-        return _rounded_whole(b) * 10 ** power, 0
-    excess = -(places + power)  # digits right of the point beyond the field's
-    if excess > 0:
-        return _rounded_whole(_tenths(b, excess)), places
-    return _rounded_whole(b), -power
+    return field_digits(*bracketed(p), places, _tenths, _rounded_whole)
 
 
 def scientific_digits(p: tuple[bool, int, int], digits: int) -> tuple[int, int]:
     """``$PUFE``'s digits of a nonzero double's magnitude for a ``^^^^`` field showing
     ``digits`` digits: ``(n, power)``, the magnitude printed as ``n * 10**power`` with
     ``n`` below 10**digits (zeros after 16 digits)."""
-    b, power = bracketed(p)
-    excess = 16 - digits
-    if excess <= 0:
-        return _rounded_whole(b) * 10 ** -excess, power + excess
-    b = _tenths(b, excess)
-    n = _whole(mbf_double.add(b, HALF))  # $VADDH, $VINT
-    power += excess
-    if n >= 10 ** digits:  # the rounding carried into a new digit: one more $DIV10
-        n = _rounded_whole(mbf_double.multiply(mbf_double.from_integer(n), TENTH))
-        power += 1
-    return n, power
+    return scientific_field_digits(*bracketed(p), digits, 16, _tenths, _half_added_cut, _rounded_whole,
+                                   mbf_double.from_integer)
 
 
 def printed_digits(p: tuple[bool, int, int]) -> tuple[int, int]:
