@@ -85,9 +85,9 @@ def printed_value(text: str) -> Decimal:
 
 
 def single_bytes(x: Fraction) -> str:
-    """CVS's argument for the single ``x`` > 0."""
-    m, e = math.frexp(float(x))
-    bits = int(m * 2 ** 24) & 0x7FFFFF
+    """CVS's argument for the nonzero single ``x``."""
+    m, e = math.frexp(abs(float(x)))
+    bits = int(m * 2 ** 24) & 0x7FFFFF | (x < 0) << 23
     return "+".join(f"CHR$({b})" for b in (bits & 255, (bits >> 8) & 255, bits >> 16, e + 128))
 
 
@@ -128,8 +128,9 @@ def tie_case(rng: random.Random) -> tuple[Fraction, str, int, bool]:
 
 def cases(count: int) -> list[tuple[Fraction, str, int, bool]]:
     rng = random.Random(base_seed() + 83)
-    return [tie_case(rng) if rng.random() < 0.4 else (random_single(rng), *random_field(rng))
+    rows = [tie_case(rng) if rng.random() < 0.4 else (random_single(rng), *random_field(rng))
             for _ in range(count)]
+    return [(-x if rng.random() < 0.3 else x, *rest) for x, *rest in rows]
 
 
 def program(rows) -> str:
@@ -138,7 +139,8 @@ def program(rows) -> str:
 
 
 def expected(x: Fraction, digits: int, scientific: bool) -> Decimal:
-    return scientific_value(x, digits) if scientific else fixed_value(x, digits)
+    """The magnitude shown (PUFOUT makes the number positive before ``$PUF``)."""
+    return scientific_value(abs(x), digits) if scientific else fixed_value(abs(x), digits)
 
 
 KNOWN = [  # (statement, printed): the field rounds the divided bracket, not the 7 digits
