@@ -233,3 +233,15 @@ def test_integers_and_integral_floats_print_alike():
     assert number_to_text(-3) == "-3 "
     assert number_to_text(9999999999) == " 9999999999 "
     assert number_to_text(10000000000) == " 1E+10 "
+
+
+@settings(max_examples=500, deadline=None, derandomize=True, database=None)
+@given(x=st.floats(allow_nan=False, allow_infinity=False), decimals=st.integers(0, 30))
+def test_fixed_digits_are_the_shortest_decimal_rounded_half_up_over_the_whole_range(x, decimals):
+    """The digits of a plain float's fixed field, from 5E-324 to 1.8E308 and up to 30 places:
+    the float's shortest decimal (its repr) rounded half away from zero in Fractions."""
+    from yaseer.basic.arithmetic.formatting import _rounded_half_up
+
+    whole, fraction = _rounded_half_up(x, decimals)
+    assert whole.isdigit() and len(fraction) == decimals and (whole == "0" or whole[0] != "0")
+    assert Fraction(whole + "." + fraction + "0") == abs(half_away_from_zero(Fraction(repr(x)), decimals))

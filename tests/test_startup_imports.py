@@ -2,7 +2,7 @@
 
 A run whose compiled program is in the cache must not load what it does not
 use: the parser and lark, numpy, and the standard modules that only some paths
-need (pathlib for files and --out, decimal for PRINT USING and doubles, csv for
+need (pathlib for files and --out, decimal for PRINT USING's ^^^^ fields and doubles, csv for
 --format csv and INPUT, hashlib for the cache key, random for RND), nor dataclasses (with
 inspect) at all, not even when a library program is called.  Each probe is a fresh
 process started with ``-S`` (no site: an editable install's import hook would
@@ -75,7 +75,7 @@ def test_a_warm_basic_only_run_imports_only_the_machine(cache):
 def test_a_warm_run_calling_the_programs_loads_their_formulas_only(cache):
     output, imported = warm_run(ROOT / "listings" / "example1.bas", cache)
     assert output == (ROOT / "tests" / "golden" / "example1.txt").read_text()
-    assert imported == set(NOT_WITHOUT_PROG) | {"decimal"}  # decimal: its PRINT USING rounds with it
+    assert imported == set(NOT_WITHOUT_PROG)  # its PRINT USING's fixed fields round without decimal
 
 
 FORMULAS = ("yaseer.linkages.planar", "yaseer.linkages.kinetostatics", "yaseer.linkages.fourbar",
@@ -112,9 +112,9 @@ def test_the_formulas_are_the_package_names_at_first_use():
 
 
 def test_the_watched_modules_are_those_the_other_paths_need(cache):
-    """The probe can see them: PRINT USING, INPUT and a file do load them (no -S needed here)."""
+    """The probe can see them: PRINT USING with an exponent, INPUT and a file do load them (no -S needed here)."""
     listing = cache.parent / "other.bas"
-    listing.write_text('10 PRINT USING "##.##"; 1.234\n20 OPEN "O", 1, "F.TXT": PRINT #1, 1: CLOSE 1\n30 INPUT A\n')
+    listing.write_text('10 PRINT USING "##.##^^^^"; 1.234\n20 OPEN "O", 1, "F.TXT": PRINT #1, 1: CLOSE 1\n30 INPUT A\n')
     (cache.parent / "answers.txt").write_text("5\n")
     env = dict(os.environ, YASEER_CACHE_DIR=str(cache))
     probe = (f"import sys, os; sys.path.insert(0, {PACKAGE_PARENT!r}); os.chdir(sys.argv[2])\n"

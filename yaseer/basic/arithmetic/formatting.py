@@ -318,6 +318,26 @@ def _decimal(x: float):
     return Decimal(repr(abs(float(x))))
 
 
+def _rounded_half_up(x: float, decimals: int) -> tuple[str, str]:
+    """The whole and fraction digits of ``abs(x)`` (finite) rounded half up to ``decimals``
+    places: the shortest decimal that reads back as the float, rounded in integers.  The
+    digits ``Decimal(repr(abs(x))).quantize(..., ROUND_HALF_UP)`` gives, without importing
+    :mod:`decimal` (a tenth of a paper example's start-up) for PRINT USING's every fixed field."""
+    text = repr(abs(float(x)))
+    mantissa, _, power = text.partition("e")
+    whole, _, fraction = mantissa.partition(".")
+    digits = int(whole + fraction)
+    exponent = (int(power) if power else 0) - len(fraction)  # abs(x) == digits * 10**exponent
+    if exponent >= -decimals:
+        digits *= 10 ** (exponent + decimals)
+    else:
+        unit = 10 ** (-decimals - exponent)
+        digits, rest = divmod(digits, unit)
+        digits += 2 * rest >= unit
+    shown = str(digits).rjust(decimals + 1, "0")
+    return shown[:len(shown) - decimals], shown[len(shown) - decimals:]
+
+
 def _group_thousands(digits: str) -> str:
     """``1234567`` -> ``1,234,567``."""
     head = len(digits) % 3 or 3
@@ -332,22 +352,23 @@ def _fixed_body(x: float, field: NumericField) -> str:
     puts it back when there is room (see :func:`format_number`).  A non-zero
     value that rounds to zero keeps its ``0`` (``-0.00``), as in GW-BASIC.
     """
-    from decimal import ROUND_HALF_UP, Decimal, localcontext
+    if type(x) is Shown or type(x) is Single:
+        from decimal import Decimal, localcontext
 
-    with localcontext(_wide()):
-        if type(x) is Shown:
-            rounded = _bracketed(x.parts, field.decimals).quantize(Decimal(1).scaleb(-field.decimals))
-        elif type(x) is Single:  # $PUF: the bracket divided down to the field's decimals, then rounded
-            from yaseer.basic.arithmetic import mbf_digits
+        with localcontext(_wide()):
+            if type(x) is Shown:
+                rounded = _bracketed(x.parts, field.decimals).quantize(Decimal(1).scaleb(-field.decimals))
+            else:  # $PUF: the bracket divided down to the field's decimals, then rounded
+                from yaseer.basic.arithmetic import mbf_digits
 
-            digits, shown = mbf_digits.fixed_digits(*x.bracket, field.decimals)
-            rounded = Decimal(digits).scaleb(-shown).quantize(Decimal(1).scaleb(-field.decimals))
-        else:
-            rounded = _decimal(x).quantize(Decimal(1).scaleb(-field.decimals), rounding=ROUND_HALF_UP)
-    whole, _, fraction = f"{rounded:f}".partition(".")
+                digits, shown = mbf_digits.fixed_digits(*x.bracket, field.decimals)
+                rounded = Decimal(digits).scaleb(-shown).quantize(Decimal(1).scaleb(-field.decimals))
+        whole, _, fraction = f"{rounded:f}".partition(".")
+    else:
+        whole, fraction = _rounded_half_up(x, field.decimals)
     if field.comma:
         whole = _group_thousands(whole)
-    if whole == "0" and field.point and (x == 0 or rounded != 0):
+    if whole == "0" and field.point and (x == 0 or fraction.strip("0")):  # 0.xx, not rounded to 0
         whole = ""
     return whole + ("." + fraction if field.point else "")
 
