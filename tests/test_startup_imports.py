@@ -27,7 +27,7 @@ import yaseer
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGE_PARENT = str(Path(yaseer.__file__).resolve().parents[1])
 
-NEVER_WARM = ("lark", "numpy", "yaseer.basic.source.parser", "yaseer.basic.compile.compiler", "yaseer.basic.compile.expressions",
+NEVER_WARM = ("lark", "numpy", "yaseer.basic.source.parser", "yaseer.basic.source.syntax_tree", "yaseer.basic.compile.compiler", "yaseer.basic.compile.expressions",
               "yaseer.basic.compile.statements_io", "yaseer.basic.compile.loops", "yaseer.animation",
               "pathlib", "decimal", "csv", "hashlib", "random", "dataclasses", "inspect")
 """Imported by no warm run of a listing that prints numbers (they serve other paths)."""

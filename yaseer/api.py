@@ -17,8 +17,8 @@ numpy nor matplotlib; ``rows``, ``plot()`` and ``animate()`` import them when us
 from __future__ import annotations
 
 import os
-import re
 import sys
+from yaseer.patterns import Pattern
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start-up time)
@@ -26,7 +26,7 @@ if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start
 
     Listing = Union[str, bytes, "os.PathLike[str]"]
 
-_LINE_NUMBER = re.compile(r"\s*\d")
+_LINE_NUMBER = Pattern(r"\s*\d")
 
 
 class _Output:

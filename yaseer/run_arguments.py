@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 import os
-import re
+from yaseer.patterns import Pattern
 
 AREAS = range(1, 10)  # program areas a listing may fill (area 0 is the listing itself)
 DIALECTS = ("casio", "gw")
@@ -42,7 +42,7 @@ def area_number(value: object, shown: object = None) -> int:
     return value
 
 
-_STRINGS = re.compile(r'"[^"]*("|$)')
+_STRINGS = Pattern(r'"[^"]*("|$)')
 
 
 def area_text(number: int, text: str) -> str:

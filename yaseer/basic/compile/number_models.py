@@ -17,10 +17,10 @@ expression; :func:`number_model` picks the model from ``Dialect.typed_numbers``.
 
 from __future__ import annotations
 
-import re
 from math import frexp
 
 from yaseer.basic.arithmetic.single_arith import LIMIT, SMALL_CONSTANT, TINY
+from yaseer.patterns import Pattern
 
 NUMERIC = frozenset("n%!#?")
 _RANK = {"%": 0, "!": 1, "?": 1.5, "#": 2}
@@ -798,8 +798,8 @@ def _float_code(tree) -> str:
     return f"({_float_code(tree[1])} {tree[0]} {_float_code(tree[2])})"
 
 
-_CACHE_WRITTEN = re.compile(r"_zw[spq]\('(\w+)'")  # a binade cache's name where its writer is called
-_SCALE_WRITTEN = re.compile(r"_zd[cgf]?\('(\w+)'")  # a scale cache's name where its writer is called
+_CACHE_WRITTEN = Pattern(r"_zw[spq]\('(\w+)'")  # a binade cache's name where its writer is called
+_SCALE_WRITTEN = Pattern(r"_zd[cgf]?\('(\w+)'")  # a scale cache's name where its writer is called
 
 
 def number_model(dialect, def_types=None) -> PlainNumbers:

@@ -12,7 +12,6 @@ password, the output format SET chose, whether PRINT also goes to the printer
 from __future__ import annotations
 
 import functools
-import re
 
 from yaseer.basic.arithmetic import formatting
 from yaseer.basic.arithmetic import casio_math
@@ -22,6 +21,7 @@ from yaseer.basic.machine import io_statements, runtime, string_space
 from yaseer.basic.errors import (
     BasicError, OUT_OF_MEMORY, OVERFLOW, PASSWORD_PROTECTED, SYNTAX_ERROR, TYPE_MISMATCH, not_emulated,
 )
+from yaseer.patterns import Pattern
 
 ANGLE_UNITS = ("DEG", "RAD", "GRA")  # ANGLE 0, 1, 2 (ANGLE.md)
 MODE_ANGLES = {4: "DEG", 5: "RAD", 6: "GRA"}  # the MODE key's angle units (ANGLE.md, item 4)
@@ -358,8 +358,8 @@ def _formula(text: str, dialect) -> tuple:
 
 
 # A variable name with the comment in brackets written after it (``x[cm]``), and a name alone.
-_COMMENTED = re.compile(r"([A-Za-z][A-Za-z0-9]*)(\[[^\]]*\])")
-_NAME = re.compile(r"[A-Za-z][A-Za-z0-9]*")
+_COMMENTED = Pattern(r"([A-Za-z][A-Za-z0-9]*)(\[[^\]]*\])")
+_NAME = Pattern(r"[A-Za-z][A-Za-z0-9]*")
 
 
 def _expression(text: str, dialect):

@@ -17,13 +17,13 @@ INKEY$ and INPUT$ take characters, a line break being the dialect's ``enter_key`
 
 from __future__ import annotations
 
-import re
 import sys
 
 from yaseer.basic.machine import runtime
 from yaseer.basic.machine.display import DRAWING_ACTIONS, Display, boxed
 from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END
 from yaseer.basic.machine.screen import OutputStream
+from yaseer.patterns import Pattern
 
 # Memory the FX-850P's programs read (Becker's library): the code of the key that ended
 # the last INPUT (EXE: 13; its programs test PEEK(&H65B)-13), and a byte that is 0 while no
@@ -115,7 +115,9 @@ class DisplayStream(OutputStream):
 
     def write(self, text: str) -> None:
         display = self.display
-        if display.drawn or not (text.isprintable() or not self._special.search(text)):
+        # (a line's end, "\n", is no special code: plain rows need no search, nor its pattern compiled)
+        if display.drawn or not (text.isprintable() or (text[-1:] == "\n" and text[:-1].isprintable())
+                                 or not self._special.search(text)):
             self._placed(text)
             return
         # streamed text: kept for the display, written on as OutputStream.write does (inline:
@@ -199,10 +201,11 @@ class DisplayStream(OutputStream):
         self._tail = [kept]
 
 
-def _codes_matching(controls: dict, wanted) -> "re.Pattern":
-    """A pattern of the control codes whose action is ``wanted`` (one that never matches if none)."""
-    codes = "".join(re.escape(chr(code)) for code, action in sorted(controls.items()) if wanted(action))
-    return re.compile(f"[{codes}]" if codes else "(?!)")
+def _codes_matching(controls: dict, wanted) -> Pattern:
+    """A pattern of the control codes whose action is ``wanted`` (one that never matches if none),
+    compiled when first searched (a run that prints only plain text never searches it)."""
+    codes = "".join(f"\\U{code:08x}" for code, action in sorted(controls.items()) if wanted(action))
+    return Pattern(f"[{codes}]" if codes else "(?!)")
 
 
 class Console:

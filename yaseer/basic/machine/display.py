@@ -32,12 +32,11 @@ instead of the streamed text.  Columns and rows are 0-based.
 
 from __future__ import annotations
 
-import re
-
 from yaseer.basic.dialects.screens import CASIO_SCREEN
+from yaseer.patterns import Pattern
 
 # Codes that place text where the program chooses: once one is written the display is "drawn".
-_CONTROL = re.compile("[\x00-\x1f]")
+_CONTROL = Pattern("[\x00-\x1f]")
 DRAWING_ACTIONS = frozenset(("line_top", "line_cancel", "line_end", "backspace", "home", "clear",
                              "right", "left", "up", "down",
                              "window_home", "advance", "regress", "window_up", "window_down"))

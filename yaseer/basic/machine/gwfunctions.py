@@ -13,12 +13,12 @@ READ of DATA items), which follows GW-BASIC's rules and not Python's float synta
 from __future__ import annotations
 
 import math
-import re
 import time
 
 from yaseer.basic.arithmetic import mbf_double, values
 from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, OVERFLOW
 from yaseer.basic.machine.runtime import cint
+from yaseer.patterns import Pattern
 
 _MAX_DOUBLE = 1.7976931348623157e308
 
@@ -213,8 +213,8 @@ def time_dollar() -> str:
 # ------------------------------------------------------------------ reading numbers
 
 _BLANKS = " \t\n"
-_DECIMAL = re.compile(r"([+-]?)(\d*)(?:\.([\d.]*))?")  # points after the first are skipped
-_EXPONENT = re.compile(r"[ED]([+-]?)(\d*)")
+_DECIMAL = Pattern(r"([+-]?)(\d*)(?:\.([\d.]*))?")  # points after the first are skipped
+_EXPONENT = Pattern(r"[ED]([+-]?)(\d*)")
 _RADIX = {"H": (16, "0123456789ABCDEF"), "O": (8, "01234567")}
 
 

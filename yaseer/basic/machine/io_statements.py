@@ -6,7 +6,6 @@ screen's settings (CLS, WIDTH, TRON's mark) and the file statements' I/O
 
 from __future__ import annotations
 
-import re
 import sys
 
 from yaseer.basic.arithmetic import formatting, mbf_digits, values
@@ -18,6 +17,7 @@ from yaseer.basic.errors import (
 from yaseer.basic.machine.console import end_of_keys
 from yaseer.basic.machine.signals import BreakPoint
 from yaseer.basic.machine.screen import DEVICE_WIDTHS, SCREEN_WIDTHS, OutputStream
+from yaseer.patterns import Pattern
 
 
 class Tab:
@@ -502,5 +502,5 @@ def parse_input(text: str, kinds: str, largest: float | None, longest: int):
 # An answer the number reader ($FIN, MATH1.ASM) reads whole although it has no digit:
 # a sign, a point, an exponent letter (D or E, with its sign and digits) make a number
 # of value 0 (``D``, ``-D``, ``.``, ``E+``, ``D5``)
-_NUMBER_WITHOUT_DIGITS = re.compile(r"[+-]?\.?(?:[DE][+-]?\d*)?")
+_NUMBER_WITHOUT_DIGITS = Pattern(r"[+-]?\.?(?:[DE][+-]?\d*)?")
 

@@ -25,7 +25,6 @@ garbage.  The compiler marks both (compile/expressions.py ``held``).
 
 from __future__ import annotations
 
-import re
 import sys
 
 TYPE_CHECKING = False
@@ -33,11 +32,12 @@ if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start
     from typing import Callable
 
 from yaseer.basic.errors import OUT_OF_STRING_SPACE, BasicError, STRING_TOO_LONG
+from yaseer.patterns import Pattern
 
 # the helpers of the generated code that make a new string (their result is taken from the space)
 MAKERS = ("_string", "_space", "_left", "_right", "_mid", "_chr", "_strs", "_hex", "_oct",
           "_mki", "_mks", "_mkd", "_fin_s", "_fline", "_input_chars", "_date", "_time", "_line_input")
-_BLOCK = re.compile(r"_b\d+$")  # a block function of the generated code
+_BLOCK = Pattern(r"_b\d+$")  # a block function of the generated code
 
 
 def block_locals() -> dict:

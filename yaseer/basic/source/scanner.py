@@ -21,12 +21,11 @@ Token types are the terminal names declared in ``grammar.lark``.
 from __future__ import annotations
 
 import functools
-import re
 
 from yaseer.basic.dialects.dialect import CASIO, Dialect
 from yaseer.basic.errors import DIRECT_STATEMENT_IN_FILE, BasicError, OVERFLOW, SYNTAX_ERROR, error_message
 from yaseer.basic.dialects.reserved import GW_RESERVED_WORDS, UNSUPPORTED
-from yaseer.basic.source.syntax_tree import CURRENT_LINE
+from yaseer.patterns import Pattern
 
 # Statement and operator keywords every dialect reserves: each is its own terminal type.
 STATEMENT_KEYWORDS = (
@@ -158,9 +157,9 @@ _RELATIONS = {
     "=": "EQ", "<": "LT", ">": "GT", "<=": "LE", "=<": "LE", ">=": "GE", "=>": "GE",
     "<>": "NE", "><": "NE",
 }
-_NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)(E[+-]?\d+)?")
-_LINE_NUMBER = re.compile(r"\s*(\d+)(?=[\sA-Za-z'?]|$)\s?")
-_LINE_BREAK = re.compile(r"\r\n|\n|\r")
+_NUMBER = Pattern(r"(\d+\.?\d*|\.\d+)(E[+-]?\d+)?")
+_LINE_NUMBER = Pattern(r"\s*(\d+)(?=[\sA-Za-z'?]|$)\s?")
+_LINE_BREAK = Pattern(r"\r\n|\n|\r")
 
 
 def _syntax_error() -> BasicError:
@@ -256,7 +255,8 @@ def _name(text: str, start: int, end: int, kind: str, dialect: Dialect) -> str:
     return name
 
 
-_HEX_LITERAL = re.compile(r"&H([0-9A-F]{1,4})(?![0-9A-F])")
+_HEX_START = Pattern(r"&H[0-9A-F]")
+_HEX_LITERAL = Pattern(r"&H([0-9A-F]{1,4})(?![0-9A-F])")
 
 
 def _scan_hex(upper: str, i: int) -> tuple[float, int]:
@@ -264,7 +264,7 @@ def _scan_hex(upper: str, i: int) -> tuple[float, int]:
     more digits are Overflow, none a Syntax error."""
     match = _HEX_LITERAL.match(upper, i)
     if match is None:
-        if re.match(r"&H[0-9A-F]", upper[i:]):
+        if _HEX_START.match(upper, i):
             raise BasicError("Overflow", OVERFLOW)
         raise _syntax_error()
     return float(int(match.group(1), 16)), match.end()
@@ -281,8 +281,8 @@ def _scan_number(upper: str, i: int) -> tuple[float, int]:
 
 
 # a type character may follow a number without exponent only (``1E2!`` is 1E2, then a bad ``!``)
-_TYPED_NUMBER = re.compile(r"(\d+\.?\d*|\.\d+)(?:([ED])([+-]?\d*)|([%!#]?))")
-_LONE_POINT = re.compile(r"\.(?:[ED][+-]?\d*)?([!#]?)")
+_TYPED_NUMBER = Pattern(r"(\d+\.?\d*|\.\d+)(?:([ED])([+-]?\d*)|([%!#]?))")
+_LONE_POINT = Pattern(r"\.(?:[ED][+-]?\d*)?([!#]?)")
 SINGLE_DIGITS = 7  # a literal with more significant digits is double precision (GW-BASIC)
 _BLANKS = " \t\n"  # what GW-BASIC's CHRGTR steps over (GWMAIN.ASM CHRCON, NOTCON)
 
@@ -418,7 +418,7 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
 # into GW-BASIC holds one.
 EXACT_DOUBLE, EXACT_SINGLE = "\x1f", "\x1d"
 EXACT_MARKERS = EXACT_DOUBLE + EXACT_SINGLE
-_EXACT = re.compile("\x1f([0-9A-F]{16})|\x1d([0-9A-F]{8})")
+_EXACT = Pattern("\x1f([0-9A-F]{16})|\x1d([0-9A-F]{8})")
 
 
 def exact_constant(text: str, i: int) -> tuple[str, bytes, int] | None:
@@ -451,7 +451,7 @@ def _overflowed(largest: float, notes: list | None) -> float:
 
 # Only a literal with an exponent of two digits or more, or with 30 digits in a row, can
 # pass 1.7E+38: lines without one are not scanned for entry messages.
-_MAY_OVERFLOW = re.compile(r"[EDed][+]?\d\d|\d{30}")
+_MAY_OVERFLOW = Pattern(r"[EDed][+]?\d\d|\d{30}")
 
 
 def entry_messages(text: str, dialect: Dialect = CASIO) -> list[str]:
@@ -629,7 +629,11 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
             tokens[-1] = Token(_GO_JOINED[value], "GO" + value)
             continue
         if line_spec and kind == "NUMBER" and text[start:end].strip() == ".":
-            value = CURRENT_LINE  # a lone "." where GWMAIN.ASM LINSPC reads a line number: DOT
+            # a lone "." where GWMAIN.ASM LINSPC reads a line number: DOT (the syntax tree is
+            # imported here: a run of a cached program reads its lines with this module, no tree)
+            from yaseer.basic.source.syntax_tree import CURRENT_LINE
+
+            value = CURRENT_LINE
         line_spec = kind in dialect.current_line_commands or (line_spec and kind in _LINE_SPEC_TOKENS)
         tokens.append(Token(kind, value))
     if dialect.bracket_subscripts:
