@@ -24,7 +24,6 @@ import functools
 import math
 import os
 import sys
-from weakref import WeakKeyDictionary
 
 from yaseer.basic.errors import (
     DIVISION_BY_ZERO,
@@ -414,7 +413,7 @@ def _branch(l10: float) -> int:
 
 
 TRACKING = -1  # L(10) = -1: continuous branch tracking (yaseer.linkages.tracking)
-_trackers: WeakKeyDictionary = WeakKeyDictionary()  # machine -> tracking.BranchTracker
+_trackers = None  # a weakref.WeakKeyDictionary machine -> tracking.BranchTracker, made by the first tracked call
 
 
 def _tracked_fourbar(frame: _Frame):
@@ -430,6 +429,11 @@ def _tracked_fourbar(frame: _Frame):
 
         raise NotTraceable("branch tracking")
     g = frame.get
+    global _trackers
+    if _trackers is None:  # (weakref's import is start-up time a run without tracking would pay)
+        from weakref import WeakKeyDictionary
+
+        _trackers = WeakKeyDictionary()
     tracker = _trackers.get(frame.machine) or _trackers.setdefault(frame.machine, BranchTracker(_linkages().UNCROSSED))
     geometry = Geometry(g("L", 11), g("T", 11), g("L", 12), g("L", 13), g("L", 14))
     kin, switch = tracker.step(geometry, g("T", 12), g("W", 5), g("A", 5), defer=True,

@@ -6,7 +6,7 @@ goes on after STOP or such a break, reopening the native FOR loops it broke (the
 from __future__ import annotations
 
 import contextlib
-import signal
+import _signal as signal  # the built-in module: signal's own builds its enums at import (start-up)
 import sys
 
 from yaseer.basic.machine import runtime

@@ -112,7 +112,7 @@ class _Keywords:
             for word in table.reserved_variables:
                 words[word] = "STRNAME"
         # a longer GW-BASIC word that is no keyword here stays whole (VARPTR, CSRLIN in casio)
-        self.longer = dict(_LONGER_RESERVED)
+        self.longer = dict(_longer_reserved())
         for word in (table.reserved_only if table else ()):
             self.longer[word] = tuple(r for r in GW_RESERVED_WORDS if r.startswith(word) and r not in words)
         self.types = words
@@ -122,7 +122,7 @@ class _Keywords:
 
     def at(self, upper: str, i: int) -> str | None:
         """The longest keyword that starts at position ``i`` of the upper-cased text
-        (none where a longer reserved word begins with it: see ``_LONGER_RESERVED``)."""
+        (none where a longer reserved word begins with it: see :func:`_longer_reserved`)."""
         for word in self.by_letter.get(upper[i], ()):
             if upper.startswith(word, i):
                 if any(upper.startswith(longer, i) for longer in self.longer.get(word, ())):
@@ -137,10 +137,14 @@ class _Keywords:
 _ADDED_KEYWORDS = set(GW_STATEMENT_KEYWORDS) | {RENAME_KEYWORD} | {
     "SPACE$", "HEX$", "OCT$", "MKI$", "MKS$", "MKD$", "CVI", "CVS", "CVD", "FRE", "POS", "LPOS",
     "EOF", "LOF", "LOC", "INSTR", "STRING$", "INPUT$", "TIMER", "DATE$", "TIME$"}
-_LONGER_RESERVED = {
-    word: tuple(r for r in GW_RESERVED_WORDS if r.startswith(word) and r != word and r not in _KEYWORD_TYPES)
-    for word in _ADDED_KEYWORDS
-}
+
+
+@functools.lru_cache(maxsize=None)
+def _longer_reserved() -> dict[str, tuple[str, ...]]:
+    """Each added keyword's longer reserved words (made when a line is first scanned: a run of
+    a cached program reads no tokens)."""
+    return {word: tuple(r for r in GW_RESERVED_WORDS if r.startswith(word) and r != word and r not in _KEYWORD_TYPES)
+            for word in _ADDED_KEYWORDS}
 
 
 @functools.lru_cache(maxsize=None)
