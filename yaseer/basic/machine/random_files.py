@@ -177,6 +177,9 @@ class RandomFile:
     def records(self) -> int:
         return self.last
 
+    def flush(self) -> None:
+        self.handle.flush()
+
     def close(self) -> None:
         self.handle.close()
 
