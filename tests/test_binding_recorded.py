@@ -496,3 +496,40 @@ def test_the_key_function_gives_the_values_of_its_tests_as_written():
         expected = tuple(eval(test, names) for test in tests)
         got = key(m)
         assert got == expected and all(type(a) is type(b) for a, b in zip(got, expected))
+
+
+def test_the_decision_tree_is_compiled_once_the_keys_met_stay_the_same(monkeypatch):
+    # paths added one call after another (a warm run taking its kept paths) each bring a new
+    # key: no tree is compiled for them; once no new key has come for SETTLE calls, one tree
+    # is compiled and every later call goes through it, each call running the path of its key
+    from types import SimpleNamespace
+
+    from yaseer.linkages import recordings as module
+    from yaseer.linkages.recordings import SETTLE, Recordings
+
+    compiled = []
+    real = module.compile_choice
+    monkeypatch.setattr(module, "compile_choice", lambda tests, entries: compiled.append(len(entries))
+                        or real(tests, entries))
+    ran = []
+
+    def path_for(q: float):
+        def run(machine):
+            if machine.arrays["Q"][2] != q:
+                raise module.Retrace
+            ran.append(q)
+        return run
+
+    tests = ("bool((float(_a_Q[2]) == 1.0))", "bool((float(_a_Q[2]) == 2.0))", "bool((float(_a_Q[2]) == 3.0))")
+    m = SimpleNamespace(arrays={"Q": [0.0, 0.0, 0.0]}, scalars={})
+    recordings = Recordings()
+    for q in (1.0, 2.0, 3.0):
+        m.arrays["Q"][2] = q
+        recordings.add(path_for(q), tests, m)
+        assert recordings.run(m) and ran[-1] == q
+    assert compiled == []
+    for call in range(3 * SETTLE):
+        q = float(call % 3 + 1)
+        m.arrays["Q"][2] = q
+        assert recordings.run(m) and ran[-1] == q
+    assert compiled == [3]
