@@ -1,6 +1,7 @@
 """The keyword-first scanner and the listing splitter."""
 
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from yaseer.basic.dialects.dialect import CASIO, GW
 from yaseer.basic.errors import BasicError
@@ -161,3 +162,73 @@ def test_a_listed_line_reads_back_as_the_same_tokens(text):
     except BasicError:
         pytest.skip("the line does not scan")
     assert kinds(detokenize(text)) == expected
+
+
+_LINE_NUMBER_PATTERN = r"\s*(\d+)(?=[\sA-Za-z'?]|$)\s?"  # the reading a line's number is written after
+_LINE_ALPHABET = st.sampled_from(list(" \t\x0b\x0c\x1c\x85\xa0\u2003\u3000" "0123456789" "\u0663\u0664\uff11\U0001d7d9"
+                                      "AZaz'?.:+-\u00e9\u00c0\u00b2\u2155\u00bd\u216b\"\r\n"))
+
+
+@settings(max_examples=3000, deadline=None, derandomize=True, database=None)
+@given(st.text(alphabet=_LINE_ALPHABET, max_size=12))
+def test_a_physical_lines_number_is_read_as_the_regular_expression_reads_it(physical):
+    """scanner._line_number against re's match of the same reading: Unicode blanks and
+    decimal digits (Arabic-Indic, full-width, mathematical), superscripts and fractions
+    (digits to isdigit or isnumeric, not decimals), letters outside ASCII, the one blank skipped."""
+    import re
+
+    from yaseer.basic.source.scanner import _line_number
+
+    match = re.match(_LINE_NUMBER_PATTERN, physical)
+    assert _line_number(physical) == (match and (int(match.group(1)), match.end()))
+
+
+@settings(max_examples=1000, deadline=None, derandomize=True, database=None)
+@given(st.text(alphabet=st.sampled_from(list("1 0AB\r\n\x1c\x1d\x85\u2028")), max_size=30))
+def test_a_listing_splits_into_lines_where_the_line_break_expression_splits_it(source):
+    """Lines end at CR LF, then a lone CR or LF (re.split(r"\\r\\n|\\n|\\r")); codes 28-31, 133
+    and U+2028 stay in their line: each numbered line and its physical index as re would cut them."""
+    import re
+
+    from yaseer.basic.source.scanner import DirectStatementInFile, split_lines
+
+    physical = re.split(r"\r\n|\n|\r", source)
+    expected = [(int(m.group(1)), line[m.end():].strip(), index) for index, line in enumerate(physical)
+                if line.strip() and (m := re.match(_LINE_NUMBER_PATTERN, line))]
+    try:
+        got = split_lines(source, joins_unnumbered=False)
+    except DirectStatementInFile as stopped:
+        got = stopped.lines
+        unnumbered = [index for index, line in enumerate(physical)
+                      if line.strip() and not re.match(_LINE_NUMBER_PATTERN, line)]
+        expected = [line for line in expected if line[2] < unnumbered[0]]
+    assert got == expected
+
+
+@settings(max_examples=3000, deadline=None, derandomize=True, database=None)
+@given(st.text(alphabet=st.sampled_from(list("EDed+-.1290 \u0663\uff11\u00b2A")), max_size=70))
+def test_a_line_may_overflow_where_the_expression_finds_an_exponent_or_thirty_digits(text):
+    import re
+
+    from yaseer.basic.source.scanner import _may_overflow
+
+    assert _may_overflow(text) == bool(re.search(r"[EDed][+]?\d\d|\d{30}", text))
+
+
+def test_thirty_digits_in_a_row_may_overflow_and_thirty_apart_do_not():
+    from yaseer.basic.source.scanner import _may_overflow
+
+    assert _may_overflow("PRINT " + "9" * 30) and _may_overflow("X=" + "\u0663" * 30 + "!")
+    assert not _may_overflow("PRINT " + "9" * 29 + " " + "9" * 29) and not _may_overflow("9" * 29 + "." + "9")
+    assert _may_overflow("A=1E+38") and _may_overflow("A=1d12") and not _may_overflow("A=1E+3: E+ 12: D+")
+
+
+@settings(max_examples=4000, deadline=None, derandomize=True, database=None)
+@given(st.text(alphabet=st.sampled_from(list("0159..EEDD++--%!#e\u0663\u00b2")), max_size=9))
+def test_a_typed_numbers_parts_are_the_groups_of_the_expression(text):
+    import re
+
+    from yaseer.basic.source.scanner import _typed_number_parts
+
+    match = re.fullmatch(r"(\d+\.?\d*|\.\d+)(?:([ED])([+-]?\d*)|([%!#]?))", text)
+    assert _typed_number_parts(text) == (match and match.groups())

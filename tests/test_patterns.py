@@ -61,3 +61,28 @@ def test_the_modules_a_run_imports_compile_no_pattern_at_import():
     done = subprocess.run([sys.executable, "-S", "-c", probe, PACKAGE_PARENT], capture_output=True, text=True,
                           check=True)
     assert done.stdout.strip() == "False", done.stderr
+
+
+@pytest.mark.parametrize("dialect", ["casio", "gw"])
+def test_a_warm_run_of_a_basic_program_imports_no_re(tmp_path, dialect):
+    """A listing with numbers of each kind, strings, an array and a subroutine, run from the
+    compiled-program cache (lines read, entry messages looked for, gw's memory counted):
+    nothing on that path needs a regular expression (re with enum is a fifth of a start-up
+    of ``python -m yaseer``)."""
+    import os
+
+    listing = tmp_path / "p.bas"
+    typed = "; 1.5D0; 123456789012#; 32767%; &H1F; .5!" if dialect == "gw" else ""
+    listing.write_text(f'10 DIM M(5): A$ = "X" + STR$(2.5E+3)\n20 FOR I = 1 TO 5: M(I) = I * 1.5: GOSUB 50: NEXT\n'
+                       f'30 PRINT A$; M(5); 1E-30{typed}\n40 END\n50 A$ = LEFT$(A$ + "Y", 9): RETURN\n')
+    env = dict(os.environ, YASEER_CACHE_DIR=str(tmp_path / "cache"))
+    run = [sys.executable, "-m", "yaseer", "run", "--dialect", dialect, str(listing)]
+    first = subprocess.run(run, capture_output=True, text=True, env=env, check=True)
+    probe = ("import sys; sys.path.insert(0, sys.argv[1])\n"
+             "from yaseer.cli import main\n"
+             "status = main(['run', '--dialect', sys.argv[2], sys.argv[3]])\n"
+             "print(status, 're' in sys.modules)")
+    done = subprocess.run([sys.executable, "-S", "-c", probe, PACKAGE_PARENT, dialect, str(listing)],
+                          capture_output=True, text=True, env=env, check=True)
+    *output, last = done.stdout.splitlines()
+    assert "\n".join(output) + "\n" == first.stdout and last == "0 False", done.stderr

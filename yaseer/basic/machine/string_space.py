@@ -32,19 +32,18 @@ if TYPE_CHECKING:  # annotations only: typing is not imported at run time (start
     from typing import Callable
 
 from yaseer.basic.errors import OUT_OF_STRING_SPACE, BasicError, STRING_TOO_LONG
-from yaseer.patterns import Pattern
 
 # the helpers of the generated code that make a new string (their result is taken from the space)
 MAKERS = ("_string", "_space", "_left", "_right", "_mid", "_chr", "_strs", "_hex", "_oct",
           "_mki", "_mks", "_mkd", "_fin_s", "_fline", "_input_chars", "_date", "_time", "_line_input")
-_BLOCK = Pattern(r"_b\d+$")  # a block function of the generated code
 
 
 def block_locals() -> dict:
     """The Python locals of the innermost block running (its scalars, not stored back yet)."""
     frame = sys._getframe(1)
     while frame is not None:
-        if _BLOCK.match(frame.f_code.co_name):
+        name = frame.f_code.co_name
+        if name.startswith("_b") and name[2:].isdecimal():  # a block function of the generated code (_b12)
             return frame.f_locals
         frame = frame.f_back
     return {}

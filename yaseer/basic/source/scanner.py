@@ -162,8 +162,31 @@ _RELATIONS = {
     "<>": "NE", "><": "NE",
 }
 _NUMBER = Pattern(r"(\d+\.?\d*|\.\d+)(E[+-]?\d+)?")
-_LINE_NUMBER = Pattern(r"\s*(\d+)(?=[\sA-Za-z'?]|$)\s?")
-_LINE_BREAK = Pattern(r"\r\n|\n|\r")
+_AFTER_LINE_NUMBER = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz'?")
+
+
+def _line_number(physical: str) -> tuple[int, int] | None:
+    """The number a physical line starts with and where its text begins, or None: blanks, the
+    digits, then the line's end, a blank (one is skipped), a letter, ``'`` or ``?`` (the match
+    of ``\\s*(\\d+)(?=[\\sA-Za-z'?]|$)\\s?``: blanks and digits as :mod:`re` reads them in a
+    str, str.isspace and str.isdecimal).  Written out: reading a cached program's lines then
+    needs no :mod:`re` (which, with the enum module, costs ``python -m yaseer`` a fifth of a
+    gw start-up)."""
+    end = len(physical)
+    start = 0
+    while start < end and physical[start].isspace():
+        start += 1
+    digits = start
+    while digits < end and physical[digits].isdecimal():
+        digits += 1
+    if digits == start:
+        return None
+    if digits == end:
+        return int(physical[start:digits]), end
+    after = physical[digits]
+    if after.isspace():
+        return int(physical[start:digits]), digits + 1
+    return (int(physical[start:digits]), digits) if after in _AFTER_LINE_NUMBER else None
 
 
 def _syntax_error() -> BasicError:
@@ -285,7 +308,37 @@ def _scan_number(upper: str, i: int) -> tuple[float, int]:
 
 
 # a type character may follow a number without exponent only (``1E2!`` is 1E2, then a bad ``!``)
-_TYPED_NUMBER = Pattern(r"(\d+\.?\d*|\.\d+)(?:([ED])([+-]?\d*)|([%!#]?))")
+
+
+def _typed_number_parts(text: str) -> tuple | None:
+    """The parts of a number's whole text (:func:`_number_text`): (mantissa, exponent letter,
+    exponent, type suffix), the groups of a full match of
+    ``(\\d+\\.?\\d*|\\.\\d+)(?:([ED])([+-]?\\d*)|([%!#]?))`` (letter and exponent None beside a
+    suffix, the suffix None beside an exponent, "" when there is neither), or None.  Written
+    with str methods (digits as re reads them, str.isdecimal): gw's memory model reads every
+    number of a program this way when it counts the program's bytes, and re is not imported."""
+    end = len(text)
+    digits = 0
+    while digits < end and text[digits].isdecimal():
+        digits += 1
+    at = digits
+    if at < end and text[at] == ".":
+        at += 1
+        while at < end and text[at].isdecimal():
+            at += 1
+    if digits == 0 and at - digits < 2:  # no digit before the point, and none after it
+        return None
+    mantissa, rest = text[:at], text[at:]
+    if rest[:1] in ("E", "D"):
+        exponent = rest[1:]
+        if exponent[:1] in ("+", "-"):
+            if exponent[1:].isdecimal() or len(exponent) == 1:
+                return mantissa, rest[0], exponent, None
+            return None
+        return (mantissa, rest[0], exponent, None) if exponent.isdecimal() or not exponent else None
+    return (mantissa, None, None, rest) if rest in ("", "%", "!", "#") else None
+
+
 _LONE_POINT = Pattern(r"\.(?:[ED][+-]?\d*)?([!#]?)")
 SINGLE_DIGITS = 7  # a literal with more significant digits is double precision (GW-BASIC)
 _BLANKS = " \t\n"  # what GW-BASIC's CHRGTR steps over (GWMAIN.ASM CHRCON, NOTCON)
@@ -378,13 +431,13 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
             raise BasicError("Overflow", OVERFLOW)
         return (value - 0x10000 if value >= 0x8000 else value, "%"), end
     text, end = _number_text(upper, i)
-    match = _TYPED_NUMBER.fullmatch(text)
-    if match is None:
+    parts = _typed_number_parts(text)
+    if parts is None:
         point = _LONE_POINT.fullmatch(text)  # no digit: the number reader's 0 ($FIN)
         if point is None:
             raise _syntax_error()
         return (0.0, "#" if point.group(1) == "#" else "!"), end
-    mantissa, letter, exponent, suffix = match.groups()
+    mantissa, letter, exponent, suffix = parts
     value = float(mantissa + ("E" + (exponent if exponent.strip("+-") else "0") if letter else ""))
     plain = letter is None and "." not in mantissa
     if suffix == "%" or (not suffix and plain and value < 32768):
@@ -408,7 +461,7 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
         return (value, "#"), end
     single = to_single(value)
     if not single - single:  # in range: the value GW-BASIC's conversion gives (values.mbf_single)
-        single = single_literal(match.group(0).rstrip("!#%"), forced=suffix == "!")
+        single = single_literal(text.rstrip("!#%"), forced=suffix == "!")
     if single - single:  # beyond the single range
         single = _overflowed(SINGLE_LARGEST, notes)
     return (single, "!"), end
@@ -453,9 +506,26 @@ def _overflowed(largest: float, notes: list | None) -> float:
     return largest
 
 
-# Only a literal with an exponent of two digits or more, or with 30 digits in a row, can
-# pass 1.7E+38: lines without one are not scanned for entry messages.
-_MAY_OVERFLOW = Pattern(r"[EDed][+]?\d\d|\d{30}")
+def _may_overflow(text: str) -> bool:
+    """Whether ``text`` holds an exponent of two digits or more or 30 digits in a row (a
+    search of ``[EDed][+]?\\d\\d|\\d{30}``): only such a literal can pass 1.7E+38, and a
+    line without one is not scanned for entry messages.  Written with str methods: every
+    line of a gw program is asked when it is loaded, and re is not imported for it."""
+    for marker in "EDed":
+        at = text.find(marker)
+        while at >= 0:
+            digits = at + 2 if text.startswith("+", at + 1) else at + 1
+            if len(text) >= digits + 2 and text[digits:digits + 2].isdecimal():
+                return True
+            at = text.find(marker, at + 1)
+    if len(text) < 30 or sum(map(str.isdecimal, text)) < 30:
+        return False
+    run = 0
+    for character in text:
+        run = run + 1 if character.isdecimal() else 0
+        if run == 30:
+            return True
+    return False
 
 
 def entry_messages(text: str, dialect: Dialect = CASIO) -> list[str]:
@@ -463,7 +533,7 @@ def entry_messages(text: str, dialect: Dialect = CASIO) -> list[str]:
     ``Overflow`` for each number literal beyond the range (GWMAIN.ASM's tokeniser reads
     numbers as it stores the line; PC-BASIC 2.0.8 prints them when it loads a program,
     before RUN).  Literals in strings, remarks and DATA are text and print nothing."""
-    if not dialect.typed_numbers or not _MAY_OVERFLOW.search(text):
+    if not dialect.typed_numbers or not _may_overflow(text):
         return []
     notes: list[str] = []
     try:
@@ -882,17 +952,19 @@ def split_lines(source: str, joins_unnumbered: bool = True, keeps_blanks: bool =
     stripped.  A text of blanks only is empty (the line is deleted).
     """
     lines: list[tuple[int, str, int]] = []
-    for index, physical in enumerate(_LINE_BREAK.split(source)):
+    # (lines end at CR LF, then a lone CR or LF: as re.split(r"\r\n|\n|\r") cuts them)
+    for index, physical in enumerate(source.replace("\r\n", "\n").replace("\r", "\n").split("\n")):
         if not physical.strip():
             continue
-        match = _LINE_NUMBER.match(physical)
-        if match:
-            text = physical[match.end():]
+        found = _line_number(physical)
+        if found:
+            number, begins = found
+            text = physical[begins:]
             if keeps_blanks:
                 text = text if text.strip(" ") else ""
             else:
                 text = text.strip()
-            lines.append((int(match.group(1)), text, index))
+            lines.append((number, text, index))
         elif not joins_unnumbered:
             raise DirectStatementInFile(lines, physical.strip())
         elif lines:
