@@ -54,24 +54,3 @@ def test_the_readme_and_run_help_name_the_cache():
     shown = " ".join(done.stdout.split())
     assert "~/.cache/yaseer/compiled" in shown and "YASEER_CACHE_DIR" in shown
     assert "nothing is written anywhere else" not in shown
-
-
-def test_a_run_process_ends_with_everything_written(tmp_path):
-    """A ``yaseer run`` process ends without the interpreter's teardown (yaseer.cli.QUICK_EXIT):
-    what it printed, its printer file, and the files its program left open when it STOPped
-    (a sequential file and a random file, written but never closed) are all on disk, as the
-    teardown's last flush would have left them; standard error and the status too."""
-    files = tmp_path / "files"
-    files.mkdir()
-    listing = tmp_path / "s.bas"
-    listing.write_text('10 OPEN "O", #1, "SEQ.TXT": PRINT #1, "KEPT"; 5\n'
-                       '20 OPEN "R", #2, "REC.DAT", 8: FIELD #2, 8 AS R$: LSET R$ = "RECORD": PUT #2, 1\n'
-                       '30 FOR I = 1 TO 300: PRINT I;: NEXT: LPRINT "PAPER"\n40 STOP\n')
-    env = dict(os.environ, YASEER_CACHE_DIR="")
-    done = subprocess.run([sys.executable, "-m", "yaseer", "run", "--dialect", "gw", str(listing), "--printer",
-                           str(tmp_path / "paper.txt"), "--files", str(files)], capture_output=True, text=True, env=env)
-    assert (done.returncode, done.stderr) == (0, "Break in 40\n")
-    assert done.stdout.split() == [str(i) for i in range(1, 301)]
-    assert (tmp_path / "paper.txt").read_text() == "PAPER\n"
-    assert (files / "SEQ.TXT").read_bytes() == b"KEPT 5 \r\n"
-    assert (files / "REC.DAT").read_bytes() == b"RECORD  "

@@ -100,13 +100,13 @@ def main(argv: list[str] | None = None) -> int:
     """
     if argv is None:
         status = main(sys.argv[1:])
-        if status == 130 or _ends_quickly(sys.argv[1:]):
+        if status == 130:
             for stream in (sys.stdout, sys.stderr):
                 try:
                     stream.flush()
                 except (AttributeError, OSError, ValueError):
                     pass
-            os._exit(status)
+            os._exit(130)
         return status
     argv = list(argv)
     if sys.stdout is None:  # started with standard output closed (`yaseer run x >&-`)
@@ -118,21 +118,6 @@ def main(argv: list[str] | None = None) -> int:
     argv = _command_first(argv)
     command = argv[0] if argv[0] in COMMANDS else None
     return guarded(command or "session", lambda: _dispatch(argv, command))
-
-
-QUICK_EXIT = ("run",)
-"""Commands whose process ends at once when they return (``os._exit`` after the standard streams
-are flushed), without the interpreter's teardown: freeing every module and object of a run cost
-about as much as a third of ``python -c pass`` (15M of a warm ``10 PRINT 1``'s 131M instructions).
-Nothing of theirs waits for it: a run closes its printer, the machine closes or flushes the files
-the program opened, the compiled-program cache is written before the run returns, and no
-``atexit`` function is registered on their path."""
-
-
-def _ends_quickly(argv: list[str]) -> bool:
-    """Whether the command line ``argv`` runs a command of :data:`QUICK_EXIT`."""
-    argv = _command_first(list(argv))
-    return bool(argv) and argv[0] in QUICK_EXIT
 
 
 SESSION_VALUE_OPTIONS = ("--dialect", "--printer", "--width")  # the options before a command, each with a value

@@ -80,11 +80,6 @@ class OpenFile:
             raise error_for(BAD_FILE_MODE)
         return self.stream
 
-    def flush(self) -> None:
-        """What was written so far handed to the system (the file stays open)."""
-        if self.stream is not None:
-            self.stream.stream.flush()
-
     def close(self) -> None:
         if self.stream is not None:
             self.stream.stream.write(END_OF_FILE)
@@ -305,15 +300,6 @@ class FileTable:
             if f.mode == "R" and f.bound(key, current):
                 return f.store(key, value, right)
         return random_files.justified(value, len(current), right)
-
-    def flush(self) -> None:
-        """Every open file's buffered output handed to the system, the files left open (a run
-        STOPped keeps them: its process may end without the interpreter's last flush)."""
-        for f in self.open_files.values():
-            try:
-                f.flush()
-            except (OSError, ValueError):  # reported when the program writes or closes it again
-                pass
 
     def close(self, numbers=()) -> None:
         """CLOSE [n, ...]: the files named (no error for one not open), or all."""

@@ -346,13 +346,11 @@ class InputOutput:
             self.screen.new_row()
 
     def flush(self) -> None:
-        """The screen's and printer's output, and that of the files left open, handed to the system."""
         for stream in self.streams:
             try:
                 stream.flush()
             except (OSError, ValueError):
                 pass
-        self.files.flush()
 
     # ------------------------------------------------------------ files (files.py)
     def print_to(self, stream, items: tuple, newline: bool, end: bool = True) -> None:

@@ -177,9 +177,6 @@ class RandomFile:
     def records(self) -> int:
         return self.last
 
-    def flush(self) -> None:
-        self.handle.flush()
-
     def close(self) -> None:
         self.handle.close()
 
