@@ -193,3 +193,18 @@ def test_def_fn_makes_its_entry_and_its_parameters_as_pcbasic(pc_reason):
     bad, full = gw_programs_differing(pc_reason, lambda: _function_program(rng), count, "E 14 ")
     assert not bad, f"{len(bad)} of {count} differ, e.g. {bad[:2]}"
     assert full >= count // 10, full  # the programs reach the limit
+
+
+def test_a_program_that_never_reads_fre_runs_out_of_memory_where_gw_does(pc_reason):
+    """The same long programs with a handler that does not read FRE: every gw program
+    checks a new variable where it is made (compiler.made: once a block's names are all
+    made, its makings cost a local's test), so ``Out of memory`` comes at the statement
+    where PC-BASIC 2.0.8 (with GW's room test) gives it, after as many lines."""
+    rng = random.Random(base_seed() + 75)
+    for _ in range(3):
+        source = _many_variables_program(rng).replace("; FRE(0): END", ": END")
+        assert "FRE" not in source
+        pc_reason.statement("ON ERROR GOTO 0")
+        theirs = pc_reason.program(source)
+        assert "E 7 " in theirs
+        assert run_gw(source) == theirs

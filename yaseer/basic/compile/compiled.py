@@ -31,15 +31,18 @@ class CompiledArea:
     area's DEFINT/DEFSNG/DEFDBL/DEFSTR (gw; direct statements start from it);
     ``dynamic_types`` those statements switch the type table as they run (the machine
     then runs the area compiled for each table it reaches: ``variants``, table -> blocks).
+    ``makings`` block -> the simple variables its statements make, where the machine counts
+    each making (gw: compiler.made; the block's flag ``_f<block>`` is true while one of
+    them is not made).
     """
 
     FIELDS = ("source", "pieces", "block_count", "line_blocks", "block_next", "data", "data_lines",
               "scalars", "first_line", "index_blocks", "break_points", "dynamic_loops", "def_types",
-              "dynamic_types")
+              "dynamic_types", "makings")
 
     def __init__(self, source, pieces, block_count, line_blocks, block_next, data, data_lines,
                  scalars, first_line=None, index_blocks=None, break_points=None, dynamic_loops=(),
-                 def_types=None, dynamic_types=False):
+                 def_types=None, dynamic_types=False, makings=None):
         self.source, self.pieces, self.block_count = source, pieces, block_count
         self.line_blocks, self.block_next = line_blocks, block_next
         self.data, self.data_lines, self.scalars = data, data_lines, scalars
@@ -49,6 +52,7 @@ class CompiledArea:
         self.dynamic_loops = dynamic_loops
         self.def_types = def_types or {}
         self.dynamic_types = dynamic_types
+        self.makings = makings or {}
         self.blocks: list = []
         self.variants: dict = {}
 

@@ -51,8 +51,12 @@ class _Block:
         self.code: list[tuple[int, str]] = []
         self.scalars: dict[str, bool] = {}  # name -> assigned in this block
         self.arrays: dict[str, int] = {}  # name -> number of dimensions
+        self.makes: set[str] = set()  # the simple variables its statements make (compiler.made)
         self.first_line = None
 
+
+# Where a making's code reads its block's flag again (compiler.made): block_source writes the reading.
+_REFRESH = "#REFRESH#"
 
 # What generated code calls that changes the GOSUB/FOR stack and goes on in the same block.
 _STACK_CHANGES = ("_pop(", "_next_any(", "_clear(", "_call(", "_M.", "_gosub(", "_stk.")
@@ -264,11 +268,12 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
                 value_code = "_t"
             self.emit(f"{name} = {value_code}")
             return
-        element = self.element(target, scope)
+        element = self.element(target, scope, made=self.counts_made)
         if self.counts_made:  # LET's PTRGET makes an array used without DIM before the value is worked out
             name = self.numbers.name(target.name)
             local = array_local(name)
-            self.emit(f"if {local} is None: {local} = _arr({name!r}, {len(target.indices)})")
+            self.cur.makes.add(name + "()")  # (compiler.made: tested once the block's makings are done)
+            self.emit(f"if _f and {local} is None: {local} = _arr({name!r}, {len(target.indices)}); {_REFRESH}")
         if check:
             self.emit(f"_t = {value_code}")
             self.emit(f"if _t - _t: _t = _ovf(_t, {target_kind!r})")
@@ -524,12 +529,15 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.continue_after(stmt, fall_through=False)
 
     def made(self, target) -> None:
-        """Record that a statement makes simple variable ``target`` (see Dialect.variables_made)
-        where a SWAP may ask: for the names that stand second in a SWAP of the area (so
-        other programs pay nothing), and for every name in a direct line.  Where the area
-        counts its makings (``counts_made``: it reads FRE, see :func:`_counts_made`) each name is made as GW's PTRGET makes it: counted from then
-        on by FRE even while it holds 0 or "", and ``Out of memory`` where it does not fit
-        (``_mk``: machine/variables.py)."""
+        """Record that a statement makes simple variable ``target`` (see Dialect.variables_made).
+        Where the dialect's variables take room (``counts_made``: gw) each name is made as
+        GW's PTRGET makes it: counted from then on by FRE even while it holds 0 or "", and
+        ``Out of memory`` where it does not fit (``_mk``: machine/variables.py).  The test
+        costs a local's truth once every name the block makes is made: the block's ``_f``,
+        read from the global ``_f<block>`` as it starts, which the machine keeps true while
+        one of them is not (``CompiledArea.makings``); so a loop pays for its makings on its
+        first pass only.  Elsewhere (no room counted) the names a SWAP may ask about are
+        recorded: those that stand second in a SWAP of the area, and every name in a direct line."""
         if self.variables_made and isinstance(target, ast.Var):
             self.made_name(target.name, counted=True)
 
@@ -538,7 +546,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         bytes as a variable; a DEF FN parameter's are the function's, memory_model)."""
         name = self.numbers.name(name)
         if counted and self.counts_made:
-            self.emit(f"if {name!r} not in _made: _mk({name!r})")
+            block = self.cur.number
+            self.cur.makes.add(name)
+            self.emit(f"if _f and {name!r} not in _made: _mk({name!r}); {_REFRESH}")
         elif self.direct or name in self.watched:
             self.emit(f"_made.add({name!r})")
 
@@ -797,7 +807,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.numbers.set_types(statements)
         if self.variables_made:
             self.watched = _watched_names(self.flat, self.numbers.name)
-            self.counts_made = self.counts_strings and _counts_made(self.flat)
+            self.counts_made = self.counts_strings
         for i, (number, stmt) in enumerate(self.flat):
             for s in ([] if isinstance(stmt, BasicError) else data_statements(stmt)):
                 self.data_lines.setdefault(number, len(self.data))
@@ -825,13 +835,14 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         source = "\n".join(text for _, text in pieces)
         line_blocks = {number: self.entry_block[i] for number, i in self.line_first.items()
                        if i in self.entry_block}
+        makings = {b.number: tuple(sorted(b.makes)) for b in self.blocks if b.makes}
         return CompiledArea(
             source=source, pieces=pieces, block_count=len(self.blocks), line_blocks=line_blocks,
             block_next=self.block_next, data=self.data, data_lines=self.data_lines,
             scalars=set(self.scalars), first_line=self.flat[0][0] if self.flat else None,
             index_blocks=dict(self.entry_block), break_points=self.break_points,
             dynamic_loops=tuple(sorted(self.dynamic_loops)), def_types=self.numbers.def_types(),
-            dynamic_types=self.dynamic_types,
+            dynamic_types=self.dynamic_types, makings=makings,
         )
 
     def block_source(self, block: _Block) -> str:
@@ -847,6 +858,10 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         written = [n for n in names if block.scalars[n]]
         load = "; ".join(f"{local_name(n)} = _S[{n!r}]" for n in names)
         load_arrays = _array_loads(block.arrays, lazy=self.counts_made)
+        refresh = f"_f = _f{block.number}"  # (compiler.made) with the arrays, which a call may have made
+        refresh += "".join(f"; {array_local(a)} = _A.get({a!r})" for a in sorted(block.arrays))
+        if block.makes:  # read again wherever the variables are: a call may have made or cleared them
+            load = f"{load}; _f = _f{block.number}" if load else f"_f = _f{block.number}"
         store = "; ".join(f"_S[{n!r}] = {local_name(n)}" for n in written)
         loop_back = f"return {block.number}"
         self_loop = any(text == loop_back or text.endswith(": " + loop_back) for _, text in block.code)
@@ -897,6 +912,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
                 continue
             if text == "#FULL#":
                 text = full_check
+            if text.endswith(_REFRESH):
+                text = text[: -len(_REFRESH)] + refresh
             if text.startswith("#BREAK#"):
                 pending = self.break_infos[int(text[7:])]
                 continue
@@ -942,15 +959,6 @@ def _watched_names(flat, full_name):
         names.update(full_name(name) for s in statements if isinstance(s, ast.Common)
                      for name, is_array in s.names if not is_array)
     return frozenset(names)
-
-
-def _counts_made(flat) -> bool:
-    """Does an area count the making of its simple variables (compiler.made)?  Where it
-    reads FRE (a variable holding 0 or "" is counted from the statement that made it).
-    Other areas pay nothing for it: their variables are counted while they hold a value
-    other than 0 or "" (memory_model), and a new one is not checked against the 64 KB."""
-    return any(isinstance(node, ast.Call) and node.name == "FRE"
-               for _, stmt in flat if not isinstance(stmt, BasicError) for node in nodes(stmt))
 
 
 def _array_loads(arrays: dict[str, int], lazy: bool = False) -> list[str]:

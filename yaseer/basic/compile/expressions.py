@@ -95,12 +95,13 @@ class BlockScope:
         block.scalars[name] = block.scalars.get(name, False) or write
         return local_name(name)
 
-    def array(self, name: str, ndim: int) -> str:
+    def array(self, name: str, ndim: int, made: bool = False) -> str:
+        """The local of array ``name``; ``made``: the code has made it just before (LET)."""
         block = self.compiler.cur
         name = self.compiler.numbers.name(name)
         block.arrays.setdefault(name, ndim)
         local = array_local(name)
-        if self.compiler.counts_made:  # made where it is first used, not as the block starts
+        if self.compiler.counts_made and not made:  # made where it is first used, not as the block starts
             return f"({local} or ({local} := _arr({name!r}, {ndim})))"
         return local
 
@@ -120,7 +121,7 @@ class FnScope:
         self.compiler.scalars.add(name)
         return f"_S[{name!r}]"
 
-    def array(self, name: str, ndim: int) -> str:
+    def array(self, name: str, ndim: int, made: bool = False) -> str:
         return f"_arr({self.compiler.numbers.name(name)!r}, {ndim})"
 
 
@@ -310,8 +311,9 @@ class ExpressionCompiler:
     def expr_Elem(self, node, scope):
         return self.element(node, scope), self.kind_of(node)
 
-    def element(self, node, scope) -> str:
-        code = scope.array(node.name, len(node.indices))
+    def element(self, node, scope, made: bool = False) -> str:
+        """The Python target of array element ``node``; ``made``: the array was made just before."""
+        code = scope.array(node.name, len(node.indices), made)
         for index in node.indices:
             if isinstance(index, ast.Num) and index.value >= self.lowest_fast_subscript \
                     and index.value == int(index.value):

@@ -328,6 +328,7 @@ class Chaining:
         self.pending_error = None
         self.scalars.update(kept_scalars)
         self.made.update(made)  # those passed on that exist stay made (a SWAP may ask)
+        self.mark_made(made)
         for name, (values, dims, explicit) in kept_arrays.items():
             self.arrays[name] = values
             if dims is not None:

@@ -287,6 +287,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self._direct_line = None  # (compiled, program, namespace) of a direct line whose DEFs switch it
         # gw: the simple variables a statement made (recorded only where a SWAP may ask: compiler.made)
         self.made: set[str] = set()
+        # gw: key -> (namespace, block -> names it makes, name -> blocks): Variables.register_makings
+        self.making_flags: dict = {}
         self._types_as_statements = None  # the program of area 0 a RUN n entered past its DEFs (_run_types)
         # the program's sequential files, all in one directory (``files``; default the current one)
         words = self.dialect.words
@@ -407,6 +409,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         if entry and cached is None:
             program_cache.store(entry, compiled, codes)
         compiled.blocks = [namespace[f"_b{b}"] for b in range(compiled.block_count)]
+        if compiled.makings or not direct:
+            self.register_makings("direct" if direct else area, namespace, compiled.makings)
         if direct or area == 0:  # DEF types hold for the direct statements that follow
             self.def_types = dict(compiled.def_types)
         if compiled.dynamic_types:
@@ -588,6 +592,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             namespace = self.namespaces[area]
             for first_line, text in variant.pieces:
                 self._exec_piece(text, first_line, area, namespace)
+            self.register_makings(area, namespace, variant.makings, merge=True)
             armed = self._break_armed
             blocks = armed[1] if armed is not None and armed[0] is compiled else compiled.blocks
             blocks[:] = [namespace[f"_b{b}"] for b in range(variant.block_count)]
@@ -633,6 +638,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
                 raise BasicError("Internal error (the DEF type variants differ)", INTERNAL_ERROR)
             for first_line, text in variant.pieces:
                 self._exec_piece(text, first_line, area, namespace)
+            self.register_makings("direct" if area is None else area, namespace, variant.makings, merge=True)
             blocks = compiled.variants[key] = [namespace[f"_b{b}"] for b in range(variant.block_count)]
             for name in variant.scalars:
                 self.scalars.setdefault(name, initial_value(name))

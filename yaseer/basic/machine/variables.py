@@ -68,6 +68,8 @@ class Variables:
         self.arrays[name] = created
         self.array_dims[name] = dims
         self._check_variable_area(name, None)
+        if self.making_flags:
+            self.mark_made((name + "()",))
         return created
 
     def _reserve(self, name: str, dims: tuple) -> None:
@@ -97,6 +99,8 @@ class Variables:
         self.array_dims[name] = dims
         self._check_variable_area(name, old)
         self.explicit_arrays.add(name)
+        if self.making_flags:
+            self.mark_made((name + "()",))
 
     def _check_variable_area(self, name: str, old) -> None:
         """Where the dialect's variable area has a size (casio: 8192 bytes, CLEAR.md's
@@ -148,6 +152,7 @@ class Variables:
         self.array_elements -= _units(name, dims)
         del self.arrays[name], self.array_dims[name]
         self.explicit_arrays.discard(name)
+        self.unmark_made(name + "()")
 
     def option_base(self, base: int) -> None:
         """OPTION BASE 0 or 1: the lowest subscript; once an array exists: Duplicate Definition."""
@@ -228,6 +233,52 @@ class Variables:
         if not self._take_room(memory_model.variable_bytes(name)):
             self.made.discard(name)
             raise BasicError("Out of memory", OUT_OF_MEMORY)
+        self.mark_made((name,))
+
+    def _all_made(self, names) -> bool:
+        """Are the simple variables and arrays (``name()``) ``names`` all made?"""
+        arrays, made = self.arrays, self.made
+        return all(name[:-2] in arrays if name[-1] == ")" else name in made for name in names)
+
+    def register_makings(self, key, namespace: dict, makings: dict, merge: bool = False) -> None:
+        """The code of ``namespace`` (an area's, or a direct line's: ``key``) makes the simple
+        variables ``makings`` (block -> names: CompiledArea.makings); its flags ``_f<block>``
+        are kept true while one of a block's names is not made (compiler.made), so that a
+        block whose names are all made pays nothing for their making.  ``merge``: a variant
+        of the code already registered (TRON, DEF types), with the same blocks."""
+        old = self.making_flags.get(key)
+        if merge and old is not None and old[0] is namespace:
+            makings = {b: tuple(sorted(set(old[1].get(b, ())) | set(names))) for b, names in
+                       (old[1] | makings).items()}
+        by_name: dict[str, list[int]] = {}
+        for block, names in makings.items():
+            for name in names:
+                by_name.setdefault(name, []).append(block)
+            namespace[f"_f{block}"] = not self._all_made(names)
+        self.making_flags[key] = (namespace, makings, by_name)
+
+    def mark_made(self, names) -> None:
+        """``names`` are made now: the flags of the blocks whose names are then all made go
+        false (see :meth:`register_makings`)."""
+        for namespace, makings, by_name in self.making_flags.values():
+            for name in names:
+                for block in by_name.get(name, ()):
+                    flag = f"_f{block}"
+                    if namespace[flag] and self._all_made(makings[block]):
+                        namespace[flag] = False
+
+    def unmark_made(self, name: str) -> None:
+        """``name`` (an array: ``A!()``) is gone (ERASE): the blocks that make it make it again."""
+        for namespace, _, by_name in self.making_flags.values():
+            for block in by_name.get(name, ()):
+                namespace[f"_f{block}"] = True
+
+    def _unmade(self) -> None:
+        """Nothing is made (CLEAR, RUN): every block that makes a variable makes it again."""
+        self.made.clear()
+        for namespace, makings, _ in self.making_flags.values():
+            for block in makings:
+                namespace[f"_f{block}"] = True
 
     def define_function(self, name: str, function, parameters: tuple) -> None:
         """DEF FN ``name``: ``function`` (the compiled body, or its name in a variant) with
@@ -249,6 +300,7 @@ class Variables:
                 value = self.scalars.setdefault(parameter, initial_value(parameter))
                 if value or self.dialect.free_memory is None:  # (one holding a value is counted already)
                     self.made.add(parameter)
+                    self.mark_made((parameter,))
                 else:
                     self.make_variable(parameter)
 
@@ -273,6 +325,7 @@ class Variables:
         if name in self.made:
             return
         self.made.add(name)
+        self.mark_made((name,))
         if value == 0 or value == "":
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
 
@@ -295,7 +348,7 @@ class Variables:
         self.err = self.erl = 0.0
         self.string_space.reset()
         self.string_space.temps.clear()
-        self.made.clear()
+        self._unmade()
         self.reset_def_types()
 
 
