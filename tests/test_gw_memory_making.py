@@ -128,7 +128,7 @@ def test_arrays_used_without_dim_are_made_where_they_are_first_used_as_pcbasic(p
 def _many_variables_program(rng) -> str:
     """A long program that makes simple variables until the 64 KB run out: a few each line,
     a count of the lines passed, and an error handler printing ERR, ERL, the count and
-    FRE(0) (an area that does not read FRE does not check its makings: docs/compatibility.md)."""
+    FRE(0)."""
     letters = "ABCDEGHJKLMNPQSUVWXYZ"  # (no F: FN starts a function)
     numbers = rng.sample(range(1, 9999), 4000)
     names = [f"{rng.choice(letters)}{n}{rng.choice(['', '', '%', '!', '#', '$'])}" for n in numbers]
@@ -147,9 +147,8 @@ def _many_variables_program(rng) -> str:
 
 def test_a_program_that_makes_many_variables_runs_out_of_memory_as_pcbasic(pc_reason):
     """A new simple variable that does not fit is ``Out of memory`` at the statement that
-    makes it (BIPTRG.ASM SMKVAR, BLTU, REASON), in a program that reads FRE (the areas
-    that count their makings: compiler._counts_made); against PC-BASIC 2.0.8 with GW's
-    room test."""
+    makes it (BIPTRG.ASM SMKVAR, MATH1.ASM BLTU, BIMISC.ASM REASON), here in a program
+    that reads FRE; against PC-BASIC 2.0.8 with GW's room test."""
     rng = random.Random(base_seed() + 73)
     for _ in range(3):
         source = _many_variables_program(rng)
@@ -208,3 +207,40 @@ def test_a_program_that_never_reads_fre_runs_out_of_memory_where_gw_does(pc_reas
         theirs = pc_reason.program(source)
         assert "E 7 " in theirs
         assert run_gw(source) == theirs
+
+
+def _loop_program(rng) -> str:
+    """A loop (FOR ... NEXT, or a line jumped back to) whose statements make their
+    variables on chosen passes (``IF K = 7 THEN AB = 1``, ``IF K > 3 ...``, every pass),
+    and an array used without DIM, after a DIM that leaves a few hundred bytes: no FRE
+    anywhere, ``Out of memory`` on the pass where a new one does not fit."""
+    pool = ["A", "B", "AB", "XY1", "LONGER", "Q%", "R%", "COUNT%", "D#", "BIG#", "S$", "T$", "NAM$", "P1!",
+            "W", "V2", "U%", "H#", "G$", "M1"]
+    names = rng.sample(pool, rng.randint(5, len(pool)))
+    passes = rng.randint(5, 40)
+    body = []
+    for name in names:
+        value = '"AB"' if name.endswith("$") else rng.choice(["0", "1", "K", "K * 2"])
+        test = rng.choice([f"K = {rng.randint(1, passes)}", f"K > {rng.randint(0, passes)}", "1"])
+        body.append(f"IF {test} THEN {name} = {value}")
+    body.append(rng.choice(["E(K MOD 10) = K", "E(1) = E(1) + 1", "C = C + 1"]))
+    rng.shuffle(body)
+    native = rng.random() < 0.5
+    lines = ["10 ON ERROR GOTO 900", f"20 DIM Z({rng.randint(14920, 14990)}): K = 0",
+             f"30 FOR K = 1 TO {passes}" if native else "30 K = K + 1"]
+    lines += [f"{31 + i} {text}" for i, text in enumerate(body)]
+    lines.append(f"{31 + len(body)} " + ("NEXT K" if native else f"IF K < {passes} THEN 30"))
+    lines += [f'800 PRINT "DONE"; K; {"; ".join(names[:4])}: END', '900 PRINT "E"; ERR; ERL; K: END']
+    return "\n".join(lines) + "\n"
+
+
+def test_a_loop_makes_its_variables_on_the_passes_gw_makes_them(pc_reason):
+    """A block that loops back to its own start tests its makings while one is not made
+    and runs its later passes without the tests (compiler._checks_once): the pass and the
+    statement where a new variable is ``Out of memory`` are PC-BASIC 2.0.8's (with GW's
+    room test), in programs that never read FRE."""
+    rng = random.Random(base_seed() + 76)
+    count = max(case_count() // 4, 30)
+    bad, out_of_memory = gw_programs_differing(pc_reason, lambda: _loop_program(rng), count, "E 7 ")
+    assert not bad, f"{len(bad)} of {count} differ, e.g. {bad[:2]}"
+    assert out_of_memory >= count // 3, out_of_memory  # the programs reach the limit

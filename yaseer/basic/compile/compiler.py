@@ -57,6 +57,10 @@ class _Block:
 
 # Where a making's code reads its block's flag again (compiler.made): block_source writes the reading.
 _REFRESH = "#REFRESH#"
+# How a making's test starts (compiler.made), and an array made where it is first read
+# (expressions.BlockScope.array): a pass without those tests leaves them out.
+_MAKING = "if _f and "
+_LAZY_ARRAY = re.compile(r"\(((?:a|b|ai|ad)_\w+) or \(\1 := _arr\('[^']+', \d+\)\)\)")
 
 # What generated code calls that changes the GOSUB/FOR stack and goes on in the same block.
 _STACK_CHANGES = ("_pop(", "_next_any(", "_clear(", "_call(", "_M.", "_gosub(", "_stk.")
@@ -273,7 +277,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             name = self.numbers.name(target.name)
             local = array_local(name)
             self.cur.makes.add(name + "()")  # (compiler.made: tested once the block's makings are done)
-            self.emit(f"if _f and {local} is None: {local} = _arr({name!r}, {len(target.indices)}); {_REFRESH}")
+            self.emit(f"{_MAKING}{local} is None: {local} = _arr({name!r}, {len(target.indices)}); {_REFRESH}")
         if check:
             self.emit(f"_t = {value_code}")
             self.emit(f"if _t - _t: _t = _ovf(_t, {target_kind!r})")
@@ -535,8 +539,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         ``Out of memory`` where it does not fit (``_mk``: machine/variables.py).  The test
         costs a local's truth once every name the block makes is made: the block's ``_f``,
         read from the global ``_f<block>`` as it starts, which the machine keeps true while
-        one of them is not (``CompiledArea.makings``); so a loop pays for its makings on its
-        first pass only.  Elsewhere (no room counted) the names a SWAP may ask about are
+        one of them is not (``CompiledArea.makings``), and a block that loops back to its own
+        start runs its passes without the tests once they are all made (:func:`_checks_once`).
+        Elsewhere (no room counted) the names a SWAP may ask about are
         recorded: those that stand second in a SWAP of the area, and every name in a direct line."""
         if self.variables_made and isinstance(target, ast.Var):
             self.made_name(target.name, counted=True)
@@ -546,9 +551,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         bytes as a variable; a DEF FN parameter's are the function's, memory_model)."""
         name = self.numbers.name(name)
         if counted and self.counts_made:
-            block = self.cur.number
             self.cur.makes.add(name)
-            self.emit(f"if _f and {name!r} not in _made: _mk({name!r}); {_REFRESH}")
+            self.emit(f"{_MAKING}{name!r} not in _made: _mk({name!r}); {_REFRESH}")
         elif self.direct or name in self.watched:
             self.emit(f"_made.add({name!r})")
 
@@ -845,6 +849,65 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             dynamic_types=self.dynamic_types, makings=makings,
         )
 
+    def _pass_lines(self, block: _Block, out: list, points: dict, lines: dict, base: int,
+                    checked: bool = True) -> None:
+        """Append the lines of one pass of ``block`` to ``out`` (its break points to
+        ``points``); ``lines``: the block's loads, stores and checks (block_source).
+        ``checked=False``: the pass of a block whose names are all made, without the tests
+        of its makings (compiler.made)."""
+        load, load_arrays, store = lines["load"], lines["load_arrays"], lines["store"]
+        loop_back, self_loop = lines["loop_back"], lines["self_loop"]
+        pending = None  # a #BREAK# marker waiting for the line it marks
+        code = block.code
+        for k, (indent, text) in enumerate(code):
+            pad = "    " * (indent + base)
+            if not checked:
+                if text.startswith(_MAKING):  # (a "pass" where the making stood alone in its suite)
+                    if k + 1 < len(code) and code[k + 1][0] == indent:
+                        continue
+                    text = "pass"
+                text = _LAZY_ARRAY.sub(r"\1", text)
+            if text == "#FLUSH#":
+                if store:
+                    out.append(pad + store)
+                continue
+            if text == "#RELOAD#":
+                if load:
+                    out.append(pad + load)
+                out += [pad + text for text in load_arrays]
+                continue
+            if text.startswith("#CALL#"):  # a call that returns whether the arrays may have changed
+                call = text[6:]
+                if load_arrays:
+                    out.append(pad + f"if {call}:")
+                    out += [pad + "    " + line for line in load_arrays]
+                else:
+                    out.append(pad + call)
+                if load:
+                    out.append(pad + load)
+                continue
+            if text.startswith("#ARRAY#"):
+                name = text[7:]
+                if name in block.arrays:
+                    out.append(pad + f"{array_local(name)} = _A[{name!r}]")  # just dimensioned
+                continue
+            if text == "#FULL#":
+                text = lines["full_check"]
+            if text.endswith(_REFRESH):
+                text = text[: -len(_REFRESH)] + lines["refresh"]
+            if text.startswith("#BREAK#"):
+                pending = self.break_infos[int(text[7:])]
+                continue
+            if self_loop and (text == loop_back or text.endswith(": " + loop_back)):
+                if text != loop_back:  # "if c: return b": the continue on a line of its own
+                    out.append(pad + text[: -len(loop_back) - 1])
+                    pad += "    "
+                points[len(out) + 1] = (block.first_line, ())  # (lines count from 1: def is 1)
+                text = "continue"
+            if pending is not None:
+                points[len(out) + 1], pending = pending, None
+            out.append(pad + text)
+
     def block_source(self, block: _Block) -> str:
         """The Python text of one block function.
 
@@ -853,7 +916,6 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         line marked ``#BREAK#k`` at the top of each native loop's pass.
         """
         points: dict[int, tuple] = {}
-        pending = None  # a #BREAK# marker waiting for the line it marks
         names = sorted(block.scalars)
         written = [n for n in names if block.scalars[n]]
         load = "; ".join(f"{local_name(n)} = _S[{n!r}]" for n in names)
@@ -882,50 +944,17 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         if full_check == "if _full: _oom()":
             out.append(f"    _full = {self.stack_full}")
         out.append("    try:")
-        if self_loop:
-            out.append("        while True:")
-        for indent, text in block.code:
-            pad = "    " * (indent + base)
-            if text == "#FLUSH#":
-                if store:
-                    out.append(pad + store)
-                continue
-            if text == "#RELOAD#":
-                if load:
-                    out.append(pad + load)
-                out += [pad + text for text in load_arrays]
-                continue
-            if text.startswith("#CALL#"):  # a call that returns whether the arrays may have changed
-                call = text[6:]
-                if load_arrays:
-                    out.append(pad + f"if {call}:")
-                    out += [pad + "    " + line for line in load_arrays]
-                else:
-                    out.append(pad + call)
-                if load:
-                    out.append(pad + load)
-                continue
-            if text.startswith("#ARRAY#"):
-                name = text[7:]
-                if name in block.arrays:
-                    out.append(pad + f"{array_local(name)} = _A[{name!r}]")  # just dimensioned
-                continue
-            if text == "#FULL#":
-                text = full_check
-            if text.endswith(_REFRESH):
-                text = text[: -len(_REFRESH)] + refresh
-            if text.startswith("#BREAK#"):
-                pending = self.break_infos[int(text[7:])]
-                continue
-            if self_loop and (text == loop_back or text.endswith(": " + loop_back)):
-                if text != loop_back:  # "if c: return b": the continue on a line of its own
-                    out.append(pad + text[: -len(loop_back) - 1])
-                    pad += "    "
-                points[len(out) + 1] = (block.first_line, ())  # (lines count from 1: def is 1)
-                text = "continue"
-            if pending is not None:
-                points[len(out) + 1], pending = pending, None
-            out.append(pad + text)
+        lines = dict(load=load, load_arrays=load_arrays, store=store, refresh=refresh,
+                     full_check=full_check, loop_back=loop_back, self_loop=self_loop)
+        if self_loop and _checks_once(block):
+            out.append("        while _f:")  # the passes that make a name: checked (compiler.made)
+            self._pass_lines(block, out, points, lines, base)
+            out.append("        while True:")  # then every pass without a test of its makings
+            self._pass_lines(block, out, points, lines, base, checked=False)
+        else:
+            if self_loop:
+                out.append("        while True:")
+            self._pass_lines(block, out, points, lines, base)
         if not block.code:
             out.append("    " * (1 + base) + "pass")
         out.append("    finally:")
@@ -959,6 +988,14 @@ def _watched_names(flat, full_name):
         names.update(full_name(name) for s in statements if isinstance(s, ast.Common)
                      for name, is_array in s.names if not is_array)
     return frozenset(names)
+
+
+def _checks_once(block: _Block) -> bool:
+    """Does a block that loops back to its own start test its makings (compiler.made) only
+    while one is not made?  Its passes then run in two loops: with the tests while the
+    block's ``_f`` is true, without them from the first pass that starts with every name
+    made, unless the block can unmake one (CLEAR, ERASE) and go on."""
+    return bool(block.makes) and not any("_clear(" in text or "_erase(" in text for _, text in block.code)
 
 
 def _array_loads(arrays: dict[str, int], lazy: bool = False) -> list[str]:

@@ -102,6 +102,7 @@ class BlockScope:
         block.arrays.setdefault(name, ndim)
         local = array_local(name)
         if self.compiler.counts_made and not made:  # made where it is first used, not as the block starts
+            block.makes.add(name + "()")  # (compiler.made: the block's flag waits for it too)
             return f"({local} or ({local} := _arr({name!r}, {ndim})))"
         return local
 
