@@ -202,6 +202,46 @@ def test_literals_and_data_take_no_string_space_as_pcbasic(pc):
         assert run_gw(source) == pc.program(source), source
 
 
+def _empty_side_program(rng) -> str:
+    """Sums with an empty side (a variable holding "", or the literal ""): the other side a
+    literal of two characters or more, a made string, or a variable, stored in simple
+    variables and an array's elements, FRE(0) and FRE("") printed between."""
+    def literal():
+        return '"' + "".join(rng.choice("ABCXYZ ") for _ in range(rng.randint(2, 30))) + '"'
+
+    names = ["A$", "B$", "C$", "D$"]
+    statements = []
+    for _ in range(rng.randint(3, 10)):
+        v, w = rng.choice(names), rng.choice(names)
+        statements.append(rng.choice([
+            f"{v} = Z$ + {literal()}", f"{v} = {literal()} + Z$", f'{v} = {literal()} + ""', f"{v} = Z$ + {w}",
+            f"{v} = {w} + Z$", f"E$(I) = Z$ + {literal()}", f"E$(I) = {v} + Z$", f"{v} = Z$ + Z$",
+            f"{v} = {literal()}", f'{v} = STRING$({rng.randint(2, 40)}, "Q")', f"{v} = {w} + {literal()}",
+            "I = I + 1", f'{v} = ""', "PRINT FRE(0)", 'PRINT FRE("")']))
+    half = len(statements) // 2
+    return "\n".join([
+        f'10 DIM E$(20): I = 1: Z$ = "": A$ = Z$ + {literal()}: B$ = A$: C$ = "": D$ = "XY": PRINT FRE(0)',
+        "20 " + ": ".join(statements[:half] or ["X = 1"]),
+        "30 PRINT FRE(0): " + ": ".join(statements[half:]),
+        '40 PRINT FRE(0); FRE(""): PRINT A$; B$; C$; D$; E$(1); E$(2): END']) + "\n"
+
+
+def test_a_sum_with_an_empty_side_is_a_new_string_as_pcbasic(pc):
+    """``+`` makes a new string of both sides' characters even where one side is empty
+    (BISTRS.ASM CAT: STRINI takes the summed length from the string space, MOVINS copies
+    both in), so ``Z$ + "ABC"`` with Z$ empty takes 3 bytes of string space where the
+    literal ``"ABC"`` takes none: FRE(0) and FRE("") against PC-BASIC 2.0.8."""
+    import random
+
+    from test_differential_support import base_seed, case_count
+
+    rng = random.Random(base_seed() + 57)
+    for _ in range(max(case_count() // 5, 20)):
+        source = _empty_side_program(rng)
+        pc.statement("ON ERROR GOTO 0")
+        assert run_gw(source) == pc.program(source), source
+
+
 def option_base_program(rng) -> str:
     """Arrays made with and without DIM, of each type and up to 3 dimensions, under OPTION
     BASE 0 or 1: the bytes each takes (FRE before and after) and its largest subscripts."""

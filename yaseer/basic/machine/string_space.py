@@ -195,6 +195,8 @@ class StringSpace:
                 n = len(text)
                 if n > longest:
                     raise BasicError("String too long", STRING_TOO_LONG)
+                if (text is b or text is a) and n > 1:  # an empty side: Python gave the other back,
+                    text = text[:1] + text[1:]  # but CAT copies both into a new string (a literal's too)
                 made = count[0] + n
                 count[0] = made
                 if made > count[1]:
