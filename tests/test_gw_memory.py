@@ -161,27 +161,31 @@ def test_arrays_beyond_the_64_kb_segment_are_out_of_memory_as_pcbasic(pc):
     assert out_of_memory >= 4, out_of_memory  # the programs reach the limit, not only use memory
 
 
+def _literal(rng) -> str:
+    """A string literal of 2 to 30 characters."""
+    return '"' + "".join(rng.choice("ABCXYZ ") for _ in range(rng.randint(2, 30))) + '"'
+
+
+def _string_lines(rng, forms) -> list:
+    """Lines 20 and 30 of a generated string program: 3 to 10 statements, each chosen from
+    ``forms(v, w)`` (v, w: two of A$, B$, C$, D$), FRE(0) printed between the halves."""
+    names = ["A$", "B$", "C$", "D$"]
+    statements = [rng.choice(forms(rng.choice(names), rng.choice(names))) for _ in range(rng.randint(3, 10))]
+    half = len(statements) // 2
+    return ["20 " + ": ".join(statements[:half] or ["X = 1"]), "30 PRINT FRE(0): " + ": ".join(statements[half:])]
+
+
 def _literal_program(rng) -> str:
     """Strings that stay in the program text (literals of two characters or more, DATA
     read, copies of either) mixed with made ones, in simple variables and an array's
     elements, FRE(0) and FRE("") printed between."""
-    def literal():
-        return '"' + "".join(rng.choice("ABCXYZ ") for _ in range(rng.randint(2, 30))) + '"'
-
-    names = ["A$", "B$", "C$", "D$"]
-    statements = []
-    for _ in range(rng.randint(3, 10)):
-        v, w = rng.choice(names), rng.choice(names)
-        statements.append(rng.choice([
-            f"{v} = {literal()}", f"READ {v}", f"{v} = {w}", f"E$(I) = {v}", f"E$(I) = {literal()}", "READ E$(I)",
-            f'{v} = STRING$({rng.randint(2, 40)}, "Q")', f"{v} = {w} + {literal()}", "I = I + 1", "PRINT FRE(0)",
-            'PRINT FRE("")']))
-    half = len(statements) // 2
+    lines = _string_lines(rng, lambda v, w: [
+        f"{v} = {_literal(rng)}", f"READ {v}", f"{v} = {w}", f"E$(I) = {v}", f"E$(I) = {_literal(rng)}", "READ E$(I)",
+        f'{v} = STRING$({rng.randint(2, 40)}, "Q")', f"{v} = {w} + {_literal(rng)}", "I = I + 1", "PRINT FRE(0)",
+        'PRINT FRE("")'])
     data = ", ".join(rng.choice(["ABCD", '"QU OTED"', "XY", "LONGER ITEM", '"Z,Z"', "12"]) for _ in range(12))
     return "\n".join([
-        "10 DIM E$(20): I = 1: A$ = STRING$(2, 65): B$ = A$: C$ = A$: D$ = A$: PRINT FRE(0)",
-        "20 " + ": ".join(statements[:half] or ["X = 1"]),
-        "30 PRINT FRE(0): " + ": ".join(statements[half:]),
+        "10 DIM E$(20): I = 1: A$ = STRING$(2, 65): B$ = A$: C$ = A$: D$ = A$: PRINT FRE(0)", *lines,
         '40 PRINT FRE(0); FRE(""): PRINT A$; B$; C$; D$: END', f"50 DATA {data}"]) + "\n"
 
 
@@ -206,24 +210,14 @@ def _empty_side_program(rng) -> str:
     """Sums with an empty side (a variable holding "", or the literal ""): the other side a
     literal of two characters or more, a made string, or a variable, stored in simple
     variables and an array's elements, FRE(0) and FRE("") printed between."""
-    def literal():
-        return '"' + "".join(rng.choice("ABCXYZ ") for _ in range(rng.randint(2, 30))) + '"'
-
-    names = ["A$", "B$", "C$", "D$"]
-    statements = []
-    for _ in range(rng.randint(3, 10)):
-        v, w = rng.choice(names), rng.choice(names)
-        statements.append(rng.choice([
-            f"{v} = Z$ + {literal()}", f"{v} = {literal()} + Z$", f'{v} = {literal()} + ""', f"{v} = Z$ + {w}",
-            f"{v} = {w} + Z$", f"E$(I) = Z$ + {literal()}", f"E$(I) = {v} + Z$", f"{v} = Z$ + Z$",
-            f"{v} = {literal()}", f'{v} = STRING$({rng.randint(2, 40)}, "Q")', f"{v} = {w} + {literal()}",
-            "I = I + 1", f'{v} = ""', "PRINT FRE(0)", 'PRINT FRE("")']))
-    half = len(statements) // 2
+    lines = _string_lines(rng, lambda v, w: [
+        f"{v} = Z$ + {_literal(rng)}", f"{v} = {_literal(rng)} + Z$", f'{v} = {_literal(rng)} + ""', f"{v} = Z$ + {w}",
+        f"{v} = {w} + Z$", f"E$(I) = Z$ + {_literal(rng)}", f"E$(I) = {v} + Z$", f"{v} = Z$ + Z$",
+        f"{v} = {_literal(rng)}", f'{v} = STRING$({rng.randint(2, 40)}, "Q")', f"{v} = {w} + {_literal(rng)}",
+        "I = I + 1", f'{v} = ""', "PRINT FRE(0)", 'PRINT FRE("")'])
     return "\n".join([
-        f'10 DIM E$(20): I = 1: Z$ = "": A$ = Z$ + {literal()}: B$ = A$: C$ = "": D$ = "XY": PRINT FRE(0)',
-        "20 " + ": ".join(statements[:half] or ["X = 1"]),
-        "30 PRINT FRE(0): " + ": ".join(statements[half:]),
-        '40 PRINT FRE(0); FRE(""): PRINT A$; B$; C$; D$; E$(1); E$(2): END']) + "\n"
+        f'10 DIM E$(20): I = 1: Z$ = "": A$ = Z$ + {_literal(rng)}: B$ = A$: C$ = "": D$ = "XY": PRINT FRE(0)',
+        *lines, '40 PRINT FRE(0); FRE(""): PRINT A$; B$; C$; D$; E$(1); E$(2): END']) + "\n"
 
 
 def test_a_sum_with_an_empty_side_is_a_new_string_as_pcbasic(pc):
