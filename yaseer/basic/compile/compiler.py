@@ -127,6 +127,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.variables_made = dialect.variables_made  # SWAP's second variable must exist (see made)
         self.watched: frozenset = frozenset()  # the names whose making is recorded (see made)
         self.counts_made = False  # each making is counted and checked against the 64 KB (see made)
+        self.checked_once: set = set()  # the blocks whose later passes run without those tests (_checks_once)
         self.read_commits = dialect.read_commits  # a READ ends with _read_end (Dialect.read_commits)
         self.numbers = number_model(dialect, def_types)
         # the binade caches' names differ between the variants run in one namespace (TRON, DEF types)
@@ -540,7 +541,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         costs a local's truth once every name the block makes is made: the block's ``_f``,
         read from the global ``_f<block>`` as it starts, which the machine keeps true while
         one of them is not (``CompiledArea.makings``), and a block that loops back to its own
-        start runs its passes without the tests once they are all made (:func:`_checks_once`).
+        start runs its passes without the tests once they are all made (:func:`_checks_once`: ``checked_once``).
         Elsewhere (no room counted) the names a SWAP may ask about are
         recorded: those that stand second in a SWAP of the area, and every name in a direct line."""
         if self.variables_made and isinstance(target, ast.Var):
@@ -833,6 +834,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.emit("_off_end(_ln)")
             self.emit("raise _END")
         pieces = [(None, text) for text in self.prelude]
+        self.checked_once = _checks_once(self.blocks)
         pieces += [(b.first_line, self.block_source(b)) for b in self.blocks]
         if self.numbers.cache_bases:  # each cache the code uses matches nothing until its operation writes it
             pieces.insert(0, (None, self.numbers.cache_prelude("".join(text for _, text in pieces))))
@@ -926,7 +928,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             load = f"{load}; _f = _f{block.number}" if load else f"_f = _f{block.number}"
         store = "; ".join(f"_S[{n!r}] = {local_name(n)}" for n in written)
         loop_back = f"return {block.number}"
-        self_loop = any(text == loop_back or text.endswith(": " + loop_back) for _, text in block.code)
+        self_loop = _loops_back(block)
         # A GOSUB compiled in place checks for a full stack.  Every push onto the stack
         # ends its block, so unless the block pops (a NEXT through the stack), clears
         # or calls out, the stack's length cannot change while the block runs: it is
@@ -946,7 +948,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         out.append("    try:")
         lines = dict(load=load, load_arrays=load_arrays, store=store, refresh=refresh,
                      full_check=full_check, loop_back=loop_back, self_loop=self_loop)
-        if self_loop and _checks_once(block):
+        if block.number in self.checked_once:
             out.append("        while _f:")  # the passes that make a name: checked (compiler.made)
             self._pass_lines(block, out, points, lines, base)
             out.append("        while True:")  # then every pass without a test of its makings
@@ -990,12 +992,31 @@ def _watched_names(flat, full_name):
     return frozenset(names)
 
 
-def _checks_once(block: _Block) -> bool:
-    """Does a block that loops back to its own start test its makings (compiler.made) only
-    while one is not made?  Its passes then run in two loops: with the tests while the
+def _loops_back(block: _Block) -> bool:
+    """Does ``block`` jump back to its own start (its passes run in a ``while`` loop)?"""
+    loop_back = f"return {block.number}"
+    return any(text == loop_back or text.endswith(": " + loop_back) for _, text in block.code)
+
+
+def _checks_once(blocks: list) -> set:
+    """The blocks that loop back to their own start and test their makings (compiler.made)
+    only while one is not made: their passes run in two loops, with the tests while the
     block's ``_f`` is true, without them from the first pass that starts with every name
-    made, unless the block can unmake one (CLEAR, ERASE) and go on."""
-    return bool(block.makes) and not any("_clear(" in text or "_erase(" in text for _, text in block.code)
+    made.  Not a block that can unmake a name (CLEAR, ERASE) and go on; and, since the
+    second loop is a second copy of the block's code to compile, the smallest first, while
+    the copies add at most a quarter of the area's code (or 16,000 characters): a test
+    weighs most in a small loop's pass (in a long one it is a few per cent at most)."""
+    sizes = {b.number: sum(len(text) for _, text in b.code) for b in blocks}
+    budget = max(16_000, sum(sizes.values()) // 4)
+    chosen = set()
+    candidates = [b for b in blocks if b.makes and _loops_back(b) and not any(
+        "_clear(" in text or "_erase(" in text for _, text in b.code)]
+    for block in sorted(candidates, key=lambda b: sizes[b.number]):
+        budget -= sizes[block.number]
+        if budget < 0:
+            break
+        chosen.add(block.number)
+    return chosen
 
 
 def _array_loads(arrays: dict[str, int], lazy: bool = False) -> list[str]:
