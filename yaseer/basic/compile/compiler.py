@@ -32,7 +32,7 @@ import re
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.blocks import data_statements, flatten, nodes, plan, splits, types_fixed, walk_statements
 from yaseer.basic.compile.expressions import (
-    BlockScope, CompileError, ExpressionCompiler, FnScope, calls_fn, may_overflow, syntax_error, type_mismatch,
+    MAKING, BlockScope, CompileError, ExpressionCompiler, FnScope, calls_fn, may_overflow, syntax_error, type_mismatch,
 )
 from yaseer.basic.compile.statements_io import InputOutputCompiler
 from yaseer.basic.compile.loops import LoopCompiler
@@ -52,15 +52,12 @@ class _Block:
         self.scalars: dict[str, bool] = {}  # name -> assigned in this block
         self.arrays: dict[str, int] = {}  # name -> number of dimensions
         self.makes: set[str] = set()  # the simple variables its statements make (compiler.made)
+        self.loop_makes: dict[str, set] = {}  # a native loop's flag -> the names its body makes
         self.first_line = None
 
 
 # Where a making's code reads its block's flag again (compiler.made): block_source writes the reading.
 _REFRESH = "#REFRESH#"
-# How a making's test starts (compiler.made), and an array made where it is first read
-# (expressions.BlockScope.array): a pass without those tests leaves them out.
-_MAKING = "if _f and "
-_LAZY_ARRAY = re.compile(r"\(((?:a|b|ai|ad)_\w+) or \(\1 := _arr\('[^']+', \d+\)\)\)")
 
 # What generated code calls that changes the GOSUB/FOR stack and goes on in the same block.
 _STACK_CHANGES = ("_pop(", "_next_any(", "_clear(", "_call(", "_M.", "_gosub(", "_stk.")
@@ -188,6 +185,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.idle_body = False  # the native loop being compiled has an empty body
         self.whole_index: dict[str, str] = {}  # constant loop variable -> local of its subscript
         self.open_loops: list[tuple] = []  # the native loops around the code being emitted
+        self.loop_makings: list[set] = []  # the names each of those loops' bodies makes (note_making)
+        self.loop_splits: dict[str, tuple] = {}  # the native loops run in two (loops.unchecked_passes)
         self.break_infos: list[tuple] = []  # #BREAK#k markers: (BASIC line, open loops)
         self.break_points: dict[int, dict] = {}  # block -> {Python line: (BASIC line, open loops)}
         self.fn_params: dict[str, list] = {}  # DEF FN name -> parameter names
@@ -277,8 +276,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         if self.counts_made:  # LET's PTRGET makes an array used without DIM before the value is worked out
             name = self.numbers.name(target.name)
             local = array_local(name)
-            self.cur.makes.add(name + "()")  # (compiler.made: tested once the block's makings are done)
-            self.emit(f"{_MAKING}{local} is None: {local} = _arr({name!r}, {len(target.indices)}); {_REFRESH}")
+            self.note_making(name + "()")
+            self.emit(f"{MAKING}{local} is None: {local} = _arr({name!r}, {len(target.indices)}); {_REFRESH}")
         if check:
             self.emit(f"_t = {value_code}")
             self.emit(f"if _t - _t: _t = _ovf(_t, {target_kind!r})")
@@ -547,13 +546,21 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         if self.variables_made and isinstance(target, ast.Var):
             self.made_name(target.name, counted=True)
 
+    def note_making(self, name: str) -> None:
+        """The code being emitted makes ``name`` (a simple variable, or an array: ``A!()``)
+        and tests that it is made first (compiler.made): one of its block's names, and of
+        each native loop's around it (loops.unchecked_passes)."""
+        self.cur.makes.add(name)
+        for names in self.loop_makings:
+            names.add(name)
+
     def made_name(self, name: str, counted: bool = False) -> None:
         """:meth:`made` for the simple variable called ``name`` (``counted``: taking its
         bytes as a variable; a DEF FN parameter's are the function's, memory_model)."""
         name = self.numbers.name(name)
         if counted and self.counts_made:
-            self.cur.makes.add(name)
-            self.emit(f"{_MAKING}{name!r} not in _made: _mk({name!r}); {_REFRESH}")
+            self.note_making(name)
+            self.emit(f"{MAKING}{name!r} not in _made: _mk({name!r}); {_REFRESH}")
         elif self.direct or name in self.watched:
             self.emit(f"_made.add({name!r})")
 
@@ -842,6 +849,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         line_blocks = {number: self.entry_block[i] for number, i in self.line_first.items()
                        if i in self.entry_block}
         makings = {b.number: tuple(sorted(b.makes)) for b in self.blocks if b.makes}
+        makings.update((flag, tuple(sorted(names))) for b in self.blocks for flag, names in b.loop_makes.items())
         return CompiledArea(
             source=source, pieces=pieces, block_count=len(self.blocks), line_blocks=line_blocks,
             block_next=self.block_next, data=self.data, data_lines=self.data_lines,
@@ -860,15 +868,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         load, load_arrays, store = lines["load"], lines["load_arrays"], lines["store"]
         loop_back, self_loop = lines["loop_back"], lines["self_loop"]
         pending = None  # a #BREAK# marker waiting for the line it marks
-        code = block.code
-        for k, (indent, text) in enumerate(code):
+        for indent, text in _passes(block.code, self.loop_splits, checked):
             pad = "    " * (indent + base)
-            if not checked:
-                if text.startswith(_MAKING):  # (a "pass" where the making stood alone in its suite)
-                    if k + 1 < len(code) and code[k + 1][0] == indent:
-                        continue
-                    text = "pass"
-                text = _LAZY_ARRAY.sub(r"\1", text)
             if text == "#FLUSH#":
                 if store:
                     out.append(pad + store)
@@ -990,6 +991,54 @@ def _watched_names(flat, full_name):
         names.update(full_name(name) for s in statements if isinstance(s, ast.Common)
                      for name, is_array in s.names if not is_array)
     return frozenset(names)
+
+
+# An array made where it is first read (expressions.BlockScope.array): code that runs only
+# once its names are made reads the local itself.
+_LAZY_ARRAY = re.compile(r"\(((?:a|b|ai|ad)_\w+) or \(\1 := _arr\('[^']+', \d+\)\)\)")
+
+
+def _passes(code: list, splits: dict, checked: bool = True) -> list:
+    """Generated lines (indent, text) as they run: the native loops marked ``#SPLIT#key``
+    (loops.unchecked_passes; ``splits``: key -> (flag, temporary, arrays, the loop's first
+    line)) in two loops, the passes with the tests of their makings while the loop's flag
+    is true, then the rest without (a ``for`` loop's items from one iterator both share, a
+    ``while`` loop's test starting with the flag; its arrays bound again between: a
+    function may have made one).  ``checked=False``: for code that runs only once every
+    name it makes is made, without those tests and with each loop as it was."""
+    out = []
+    k = 0
+    while k < len(code):
+        indent, text = code[k]
+        if text.startswith("#SPLIT#"):
+            end = k + 1
+            while end < len(code) and code[end][0] > indent:
+                end += 1
+            body = code[k + 1:end]
+            flag, n, arrays, first = splits[text[7:]]
+            k = end
+            if not checked:
+                out += [(indent, first), *_passes(body, splits, False)]
+                continue
+            rebind = [(indent, f"{array_local(a)} = _A.get({a!r})") for a in arrays]
+            if first.startswith("while "):
+                out += [(indent, f"while {flag} and {first[6:]}"), *_passes(body, splits), *rebind, (indent, first)]
+            else:
+                target, _, items = first[4:-1].partition(" in ")
+                out += [(indent, f"_j{n} = iter({items})"), (indent, f"if {flag}:"),
+                        (indent + 1, f"for {target} in _j{n}:"), *((j + 1, line) for j, line in _passes(body, splits)),
+                        (indent + 2, f"if not {flag}: break"), *rebind, (indent, f"for {target} in _j{n}:")]
+            out += _passes(body, splits, False)
+            continue
+        k += 1
+        if not checked:
+            if text.startswith(MAKING):  # (a "pass" where the making stood alone in its suite)
+                if k < len(code) and code[k][0] == indent:
+                    continue
+                text = "pass"
+            text = _LAZY_ARRAY.sub(r"\1", text)
+        out.append((indent, text))
+    return out
 
 
 def _loops_back(block: _Block) -> bool:

@@ -81,6 +81,10 @@ def type_mismatch() -> CompileError:
     return CompileError("Type mismatch", TYPE_MISMATCH)
 
 
+# How the test of a making starts (compiler.made).
+MAKING = "if _f and "
+
+
 class BlockScope:
     """Variable references inside a block: Python locals."""
 
@@ -102,7 +106,7 @@ class BlockScope:
         block.arrays.setdefault(name, ndim)
         local = array_local(name)
         if self.compiler.counts_made and not made:  # made where it is first used, not as the block starts
-            block.makes.add(name + "()")  # (compiler.made: the block's flag waits for it too)
+            self.compiler.note_making(name + "()")  # (compiler.made: the block's flag waits for it too)
             return f"({local} or ({local} := _arr({name!r}, {ndim})))"
         return local
 

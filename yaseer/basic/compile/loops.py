@@ -264,6 +264,24 @@ class LoopCompiler:
             return None  # (a sum of whole numbers below it is exact: the arithmetic's sum is the double's)
         return values, value
 
+    def unchecked_passes(self, block, header: int, n: str, makings: set) -> None:
+        """Mark the native loop whose first line is ``block.code[header]`` (the rest of the
+        block's code its passes) to run in two loops where its body makes variables
+        (``makings``, compiler.made): the passes with the tests of their makings while one
+        is not made (the loop's own flag ``_f<block>_<n>``, kept as a block's:
+        CompiledArea.makings), then the rest without (compiler._passes), so that the passes
+        after the first pay nothing for the makings.  Not where the body can unmake a name
+        (CLEAR, ERASE) or leaves the block."""
+        if not makings or self.cur is not block or any(
+                "_clear(" in text or "_erase(" in text for _, text in block.code[header + 1:]):
+            return
+        key = f"{block.number}_{n}"
+        block.loop_makes[key] = set(makings)
+        arrays = tuple(sorted(name[:-2] for name in makings if name.endswith(")")))
+        indent, text = block.code[header]
+        self.loop_splits[key] = (f"_f{key}", n, arrays, text)
+        block.code[header] = (indent, f"#SPLIT#{key}")
+
     def native_loop(self, i: int) -> int:
         """Emit FOR at ``i`` ... its NEXT as a Python while loop; the index after NEXT."""
         j = self.plan.native[i]
@@ -298,6 +316,7 @@ class LoopCompiler:
         whole = self.counts_whole_numbers(stmt)
         if whole:
             self.whole_vars.add(stmt.var.name)
+        header = len(block.code) - 1  # the loop's "for ... in ...:" or "while ...:" line
         self.indent += 1
         # The top of a pass is where a Ctrl-C may stop the loop so that CONT resumes it:
         # its line is the atomic ``_ln = n`` (nothing in it can be interrupted half-way).
@@ -310,9 +329,11 @@ class LoopCompiler:
         # (the line of the body's first statement, where a break lands; the FOR's for an empty body)
         self.set_line(self.flat[i + 1][0] if j > i + 1 else self.flat[i][0])
         body_mark = len(self.cur.code)
+        self.loop_makings.append(set())
         self.walk(i + 1, j)
         self.trace_line(j)  # a NEXT that starts its line
         self.open_loops.pop()
+        makings = self.loop_makings.pop()
         if len(self.cur.code) == body_mark:
             self.emit("pass")  # an empty body (a delay loop)
         if counting:
@@ -322,6 +343,8 @@ class LoopCompiler:
         self.index = j  # (stepping cannot fail, so NEXT's line needs no marker in the loop)
         increment = repr(step_value) if step_value is not None and not self.numbers.typed else f"_s{n}"
         increment = self.stepping(stmt.var, var, increment)
+        if mode != "while":
+            self.unchecked_passes(block, header, n, makings)
         if mode == "count":
             self.indent -= 2
             self.emit("except BaseException:")
@@ -337,6 +360,7 @@ class LoopCompiler:
             self.whole_index.pop(stmt.var.name, None)
         else:
             self.emit(f"{var} = {increment}")
+            self.unchecked_passes(block, header, n, makings)
             self.indent -= 1
         self.indent -= 1
         # a loop that never runs leaves its variable at the start value (see stmt_For)

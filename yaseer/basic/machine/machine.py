@@ -454,7 +454,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
     def _namespace(self, area, rt: _AreaRuntime) -> dict:
         """The globals the generated code of ``area`` runs with: the machine's state and helpers."""
         ns = {
-            "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range, "type": type, "int": int,
+            "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range, "type": type, "int": int, "iter": iter,
                              "BaseException": BaseException, "KeyError": KeyError},
             "_M": self, "_S": self.scalars, "_A": self.arrays, "_arr": self.array_nd, "_ix": self.subscript_check(0),
             "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_wh": self.while_loops, "_END": END, "_off_end": self._ran_off_end, "_DirectJump": DirectJump,
