@@ -210,10 +210,12 @@ def test_a_program_that_never_reads_fre_runs_out_of_memory_where_gw_does(pc_reas
 
 
 def _loop_program(rng) -> str:
-    """A loop (FOR ... NEXT, or a line jumped back to) whose statements make their
-    variables on chosen passes (``IF K = 7 THEN AB = 1``, ``IF K > 3 ...``, every pass),
-    and an array used without DIM, after a DIM that leaves a few hundred bytes: no FRE
-    anywhere, ``Out of memory`` on the pass where a new one does not fit."""
+    """A loop whose statements make their variables on chosen passes (``IF K = 7 THEN AB
+    = 1``, ``IF K > 3 ...``, every pass), and an array used without DIM, after a DIM that
+    leaves a few hundred bytes: no FRE anywhere, ``Out of memory`` on the pass where a new
+    one does not fit.  The loop: a line jumped back to, or FOR ... NEXT counting up to a
+    constant or a variable, with a variable STEP, down, or with a variable of its own the
+    body does not read (each a different native loop: loops.loop_mode)."""
     pool = ["A", "B", "AB", "XY1", "LONGER", "Q%", "R%", "COUNT%", "D#", "BIG#", "S$", "T$", "NAM$", "P1!",
             "W", "V2", "U%", "H#", "G$", "M1"]
     names = rng.sample(pool, rng.randint(5, len(pool)))
@@ -225,18 +227,21 @@ def _loop_program(rng) -> str:
         body.append(f"IF {test} THEN {name} = {value}")
     body.append(rng.choice(["E(K MOD 10) = K", "E(1) = E(1) + 1", "C = C + 1"]))
     rng.shuffle(body)
-    native = rng.random() < 0.5
-    lines = ["10 ON ERROR GOTO 900", f"20 DIM Z({rng.randint(14920, 14990)}): K = 0",
-             f"30 FOR K = 1 TO {passes}" if native else "30 K = K + 1"]
-    lines += [f"{31 + i} {text}" for i, text in enumerate(body)]
-    lines.append(f"{31 + len(body)} " + ("NEXT K" if native else f"IF K < {passes} THEN 30"))
-    lines += [f'800 PRINT "DONE"; K; {"; ".join(names[:4])}: END', '900 PRINT "E"; ERR; ERL; K: END']
+    form = rng.choice(["goto", "for", "to n", "step s", "down", "count"])
+    head = {"goto": "K = K + 1", "for": f"FOR K = 1 TO {passes}", "to n": "FOR K = 1 TO N",
+            "step s": f"FOR K = 1 TO {passes} STEP S", "down": f"FOR K = {passes} TO 1 STEP -1",
+            "count": "FOR J = 1 TO N: K = K + 1"}[form]
+    tail = {"goto": f"IF K < {passes} THEN 30", "count": "NEXT J"}.get(form, "NEXT K")
+    lines = ["10 ON ERROR GOTO 900", f"20 DIM Z({rng.randint(14920, 14990)}): K = 0: N = {passes}: S = 1",
+             f"30 {head}", *(f"{31 + i} {text}" for i, text in enumerate(body)), f"{31 + len(body)} {tail}",
+             f'800 PRINT "DONE"; K; {"; ".join(names[:4])}: END', '900 PRINT "E"; ERR; ERL; K: END']
     return "\n".join(lines) + "\n"
 
 
 def test_a_loop_makes_its_variables_on_the_passes_gw_makes_them(pc_reason):
-    """A block that loops back to its own start tests its makings while one is not made
-    and runs its later passes without the tests (compiler._checks_once): the pass and the
+    """A block that loops back to its own start, or a native FOR loop, tests its makings
+    while one is not made and runs its later passes without the tests
+    (compiler._checks_once, loops.unchecked_passes): the pass and the
     statement where a new variable is ``Out of memory`` are PC-BASIC 2.0.8's (with GW's
     room test), in programs that never read FRE."""
     rng = random.Random(base_seed() + 76)
