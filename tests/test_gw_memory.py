@@ -236,6 +236,39 @@ def test_a_sum_with_an_empty_side_is_a_new_string_as_pcbasic(pc):
         assert run_gw(source) == pc.program(source), source
 
 
+def _whole_part_program(rng) -> str:
+    """LEFT$, RIGHT$ and MID$ asking for a whole string or more, of literals, variables
+    holding a literal (in the program text), DATA and made strings, stored in simple
+    variables and an array's elements, FRE(0) and FRE("") printed between."""
+    def part(w: str) -> str:
+        n = rng.randint(30, 255)
+        return rng.choice([f"LEFT$({w}, {n})", f"RIGHT$({w}, {n})", f"MID$({w}, 1)", f"MID$({w}, 1, {n})",
+                           f"LEFT$({w}, {rng.randint(1, 3)})", f"MID$({w}, 2)"])
+    lines = _string_lines(rng, lambda v, w: [
+        f"{v} = {part(w)}", f"{v} = {part(_literal(rng))}", f"E$(I) = {part(w)}", f"{v} = {_literal(rng)}",
+        f"READ {v}", f"{v} = {w}", f"{v} = {w} + {_literal(rng)}", "I = I + 1", 'PRINT FRE("")'])
+    data = ", ".join(rng.choice(["ABCD", '"QU OTED"', "XY", "LONGER ITEM"]) for _ in range(12))
+    return "\n".join([
+        f"10 DIM E$(20): I = 1: A$ = {_literal(rng)}: B$ = A$: C$ = STRING$(5, 66): D$ = A$: PRINT FRE(0)",
+        *lines, '40 PRINT FRE(0); FRE(""): PRINT A$; B$; C$; D$; E$(1): END', f"50 DATA {data}"]) + "\n"
+
+
+def test_a_whole_string_s_left_right_or_mid_is_a_new_string_as_pcbasic(pc):
+    """LEFT$, RIGHT$ and MID$ make a new string even where they take all of one that stays
+    in the program text (BISTRS.ASM LEFT$/RIGHT$/MID$ all reach GETSPA for the result), so
+    ``LEFT$(A$, 10)`` with A$ = "ABCDEF" takes 6 bytes of string space: FRE(0) and FRE("")
+    against PC-BASIC 2.0.8."""
+    import random
+
+    from test_differential_support import base_seed, case_count
+
+    rng = random.Random(base_seed() + 58)
+    for _ in range(max(case_count() // 5, 20)):
+        source = _whole_part_program(rng)
+        pc.statement("ON ERROR GOTO 0")
+        assert run_gw(source) == pc.program(source), source
+
+
 def option_base_program(rng) -> str:
     """Arrays made with and without DIM, of each type and up to 3 dimensions, under OPTION
     BASE 0 or 1: the bytes each takes (FRE before and after) and its largest subscripts."""

@@ -210,6 +210,8 @@ class StringSpace:
         def taking(function):
             def made_by(*args):
                 text = function(*args)
+                if id(text) in in_text:  # a literal given back whole (LEFT$ of all of it): GW's
+                    text = text[:1] + text[1:]  # LEFT$, RIGHT$, MID$ copy it all the same (STRINI, MOVINS)
                 made = count[0] + len(text)
                 count[0] = made
                 if made > count[1]:
