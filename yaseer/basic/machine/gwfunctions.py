@@ -228,7 +228,8 @@ def read_number(text: str, largest: float | None = None) -> tuple[float, int]:
     after the first are skipped (``"1.2.3"`` is 1.23, as PC-BASIC reads it).  What
     follows the number is not read: ``"1_2"`` is 1.  No number at all is (0, 0).
     Beyond the double range is ``Overflow``; with ``largest`` (the dialect's
-    ``largest_number``) a number beyond it is an infinity of its sign instead, which
+    ``largest_number``: GW's) the digits are read as GW's ``$FIN`` reads them (56-bit
+    MBF doubles) and a number beyond it is an infinity of its sign instead, which
     the caller passes to the dialect's overflow policy (yaseer/basic/arithmetic/arith_policy.py).
     """
     value, end, _, _ = _read(text, largest)
@@ -289,7 +290,9 @@ def _read_decimal(s: str, largest: float | None = None) -> tuple[float, int, str
         value = math.inf
     else:
         value = abs(float(f"{whole or '0'}.{fraction or '0'}e{max(min(exponent, 400), -400)}"))
-        if 0.0 < value < math.inf:  # GW's 56 bits (the float's nearest where no float holds them)
+        if 0.0 < value < math.inf and largest is not None:
+            # GW's range given: GW's 56 bits (the float's nearest where no float holds them);
+            # else (casio) the float the digits name, up to IEEE's range
             value = values.double_from_decimal(whole, fraction, exponent)
     if value > (_MAX_DOUBLE if largest is None else largest):
         if largest is None:
