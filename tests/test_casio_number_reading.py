@@ -10,20 +10,15 @@ reader (56-bit MBF doubles, whose range ends near 1.7E38) is gw's only: casio re
 
 from __future__ import annotations
 
-import io
 import random
 
 import pytest
 
-from yaseer.basic.machine.machine import Machine
+from test_differential_support import run_yaseer
 
 
 def casio_output(source: str) -> str:
-    screen = io.StringIO()
-    machine = Machine(screen=screen, dialect="casio")
-    machine.load(source)
-    machine.run()
-    return screen.getvalue()
+    return run_yaseer(source, angle=None, dialect="casio")
 
 
 def random_numbers(count: int) -> list[str]:
