@@ -161,6 +161,20 @@ def test_arrays_beyond_the_64_kb_segment_are_out_of_memory_as_pcbasic(pc):
     assert out_of_memory >= 4, out_of_memory  # the programs reach the limit, not only use memory
 
 
+def _programs_match_pcbasic(pc, make, seed: int) -> None:
+    """Programs ``make(rng)`` (the generator seeded ``seed`` past the base seed) print in
+    yaseer's gw what they print in PC-BASIC session ``pc``."""
+    import random
+
+    from test_differential_support import base_seed, case_count
+
+    rng = random.Random(base_seed() + seed)
+    for _ in range(max(case_count() // 5, 20)):
+        source = make(rng)
+        pc.statement("ON ERROR GOTO 0")
+        assert run_gw(source) == pc.program(source), source
+
+
 def _literal(rng) -> str:
     """A string literal of 2 to 30 characters."""
     return '"' + "".join(rng.choice("ABCXYZ ") for _ in range(rng.randint(2, 30))) + '"'
@@ -195,15 +209,7 @@ def test_literals_and_data_take_no_string_space_as_pcbasic(pc):
     only a string in BUF, a file buffer or the string space); the string it replaces is
     garbage until a collection (FRE("") counts from then on): FRE(0) and FRE("") against
     PC-BASIC 2.0.8.  (A literal of one character is left out: the model counts it.)"""
-    import random
-
-    from test_differential_support import base_seed, case_count
-
-    rng = random.Random(base_seed() + 56)
-    for _ in range(max(case_count() // 5, 20)):
-        source = _literal_program(rng)
-        pc.statement("ON ERROR GOTO 0")
-        assert run_gw(source) == pc.program(source), source
+    _programs_match_pcbasic(pc, _literal_program, 56)
 
 
 def _empty_side_program(rng) -> str:
@@ -225,15 +231,7 @@ def test_a_sum_with_an_empty_side_is_a_new_string_as_pcbasic(pc):
     (BISTRS.ASM CAT: STRINI takes the summed length from the string space, MOVINS copies
     both in), so ``Z$ + "ABC"`` with Z$ empty takes 3 bytes of string space where the
     literal ``"ABC"`` takes none: FRE(0) and FRE("") against PC-BASIC 2.0.8."""
-    import random
-
-    from test_differential_support import base_seed, case_count
-
-    rng = random.Random(base_seed() + 57)
-    for _ in range(max(case_count() // 5, 20)):
-        source = _empty_side_program(rng)
-        pc.statement("ON ERROR GOTO 0")
-        assert run_gw(source) == pc.program(source), source
+    _programs_match_pcbasic(pc, _empty_side_program, 57)
 
 
 def _whole_part_program(rng) -> str:
@@ -258,15 +256,7 @@ def test_a_whole_string_s_left_right_or_mid_is_a_new_string_as_pcbasic(pc):
     in the program text (BISTRS.ASM LEFT$/RIGHT$/MID$ all reach GETSPA for the result), so
     ``LEFT$(A$, 10)`` with A$ = "ABCDEF" takes 6 bytes of string space: FRE(0) and FRE("")
     against PC-BASIC 2.0.8."""
-    import random
-
-    from test_differential_support import base_seed, case_count
-
-    rng = random.Random(base_seed() + 58)
-    for _ in range(max(case_count() // 5, 20)):
-        source = _whole_part_program(rng)
-        pc.statement("ON ERROR GOTO 0")
-        assert run_gw(source) == pc.program(source), source
+    _programs_match_pcbasic(pc, _whole_part_program, 58)
 
 
 def option_base_program(rng) -> str:
