@@ -323,3 +323,15 @@ def test_an_entry_in_a_directory_others_can_write_is_never_read(cache):
         assert sealed_cache.read_sealed(entry.name, key, program_cache.MAGIC) is None
     finally:
         cache.chmod(0o700)
+
+
+@pytest.mark.parametrize("dialect", ["casio", "gw"])
+def test_the_key_is_the_same_in_every_process(dialect):
+    """The key holds the dialect's repr: a field whose repr names an address (a function's
+    default repr) would make every process miss the cache."""
+    probe = ("import sys; from yaseer.basic.compile import program_cache\n"
+             "from yaseer.basic.dialects.dialect import get_dialect\n"
+             "print(program_cache.key(0, {10: 'PRINT 1'}, (), get_dialect(sys.argv[1])))")
+    keys = {subprocess.run([sys.executable, "-c", probe, dialect], capture_output=True, text=True, check=True).stdout
+            for _ in range(2)}
+    assert len(keys) == 1 and keys != {"None\n"}

@@ -26,6 +26,7 @@ from __future__ import annotations
 import functools
 import math
 import struct
+from collections import namedtuple
 
 from yaseer.basic.arithmetic import mbf_digits, mbf_double, mbf_double_using, single_arith
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
@@ -522,6 +523,23 @@ def double_from_decimal(whole: str, fraction: str, exponent: int) -> float:
         return double_of(mbf_double.from_decimal(int(whole + fraction or "0"), exponent - len(fraction)))
     except mbf_double.Overflow:
         return math.inf
+
+
+class NumberReading(namedtuple("NumberReading", "largest from_digits")):
+    """How VAL, INPUT, READ and the other readers of typed numbers read digits where the
+    range is not IEEE's: ``largest`` is the range's end (beyond it an infinity of the
+    number's sign, which the caller hands to the dialect's overflow policy), and
+    ``from_digits(whole, fraction, exponent)`` the value the digits name in the machine's
+    own number format.  A dialect without one reads the IEEE double the digits name and
+    calls a number beyond 1.8E+308 ``Overflow``."""
+
+    __slots__ = ()
+
+    def __repr__(self) -> str:  # the same in every process: it keys the compiled-program cache
+        return f"NumberReading({self.largest!r}, {self.from_digits.__module__}.{self.from_digits.__qualname__})"
+
+
+MBF_READING = NumberReading(DOUBLE_LARGEST, double_from_decimal)  # GW's $FIN, up to 2**127
 
 
 @functools.lru_cache(maxsize=4096)

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from collections import namedtuple
 
-from yaseer.basic.arithmetic.values import DOUBLE_LARGEST
+from yaseer.basic.arithmetic.values import MBF_READING
 from yaseer.basic.arithmetic.randomness import GwRandom, RepeatableRandom
 from yaseer.basic.dialects.charset import CASIO as CASIO_CHARACTERS, CASIO_CONTROLS, CP437, LATIN1
 from yaseer.basic.dialects import casio as casio_words
@@ -69,7 +69,7 @@ FIELDS = (
     "comma_trims_number",  # bool: False
     "for_binds_next",  # bool: False
     "arithmetic",  # str: binary
-    "largest_number",  # float | None: None
+    "number_reading",  # values.NumberReading | None: None
     "printer_width",  # int | None: None
     "display",  # tuple[int, int, int] | None: None
     "controls",  # tuple[tuple[int, str], ...]: ()
@@ -206,11 +206,12 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         ``on_division_by_zero`` and ``on_overflow``: ``"stop"`` ends the run
         with the error (Casio); ``"continue"`` prints GW-BASIC's message and
         goes on with the signed largest value, unless ON ERROR traps it.
-        ``largest_number``: where the number range ends when it is not IEEE's
-        (``None``; beyond 1.8E+308 is then an ``Overflow`` error): GW-BASIC's
-        Microsoft Binary Format doubles end where its singles do, at 2**127
-        (``DOUBLE_LARGEST``, printed 1.701411834604692D+38); a double result, or
-        a number read by VAL, INPUT or READ, beyond it follows ``on_overflow``.
+        ``number_reading``: how VAL, INPUT, READ and INPUT # read digits when the
+        machine's numbers are not IEEE doubles (``None``: the double the digits name, and
+        beyond 1.8E+308 an ``Overflow`` error).  GW-BASIC's (``MBF_READING``) reads them
+        as ``$FIN`` does, into 56-bit Microsoft Binary Format doubles, which end where its
+        singles do, at 2**127 (printed 1.701411834604692D+38); a number read beyond it
+        follows ``on_overflow``.
 
     Display and keyboard
         ``display``: ``(columns, rows, shown)`` of the machine's screen model
@@ -342,7 +343,7 @@ GW = Dialect(
     typed_numbers=True, print_digits=7,
     width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
     implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,
-    errors_when_reached=True, comma_trims_number=True, for_binds_next=True, largest_number=DOUBLE_LARGEST,
+    errors_when_reached=True, comma_trims_number=True, for_binds_next=True, number_reading=MBF_READING,
     printer_width=80, joins_unnumbered_lines=False, names_missing_line=False, spaced_relations=True,
     bracket_subscripts=True, display=(80, 25, 25), controls=tuple(sorted(GW_CONTROLS.items())), screen=GW_SCREEN,
     string_length=255,  # a string descriptor holds its length in one byte

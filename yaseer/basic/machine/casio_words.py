@@ -379,7 +379,7 @@ def _expression(text: str, dialect):
 
 def _number_answer(line: str, dialect) -> float | None:
     """The number typed for a formula's variable (INPUT's reading of one number), or None."""
-    values = io_statements.parse_input(line, "n", dialect.largest_number, dialect.string_length)
+    values = io_statements.parse_input(line, "n", dialect.number_reading, dialect.string_length)
     return None if values is None else values[0]
 
 

@@ -20,6 +20,8 @@ The file is read when the statement runs, so a missing file is the statement's e
 
 from __future__ import annotations
 
+from collections import namedtuple
+
 from yaseer.basic.machine import memory_model
 from yaseer.basic.machine.files import read_program
 from yaseer.basic.errors import (
@@ -41,6 +43,14 @@ class ChainTo(ProgramEnd):
         self.lines, self.merge, self.line = lines, merge, line
         self.everything, self.delete, self.run = everything, delete, run
         self.stopped = stopped  # the file's ``Direct statement in file``: raised once the lines are in
+
+
+class ChainStart(namedtuple("ChainStart", "block direct_code", defaults=(None,))):
+    """Where the run goes on after a CHAIN or MERGE: ``block`` of program area 0, or, where
+    ``direct_code`` is given, the error handler's block for that direct line's trapped error
+    (the line a RESUME goes back into): an int and a CompiledArea or None."""
+
+    __slots__ = ()
 
 
 class RunAgain(ProgramEnd):
@@ -279,10 +289,10 @@ class Chaining:
         if last not in program or (first is not None and first > last):
             raise error_for(ILLEGAL_FUNCTION_CALL)
 
-    def chained(self, chain: ChainTo) -> int | tuple | None:
-        """Carry out a CHAIN or MERGE: the program and variables it leaves; the block of area
-        0 to run from (None: MERGE, which stops; a tuple: a direct line's error trapped, see
-        :meth:`_merged_direct_line`)."""
+    def chained(self, chain: ChainTo) -> ChainStart | None:
+        """Carry out a CHAIN or MERGE: the program and variables it leaves; where the run
+        goes on (None: MERGE, which stops; a start with ``direct_code``: a direct line's
+        error trapped, see :meth:`_merged_direct_line`)."""
         program = dict(self.programs.get(0, {}))
         keep = None if chain.everything else self.common_names()
         if chain.delete is not None:
@@ -338,24 +348,23 @@ class Chaining:
                 self.explicit_arrays.add(name)
         self.fns.update(functions)
         self.set_subscript_base(base)
-        return block
+        return ChainStart(block)
 
-    def _merged_direct_line(self, stopped: BasicError) -> tuple:
+    def _merged_direct_line(self, stopped: BasicError) -> ChainStart:
         """MERGE of a file whose first line has no number: GW-BASIC's MERGE reads the file
         as typed lines (DSKCOM.ASM OKGETM goes to MAIN, which sets CURLIN to 65535), and
         no line has yet been entered to clear the error trap (GWMAIN.ASM FINI's RUNC,
         LEVFRE), so the program's ON ERROR GOTO traps ``Direct statement in file`` with
-        ERL 65535.  Returns ``(code, block)``: the file's line compiled as a direct
-        statement, which RESUME runs and RESUME NEXT skips (ERRTXT is the line GW crunched),
-        and the handler's block to run; raises ``stopped`` where nothing traps it.  After
+        ERL 65535.  Returns the handler's block to run, with the file's line compiled as a
+        direct statement, which RESUME runs and RESUME NEXT skips (ERRTXT is the line GW
+        crunched); raises ``stopped`` where nothing traps it.  After
         RESUME [NEXT] the merge is over: the handler's first output closes file #0 (GIO86.ASM
         FINPRT, NLONLY cleared by ERROR)."""
-        code = self._compile("direct", {0: stopped.statement}, direct=True)
-        self.namespaces.pop("direct", None)
+        code = self._compile_direct(stopped.statement)
         handler = self._trap(stopped, 0, 0, code)
         if handler is None:
             raise stopped
-        return code, handler
+        return ChainStart(handler, code)
 
     def common_names(self) -> set[str]:
         """The variables (typed names, as the machine keeps them) of the COMMON statements

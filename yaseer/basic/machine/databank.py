@@ -111,7 +111,7 @@ class DataBank:
         """READ# into a numeric variable: the item as a number (a text is Type mismatch, TM)."""
         from yaseer.basic.machine.gwfunctions import number_field
 
-        value = number_field(self.read(), machine.dialect.largest_number)
+        value = number_field(self.read(), machine.dialect.number_reading)
         if value is None:
             raise BasicError("Type mismatch", TYPE_MISMATCH)
         return value

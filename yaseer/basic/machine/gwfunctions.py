@@ -20,6 +20,10 @@ from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, OVERFLOW
 from yaseer.basic.machine.runtime import cint
 from yaseer.patterns import Pattern
 
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from yaseer.basic.arithmetic.values import NumberReading
+
 _MAX_DOUBLE = 1.7976931348623157e308
 
 
@@ -218,7 +222,7 @@ _EXPONENT = Pattern(r"[ED]([+-]?)(\d*)")
 _RADIX = {"H": (16, "0123456789ABCDEF"), "O": (8, "01234567")}
 
 
-def read_number(text: str, largest: float | None = None) -> tuple[float, int]:
+def read_number(text: str, reading: NumberReading | None = None) -> tuple[float, int]:
     """The number at the start of ``text`` as GW-BASIC reads it, and where it ends.
 
     Blanks (space, tab, line feed) anywhere in it are skipped (``"1 2"`` is 12);
@@ -227,16 +231,17 @@ def read_number(text: str, largest: float | None = None) -> tuple[float, int]:
     ``&H`` hexadecimal / ``&O`` or ``&`` octal (16-bit, ``&HFFFF`` is -1).  Points
     after the first are skipped (``"1.2.3"`` is 1.23, as PC-BASIC reads it).  What
     follows the number is not read: ``"1_2"`` is 1.  No number at all is (0, 0).
-    Beyond the double range is ``Overflow``; with ``largest`` (the dialect's
-    ``largest_number``: GW's) the digits are read as GW's ``$FIN`` reads them (56-bit
-    MBF doubles) and a number beyond it is an infinity of its sign instead, which
-    the caller passes to the dialect's overflow policy (yaseer/basic/arithmetic/arith_policy.py).
+    Without ``reading`` (the dialect's ``number_reading``) the value is the IEEE double
+    the digits name and beyond its range ``Overflow``; with one (GW's: MBF_READING) the
+    digits are read by its ``from_digits`` (GW's ``$FIN``: 56-bit MBF doubles) and a
+    number beyond its ``largest`` is an infinity of its sign instead, which the caller
+    passes to the dialect's overflow policy (yaseer/basic/arithmetic/arith_policy.py).
     """
-    value, end, _, _ = _read(text, largest)
+    value, end, _, _ = _read(text, reading)
     return value, end
 
 
-def val_typed(text: str, largest: float) -> tuple[float, str]:
+def val_typed(text: str, reading: NumberReading | None) -> tuple[float, str]:
     """VAL in gw: the number (:func:`read_number`) and its type as GW-BASIC's VAL gives
     them.  VAL reads with ``FINDBL`` (BISTRS.ASM VAL; MATH1.ASM ``$FINDB``, the reader's
     forced-double entry): a double, whatever the digits, exponent letter or ``#``
@@ -244,7 +249,7 @@ def val_typed(text: str, largest: float) -> tuple[float, str]:
     (``$FINS``), whose value is the one GW's conversion gives (``values.single_literal``).
     ``&H``/``&O`` numbers are GW's integers (``OCTCNS``), kept as singles of the same value.
     Beyond the range infinite."""
-    value, end, kind, literal = _read(text, largest)
+    value, end, kind, literal = _read(text, reading)
     if not literal:
         return value, "!"
     if text[end:].lstrip(_BLANKS)[:1] != "!":
@@ -256,7 +261,7 @@ def val_typed(text: str, largest: float) -> tuple[float, str]:
     return value, "!"
 
 
-def _read(text: str, largest: float | None) -> tuple[float, int, str, str]:
+def _read(text: str, reading: NumberReading | None) -> tuple[float, int, str, str]:
     """(value, end, type, the decimal literal's digits as ``values.single_literal`` reads
     them, "" for ``&H``/``&O``) of the number at the start of ``text``."""
     packed, where = [], []  # the characters without blanks, and their positions
@@ -269,12 +274,12 @@ def _read(text: str, largest: float | None) -> tuple[float, int, str, str]:
         value, used = _read_radix(s)
         kind, literal = "!", ""
     else:
-        value, used, kind, literal = _read_decimal(s, largest)
+        value, used, kind, literal = _read_decimal(s, reading)
     end = where[used - 1] + 1 if used else 0
     return value, end, kind, literal
 
 
-def _read_decimal(s: str, largest: float | None = None) -> tuple[float, int, str, str]:
+def _read_decimal(s: str, reading: NumberReading | None = None) -> tuple[float, int, str, str]:
     match = _DECIMAL.match(s)
     sign, whole, fraction = match.group(1), match.group(2), (match.group(3) or "").replace(".", "")
     if not whole and not fraction:
@@ -290,12 +295,10 @@ def _read_decimal(s: str, largest: float | None = None) -> tuple[float, int, str
         value = math.inf
     else:
         value = abs(float(f"{whole or '0'}.{fraction or '0'}e{max(min(exponent, 400), -400)}"))
-        if 0.0 < value < math.inf and largest is not None:
-            # GW's range given: GW's 56 bits (the float's nearest where no float holds them);
-            # else (casio) the float the digits name, up to IEEE's range
-            value = values.double_from_decimal(whole, fraction, exponent)
-    if value > (_MAX_DOUBLE if largest is None else largest):
-        if largest is None:
+        if 0.0 < value < math.inf and reading is not None:
+            value = reading.from_digits(whole, fraction, exponent)
+    if value > (_MAX_DOUBLE if reading is None else reading.largest):
+        if reading is None:
             raise _overflow()
         value = math.inf
     from yaseer.basic.source.scanner import SINGLE_DIGITS, significant_digits
@@ -322,18 +325,18 @@ def _read_radix(s: str) -> tuple[float, int]:
     return float(value - 0x10000 if value > 0x7FFF else value), used
 
 
-def val(s: str, largest: float | None = None) -> float:
+def val(s: str, reading: NumberReading | None = None) -> float:
     """VAL: the number at the start of ``s`` (see :func:`read_number`), 0 if none."""
-    return read_number(s, largest)[0]
+    return read_number(s, reading)[0]
 
 
-def number_field(text: str, largest: float | None = None) -> float | None:
+def number_field(text: str, reading: NumberReading | None = None) -> float | None:
     """A whole INPUT or DATA field as a number, or None if it is not exactly one number
-    (blanks around and inside it allowed; an empty field is 0; ``largest`` as in
+    (blanks around and inside it allowed; an empty field is 0; ``reading`` as in
     :func:`read_number`)."""
     if not text.strip(_BLANKS):
         return 0.0
-    value, end = read_number(text, largest)
+    value, end = read_number(text, reading)
     if end == 0 or text[end:].strip(_BLANKS):
         return None
     return value

@@ -266,7 +266,7 @@ class InputOutput:
                 line = line[:limit]
             if not line and len(kinds) == 1 and self.dialect.empty_input_keeps:
                 return [None if kind == "n" else "" for kind in kinds]
-            values = parse_input(line, kinds, self.dialect.largest_number, self.dialect.string_length)
+            values = parse_input(line, kinds, self.dialect.number_reading, self.dialect.string_length)
             if values is None and kinds == "n" and self.dialect.words is not None and self.dialect.words.input_expressions:
                 values = self.input_expression(line)  # casio: a numeric expression (casio_words.py)
             if values is not None:
@@ -370,7 +370,7 @@ class InputOutput:
 
     def file_number(self, n) -> float:
         """INPUT #n into a numeric variable: one field, read as GW-BASIC reads numbers."""
-        return gwfunctions.val(self.files.get(n).read_field(True, self.dialect.string_length), self.dialect.largest_number)
+        return gwfunctions.val(self.files.get(n).read_field(True, self.dialect.string_length), self.dialect.number_reading)
 
     def input_chars(self, count, n=None) -> str:
         """INPUT$(count[, #n]): ``count`` characters of the file (or of the input)."""
@@ -472,9 +472,9 @@ def _as_number(value):
     return value
 
 
-def parse_input(text: str, kinds: str, largest: float | None, longest: int):
+def parse_input(text: str, kinds: str, reading, longest: int):
     """The values of one INPUT line for targets of ``kinds`` ("n"/"s"), or None to redo
-    (``largest``: see gwfunctions.read_number); a string over ``longest`` characters is
+    (``reading``: see gwfunctions.read_number); a string over ``longest`` characters is
     String too long."""
     import csv
 
@@ -488,7 +488,7 @@ def parse_input(text: str, kinds: str, largest: float | None, longest: int):
             values.append(runtime.limited(field_text, longest))
             continue
         try:
-            value = gwfunctions.number_field(field_text, largest)
+            value = gwfunctions.number_field(field_text, reading)
         except BasicError:  # beyond the double range
             return None
         if value is None:

@@ -122,7 +122,7 @@ class _AreaRuntime:
         text, line = self.read_item()
         dialect = self.machine.dialect
         try:
-            value = gwfunctions.number_field(text, dialect.largest_number)
+            value = gwfunctions.number_field(text, dialect.number_reading)
         except BasicError as err:
             self.data_index -= 1
             raise err.at(line, self.number) from None
@@ -131,7 +131,7 @@ class _AreaRuntime:
                 if text.strip() in ("+", "-"):
                     return 0.0  # (FIN reads a sign and no digits as 0: nothing is left)
                 self.failed = line
-                return gwfunctions.read_number(text, dialect.largest_number)[0]
+                return gwfunctions.read_number(text, dialect.number_reading)[0]
             self.data_index -= 1
             words = dialect.words
             if words is not None and words.read_mismatch:
@@ -376,6 +376,13 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             compiled = self._compile(area, self.programs.get(area, {}), entry_lines=extra)
         return compiled
 
+    def _compile_direct(self, text: str) -> CompiledArea:
+        """A line typed (or read as typed) without a number, compiled to run once: its
+        namespace is not kept, so the next direct line starts from the program's."""
+        compiled = self._compile("direct", {0: text}, direct=True)
+        self.namespaces.pop("direct", None)
+        return compiled
+
     def _compile(self, area, program: dict, direct: bool = False, entry_lines=(), dynamic_loops=()) -> CompiledArea:
         """Parse, compile and exec one area's program (line -> text); returns the CompiledArea.
 
@@ -488,7 +495,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             ns.update(runtime.single_loop_helpers())
             ns.update(arith_policy.helpers(self.arith, ns["_idiv"], ns["_mod"], ns["_pow"]))
             ns.update(binade_cache.writers(ns))
-            ns.update(val_numbers.helpers(self.arith, ns, self.dialect.largest_number))
+            ns.update(val_numbers.helpers(self.arith, ns, self.dialect.number_reading))
         if self.dialect.free_memory is not None:  # strings take room in GW's 64 KB (string_space.py)
             ns.update(self.string_space.helpers(ns, self.dialect.string_length))
         if self.dialect.words:  # the casio functions (dialects/casio.py)
@@ -871,11 +878,10 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
                         self._run_area(0, code, block, direct=True, handler=True)
                     break
                 except ChainTo as chain:  # CHAIN: on in the new program (MERGE: stop)
-                    area, block = 0, self.chained(chain)
-                    if block is None:
+                    start = self.chained(chain)
+                    if start is None:
                         return "end"
-                    if isinstance(block, tuple):  # its file's direct line's error was trapped
-                        direct_code, block = block
+                    area, block, direct_code = 0, start.block, start.direct_code
                 except RunAgain as again:  # RUN in the program
                     area, block = 0, self.run_again(again)
                 except DirectJump as jump:  # GOTO in that direct line
@@ -912,8 +918,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         """Run statements typed without a line number against the same variables."""
         text = self.dialect.charset.codes(text)
         self.show_messages(entry_messages(text, self.dialect))
-        compiled = self._compile("direct", {0: text}, direct=True)
-        self.namespaces.pop("direct", None)
+        compiled = self._compile_direct(text)
         self.string_space.temps.clear()  # those of a line that failed before
         try:
             self.line = None
@@ -925,10 +930,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
                 raise
             return "end"
         except ChainTo as chain:
-            block = self.chained(chain)
-            if isinstance(block, tuple):  # its file's direct line's error was trapped
-                return self._execute(0, block[1], block[0])
-            return "end" if block is None else self._execute(0, block)
+            start = self.chained(chain)
+            return "end" if start is None else self._execute(0, start.block, start.direct_code)
         except RunAgain as again:
             return self._execute(0, self.run_again(again))
         except ProgramEnd:

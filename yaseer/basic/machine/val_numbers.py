@@ -17,11 +17,11 @@ from yaseer.basic.errors import OVERFLOW
 from yaseer.basic.arithmetic.values import Double, printed_double
 
 
-def helpers(policy, ns: dict, largest: float) -> dict:
+def helpers(policy, ns: dict, reading) -> dict:
     """The compiled code's ``_val``, ``_vop``, ``_vdv``, ``_vneg`` and ``_vlike`` for a
     typed dialect; ``ns`` holds the single and double helpers (``_sadd`` ``_ssub``
     ``_dv`` ``_ddv`` ``_dk``), ``policy`` the overflow policy (arith_policy.py)
-    and ``largest`` the double range's end."""
+    and ``reading`` the dialect's number reading (values.NumberReading)."""
     from yaseer.basic.machine.gwfunctions import val_typed
 
     single_divide, double_divide, in_range = ns["_dv"], ns["_ddv"], ns["_dk"]
@@ -29,7 +29,7 @@ def helpers(policy, ns: dict, largest: float) -> dict:
     doubles = {"+": ns["_dad"], "-": ns["_dsb"], "*": ns["_dml"]}
 
     def val(text: str):
-        value, kind = val_typed(text, largest)
+        value, kind = val_typed(text, reading)
         if kind == "#":
             return printed_double(in_range(value))
         if value - value:  # beyond the single range: the policy's message and value
