@@ -61,6 +61,17 @@ AGREED = {
                                            '40 X = 32768: PRINT STRING$(X, 65)\n50 PRINT LEFT$("ABC", 32768)\n'
                                            '60 PRINT LEFT$("ABC", 300); MID$("ABC", 256)\n70 PRINT RIGHT$("ABC", -1)\n'
                                            '80 END\n100 PRINT ERR; ERL: RESUME NEXT\n'),
+    # a statement's integer arguments made 16-bit integers first (GWEVAL.ASM GETBYT, GETIN2
+    # and GWMAIN.ASM INTIDX call FRCINT; GIO86.ASM's record length too): Overflow
+    "integer arguments of 32768 and above overflow": (
+        '10 ON ERROR GOTO 200\n20 ERROR 32768\n30 ON 32768 GOTO 10\n40 WIDTH 32768\n50 CLOSE 32768\n'
+        '60 PRINT INPUT$(32768)\n70 DIM A(32768)\n80 B(32768) = 1\n90 OPEN "R", 1, "X.DAT", 32768\n'
+        '100 ERROR -32769\n110 ON -32769 GOSUB 10\n120 DIM C(-32769)\n130 PRINT B(-32769); B(40000.7)\n'
+        '150 WIDTH "LPT1:", -40000: PRINT INPUT$(1, 32768)\n160 PRINT B(32767)\n170 END\n'
+        '200 PRINT ERR; ERL: RESUME NEXT\n'),
+    "subscripts from one of 32768 and above overflow": (
+        '10 OPTION BASE 1: ON ERROR GOTO 200\n20 DIM D(3): D(32768) = 1\n30 PRINT D(-32768.6); D(0)\n'
+        '40 END\n200 PRINT ERR; ERL: RESUME NEXT\n'),
     # RETURN reads a line number's digits, else returns plainly (GWMAIN.ASM RETURN, GOTO's LINGET)
     "return with a string": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN "1": PRINT "AFTER"\n',
     "return with a name": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN X\n',

@@ -361,7 +361,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit("return _return()")
 
     def stmt_OnJump(self, stmt, scope):
-        selector = self.numeric(stmt.selector, scope)
+        selector = self.integer(stmt.selector, scope)
         k = self.new_temp()
         self.emit(f"{k} = _on({selector}, {len(stmt.targets)})")
         if None in stmt.targets and not self.words.empty_on_targets:
@@ -435,25 +435,25 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
 
     def stmt_Width(self, stmt, scope):
         if stmt.file is not None:
-            self.emit(f"_M.set_file_width({self.numeric(stmt.file, scope)}, {self.numeric(stmt.columns, scope)})")
+            self.emit(f"_M.set_file_width({self.integer(stmt.file, scope)}, {self.numeric(stmt.columns, scope)})")
             return
         if stmt.device is not None:
             if self.kind_of(stmt.device) != "s":  # WIDTH columns, rows: the screen's size
-                self.emit(f"_M.set_screen_size({self.numeric(stmt.device, scope)}, {self.numeric(stmt.columns, scope)})")
+                self.emit(f"_M.set_screen_size({self.integer(stmt.device, scope)}, {self.integer(stmt.columns, scope)})")
                 return
             device = self.string(stmt.device, scope)
-            self.emit(f"_M.set_device_width({device}, {self.numeric(stmt.columns, scope)})")
+            self.emit(f"_M.set_device_width({device}, {self.integer(stmt.columns, scope)})")
             return
         if self.kind_of(stmt.columns) == "s":
             raise syntax_error()  # WIDTH "LPT1:" without its width
-        self.emit(f"_M.set_width({self.numeric(stmt.columns, scope)}, {stmt.printer})")
+        self.emit(f"_M.set_width({self.integer(stmt.columns, scope)}, {stmt.printer})")
 
     def stmt_Dim(self, stmt, scope):
         if not stmt.arrays and "DIM" not in self.words.empty_statements:
             raise syntax_error()
         for name, sizes in stmt.arrays:
             name = self.numbers.name(name)
-            codes = ", ".join(self.numeric(s, scope) for s in sizes)
+            codes = ", ".join(self.integer(s, scope) for s in sizes)
             self.emit(f"_dim({name!r}, ({codes},))")
             self.emit(f"#ARRAY#{name}")
 
@@ -650,7 +650,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.emit(f"return _resume({stmt.mode == 'next'})")
 
     def stmt_Error(self, stmt, scope):
-        self.emit(f"_error({self.numeric(stmt.code, scope)})")
+        self.emit(f"_error({self.integer(stmt.code, scope)})")
 
     def stmt_Randomize(self, stmt, scope):
         if stmt.seed is not None and self.kind_of(stmt.seed) == "s":

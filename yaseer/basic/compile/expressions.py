@@ -17,12 +17,14 @@ from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.number_models import NUMERIC, RANGE_CHECKED, array_local, local_name
 from yaseer.basic.errors import BasicError, STRING_TOO_LONG, SYNTAX_ERROR, TYPE_MISMATCH
 from yaseer.basic.arithmetic.single_arith import SMALL_CONSTANT
+from yaseer.basic.arithmetic.values import INT_MAX
 
 
 _PY_RELATIONS = {"=": "==", "<>": "!=", "<": "<", ">": ">", "<=": "<=", ">=": ">="}
 
 # name -> (argument kinds of each accepted form, result type, Python callable in the
-# namespace); a kind is "n" number, "s" string, "x" either (FRE).
+# namespace); a kind is "n" number, "i" an integer argument (see integer), "s" string,
+# "x" either (FRE).
 _FUNCTIONS = {
     "SIN": (("n",), "n", "_sin"), "COS": (("n",), "n", "_cos"), "TAN": (("n",), "n", "_tan"),
     "ATN": (("n",), "n", "_atn"), "SQR": (("n",), "n", "_sqrt"), "ABS": (("n",), "n", "abs"),
@@ -40,7 +42,7 @@ _FUNCTIONS = {
     "CVI": (("s",), "n", "_cvi"), "CVS": (("s",), "n", "_cvs"), "CVD": (("s",), "n", "_cvd"),
     "FRE": (("x",), "n", "_fre"), "POS": (("x",), "n", "_pos"), "LPOS": (("n",), "n", "_lpos"),
     "EOF": (("n",), "n", "_eof"), "LOF": (("n",), "n", "_lof"), "LOC": (("n",), "n", "_loc"),
-    "INPUT$": (("n", "nn"), "s", "_input_chars"),
+    "INPUT$": (("i", "ii"), "s", "_input_chars"),
     "PEEK": (("n",), "n", "_peek"),
     "SCREEN": (("nn", "nnn"), "n", "_M.screen_char"),
 }
@@ -64,7 +66,7 @@ def _call_form(forms: tuple, kinds: list) -> str:
     if not same_length:
         raise syntax_error()
     for form in same_length:
-        if all(want in ("x", kind) for want, kind in zip(form, kinds)):
+        if all(want in ("x", kind) or (want, kind) == ("i", "n") for want, kind in zip(form, kinds)):
             return form
     raise type_mismatch()
 
@@ -290,6 +292,14 @@ class ExpressionCompiler:
             raise type_mismatch()
         return code, kind
 
+    def integer(self, node, scope) -> str:
+        """An integer argument (a count, a code, a file or record length, a selector): in a
+        dialect with integers made one as CINT makes it (GW's GETBYT, GETIN2 and the
+        statements that take a word call FRCINT first, GWEVAL.ASM: beyond -32768..32767
+        ``Overflow`` before any range of their own), else the number as it is."""
+        code, kind = self.typed(node, scope)
+        return self.numbers.convert(code, kind, "%")
+
     def kind_of(self, node) -> str:
         """The type of a variable, array element or FN reference (``"s"`` or numeric)."""
         if isinstance(node, (ast.Var, ast.Elem, ast.FnCall)):
@@ -320,7 +330,7 @@ class ExpressionCompiler:
         """The Python target of array element ``node``; ``made``: the array was made just before."""
         code = scope.array(node.name, len(node.indices), made)
         for index in node.indices:
-            if isinstance(index, ast.Num) and index.value >= self.lowest_fast_subscript \
+            if isinstance(index, ast.Num) and self.lowest_fast_subscript <= index.value <= INT_MAX \
                     and index.value == int(index.value):
                 code += f"[{int(index.value)}]"
             elif isinstance(index, ast.Var) and index.name in self.whole_index and isinstance(scope, BlockScope):
@@ -393,6 +403,8 @@ class ExpressionCompiler:
         for arg, want in zip(args, form):
             if want == "s" or (want == "x" and ast.expr_type(arg) == "s"):
                 code, kind = self.string(arg, scope), "s"
+            elif want == "i":
+                code, kind = self.integer(arg, scope), "%"
             else:
                 code, kind = self.typed(arg, scope)
             codes.append(self.numbers.printable(code, kind) if node.name == "STR$" else code)

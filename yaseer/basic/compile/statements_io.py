@@ -231,8 +231,8 @@ class InputOutputCompiler:
         self.emit(f"_restore({stmt.target!r})")
 
     def stmt_Open(self, stmt, scope):
-        length = "None" if stmt.length is None else self.numeric(stmt.length, scope)
-        self.emit(f"_open({self.string(stmt.mode, scope)}, {self.numeric(stmt.number, scope)}, "
+        length = "None" if stmt.length is None else self.integer(stmt.length, scope)
+        self.emit(f"_open({self.string(stmt.mode, scope)}, {self.integer(stmt.number, scope)}, "
                   f"{self.string(stmt.name, scope)}, {length})")
 
     # -- random-access files (random_files.py): a fielded variable is named by its scalar key
@@ -328,7 +328,7 @@ class InputOutputCompiler:
         self.assign(stmt.target, f"_lset({key!r}, {value}, {current}, {stmt.right})", "s", scope, False)
 
     def stmt_Close(self, stmt, scope):
-        self.emit(f"_close(({''.join(self.numeric(n, scope) + ', ' for n in stmt.numbers)}))")
+        self.emit(f"_close(({''.join(self.integer(n, scope) + ', ' for n in stmt.numbers)}))")
 
     def stmt_Kill(self, stmt, scope):
         self.emit(f"_kill({self.string(stmt.name, scope)})")

@@ -13,7 +13,7 @@ import operator
 from collections import deque
 from itertools import repeat
 
-from yaseer.basic.arithmetic.values import Wide, nearest_integer
+from yaseer.basic.arithmetic.values import Wide, nearest_integer, to_int
 from yaseer.basic.errors import (
     BasicError, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_CALL, OVERFLOW, STRING_TOO_LONG,
 )
@@ -60,12 +60,26 @@ def subscript_truncated(x: float) -> int:
     return k
 
 
-def subscript_from_one(x: float) -> int:
-    """An array subscript under OPTION BASE 1: 0 is ``Subscript out of range``."""
-    k = subscript(x)
-    if k == 0:
-        raise IndexError("subscript 0 under OPTION BASE 1")
+def subscript_integer(x: float) -> int:
+    """An array subscript where there are integers (gw): as :func:`subscript`, but made a
+    16-bit integer first (GWMAIN.ASM INTIDX calls FRCINT: beyond -32768..32767 ``Overflow``,
+    before the negative test; PC-BASIC 2.0.8 agrees)."""
+    if 0.5 <= x < 32767.5 and type(x) is not Wide:
+        return int(x + 0.5)
+    k = to_int(x)
+    if k < 0:
+        raise illegal_function_call()
     return k
+
+
+def from_one(read):
+    """The subscript reader ``read`` under OPTION BASE 1: 0 is ``Subscript out of range``."""
+    def subscript_from_one(x: float) -> int:
+        k = read(x)
+        if k == 0:
+            raise IndexError("subscript 0 under OPTION BASE 1")
+        return k
+    return subscript_from_one
 
 
 def cint(x: float) -> int:

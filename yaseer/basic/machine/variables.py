@@ -171,7 +171,8 @@ class Variables:
         words = self.dialect.words
         if words and words.truncates:
             return runtime.subscript_truncated
-        return runtime.subscript if base == 0 else runtime.subscript_from_one
+        read = runtime.subscript_integer if self.dialect.typed_numbers else runtime.subscript
+        return read if base == 0 else runtime.from_one(read)
 
     def free_memory(self, argument) -> float:
         """FRE(x): in GW-BASIC the bytes its segment has left (machine/memory_model.py), the
