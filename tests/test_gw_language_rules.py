@@ -72,6 +72,14 @@ AGREED = {
     "subscripts from one of 32768 and above overflow": (
         '10 OPTION BASE 1: ON ERROR GOTO 200\n20 DIM D(3): D(32768) = 1\n30 PRINT D(-32768.6); D(0)\n'
         '40 END\n200 PRINT ERR; ERL: RESUME NEXT\n'),
+    # ON n GOTO/GOSUB skips as many line numbers as n needs and jumps; a selector that picks
+    # none reads them all, then the statement must end (GWMAIN.ASM NTONGS, LOOPON; GOTO2)
+    "on goto reads the line numbers it needs": (
+        '10 ON ERROR GOTO 200\n20 ON 1 GOTO 30,\n30 ON 0 GOTO\n40 ON 1 GOSUB 300, XYZ: PRINT "after"\n'
+        '50 ON 0 GOSUB: PRINT "fell"\n60 ON 1 GOTO 70 + 3\n70 ON 5 GOTO 20,,30\n80 ON 2 GOTO 20,,30\n'
+        '90 ON 3 GOTO 20,30 XYZ\n100 ON 0 GOTO 20 + 3\n110 ON 2 GOTO 120,"A"\n120 ON 1 GOTO 130,"A"\n'
+        '130 ON 3 GOTO 20,30,\n140 ON 0 GOTO 20 ELSE PRINT "E"\n150 END\n'
+        '200 PRINT ERR; ERL: RESUME NEXT\n300 PRINT "sub": RETURN\n'),
     # RETURN reads a line number's digits, else returns plainly (GWMAIN.ASM RETURN, GOTO's LINGET)
     "return with a string": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN "1": PRINT "AFTER"\n',
     "return with a name": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN X\n',

@@ -40,7 +40,7 @@ from yaseer.basic.dialects.dialect import CASIO
 from yaseer.basic.compile.number_models import array_local, local_name, number_model, variant_function
 from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  (re-exported)
 from yaseer.basic.errors import (
-    BasicError, ILLEGAL_FUNCTION_CALL, OUT_OF_MEMORY, UNDEFINED_LINE, WEND_WITHOUT_WHILE, WHILE_WITHOUT_WEND,
+    BasicError, ILLEGAL_FUNCTION_CALL, OUT_OF_MEMORY, SYNTAX_ERROR, UNDEFINED_LINE, WEND_WITHOUT_WHILE, WHILE_WITHOUT_WEND,
     undefined_line_message,
 )
 
@@ -364,11 +364,17 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         selector = self.integer(stmt.selector, scope)
         k = self.new_temp()
         self.emit(f"{k} = _on({selector}, {len(stmt.targets)})")
-        if None in stmt.targets and not self.words.empty_on_targets:
+        empty_places = not self.words.empty_on_targets and self.late_errors
+        if None in stmt.targets and not self.words.empty_on_targets and not self.late_errors:
             raise syntax_error()
         jumps = {n: self.jump(t) for n, t in enumerate(stmt.targets, 1) if t is not None}
         for n in (n for n, t in enumerate(stmt.targets, 1) if t is None):
-            self.emit(f"if {k} == {n}: {k} = 0")  # an empty place: no branch
+            if empty_places:  # GOTO finds no line number there (GWMAIN.ASM GOTO2: SNERR)
+                self.emit(f"if {k} == {n}: raise _err('Syntax error', {SYNTAX_ERROR})")
+            else:
+                self.emit(f"if {k} == {n}: {k} = 0")  # an empty place: no branch
+        if stmt.rest_error is not None:  # no place picked: the text after the places is read
+            self.emit(f"if not {k}: raise _err({stmt.rest_error.message!r}, {stmt.rest_error.code})")
         if not stmt.gosub:
             for n, jump in jumps.items():
                 self.emit(f"if {k} == {n}: {jump}")

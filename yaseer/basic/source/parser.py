@@ -831,6 +831,9 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     defined = _deferred_definition(tokens, bad_start, err)
     if defined is not None:
         return [defined] + _statements_after_error(tokens, bad_start, dialect)
+    jump = _jump_read_as_needed(tokens, bad_start)
+    if jump is not None:
+        return [jump] + _statements_after_error(tokens, bad_start, dialect)
     touched = _touched_element(tokens, bad_start, err)
     if touched is not None:
         return [touched] + _statements_after_error(tokens, bad_start, dialect)
@@ -883,6 +886,49 @@ def _deferred_definition(tokens: list, start: int, err: BasicError):
         return None
     found[0].body = err
     return found[0]
+
+
+def _jump_read_as_needed(tokens: list, start: int):
+    """A bad ``ON x GOTO``/``GOSUB`` whose selector reads: the jump to the line numbers its
+    text starts with, what follows them its ``rest_error``.  GW-BASIC skips only as many
+    line numbers as the selector needs and jumps (``ON 1 GOTO 20,`` and ``ON 1 GOTO 20 X``
+    go to 20); a selector that picks none reads them all and then the statement must end
+    (GWMAIN.ASM NTONGS, LOOPON; GOTO's LINGET).  None for any other bad statement."""
+    if tokens[start].type != "ON":
+        return None
+    jump = next((k for k in range(start + 1, len(tokens)) if tokens[k].type in ("GOTO", "GOSUB", "_COLON")), None)
+    if jump is None or tokens[jump].type == "_COLON":
+        return None
+    try:
+        found = _parse(tokens[start:jump + 1])
+    except (BasicError, GrammarError):
+        return None
+    if len(found) != 1 or not isinstance(found[0], ast.OnJump):
+        return None
+    targets: list = [None]
+    k = jump + 1
+    while k < len(tokens):
+        kind = tokens[k].type
+        if kind == "NUMBER" and targets[-1] is None and _is_line_number(tokens[k]):
+            targets[-1] = _line_number(tokens[k])
+        elif kind == "COMMA":
+            targets.append(None)
+        else:
+            break
+        k += 1
+    found[0].targets = targets
+    if k < len(tokens) and tokens[k].type not in _STATEMENT_ENDS:
+        found[0].rest_error = BasicError("Syntax error", SYNTAX_ERROR)  # NEWSTT finds no statement's end
+    return found[0]
+
+
+def _is_line_number(token: Token) -> bool:
+    """A NUMBER token GW would have stored as a line number (digits only)."""
+    try:
+        _line_number(token)
+    except BasicError:
+        return False
+    return True
 
 
 def _touched_element(tokens: list, start: int, err: BasicError):

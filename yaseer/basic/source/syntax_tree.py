@@ -238,9 +238,13 @@ class Return:
 
 @_node
 class OnJump:
+    """ON x GOTO/GOSUB: ``targets`` the line numbers (None where a place is empty);
+    ``rest_error`` what the statement's text after them is when the selector picks none of
+    them (GW reads them all then: GWMAIN.ASM NTONGS), None where the statement ends there."""
     selector: object
     targets: list
     gosub: bool
+    rest_error: object = None
 
 
 @_node
