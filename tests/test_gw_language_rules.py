@@ -80,6 +80,20 @@ AGREED = {
         '90 ON 3 GOTO 20,30 XYZ\n100 ON 0 GOTO 20 + 3\n110 ON 2 GOTO 120,"A"\n120 ON 1 GOTO 130,"A"\n'
         '130 ON 3 GOTO 20,30,\n140 ON 0 GOTO 20 ELSE PRINT "E"\n150 END\n'
         '200 PRINT ERR; ERL: RESUME NEXT\n300 PRINT "sub": RETURN\n'),
+    # a keyword alone: LINE INPUT wants its variable (GWMAIN.ASM LINE: PTRGET), DATE$ = and
+    # TIME$ = a formula (GWSTS.ASM PRSDAT, PRSTIM: FRMEVL)
+    "line input alone": '10 LINE INPUT\n',
+    "date$ = alone": '10 DATE$ =\n',
+    "time$ = alone": '10 TIME$=\n',
+    # DATE$ = and TIME$ = set the clock, read back (GWSTS.ASM DATES, TIMES, PRSDAT, PRSTIM)
+    "the clock set": ('10 TIME$ = "12:00:00": PRINT LEFT$(TIME$, 5)\n20 DATE$ = "2-29-2000": PRINT DATE$\n'
+                      '30 DATE$ = "1/2/77": PRINT DATE$: TIME$ = "7": PRINT LEFT$(TIME$, 5)\n'
+                      '40 DATE$ = "12-31-99": PRINT DATE$\n'),
+    "the clock's texts refused": (
+        '10 ON ERROR GOTO 200\n20 TIME$ = 5\n30 TIME$ = "25:00"\n40 TIME$ = ""\n50 TIME$ = "12:60"\n'
+        '60 TIME$ = "12-00"\n70 DATE$ = "2-30-2000"\n80 DATE$ = "1/2/1977"\n90 DATE$ = "1/2"\n'
+        '100 DATE$ = "13-01-1990"\n110 DATE$ = "01-01-2100"\n120 DATE$ = "0-1-1990"\n130 ERR = 1\n'
+        '140 END\n200 PRINT ERR; ERL: RESUME NEXT\n'),
     # RETURN reads a line number's digits, else returns plainly (GWMAIN.ASM RETURN, GOTO's LINGET)
     "return with a string": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN "1": PRINT "AFTER"\n',
     "return with a name": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN X\n',
@@ -239,3 +253,13 @@ def test_file_width_as_getwdt_checks_it(tmp_path):
     source = '10 OPEN "O", 1, "W.TXT": WIDTH #1, 255: PRINT #1, STRING$(200, "a"); STRING$(100, "b")\n'
     yaseer_run(source, tmp_path)
     assert (tmp_path / "W.TXT").read_bytes() == b"a" * 200 + b"b" * 100 + b"\r\n\x1a"
+
+
+def test_the_clock_reads_its_texts_as_the_source_does(tmp_path):
+    """GWSTS.ASM PRSTIM takes ``.`` as a separator too and PRSTIM and PRSDAT do not read
+    what follows their last number (PC-BASIC 2.0.8 refuses both); the clock set goes on
+    from the time set (an offset the machine keeps: machine/clock.py)."""
+    source = ('10 TIME$ = "1:2:3.45x": PRINT LEFT$(TIME$, 5)\n20 DATE$ = "1/2/78x": PRINT DATE$\n'
+              '30 TIME$ = "13:58:59.5": PRINT LEFT$(TIME$, 2); INT(TIMER / 3600)\n'
+              '40 TIME$ = "12": T = TIMER: PRINT T >= 43200 AND T < 43260\n')
+    assert yaseer_run(source, tmp_path) == "01:02\n01-02-1978\n13 13 \n-1 \n"

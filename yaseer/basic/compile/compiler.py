@@ -655,6 +655,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         else:
             self.emit(f"return _resume({stmt.mode == 'next'})")
 
+    def stmt_SetClock(self, stmt, scope):
+        self.emit(f"_M.clock.set({stmt.name!r}, {self.string(stmt.value, scope)})")
+
     def stmt_Error(self, stmt, scope):
         self.emit(f"_error({self.integer(stmt.code, scope)})")
 

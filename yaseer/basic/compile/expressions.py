@@ -51,9 +51,10 @@ _FUNCTIONS = {
 # space gives a temporary's bytes back: BISTRS.ASM LEN1, STRCMP, INSTR and STRNG$ call FRESTR)
 _USING_UP = frozenset({"LEN", "ASC", "VAL", "INSTR", "STRING$", "CVI", "CVS", "CVD"})
 
-# Values without arguments: name -> (Python expression, "s" or None for the integer type).
+# Values without arguments: name -> (Python expression, "s", "!" for the single type (a
+# double made one) or None for the integer type).
 _SYSTEM_VARIABLES = {
-    "ERR": ("_M.err", None), "ERL": ("_M.erl", None), "TIMER": ("_timer()", "n"),
+    "ERR": ("_M.err", None), "ERL": ("_M.erl", None), "TIMER": ("_timer()", "!"),
     "DATE$": ("_date()", "s"), "TIME$": ("_time()", "s"), "INKEY$": ("_inkey()", "s"),
     "CSRLIN": ("_M.cursor_row()", None),
 }
@@ -452,6 +453,8 @@ class ExpressionCompiler:
         if node.name == "PI":
             return self.numbers.pi, "n"
         code, kind = _SYSTEM_VARIABLES[node.name]
+        if kind == "!":
+            return self.numbers.convert(code, "#", "!"), self.numbers.single
         return code, kind or self.numbers.integer
 
     def condition(self, node, scope) -> str:

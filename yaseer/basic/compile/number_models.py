@@ -70,6 +70,7 @@ class PlainNumbers:
     loop_types = frozenset("n")  # the types a FOR variable may have
     widest = "n"  # the type of a number read by READ or INPUT (converted to the target's)
     integer = "n"  # the type of ERR, ERL
+    single = "n"  # the type of TIMER
     pi = repr(3.141592653589793)  # PI: the double nearest to pi
     cache_bases = ()  # (TypedNumbers: the binade caches its code uses)
     whole_steps_below = None  # a short constant loop is run at compile time: any (None), or whole values below this
@@ -156,6 +157,7 @@ class TypedNumbers(PlainNumbers):
     whole_steps_below = 2.0 ** 24  # (a single sum of whole numbers below 2**24 is exact: GW's sum is the double's)
     widest = "#"
     integer = "%"
+    single = "!"
     _SUFFIX = {"INT": "%", "SNG": "!", "DBL": "#", "STR": "$"}
     # result types of the built-in functions: None keeps the argument's type
     _RESULTS = {

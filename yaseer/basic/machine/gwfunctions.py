@@ -1,4 +1,4 @@
-"""GW-BASIC's string, conversion and clock functions, for both dialects.
+"""GW-BASIC's string and conversion functions, for both dialects (the clock's: clock.py).
 
 Strings are Python ``str`` whose characters stand for bytes (``chr(0)``..``chr(255)``).
 Numbers come in and go out as Python floats.  Errors are GW-BASIC's: a count or
@@ -13,7 +13,6 @@ READ of DATA items), which follows GW-BASIC's rules and not Python's float synta
 from __future__ import annotations
 
 import math
-import time
 
 from yaseer.basic.arithmetic import mbf_double, values
 from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, OVERFLOW
@@ -192,26 +191,6 @@ def cvs(s: str) -> float:
 def cvd(s: str) -> float:
     """CVD: the double of 8 bytes, all 56 bits of it (a Wide where a float cannot hold them)."""
     return values.double_of(mbf_double.from_bytes(_str_to_bytes(s, 8)))
-
-
-# ------------------------------------------------------------------ clock
-
-
-def timer() -> float:
-    """TIMER: seconds since midnight (local time), to the hundredth."""
-    now = time.localtime()
-    fraction = time.time() % 1.0
-    return round(now.tm_hour * 3600 + now.tm_min * 60 + now.tm_sec + fraction, 2)
-
-
-def date_dollar() -> str:
-    """DATE$: ``MM-DD-YYYY``."""
-    return time.strftime("%m-%d-%Y")
-
-
-def time_dollar() -> str:
-    """TIME$: ``HH:MM:SS`` (24-hour)."""
-    return time.strftime("%H:%M:%S")
 
 
 # ------------------------------------------------------------------ reading numbers

@@ -52,6 +52,7 @@ from yaseer.basic.compile import program_cache
 from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  MAX_STACK: GOSUB returns + open FOR loops together
 from yaseer.basic.dialects import dialect as dialects
 from yaseer.basic.machine import gwfunctions, memory_model, runtime, string_space, val_numbers
+from yaseer.basic.machine.clock import Clock
 from yaseer.basic.machine.files import FileTable, Sandbox
 from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
     BasicError, OutputError, BREAK, INPUT_PAST_END, NO_RESUME, OUT_OF_DATA, OUT_OF_MEMORY, STRING_TOO_LONG, SYNTAX_ERROR,
@@ -293,6 +294,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         # the program's sequential files, all in one directory (``files``; default the current one)
         words = self.dialect.words
         self.files = FileTable(Sandbox(files), self.dialect.file_devices, words.absent_devices if words else None)
+        self.clock = Clock()  # TIMER, DATE$, TIME$; DATE$ = and TIME$ = move it
         self._output_eof = bool(words and words.output_eof)  # casio: EOF of an output file is 0 (EOF.md item 4)
         self.gosub_levels = words.gosub_levels if words else None  # casio: 96 (GOSUB.md item 2)
         self.for_levels = words.for_levels if words else None  # casio: 29 (FOR_NEXT_STEP.md item 4)
@@ -526,8 +528,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         return {
             "_instr": g.instr, "_string": g.string_dollar, "_space": g.space_dollar,
             "_hex": g.hex_dollar, "_oct": g.oct_dollar, "_mki": g.mki, "_mks": g.mks, "_mkd": g.mkd,
-            "_cvi": g.cvi, "_cvs": g.cvs, "_cvd": g.cvd, "_timer": g.timer, "_date": g.date_dollar,
-            "_time": g.time_dollar, "_xor": g.logical_xor, "_eqv": g.logical_eqv,
+            "_cvi": g.cvi, "_cvs": g.cvs, "_cvd": g.cvd, "_timer": self.clock.timer, "_date": self.clock.date,
+            "_time": self.clock.time, "_xor": g.logical_xor, "_eqv": g.logical_eqv,
             "_imp": g.logical_imp, "_midset": g.mid_assign, "_fre": self.free_memory,
             "_pos": self.cursor_column,
             "_lpos": self.printer_column,

@@ -612,6 +612,11 @@ class _ToAst:
     def string(self, c):
         return ast.Str(c[0].value)
 
+    def clock_stmt(self, c):
+        if c[0].value not in ("DATE$", "TIME$"):  # ERR = 1, CSRLIN = 2: no statement
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return ast.SetClock(c[0].value, c[2])
+
     def sysvar(self, c):
         return ast.SysVar(c[0].value)
 
@@ -725,7 +730,7 @@ def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
 # instead is GW-BASIC's "Missing operand" (``X =``, ``PRINT 1 +``: GWEVAL.ASM EVAL raises
 # MOERR); where only a name or a line number may come (``FOR``, ``DIM``, ``GOTO``) the
 # statement's own scan finds nothing: "Syntax error".
-_OPERAND_STARTS = frozenset(("STRING", "FUNC", "FUNCN", "MINUS", "NOT"))
+_OPERAND_STARTS = frozenset(("FUNC", "FUNCN", "MINUS", "NOT"))
 _STATEMENT_ENDS = frozenset(("$END", "_COLON", "ELSE"))
 
 

@@ -121,6 +121,13 @@ class FnCall:
 
 
 @_node
+class SetClock:
+    """``DATE$ = value`` or ``TIME$ = value``: the machine's clock set (machine/clock.py)."""
+    name: str  # "DATE$" or "TIME$"
+    value: object
+
+
+@_node
 class SysVar:
     name: str  # "ERR", "ERL"
 
