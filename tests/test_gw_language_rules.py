@@ -94,6 +94,11 @@ AGREED = {
         '60 TIME$ = "12-00"\n70 DATE$ = "2-30-2000"\n80 DATE$ = "1/2/1977"\n90 DATE$ = "1/2"\n'
         '100 DATE$ = "13-01-1990"\n110 DATE$ = "01-01-2100"\n120 DATE$ = "0-1-1990"\n130 ERR = 1\n'
         '140 END\n200 PRINT ERR; ERL: RESUME NEXT\n'),
+    # an ELSE that no IF owns is skipped as REM to the line's end (GWMAIN.ASM ELSES; the
+    # cruncher puts a colon before every ELSE, so one after a statement ends it)
+    "else alone": ('10 ELSE PRINT "x"\n20 PRINT "y": ELSE PRINT "x"\n30 PRINT "a" ELSE PRINT "x"\n'
+                   '40 X = 1 ELSE )\n50 GOTO 70 ELSE PRINT "x"\n60 PRINT "no"\n70 FOR I = 1 TO 2 ELSE PRINT "x"\n'
+                   '80 PRINT I; X: NEXT: ON 0 GOTO 60 ELSE 60\n90 IF 0 THEN PRINT "t" ELSE PRINT "e" ELSE PRINT "f"\n'),
     # RETURN reads a line number's digits, else returns plainly (GWMAIN.ASM RETURN, GOTO's LINGET)
     "return with a string": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN "1": PRINT "AFTER"\n',
     "return with a name": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN X\n',

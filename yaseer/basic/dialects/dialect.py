@@ -100,10 +100,11 @@ FIELDS = (
     "for_array_elements",  # bool: True
     "untrapped_errors_noted",  # bool: False
     "using_digits",  # int | None: None
+    "else_alone_skips",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None)
+            None, False, False, True, False, None, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -290,6 +291,10 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         stores ERRLIN and ERRFLG before NTMDCN looks for a trap; NOTRAP resets ONEFLG), so
         ``PRINT ERR; ERL`` typed after a program stopped shows its error; False (casio:
         ERR.md, "can only be changed within a program"): only a trapped error sets them.
+        ``else_alone_skips``: True when an ELSE no IF before it in the line owns is a
+        statement that skips the rest of the line, as REM (GW-BASIC's cruncher puts a colon
+        before every ELSE and GWMAIN.ASM ELSES is REM: ``10 ELSE PRINT 1`` does nothing,
+        ``PRINT 1 ELSE PRINT 2`` prints 1); False: such an ELSE is a Syntax error.
         ``program_areas``: True when ``GOSUB PROG n`` is a statement (the
         library programs are bound at start); False in GW-BASIC, where PROG
         is no word: ``GOSUB PROG n`` is then a syntax error unless program
@@ -353,7 +358,7 @@ GW = Dialect(
     read_commits=True,
     direct_line_number=65535, edit_clears=True, handler_must_resume=True,
     for_array_elements=False, untrapped_errors_noted=True,
-    using_digits=24,
+    using_digits=24, else_alone_skips=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -714,9 +714,23 @@ def _without_all(c: list) -> tuple[list, bool]:
     return c, False
 
 
+def _else_alone(tokens: list, dialect: Dialect) -> list:
+    """``tokens`` up to an ELSE that no IF before it owns, which then ends them as a
+    remark does (see ``Dialect.else_alone_skips``); ``tokens`` where there is none."""
+    if not dialect.else_alone_skips:
+        return tokens
+    for k, token in enumerate(tokens):
+        if token.type == "IF":
+            return tokens
+        if token.type == "ELSE":
+            colon = [Token("_COLON", ":")] if k and tokens[k - 1].type != "_COLON" else []
+            return tokens[:k] + colon + [Token("REMARK", "")]
+    return tokens
+
+
 def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
     """The statements of one line's text as ``dialect`` reads it; raises ``BasicError`` (Syntax error)."""
-    tokens = mark_unsupported(tokenize(text, dialect))
+    tokens = _else_alone(mark_unsupported(tokenize(text, dialect)), dialect)
     if not tokens:
         return []
     _check_nesting(tokens)
@@ -809,7 +823,7 @@ def _place_error(statements: list, rest: list) -> list:
 def _recover(text: str, err: BasicError, dialect: Dialect):
     """The statements of a bad line with ``err`` in place of its first bad statement
     (see :func:`_recover_tokens`); a statement the scanner cannot read is bad in its turn."""
-    tokens = mark_unsupported(tokenize_statements(text, dialect))
+    tokens = _else_alone(mark_unsupported(tokenize_statements(text, dialect)), dialect)
     if any(token.type == UNSCANNED for token in tokens):
         try:  # err was the scanner's; an earlier statement may be bad in another way (``PRINT 1+``)
             _parse(tokens)
