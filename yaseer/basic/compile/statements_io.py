@@ -5,6 +5,8 @@ mixes it in).  The machine's helpers they call are in runtime.py and files.py.
 
 from __future__ import annotations
 
+from contextlib import contextmanager
+
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.expressions import CompileError, syntax_error, type_mismatch
 from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, OUT_OF_DATA, UNDEFINED_LINE, undefined_line_message
@@ -73,8 +75,16 @@ class InputOutputCompiler:
             stmt = ast.Print(stmt.printer, stmt.items, using=stmt.using, channel=stmt.channel)
         device, pr, pru = 1 if stmt.printer else 0, "_pr", "_pru"
         if stmt.channel is not None:  # PRINT #n: the file's stream, found once
-            device, pr, pru = self.new_temp(), "_prf", "_pruf"
+            device = self.new_temp()
             self.emit(f"{device} = _fout({self.numeric(stmt.channel, scope)})")
+            with self.record_buffer(device):
+                self._print_list(stmt, scope, device, "_prf", "_pruf")
+            return
+        self._print_list(stmt, scope, device, pr, pru)
+
+    def _print_list(self, stmt, scope, device, pr, pru):
+        """The items of a PRINT [USING] on ``device`` (a number, or the temporary holding a
+        file's stream) by the machine's functions ``pr`` and ``pru``."""
         parts, newline = self.print_items(stmt.items, scope)
         safe = all(_is_safe_item(item) for item in stmt.items)
         if stmt.using is None:
@@ -103,9 +113,32 @@ class InputOutputCompiler:
         if stmt.channel is not None:
             stream = self.new_temp()
             self.emit(f"{stream} = _fout({self.numeric(stmt.channel, scope)})")
-            self.emit(f"_writef({stream}, ({self.written_items(stmt.items, scope)}))")
+            with self.record_buffer(stream):
+                self.emit(f"_writef({stream}, ({self.written_items(stmt.items, scope)}))")
             return
         self.emit(f"_write(0, ({self.written_items(stmt.items, scope)}))")
+
+    @contextmanager
+    def record_buffer(self, stream: str):
+        """Around PRINT # or WRITE # code on ``stream``: where it is a random file's record
+        buffer (its ``file`` set), the variables are the machine's while it writes (FIELD's
+        variables show the buffer, random_files.RecordStream), also when it stops with an
+        error part way."""
+        self.emit(f"if {stream}.file is not None:")
+        self.emit("    pass")
+        self.indent += 1
+        self.emit("#FLUSH#")
+        self.indent -= 1
+        self.emit("try:")
+        self.indent += 1
+        yield
+        self.indent -= 1
+        self.emit("finally:")
+        self.emit(f"    if {stream}.file is not None:")
+        self.emit("        pass")
+        self.indent += 2
+        self.emit("#RELOAD#")
+        self.indent -= 2
 
     def written_items(self, items, scope) -> str:
         """WRITE's items as Python text pieces: strings in quotes, numbers as STR$ gives

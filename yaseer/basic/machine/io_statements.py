@@ -355,18 +355,34 @@ class InputOutput:
     # ------------------------------------------------------------ files (files.py)
     def print_to(self, stream, items: tuple, newline: bool, end: bool = True) -> None:
         """PRINT #n: the items laid out on the file's stream as on the screen (no csv, no hooks)."""
-        self._lay_out(stream, items, newline)
+        try:
+            self._lay_out(stream, items, newline)
+        finally:
+            self._fields_follow(stream)
 
     def print_using_to(self, stream, fmt: str, values: tuple, newline: bool) -> None:
         """PRINT #n, USING."""
-        stream.write(_formatted(fmt, self._using_values(values), stream, self.dialect.using_digits))
-        if newline:
-            stream.end_line()
+        try:
+            stream.write(_formatted(fmt, self._using_values(values), stream, self.dialect.using_digits))
+            if newline:
+                stream.end_line()
+        finally:
+            self._fields_follow(stream)
 
     def write_to(self, stream, pieces: tuple) -> None:
         """WRITE #n."""
-        stream.write(",".join(pieces))
-        stream.end_line()
+        try:
+            stream.write(",".join(pieces))
+            stream.end_line()
+        finally:
+            self._fields_follow(stream)
+
+    def _fields_follow(self, stream) -> None:
+        """After PRINT # or WRITE # into a random file's record buffer (``stream.file``): its
+        fielded variables show what is there now (GW-BASIC's point into the buffer)."""
+        file = getattr(stream, "file", None)
+        if file is not None:
+            self.scalars.update(file.refreshed(self.scalars))
 
     def file_number(self, n) -> float:
         """INPUT #n into a numeric variable: one field, read as GW-BASIC reads numbers."""

@@ -15,6 +15,11 @@ without a number take the record after the last one read or written (GIODSK.ASM
 ``DSKRND``: the logical record ``FD_LOG`` + 1), also after a GET beyond the end, where
 PC-BASIC 2.0.8 writes at the end of the file instead.
 
+PRINT #, WRITE #, INPUT #, LINE INPUT # and INPUT$ work on the record buffer at its
+position (GIODSK.ASM ``DSKSOT``/``DSKSIN``: ``FD_OPS``), which GET and PUT set back to the
+start; a byte beyond the record is ``FIELD overflow`` (``FOVCHK``).  The FIELD variables
+then show what PRINT # wrote (the machine refreshes them after each such statement).
+
 Characters are bytes (latin-1), as in the sequential files.  A fielded variable is
 named by its key in the machine's scalars (``A$``).  GW-BASIC's field variables point
 into the buffer itself, so a ``LET`` to one detaches it from the buffer: GET no longer
@@ -28,9 +33,12 @@ from __future__ import annotations
 import math
 
 from yaseer.basic.errors import (
-    BAD_FILE_MODE, BAD_RECORD_NUMBER, FIELD_OVERFLOW, ILLEGAL_FUNCTION_CALL, OVERFLOW, error_for,
+    BAD_RECORD_NUMBER, FIELD_OVERFLOW, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END, OVERFLOW, error_for,
 )
+from yaseer.basic.machine import item_reading
+from yaseer.basic.machine.screen import FileStream
 
+END_OF_FILE = "\x1a"  # Ctrl-Z: ends an input item (GIODSK.ASM DSKSIN)
 DEFAULT_LENGTH = 128  # bytes per record without LEN (GW-BASIC's /S default)
 MAX_LENGTH = 32767
 MAX_RECORD = 32767  # the largest record number (a signed 16-bit number above 0)
@@ -52,7 +60,6 @@ class RandomFile:
     """One file open for random access: its handle, record buffer and fields."""
 
     mode = "R"
-    stream = None  # no sequential output stream
 
     def __init__(self, descriptor: int, length: int):
         """``descriptor``: the file, opened for reading and writing by the sandbox (which it
@@ -66,7 +73,10 @@ class RandomFile:
         self.fields: dict[str, tuple[int, int]] = {}  # variable key -> (offset, width)
         self.given: dict[str, str] = {}  # variable key -> the string object it was last given
         self.last = 0  # LOC: the record last read or written
-        self.past_end = False  # the last GET read beyond the end
+        self.past_end = False  # the last GET read beyond the end, or INPUT # met a Ctrl-Z
+        self.position = 0  # the buffer's byte PRINT # writes or INPUT # reads next (FD_OPS)
+        self.given_back: str | None = None  # a character INPUT # gave back (F_BAKC)
+        self.stream = RecordStream(self)
 
     # -- FIELD, LSET, RSET
     def field(self, pairs) -> dict[str, str]:
@@ -135,6 +145,7 @@ class RandomFile:
         self.handle.seek((n - 1) * self.length_of_record)
         data = self.handle.read(self.length_of_record)
         self.past_end = len(data) < self.length_of_record
+        self.position = 0  # DSKRND clears FD_OPS; the column (F_POS) stays
         self.buffer[:] = data + bytes(self.length_of_record - len(data))
         self.last = n
         return {key: self._give(key) for key in list(self.fields) if self.bound(key, scalars.get(key))}
@@ -150,25 +161,80 @@ class RandomFile:
         self.handle.write(self.buffer)
         self.last = n
         self.past_end = False
+        self.position = 0
 
-    # -- what the file functions and statements ask of any open file
-    def output(self):
-        raise error_for(BAD_FILE_MODE)  # PRINT # / WRITE # into a record buffer: not emulated
+    # -- PRINT #, WRITE #, INPUT #, LINE INPUT #, INPUT$ through the record buffer
+    def output(self) -> "RecordStream":
+        """PRINT # and WRITE #: the stream that writes into the record buffer."""
+        return self.stream
 
-    def _input(self):
-        raise error_for(BAD_FILE_MODE)  # INPUT # from a record buffer: not emulated
+    def set_width(self, width: int | None) -> None:
+        """WIDTH #n: the width PRINT # wraps the buffer's lines at (GIO86.ASM FILWID sets
+        any file's ``F_WID``)."""
+        self.stream.width = width
+
+    def store_bytes(self, text: str) -> str:
+        """Write ``text`` into the buffer from its position; the part that fitted (each
+        byte first checks the position against the record length: GIODSK.ASM ``DSKSOT``
+        -> ``FOVCHK``, so the bytes before the one that does not fit are written)."""
+        room = self.length_of_record - self.position
+        part = text[:room]
+        self.buffer[self.position:self.position + len(part)] = part.encode("latin-1", errors="replace")
+        self.position += len(part)
+        return part
+
+    def refreshed(self, scalars: dict) -> dict[str, str]:
+        """The new values of the variables (in ``scalars``) still fielded on this file,
+        after something wrote into the buffer."""
+        return {key: self._give(key) for key in list(self.fields) if self.bound(key, scalars.get(key))}
+
+    def first(self) -> str:
+        """An input item's first character (GIO86.ASM ``INCHR``): the end is ``Input past end``."""
+        ch = self.next()
+        if ch is None:
+            raise error_for(INPUT_PAST_END)
+        return ch
+
+    def next(self) -> str | None:
+        """The next character of the buffer, or None at the file's end (GIO86.ASM
+        ``INCHSI``): a character given back comes first; a file whose last GET read beyond
+        its end (its ``F_ORCT`` 0) is at its end; else GIODSK.ASM ``DSKSIN``: the byte at the
+        position (``FOVCHK``: at the record's end ``FIELD overflow``), and a Ctrl-Z is the
+        end, from then on (``INCEOF``) until the next GET or PUT."""
+        if self.given_back is not None:
+            ch, self.given_back = self.given_back, None
+            return ch
+        if self.past_end:
+            return None
+        if self.position >= self.length_of_record:
+            raise error_for(FIELD_OVERFLOW)
+        ch = chr(self.buffer[self.position])
+        self.position += 1
+        if ch == END_OF_FILE:
+            self.past_end = True
+            return None
+        return ch
+
+    def back(self, ch: str) -> None:
+        """Give ``ch`` back to the next read (GIO86.ASM ``BAKCHR``: kept in the file's block,
+        so a GET or PUT in between does not lose it)."""
+        self.given_back = ch
 
     def read_chars(self, n: int) -> str:
-        return self._input()
+        """INPUT$(n, #f): ``n`` characters (DSKCOM.ASM: each by ``INDSKC``, the end ``Input
+        past end``)."""
+        return "".join(self.first() for _ in range(n))
 
     def read_line(self, longest: int) -> str:
-        return self._input()
+        return item_reading.read_item(self, item_reading.LINE, longest)
 
     def read_field(self, numeric: bool, longest: int) -> str:
-        return self._input()
+        return item_reading.read_item(self, item_reading.NUMBER if numeric else item_reading.TEXT, longest)
 
     def at_end(self) -> bool:
-        return self.past_end
+        """EOF: the last GET read beyond the end, or an input met a Ctrl-Z; not while a
+        character is given back (GIO86.ASM ``EOF`` tests ``FL_BKC`` first)."""
+        return self.past_end and self.given_back is None
 
     def length(self) -> int:
         self.handle.flush()
@@ -186,3 +252,26 @@ def justified(value: str, width: int, right: bool) -> str:
     right for LSET, on the left for RSET."""
     value = value[:width]
     return value.rjust(width) if right else value.ljust(width)
+
+
+class RecordStream(FileStream):
+    """PRINT # and WRITE # on a random file: the text goes into the record buffer from its
+    position (GIODSK.ASM ``DSKSOT`` for a random file), a byte past the record's end is
+    ``FIELD overflow``; the column counts as a sequential file's (``SOUTPS``) and neither
+    GET nor PUT resets it, only a CR does."""
+
+    def __init__(self, file: RandomFile):
+        super().__init__(None)
+        self.file = file
+
+    def write(self, text: str) -> None:
+        part = self.file.store_bytes(text)
+        self.advance(part)
+        if len(part) < len(text):
+            raise error_for(FIELD_OVERFLOW)
+
+    def new_row(self) -> None:
+        self.write("\r\n")
+
+    def flush(self) -> None:
+        pass

@@ -145,11 +145,16 @@ class FileStream(OutputStream):
     disk driver itself never breaks a line (GIODSK.ASM; as PC-BASIC 2.0.8 writes it)."""
 
     row_waits = False
+    file = None  # a random file whose record buffer this writes into (random_files.RecordStream)
 
     def write(self, text: str) -> None:
         if not text:
             return
         self.stream.write(text)
+        self.advance(text)
+
+    def advance(self, text: str) -> None:
+        """Move the column over ``text``, written (SOUTPS)."""
         cr = text.rfind("\r")
         counted = text[cr + 1:] if cr >= 0 else text
         moved = len(counted) if counted.isprintable() else sum(ch >= " " for ch in counted)
