@@ -53,35 +53,32 @@ _FULL = object()  # the item took ``longest`` characters: nothing after it is re
 def _characters(source, kind, ch, ends, quoted, out, longest):
     """Store the item's characters from ``ch`` on; the character that ended it (None: the
     end of the file, "\\r" after its LF was dealt with, _FULL)."""
+    after_lf = False  # LPISLF: in a run of LFs, which a number and a line keep
     while True:
-        if not quoted and ch == "\r":
-            _line_feed(source)
-            return "\r"
         if not quoted and ch == "\n":
-            while ch == "\n":  # LPISLF: a run of LFs
-                if kind != TEXT:  # a number or a line keeps them
-                    out.append(ch)
-                    if len(out) >= longest:
-                        return _FULL
-                ch = source.next()
-                if ch is None:
-                    return None
-            if ch == "\r" and kind != LINE:  # a CR after LFs is skipped
-                ch = source.next()
-                if ch is None:
-                    return None
-                continue
-        if ch == "\0":  # never stored
-            pass
-        elif ch in ends:
-            return ch
+            after_lf = True
+            if kind != TEXT and _stored(out, ch, longest):
+                return _FULL
+        elif not quoted and ch == "\r" and not (after_lf and kind == LINE):
+            if not after_lf:
+                _line_feed(source)
+                return "\r"
+            after_lf = False  # a CR right after LFs is skipped (a line keeps it)
         else:
-            out.append(ch)
-            if len(out) >= longest:
+            after_lf = False
+            if ch in ends:
+                return ch
+            if ch != "\0" and _stored(out, ch, longest):  # a zero byte is never stored
                 return _FULL
         ch = source.next()
         if ch is None:
             return None
+
+
+def _stored(out: list, ch: str, longest: int) -> bool:
+    """Store ``ch``; whether the item is now full (STRCHR)."""
+    out.append(ch)
+    return len(out) >= longest
 
 
 def _after(source, ch) -> None:
