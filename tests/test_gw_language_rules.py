@@ -99,6 +99,15 @@ AGREED = {
     "else alone": ('10 ELSE PRINT "x"\n20 PRINT "y": ELSE PRINT "x"\n30 PRINT "a" ELSE PRINT "x"\n'
                    '40 X = 1 ELSE )\n50 GOTO 70 ELSE PRINT "x"\n60 PRINT "no"\n70 FOR I = 1 TO 2 ELSE PRINT "x"\n'
                    '80 PRINT I; X: NEXT: ON 0 GOTO 60 ELSE 60\n90 IF 0 THEN PRINT "t" ELSE PRINT "e" ELSE PRINT "f"\n'),
+    # checks made before the rest is read: RESUME tests for a handler (GWMAIN.ASM RESUME,
+    # ONEFLG), WHILE scans for its WEND (FIVEO.ASM WHILE, WNDSCN) before FRMEVL
+    "resume x outside a handler": '10 RESUME X\n',
+    "resume x trapped outside a handler": '10 ON ERROR GOTO 100\n20 RESUME "A"\n30 END\n100 PRINT ERR; ERL: END\n',
+    "resume x inside a handler": '10 ON ERROR GOTO 100\n20 ERROR 5\n30 PRINT "after": END\n100 PRINT "h": RESUME X\n',
+    "while alone": '10 PRINT "a": WHILE: PRINT "b"\n20 PRINT "c"\n',
+    "while alone with its wend": '10 WHILE\n20 WEND\n',
+    "while cut with its wend": '10 WHILE 1+\n20 WEND\n',
+    "while cut": '10 WHILE 1+\n',
     # RETURN reads a line number's digits, else returns plainly (GWMAIN.ASM RETURN, GOTO's LINGET)
     "return with a string": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN "1": PRINT "AFTER"\n',
     "return with a name": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN X\n',
@@ -268,3 +277,11 @@ def test_the_clock_reads_its_texts_as_the_source_does(tmp_path):
               '30 TIME$ = "13:58:59.5": PRINT LEFT$(TIME$, 2); INT(TIMER / 3600)\n'
               '40 TIME$ = "12": T = TIMER: PRINT T >= 43200 AND T < 43260\n')
     assert yaseer_run(source, tmp_path) == "01:02\n01-02-1978\n13 13 \n-1 \n"
+
+
+def test_a_while_whose_condition_fails_is_no_loop(tmp_path):
+    """FIVEO.ASM WHILE pushes the $WHILE mark only after FRMEVL: after a trapped error in
+    the condition, RESUME NEXT reaches a WEND whose loop is not running (``WEND without
+    WHILE``; PC-BASIC 2.0.8 evaluates the WHILE again)."""
+    source = '10 ON ERROR GOTO 100\n20 WHILE\n30 WEND: PRINT "n": END\n100 PRINT ERR; ERL: RESUME NEXT\n'
+    assert yaseer_run(source, tmp_path) == " 22  20 \n 30  30 \nn\n"

@@ -481,6 +481,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             block, indent = self.cur, self.indent
             self.while_block[id(stmt)] = start = self.continuation()
             block.code.append((indent, f"return {start}"))
+        if isinstance(stmt.condition, BasicError):  # its WEND found, the condition does not read
+            self.emit(f"raise _err({stmt.condition.message!r}, {stmt.condition.code})")
+            return
         # the loops running (GW's stack of WHILE entries): a WEND reached by a GOTO into a loop
         # that is not running is WEND without WHILE (GWMAIN.ASM WEND searches the stack)
         condition, after = self.condition(stmt.condition, scope), self.after(*found).number
@@ -646,6 +649,10 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.hand_over(f"_M.set_def_types({area}, {stmt.kind!r}, {ranges!r})")
 
     def stmt_Resume(self, stmt, scope):
+        if stmt.mode == "bad":
+            self.emit("if not _M.in_handler: _resume(False)")  # RESUME without error, not trappable
+            self.emit(f"raise _err({stmt.error.message!r}, {stmt.error.code})")
+            return
         if stmt.mode == "line":
             block = self.block_of_line(stmt.target)
             if block is None:

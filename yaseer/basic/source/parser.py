@@ -850,6 +850,9 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     defined = _deferred_definition(tokens, bad_start, err)
     if defined is not None:
         return [defined] + _statements_after_error(tokens, bad_start, dialect)
+    checked_first = _checked_first(tokens, bad_start, err)
+    if checked_first is not None:
+        return [checked_first] + _statements_after_error(tokens, bad_start, dialect)
     jump = _jump_read_as_needed(tokens, bad_start)
     if jump is not None:
         return [jump] + _statements_after_error(tokens, bad_start, dialect)
@@ -905,6 +908,19 @@ def _deferred_definition(tokens: list, start: int, err: BasicError):
         return None
     found[0].body = err
     return found[0]
+
+
+def _checked_first(tokens: list, start: int, err: BasicError):
+    """A bad RESUME or WHILE: the statement with ``err`` in place of what does not read, for
+    the check it makes before reading it to come first (GWMAIN.ASM RESUME: not in a handler,
+    ``RESUME without error``; FIVEO.ASM WHILE looks for its WEND, ``WHILE without WEND``,
+    before it evaluates its condition).  None for any other bad statement."""
+    kind = tokens[start].type
+    if kind == "RESUME":
+        return ast.Resume("bad", error=err)
+    if kind == "WHILE":
+        return ast.While(err)
+    return None
 
 
 def _jump_read_as_needed(tokens: list, start: int):

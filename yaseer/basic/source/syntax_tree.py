@@ -286,7 +286,7 @@ class Clear:
 
 @_node
 class While:
-    condition: object
+    condition: object  # an expression, or the BasicError a condition that does not read is
 
 
 @_node
@@ -470,8 +470,9 @@ class DefFn:
 
 @_node
 class Resume:
-    mode: str  # "retry", "next", "line"
+    mode: str  # "retry", "next", "line", "bad" (the text after RESUME does not read: ``error``)
     target: int | None = None
+    error: object = None  # "bad": the error it is inside a handler (GWMAIN.ASM RESUME tests ONEFLG first)
 
 
 @_node
