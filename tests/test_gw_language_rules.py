@@ -108,6 +108,13 @@ AGREED = {
     "while alone with its wend": '10 WHILE\n20 WEND\n',
     "while cut with its wend": '10 WHILE 1+\n20 WEND\n',
     "while cut": '10 WHILE 1+\n',
+    # a DEF FN with no = : the rest of the statement skipped as DATA, the call's Syntax error
+    # (GWEVAL.ASM DEF, FNDOER)
+    "bare def fn": '10 DEF FNA\n20 PRINT "ok"\n',
+    "bare def fn and a statement": '10 DEF FNA: PRINT "same"\n20 PRINT "ok"\n',
+    "bare def fn called": '10 DEF FNA\n20 PRINT FNA\n',
+    "bare def fn called, trapped": ('10 ON ERROR GOTO 100\n20 DEF FNA: PRINT "d"\n30 X = FNA: PRINT "after"\n'
+                                    '40 DEF FNB$: PRINT FNB$(2)\n50 END\n100 PRINT ERR; ERL: RESUME NEXT\n'),
     # RETURN reads a line number's digits, else returns plainly (GWMAIN.ASM RETURN, GOTO's LINGET)
     "return with a string": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN "1": PRINT "AFTER"\n',
     "return with a name": '10 GOSUB 30: PRINT "BACK": END\n30 PRINT "IN": RETURN X\n',
@@ -285,3 +292,11 @@ def test_a_while_whose_condition_fails_is_no_loop(tmp_path):
     WHILE``; PC-BASIC 2.0.8 evaluates the WHILE again)."""
     source = '10 ON ERROR GOTO 100\n20 WHILE\n30 WEND: PRINT "n": END\n100 PRINT ERR; ERL: RESUME NEXT\n'
     assert yaseer_run(source, tmp_path) == " 22  20 \n 30  30 \nn\n"
+
+
+def test_a_def_fn_skips_what_follows_its_parameters(tmp_path):
+    """GWEVAL.ASM DEF reads the name and a parenthesised parameter list, then goes to DATA
+    (skips to the statement's end) whatever follows; the call finds no ``=`` (FNDOER's
+    SYNCHR): ``Syntax error`` where it is called.  (PC-BASIC 2.0.8 refuses the DEF itself.)"""
+    source = '10 DEF FNA(X) JUNK: PRINT "same"\n20 DEF FNB X = 1: PRINT "too"\n30 PRINT FNA(1)\n'
+    assert yaseer_run(source, tmp_path) == "same\ntoo\nSyntax error in 30\n"

@@ -894,19 +894,24 @@ def _branch(head: list, part: list, err: BasicError, dialect: Dialect):
 
 def _deferred_definition(tokens: list, start: int, err: BasicError):
     """A DEF FN whose name and parameters read but whose body does not: the function, its
-    body the error (raised when it is called: GWMAIN.ASM DEF skips the body, as DATA)."""
-    if start + 1 >= len(tokens) or tokens[start].type != "DEF" or tokens[start + 1].type != "FN":
+    body the error raised when it is called (GWEVAL.ASM DEF reads the name and the
+    parameters in parentheses, if a ``(`` follows, then skips the rest of the statement as
+    DATA does): after ``=`` the body's own error ``err``, with no ``=`` (``DEF FNA``)
+    ``Syntax error`` (FNDOER's SYNCHR for the ``=``).  None when the name or the
+    parameters do not read."""
+    if start + 2 >= len(tokens) or tokens[start].type != "DEF" or tokens[start + 1].type != "FN":
         return None
-    equals = next((k for k in range(start, len(tokens)) if tokens[k].type == "EQ"), None)
-    if equals is None:
-        return None
+    after = start + 3  # past DEF FN name
+    if after < len(tokens) and tokens[after].type == "_LPAR":
+        after = next((k + 1 for k in range(after, len(tokens)) if tokens[k].type in ("_RPAR", "_COLON")), len(tokens))
     try:
-        found = _parse(tokens[start:equals + 1] + [Token("NUMBER", 0.0)])
+        found = _parse(tokens[start:after] + [Token("EQ", "="), Token("NUMBER", 0.0)])
     except (BasicError, GrammarError):
         return None
     if len(found) != 1 or not isinstance(found[0], ast.DefFn):
         return None
-    found[0].body = err
+    equals = after < len(tokens) and tokens[after].type == "EQ"
+    found[0].body = err if equals else BasicError("Syntax error", SYNTAX_ERROR)
     return found[0]
 
 
