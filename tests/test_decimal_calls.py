@@ -250,3 +250,28 @@ def test_inline_functions_in_a_program_change_unit_with_angle():
             total = decimal_arith.add(total, part)
         assert arrays["C"][k] == total, k
         assert arrays["D"][k] == own(arrays["D"][k]) and 0 <= arrays["D"][k] < 1
+
+
+@pytest.mark.parametrize("helper", ["_sin", "_cos"])
+def test_whole_degrees_come_from_the_table_of_the_routines_results(helper):
+    """SIN and COS of a whole angle in degrees below 1E+9 in size take the table of the whole
+    degrees (decimal_arith.WholeDegrees): mpmath's value rounded to 12 digits and the routine's
+    result at the angle itself, over several turns either side, right angles, large angles and
+    the ends of the table's range, with no call of the cache's writer."""
+    rng = random.Random(22)
+    xs = [float(k) for k in range(-1100, 1101)]
+    xs += [float(rng.randint(-10 ** 9 + 1, 10 ** 9 - 1)) for _ in range(1500)]
+    xs += [float(k * 90 + d) for k in (-11111110, -4, 4, 11111110) for d in (-1, 0, 1)]
+    xs += [999999999.0, -999999999.0, 999999720.0, -0.0]
+    site = Site(helper, "DEG")
+    for x in xs:
+        got = site(x)
+        assert got == site.routine(x), (helper, x, got)
+        expected = reference(helper, x)
+        if expected is None:  # a right angle: exactly 0, 1 or -1
+            expected = float(round(getattr(math, helper[1:])(math.radians(x % 360.0))))
+        assert got == expected, (helper, x, got, expected)
+    assert site.slow == 0
+    for x in (1e9, -1e9, 1e12, 12345678901.0):  # beyond the table's range: as before (routine or band test)
+        assert site(x) == site.routine(x)
+    assert site.slow > 0

@@ -374,15 +374,41 @@ def atn(x, degrees: bool = True) -> float:
     return _checked(CONTEXT.plus, r)
 
 
+class WholeDegrees(dict):
+    """SIN (``which`` 0) or COS (1) of the whole angles 0 to 359 degrees (float keys), each the
+    routine's result (:func:`_sine_or_cosine`), computed when first asked for.
+
+    The compiled code looks up ``x % 360.0`` for a whole ``x`` below 1E+9 in size
+    (decimal_calls.WHOLE_TABLE_LIMIT): the remainder of a whole double is exact, and the
+    routine's result at ``x`` is its result at that remainder ``r``, step for step.  Its float
+    path takes ``fmod(x, 360)`` (``x``, or ``r`` or ``r - 360``: the same angle after its own
+    reduction to -180..180), tests ``x % 90`` (the same for both) and bounds the error with
+    ``_off_own`` (0 for both, whole numbers); its decimal path reduces the decimal by 360 exactly
+    to the same ``a`` from 0 up, and its right angles (``_exact_quadrant``) index a list of four
+    by ``d % 360 // 90``, the same entry from both."""
+
+    def __init__(self, which: int):
+        super().__init__()
+        self.which = which
+
+    def __missing__(self, angle: float) -> float:
+        value = self[angle] = _sine_or_cosine(angle, True, self.which)
+        return value
+
+
+WHOLE_SINES, WHOLE_COSINES = WholeDegrees(0), WholeDegrees(1)  # (shared: the values never change)
+
+
 def trig_functions(unit: str) -> dict:
     """The compiled code's ``_sin _cos _tan _atn`` (and the bounds of the float SIN and COS its
     inline code tries first: decimal_calls.py) in decimal arithmetic, in ``unit``
     ("DEG", "RAD" or "GRA": a grad is 0.9 degree, exactly in decimal)."""
+    tables = {"_SDs": WHOLE_SINES, "_SDc": WHOLE_COSINES}  # (used in degrees only: angle_functions' _Xu)
     if unit == "GRA":
-        return {**angle_functions(unit), "_sin": lambda x: sin(multiply(x, 0.9)), "_cos": lambda x: cos(multiply(x, 0.9)),
+        return {**angle_functions(unit), **tables, "_sin": lambda x: sin(multiply(x, 0.9)), "_cos": lambda x: cos(multiply(x, 0.9)),
                 "_tan": lambda x: tan(multiply(x, 0.9)), "_atn": lambda x: divide(atn(x), 0.9)}
     degrees = unit != "RAD"
-    return {**angle_functions(unit), "_sin": partial(_sine_or_cosine, degrees=degrees, which=0),
+    return {**angle_functions(unit), **tables, "_sin": partial(_sine_or_cosine, degrees=degrees, which=0),
             "_cos": partial(_sine_or_cosine, degrees=degrees, which=1),
             "_tan": lambda x: tan(x, degrees), "_atn": lambda x: atn(x, degrees)}
 

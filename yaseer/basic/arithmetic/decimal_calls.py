@@ -17,6 +17,12 @@ the result's decade for the site (never one above the function's :data:`LARGEST_
 size).  A NaN ``v`` (the compiled code's value where the float function does not apply:
 SQR or LN of 0 or less, a large angle with a fraction) fails every test.
 
+SIN and COS of a whole angle in degrees below 1E+9 in size (:data:`WHOLE_TABLE_LIMIT`) take
+neither: their result is looked up in a table of the routine's own results at the whole
+degrees 0..359 (decimal_arith.WholeDegrees, whose docstring shows the routine gives the same
+result at an angle and at its remainder by a turn).  Those are the sites whose values often
+fall below 0.1 (a scale of 1E+13, beyond what the float sine's error allows).
+
 **Why the result is the routine's.**  Every number the arithmetic holds is the nearest
 double ``x`` to a decimal ``D`` of at most 12 digits (decimal_scales.py): ``x = D (1 + d)``
 with ``|d| <= u = 2**-53``.  Let ``X`` be the exact value of the function at ``D`` (what
@@ -59,6 +65,10 @@ LARGEST_SCALE = {"_sqrt": 1e22, "_exp": 1e22, "_rndf": 1e22, "_log": 1e12, "_log
 EXP_LIMIT = 20.0  # |x| below it: EXP's float value is close enough (the bound above)
 WHOLE_LIMIT = 1e15  # a whole angle below it is its decimal: any size of turn is reduced exactly
 RADIAN_LIMIT = 10.0  # an angle in radians with a fraction: below it in size
+# a whole angle in degrees below it in size: SIN and COS from a table of the routine's results for
+# the whole angles 0..359 (decimal_arith.WholeDegrees; the routine reduces such an angle exactly,
+# its float path up to 1E+9: the reduced angle gives the same steps and the same result)
+WHOLE_TABLE_LIMIT = 1e9
 # a whole angle in radians: below it in size (beyond, decimal_arith's routine reduces by a 25-digit
 # 2 pi, as it did before the inline path: its values there stay what they were)
 WHOLE_RADIAN_LIMIT = 1e9
@@ -67,13 +77,15 @@ WHOLE_RADIAN_LIMIT = 1e9
 def angle_functions(unit: str) -> dict:
     """The constants of the compiled code's float SIN and COS in ``unit`` ("DEG", "RAD", "GRA"):
     ``_msin(_mfmod(x, _Tu) * _Ru)`` where ``-_Fu < x < _Fu`` or ``x`` is whole below ``_Wu`` in
-    size (the bounds above), else NaN (always in grads).  In radians the turn is infinite:
+    size (the bounds above), else NaN (always in grads); before that, a whole ``x`` below ``_Xu``
+    in size (degrees only: 0 in radians and grads) takes its result from the table of the whole
+    degrees (``_SDs[x % 360.0]``, :data:`WHOLE_TABLE_LIMIT`).  In radians the turn is infinite:
     ``fmod(x, inf)`` is ``x`` (a finite ``x``: the bounds come first)."""
     if unit == "RAD":
-        return {"_Tu": inf, "_Ru": 1.0, "_Fu": RADIAN_LIMIT, "_Wu": WHOLE_RADIAN_LIMIT}
+        return {"_Tu": inf, "_Ru": 1.0, "_Fu": RADIAN_LIMIT, "_Wu": WHOLE_RADIAN_LIMIT, "_Xu": 0.0}
     if unit == "GRA":  # (decimal_arith's grads are degrees rounded to 12 digits first: the routine)
-        return {"_Tu": 360.0, "_Ru": pi / 180.0, "_Fu": 0.0, "_Wu": 0.0}
-    return {"_Tu": 360.0, "_Ru": pi / 180.0, "_Fu": 360.0, "_Wu": WHOLE_LIMIT}
+        return {"_Tu": 360.0, "_Ru": pi / 180.0, "_Fu": 0.0, "_Wu": 0.0, "_Xu": 0.0}
+    return {"_Tu": 360.0, "_Ru": pi / 180.0, "_Fu": 360.0, "_Wu": WHOLE_LIMIT, "_Xu": WHOLE_TABLE_LIMIT}
 
 
 def helpers(namespace: dict) -> dict:

@@ -681,10 +681,15 @@ class DecimalNumbers(PlainNumbers):
         "_cos": "(_mcos(_mfmod({x}, _Tu) * _Ru) if -_Fu < {first} < _Fu or not {x} % 1.0 and -_Wu < {x} < _Wu else _nan)",
     }
 
+    # SIN and COS of a whole angle in degrees below decimal_calls.WHOLE_TABLE_LIMIT (``_Xu``):
+    # the table of the routine's results at the angle's remainder by a turn (decimal_arith.WholeDegrees)
+    _WHOLE_DEGREES = {"_sin": "_SDs", "_cos": "_SDc"}
+
     def call(self, name: str, helper: str, codes: list[str], kinds: list[str], result: str) -> tuple[str, str]:
         """SQR LN LOG EXP SIN COS and RND's next number inline: the float function's value
         through a scale cache ``_D<n>`` (decimal_calls.py proves it), else decimal_arith's
-        routine through the cache's writer ``_zdf``."""
+        routine through the cache's writer ``_zdf``; SIN and COS of a whole angle in degrees
+        first from the table of the whole degrees (:data:`_WHOLE_DEGREES`)."""
         from yaseer.basic.arithmetic.decimal_calls import LARGEST_SCALE
         from yaseer.basic.arithmetic.decimal_scales import BAND, BOTTOM, MAGIC, TOP
 
@@ -699,16 +704,20 @@ class DecimalNumbers(PlainNumbers):
             x, routine = "_dv", "_d13"
             # a number drawn is below 1: the scale of its decade, 0.1 up or 0.01 up, not a cache's
             scaled = f"(_dv := _rndr()) * (_ds := {1e12!r} if _dv >= 0.1 else {1e13!r})"
-            cache_value = "_ds"
+            cache_value, table = "_ds", None
         else:
             x = codes[0]
             first = x if _plain_operand(x) else f"(_x{n} := {x})"
             x = x if _plain_operand(x) else f"_x{n}"
-            scaled = f"(_dv := {form.format(x=x, first=first)}) * {cache}"
+            table = self._WHOLE_DEGREES.get(helper)
+            scaled = f"(_dv := {form.format(x=x, first=x if table else first)}) * {cache}"
             cache_value, routine = cache, helper
-        return (f"(_dn / {cache_value} if {BOTTOM!r} <= (_dt := {scaled}) < {TOP!r} and "
+        code = (f"(_dn / {cache_value} if {BOTTOM!r} <= (_dt := {scaled}) < {TOP!r} and "
                 f"{-BAND!r} < _dt - (_dn := _dt + {MAGIC!r} - {MAGIC!r}) < {BAND!r} else "
-                f"_zdf({cache!r}, {routine}, {x}, _dv, {LARGEST_SCALE[helper]!r}))"), "n"
+                f"_zdf({cache!r}, {routine}, {x}, _dv, {LARGEST_SCALE[helper]!r}))")
+        if table:  # a whole angle in degrees: the routine's result from a table
+            code = f"({table}[{x} % 360.0] if -_Xu < {first} < _Xu and not {x} % 1.0 else {code})"
+        return code, "n"
 
     whole_steps_below = 1e12  # (a sum of whole numbers below 1E+12 is exact in 12 digits)
 
