@@ -194,13 +194,14 @@ def test_a_protected_program_does_not_list_itself(pc, tmp_path):
 
 
 def test_a_program_saves_itself_protected_as_pc_basic_does(pc, tmp_path):
-    source = '10 A=1.5: B%=-300\n20 SAVE "ITSELF",P\n30 PRINT "not reached"'
+    """... and goes on after it (GIODSK.ASM PROSAV returns through GTMPRT)."""
+    source = '10 A=1.5: B%=-300\n20 SAVE "ITSELF",P\n30 PRINT "goes on"'
     pc_session, pc_directory = pc
     pc_session.execute("NEW")
     pc_session.execute(source)
     pc_session.execute("RUN")
     session, shown = gw_session(tmp_path)
-    assert typed(session, shown, ["NEW"] + source.split("\n") + ["RUN"]) == ""
+    assert typed(session, shown, ["NEW"] + source.split("\n") + ["RUN"]) == "goes on\n"
     assert (tmp_path / "ITSELF.BAS").read_bytes() == (pc_directory / "ITSELF.BAS").read_bytes()
 
 

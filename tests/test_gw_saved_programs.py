@@ -16,6 +16,7 @@ from pathlib import Path
 import pytest
 
 from test_differential_support import base_seed, case_count, clean_output
+from test_gw_files import contents, pcbasic_run, yaseer_run
 from test_gw_protected import generated_lines, gw_session, pc, typed  # noqa: F401 (pc: the fixture)
 
 import yaseer
@@ -162,15 +163,31 @@ def test_generated_programs_save_and_list_as_pc_basic(pc, tmp_path):
 
 
 def test_a_program_saves_itself_tokenised_as_pc_basic(pc, tmp_path):
-    lines = ["10 A=1.5:  B%=-300  ", '20 SAVE "PLAIN"', '30 PRINT "not reached"']
+    lines = ["10 A=1.5:  B%=-300  ", '20 SAVE "PLAIN"', '30 PRINT "goes on"']
     pc_session, pc_directory = pc
     pc_session.execute("NEW")
     pc_session.execute("\n".join(lines))
     pc_session.execute("RUN")
     session, shown = gw_session(tmp_path)
-    assert typed(session, shown, ["NEW"] + lines + ["RUN"]) == ""
+    assert typed(session, shown, ["NEW"] + lines + ["RUN"]) == "goes on\n"
     mine = (tmp_path / "PLAIN.BAS").read_bytes()
     assert mine == (pc_directory / "PLAIN.BAS").read_bytes() and mine[0] == 0xFF
+
+
+@pytest.mark.parametrize("option", ["", ",P", ",A"])
+def test_a_program_goes_on_after_a_plain_or_protected_save(tmp_path, option):
+    """GIO86.ASM BINSAV ends in DSKCOM.ASM PRGFIN and GIODSK.ASM PROSAV in GTMPRT: both go
+    back to the statement after the SAVE, with the variables and open files as they were;
+    SAVE ,A is LIST's work, which ends the run.  Output and files as PC-BASIC 2.0.8's."""
+    source = (f'10 A=7: OPEN "O",1,"LOG.TXT": PRINT #1,"before"\n20 SAVE "GOES"{option}: PRINT "then";A\n'
+              '30 PRINT #1,"after": CLOSE: PRINT "closed"\n')
+    theirs_dir, ours_dir = tmp_path / "pcbasic", tmp_path / "yaseer"
+    theirs_dir.mkdir()
+    ours_dir.mkdir()
+    theirs, ours = pcbasic_run(source, theirs_dir), yaseer_run(source, ours_dir)
+    assert ours == theirs
+    assert ("then 7 \nclosed" in ours) == (option != ",A")
+    assert contents(ours_dir) == contents(theirs_dir)
 
 
 def test_merge_refuses_a_tokenised_file(tmp_path):

@@ -101,10 +101,11 @@ FIELDS = (
     "untrapped_errors_noted",  # bool: False
     "using_digits",  # int | None: None
     "else_alone_skips",  # bool: False
+    "saves_going_on",  # tuple[str, ...]: ()
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None, False)
+            None, False, False, True, False, None, False, ())
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -295,6 +296,11 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         statement that skips the rest of the line, as REM (GW-BASIC's cruncher puts a colon
         before every ELSE and GWMAIN.ASM ELSES is REM: ``10 ELSE PRINT 1`` does nothing,
         ``PRINT 1 ELSE PRINT 2`` prints 1); False: such an ELSE is a Syntax error.
+        ``saves_going_on``: the options of a SAVE in a program after which the program
+        goes on with its next statement (GW-BASIC: a plain SAVE and ``,P``: GIO86.ASM BINSAV
+        ends in DSKCOM.ASM PRGFIN and GIODSK.ASM PROSAV in GTMPRT, back to the statement
+        after it; ``,A`` is done by LIST, which ends the run); () (casio: SAVE_SAVE_ALL.md
+        item 7, command standby once SAVE is done): every SAVE ends the run.
         ``program_areas``: True when ``GOSUB PROG n`` is a statement (the
         library programs are bound at start); False in GW-BASIC, where PROG
         is no word: ``GOSUB PROG n`` is then a syntax error unless program
@@ -358,7 +364,7 @@ GW = Dialect(
     read_commits=True,
     direct_line_number=65535, edit_clears=True, handler_must_resume=True,
     for_array_elements=False, untrapped_errors_noted=True,
-    using_digits=24, else_alone_skips=True,
+    using_digits=24, else_alone_skips=True, saves_going_on=("", "P"),
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

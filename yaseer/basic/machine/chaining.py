@@ -91,8 +91,8 @@ class Chaining:
         return lines, stopped
 
     def program_command(self, name: str, argument, option, everything: bool = False) -> None:
-        """A command run by a program (GW-BASIC runs them and, but for RUN, returns to
-        direct mode: the run ends): RUN [line | "file"[,R]], LIST/LLIST [range], LOAD
+        """A command run by a program (GW-BASIC runs them and, but for RUN and the saves of
+        the dialect's ``saves_going_on``, returns to direct mode: the run ends): RUN [line | "file"[,R]], LIST/LLIST [range], LOAD
         "file"[,R], SAVE "file"[,A|,P] (program_crunch.saved_program), NEW, SYSTEM, DELETE
         range, EDIT line (ends the run: there is no editor in a run), RENUM [new][, [old][,
         step]] (source/renumbering.py; its messages on the screen), KEY ON/OFF (the
@@ -127,6 +127,8 @@ class Chaining:
             self._list_lines(program, argument, 1 if name == "LLIST" else 0)
         elif name == "SAVE":
             self._save(program, argument, option=option or "")
+            if (option or "") in self.dialect.saves_going_on:
+                return
         elif name == "NEW":
             self.program_protected = False
             raise ChainTo({}, False, None, True, None, False)
