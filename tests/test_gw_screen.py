@@ -142,6 +142,14 @@ def test_transcript_at_each_key_wait_and_at_the_end():
     assert out == "STREAMED\n" + screen1 + screen2
 
 
+def test_a_row_left_open_when_the_screen_is_first_drawn_ends_before_the_screens():
+    """The streamed text's open row (``abc`` after ``PRINT "abc";``) is ended before the
+    first screen is shown, so the screen's rows (hello, then abd: CHR$(29) moves the cursor
+    back one column, GIOSCN.ASM's control table) start rows of their own."""
+    _, out = run('10 PRINT "hello": PRINT "abc";CHR$(29);"d"\n')
+    assert out == "hello\nabc\n" + "hello\nabd\n" + "\n" * 23
+
+
 def test_cls_alone_keeps_the_text_streaming():
     """CLS clears the screen but a program that then only PRINTs is still read in order."""
     _, out = run('10 PRINT "BEFORE"\n20 CLS\n30 PRINT "AFTER"\n')

@@ -151,6 +151,7 @@ class DisplayStream(OutputStream):
         if not text:
             return
         display = self.display
+        was_drawn = display.drawn
         self.catch_up()
         if not display.drawn and not self._drawing.search(text):
             display.write(text)  # TAB, BEL, ...: streamed on, the column as the display has it
@@ -159,6 +160,8 @@ class DisplayStream(OutputStream):
             return
         display.write(text)
         if display.drawn:  # drawn, before or by this text: screens from now on, not streamed text
+            if not was_drawn and self.column:  # the streamed row left open: the screens start on their own row
+                self.stream.write("\n")
             self.column = display.x
             return
         OutputStream.write(self, text)
