@@ -300,3 +300,19 @@ def test_a_def_fn_skips_what_follows_its_parameters(tmp_path):
     SYNCHR): ``Syntax error`` where it is called.  (PC-BASIC 2.0.8 refuses the DEF itself.)"""
     source = '10 DEF FNA(X) JUNK: PRINT "same"\n20 DEF FNB X = 1: PRINT "too"\n30 PRINT FNA(1)\n'
     assert yaseer_run(source, tmp_path) == "same\ntoo\nSyntax error in 30\n"
+
+
+def test_date_set_knows_each_month_s_days_as_the_calendar_does():
+    """DATE$ = accepts the last day of each month of 1978..2099 and refuses the day after
+    (against the standard library's calendar, which the clock itself does not import)."""
+    import calendar
+
+    from yaseer.basic.errors import BasicError
+    from yaseer.basic.machine.clock import calendar_date
+
+    for year in range(1978, 2100):
+        for month in range(1, 13):
+            last = calendar.monthrange(year, month)[1]
+            assert calendar_date(f"{month:02d}-{last:02d}-{year}") == (year, month, last)
+            with pytest.raises(BasicError, match="Illegal function call"):
+                calendar_date(f"{month:02d}-{last + 1:02d}-{year}")

@@ -15,7 +15,6 @@ one is not read.  Anything else, an empty text among it, is ``Illegal function c
 
 from __future__ import annotations
 
-import calendar
 import time
 
 from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL
@@ -69,6 +68,14 @@ def time_of_day(text: str) -> tuple[int, int, int, int]:
     return parts[0], parts[1], parts[2], parts[3]
 
 
+def _days_in(year: int, month: int) -> int:
+    """Days in ``month`` of ``year`` (the Gregorian calendar; ``calendar`` is not imported:
+    it brings ``locale`` into every run)."""
+    if month == 2:
+        return 29 if year % 4 == 0 and (year % 100 != 0 or year % 400 == 0) else 28
+    return 30 if month in (4, 6, 9, 11) else 31
+
+
 def calendar_date(text: str) -> tuple[int, int, int]:
     """(year, month, day) of a ``DATE$ =`` text (GWSTS.ASM PRSDAT, DYOFYR)."""
     reader = _Text(text)
@@ -81,7 +88,7 @@ def calendar_date(text: str) -> tuple[int, int, int]:
         year += 2000 if year < 78 else 1900
     elif year < 1978:
         raise _illegal()
-    if year >= 2100 or not 1 <= month <= 12 or not 1 <= day <= calendar.monthrange(year, month)[1]:
+    if year >= 2100 or not 1 <= month <= 12 or not 1 <= day <= _days_in(year, month):
         raise _illegal()
     return year, month, day
 
