@@ -500,6 +500,60 @@ def field_digits(field: NumericField) -> int:
     return field.positions + field.decimals + field.point + (field.sign == "lead+")
 
 
+class UsingCursor:
+    """A PRINT USING format read as GW-BASIC's BIPRTU.ASM reads it, one field at a time: the
+    literal text before a field is printed before its value is evaluated, each value is
+    formatted (and printed) before the next one is evaluated.
+
+    :meth:`literals` gives the literal text up to the next field; :meth:`field` one value in
+    that field.  A format without a field is ``Illegal function call`` once its text is
+    printed (BIPRTU.ASM ``REUSST``: the format ended and no value was printed), before any
+    value is evaluated; the error carries that text as ``printed``.
+    """
+
+    __slots__ = ("tokens", "position", "most_digits")
+
+    def __init__(self, fmt: str, most_digits: int | None = None):
+        tokens = self.tokens = _parsed(fmt)
+        if all(type(token) is Literal for token in tokens):
+            error = BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+            error.printed = "".join(token.text for token in tokens)
+            raise error
+        self.position = 0  # the token read next
+        self.most_digits = most_digits
+
+    def literals(self, more: bool) -> str:
+        """The literal text from here to the next field; at the end of the format, while
+        ``more`` values remain, the format is read again from its start (else it stops)."""
+        tokens, position = self.tokens, self.position
+        text = ""
+        while True:
+            if position == len(tokens):
+                if not more:
+                    break
+                position = 0
+            token = tokens[position]
+            if type(token) is not Literal:
+                break
+            text += token.text
+            position += 1
+        self.position = position
+        return text
+
+    def field(self, value: Value) -> str:
+        """``value`` in the field reached (see :meth:`literals`); a numeric field of more than
+        ``most_digits`` digit positions (:func:`field_digits`; None: no limit) is ``Illegal
+        function call`` whatever the value (BIPRTU.ASM checks after FRMEVL, before PUFOUT
+        looks at the type: ``CMP AL,25``)."""
+        token = self.tokens[self.position]
+        most = self.most_digits
+        if most is not None and type(token) is NumericField and field_digits(token) > most:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        text = _format_value(value, token)
+        self.position += 1
+        return text
+
+
 def using(fmt: str, values: Sequence[float | str], pieces: bool = False, most_digits: int | None = None):
     """PRINT USING fmt; values — the text printed (no newline); with ``pieces`` the list of
     its parts as (text, is a field) pairs (a field that does not fit the row moves to the next).
@@ -508,7 +562,9 @@ def using(fmt: str, values: Sequence[float | str], pieces: bool = False, most_di
     (BIPRTU.ASM checks after FRMEVL, before PUFOUT looks at the type: ``CMP AL,25``).
 
     The format is reused from its start while values remain; after the last
-    value, literal text is copied up to the next field or the end of the format.
+    value, literal text is copied up to the next field or the end of the format
+    (the fields read as :class:`UsingCursor` reads them, all values at once: the
+    fast path where evaluating the values cannot fail nor be seen).
     An error (a format without a field, a string for a numeric field) carries the
     text printed before it as ``printed``: GW-BASIC prints as it goes
     (``PRINT USING "abc"; 1`` prints ``abc``, then ``Illegal function call``).

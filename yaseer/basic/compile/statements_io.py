@@ -96,9 +96,16 @@ class InputOutputCompiler:
             return
         fmt = self.string(stmt.using, scope)
         parts = [p for p in parts if p not in ("_COMMA", "_NUMCOMMA") and not p.startswith(("_Tab(", "_Spc("))]
-        if safe:
+        if safe:  # nothing to evaluate can fail or be seen: all at once (the loops' fast path)
             values = "(" + "".join(p + ", " for p in parts) + ")"
             self.emit(f"{pru}({device}, {fmt}, {values}, {newline})")
+            return
+        if self.using_each_value:  # each value when its field is reached (Machine.using_line)
+            line = self.new_temp()
+            self.emit(f"{line} = {'_puo' if stmt.channel is None else '_puof'}({device}, {fmt})")
+            for k, part in enumerate(parts):
+                self.emit(f"{line}.put({part}, {k < len(parts) - 1})")
+            self.emit(f"{line}.end({newline})")
             return
         self.emit("_u = []")
         self.emit("try:")

@@ -102,10 +102,11 @@ FIELDS = (
     "using_digits",  # int | None: None
     "else_alone_skips",  # bool: False
     "saves_going_on",  # tuple[str, ...]: ()
+    "using_each_value",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None, False, ())
+            None, False, False, True, False, None, False, (), False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -147,6 +148,12 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         two, ``**$`` three, each comma and a leading ``+`` one, plus the point and the
         ``#`` after it; a field with more is ``Illegal function call`` when a value
         reaches it); None: no limit (casio, whose manual has no PRINT USING).
+        ``using_each_value``: True evaluates each value of a PRINT USING list when its
+        field is reached, after the literal text before the field is printed and the
+        fields before it (GW-BASIC, BIPRTU.ASM: FRMEVL inside the loop that scans the
+        format), so a value sees the cursor (``POS(0)``) and a value's message or error
+        comes after the fields before it; False evaluates the whole list first (casio,
+        whose manual has no PRINT USING: yaseer's way kept).
         ``print_digits``: significant digits PRINT and STR$ show for the
         default numeric type (10 on the 10-digit Casio display; 7 for
         GW-BASIC's single precision; GW doubles show 16).
@@ -364,7 +371,7 @@ GW = Dialect(
     read_commits=True,
     direct_line_number=65535, edit_clears=True, handler_must_resume=True,
     for_array_elements=False, untrapped_errors_noted=True,
-    using_digits=24, else_alone_skips=True, saves_going_on=("", "P"),
+    using_digits=24, else_alone_skips=True, saves_going_on=("", "P"), using_each_value=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

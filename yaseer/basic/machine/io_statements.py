@@ -233,6 +233,15 @@ class InputOutput:
         if newline:
             stream.end_line()
 
+    def using_line(self, device: int, fmt: str) -> UsingLine:
+        """PRINT USING fmt; v1; v2 ... with each value evaluated when its field is reached
+        (``Dialect.using_each_value``): the text before the first field is printed now."""
+        return UsingLine(self, self.streams[device], fmt, device)
+
+    def using_line_to(self, stream, fmt: str) -> UsingLine:
+        """PRINT #n, USING, value by value (see :meth:`using_line`)."""
+        return UsingLine(self, stream, fmt)
+
     def _note_values(self, device: int, values: list, newline) -> None:
         """Collect a printed line's values; at its end hand them to the line hooks."""
         line = self._line_values[device]
@@ -426,6 +435,62 @@ class InputOutput:
         """WRITE: the items (already as text: strings quoted, numbers without blanks)
         separated by commas, then the line end."""
         self.print_items(device, (",".join(pieces),), True)
+
+
+class UsingLine:
+    """One PRINT [#n,] USING statement printed field by field, as GW-BASIC's BIPRTU.ASM
+    prints it: the compiled statement evaluates a value, hands it to :meth:`put`, which
+    prints it in its field and the literal text up to the next field, then evaluates the
+    next value.  So a value's error or message comes after the fields before it, and
+    ``POS(0)`` sees them.  What is printed stays when an error stops the statement (an
+    ON ERROR handler goes on from that column).  ``device``: the screen's or printer's
+    number (csv rows and line hooks, as ``print_using``); None for a file's stream."""
+
+    __slots__ = ("machine", "stream", "device", "cursor")
+
+    def __init__(self, machine, stream, fmt: str, device: int | None = None):
+        self.machine, self.stream, self.device, self.cursor = machine, stream, device, None
+        if device is not None and machine.csv:  # a csv row takes the values, not the format
+            return
+        try:
+            self.cursor = formatting.UsingCursor(fmt, machine.dialect.using_digits)
+        except BasicError as error:  # a format without a field: its text, then the error
+            stream.write(error.printed)
+            raise
+        text = self.cursor.literals(True)
+        if text:
+            stream.write(text)
+
+    def put(self, value, more: bool) -> None:
+        """``value`` in its field, then the literal text up to the next field (``more``:
+        another value follows, so the format is read again from its start at its end)."""
+        machine, stream, device = self.machine, self.stream, self.device
+        value = machine._using_values((value,))[0]
+        if type(value) is float and value - value:
+            runtime.overflow()
+        if device is not None and machine.line_hooks:
+            machine._note_values(device, [value], False)
+        if self.cursor is None:
+            stream.row.append(repr(value) if type(value) is float else value)
+            return
+        text = self.cursor.field(value)
+        after = self.cursor.literals(more)
+        if device is None or stream.width is None or stream.column + len(text) <= stream.width:
+            stream.write(text + after)  # (one write: this is a loop's path)
+        else:  # a field that does not fit the row starts the next one, as a PRINT item does
+            stream.item(text)
+            stream.write(after)
+
+    def end(self, newline: bool) -> None:
+        """The statement's end: the line ends unless a ``;`` or ``,`` ended the list."""
+        machine, stream, device = self.machine, self.stream, self.device
+        if device is not None and machine.line_hooks:
+            machine._note_values(device, [], newline)
+        if self.cursor is None:
+            if newline:
+                machine._csv_row(stream)
+        elif newline:
+            stream.end_line()
 
 
 def _printed_value(value):
