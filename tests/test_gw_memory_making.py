@@ -241,7 +241,7 @@ def _loop_program(rng) -> str:
 def test_a_loop_makes_its_variables_on_the_passes_gw_makes_them(pc_reason):
     """A block that loops back to its own start, or a native FOR loop, tests its makings
     while one is not made and runs its later passes without the tests
-    (compiler._checks_once, loops.unchecked_passes): the pass and the
+    (compiler._copies, loops.unchecked_passes): the pass and the
     statement where a new variable is ``Out of memory`` are PC-BASIC 2.0.8's (with GW's
     room test), in programs that never read FRE."""
     rng = random.Random(base_seed() + 76)

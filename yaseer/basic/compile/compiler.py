@@ -35,7 +35,7 @@ from yaseer.basic.compile.expressions import (
     MAKING, BlockScope, CompileError, ExpressionCompiler, FnScope, calls_fn, may_overflow, syntax_error, type_mismatch,
 )
 from yaseer.basic.compile.statements_io import InputOutputCompiler
-from yaseer.basic.compile.loops import LoopCompiler
+from yaseer.basic.compile.loops import LoopCompiler, LoopSplit
 from yaseer.basic.dialects.dialect import CASIO
 from yaseer.basic.compile.number_models import array_local, local_name, number_model, variant_function
 from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  (re-exported)
@@ -187,7 +187,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.whole_index: dict[str, str] = {}  # constant loop variable -> local of its subscript
         self.open_loops: list[tuple] = []  # the native loops around the code being emitted
         self.loop_makings: list[set] = []  # the names each of those loops' bodies makes (note_making)
-        self.loop_splits: dict[str, tuple] = {}  # the native loops run in two (loops.unchecked_passes)
+        self.header_parts: tuple = ()  # the last native loop's first line (loops.loop_header)
+        self.split_loops: set = set()  # the native loops run in two (loops.unchecked_passes, _copies)
         self.break_infos: list[tuple] = []  # #BREAK#k markers: (BASIC line, open loops)
         self.break_points: dict[int, dict] = {}  # block -> {Python line: (BASIC line, open loops)}
         self.fn_params: dict[str, list] = {}  # DEF FN name -> parameter names
@@ -550,7 +551,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         costs a local's truth once every name the block makes is made: the block's ``_f``,
         read from the global ``_f<block>`` as it starts, which the machine keeps true while
         one of them is not (``CompiledArea.makings``), and a block that loops back to its own
-        start runs its passes without the tests once they are all made (:func:`_checks_once`: ``checked_once``).
+        start runs its passes without the tests once they are all made (:func:`_copies`: ``checked_once``).
         Elsewhere (no room counted) the names a SWAP may ask about are
         recorded: those that stand second in a SWAP of the area, and every name in a direct line."""
         if self.variables_made and isinstance(target, ast.Var):
@@ -858,7 +859,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.emit("_off_end(_ln)")
             self.emit("raise _END")
         pieces = [(None, text) for text in self.prelude]
-        self.checked_once = _checks_once(self.blocks)
+        self.checked_once, self.split_loops = _copies(self.blocks)
         pieces += [(b.first_line, self.block_source(b)) for b in self.blocks]
         if self.numbers.cache_bases:  # each cache the code uses matches nothing until its operation writes it
             pieces.insert(0, (None, self.numbers.cache_prelude("".join(text for _, text in pieces))))
@@ -866,7 +867,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         line_blocks = {number: self.entry_block[i] for number, i in self.line_first.items()
                        if i in self.entry_block}
         makings = {b.number: tuple(sorted(b.makes)) for b in self.blocks if b.makes}
-        makings.update((flag, tuple(sorted(names))) for b in self.blocks for flag, names in b.loop_makes.items())
+        makings.update((flag, tuple(sorted(names))) for b in self.blocks for flag, names in b.loop_makes.items()
+                       if flag in self.split_loops)
         return CompiledArea(
             source=source, pieces=pieces, block_count=len(self.blocks), line_blocks=line_blocks,
             block_next=self.block_next, data=self.data, data_lines=self.data_lines,
@@ -885,7 +887,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         load, load_arrays, store = lines["load"], lines["load_arrays"], lines["store"]
         loop_back, self_loop = lines["loop_back"], lines["self_loop"]
         pending = None  # a #BREAK# marker waiting for the line it marks
-        for indent, text in _passes(block.code, self.loop_splits, checked):
+        for indent, text in _passes(block.code, self.split_loops, checked):
             pad = "    " * (indent + base)
             if text == "#FLUSH#":
                 if store:
@@ -1015,37 +1017,35 @@ def _watched_names(flat, full_name):
 _LAZY_ARRAY = re.compile(r"\(((?:a|b|ai|ad)_\w+) or \(\1 := _arr\('[^']+', \d+\)\)\)")
 
 
-def _passes(code: list, splits: dict, checked: bool = True) -> list:
-    """Generated lines (indent, text) as they run: the native loops marked ``#SPLIT#key``
-    (loops.unchecked_passes; ``splits``: key -> (flag, temporary, arrays, the loop's first
-    line)) in two loops, the passes with the tests of their makings while the loop's flag
-    is true, then the rest without (a ``for`` loop's items from one iterator both share, a
-    ``while`` loop's test starting with the flag; its arrays bound again between: a
-    function may have made one).  ``checked=False``: for code that runs only once every
-    name it makes is made, without those tests and with each loop as it was."""
+def _passes(code: list, split: set, checked: bool = True) -> list:
+    """Generated lines (indent, text) as they run: the native loops marked with a
+    :class:`LoopSplit` whose key is in ``split`` (loops.unchecked_passes, :func:`_copies`)
+    in two loops, the passes with the tests of their makings while the loop's flag is true,
+    then the rest without (a ``for`` loop's items from one iterator both share, a ``while``
+    loop's test starting with the flag; its arrays bound again between: a function may
+    have made one); any other loop as it is, its passes with the tests.  ``checked=False``:
+    for code that runs only once every name it makes is made, without those tests and
+    with each loop as it was."""
     out = []
     k = 0
     while k < len(code):
         indent, text = code[k]
-        if text.startswith("#SPLIT#"):
+        if checked and type(text) is LoopSplit and text.key in split:
             end = k + 1
             while end < len(code) and code[end][0] > indent:
                 end += 1
             body = code[k + 1:end]
-            flag, n, arrays, first = splits[text[7:]]
             k = end
-            if not checked:
-                out += [(indent, first), *_passes(body, splits, False)]
-                continue
-            rebind = [(indent, f"{array_local(a)} = _A.get({a!r})") for a in arrays]
-            if first.startswith("while "):
-                out += [(indent, f"while {flag} and {first[6:]}"), *_passes(body, splits), *rebind, (indent, first)]
+            flag, n, target, items = f"_f{text.key}", text.n, text.target, text.items
+            rebind = [(indent, f"{array_local(a)} = _A.get({a!r})") for a in text.arrays]
+            if target is None:
+                out += [(indent, f"while {flag} and {items}:"), *_passes(body, split), *rebind,
+                        (indent, f"while {items}:")]
             else:
-                target, _, items = first[4:-1].partition(" in ")
                 out += [(indent, f"_j{n} = iter({items})"), (indent, f"if {flag}:"),
-                        (indent + 1, f"for {target} in _j{n}:"), *((j + 1, line) for j, line in _passes(body, splits)),
+                        (indent + 1, f"for {target} in _j{n}:"), *((j + 1, line) for j, line in _passes(body, split)),
                         (indent + 2, f"if not {flag}: break"), *rebind, (indent, f"for {target} in _j{n}:")]
-            out += _passes(body, splits, False)
+            out += _passes(body, split, False)
             continue
         k += 1
         if not checked:
@@ -1064,24 +1064,58 @@ def _loops_back(block: _Block) -> bool:
     return any(text == loop_back or text.endswith(": " + loop_back) for _, text in block.code)
 
 
-def _checks_once(blocks: list) -> set:
-    """The blocks that loop back to their own start and test their makings (compiler.made)
-    only while one is not made: their passes run in two loops, with the tests while the
+# The copies of code the makings' tests cost (compiler.made, :func:`_copies`): at most a
+# quarter of the area's code, or this many characters
+COPIES_SHARE = 4
+COPIES_LEAST = 16_000
+
+
+def _source_size(lines, levels: int) -> int:
+    """Characters ``lines`` ((indent, text) of a block's code) take in the Python source,
+    each indented ``levels`` more than its own indent (4 characters a level), with its line end."""
+    return sum(4 * (indent + levels) + len(text) + 1 for indent, text in lines)
+
+
+def _copies(blocks: list) -> tuple[set, set]:
+    """The code copied so that later passes run without the tests of their makings
+    (compiler.made): the blocks that loop back to their own start and test their makings
+    only while one is not made (their passes run in two loops, with the tests while the
     block's ``_f`` is true, without them from the first pass that starts with every name
-    made.  Not a block that can unmake a name (CLEAR, ERASE) and go on; and, since the
-    second loop is a second copy of the block's code to compile, the smallest first, while
+    made; not a block that can unmake a name, CLEAR or ERASE, and go on), and the native
+    FOR loops run in two (loops.unchecked_passes: a :class:`LoopSplit`'s key).  Each is a
+    second copy of its code to compile: the smallest first, of both kinds together, while
     the copies add at most a quarter of the area's code (or 16,000 characters): a test
-    weighs most in a small loop's pass (in a long one it is a few per cent at most)."""
-    sizes = {b.number: sum(len(text) for _, text in b.code) for b in blocks}
-    budget = max(16_000, sum(sizes.values()) // 4)
-    chosen = set()
-    candidates = [b for b in blocks if b.makes and _loops_back(b) and not any(
-        "_clear(" in text or "_erase(" in text for _, text in b.code)]
-    for block in sorted(candidates, key=lambda b: sizes[b.number]):
-        budget -= sizes[block.number]
+    weighs most in a small loop's pass (in a long one it is a few per cent at most).
+
+    Sizes are characters of the source: the area's at least (each line a block function's
+    level in), a copy's at most (a block's pass two levels in, a loop's checked passes one
+    more and one for each loop copied around it, its extra first lines and arrays bound
+    again), so the copies stay within the budget.  Returns (the block numbers, the loops' keys)."""
+    budget = max(COPIES_LEAST, sum(_source_size(b.code, 1) for b in blocks) // COPIES_SHARE)
+    candidates = []
+    for block in blocks:
+        code = block.code
+        if block.makes and _loops_back(block) and not any("_clear(" in text or "_erase(" in text for _, text in code):
+            candidates.append((_source_size(code, 2) + 40, 0, block.number))  # (and its "while True:")
+        around: list[int] = []  # the indents of the loops marked around a line
+        for k, (indent, text) in enumerate(code):
+            while around and around[-1] >= indent:
+                around.pop()
+            if type(text) is not LoopSplit:
+                continue
+            end = k + 1
+            while end < len(code) and code[end][0] > indent:
+                end += 1
+            levels = 3 + len(around)
+            size = _source_size(code[k + 1:end], levels) + 3 * _source_size([(indent, text)], levels)
+            candidates.append((size + 60 * (1 + len(text.arrays)), 1, text.key))
+            around.append(indent)
+    chosen: tuple[set, set] = (set(), set())
+    for size, kind, key in sorted(candidates, key=lambda c: c[0]):
+        budget -= size
         if budget < 0:
             break
-        chosen.add(block.number)
+        chosen[kind].add(key)
     return chosen
 
 

@@ -16,6 +16,21 @@ from yaseer.basic.compile.number_models import local_name
 from yaseer.basic.errors import FOR_WITHOUT_NEXT
 
 
+class LoopSplit(str):
+    """A native loop's first line in a block's code that may run in two loops
+    (LoopCompiler.unchecked_passes): its text, as any line of the code for what reads it
+    (sizes, searches), and its parts, from which compiler._passes writes the two loops
+    without reading the text back.  ``key``: ``<block>_<n>``, its flag ``_f<key>``; ``n``
+    its temporaries' number; ``arrays`` those its body makes (bound again between the
+    loops); ``target`` and ``items`` of ``for target in items:``, or ``target`` None and
+    ``items`` the test of ``while items:``."""
+
+    def __new__(cls, text: str, key: str, n: str, arrays: tuple, target: str | None, items: str):
+        line = super().__new__(cls, text)
+        line.key, line.n, line.arrays, line.target, line.items = key, n, arrays, target, items
+        return line
+
+
 class LoopCompiler:
     """The FOR / NEXT methods of ``AreaCompiler`` (they use its blocks, ``walk`` and
     ``continuation``)."""
@@ -81,7 +96,7 @@ class LoopCompiler:
                     self.emit(f"_i{n} = 0")
                 self.emit("try:")
                 self.indent += 1
-                self.emit(f"for _i{n} in {'_fidle(_it%s)' % n if self.idle_body else '_it%s' % n}:")
+                self.loop_header(f"_i{n}", f"_fidle(_it{n})" if self.idle_body else f"_it{n}")
                 return n, var, step_value, mode
             if mode == "constant":
                 values, _ = self.constant_passes(stmt)
@@ -94,19 +109,19 @@ class LoopCompiler:
                     # the subscript of each value too: the body indexes arrays with it
                     self.whole_index[stmt.var.name] = f"_k{n}"
                     pairs = "".join(f"({int(v)}, {v!r}), " for v in values)
-                    self.emit(f"for _k{n}, {var} in ({pairs}):")
+                    self.loop_header(f"_k{n}, {var}", f"({pairs})")
                 else:
-                    self.emit(f"for {var} in ({''.join(f'{v!r}, ' for v in values)}):")
+                    self.loop_header(var, f"({''.join(f'{v!r}, ' for v in values)})")
                 return n, var, step_value, mode
             if mode == "values":
                 # the body never changes the variable: iterate over its values
                 self.emit(f"if {test}:")
                 self.indent += 1
-                self.emit(f"for {var} in {self.numbers.loop_helpers(kind)[0]}(_v{n}, _l{n}, _s{n}):")
+                self.loop_header(var, f"{self.numbers.loop_helpers(kind)[0]}(_v{n}, _l{n}, _s{n})")
                 return n, var, step_value, mode
             self.emit(f"if {test}:")
             self.indent += 1
-            self.emit(f"while {test}:")
+            self.loop_header(None, test)
             return n, var, step_value, mode
         body = self.entry_block.get(self.index + 1) if self.depth == 0 else None
         skip_index = self.plan.for_next.get(self.index) if self.depth == 0 else None
@@ -264,13 +279,21 @@ class LoopCompiler:
             return None  # (a sum of whole numbers below it is exact: the arithmetic's sum is the double's)
         return values, value
 
-    def unchecked_passes(self, block, header: int, n: str, makings: set) -> None:
+    def loop_header(self, target: str | None, items: str) -> None:
+        """Emit a native loop's first line, ``for target in items:`` (``target`` None: ``while
+        items:``), and keep its parts for :meth:`unchecked_passes` (``header_parts``)."""
+        self.header_parts = (target, items)
+        self.emit(f"while {items}:" if target is None else f"for {target} in {items}:")
+
+    def unchecked_passes(self, block, header: int, n: str, makings: set, parts: tuple) -> None:
         """Mark the native loop whose first line is ``block.code[header]`` (the rest of the
-        block's code its passes) to run in two loops where its body makes variables
-        (``makings``, compiler.made): the passes with the tests of their makings while one
-        is not made (the loop's own flag ``_f<block>_<n>``, kept as a block's:
-        CompiledArea.makings), then the rest without (compiler._passes), so that the passes
-        after the first pay nothing for the makings.  Not where the body can unmake a name
+        block's code its passes; ``parts`` that line's, :meth:`loop_header`) to run in two
+        loops where its body makes variables (``makings``, compiler.made): the passes with
+        the tests of their makings while one is not made (the loop's own flag
+        ``_f<block>_<n>``, kept as a block's: CompiledArea.makings), then the rest without
+        (compiler._passes), so that the passes after the first pay nothing for the makings.
+        The line becomes a :class:`LoopSplit`; whether the loop is copied is decided with
+        the area's other copies (compiler._copies).  Not where the body can unmake a name
         (CLEAR, ERASE) or leaves the block."""
         if not makings or self.cur is not block or any(
                 "_clear(" in text or "_erase(" in text for _, text in block.code[header + 1:]):
@@ -279,8 +302,7 @@ class LoopCompiler:
         block.loop_makes[key] = set(makings)
         arrays = tuple(sorted(name[:-2] for name in makings if name.endswith(")")))
         indent, text = block.code[header]
-        self.loop_splits[key] = (f"_f{key}", n, arrays, text)
-        block.code[header] = (indent, f"#SPLIT#{key}")
+        block.code[header] = (indent, LoopSplit(text, key, n, arrays, *parts))
 
     def native_loop(self, i: int) -> int:
         """Emit FOR at ``i`` ... its NEXT as a Python while loop; the index after NEXT."""
@@ -317,6 +339,7 @@ class LoopCompiler:
         if whole:
             self.whole_vars.add(stmt.var.name)
         header = len(block.code) - 1  # the loop's "for ... in ...:" or "while ...:" line
+        parts = self.header_parts  # (before the body's loops emit theirs)
         self.indent += 1
         # The top of a pass is where a Ctrl-C may stop the loop so that CONT resumes it:
         # its line is the atomic ``_ln = n`` (nothing in it can be interrupted half-way).
@@ -344,7 +367,7 @@ class LoopCompiler:
         increment = repr(step_value) if step_value is not None and not self.numbers.typed else f"_s{n}"
         increment = self.stepping(stmt.var, var, increment)
         if mode != "while":
-            self.unchecked_passes(block, header, n, makings)
+            self.unchecked_passes(block, header, n, makings, parts)
         if mode == "count":
             self.indent -= 2
             self.emit("except BaseException:")
@@ -360,7 +383,7 @@ class LoopCompiler:
             self.whole_index.pop(stmt.var.name, None)
         else:
             self.emit(f"{var} = {increment}")
-            self.unchecked_passes(block, header, n, makings)
+            self.unchecked_passes(block, header, n, makings, parts)
             self.indent -= 1
         self.indent -= 1
         # a loop that never runs leaves its variable at the start value (see stmt_For)
