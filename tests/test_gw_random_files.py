@@ -134,3 +134,41 @@ def test_put_after_a_get_beyond_the_end_takes_the_next_record(tmp_path):
     source = ('10 OPEN "R.DAT" AS #1 LEN = 8: FIELD #1, 2 AS A$: PUT #1, 2: GET #1: PRINT LOC(1); EOF(1)\n'
               '20 PUT #1: PRINT LOC(1); LOF(1)\n')
     assert yaseer_run(source, tmp_path) == " 3 -1 \n 4  32 \n"
+
+
+def overlapping_fields_program(rng: random.Random) -> str:
+    """FIELD statements laying variables over the same bytes in different widths, then LSET
+    and RSET into some of them, each followed by every variable printed in brackets."""
+    names = ["A$", "B$", "C$", "D$", "E$", "F$"]
+    length = rng.randint(6, 16)
+    lines = [f'10 OPEN "R", 1, "OVER.DAT", {length}']
+    fields, number = [], 20
+    for group in (names[:3], names[3:]):
+        widths, room = [], length
+        for name in group:
+            width = rng.randint(0, min(room, 6))
+            widths.append(f"{width} AS {name}")
+            room -= width
+        lines.append(f"{number} FIELD 1, {', '.join(widths)}")
+        fields += group
+        number += 10
+    shown = ": ".join(f'PRINT "[";{name};"]";' for name in fields) + ": PRINT"
+    for _ in range(4):
+        word = rng.choice(["LSET", "RSET"])
+        lines.append(f'{number} {word} {rng.choice(fields)} = "{random_text(rng)}": {shown}')
+        number += 10
+    lines.append(f"{number} PUT 1, 1: CLOSE")
+    return "\n".join(lines) + "\n"
+
+
+def test_fields_over_the_same_bytes_share_them(tmp_path):
+    """DSKCOM.ASM FIELD points each variable into the buffer, so an LSET or RSET into one
+    shows in every variable fielded over the same bytes; output and file against PC-BASIC 2.0.8."""
+    rng = random.Random(base_seed() + 24)
+    for case in range(case_count(12)):
+        source = overlapping_fields_program(rng)
+        theirs_dir, ours_dir = tmp_path / f"p{case}", tmp_path / f"y{case}"
+        theirs_dir.mkdir()
+        ours_dir.mkdir()
+        assert yaseer_run(source, ours_dir) == pcbasic_run(source, theirs_dir), source
+        assert contents(ours_dir) == contents(theirs_dir), source

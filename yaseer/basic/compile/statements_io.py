@@ -362,10 +362,15 @@ class InputOutputCompiler:
                 scope.scalar(name)  # a COMMON scalar exists (0 or "") for the CHAIN to keep
 
     def stmt_LSet(self, stmt, scope):
+        """LSET / RSET: the machine stores the value, and every variable fielded over the
+        same bytes of the buffer shows it (FLUSH and RELOAD around the call)."""
         value = self.string(stmt.value, scope)
         key = self.field_key(stmt.target)
-        current = scope.scalar(stmt.target.name)
-        self.assign(stmt.target, f"_lset({key!r}, {value}, {current}, {stmt.right})", "s", scope, False)
+        arguments = self.new_temp()
+        self.emit(f"{arguments} = ({key!r}, {value}, {scope.scalar(stmt.target.name)}, {stmt.right})")
+        self.emit("#FLUSH#")
+        self.emit(f"_lset(*{arguments})")
+        self.emit("#RELOAD#")
 
     def stmt_Close(self, stmt, scope):
         self.emit(f"_close(({''.join(self.integer(n, scope) + ', ' for n in stmt.numbers)}))")

@@ -293,13 +293,17 @@ class FileTable:
         """PUT #n[, record]."""
         self.random(n).put(record)
 
-    def justify(self, key: str, value: str, current: str, right: bool) -> str:
-        """LSET / RSET of variable ``key`` (now holding ``current``): the value it gets; a
-        variable fielded on an open file also fills its slice of that file's buffer."""
+    def justify(self, key: str, value: str, current: str, right: bool, scalars: dict) -> dict[str, str]:
+        """LSET / RSET of variable ``key`` (now holding ``current``): the new values of the
+        variables, ``key``'s and, where ``key`` is fielded on an open file, those of every
+        variable fielded on it (in ``scalars``), which see its slice of the buffer filled
+        (DSKCOM.ASM FIELD points each variable into the buffer: two fields over the same
+        bytes are the same bytes)."""
         for f in self.open_files.values():
             if f.mode == "R" and f.bound(key, current):
-                return f.store(key, value, right)
-        return random_files.justified(value, len(current), right)
+                f.store(key, value, right)
+                return f.refreshed(dict(scalars, **{key: f.given[key]}))
+        return {key: random_files.justified(value, len(current), right)}
 
     def close(self, numbers=()) -> None:
         """CLOSE [n, ...]: the files named (no error for one not open), or all."""

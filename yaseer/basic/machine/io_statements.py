@@ -410,6 +410,10 @@ class InputOutput:
         """GET #n[, record]: read the record; its fielded variables take their slices."""
         self.scalars.update(self.files.random(n).get(self.scalars, record))
 
+    def set_field(self, key: str, value: str, current: str, right: bool) -> None:
+        """LSET / RSET (files.justify): the variable, and the others fielded over its bytes."""
+        self.scalars.update(self.files.justify(key, value, current, right, self.scalars))
+
     def field_variables(self, n, pairs) -> None:
         """FIELD #n, width AS variable, ...: ``pairs`` of (width, variable key); each
         variable holds its slice of the buffer at once."""
