@@ -464,6 +464,13 @@ class UsingLine:
         text = self.cursor.literals(True)
         if text:
             stream.write(text)
+            self._fields_follow()
+
+    def _fields_follow(self) -> None:
+        """A file's stream that is a random file's record buffer: its fielded variables
+        show what was written (after each write, so also when a later value stops it)."""
+        if self.device is None:
+            self.machine._fields_follow(self.stream)
 
     def put(self, value, more: bool) -> None:
         """``value`` in its field, then the literal text up to the next field (``more``:
@@ -484,6 +491,8 @@ class UsingLine:
         else:  # a field that does not fit the row starts the next one, as a PRINT item does
             stream.item(text)
             stream.write(after)
+        if device is None:
+            machine._fields_follow(stream)
 
     def end(self, newline: bool) -> None:
         """The statement's end: the line ends unless a ``;`` or ``,`` ended the list."""
@@ -495,6 +504,7 @@ class UsingLine:
                 machine._csv_row(stream)
         elif newline:
             stream.end_line()
+            self._fields_follow()
 
 
 def _printed_value(value):
