@@ -49,7 +49,9 @@ def test_the_largest_allowed_array_works():
                    '10 DIM A$(14000): A$(14000) = "x": PRINT A$(14000)\n'):
         result = yaseer.run(source, dialect="gw")
         assert result.error is None, result.error
-    assert yaseer.run('10 DIM A(1999999)\n', dialect="gw").error == "Out of memory in 10"
+    assert yaseer.run('10 DIM A(30000)\n', dialect="gw").error == "Out of memory in 10"
+    # a size beyond 32767 is no integer: GWMAIN.ASM DIM's INTIDX calls FRCINT (PC-BASIC 2.0.8 agrees)
+    assert yaseer.run('10 DIM A(1999999)\n', dialect="gw").error == "Overflow in 10"
     assert run_mutant('10 DIM A(1999999)\n', with_prog5=False) == "Out of memory in 10"
 
 
@@ -58,7 +60,9 @@ def test_arrays_of_full_strings_stay_inside_the_budget():
     million strings once took 2.5 GB while FRE said 0; now the first is Out of memory."""
     program = "10 DIM A$(1999999), B$(1999999), C$(1999999), D$(1999999)\n"
     assert run_mutant(program, with_prog5=False) == "Out of memory in 10"
-    assert yaseer.run(program, dialect="gw").error == "Out of memory in 10"  # the budget itself (casio: its 8 KB first)
+    # the budget itself (casio: its 8 KB first); gw's sizes are integers (beyond 32767 Overflow)
+    program = "10 DIM A$(1999, 999), B$(1999, 999), C$(1999, 999), D$(1999, 999)\n"
+    assert yaseer.run(program, dialect="gw").error == "Out of memory in 10"
     # FRE tells each machine's own memory, not this budget: GW's free bytes (test_gw_memory)
     # and the FX-850P's variable area (test_casio_words).
 
