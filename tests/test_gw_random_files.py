@@ -69,15 +69,21 @@ def random_file_program(rng: random.Random) -> str:
     return "".join(f"{10 * (k + 1)} {text}\n" for k, text in enumerate(lines)) + SHOW
 
 
-def test_generated_random_file_programs_match_pcbasic(tmp_path):
-    rng = random.Random(base_seed() + 3)
-    for k in range(case_count(25)):
-        source = random_file_program(rng)
+def programs_match_pcbasic(tmp_path, generate, seed: int, cases: int) -> None:
+    """Each of ``cases`` programs ``generate(rng)`` prints what PC-BASIC 2.0.8 prints and
+    leaves the same files."""
+    rng = random.Random(base_seed() + seed)
+    for k in range(case_count(cases)):
+        source = generate(rng)
         theirs_dir, ours_dir = tmp_path / f"pc{k}", tmp_path / f"ya{k}"
         theirs_dir.mkdir()
         ours_dir.mkdir()
         assert yaseer_run(source, ours_dir) == pcbasic_run(source, theirs_dir), source
         assert contents(ours_dir) == contents(theirs_dir), source
+
+
+def test_generated_random_file_programs_match_pcbasic(tmp_path):
+    programs_match_pcbasic(tmp_path, random_file_program, 3, 25)
 
 
 FIXED = """\
@@ -164,11 +170,4 @@ def overlapping_fields_program(rng: random.Random) -> str:
 def test_fields_over_the_same_bytes_share_them(tmp_path):
     """DSKCOM.ASM FIELD points each variable into the buffer, so an LSET or RSET into one
     shows in every variable fielded over the same bytes; output and file against PC-BASIC 2.0.8."""
-    rng = random.Random(base_seed() + 24)
-    for case in range(case_count(12)):
-        source = overlapping_fields_program(rng)
-        theirs_dir, ours_dir = tmp_path / f"p{case}", tmp_path / f"y{case}"
-        theirs_dir.mkdir()
-        ours_dir.mkdir()
-        assert yaseer_run(source, ours_dir) == pcbasic_run(source, theirs_dir), source
-        assert contents(ours_dir) == contents(theirs_dir), source
+    programs_match_pcbasic(tmp_path, overlapping_fields_program, 24, 12)
