@@ -177,8 +177,7 @@ CUT_STATEMENTS = [
 ]
 # Where the two still differ (not generated): GW checks the file number of PRINT #, FIELD #,
 # GET # and NAME's file before the rest of the statement; MID$ checks its arguments as it
-# reads them; ON n GOTO with n = 0 reads no further; WHILE scans for its WEND first;
-# WRITE prints its items and commas before the one that fails.
+# reads them; WRITE prints its items and commas before the one that fails.
 
 
 def _cuts(statement: str) -> list[str]:
