@@ -69,6 +69,13 @@ AGREED = {
         '100 ERROR -32769\n110 ON -32769 GOSUB 10\n120 DIM C(-32769)\n130 PRINT B(-32769); B(40000.7)\n'
         '150 WIDTH "LPT1:", -40000: PRINT INPUT$(1, 32768)\n160 PRINT B(32767)\n170 END\n'
         '200 PRINT ERR; ERL: RESUME NEXT\n'),
+    # ... and the screen's, the keys' and the file functions' (GETBYT): LOCATE, COLOR, SCREEN,
+    # KEY n, EOF, LOC, LOF, LPOS; POS takes any number without an error
+    "screen and file arguments of 32768 and above overflow": (
+        '10 ON ERROR GOTO 200\n20 LOCATE 32768\n30 LOCATE 1, 32768\n40 COLOR 32768\n50 COLOR 7, 32768\n'
+        '60 X = EOF(32768)\n70 X = LOC(32768)\n80 X = LOF(32768)\n90 X = LPOS(32768)\n100 SCREEN 32768\n'
+        '110 KEY 32768, "A"\n120 LOCATE -32769\n130 X = EOF(-32769)\n140 KEY -32769, "A"\n'
+        '150 X = POS(32768)\n160 END\n200 PRINT ERR; ERL: RESUME NEXT\n'),
     "subscripts from one of 32768 and above overflow": (
         '10 OPTION BASE 1: ON ERROR GOTO 200\n20 DIM D(3): D(32768) = 1\n30 PRINT D(-32768.6); D(0)\n'
         '40 END\n200 PRINT ERR; ERL: RESUME NEXT\n'),

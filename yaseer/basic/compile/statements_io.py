@@ -337,8 +337,9 @@ class InputOutputCompiler:
 
     # -- the text screen (machine/console.py)
     def optional_numbers(self, args: list, scope) -> str:
-        """A Python tuple of numeric arguments, None where one was left out."""
-        return "(" + "".join(("None" if a is None else self.numeric(a, scope)) + ", " for a in args) + ")"
+        """A Python tuple of integer arguments (``integer``: GW's GETBYT makes each one with
+        FRCINT first), None where one was left out."""
+        return "(" + "".join(("None" if a is None else self.integer(a, scope)) + ", " for a in args) + ")"
 
     def stmt_ScreenStatement(self, stmt, scope):
         """COLOR and SCREEN: at most three and four arguments; the machine checks them."""
@@ -352,7 +353,7 @@ class InputOutputCompiler:
 
     def stmt_Key(self, stmt, scope):
         if stmt.action == "DEFINE":
-            self.emit(f"_M.define_key({self.numeric(stmt.number, scope)}, {self.string(stmt.text, scope)})")
+            self.emit(f"_M.define_key({self.integer(stmt.number, scope)}, {self.string(stmt.text, scope)})")
         else:
             self.emit(f"_M.key_line({stmt.action!r})")
 
