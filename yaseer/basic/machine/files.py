@@ -26,7 +26,7 @@ from yaseer.basic.errors import (
     BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, DEVICE_IO_ERROR, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
     FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, error_for, not_emulated,
 )
-from yaseer.basic.machine import random_files
+from yaseer.basic.machine import item_reading, random_files
 from yaseer.basic.machine.runtime import cint
 from yaseer.basic.machine.sandbox import Sandbox, identity_of
 from yaseer.basic.machine.screen import FileStream
@@ -109,86 +109,34 @@ class OpenFile:
         self.position += n
         return text
 
-    def read_line(self, longest: int) -> str:
-        """LINE INPUT #: the characters up to a CR, which ends the line (and a LF right after
-        it is consumed); a LF that follows no CR belongs to the line, and so does a CR right
-        after such a LF; zero bytes are dropped; at most ``longest`` characters, the dialect's
-        string length (the rest is the next line).  DSKCOM.ASM ``DLINE`` (PC-BASIC 2.0.8 ends a line at a lone LF too)."""
+    # the three operations item_reading.read_item asks of a source (its module docstring)
+    def first(self) -> str:
+        """An item's first character; the end of the file is ``Input past end``."""
         data = self._input()
-        n = len(data)
-        i = self.position
-        if i >= n:
+        if self.position >= len(data):
             raise error_for(INPUT_PAST_END)
-        out: list[str] = []
-        after_lf = False
-        while i < n and len(out) < longest:
-            ch = data[i]
-            i += 1
-            if ch == "\r" and not after_lf:
-                if i < n and data[i] == "\n":
-                    i += 1
-                break
-            after_lf = ch == "\n"
-            if ch != "\0":
-                out.append(ch)
-        self.position = i
-        return "".join(out)
+        self.position += 1
+        return data[self.position - 1]
+
+    def next(self) -> str | None:
+        """The next character, or None at the end of the file (the first Ctrl-Z)."""
+        if self.position >= len(self.data):
+            return None
+        self.position += 1
+        return self.data[self.position - 1]
+
+    def back(self, ch: str) -> None:
+        """Give back the character just read (it is the one before the position)."""
+        self.position -= 1
+
+    def read_line(self, longest: int) -> str:
+        """LINE INPUT #: DSKCOM.ASM ``DLINE``, see item_reading (PC-BASIC 2.0.8 ends a line at
+        a lone LF too, where GW keeps it in the line)."""
+        return item_reading.read_item(self, item_reading.LINE, longest)
 
     def read_field(self, numeric: bool, longest: int) -> str:
-        """One INPUT # field as DSKCOM.ASM INPDOR reads it: blanks before it skipped (not line
-        ends: an empty line is an empty field, 0 for a number); a number ends at a blank, comma
-        or CR, a string at a comma or CR, a quoted one at its closing quote (CR and LF inside
-        kept; text after it begins the next field).  A LF is dropped from a string and kept in
-        a number's text (the number reader steps over it), and a CR right after LFs is skipped
-        (LPISLF).  After a quote or blank, blanks and then one comma or CR LF are consumed;
-        after a CR its LF.  A field stops after ``longest`` characters (255: STRCHR quits),
-        the rest beginning the next one (PC-BASIC 2.0.8 splits a longer one so)."""
-        data = self._input()
-        n = len(data)
-        i = self.position
-        while i < n and data[i] == " ":
-            i += 1
-        if i >= n:
-            raise error_for(INPUT_PAST_END)
-        quoted = not numeric and data[i] == '"'
-        i += quoted
-        ends = '"' if quoted else " ," if numeric else ","
-        out, stop = [], None
-        while i < n:
-            ch = data[i]
-            i += 1
-            if ch in ends:
-                stop = ch
-                break
-            if not quoted and ch == "\r":
-                stop = ch
-                break
-            if not quoted and ch == "\n":
-                count = 1
-                while i < n and data[i] == "\n":
-                    count, i = count + 1, i + 1
-                if i < n and data[i] == "\r":
-                    i += 1
-                if not numeric:
-                    continue
-                out.extend("\n" * count)
-            elif ch != "\0":  # a NUL is never stored (STRCHR)
-                out.append(ch)
-            if len(out) >= longest:
-                self.position = i
-                return "".join(out[:longest])
-        if stop in ('"', " "):
-            while i < n and data[i] == " ":
-                i += 1
-            if i < n and data[i] == ",":
-                i += 1
-            elif i < n and data[i] == "\r":
-                stop, i = "\r", i + 1
-        if stop == "\r" and i < n and data[i] == "\n":
-            i += 1
-        self.position = i
-        text = "".join(out)
-        return text if quoted or numeric else text.rstrip(" ")
+        """INPUT #: one item as DSKCOM.ASM ``INPDOR`` reads it, see item_reading."""
+        return item_reading.read_item(self, item_reading.NUMBER if numeric else item_reading.TEXT, longest)
 
     # -- LOF, LOC
     def length(self) -> int:
