@@ -250,7 +250,7 @@ class FileTable:
         for f in self.open_files.values():
             if f.mode == "R" and f.bound(key, current):
                 f.store(key, value, right)
-                return f.refreshed(dict(scalars, **{key: f.given[key]}))
+                return f.refreshed(scalars, stored=key)
         return {key: random_files.justified(value, len(current), right)}
 
     def close(self, numbers=()) -> None:

@@ -183,10 +183,12 @@ class RandomFile:
         self.position += len(part)
         return part
 
-    def refreshed(self, scalars: dict) -> dict[str, str]:
+    def refreshed(self, scalars: dict, stored: str | None = None) -> dict[str, str]:
         """The new values of the variables (in ``scalars``) still fielded on this file,
-        after something wrote into the buffer."""
-        return {key: self._give(key) for key in list(self.fields) if self.bound(key, scalars.get(key))}
+        after something wrote into the buffer; ``stored``: a variable just stored through
+        this file (LSET, RSET), fielded whatever ``scalars`` still holds for it."""
+        return {key: self._give(key) for key in list(self.fields)
+                if key == stored or self.bound(key, scalars.get(key))}
 
     def first(self) -> str:
         """An input item's first character (GIO86.ASM ``INCHR``): the end is ``Input past end``."""
