@@ -1,7 +1,7 @@
 """Fuzzing the file statements (issue 12): random OPEN / PRINT # / WRITE # / INPUT # /
 LINE INPUT # / INPUT$ / EOF / LOF / LOC / CLOSE / KILL / NAME / FILES programs, and the
 random-access files' OPEN ... LEN / FIELD / GET / PUT / LSET / RSET / RESET, and
-CHAIN / MERGE / COMMON / SAVE / LOAD, with
+CHAIN / MERGE / COMMON / SAVE (,A ,P) / LOAD (,R) / RUN "file", with
 names that try to leave the directory (absolute, ``..``, a symbolic link out), run in
 both dialects.  Each ends normally or with a BASIC error line, and no file ever
 appears, changes or disappears outside the program's directory.
@@ -49,6 +49,7 @@ def statement(data) -> str:
         # programs read from files (the chained program is this one again, or a file there)
         f"CHAIN {name}", f"CHAIN MERGE {name}, 999, ALL", f"MERGE {name}", "COMMON A$, X",
         f"SAVE {name}", f"SAVE {name}, A", f"LOAD {name}", "LIST", "DELETE 10-20", "NEW",
+        f"SAVE {name}, P", f"RUN {name}", f"LOAD {name}, R", f"CHAIN {name}, 10, ALL, DELETE 10-20",
         # the Casio's data bank and program files (gw: a Syntax error)
         f"NEW#: WRITE# {value}: SAVE# {name}", f"LOAD# {name}", f"GOSUB {name}",
         # strings at the limit
