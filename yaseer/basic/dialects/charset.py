@@ -44,9 +44,12 @@ _CASIO_HIGH = (
 class CharacterSet:
     """The characters that show codes 128..255 (``high``; None: Latin-1, shown as they are)."""
 
-    __slots__ = ("name", "_chars", "_codes", "_to_symbols", "_to_codes")
+    __slots__ = ("name", "_chars", "_codes", "_to_symbols", "_to_codes", "_cells")
 
-    def __init__(self, name: str, high: str | None = None):
+    def __init__(self, name: str, high: str | None = None, cells: str | None = None):
+        """``cells``: the 33 characters a screen cell holding code 0..31 or 127 is drawn with
+        (the display's font has a picture for each; printed, most of these codes act, as
+        the dialect's ``controls`` say, and what does not act is stored in a cell)."""
         self.name = name
         chars = [chr(n) for n in range(128)] + (list(high) if high else [chr(n) for n in range(128, 256)])
         if len(chars) != 256 or len(set(chars)) != 256:
@@ -55,6 +58,11 @@ class CharacterSet:
         self._codes = {ch: n for n, ch in enumerate(chars)}
         self._to_symbols = {n: chars[n] for n in range(128, 256)} if high else None
         self._to_codes = {ord(ch): n for n, ch in enumerate(chars) if n >= 128} if high else None
+        self._cells = None
+        if cells is not None:
+            if len(cells) != 33:
+                raise ValueError(f"character set {name}: 33 cell pictures needed (codes 0..31 and 127)")
+            self._cells = {**(self._to_symbols or {}), **dict(zip([*range(32), 127], cells))}
 
     def __repr__(self) -> str:  # stable across processes: the program cache keys on the dialect's repr
         return f"CharacterSet({self.name!r})"
@@ -83,6 +91,14 @@ class CharacterSet:
             return text
         return text.translate(self._to_symbols)
 
+    def cell_symbols(self, text: str) -> str:
+        """A screen's cells (codes) as the display draws them: :meth:`symbols`, and the codes
+        below 32 and 127 as the font's pictures where the set has them (a transcript of the
+        screen then holds no control characters)."""
+        if self._cells is None:
+            return self.symbols(text)
+        return text.translate(self._cells)
+
     def codes(self, text: str) -> str:
         """Text as typed or shown (symbols) in the machine's codes; other characters stay."""
         if self._to_codes is None or text.isascii():
@@ -105,5 +121,10 @@ LATIN1 = CharacterSet("latin-1")  # code n is chr(n): a machine without symbols 
 # The IBM PC's characters (code page 437, the table GW-BASIC's screen shows and its files hold):
 # what PC-BASIC 2.0.8 shows and saves by default; 0..127 stay ASCII (their control actions
 # are the screen's, dialects/screens.py).
-CP437 = CharacterSet("cp437", bytes(range(128, 256)).decode("cp437"))
+# The IBM PC's font draws codes 1..31 and 127 as pictures (code 0 as a blank); the
+# line breaks in a cell's row are the transcript's, so 10 and 13 are drawn too.
+CP437 = CharacterSet("cp437", bytes(range(128, 256)).decode("cp437"),
+                     cells=" \u263a\u263b\u2665\u2666\u2663\u2660\u2022\u25d8\u25cb\u25d9\u2642\u2640\u266a\u266b\u263c"
+                     "\u25ba\u25c4\u2195\u203c\u00b6\u00a7\u25ac\u21a8\u2191\u2193\u2192\u2190\u221f\u2194\u25b2\u25bc"
+                     "\u2302")
 CASIO = CharacterSet("casio", _CASIO_HIGH)

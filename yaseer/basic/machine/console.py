@@ -416,15 +416,17 @@ class Console:
         display = self.display
         if display is None or not display.drawn or self.csv:
             return
-        text = display.screen_text()
-        shown = self.dialect.charset.symbols(text)
+        lines = [self.dialect.charset.cell_symbols(line) for line in display.shown_lines()]
+        shown = "".join(line + "\n" for line in lines)
         if final and self.screens and self.screens[-1] == shown and not display.changed:
             return
         display.changed = False
         self.screens.append(shown)
         self.screen_glyphs.append(dict(self.user_characters))
         stream = self.screen.stream
-        stream.write(boxed(display.shown_lines(), display.columns) if self.boxed_screens else text)
+        if isinstance(stream, SymbolStream):  # (the lines are symbols already)
+            stream = stream.stream
+        stream.write(boxed(lines, display.columns) if self.boxed_screens else shown)
         stream.flush()
 
     def end_drawing(self) -> None:
