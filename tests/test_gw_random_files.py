@@ -29,14 +29,21 @@ def random_text(rng: random.Random) -> str:
     return "".join(rng.choice("abcXYZ 09-") for _ in range(rng.randint(0, 14)))
 
 
+def field_widths(rng: random.Random, count: int, length: int, least: int, most: int) -> list[int]:
+    """``count`` random field widths of ``least`` to ``most`` bytes that fit a record of
+    ``length`` bytes (each at most its share of what the ones before left)."""
+    widths, left = [], length
+    for _ in range(count):
+        width = rng.randint(least, max(least, min(most, left // count)))
+        widths.append(width)
+        left -= width
+    return widths
+
+
 def random_file_program(rng: random.Random) -> str:
     length = rng.choice([8, 16, 20, 32, 128])
     names = ["A$", "B$", "C$", "D$"][:rng.randint(1, 4)]
-    widths, left = [], length
-    for _ in names:
-        width = rng.randint(2, max(2, min(12, left // len(names))))
-        widths.append(width)
-        left -= width
+    widths = field_widths(rng, len(names), length, 2, 12)
     opening = rng.choice([f'OPEN "R", #1, "R.DAT", {length}', f'OPEN "R.DAT" AS #1 LEN = {length}',
                           f'OPEN "R.DAT" FOR RANDOM AS 1 LEN={length}'])
     lines = [opening, "FIELD #1, " + ", ".join(f"{w} AS {n}" for w, n in zip(widths, names))]
@@ -171,3 +178,74 @@ def test_fields_over_the_same_bytes_share_them(tmp_path):
     """DSKCOM.ASM FIELD points each variable into the buffer, so an LSET or RSET into one
     shows in every variable fielded over the same bytes; output and file against PC-BASIC 2.0.8."""
     programs_match_pcbasic(tmp_path, overlapping_fields_program, 24, 12)
+
+
+def element_fields_program(rng: random.Random) -> str:
+    """FIELD into array elements (DSKCOM.ASM FIELD finds each variable with PTRGET: an element
+    as well, its array made with the default size where there is no DIM) mixed with scalars:
+    LSET, RSET, PUT, GET, an element given another string (detached), ERASE and a new DIM
+    of the array (its elements detached), each variable shown in brackets."""
+    length = rng.choice([10, 16, 24])
+    names = ["A$(1)", "A$(7)", "B$(2,1)", "B$(0,0)", "C$", "D$"]
+    rng.shuffle(names)
+    names = names[:rng.randint(2, 5)]
+    lines = [f'OPEN "R", #1, "E.DAT", {length}', "DIM B$(2,1)"]
+    widths = field_widths(rng, len(names), length, 1, 8)
+    lines.append("FIELD #1, " + ", ".join(f"{w} AS {n}" for w, n in zip(widths, names)))
+    if rng.random() < 0.3:  # a second FIELD over the first field's bytes
+        names.append(rng.choice(["A$(3)", "B$(1,1)", "E$"]))
+        lines.append(f"FIELD #1, {widths[0]} AS {names[-1]}")
+    shown = ": ".join(f"S$={n}: GOSUB 1000" for n in dict.fromkeys(names)) + ": PRINT"
+    statements = [  # (weight, the statement for a variable)
+        (35, lambda name: f'{rng.choice(["LSET", "RSET"])} {name} = "{random_text(rng)}"'),
+        (15, lambda name: f"PUT #1, {rng.randint(1, 4)}"),
+        (15, lambda name: f"GET #1, {rng.randint(1, 5)}"),
+        (20, lambda name: shown),
+        (8, lambda name: f'{name} = "{random_text(rng)}!"'),  # detached from the buffer
+        (7, lambda name: "ERASE B$: DIM B$(2,1)"),  # the elements fielded are gone with the array
+    ]
+    for _ in range(rng.randint(5, 12)):
+        make = rng.choices([make for _, make in statements], [weight for weight, _ in statements])[0]
+        lines.append(make(rng.choice(names)))
+    lines += [shown, "CLOSE", "END"]
+    return "".join(f"{10 * (k + 1)} {text}\n" for k, text in enumerate(lines)) + SHOW
+
+
+def test_fields_of_array_elements_match_pcbasic(tmp_path):
+    """Array elements and scalars fielded together: output and file against PC-BASIC 2.0.8."""
+    programs_match_pcbasic(tmp_path, element_fields_program, 41, 20)
+
+
+ELEMENTS = """\
+10 OPEN "R",#1,"R.DAT",10
+20 DIM A$(2):FIELD #1,3 AS A$(1),7 AS A$(2)
+30 LSET A$(2)="hello":PUT 1:GET 1,1:PRINT A$(2)
+40 FIELD #1, 4 AS N$(10), 2 AS M$(1,2): RSET N$(10)="ab": LSET M$(1,2)="xyz": PUT 1, 2
+50 GET 1, 2: PRINT "[";N$(10);"][";M$(1,2);"][";A$(1);"]"
+"""
+
+
+def test_field_into_array_elements(tmp_path):
+    """The issue's example and arrays without DIM: PC-BASIC 2.0.8 prints ``hello`` and R.DAT
+    starts with three zero bytes, then ``hello`` and two blanks."""
+    theirs_dir, ours_dir = tmp_path / "pc", tmp_path / "ya"
+    theirs_dir.mkdir()
+    ours_dir.mkdir()
+    assert yaseer_run(ELEMENTS, ours_dir) == pcbasic_run(ELEMENTS, theirs_dir)
+    assert contents(ours_dir) == contents(theirs_dir)
+    assert contents(ours_dir)["R.DAT"][:10] == b"\0\0\0hello  "
+
+
+@pytest.mark.parametrize("source, message", [
+    ('10 OPEN "R", 1, "F", 16: FIELD #1, 2 AS A$(11)', "Subscript out of range in 10"),
+    ('10 OPEN "R", 1, "F", 16: FIELD #1, 2 AS A$(-1)', "Illegal function call in 10"),
+    ('10 OPEN "R", 1, "F", 16: FIELD #1, 300 AS A$(11)', "Illegal function call in 10"),  # GTBYTC first
+    ('10 OPEN "R", 1, "F", 16: FIELD #1, 17 AS A$(1)', "FIELD overflow in 10"),  # the source: DERFOV
+    ('10 OPEN "R", 1, "F", 16: FIELD #1, 2 AS A(1)', "Type mismatch in 10"),
+    ('10 OPTION BASE 1: OPEN "R", 1, "F", 16: FIELD #1, 2 AS A$(0)', "Subscript out of range in 10"),
+])
+def test_field_element_errors(tmp_path, source, message):
+    """As PC-BASIC 2.0.8 reports them, FIELD overflow as the source (PC-BASIC says nothing);
+    the width is read before the variable is found (DSKCOM.ASM FIELD calls GTBYTC, then
+    PTRGET, then tests the record's room)."""
+    assert yaseer_run(source + "\n", tmp_path).splitlines()[-1] == message

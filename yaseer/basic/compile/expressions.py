@@ -330,19 +330,24 @@ class ExpressionCompiler:
     def element(self, node, scope, made: bool = False) -> str:
         """The Python target of array element ``node``; ``made``: the array was made just before."""
         code = scope.array(node.name, len(node.indices), made)
+        return code + "".join(f"[{index}]" for index in self.subscripts(node, scope))
+
+    def subscripts(self, node, scope) -> list[str]:
+        """The Python subscripts (list indices) of array element ``node``, one a dimension."""
+        codes = []
         for index in node.indices:
             if isinstance(index, ast.Num) and self.lowest_fast_subscript <= index.value <= INT_MAX \
                     and index.value == int(index.value):
-                code += f"[{int(index.value)}]"
+                codes.append(str(int(index.value)))
             elif isinstance(index, ast.Var) and index.name in self.whole_index and isinstance(scope, BlockScope):
-                code += f"[{self.whole_index[index.name]}]"  # the subscript of a constant loop's value
+                codes.append(self.whole_index[index.name])  # the subscript of a constant loop's value
             elif isinstance(index, ast.Var) and index.name in self.counting_vars and isinstance(scope, BlockScope) \
                     and not self.plan.option_base:
                 rounding = "" if self.words.truncates else " + 0.5"
-                code += f"[int({scope.scalar(index.name)}{rounding})]"  # a loop variable known to be >= 0
+                codes.append(f"int({scope.scalar(index.name)}{rounding})")  # a loop variable known to be >= 0
             else:
-                code += f"[_ix({self.numeric(index, scope)})]"
-        return code
+                codes.append(f"_ix({self.numeric(index, scope)})")
+        return codes
 
     def expr_Unary(self, node, scope):
         if node.op != "NOT" and self.numbers.typed:

@@ -275,22 +275,27 @@ class InputOutputCompiler:
         self.emit(f"_open({self.string(stmt.mode, scope)}, {self.integer(stmt.number, scope)}, "
                   f"{self.string(stmt.name, scope)}, {length})")
 
-    # -- random-access files (random_files.py): a fielded variable is named by its scalar key
-    def field_key(self, target) -> str:
-        """The scalars' key of a FIELD or LSET variable (a string scalar; an array element
-        is not emulated: Illegal function call)."""
+    # -- random-access files (random_files.py): a fielded variable is named by its key
+    def field_key(self, target, scope) -> str:
+        """Python code for the key of a FIELD or LSET variable (a string variable, DSKCOM.ASM
+        ``PTRGET`` then ``FRCSTR``): a scalar's name, or an array element's (array name,
+        subscripts), the machine making the array if there is none."""
         if self.kind_of(target) != "s":
             raise type_mismatch()
-        if not isinstance(target, ast.Var):
-            raise CompileError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-        return self.numbers.name(target.name)
+        name = self.numbers.name(target.name)
+        if isinstance(target, ast.Var):
+            return repr(name)
+        subscripts = self.subscripts(target, scope)
+        scope.array(target.name, len(subscripts), made=True)  # its local reloaded after the call
+        return f"({name!r}, ({''.join(code + ', ' for code in subscripts)}))"
 
     def stmt_Field(self, stmt, scope):
-        pairs = "".join(f"({self.numeric(width, scope)}, {self.field_key(target)!r}), "
+        pairs = "".join(f"({self.numeric(width, scope)}, {self.field_key(target, scope)}), "
                         for width, target in stmt.fields)
         for _, target in stmt.fields:
-            scope.scalar(target.name)  # known to the machine from the start
-            self.made(target)  # FIELD's PTRGET makes it (a SWAP may ask: compiler.made)
+            if isinstance(target, ast.Var):
+                scope.scalar(target.name)  # known to the machine from the start
+                self.made(target)  # FIELD's PTRGET makes it (a SWAP may ask: compiler.made)
         number = self.new_temp()
         self.emit(f"{number} = ({self.numeric(stmt.number, scope)}, ({pairs}))")
         self.emit("#FLUSH#")  # FIELD stores the variables' slices in the machine's scalars
@@ -365,10 +370,11 @@ class InputOutputCompiler:
     def stmt_LSet(self, stmt, scope):
         """LSET / RSET: the machine stores the value, and every variable fielded over the
         same bytes of the buffer shows it (FLUSH and RELOAD around the call)."""
+        key = self.field_key(stmt.target, scope)  # (PTRGET finds the variable before the value is worked out)
         value = self.string(stmt.value, scope)
-        key = self.field_key(stmt.target)
+        current = scope.scalar(stmt.target.name) if isinstance(stmt.target, ast.Var) else "None"
         arguments = self.new_temp()
-        self.emit(f"{arguments} = ({key!r}, {value}, {scope.scalar(stmt.target.name)}, {stmt.right})")
+        self.emit(f"{arguments} = ({key}, {value}, {current}, {stmt.right})")
         self.emit("#FLUSH#")
         self.emit(f"_lset(*{arguments})")
         self.emit("#RELOAD#")

@@ -241,17 +241,24 @@ class FileTable:
         """PUT #n[, record]."""
         self.random(n).put(record)
 
-    def justify(self, key: str, value: str, current: str, right: bool, scalars: dict) -> dict[str, str]:
-        """LSET / RSET of variable ``key`` (now holding ``current``): the new values of the
-        variables, ``key``'s and, where ``key`` is fielded on an open file, those of every
-        variable fielded on it (in ``scalars``), which see its slice of the buffer filled
-        (DSKCOM.ASM FIELD points each variable into the buffer: two fields over the same
-        bytes are the same bytes)."""
+    def justify(self, key, value: str, current: str, right: bool, variables) -> dict:
+        """LSET / RSET of variable ``key`` (a scalar's name or an element's (array,
+        subscripts), now holding ``current``): the new values of the variables, ``key``'s
+        and, where ``key`` is fielded on an open file, those of every variable fielded on it
+        (read from ``variables``, a random_files.FieldedVariables), which see its slice of
+        the buffer filled (DSKCOM.ASM FIELD points each variable into the buffer: two fields
+        over the same bytes are the same bytes)."""
         for f in self.open_files.values():
             if f.mode == "R" and f.bound(key, current):
                 f.store(key, value, right)
-                return f.refreshed(scalars, stored=key)
+                return f.refreshed(variables, stored=key)
         return {key: random_files.justified(value, len(current), right)}
+
+    def forget_array(self, name: str) -> None:
+        """ERASE or DIM of array ``name``: its elements are no longer fields of any file."""
+        for f in self.open_files.values():
+            if f.mode == "R":
+                f.forget_array(name)
 
     def close(self, numbers=()) -> None:
         """CLOSE [n, ...]: the files named (no error for one not open), or all."""

@@ -11,6 +11,7 @@ import sys
 from yaseer.basic.arithmetic import formatting, mbf_digits, values
 
 from yaseer.basic.machine import gwfunctions, runtime
+from yaseer.basic.machine.random_files import FieldedVariables
 from yaseer.basic.errors import (
     BasicError, BAD_FILE_NAME, FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END,
 )
@@ -391,7 +392,8 @@ class InputOutput:
         fielded variables show what is there now (GW-BASIC's point into the buffer)."""
         file = getattr(stream, "file", None)
         if file is not None:
-            self.scalars.update(file.refreshed(self.scalars))
+            variables = self.fielded()
+            variables.update(file.refreshed(variables))
 
     def file_number(self, n) -> float:
         """INPUT #n into a numeric variable: one field, read as GW-BASIC reads numbers."""
@@ -406,18 +408,41 @@ class InputOutput:
             return self.files.get(n).read_chars(k)
         return self.input_keys(k)
 
+    def fielded(self) -> FieldedVariables:
+        """The variables a FIELD may name, scalars and array elements, by key."""
+        return FieldedVariables(self.scalars, self.arrays)
+
+    def field_element(self, key):
+        """The value of a FIELD or LSET variable ``key``; an element's array is made with its
+        default size if there is none (GW's PTRGET), a subscript beyond it ``Subscript out
+        of range`` (an IndexError)."""
+        if type(key) is str:
+            return self.scalars.get(key)
+        name, subscripts = key
+        values = self.array_nd(name, len(subscripts))
+        for k in subscripts:
+            values = values[k]
+        return values
+
     def get_record(self, n, record=None) -> None:
         """GET #n[, record]: read the record; its fielded variables take their slices."""
-        self.scalars.update(self.files.random(n).get(self.scalars, record))
+        file = self.files.random(n)
+        variables = self.fielded()
+        variables.update(file.get(variables, record))
 
-    def set_field(self, key: str, value: str, current: str, right: bool) -> None:
-        """LSET / RSET (files.justify): the variable, and the others fielded over its bytes."""
-        self.scalars.update(self.files.justify(key, value, current, right, self.scalars))
+    def set_field(self, key, value: str, current, right: bool) -> None:
+        """LSET / RSET (files.justify): the variable, and the others fielded over its bytes;
+        ``current``: a scalar's value (an element's is read here)."""
+        if type(key) is not str:
+            current = self.field_element(key)
+        variables = self.fielded()
+        variables.update(self.files.justify(key, value, current, right, variables))
 
     def field_variables(self, n, pairs) -> None:
         """FIELD #n, width AS variable, ...: ``pairs`` of (width, variable key); each
         variable holds its slice of the buffer at once."""
-        self.scalars.update(self.files.random(n).field(pairs))
+        values = self.files.random(n).field(pairs, self.field_element)
+        self.fielded().update(values)
 
     def list_files(self, pattern) -> None:
         """FILES [pattern]: GW-BASIC's listing: the directory (``C:\\``, the sandbox as

@@ -21,7 +21,12 @@ start; a byte beyond the record is ``FIELD overflow`` (``FOVCHK``).  The FIELD v
 then show what PRINT # wrote (the machine refreshes them after each such statement).
 
 Characters are bytes (latin-1), as in the sequential files.  A fielded variable is
-named by its key in the machine's scalars (``A$``).  GW-BASIC's field variables point
+named by its key: a scalar's in the machine's scalars (``A$``), an array element's the
+array's name and its subscripts (``("A$", (1,))``: DSKCOM.ASM ``FIELD`` finds each variable
+with ``PTRGET``, which takes an element as well, making the array with its default size
+if there is none); :class:`FieldedVariables` reads and stores both kinds.  ERASE or a new
+DIM of the array detaches its elements (:meth:`RandomFile.forget_array`: the descriptors
+that pointed into the buffer are gone with the array).  GW-BASIC's field variables point
 into the buffer itself, so a ``LET`` to one detaches it from the buffer: GET no longer
 changes it and LSET pads to its own length.  Here a fielded variable stays bound while
 it holds the very string object the file last gave it (FIELD, GET, LSET give them);
@@ -70,8 +75,8 @@ class RandomFile:
         self.length_of_record = length
         self.handle = open(descriptor, "r+b")
         self.buffer = bytearray(length)
-        self.fields: dict[str, tuple[int, int]] = {}  # variable key -> (offset, width)
-        self.given: dict[str, str] = {}  # variable key -> the string object it was last given
+        self.fields: dict = {}  # variable key (str or (array, subscripts)) -> (offset, width)
+        self.given: dict = {}  # variable key -> the string object it was last given
         self.last = 0  # LOC: the record last read or written
         self.past_end = False  # the last GET read beyond the end, or INPUT # met a Ctrl-Z
         self.position = 0  # the buffer's byte PRINT # writes or INPUT # reads next (FD_OPS)
@@ -79,9 +84,11 @@ class RandomFile:
         self.stream = RecordStream(self)
 
     # -- FIELD, LSET, RSET
-    def field(self, pairs) -> dict[str, str]:
+    def field(self, pairs, find=None) -> dict:
         """FIELD: ``pairs`` of (width, variable key) from the buffer's start; the variables'
-        new values (their slices of the buffer)."""
+        new values (their slices of the buffer).  ``find(key)``: called for each variable
+        after its width is checked and before the record's room is (DSKCOM.ASM ``FIELD``:
+        ``GTBYTC``, then ``PTRGET``, then the ``DERFOV`` test), to make it or fail."""
         offset = 0
         for width, key in pairs:
             from yaseer.basic.machine.runtime import cint
@@ -89,6 +96,8 @@ class RandomFile:
             width = cint(width)
             if not 0 <= width <= 255:
                 raise error_for(ILLEGAL_FUNCTION_CALL)
+            if find is not None:
+                find(key)
             if offset + width > self.length_of_record:
                 raise error_for(FIELD_OVERFLOW)
             self.fields[key] = (offset, width)
@@ -100,7 +109,13 @@ class RandomFile:
         self.given[key] = text
         return text
 
-    def bound(self, key: str, current) -> bool:
+    def forget_array(self, name: str) -> None:
+        """Detach the elements of array ``name`` (ERASE, DIM: the array is made again)."""
+        for key in [k for k in self.fields if type(k) is tuple and k[0] == name]:
+            del self.fields[key]
+            self.given.pop(key, None)
+
+    def bound(self, key, current) -> bool:
         """Whether variable ``key``, now holding ``current``, is still a field of this file
         (a field variable the program has stored another string in is not: it is unbound)."""
         if key not in self.fields:
@@ -138,9 +153,9 @@ class RandomFile:
             raise error_for(BAD_RECORD_NUMBER)
         return n
 
-    def get(self, scalars: dict, record=None) -> dict[str, str]:
-        """GET: read a record into the buffer; the new values of the variables (in
-        ``scalars``) still fielded."""
+    def get(self, scalars, record=None) -> dict[str, str]:
+        """GET: read a record into the buffer; the new values of the variables (read from
+        ``scalars``: a :class:`FieldedVariables`) still fielded."""
         n = self._record(record)
         self.handle.seek((n - 1) * self.length_of_record)
         data = self.handle.read(self.length_of_record)
@@ -183,8 +198,8 @@ class RandomFile:
         self.position += len(part)
         return part
 
-    def refreshed(self, scalars: dict, stored: str | None = None) -> dict[str, str]:
-        """The new values of the variables (in ``scalars``) still fielded on this file,
+    def refreshed(self, scalars, stored=None) -> dict:
+        """The new values of the variables (read from ``scalars``: a :class:`FieldedVariables`) still fielded on this file,
         after something wrote into the buffer; ``stored``: a variable just stored through
         this file (LSET, RSET), fielded whatever ``scalars`` still holds for it."""
         return {key: self._give(key) for key in list(self.fields)
@@ -247,6 +262,40 @@ class RandomFile:
 
     def close(self) -> None:
         self.handle.close()
+
+
+class FieldedVariables:
+    """The variables a FIELD may name, by key: a scalar's name, or an array element's
+    (array name, subscripts); ``scalars`` and ``arrays`` are the machine's (an array nested
+    lists, one level a dimension)."""
+
+    def __init__(self, scalars: dict, arrays: dict):
+        self.scalars = scalars
+        self.arrays = arrays
+
+    def get(self, key):
+        """The variable's value; None for an element of an array that is not there (erased)."""
+        if type(key) is str:
+            return self.scalars.get(key)
+        name, subscripts = key
+        values = self.arrays.get(name)
+        if values is None:
+            return None
+        for k in subscripts:
+            values = values[k]
+        return values
+
+    def update(self, values: dict) -> None:
+        """Store ``values`` (key -> string) in the variables."""
+        for key, value in values.items():
+            if type(key) is str:
+                self.scalars[key] = value
+                continue
+            name, subscripts = key
+            row = self.arrays[name]
+            for k in subscripts[:-1]:
+                row = row[k]
+            row[subscripts[-1]] = value
 
 
 def justified(value: str, width: int, right: bool) -> str:

@@ -95,6 +95,7 @@ class Variables:
             raise BasicError("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
         old = self.arrays.get(name), self.array_dims.get(name), self.array_elements
         self._reserve(name, dims)
+        self.files.forget_array(name)  # FIELD's elements of the array it replaces are no longer fields
         self.arrays[name] = _new_array(dims, initial_value(name))
         self.array_dims[name] = dims
         self._check_variable_area(name, old)
@@ -151,6 +152,7 @@ class Variables:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         self.array_elements -= _units(name, dims)
         del self.arrays[name], self.array_dims[name]
+        self.files.forget_array(name)  # FIELD's elements of it are no longer fields
         self.explicit_arrays.discard(name)
         self.unmark_made(name + "()")
 
