@@ -126,7 +126,7 @@ def test_random_file_statements_match_pcbasic(tmp_path):
     ('10 OPEN "R", 1, "F", 16: PUT #1, 70000', "Overflow in 10"),  # ADRGET: 16 bits
     ('10 OPEN "O", 1, "F": FIELD #1, 2 AS A$', "Bad file mode in 10"),
     ('10 OPEN "O", 1, "F": GET #1', "Bad file mode in 10"),
-    ('10 GET #2', "Bad file number in 10"),
+    ('10 GET #2', "Bad file mode in 10"),  # not open: DERFNO, which is Bad file mode (GWDATA.ASM)
     ('10 OPEN "R", 1, "F", 16: FIELD #1, 2 AS A', "Type mismatch in 10"),
     ('10 OPEN "F" AS 1 SIZE 4', "Syntax error in 10"),
     # INPUT # reads the record buffer: its zero bytes are skipped to the record's end (GIODSK.ASM FOVCHK)
@@ -249,3 +249,30 @@ def test_field_element_errors(tmp_path, source, message):
     the width is read before the variable is found (DSKCOM.ASM FIELD calls GTBYTC, then
     PTRGET, then tests the record's room)."""
     assert yaseer_run(source + "\n", tmp_path).splitlines()[-1] == message
+
+
+@pytest.mark.parametrize("source, message", [
+    ("10 GET #3, 1", "Bad file mode"),  # not open
+    ("10 PUT 2", "Bad file mode"),
+    ("10 GET #4, 1", "Bad file mode"),  # beyond the three files: looked for all the same
+    ("10 PUT #255", "Bad file mode"),
+    ('10 OPEN "R", 1, "F", 16: GET #1: GET #2', "Bad file mode"),
+    ("10 GET #0", "Bad file number"),  # GETNZB
+    ("10 PUT #0.4, 1", "Bad file number"),
+    ("10 GET #256", "Illegal function call"),  # GETBYT
+    ("10 PUT #-1", "Illegal function call"),
+    ("10 GET #32768", "Overflow"),  # GETBYT's FRCINT
+    ("10 FIELD #-32769, 2 AS A$", "Overflow"),
+    ("10 PRINT INPUT$(1, #5)", "Bad file mode"),  # DSKCOM.ASM FIXINP: FILSCN, DERFNO
+    ("10 PRINT INPUT$(1, #0)", "Bad file number"),
+])
+def test_get_put_input_chars_of_a_file_not_open(tmp_path, source, message):
+    """GET and PUT find their file as GIO86.ASM DPUTG does (POFNUM: GETBYT, 0 ``Bad file
+    number``; FDBPTR finds no open file: DERFNO, which GWDATA.ASM maps to ``Bad file mode``),
+    INPUT$ as DSKCOM.ASM FIXINP; PC-BASIC 2.0.8 says the same."""
+    theirs_dir, ours_dir = tmp_path / "pc", tmp_path / "ya"
+    theirs_dir.mkdir()
+    ours_dir.mkdir()
+    ours = yaseer_run(source + "\n", ours_dir)
+    assert ours == f"{message} in 10\n"
+    assert ours == pcbasic_run(source + "\n", theirs_dir)

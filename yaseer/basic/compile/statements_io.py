@@ -297,18 +297,20 @@ class InputOutputCompiler:
                 scope.scalar(target.name)  # known to the machine from the start
                 self.made(target)  # FIELD's PTRGET makes it (a SWAP may ask: compiler.made)
         number = self.new_temp()
-        self.emit(f"{number} = ({self.numeric(stmt.number, scope)}, ({pairs}))")
+        self.emit(f"{number} = ({self.integer(stmt.number, scope)}, ({pairs}))")
         self.emit("#FLUSH#")  # FIELD stores the variables' slices in the machine's scalars
         self.emit(f"_field(*{number})")
         self.emit("#RELOAD#")
 
     def stmt_GetPut(self, stmt, scope):
+        # the file number first, a 16-bit integer (GIO86.ASM DPUTG: POFNUM's GETBYT, FRCINT)
+        file = self.integer(stmt.number, scope)
         record = "None" if stmt.record is None else self.numeric(stmt.record, scope)
         if stmt.put:
-            self.emit(f"_put({self.numeric(stmt.number, scope)}, {record})")
+            self.emit(f"_put({file}, {record})")
             return
         number = self.new_temp()
-        self.emit(f"{number} = ({self.numeric(stmt.number, scope)}, {record})")
+        self.emit(f"{number} = ({file}, {record})")
         self.emit("#FLUSH#")  # GET stores the fielded variables in the machine's scalars
         self.emit(f"_get(*{number})")
         self.emit("#RELOAD#")

@@ -228,10 +228,25 @@ class FileTable:
             raise error_for(BAD_FILE_NUMBER)
         return f
 
+    def opened(self, n) -> OpenFile:
+        """Open file ``n`` as GET, PUT and INPUT$ find it: a byte (above 255 ``Illegal
+        function call``), 0 ``Bad file number`` (GIO86.ASM ``POFNUM`` -> ``GETNZB``), then
+        looked for among the open files, whatever the number of files: one not open is
+        ``Bad file mode`` (``FDBPTR`` finds none, ``DERFNO``: GWDATA.ASM gives ``ERRFNO`` the
+        code of ``ERRBFM``)."""
+        k = file_byte(n)
+        if k == 0:
+            raise error_for(BAD_FILE_NUMBER)
+        f = self.open_files.get(k)
+        if f is None:
+            raise error_for(BAD_FILE_MODE)
+        return f
+
     # -- random-access files (random_files.py)
-    def random(self, n) -> random_files.RandomFile:
-        """Open file ``n``, which must be a random one (else ``Bad file mode``)."""
-        f = self.get(n)
+    def random(self, n, find=None) -> random_files.RandomFile:
+        """Open file ``n`` (found by ``find``: :meth:`get` unless given), which must be a
+        random one (else ``Bad file mode``)."""
+        f = (find or self.get)(n)
         if f.mode != "R":
             raise error_for(BAD_FILE_MODE)
         return f
@@ -239,7 +254,7 @@ class FileTable:
 
     def put(self, n, record=None) -> None:
         """PUT #n[, record]."""
-        self.random(n).put(record)
+        self.random(n, self.opened).put(record)
 
     def justify(self, key, value: str, current: str, right: bool, variables) -> dict:
         """LSET / RSET of variable ``key`` (a scalar's name or an element's (array,

@@ -405,7 +405,7 @@ class InputOutput:
         if not 1 <= k <= 255:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         if n is not None:
-            return self.files.get(n).read_chars(k)
+            return self.files.opened(n).read_chars(k)
         return self.input_keys(k)
 
     def fielded(self) -> FieldedVariables:
@@ -426,7 +426,7 @@ class InputOutput:
 
     def get_record(self, n, record=None) -> None:
         """GET #n[, record]: read the record; its fielded variables take their slices."""
-        file = self.files.random(n)
+        file = self.files.random(n, self.files.opened)
         variables = self.fielded()
         variables.update(file.get(variables, record))
 
