@@ -39,6 +39,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable, NamedTuple
 
+from yaseer.basic.source.line_ranges import deleted_lines
 from yaseer.basic.source.scanner import entry_messages
 from yaseer.basic.errors import (
     BREAK,
@@ -117,6 +118,17 @@ def parse_range(text: str) -> tuple[int, int]:
         return first, first
     last = int(last_text) if last_text else MAX_LINE_NUMBER
     return first, last
+
+
+def given_range(text: str) -> tuple[int | None, int | None]:
+    """GW-BASIC's ``[first][-[last]]`` (GWMAIN.ASM SCNLIN): the numbers, None where left out
+    (``"20"`` is 20 to 20; ``""`` and ``"-"`` none)."""
+    match = re.fullmatch(r"(\d*)\s*(-?)\s*(\d*)", text.strip())
+    if not match or (match.group(3) and not match.group(2)):
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+    first = int(match.group(1)) if match.group(1) else None
+    last = int(match.group(3)) if match.group(3) else None
+    return (first, first) if not match.group(2) and first is not None else (first, last)
 
 
 def lines_in_range(program: Program, first: int, last: int) -> list[int]:
@@ -421,14 +433,19 @@ class Session:
         self.auto = (start, step)
 
     def command_delete(self, argument: str) -> None:
-        """DELETE range: remove lines; a single missing line is an error."""
-        if not argument:
+        """DELETE range: remove lines; a single missing line is an error (where the dialect's
+        range must end on a line, ``delete_needs_last_line``: source/line_ranges.py)."""
+        exact = self._dialect().delete_needs_last_line
+        if not argument and not exact:
             raise BasicError("Syntax error", SYNTAX_ERROR)
         self._refuse_password()  # a program write (PASS.md item 5)
-        first, last = parse_range(argument)
-        doomed = lines_in_range(self.program, first, last)
-        if not doomed and first == last:
-            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        if exact:
+            doomed = deleted_lines(self.program, *given_range(argument))
+        else:
+            first, last = parse_range(argument)
+            doomed = lines_in_range(self.program, first, last)
+            if not doomed and first == last:
+                raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         for number in doomed:
             del self.program[number]
         self._can_continue = False

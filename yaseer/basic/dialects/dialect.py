@@ -103,10 +103,11 @@ FIELDS = (
     "else_alone_skips",  # bool: False
     "saves_going_on",  # tuple[str, ...]: ()
     "using_each_value",  # bool: False
+    "delete_needs_last_line",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None, False, (), False)
+            None, False, False, True, False, None, False, (), False, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -285,6 +286,11 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         session clears what RUN clears (variables, arrays, FN, DEF types, OPTION BASE, RND's
         seed, ON ERROR, open files, the stack; CONT impossible: GWMAIN.ASM FINI and GWLIST.ASM
         DELETE end in BIMISC.ASM RUNC/CLEARC); False (casio) keeps them.
+        ``delete_needs_last_line``: True when the session's DELETE range must end on a line
+        of the program and start before it, else ``Illegal function call`` (GWLIST.ASM
+        DELETE: FNDLIN must find the upper bound, which SCNLIN makes 65530, above every
+        line, when none is given; source/line_ranges.py); False (casio): any range removes
+        the lines in it, a single missing line is the error.
         ``handler_must_resume``: True when running off the program's last line inside an
         error handler is the error No RESUME in the last line run (GWMAIN.ASM PRGEND: ONEFLG
         still set); END leaves a handler quietly in both dialects. False (casio, whose RESUME
@@ -372,6 +378,7 @@ GW = Dialect(
     direct_line_number=65535, edit_clears=True, handler_must_resume=True,
     for_array_elements=False, untrapped_errors_noted=True,
     using_digits=24, else_alone_skips=True, saves_going_on=("", "P"), using_each_value=True,
+    delete_needs_last_line=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -29,6 +29,7 @@ from yaseer.basic.errors import (
     password_protected,
 )
 from yaseer.basic.machine.signals import ProgramEnd
+from yaseer.basic.source.line_ranges import deleted_lines
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
@@ -133,11 +134,8 @@ class Chaining:
         elif name == "NEW":
             self.program_protected = False
             raise ChainTo({}, False, None, True, None, False)
-        elif name == "DELETE":
-            first, last = argument
-            doomed = [n for n in program if (first or 0) <= n <= (65529 if last is None else last)]
-            if not doomed or (first is not None and first not in program and first == last):
-                raise error_for(ILLEGAL_FUNCTION_CALL)
+        elif name == "DELETE":  # its range must end on a line (GWLIST.ASM DELETE: source/line_ranges.py)
+            doomed = deleted_lines(program, *argument)
             raise ChainTo({n: t for n, t in program.items() if n not in doomed}, False, None, True, None, False)
         elif name == "EDIT" and words is not None and words.edit_lists_from:
             self._list_lines(program, (argument, None), 0)  # the edit mode shows the program from there
@@ -289,13 +287,9 @@ class Chaining:
         return n & 0xFFFF
 
     def _check_range(self, delete) -> None:
-        """The DELETE range of a CHAIN MERGE: its last line must exist, its first not after it."""
-        first, last = delete
-        program = self.programs.get(0, {})
-        if last is None:
-            last = max(program, default=0)
-        if last not in program or (first is not None and first > last):
-            raise error_for(ILLEGAL_FUNCTION_CALL)
+        """The DELETE range of a CHAIN: its last line must exist, its first not after it
+        (FIVEO.ASM CHAIN: SCNLIN and FNDLIN as DELETE's, source/line_ranges.py)."""
+        deleted_lines(self.programs.get(0, {}), *delete)
 
     def chained(self, chain: ChainTo) -> ChainStart | None:
         """Carry out a CHAIN or MERGE: the program and variables it leaves; where the run
@@ -304,10 +298,8 @@ class Chaining:
         program = dict(self.programs.get(0, {}))
         keep = None if chain.everything else self.common_names()
         if chain.delete is not None:
-            first, last = chain.delete
-            first = 0 if first is None else first
-            last = max(program, default=0) if last is None else last
-            program = {n: t for n, t in program.items() if not first <= n <= last}
+            doomed = set(deleted_lines(program, *chain.delete))
+            program = {n: t for n, t in program.items() if n not in doomed}
         stopped = chain.stopped
         if chain.merge:  # a line that does not fit with the program: Out of memory, not trapped
             program, full = memory_model.fitting_lines(program, chain.lines, self.dialect.free_memory)

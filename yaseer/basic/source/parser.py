@@ -391,7 +391,7 @@ class _ToAst:
         return ast.Command(c[0].value, everything=everything)
 
     def delete_stmt(self, c):
-        return ast.Command("DELETE", c[1])
+        return ast.Command("DELETE", c[1] if len(c) > 1 else (None, None))  # alone: the whole range
 
     def edit_stmt(self, c):
         if len(c) == 1:  # EDIT alone: from the first line (the Casio's; the compiler refuses it elsewhere)
