@@ -175,3 +175,34 @@ def test_key_list_prints_each_key():
     _, out = run('10 KEY 2, "RUN" + CHR$(13)\n20 KEY LIST\n')
     assert out.splitlines()[:3] == ["F1 LIST ", "F2 RUN\u2190", 'F3 LOAD"']
     assert out.splitlines()[9] == "F10 SCREEN 0,0,0\u2190" and len(out.splitlines()) == 10
+
+
+@pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+@pytest.mark.parametrize("statement, message", [
+    ("COLOR", "Illegal function call"),
+    ("COLOR ,", "Missing operand"),
+    ("COLOR 1,2,", "Missing operand"),
+    ("COLOR ,,,", "Missing operand"),
+    ("COLOR 1,2,3,4", "Illegal function call"),
+    ("COLOR 1,2,3,4,", "Missing operand"),
+    ("SCREEN", "Missing operand"),
+    ("SCREEN ,", "Missing operand"),
+    ("SCREEN 0,0,0,0,0", "Illegal function call"),
+    ("SCREEN ,0", None),
+    ("COLOR ,1", None),
+    ("VIEW", "Illegal function call"),
+])
+def test_color_screen_and_view_as_pcbasic(tmp_path, statement, message):
+    """GWSTS.ASM COLOR and SCREEN read any number of arguments, left-out ones too (GTPRMS),
+    and leave their checks to the OEM's SETCLR and SCRSTT, which the published source has
+    not; its VIEW is a stub (Advanced feature).  So PC-BASIC 2.0.8 is the reference: the
+    error is the statement's, after the statements before it on the line."""
+    from test_gw_files import pcbasic_run, yaseer_run
+
+    source = f'10 PRINT "a";: {statement}: PRINT "b"\n'
+    theirs, ours = tmp_path / "pc", tmp_path / "ya"
+    theirs.mkdir()
+    ours.mkdir()
+    expected = "ab\n" if message is None else f"a\n{message} in 10\n"
+    assert yaseer_run(source, ours) == expected
+    assert pcbasic_run(source, theirs) == expected

@@ -9,7 +9,7 @@ from contextlib import contextmanager
 
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.expressions import CompileError, syntax_error, type_mismatch
-from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, OUT_OF_DATA, UNDEFINED_LINE, undefined_line_message
+from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, MISSING_OPERAND, OUT_OF_DATA, UNDEFINED_LINE, undefined_line_message
 
 
 def _is_safe_item(item) -> bool:
@@ -349,9 +349,20 @@ class InputOutputCompiler:
         return "(" + "".join(("None" if a is None else self.integer(a, scope)) + ", " for a in args) + ")"
 
     def stmt_ScreenStatement(self, stmt, scope):
-        """COLOR and SCREEN: at most three and four arguments; the machine checks them."""
-        if len(stmt.args) > (3 if stmt.word == "COLOR" else 4):
-            raise syntax_error()
+        """COLOR and SCREEN: at most three and four arguments; the machine checks them.
+        GWSTS.ASM reads any number of arguments, left-out ones too (GTPRMS), and leaves
+        their checking to the OEM's SETCLR and SCRSTT, which the source does not hold; so
+        as PC-BASIC 2.0.8: a list ending in a comma (``COLOR ,``) or an empty SCREEN is
+        Missing operand, COLOR alone and more arguments than the statement has Illegal
+        function call.  VIEW alone resets the graphics viewport, which text mode has not:
+        Illegal function call."""
+        args = stmt.args
+        if stmt.word == "VIEW" or (stmt.word == "COLOR" and not args):
+            raise CompileError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        if not args or (len(args) > 1 and args[-1] is None):
+            raise CompileError("Missing operand", MISSING_OPERAND)
+        if len(args) > (3 if stmt.word == "COLOR" else 4):
+            raise CompileError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         self.emit(f"_M.screen_statement({stmt.word!r}, {self.optional_numbers(stmt.args, scope)})")
 
     def stmt_ViewPrint(self, stmt, scope):

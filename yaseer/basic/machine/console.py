@@ -343,10 +343,8 @@ class Console:
         is Illegal function call, as on a monochrome display)."""
         display = self._screen_model()
         values = [None if a is None else runtime.cint(a) for a in args]
-        if word == "SCREEN":
+        if word == "SCREEN":  # (a mode left out keeps the mode, as PC-BASIC 2.0.8's SCREEN ,0)
             limits = (0, 1, 7, 7)
-            if not values or values[0] is None:
-                raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         else:
             limits = (31, 15, 15)
         for value, limit in zip(values, limits):

@@ -444,6 +444,9 @@ class _ToAst:
     def screen_stmt(self, c):
         return ast.ScreenStatement("SCREEN", c[1])
 
+    def view_alone(self, c):
+        return ast.ScreenStatement("VIEW", [])
+
     def view_print(self, c):
         return ast.ViewPrint(c[2], c[4]) if len(c) > 2 else ast.ViewPrint()
 

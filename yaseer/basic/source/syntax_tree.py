@@ -512,8 +512,8 @@ class Cls:
 @_node
 class ScreenStatement:
     """A text-screen statement whose arguments may each be left out (None):
-    ``word`` LOCATE (row/column, cursor), COLOR (foreground, background, border) or
-    SCREEN (mode, colour switch, pages)."""
+    ``word`` LOCATE (row/column, cursor), COLOR (foreground, background, border),
+    SCREEN (mode, colour switch, pages) or VIEW alone (the graphics viewport reset)."""
     word: str
     args: list
 
