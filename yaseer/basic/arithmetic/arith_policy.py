@@ -14,10 +14,14 @@ prints the message with ``$STPRN`` and a carriage return and line feed.
 
 :class:`ArithmeticPolicy` holds the machine-side half; :func:`helpers` gives the
 compiled code's ``/`` and the wrapped ``\\``, ``MOD``, ``^`` and ``EXP`` of a
-dialect whose policy continues.
+dialect whose policy continues.  :func:`gw_routines` is the table of GW-BASIC's
+single-precision SIN, COS, TAN, ATN, LOG, EXP and ``^``: the optional C accelerator's
+where it is built (the same values, bit for bit), else gw_transcendental's.
 """
 
 from __future__ import annotations
+
+import os
 
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
 from yaseer.basic.arithmetic import values
@@ -64,9 +68,10 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
     transcendental functions (:func:`transcendental_functions`).  (A
     ``\\`` or ``MOD`` by zero gives a single 1.701412E+38 with the dividend's sign, as
     PC-BASIC 2.0.8 shows.)"""
-    from yaseer.basic.arithmetic import gw_transcendental, single_arith
+    from yaseer.basic.arithmetic import single_arith
     result = policy.result
     transcendental = transcendental_functions(policy)
+    gw_power = gw_routines()["power"]
 
     def single_overflow(negative: bool) -> float:
         return result(OVERFLOW, negative, "!")
@@ -127,7 +132,7 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
             except ZeroDivisionError:
                 return result(DIVISION_BY_ZERO, False, "!")  # zero to a negative power: positive
         try:
-            return gw_transcendental.power(a, b, single_overflow)
+            return gw_power(a, b, single_overflow)
         except ZeroDivisionError:
             return result(DIVISION_BY_ZERO, False, "!")
 
@@ -169,20 +174,47 @@ def helpers(policy: ArithmeticPolicy, int_divide, int_modulo, power) -> dict:
 
 def transcendental_functions(policy: ArithmeticPolicy) -> dict:
     """The compiled code's ``_sin _cos _tan _atn _log _exp`` for a typed dialect:
-    GW-BASIC's single-precision routines step by step (gw_transcendental.py), an
+    GW-BASIC's single-precision routines step by step (:func:`gw_routines`), an
     overflow (EXP) or a TAN whose cosine is 0 through the policy."""
-    from yaseer.basic.arithmetic import gw_transcendental
-
+    routines = gw_routines()
     result = policy.result
+    gw_exp, gw_tan, gw_sin = routines["exp"], routines["tan"], routines["sin"]
 
     def exp(x):
-        return gw_transcendental.exp(x, lambda negative: result(OVERFLOW, negative, "!"))
+        return gw_exp(x, lambda negative: result(OVERFLOW, negative, "!"))
 
     def tan(x):
         try:
-            return gw_transcendental.tan(x)
+            return gw_tan(x)
         except ZeroDivisionError:  # $FDIVS by 0: the infinity has the sine's sign
-            return result(DIVISION_BY_ZERO, gw_transcendental.sin(x) < 0, "!")
+            return result(DIVISION_BY_ZERO, gw_sin(x) < 0, "!")
 
-    return {"_sin": gw_transcendental.sin, "_cos": gw_transcendental.cos, "_tan": tan,
-            "_atn": gw_transcendental.atn, "_log": gw_transcendental.log, "_exp": exp}
+    return {"_sin": gw_sin, "_cos": routines["cos"], "_tan": tan,
+            "_atn": routines["atn"], "_log": routines["log"], "_exp": exp}
+
+
+GW_ROUTINES = ("sin", "cos", "tan", "atn", "log", "exp", "power")
+"""gw_transcendental's functions that the C accelerator (``_mbf_fast``) computes too."""
+
+PURE_PYTHON = "YASEER_PURE_PYTHON"
+"""The environment variable that, set to anything but ``""`` or ``0``, keeps the Python functions."""
+
+
+def gw_routines() -> dict:
+    """GW-BASIC's single-precision routines by name (:data:`GW_ROUTINES`; ``exp`` and
+    ``power`` take the overflow handler gw_transcendental's take): the C accelerator's
+    when it was built (setup.py; an optional extension) and :data:`PURE_PYTHON` is not
+    set, else gw_transcendental's.  Each C routine computes the Python function's value
+    bit for bit (tests/test_mbf_fast.py) and hands every unusual call (an error, an
+    overflow, an argument that is not a single in MBF's range) to that Python function,
+    so the errors are the Python module's own."""
+    from yaseer.basic.arithmetic import gw_transcendental
+
+    python = {name: getattr(gw_transcendental, name) for name in GW_ROUTINES}
+    if os.environ.get(PURE_PYTHON, "") not in ("", "0"):
+        return python
+    try:
+        from yaseer.basic.arithmetic import _mbf_fast
+    except ImportError:  # not built (no C compiler where yaseer was installed)
+        return python
+    return {name: _mbf_fast.bound(name, function) for name, function in python.items()}

@@ -1,0 +1,28 @@
+"""Build of the optional C accelerator (everything else is in pyproject.toml).
+
+yaseer.basic.arithmetic._mbf_fast computes gw's SIN COS TAN ATN LOG EXP and ``^`` bit for
+bit as yaseer/basic/arithmetic/gw_transcendental.py does, faster.  It is optional: where
+no C compiler (or no Python headers) is found the build warns and goes on, and yaseer
+uses the Python functions (arith_policy.gw_routines).
+"""
+
+from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
+
+
+class BuildExt(build_ext):
+    """No contraction of ``a*b + c`` into fused multiply-adds (gcc's default on some
+    machines): every double operation of the module must round as Python's does."""
+
+    def build_extensions(self):
+        if self.compiler.compiler_type != "msvc":  # (MSVC does not contract by default)
+            for extension in self.extensions:
+                extension.extra_compile_args = [*extension.extra_compile_args, "-ffp-contract=off"]
+        super().build_extensions()
+
+
+setup(
+    ext_modules=[Extension("yaseer.basic.arithmetic._mbf_fast", ["yaseer/basic/arithmetic/_mbf_fast.c"],
+                           optional=True)],
+    cmdclass={"build_ext": BuildExt},
+)
