@@ -11,32 +11,26 @@ C functions too.
 
 The module is built by ``pip install`` where a C compiler is found (setup.py: an
 optional extension); CI's machine has gcc, so CI runs these.  Where it is not built the
-comparisons skip, saying so, and the tests of the pure-Python path (which is then the
-only one) still run.
+comparisons skip, saying so once, and the tests of the pure-Python path
+(tests/test_mbf_fast_fallback.py) still run.
 """
 
 from __future__ import annotations
 
 import math
-import os
 import random
 import struct
-import subprocess
-import sys
 from fractions import Fraction
-from pathlib import Path
 
 import pytest
 
-from yaseer.basic.arithmetic import arith_policy, gw_transcendental as gw, single_arith
+from yaseer.basic.arithmetic import gw_transcendental as gw, single_arith
 
 try:
     from yaseer.basic.arithmetic import _mbf_fast
 except ImportError:  # not built: no C compiler where yaseer was installed
-    _mbf_fast = None
-
-needs_c = pytest.mark.skipif(_mbf_fast is None, reason="the C accelerator _mbf_fast is not built here "
-                                                        "(no C compiler at install): only the Python functions run")
+    pytest.skip("the C accelerator _mbf_fast is not built here (no C compiler at install): only the Python "
+                "functions run (tests/test_mbf_fast_fallback.py)", allow_module_level=True)
 
 NAMES = ("sin", "cos", "tan", "atn", "log", "exp")
 TINY = 2.0 ** -128  # the least MBF single
@@ -88,7 +82,6 @@ def neighbours(x: float, count: int) -> list[float]:
 # ---------------------------------------------------------------- bit for bit
 
 
-@needs_c
 @pytest.mark.parametrize("name", NAMES)
 def test_every_whole_number_up_to_100000(name):
     """The integers 1..100000 and their negatives (LOG's negatives: the Python function's error)."""
@@ -96,7 +89,6 @@ def test_every_whole_number_up_to_100000(name):
     assert differing(name, arguments + [-x for x in arguments]) == []
 
 
-@needs_c
 @pytest.mark.parametrize("name", NAMES)
 def test_random_singles_of_the_whole_range(name):
     """Random MBF patterns: 32 random bits (every exponent byte alike, both signs: most are
@@ -129,13 +121,11 @@ def edge_arguments() -> list[float]:
     return arguments
 
 
-@needs_c
 @pytest.mark.parametrize("name", NAMES)
 def test_edges(name):
     assert differing(name, edge_arguments()) == []
 
 
-@needs_c
 def test_errors_and_overflows_are_the_python_functions():
     """An unusual call goes to the Python function: LOG of 0 and negatives is its ValueError,
     EXP's overflow calls the handler given (from y = x*LOG2(e) >= 127 on) or gives an
@@ -156,7 +146,6 @@ def test_errors_and_overflows_are_the_python_functions():
     assert outcome(power, 2.0, -200.5) == outcome(gw.power, 2.0, -200.5)
 
 
-@needs_c
 def test_a_tan_whose_cosine_is_0_raises_as_the_python_one():
     """Where $COS gives 0 (a huge argument whose fraction of a turn is a quarter) TAN divides
     by 0: ZeroDivisionError, which arith_policy turns into Division by zero."""
@@ -169,7 +158,6 @@ def test_a_tan_whose_cosine_is_0_raises_as_the_python_one():
             fast("tan")(x)
 
 
-@needs_c
 def test_fractional_powers():
     """``x ^ y`` of random singles (the C routine takes positive x and y not an integer below
     32768; the rest goes to the Python function)."""
@@ -183,7 +171,6 @@ def test_fractional_powers():
     assert bad == []
 
 
-@needs_c
 def test_the_single_steps_are_single_arith():
     """The C $FMULS and $FADDS on their own: random singles of the whole range, products near
     the range's ends and sums that cancel or lose bits, as single_arith gives them."""
@@ -210,7 +197,6 @@ def test_the_single_steps_are_single_arith():
 # ---------------------------------------------------------------- the references on the C routines
 
 
-@needs_c
 def test_the_c_routines_print_what_gw_basic_printed():
     """test_gw_transcendental's 57 values printed by real GW-BASIC, from the C routines."""
     from test_gw_transcendental import RECORDED
@@ -222,7 +208,6 @@ def test_the_c_routines_print_what_gw_basic_printed():
         assert [str_dollar(c(single_arith.nearest(x))).strip() for x in arguments] == printed.split(), name
 
 
-@needs_c
 def test_the_c_routines_follow_the_algorithm_on_fractions():
     """test_gw_transcendental's second implementation (MATH1.ASM's steps on exact fractions)."""
     from test_gw_transcendental import (random_singles, reference_atn, reference_cos, reference_exp,
@@ -235,78 +220,3 @@ def test_the_c_routines_follow_the_algorithm_on_fractions():
         for x in random_singles(17, 200, low, high):
             x = abs(x) if name == "log" else x
             assert c(x) == float(reference(Fraction(x))), (name, x)
-
-
-# ---------------------------------------------------------------- the choice and the fallback
-
-
-def test_the_table_is_the_c_routines_unless_pure_python_is_asked(monkeypatch):
-    """arith_policy.gw_routines: the C routines when the module is built, the Python functions
-    under YASEER_PURE_PYTHON=1 (or when it is not built); "0" and "" keep the C ones."""
-    monkeypatch.setenv(arith_policy.PURE_PYTHON, "1")
-    assert arith_policy.gw_routines() == {name: getattr(gw, name) for name in arith_policy.GW_ROUTINES}
-    for setting in ("0", ""):
-        monkeypatch.setenv(arith_policy.PURE_PYTHON, setting)
-        routines = arith_policy.gw_routines()
-        for name, routine in routines.items():
-            assert (routine.__self__ is getattr(gw, name)) if _mbf_fast else routine is getattr(gw, name)
-
-
-PROGRAM = """\
-10 PRINT 4*ATN(1); TAN(1.5); ATN(-256); EXP(1.5); 2^.5; LOG(1)
-20 PRINT EXP(100)
-30 PRINT TAN(1.5707963#)
-40 ON ERROR GOTO 70: PRINT LOG(0)
-50 S=0: FOR K=1 TO 300: S=S+LOG(K)*SIN(K)+COS(K)/ATN(K)+EXP(-K/50)+K^1.5: NEXT: PRINT S
-60 END
-70 PRINT "ERROR"; ERR: RESUME 50
-"""
-"""Every routine, an overflow (EXP), a huge TAN and an error (LOG(0)) trapped.  Lines 10-40 print
-what PC-BASIC 2.0.8 prints (values whose last digit its own functions get as the source
-does); line 50's sum is the source's (PC-BASIC's SIN and LOG differ from it in the last
-bit, so it prints another sum)."""
-
-
-def run_process(program: Path, pure: str | None) -> str:
-    env = dict(os.environ)
-    env.pop(arith_policy.PURE_PYTHON, None)
-    if pure is not None:
-        env[arith_policy.PURE_PYTHON] = pure
-    done = subprocess.run([sys.executable, "-m", "yaseer", "run", "--dialect", "gw", str(program)],
-                          capture_output=True, text=True, env=env, check=True)
-    return done.stdout
-
-
-def test_a_program_prints_the_same_with_and_without_the_accelerator(tmp_path):
-    """:data:`PROGRAM` as whole processes: accelerated (when built) and with
-    YASEER_PURE_PYTHON=1 the same output, whose lines before the sum are PC-BASIC's."""
-    program = tmp_path / "functions.bas"
-    program.write_text(PROGRAM)
-    accelerated = run_process(program, None)
-    assert accelerated == run_process(program, "1")
-    from test_differential_support import PcBasic
-
-    pc = PcBasic()
-    try:
-        theirs = pc.program(PROGRAM.replace("50 S=0", "50 END: S=0"))
-    finally:
-        pc.close()
-    assert theirs == (" 3.141593  14.10142 -1.56689  4.481689  1.414213  0 \nOverflow\n 1.701412E+38 \n"
-                      " 1.32454E+07 \nERROR 5 \n")
-    lines = accelerated.splitlines(keepends=True)
-    assert "".join(lines[:5]) == theirs and len(lines) == 6
-
-
-def test_the_pure_python_process_uses_the_python_functions():
-    """YASEER_PURE_PYTHON=1 keeps the C routines out of a process (and its start-up imports no
-    _mbf_fast); without it the table holds them when built."""
-    probe = ("import sys\nfrom yaseer.basic.arithmetic import arith_policy\n"
-             "routines = arith_policy.gw_routines()\n"
-             "print(type(routines['sin']).__name__, 'yaseer.basic.arithmetic._mbf_fast' in sys.modules)")
-    env = dict(os.environ, **{arith_policy.PURE_PYTHON: "1"})
-    pure = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, env=env, check=True)
-    assert pure.stdout.split() == ["function", "False"]
-    env.pop(arith_policy.PURE_PYTHON)
-    default = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, env=env, check=True)
-    expected = ["builtin_function_or_method", "True"] if _mbf_fast else ["function", "False"]
-    assert default.stdout.split() == expected
