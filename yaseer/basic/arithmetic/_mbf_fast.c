@@ -600,35 +600,19 @@ static PyObject *call_unary(Unary function, PyObject *python, PyObject *const *a
     return PyFloat_FromDouble(result);
 }
 
-static PyObject *fast_sin(PyObject *self, PyObject *const *args, Py_ssize_t nargs, PyObject *kwnames)
-{
-    return call_unary(sin_checked, self, args, nargs, kwnames, 1);
-}
+/* fast_NAME: the Python-callable routine of FUNCTION, taking at most MOST positional arguments */
+#define UNARY(name, function, most) \
+    static PyObject *fast_##name(PyObject *self, PyObject *const *args, Py_ssize_t nargs, PyObject *kwnames) \
+    { \
+        return call_unary(function, self, args, nargs, kwnames, most); \
+    }
 
-static PyObject *fast_cos(PyObject *self, PyObject *const *args, Py_ssize_t nargs, PyObject *kwnames)
-{
-    return call_unary(cos_checked, self, args, nargs, kwnames, 1);
-}
-
-static PyObject *fast_tan(PyObject *self, PyObject *const *args, Py_ssize_t nargs, PyObject *kwnames)
-{
-    return call_unary(tan_checked, self, args, nargs, kwnames, 1);
-}
-
-static PyObject *fast_atn(PyObject *self, PyObject *const *args, Py_ssize_t nargs, PyObject *kwnames)
-{
-    return call_unary(atn_single, self, args, nargs, kwnames, 1);
-}
-
-static PyObject *fast_log(PyObject *self, PyObject *const *args, Py_ssize_t nargs, PyObject *kwnames)
-{
-    return call_unary(log_single, self, args, nargs, kwnames, 1);
-}
-
-static PyObject *fast_exp(PyObject *self, PyObject *const *args, Py_ssize_t nargs, PyObject *kwnames)
-{
-    return call_unary(exp_single, self, args, nargs, kwnames, 2);
-}
+UNARY(sin, sin_checked, 1)
+UNARY(cos, cos_checked, 1)
+UNARY(tan, tan_checked, 1)
+UNARY(atn, atn_single, 1)
+UNARY(log, log_single, 1)
+UNARY(exp, exp_single, 2)
 
 static PyObject *fast_power(PyObject *self, PyObject *const *args, Py_ssize_t nargs, PyObject *kwnames)
 {
