@@ -28,9 +28,17 @@
 
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
+
+/* Doubles must round as Python's floats do, each operation once to 53 bits: refuse to be
+   built where the compiler evaluates in a wider format (x87), so that the Python
+   functions serve there. */
+#if !defined(FLT_EVAL_METHOD) || FLT_EVAL_METHOD != 0
+#error "_mbf_fast needs double operations evaluated in double (FLT_EVAL_METHOD 0)"
+#endif
 
 #define TINY 0x1p-128  /* the least MBF single */
 #define LIMIT 0x1p127  /* a rounded result this large overflows */
