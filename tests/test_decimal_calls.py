@@ -194,6 +194,36 @@ def test_rnd_is_the_number_drawn_rounded_to_12_digits():
     assert site.fast > site.calls * 0.6 and site.routines > 100  # (the halfway cases take the routine)
 
 
+def test_rnd_near_its_decades_ends_against_the_decimal_module():
+    """RND's inline rounding at the ends of its two scaled ranges (0.1 up with 1E+12, 0.01 up to
+    0.1 with 1E+13): the doubles next to 0.01, 0.1 and 1 and draws within half a unit of them,
+    whose rounding is 0.01, 0.1 or 1 (the scaled value reaches 1E+12).  Reference: the exact
+    double rounded to 12 digits by the decimal module (half to even, as ``_d13``: the
+    halfway cases are exact doubles)."""
+    from decimal import ROUND_HALF_EVEN, Context, Decimal
+
+    context = Context(prec=12, rounding=ROUND_HALF_EVEN)
+    drawn = []
+    for edge in (0.01, 0.1, 1.0):
+        below = above = edge
+        for _ in range(200):
+            below, above = math.nextafter(below, 0.0), math.nextafter(above, 2.0)
+            drawn += [below] + ([above] if above < 1.0 else [])
+        for k in range(1, 400):  # within half a unit of the edge (the 12th digit's), both sides
+            drawn += [edge * (1 - k * 1.3e-15), edge * (1 + k * 1.3e-15)] if edge < 1.0 else [edge * (1 - k * 1.3e-15)]
+    rng = random.Random(11)
+    drawn += [rng.uniform(0.01, 0.1) for _ in range(5000)] + [rng.uniform(0.0, 0.01) for _ in range(500)]
+    site = Site("_rndf")
+    values = iter(drawn)
+    site.namespace["_rndr"] = lambda: next(values)
+    for v in drawn:
+        expected = float(context.plus(Decimal(v)))
+        assert site(None) == expected == decimal_arith.rounded(v), v
+    scaled = [v for v in drawn if 0.01 <= v < 1.0]
+    assert site.fast > len(scaled) * 0.9, (site.fast, len(scaled))  # both scaled ranges are taken
+    assert site.slow >= 500  # (below 0.01: the routine)
+
+
 @pytest.mark.parametrize("helper, unit, mutate", [
     ("_log", "DEG", lambda code: code.replace(", 1000000000000.0))", ", 1e+22))")),  # any scale near LN(1)
     ("_log10", "DEG", lambda code: code.replace(", 1000000000000.0))", ", 1e+22))")),

@@ -700,11 +700,8 @@ class DecimalNumbers(PlainNumbers):
         n = self._temps
         cache = f"_D{self.site_salt}{n}"
         self.cache_bases.append(cache)
-        if helper == "_rndf":  # the number drawn is rounded by ``_d13`` (decimal_arith.rounded)
-            x, routine = "_dv", "_d13"
-            # a number drawn is below 1: the scale of its decade, 0.1 up or 0.01 up, not a cache's
-            scaled = f"(_dv := _rndr()) * (_ds := {1e12!r} if _dv >= 0.1 else {1e13!r})"
-            cache_value, table = "_ds", None
+        if helper == "_rndf":  # the number drawn, rounded as ``_d13`` (decimal_arith.rounded) rounds it
+            return _drawn_rounded(cache), "n"
         else:
             x = codes[0]
             first = x if _plain_operand(x) else f"(_x{n} := {x})"
@@ -735,6 +732,31 @@ class DecimalNumbers(PlainNumbers):
         def whole(node) -> bool:
             return node is None or (isinstance(node, ast.Num) and float(node.value).is_integer())
         return whole(stmt.start) and whole(stmt.step)
+
+
+def _drawn_rounded(cache: str) -> str:
+    """The code of RND's next number rounded to 12 digits (decimal_calls.py's band test with the
+    scale of the number's decade, no cache): ``v`` from 0.1 up with the scale 1E+12, else from
+    0.01 up (below 0.1) with 1E+13, else ``_zdf`` (the routine ``_d13``, its site ``cache``).
+
+    A number drawn is below 1 (random.random and GwRandom's state over its period), so no
+    test of the scaled ``t`` is needed: the doubles compare as the decimals (0.1, 0.01 and 1 are
+    decimals of one digit), so ``v`` from 0.1 up (below 1) gives ``t = fl(v * 1E+12)`` from
+    ``fl(fl(0.1) * 1E+12) = 1E+11`` up to ``1E+12`` (rounding is monotone), and ``v`` from 0.01
+    below 0.1 gives ``t = fl(v * 1E+13)`` in the same range.  ``v`` is the exact value rounded
+    (``E`` is ``t``'s own rounding, below ``2**-13``), so the band test's argument in
+    decimal_scales.py holds: ``n / S`` is ``v`` rounded to 12 digits; at ``t = 1E+12`` (``v``
+    within half a unit below 1 or 0.1) ``n`` is ``1E+12`` and ``n / S`` is 1 or 0.1, ``v``'s
+    rounding up, which the old decade test sent to the routine for the same double.  Never at
+    a tie (the band), so rounding half up and half to even agree with ``_d13``'s."""
+    from yaseer.basic.arithmetic.decimal_calls import LARGEST_SCALE
+    from yaseer.basic.arithmetic.decimal_scales import BAND, MAGIC
+
+    def banded(scale: float) -> str:
+        return (f"{-BAND!r} < (_dt := _dv * {scale!r}) - (_dn := _dt + {MAGIC!r} - {MAGIC!r}) < {BAND!r}")
+    return (f"(_dn / {1e12!r} if (_dv := _rndr()) >= 0.1 and {banded(1e12)} else "
+            f"_dn / {1e13!r} if 0.01 <= _dv < 0.1 and {banded(1e13)} else "
+            f"_zdf({cache!r}, _d13, _dv, _dv, {LARGEST_SCALE['_rndf']!r}))")
 
 
 def _exact_form(tree) -> tuple[str, str] | None:
