@@ -10,7 +10,7 @@ from __future__ import annotations
 import pytest
 
 from test_differential_support import PcBasic
-from test_gw_files import yaseer_run
+from test_gw_files import pcbasic_run, yaseer_run
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
 
@@ -168,6 +168,39 @@ def test_agrees_with_pcbasic(pc, tmp_path, name):
     source = AGREED[name]
     pc.statement("ON ERROR GOTO 0")
     assert yaseer_run(source, tmp_path) == pc.program(source)
+
+
+# Statements on open files: PC-BASIC runs them in a directory of their own
+FILE_AGREED = {
+    # ... and WIDTH #'s and FIELD's: the file first (GIO86.ASM FILWID: PRFNUM, FDBPTR; DSKCOM.ASM
+    # FIELD: FILSCN), then each width (GETWDT, GTBYTC: GETBYT) and, in FIELD, its variable
+    "file and field widths of 32768 and above overflow": (
+        '10 ON ERROR GOTO 200\n20 OPEN "O", 1, "W.TXT": OPEN "R", 3, "R.DAT", 64\n30 WIDTH #1, 40000\n'
+        '40 WIDTH #1, 32768\n50 WIDTH #1, 256\n60 WIDTH #2, 40000\n70 WIDTH #1, -32769\n80 WIDTH #40000, 5\n'
+        '90 FIELD #3, 40000 AS A$\n100 FIELD #3, 32768 AS A$\n110 FIELD #3, 256 AS A$\n120 FIELD #3, -32769 AS A$\n'
+        '130 FIELD #2, 40000 AS A$\n140 FIELD #3, 10 AS A$, 40000 AS B$\n150 FIELD #3, 40000 AS A\n'
+        '160 FIELD #40000, 5 AS A\n170 END\n200 PRINT ERR; ERL: RESUME NEXT\n'),
+    "file and field widths read after the file": (
+        '10 ON ERROR GOTO 200\n20 OPEN "O", 1, "W.TXT": OPEN "R", 3, "R.DAT", 64\n30 WIDTH #2, "A"\n'
+        '40 WIDTH #1, "A"\n50 FIELD #2, "A" AS A$\n60 FIELD #2, 5 AS A\n70 FIELD #3, "A" AS A$\n'
+        '80 FIELD #3, 300 AS A\n90 FIELD #1, 5 AS A\n100 WIDTH #0, "A"\n110 FIELD #0, 5 AS A\n'
+        '120 END\n200 PRINT ERR; ERL: RESUME NEXT\n'),
+    # FIELD fields each variable in turn: those before the one that fails keep their fields
+    "field keeps the variables before a bad width": (
+        '10 ON ERROR GOTO 200\n20 OPEN "R", 1, "R.DAT", 64\n30 FIELD #1, 10 AS A$, 300 AS B$\n'
+        '40 LSET A$ = "XYZ": PRINT LEN(A$); "["; A$; "]"\n50 FIELD #1, 5 AS C$, 40000 AS D\n'
+        '60 LSET C$ = "Q": PRINT LEN(C$)\n70 FIELD #1, 5 AS B$, 6 AS C$, 7 AS D\n'
+        '80 LSET C$ = "Q": PRINT LEN(B$); LEN(C$)\n90 END\n200 PRINT ERR; ERL: RESUME NEXT\n'),
+}
+
+
+@pytest.mark.parametrize("name", list(FILE_AGREED))
+def test_file_statements_agree_with_pcbasic(tmp_path, name):
+    source = FILE_AGREED[name]
+    theirs, ours = tmp_path / "pc", tmp_path / "ya"
+    theirs.mkdir()
+    ours.mkdir()
+    assert yaseer_run(source, ours) == pcbasic_run(source, theirs)
 
 
 # Statements cut after each of their tokens: the error each cut gives (Syntax error where

@@ -136,6 +136,15 @@ def test_random_file_errors(tmp_path, source, message):
     assert yaseer_run(source + "\n", tmp_path).splitlines()[-1] == message
 
 
+def test_a_field_overflow_keeps_the_fields_before_it(tmp_path):
+    """DSKCOM.ASM FIELD checks the total after each width and variable and points the variable
+    into the buffer before it reads the next: after ``FIELD overflow`` the variables before
+    the one that did not fit keep their fields (PC-BASIC 2.0.8 reports no overflow)."""
+    source = ('10 ON ERROR GOTO 100: OPEN "R", 1, "F", 16\n20 FIELD #1, 12 AS A$, 8 AS B$\n'
+              '30 LSET A$ = "X": PRINT LEN(A$); LEN(B$): END\n100 PRINT ERR; ERL: RESUME NEXT\n')
+    assert yaseer_run(source, tmp_path) == " 50  20 \n 12  0 \n"
+
+
 def test_casio_has_no_random_file_words(tmp_path):
     assert yaseer_run('10 OPEN "R", 1, "F", 16: FIELD #1, 2 AS A$\n', tmp_path, "casio") \
         == "Unsupported word FIELD in 10\n"

@@ -443,7 +443,10 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
 
     def stmt_Width(self, stmt, scope):
         if stmt.file is not None:
-            self.emit(f"_M.set_file_width({self.integer(stmt.file, scope)}, {self.numeric(stmt.columns, scope)})")
+            # the file first, then the width (GIO86.ASM FILWID: PRFNUM, FDBPTR, then GETWDT)
+            file = f"_M.files.get({self.integer(stmt.file, scope)})"
+            width = self.when_reached(lambda: self.integer(stmt.columns, scope))
+            self.emit(f"_M.set_file_width({file}, {width})")
             return
         if stmt.device is not None:
             if self.kind_of(stmt.device) != "s":  # WIDTH columns, rows: the screen's size

@@ -301,6 +301,15 @@ class ExpressionCompiler:
         code, kind = self.typed(node, scope)
         return self.numbers.convert(code, kind, "%")
 
+    def when_reached(self, make) -> str:
+        """The code ``make()`` compiles, or where it finds an error (a string where a number
+        must be) code raising that error when the program gets there: a statement that
+        checks other things first (a file number) raises those first."""
+        try:
+            return make()
+        except CompileError as err:
+            return f"_fail({err.message!r}, {err.code})"
+
     def kind_of(self, node) -> str:
         """The type of a variable, array element or FN reference (``"s"`` or numeric)."""
         if isinstance(node, (ast.Var, ast.Elem, ast.FnCall)):

@@ -290,17 +290,31 @@ class InputOutputCompiler:
         return f"({name!r}, ({''.join(code + ', ' for code in subscripts)}))"
 
     def stmt_Field(self, stmt, scope):
-        pairs = "".join(f"({self.numeric(width, scope)}, {self.field_key(target, scope)}), "
-                        for width, target in stmt.fields)
+        """FIELD #n, w AS v, ...: the file first (a random one), then each width and its
+        variable in turn (DSKCOM.ASM FIELD: FILSCN, then GTBYTC and PTRGET for each)."""
+        file, offset = self.new_temp(), self.new_temp()
+        self.emit(f"{file} = _M.files.random({self.integer(stmt.number, scope)})")
         for _, target in stmt.fields:
             if isinstance(target, ast.Var):
                 scope.scalar(target.name)  # known to the machine from the start
                 self.made(target)  # FIELD's PTRGET makes it (a SWAP may ask: compiler.made)
-        number = self.new_temp()
-        self.emit(f"{number} = ({self.integer(stmt.number, scope)}, ({pairs}))")
+        self.emit(f"{offset} = 0")
         self.emit("#FLUSH#")  # FIELD stores the variables' slices in the machine's scalars
-        self.emit(f"_field(*{number})")
+        self.emit("try:")
+        for node, target in stmt.fields:
+            width = self.when_reached(lambda: self.integer(node, scope))
+            try:
+                key = self.field_key(target, scope)
+            except CompileError as err:  # after the width is read (GETBYT before PTRGET)
+                self.emit(f"    _field({file}, {offset}, {width}, None)")
+                self.emit(f"    _fail({err.message!r}, {err.code})")
+                break
+            self.emit(f"    {offset} = _field({file}, {offset}, {width}, {key})")
+        self.emit("finally:")  # those fielded before an error keep their values
+        self.indent += 1
+        self.emit("pass")
         self.emit("#RELOAD#")
+        self.indent -= 1
 
     def stmt_GetPut(self, stmt, scope):
         # the file number first, a 16-bit integer (GIO86.ASM DPUTG: POFNUM's GETBYT, FRCINT)

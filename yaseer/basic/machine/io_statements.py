@@ -95,11 +95,12 @@ class InputOutput:
             self.screen.column = 0
         self.screen.width = n
 
-    def set_file_width(self, number, columns) -> None:
-        """WIDTH #n, w: the width PRINT # wraps file n's lines at, 1..255 (0 and more than 255
-        Illegal function call; 255 never wraps, the disk's own width; GIO86.ASM WIDTHS,
-        FILWID, GETWDT); a file not open is Bad file number.  (PC-BASIC 2.0.8 refuses 255.)"""
-        file = self.files.get(number)
+    @staticmethod
+    def set_file_width(file, columns) -> None:
+        """WIDTH #n, w: the width PRINT # wraps ``file``'s lines at (the open file n: the
+        compiled code finds it before it reads w, as GIO86.ASM FILWID does), 1..255 (0 and
+        more than 255 Illegal function call; 255 never wraps, the disk's own width; GIO86.ASM
+        WIDTHS, FILWID, GETWDT).  (PC-BASIC 2.0.8 refuses 255.)"""
         n = runtime.cint(columns)
         if not 1 <= n <= 255:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
@@ -438,11 +439,13 @@ class InputOutput:
         variables = self.fielded()
         variables.update(self.files.justify(key, value, current, right, variables))
 
-    def field_variables(self, n, pairs) -> None:
-        """FIELD #n, width AS variable, ...: ``pairs`` of (width, variable key); each
-        variable holds its slice of the buffer at once."""
-        values = self.files.random(n).field(pairs, self.field_element)
-        self.fielded().update(values)
+    def field_variable(self, file, offset: int, width, key) -> int:
+        """One ``width AS variable`` of FIELD #n on random ``file`` (random_files.RandomFile.field):
+        the variable holds its slice of the buffer at once; the next one's offset."""
+        offset, value = file.field(offset, width, key, self.field_element)
+        if key is not None:
+            self.fielded().update({key: value})
+        return offset
 
     def list_files(self, pattern) -> None:
         """FILES [pattern]: GW-BASIC's listing: the directory (``C:\\``, the sandbox as

@@ -536,7 +536,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_erase": self.erase, "_option_base": self.option_base, "_line_input": self.line_input,
             "_write": self.write_values, "_clear_args": _check_clear_arguments,
             # sequential files (files.py)
-            "_open": self.files.open, "_close": self.files.close, "_field": self.field_variables,
+            "_open": self.files.open, "_close": self.files.close, "_field": self.field_variable,
             "_get": self.get_record, "_put": self.files.put, "_lset": self.set_field, "_kill": self.files.kill,
             "_rename": self.files.rename, "_chain": self.chain, "_command": self.program_command, "_files": self.list_files,
             "_fout": lambda n: self.files.get(n).output(), "_prf": self.print_to,

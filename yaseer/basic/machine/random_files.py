@@ -84,25 +84,27 @@ class RandomFile:
         self.stream = RecordStream(self)
 
     # -- FIELD, LSET, RSET
-    def field(self, pairs, find=None) -> dict:
-        """FIELD: ``pairs`` of (width, variable key) from the buffer's start; the variables'
-        new values (their slices of the buffer).  ``find(key)``: called for each variable
-        after its width is checked and before the record's room is (DSKCOM.ASM ``FIELD``:
-        ``GTBYTC``, then ``PTRGET``, then the ``DERFOV`` test), to make it or fail."""
-        offset = 0
-        for width, key in pairs:
-            from yaseer.basic.machine.runtime import cint
+    def field(self, offset: int, width, key, find=None) -> tuple[int, str | None]:
+        """One ``width AS variable`` of FIELD, ``offset`` bytes into the buffer: the offset
+        of the next one and the variable's new value (its slice of the buffer).  As
+        DSKCOM.ASM FIELD takes them, one at a time: the width (GETBYT: 0..255, else
+        Illegal function call), the variable (``key`` None: not a string variable, whose
+        error the caller raises; ``find(key)`` makes it or fails: PTRGET), then the total
+        against the record's length (``DERFOV``); a variable before the one that fails
+        keeps its field."""
+        from yaseer.basic.machine.runtime import cint
 
-            width = cint(width)
-            if not 0 <= width <= 255:
-                raise error_for(ILLEGAL_FUNCTION_CALL)
-            if find is not None:
-                find(key)
-            if offset + width > self.length_of_record:
-                raise error_for(FIELD_OVERFLOW)
-            self.fields[key] = (offset, width)
-            offset += width
-        return {key: self._give(key) for _, key in pairs}
+        width = cint(width)
+        if not 0 <= width <= 255:
+            raise error_for(ILLEGAL_FUNCTION_CALL)
+        if key is None:
+            return offset, None
+        if find is not None:
+            find(key)
+        if offset + width > self.length_of_record:
+            raise error_for(FIELD_OVERFLOW)
+        self.fields[key] = (offset, width)
+        return offset + width, self._give(key)
 
     def _give(self, key: str, text: str | None = None) -> str:
         text = self.field_value(key) if text is None else text
