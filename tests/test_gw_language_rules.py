@@ -90,6 +90,9 @@ AGREED = {
     # a keyword alone: LINE INPUT wants its variable (GWMAIN.ASM LINE: PTRGET), DATE$ = and
     # TIME$ = a formula (GWSTS.ASM PRSDAT, PRSTIM: FRMEVL)
     "line input alone": '10 LINE INPUT\n',
+    # DEF wants FN, SEG or USR, no operand (GWEVAL.ASM DEF: SYNCHR for SEG's letters)
+    "def alone": '10 DEF\n20 PRINT "no"\n',
+    "def alone trapped": '10 ON ERROR GOTO 100\n20 DEF: PRINT "no"\n30 END\n100 PRINT ERR; ERL: RESUME NEXT\n',
     "date$ = alone": '10 DATE$ =\n',
     "time$ = alone": '10 TIME$=\n',
     # DATE$ = and TIME$ = set the clock, read back (GWSTS.ASM DATES, TIMES, PRSDAT, PRSTIM)
@@ -238,6 +241,15 @@ def test_cut_statements_give_pcbasics_errors(pc, tmp_path):
             if theirs != ours:
                 found.append((text, theirs, ours))
     assert not found, found
+
+
+@pytest.mark.parametrize("text", ["LINE", "LINE X", "LINE @", "LINE STEP", "LINE , 1"])
+def test_a_graphics_line_without_its_point_is_a_syntax_error(tmp_path, text):
+    """LINE that is not LINE INPUT is the graphics LINE (GWMAIN.ASM LINE jumps to GLINE), which
+    reads its first point before it draws anything: GENGRP.ASM GLINE, SCAN1 (an ``@`` skipped),
+    SCAND (a STEP skipped) and SYNCHR for the ``(``.  (PC-BASIC 2.0.8 refuses the statement on
+    the text screen first: Illegal function call.)"""
+    assert yaseer_run(f"10 {text}\n20 PRINT \"no\"\n", tmp_path) == "Syntax error in 10\n"
 
 
 def test_stop_leaves_its_break_on_a_new_row(pc):

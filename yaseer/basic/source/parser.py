@@ -746,7 +746,9 @@ def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
 # Terminals only an expression starts with: one expected here and the statement ended
 # instead is GW-BASIC's "Missing operand" (``X =``, ``PRINT 1 +``: GWEVAL.ASM EVAL raises
 # MOERR); where only a name or a line number may come (``FOR``, ``DIM``, ``GOTO``) the
-# statement's own scan finds nothing: "Syntax error".
+# statement's own scan finds nothing: "Syntax error".  An expression may always start with
+# a variable's name: where none is expected no expression starts (``GOTO`` wants a line,
+# ``DEF`` the word FN, SEG or USR: GWEVAL.ASM DEF's SYNCHR), whatever else may follow.
 _OPERAND_STARTS = frozenset(("FUNC", "FUNCN", "MINUS", "NOT"))
 _STATEMENT_ENDS = frozenset(("$END", "_COLON", "ELSE"))
 
@@ -759,8 +761,8 @@ def _grammar_error(exc: GrammarError, dialect: Dialect) -> BasicError:
         return BasicError(unsupported_message(exc.token.value), SYNTAX_ERROR)
     if kind == UNSCANNED:
         return exc.token.value  # the scanner's own error for the statement
-    jump_target = "HASH" in exc.expected and "NAME" not in exc.expected  # GOTO / GOSUB without a line: no operand
-    if dialect.errors_when_reached and kind in _STATEMENT_ENDS and exc.expected & _OPERAND_STARTS and not jump_target:
+    operand = exc.expected & _OPERAND_STARTS and "NAME" in exc.expected
+    if dialect.errors_when_reached and kind in _STATEMENT_ENDS and operand:
         return BasicError("Missing operand", MISSING_OPERAND)
     return BasicError("Syntax error", SYNTAX_ERROR)
 
