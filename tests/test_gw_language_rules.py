@@ -216,11 +216,23 @@ CUT_STATEMENTS = [
     'ERASE A', 'OPTION BASE 1', 'RESUME NEXT', 'A$=MID$("ABC",2,1)', 'PRINT USING "##";5',
     'X=INSTR(1,"AB","B")', 'X=NOT 1', 'X=-1', 'X=(1+2)', 'X=2^3', 'X=5 MOD 2', 'X=5\\2', 'ON ERROR GOTO 100',
     'DEFINT A-C', 'RETURN 100', 'X=1 AND 2', 'OPEN "O", #1, "F"', 'OPEN "F" FOR OUTPUT AS #1', 'X=FRE(0)',
-    'X=VAL("5")', 'X=STRING$(3,65)', 'LSET A$="X"', 'X=A(1)', 'X=A(1,2)', 'DEF',
+    'X=VAL("5")', 'X=STRING$(3,65)', 'LSET A$="X"', 'X=A(1)', 'X=A(1,2)', 'DEF FNA(X)=X',
+    # the file statements find their file before they read on (GIO86.ASM FILGET, FILWID,
+    # DPUTG; DSKCOM.ASM FIELD: FILSCN), the file here not open
+    'PRINT #1, USING "##"; 5', 'LINE INPUT #1, A$', 'WRITE #1, 5', 'FIELD #1, 5 AS A$', 'FIELD 1, 5 AS A$',
+    'GET #1, 1', 'PUT #1, 1', 'WIDTH #1, 80',
 ]
-# Where the two still differ (not generated): GW checks the file number of PRINT #, FIELD #,
-# GET # and NAME's file before the rest of the statement; MID$ checks its arguments as it
-# reads them; WRITE prints its items and commas before the one that fails.
+# Cuts where PC-BASIC 2.0.8 differs from GW-BASIC's source, which decides:
+SOURCE_DECIDED = {
+    # GWMAIN.ASM LINE goes to GENGRP.ASM GLINE, which wants a point's ( first (SCAND's SYNCHR);
+    # PC-BASIC refuses a graphics statement on the text screen first (Illegal function call)
+    "LINE": "Syntax error in 10\n",
+}
+# Left out (not generated): INPUT # (its cut INPUT alone waits for the keyboard); WRITE,
+# which prints its items and commas before the one that fails; the MID$ statement, which
+# checks its start and count as it reads them, the start against the length only after
+# the value (BISTRS.ASM LHSMID; PC-BASIC checks the start first); INPUT$(n, #f), which
+# finds its file before its ``)``.
 
 
 def _cuts(statement: str) -> list[str]:
@@ -237,7 +249,8 @@ def test_cut_statements_give_pcbasics_errors(pc, tmp_path):
             source = f"10 {text}\n20 PRINT \"ok\"\n100 RETURN\n"
             pc.statement("CLOSE")
             pc.statement("ON ERROR GOTO 0")
-            theirs, ours = pc.program(source), yaseer_run(source, tmp_path)
+            ours = yaseer_run(source, tmp_path)
+            theirs = SOURCE_DECIDED[text] if text in SOURCE_DECIDED else pc.program(source)
             if theirs != ours:
                 found.append((text, theirs, ours))
     assert not found, found

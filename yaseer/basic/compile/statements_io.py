@@ -316,6 +316,12 @@ class InputOutputCompiler:
         self.emit("#RELOAD#")
         self.indent -= 1
 
+    def stmt_FileFirst(self, stmt, scope):
+        """A file statement cut after its file number: the file's checks, then its error."""
+        find = "_M.files.opened" if stmt.opened else "None"
+        self.emit(f"_M.files.checked({self.integer(stmt.number, scope)}, {stmt.modes!r}, {find})")
+        self.emit(f"raise _err({stmt.error.message!r}, {stmt.error.code})")
+
     def stmt_GetPut(self, stmt, scope):
         # the file number first, a 16-bit integer (GIO86.ASM DPUTG: POFNUM's GETBYT, FRCINT)
         file = self.integer(stmt.number, scope)

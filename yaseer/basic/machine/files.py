@@ -243,13 +243,18 @@ class FileTable:
         return f
 
     # -- random-access files (random_files.py)
+    def checked(self, n, modes: str, find=None) -> OpenFile:
+        """Open file ``n`` (found by ``find``: :meth:`get` unless given) opened in one of
+        ``modes`` ("I", "O", "A", "R"), else ``Bad file mode``."""
+        f = (find or self.get)(n)
+        if f.mode not in modes:
+            raise error_for(BAD_FILE_MODE)
+        return f
+
     def random(self, n, find=None) -> random_files.RandomFile:
         """Open file ``n`` (found by ``find``: :meth:`get` unless given), which must be a
         random one (else ``Bad file mode``)."""
-        f = (find or self.get)(n)
-        if f.mode != "R":
-            raise error_for(BAD_FILE_MODE)
-        return f
+        return self.checked(n, "R", find)
 
 
     def put(self, n, record=None) -> None:

@@ -864,7 +864,11 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     touched = _touched_element(tokens, bad_start, err)
     if touched is not None:
         return [touched] + _statements_after_error(tokens, bad_start, dialect)
-    return _printed_before_error(tokens, bad_start) + [err] + _statements_after_error(tokens, bad_start, dialect)
+    printed = _printed_before_error(tokens, bad_start)
+    file_first = None if printed else _file_checked_first(tokens, bad_start, err)
+    if file_first is not None:
+        return [file_first] + _statements_after_error(tokens, bad_start, dialect)
+    return printed + [err] + _statements_after_error(tokens, bad_start, dialect)
 
 
 def _guarding_if(tokens: list, start: int, err: BasicError, dialect: Dialect):
@@ -931,6 +935,49 @@ def _checked_first(tokens: list, start: int, err: BasicError):
     if kind == "WHILE":
         return ast.While(err)
     return None
+
+
+# The file statements that find their file before they read on: the modes it must be open
+# in, whether the # may be left out, and whether it is found as GET and PUT find it (a file
+# not open Bad file mode: files.FileTable.opened) (GIO86.ASM FILGET for PRINT #, WRITE #,
+# INPUT #, LINE INPUT #; FILWID for WIDTH #; DSKCOM.ASM FIELD: FILSCN; DPUTG for GET, PUT).
+_FILE_FIRST = {
+    "PRINT": ("OAR", False, False), "WRITE": ("OAR", False, False), "INPUT": ("IR", False, False),
+    "WIDTH": ("IOAR", False, False), "FIELD": ("R", True, False), "GET": ("R", True, True), "PUT": ("R", True, True),
+}
+
+
+def _file_checked_first(tokens: list, start: int, err: BasicError):
+    """A bad file statement whose file number reads: the file's checks, then ``err``
+    (``PRINT #1`` with file 1 not open is ``Bad file number``, not ``Syntax error``).
+    None for any other bad statement."""
+    k = start + (start + 1 < len(tokens) and tokens[start].type == "LINE" and tokens[start + 1].type == "INPUT")
+    rule = _FILE_FIRST.get(tokens[k].type) if k < len(tokens) else None
+    if rule is None or (k > start and tokens[k].type != "INPUT"):
+        return None
+    modes, optional, opened = rule
+    k += 1
+    if k < len(tokens) and tokens[k].type == "HASH":
+        k += 1
+    elif not optional:
+        return None
+    end, depth = k, 0
+    while end < len(tokens) and not (depth == 0 and tokens[end].type in ("COMMA", *_STATEMENT_ENDS)):
+        depth += {"_LPAR": 1, "_RPAR": -1}.get(tokens[end].type, 0)
+        end += 1
+    number = _expression(tokens[k:end])
+    return None if number is None else ast.FileFirst(number, modes, opened, err)
+
+
+def _expression(tokens: list):
+    """The expression ``tokens`` are, or None where they are none (read as ``X = ...``)."""
+    if not tokens:
+        return None
+    try:
+        found = _parse([Token("NAME", "X"), Token("EQ", "="), *tokens])
+    except (BasicError, GrammarError):
+        return None
+    return found[0].value if len(found) == 1 and isinstance(found[0], ast.Let) else None
 
 
 def _jump_read_as_needed(tokens: list, start: int):

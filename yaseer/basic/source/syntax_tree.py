@@ -350,6 +350,17 @@ class Field:
 
 
 @_node
+class FileFirst:
+    """A file statement (PRINT #, WRITE #, INPUT #, LINE INPUT #, FIELD, GET, PUT, WIDTH #)
+    whose text after the file number does not read: GW-BASIC finds the file first (open,
+    in one of ``modes``; ``opened``: found as GET and PUT find it), then meets ``error``."""
+    number: object
+    modes: str
+    opened: bool
+    error: object
+
+
+@_node
 class GetPut:
     """GET #n[, record] (``put`` False) or PUT #n[, record]."""
     put: bool
