@@ -44,6 +44,8 @@ AGREED = {
     "print items before a bad one": '10 PRINT "a"; ERL(\n',
     "print items before a bad expression": '10 PRINT "b", 5; 1+\n',
     "print using literal before its error": '10 PRINT USING "abc";1\n',
+    "write items before a bad one": ('10 ON ERROR GOTO 100: WRITE 1, "A",\n20 WRITE 2, 3 +\n30 PRINT "x": END\n'
+                                      '100 PRINT ERR; ERL: RESUME NEXT\n'),
     "print using a string into a number field": '10 PRINT USING "x##y##"; 5; "s"\n',
     # PRINT ... USING after other items; a single's 7 digits are what USING rounds
     "using after items": '10 PRINT "X="; USING "##.#"; 3.14159\n20 PRINT 1, USING "#"; 2\n',
@@ -188,6 +190,10 @@ FILE_AGREED = {
         '40 WIDTH #1, "A"\n50 FIELD #2, "A" AS A$\n60 FIELD #2, 5 AS A\n70 FIELD #3, "A" AS A$\n'
         '80 FIELD #3, 300 AS A\n90 FIELD #1, 5 AS A\n100 WIDTH #0, "A"\n110 FIELD #0, 5 AS A\n'
         '120 END\n200 PRINT ERR; ERL: RESUME NEXT\n'),
+    # WRITE # writes each item and its comma before it reads the next (FIVEO.ASM WRITE)
+    "write # items before a bad one": (
+        '10 OPEN "O", 1, "W.TXT": ON ERROR GOTO 100: WRITE #1, 1, "B",\n'
+        '20 CLOSE: OPEN "I", 1, "W.TXT": LINE INPUT #1, A$: PRINT A$: END\n100 RESUME NEXT\n'),
     # FIELD fields each variable in turn: those before the one that fails keep their fields
     "field keeps the variables before a bad width": (
         '10 ON ERROR GOTO 200\n20 OPEN "R", 1, "R.DAT", 64\n30 FIELD #1, 10 AS A$, 300 AS B$\n'
@@ -221,6 +227,8 @@ CUT_STATEMENTS = [
     # DPUTG; DSKCOM.ASM FIELD: FILSCN), the file here not open
     'PRINT #1, USING "##"; 5', 'LINE INPUT #1, A$', 'WRITE #1, 5', 'FIELD #1, 5 AS A$', 'FIELD 1, 5 AS A$',
     'GET #1, 1', 'PUT #1, 1', 'WIDTH #1, 80',
+    # WRITE prints each item and its comma before it reads the next (FIVEO.ASM WRITE)
+    'WRITE 1, "A", 3',
 ]
 # Cuts where PC-BASIC 2.0.8 differs from GW-BASIC's source, which decides:
 SOURCE_DECIDED = {
@@ -228,8 +236,9 @@ SOURCE_DECIDED = {
     # PC-BASIC refuses a graphics statement on the text screen first (Illegal function call)
     "LINE": "Syntax error in 10\n",
 }
-# Left out (not generated): INPUT # (its cut INPUT alone waits for the keyboard); WRITE,
-# which prints its items and commas before the one that fails; the MID$ statement, which
+# Left out (not generated): INPUT # (its cut INPUT alone waits for the keyboard); WRITE's
+# ``;`` between items (a comma printed, as PC-BASIC has it: yaseer's grammar refuses it);
+# an item WRITE cannot end (``WRITE 1 X``: the source prints 1, PC-BASIC ``1,``); the MID$ statement, which
 # checks its start and count as it reads them, the start against the length only after
 # the value (BISTRS.ASM LHSMID; PC-BASIC checks the start first); INPUT$(n, #f), which
 # finds its file before its ``)``.

@@ -121,9 +121,9 @@ class InputOutputCompiler:
             stream = self.new_temp()
             self.emit(f"{stream} = _fout({self.numeric(stmt.channel, scope)})")
             with self.record_buffer(stream):
-                self.emit(f"_writef({stream}, ({self.written_items(stmt.items, scope)}))")
+                self.emit(f"_writef({stream}, ({self.written_items(stmt.items, scope)}), {stmt.cut})")
             return
-        self.emit(f"_write(0, ({self.written_items(stmt.items, scope)}))")
+        self.emit(f"_write(0, ({self.written_items(stmt.items, scope)}), {stmt.cut})")
 
     @contextmanager
     def record_buffer(self, stream: str):

@@ -380,9 +380,12 @@ class InputOutput:
         finally:
             self._fields_follow(stream)
 
-    def write_to(self, stream, pieces: tuple) -> None:
-        """WRITE #n."""
+    def write_to(self, stream, pieces: tuple, cut: bool = False) -> None:
+        """WRITE #n (``cut``: see write_values)."""
         try:
+            if cut:
+                stream.write("".join(piece + "," for piece in pieces))
+                return
             stream.write(",".join(pieces))
             stream.end_line()
         finally:
@@ -463,9 +466,14 @@ class InputOutput:
         self.print_items(0, (f" {sandbox.free_bytes()} Bytes free",), True)
         self.print_items(0, (), True)
 
-    def write_values(self, device: int, pieces: tuple) -> None:
+    def write_values(self, device: int, pieces: tuple, cut: bool = False) -> None:
         """WRITE: the items (already as text: strings quoted, numbers without blanks)
-        separated by commas, then the line end."""
+        separated by commas, then the line end; ``cut``: the items before one that fails,
+        each with the comma after it and no line end (FIVEO.ASM WRITE prints each item and
+        its comma before it reads the next)."""
+        if cut:
+            self.print_items(device, ("".join(piece + "," for piece in pieces),), False)
+            return
         self.print_items(device, (",".join(pieces),), True)
 
 

@@ -864,7 +864,7 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     touched = _touched_element(tokens, bad_start, err)
     if touched is not None:
         return [touched] + _statements_after_error(tokens, bad_start, dialect)
-    printed = _printed_before_error(tokens, bad_start)
+    printed = _printed_before_error(tokens, bad_start) or _written_before_error(tokens, bad_start)
     file_first = None if printed else _file_checked_first(tokens, bad_start, err)
     if file_first is not None:
         return [file_first] + _statements_after_error(tokens, bad_start, dialect)
@@ -1061,6 +1061,26 @@ def _branch_if(tokens: list):
 _ITEM_STARTS = frozenset(("SEMI", "COMMA", "NAME", "STRNAME", "NUMBER", "STRING", "_LPAR", "FUNC", "FUNCN",
                           "FN", "SYSVAR", "TAB", "SPC"))
 _CALLED = frozenset(("NAME", "STRNAME", "FUNC", "FUNCN", "TAB", "SPC"))
+
+
+def _written_before_error(tokens: list, start: int) -> list:
+    """A bad WRITE whose items up to a comma (or ``;``) read: those items, each with its comma
+    and no line end (FIVEO.ASM WRITE prints an item and the comma after it before it reads
+    the next: ``WRITE 1,`` prints ``1,``, then ``Missing operand``).  Empty otherwise."""
+    if start >= len(tokens) or tokens[start].type != "WRITE":
+        return []
+    end = next((k for k in range(start, len(tokens)) if tokens[k].type in _STATEMENT_ENDS), len(tokens))
+    for k in range(end - 1, start, -1):
+        if tokens[k].type not in ("COMMA", "SEMI"):
+            continue
+        try:
+            found = _parse(tokens[start:k])
+        except (BasicError, GrammarError):
+            continue
+        if len(found) == 1 and isinstance(found[0], ast.Write) and found[0].items:
+            found[0].cut = True
+            return found
+    return []
 
 
 def _printed_before_error(tokens: list, start: int) -> list:

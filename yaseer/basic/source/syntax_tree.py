@@ -330,6 +330,7 @@ class LineInput:
 class Write:
     items: list
     channel: object = None  # WRITE #n
+    cut: bool = False  # the items before one that fails, each with its comma, no line end
 
 
 @_node
