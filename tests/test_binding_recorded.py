@@ -399,7 +399,7 @@ def _compiled_both_ways(number: int, z: float, q: float):
         optimised, _ = frame.recorded()
     finally:
         tracing.Recorder.compile = real_compile
-    text = "def run(_M):\n" + "".join(f"    {line}\n" for line in made["lines"])
+    text = "def run(_M):\n" + "".join("    " + line.replace("\n", "\n    ") + "\n" for line in made["lines"])
     namespace = tracing.namespace(made["names"])
     exec(compile(text, "<as recorded>", "exec"), namespace)
     return optimised, namespace["run"]
@@ -533,3 +533,89 @@ def test_the_decision_tree_is_compiled_once_the_keys_met_stay_the_same(monkeypat
         m.arrays["Q"][2] = q
         assert recordings.run(m) and ran[-1] == q
     assert compiled == [3]
+
+
+def test_an_output_array_too_short_for_a_recorded_path_is_the_subscript_error_and_writes_nothing():
+    # a path recorded with the universal dimensions run where X() holds 3 elements (it writes X(5)):
+    # the error the plain code raises, every array as it was
+    def scenario():
+        m = machine(2, 2.0, 1)
+        for angle in (10.0, 20.0, 30.0):
+            m.array("T")[12] = angle
+            outcome(m, 2)
+        m.arrays["X"] = [0.0] * 4
+        m.array("T")[12] = 40.0
+        before = {name: list(m.array(name)) for name in WRITTEN}
+        error = outcome(m, 2)
+        return error, before == {name: list(m.array(name)) for name in WRITTEN}
+
+    recorded, plain = recorded_and_plain(scenario)
+    assert recorded == plain == ("Subscript out of range (PROG 2)", True)
+
+
+def _edge_floats() -> list[float]:
+    """Signed zeros, subnormals, both ends of the normal range, infinities, NaN and random
+    floats of every binade."""
+    rng = random.Random(22)
+    edges = [0.0, -0.0, 5e-324, -5e-324, 2.0 ** -1022, 2.0 ** -1022 * (1 - 2.0 ** -52),
+             2.0 ** -1022 * (1 + 2.0 ** -52), 1.0, 1.0 - 2.0 ** -53, 1.0 + 2.0 ** -52, 2.0 ** 1023,
+             2.0 ** 1023 * (1 - 2.0 ** -53), 1.7976931348623157e308,
+             math.inf, -math.inf, math.nan, 90.0, 180.0, 360.0, -270.0, 1e-300, 3.0, 0.5]
+    edges += [math.ldexp(rng.random() + 0.5, rng.randrange(-1074, 1024)) * rng.choice((1.0, -1.0))
+              for _ in range(4000)]
+    return edges + [-x for x in edges]
+
+
+def _recorded_expression(function, value: float):
+    """The recorded text of ``function`` (a name of tracing.TRACE) of a traced input of ``value``,
+    compiled as a function of that input with the names a record has."""
+    from yaseer.linkages import tracing
+
+    recorder = Recorder()
+    traced = recorder.read(value, "x")
+    result = getattr(tracing.TRACE, function)(traced)
+    expression = next(line for line in recorder.lines if str(line).startswith(f"{result.name} = ")).split(" = ", 1)[1]
+    namespace = tracing.namespace(recorder.names)
+    exec(compile(f"def f(t0):\n    return {expression}\n", "<expression>", "exec"), namespace)
+    return expression, namespace["f"]
+
+
+def _same_outcome(first, second, x) -> bool:
+    """Whether first(x) and second(x) give the same bits, or raise the same exception type."""
+    def run(function):
+        try:
+            return function(x).hex()
+        except ArithmeticError as error:
+            return type(error)
+    return run(first) == run(second)
+
+
+@pytest.mark.parametrize("name", ["radians", "degrees"])
+def test_radians_and_degrees_are_recorded_as_the_product_they_compute(name):
+    # reference: the math module's own function, on floats of every binade and the special values
+    expression, recorded = _recorded_expression(name, 1.5)
+    assert "_radians" not in expression and "_degrees" not in expression and " * " in expression
+    function = getattr(math, name)
+    assert all(_same_outcome(recorded, function, x) for x in _edge_floats())
+
+
+def test_the_unit_of_a_length_is_recorded_without_frexp_where_the_float_is_normal():
+    # reference: the plain code's ldexp(1.0, frexp(x)[1]), also where it raises (2**1023 and beyond)
+    expression, recorded = _recorded_expression("unit_of", 1.5)
+    assert expression.startswith("(_ulp(t0)")
+    reference = lambda x: math.ldexp(1.0, math.frexp(x)[1])  # noqa: E731
+    assert all(_same_outcome(recorded, reference, x) for x in _edge_floats())
+    with pytest.raises(OverflowError):
+        recorded(2.0 ** 1023)
+
+
+def test_unit_degrees_is_recorded_with_the_product_for_radians():
+    # reference: numerics.SCALAR.unit_degrees (quadrants exact, else cmath.rect of math.radians)
+    from yaseer.linkages.numerics import SCALAR
+
+    expression, recorded = _recorded_expression("unit_degrees", 30.0)
+    assert "_radians" not in expression
+    for x in _edge_floats()[:2000]:
+        if math.isfinite(x):
+            got, want = recorded(x), SCALAR.unit_degrees(x)
+            assert (got.real.hex(), got.imag.hex()) == (want.real.hex(), want.imag.hex()), x

@@ -200,7 +200,8 @@ def _once(lines: list) -> list[str]:
 
 _FLOAT, _COMPLEX = "float", "complex"
 _TYPED = (  # what a recorded expression computes, whatever the values: its type from its operands'
-    (r"float\(.*|abs\((t\d+)\)|_(?:sqrt|cos|sin|arctan|radians|degrees|atan2|ldexp)\(.*|(t\d+)\.(?:real|imag)",
+    (r"float\(.*|abs\((t\d+)\)|_(?:sqrt|cos|sin|arctan|radians|degrees|atan2|ldexp)\(.*|\(_ulp\(.*"
+     r"|(t\d+)\.(?:real|imag)",
      lambda kinds: _FLOAT if all(kind in (_FLOAT, _COMPLEX) for kind in kinds) else None),
     (r"(?:complex|_rect|_exp)\(.*|\(_quadrant\(.*", lambda kinds: _COMPLEX),
     (r"({0}) [-+*/%] ({0})|-({0})|\(({0}) if .* else ({0})\)".format(r"t\d+|_k\d+|-?[\d.]+(?:e[-+]?\d+)?j?|\([-\d.+e]+j\)"),
@@ -557,14 +558,34 @@ class Traced:
         return f"Traced({self.name}={self.value!r})"
 
 
+def _scales() -> dict[str, float]:
+    """math.radians and math.degrees as the factor each multiplies its float by: CPython's
+    mathmodule.c computes ``x * degToRad`` and ``x * radToDeg``, the doubles pi/180 and 180/pi,
+    and nothing else (no range check).  A product costs a record a third of the call; a Python
+    whose functions give other bits at a few probes (signed zero, infinities, the largest
+    float, a subnormal) keeps the calls."""
+    factors = {"radians": math.pi / 180.0, "degrees": 180.0 / math.pi}
+    probes = (0.0, -0.0, 1.0, -123.456, 1e300, -1.7976931348623157e308, 5e-324, math.inf, -math.inf, 359.99999)
+    same = all(getattr(math, name)(x).hex() == (x * factor).hex()
+               for name, factor in factors.items() for x in probes)
+    return factors if same else {}
+
+
+_SCALES = _scales()
+
+
 def _call(name: str, function):
-    """``function`` (of :data:`numerics.SCALAR`) recorded as a call when an argument is traced."""
+    """``function`` (of :data:`numerics.SCALAR`) recorded as a call when an argument is traced
+    (radians and degrees of a float: the product they compute, :func:`_scales`)."""
+    scale = _SCALES.get(name)
 
     def call(*args):
         if not any(isinstance(arg, Traced) for arg in args):
             return function(*args)
         recorder = next(arg.recorder for arg in args if isinstance(arg, Traced))
         value = function(*(_value(arg) for arg in args))
+        if scale is not None and len(args) == 1 and type(args[0].value) is float:
+            return recorder.emit(value, f"{args[0].name} * {scale!r}")
         callee = recorder.function(f"_{name}", function)
         return recorder.emit(value, f"{callee}({', '.join(recorder.operand(arg) for arg in args)})")
 
@@ -626,10 +647,14 @@ def _unit_degrees(angle):
     if not isinstance(angle, Traced):
         return _S.unit_degrees(angle)
     recorder = angle.recorder
-    quadrant, rect, radians = (recorder.function(name, BOUND[name]) for name in ("_quadrant", "_rect", "_radians"))
+    quadrant, rect = (recorder.function(name, BOUND[name]) for name in ("_quadrant", "_rect"))
+    if "radians" in _SCALES and type(angle.value) is float:
+        radians = f"{angle.name} * {_SCALES['radians']!r}"
+    else:
+        radians = f"{recorder.function('_radians', BOUND['_radians'])}({angle.name})"
     # every quadrant's value is a nonzero complex number: ``or`` takes it when there is one
     return recorder.emit(_S.unit_degrees(angle.value),
-                         f"({quadrant}({angle.name} % 360.0) or {rect}(1.0, {radians}({angle.name})))")
+                         f"({quadrant}({angle.name} % 360.0) or {rect}(1.0, {radians}))")
 
 
 def _unit_of(length):
@@ -638,7 +663,20 @@ def _unit_of(length):
         return _S.unit_of(length)
     recorder = length.recorder
     ldexp, frexp = recorder.function("_ldexp", BOUND["_ldexp"]), recorder.function("_frexp", BOUND["_frexp"])
-    return recorder.emit(_S.unit_of(length.value), f"{ldexp}(1.0, {frexp}({length.name})[1])")
+    exact = f"{ldexp}(1.0, {frexp}({length.name})[1])"
+    if type(length.value) is not float:
+        return recorder.emit(_S.unit_of(length.value), exact)
+    # A normal float x below 2**1023 lies in [2**(e-1), 2**e) with e = frexp(x)[1], and its ulp
+    # is 2**(e-53): ulp(x) * 2**53 is 2**e exactly, in two C operations where frexp builds a
+    # tuple and ldexp is a second call (a subnormal, zero, a negative, inf, NaN and from 2**1023
+    # on, where ldexp raises OverflowError, take the two calls)
+    ulp = recorder.function("_ulp", BOUND["_ulp"])
+    x = length.name
+    return recorder.emit(_S.unit_of(length.value),
+                         f"({ulp}({x}) * {_TWO_53!r} if {_SMALLEST_NORMAL!r} <= {x} < {_TWO_1023!r} else {exact})")
+
+
+_TWO_53, _SMALLEST_NORMAL, _TWO_1023 = 2.0 ** 53, 2.0 ** -1022, 2.0 ** 1023
 
 
 _S = numerics.SCALAR
@@ -648,8 +686,8 @@ _CALLED = {**{name: getattr(_S, name) for name in
 #: Every function a record calls, under the name it has there (:meth:`Recorder.function`), and the
 #: exception its guards raise: a record's names are these and literals.
 BOUND = {**{f"_{name}": function for name, function in _CALLED.items()}, "_rect": cmath.rect,
-         "_atan2": math.atan2, "_ldexp": math.ldexp, "_frexp": math.frexp, "_quadrant": numerics.QUADRANTS.get,
-         "_Retrace": Retrace}
+         "_atan2": math.atan2, "_ldexp": math.ldexp, "_frexp": math.frexp, "_ulp": math.ulp,
+         "_quadrant": numerics.QUADRANTS.get, "_Retrace": Retrace}
 
 #: The :mod:`numerics` namespace of a recording.
 TRACE = SimpleNamespace(
