@@ -619,3 +619,37 @@ def test_unit_degrees_is_recorded_with_the_product_for_radians():
         if math.isfinite(x):
             got, want = recorded(x), SCALAR.unit_degrees(x)
             assert (got.real.hex(), got.imag.hex()) == (want.real.hex(), want.imag.hex()), x
+
+
+@pytest.mark.parametrize("made", [[[0.0, 0.0]] * 11, ["A"] * 11], ids=["rows", "strings"])
+def test_an_output_array_of_rows_or_strings_is_the_type_mismatch_in_a_recorded_path(made):
+    # V() is written, never read: a path recorded on numbers run where it holds rows or strings
+    # raises the plain code's error and writes nothing
+    def scenario():
+        m = machine(2, 2.0, 1)
+        for angle in (10.0, 20.0, 30.0):
+            m.array("T")[12] = angle
+            outcome(m, 2)
+        m.arrays["V"] = list(made)
+        m.array("T")[12] = 40.0
+        before = {name: list(m.array(name)) for name in WRITTEN}
+        error = outcome(m, 2)
+        return error, before == {name: list(m.array(name)) for name in WRITTEN}
+
+    recorded, plain = recorded_and_plain(scenario)
+    assert recorded == plain == ("Type mismatch (PROG 2)", True)
+
+
+def test_gravity_read_by_a_recorded_path_gives_the_plain_codes_bits():
+    # G is read as an element is (x - 0.0): an int, a bool and a negative zero as float(x) reads them
+    def scenario():
+        m = machine(2, 2.0, 1)
+        row = []
+        for call, gravity in enumerate((9.81, 9.81, 10, True, -0.0, 9.81, 3)):
+            m.array("T")[12] = 15.0 * call
+            m.scalars["G"] = gravity
+            row.append(_bits(m) if outcome(m, 2) else None)
+        return row
+
+    recorded, plain = recorded_and_plain(scenario)
+    assert recorded == plain

@@ -212,15 +212,18 @@ class _RecordingFrame(_Frame):
         # an array's elements are all numbers, all strings or all rows: one look at each array
         # written, unless a number was read of it
         unread = {name: index for name, index in largest.items() if name not in self._numbers}
-        if unread:
+        typed = getattr(getattr(self.machine, "dialect", None), "typed_numbers", False)  # a stand-in has none
+        if unread and typed:
             lines.append(f"if {' or '.join(f'isinstance(_a_{n}[{i}], (list, str))' for n, i in unread.items())}: "
                          f"raise _error('Type mismatch', {TYPE_MISMATCH})")
+        elif unread:  # plain numbers (Recorder.compile): a row or a string is what cannot lose 0.0
+            lines.append(f"try: {'; '.join(f'_a_{n}[{i}] - 0.0' for n, i in unread.items())}\nexcept TypeError: "
+                         f"raise _error('Type mismatch', {TYPE_MISMATCH}) from None")
         for (name, index), value in self._elements.items():
             lines.append(f"_a_{name}[{index}] = {_as_float(recorder, value)}")
         for name, value in self._scalars.items():
             lines.append(f"_M.set_scalar({name!r}, {_as_float(recorder, value)})")
         recorder.names.update(_provided(area))
-        typed = getattr(getattr(self.machine, "dialect", None), "typed_numbers", False)  # a stand-in has none
         return recorder.compile(lines, f"PROG {area}", not typed), recorder.keys()
 
     def plain(self) -> _Frame:

@@ -158,6 +158,8 @@ class Recorder:
         call its clearing)."""
         lines = _batched_finite_guards(_batched_reads(_float_parts(_once(self.lines) + epilogue, self.names),
                                                       _SUBTRACTED if plain_numbers else _CONVERTED))
+        if plain_numbers:  # a scalar read as an element is (float() is a call)
+            lines = [_SCALAR_READ.sub(r"\1 - 0.0", line) for line in lines]
         lines = _batched_fetches(_registers(_fused(_without_dead_lines(lines))), plain_numbers)
         # an element read of an array shorter than at the recording raises IndexError: these
         # inputs take another path (the plain code reads 0 beyond the dimension)
@@ -180,7 +182,8 @@ def namespace(names: dict) -> dict:
     return dict(names, _all=all, _map=map, _float=float, _no_dialect=_NO_DIALECT,
                 __builtins__={"float": float, "complex": complex, "len": len, "abs": abs, "getattr": getattr,
                               "isinstance": isinstance, "list": list, "str": str,
-                              "KeyError": KeyError, "IndexError": IndexError, "TypeError": TypeError})
+                              "KeyError": KeyError, "IndexError": IndexError, "TypeError": TypeError,
+                              "AttributeError": AttributeError})
 
 
 def _once(lines: list) -> list[str]:
@@ -264,6 +267,7 @@ class _Pattern:
 
 
 _READ = _Pattern(r"(t\d+) = float\((_a_\w+)\[(\d+)\]\)$")
+_SCALAR_READ = _Pattern(r"(?<= = )float\((_M\.scalars\.get\('\w+', 0\.0\))\)$")  # binding's scalar read
 _CONVERTED = "_float({}[{}])"  # an element read (array, index) as float() makes it a float
 _SUBTRACTED = "{}[{}] - 0.0"  # ... as a subtraction makes it one (Recorder.compile's plain_numbers)
 
@@ -408,7 +412,9 @@ def _batched_fetches(lines: list[str], plain_numbers: bool = False) -> list[str]
         if line == "_arrays = _M.arrays":
             out.append(f"try: {together}\nelse: _ready = True")
             if plain_numbers:
-                out.append("if getattr(_M, 'dialect', _no_dialect).typed_numbers: raise _Retrace")
+                # (an attribute read in a try costs a third of a call of getattr)
+                out.append("try: _dialect = _M.dialect\nexcept AttributeError: _dialect = _no_dialect")
+                out.append("if _dialect.typed_numbers: raise _Retrace")
     return out
 
 
