@@ -535,21 +535,24 @@ def test_the_decision_tree_is_compiled_once_the_keys_met_stay_the_same(monkeypat
     assert compiled == [3]
 
 
+def _error_after_recording(name: str, array: list):
+    """Program 2's outcome where array ``name`` is replaced by ``array`` after three calls on the
+    universal dimensions (the paths recorded), and whether every array kept its elements."""
+    m = machine(2, 2.0, 1)
+    for angle in (10.0, 20.0, 30.0):
+        m.array("T")[12] = angle
+        outcome(m, 2)
+    m.arrays[name] = array
+    m.array("T")[12] = 40.0
+    before = {name: list(m.array(name)) for name in WRITTEN}
+    error = outcome(m, 2)
+    return error, before == {name: list(m.array(name)) for name in WRITTEN}
+
+
 def test_an_output_array_too_short_for_a_recorded_path_is_the_subscript_error_and_writes_nothing():
     # a path recorded with the universal dimensions run where X() holds 3 elements (it writes X(5)):
     # the error the plain code raises, every array as it was
-    def scenario():
-        m = machine(2, 2.0, 1)
-        for angle in (10.0, 20.0, 30.0):
-            m.array("T")[12] = angle
-            outcome(m, 2)
-        m.arrays["X"] = [0.0] * 4
-        m.array("T")[12] = 40.0
-        before = {name: list(m.array(name)) for name in WRITTEN}
-        error = outcome(m, 2)
-        return error, before == {name: list(m.array(name)) for name in WRITTEN}
-
-    recorded, plain = recorded_and_plain(scenario)
+    recorded, plain = recorded_and_plain(lambda: _error_after_recording("X", [0.0] * 4))
     assert recorded == plain == ("Subscript out of range (PROG 2)", True)
 
 
@@ -625,18 +628,7 @@ def test_unit_degrees_is_recorded_with_the_product_for_radians():
 def test_an_output_array_of_rows_or_strings_is_the_type_mismatch_in_a_recorded_path(made):
     # V() is written, never read: a path recorded on numbers run where it holds rows or strings
     # raises the plain code's error and writes nothing
-    def scenario():
-        m = machine(2, 2.0, 1)
-        for angle in (10.0, 20.0, 30.0):
-            m.array("T")[12] = angle
-            outcome(m, 2)
-        m.arrays["V"] = list(made)
-        m.array("T")[12] = 40.0
-        before = {name: list(m.array(name)) for name in WRITTEN}
-        error = outcome(m, 2)
-        return error, before == {name: list(m.array(name)) for name in WRITTEN}
-
-    recorded, plain = recorded_and_plain(scenario)
+    recorded, plain = recorded_and_plain(lambda: _error_after_recording("V", list(made)))
     assert recorded == plain == ("Type mismatch (PROG 2)", True)
 
 
