@@ -163,6 +163,10 @@ AGREED = {
                                       '30 PRINT STRING$(80, "*"); CHR$(13); "Z"\n'),
     # MID$ = copies byte by byte into the target (BISTRS.ASM LHSMID, MID$LP): the target
     # itself as the value overlaps; a MID$() of it is a copy
+    # MID$ = with a count of 0 changes nothing, its start not compared with the length
+    # (BISTRS.ASM LHSMID returns on a zero count first)
+    "mid$ = with a count of 0": ('10 A$ = "AB": MID$(A$, 5, 0) = "X": MID$(A$, 2, 0) = "Q": PRINT A$\n'
+                                 '20 MID$(A$, 5) = "X"\n'),
     "mid$ onto itself": ('10 A$ = "ABCDEFGH": MID$(A$, 3) = A$: PRINT A$\n20 B$ = "HELLO": MID$(B$, 2, 3) = MID$(B$, 1)\n'
                          '30 C$ = "WXYZ": MID$(C$, 2) = C$: D$ = "1234": MID$(D$, 1, 2) = D$: PRINT B$; " "; C$; " "; D$\n'),
 }

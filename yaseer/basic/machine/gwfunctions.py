@@ -329,9 +329,12 @@ def mid_assign(target: str, start: float, count, value: str, overlapping: bool =
     one by one from its start while it overwrites them (BISTRS.ASM LHSMID, its loop
     MID$LP): ``MID$(A$, 3) = A$`` of "ABCDEFGH" is "ABABABAB", as PC-BASIC 2.0.8 prints."""
     i = _count(start, 1, 255)
+    most = None if count is None else _count(count)
+    if most == 0:  # LHSMID returns on a count of 0 before it compares start and length
+        return target
     if i > len(target):
         raise _illegal()
-    n = len(value) if count is None else min(_count(count), len(value))
+    n = len(value) if most is None else min(most, len(value))
     n = min(n, len(target) - i + 1)
     if overlapping:
         cells = list(target)
