@@ -305,3 +305,83 @@ def test_whole_degrees_come_from_the_table_of_the_routines_results(helper):
     for x in (1e9, -1e9, 1e12, 12345678901.0):  # beyond the table's range: as before (routine or band test)
         assert site(x) == site.routine(x)
     assert site.slow > 0
+
+
+def drawn_sum_site():
+    """``a + RND`` compiled (number_models.DecimalNumbers._drawn_sum) on the local ``a``, with the
+    drawn numbers from ``site["drawn"]`` and a count of the writer's calls."""
+    from yaseer.basic.arithmetic import decimal_scales
+
+    model = DecimalNumbers()
+    draw, _ = model.call("RND", "_rndf", [], [], "n")
+    code, _ = model.arithmetic("+", "a", "n", draw, "n")
+    assert "_zdr(" in code and "_d13" not in code  # fused: the number drawn is not rounded first
+    namespace = {**decimal_arith.RUNTIME, **decimal_scales.initial(model.cache_bases)}
+    namespace.update(decimal_scales.writers(namespace))
+    writer = namespace["_zdr"]
+    site = {"slow": 0, "drawn": iter(())}
+
+    def counted(*args):
+        site["slow"] += 1
+        return writer(*args)
+    namespace.update({"_zdr": counted, "_rndr": lambda: next(site["drawn"])})
+    exec(f"def run(a):\n    return {code}\n", namespace)
+    site["run"] = namespace["run"]
+    return site
+
+
+def test_a_sum_with_rnd_is_the_sum_with_the_rounded_number():
+    """``a + RND`` (the number drawn added unrounded, one rounding) against the sum of ``a`` and
+    the number rounded to 12 digits: decimal_arith's add of ``_d13``'s number (the code before),
+    and the decimal module (the number's exact double rounded half to even to 12 digits, the
+    sum of the two decimals rounded half up to 12): running sums from 0 and from -50 (Ahl's
+    R = R + RND(1) passes through every decade up from 1E-1 and across 0), and sums of
+    generated decades, signs and numbers, the halfway numbers k / 8192 among them."""
+    from decimal import ROUND_HALF_EVEN, ROUND_HALF_UP, Context, Decimal
+
+    drawn_context = Context(prec=12, rounding=ROUND_HALF_EVEN)
+    sum_context = Context(prec=12, rounding=ROUND_HALF_UP)
+
+    def reference(a, v):
+        exact = sum_context.add(Decimal(format(a, ".12g")), drawn_context.plus(Decimal(v)))
+        return float(exact)
+
+    rng = random.Random(23)
+    site = drawn_sum_site()
+    calls = 0
+    for start in (0.0, -50.0, 999.5):
+        a = start
+        numbers = [rng.random() for _ in range(6000)] + [k / 8192 for k in range(1, 8192, 7)]
+        site["drawn"] = iter(numbers)
+        for v in numbers:
+            result = site["run"](a)
+            expected = decimal_arith.add(a, decimal_arith.rounded(v))
+            assert result == expected == reference(a, v), (a, v)
+            a = result
+            calls += 1
+    pairs = [(own(rng.choice((1, -1)) * rng.uniform(1, 10) * 10.0 ** rng.randrange(-3, 13)), rng.random())
+             for _ in range(20000)]
+    pairs += [(own(rng.uniform(100, 2000)), k / 8192) for k in range(1, 8192)]
+    site["drawn"] = iter(v for _, v in pairs)
+    for a, v in pairs:
+        assert site["run"](a) == decimal_arith.add(a, decimal_arith.rounded(v)) == reference(a, v), (a, v)
+        calls += 1
+    assert site["slow"] < calls * 0.6, (site["slow"], calls)  # the fused path is taken
+
+
+def test_a_sum_with_rnd_keeps_no_scale_beyond_its_bound():
+    """A planted bug: the drawn number's distance from its rounding is only small enough up to
+    the scale 1E+9 (sums from 100 up); a site that keeps larger scales gives wrong sums."""
+    from yaseer.basic.arithmetic import decimal_scales
+
+    original = decimal_scales.DRAWN_SCALE
+    decimal_scales.DRAWN_SCALE = 1e13
+    try:
+        site = drawn_sum_site()
+        rng = random.Random(3)
+        pairs = [(own(rng.uniform(0.1, 1.0)), rng.random()) for _ in range(20000)]
+        site["drawn"] = iter(v for _, v in pairs)
+        wrong = sum(site["run"](a) != decimal_arith.add(a, decimal_arith.rounded(v)) for a, v in pairs)
+    finally:
+        decimal_scales.DRAWN_SCALE = original
+    assert wrong > 0

@@ -68,6 +68,9 @@ TOP = 1e12  # a scaled result below it has at most 12 digits before the point
 BOTTOM = 1e11  # ... and from it on exactly 12 (the band test's decade)
 BAND = 0.5 - 2.0 ** -8  # |t - n| below it: no rounding boundary within the error E
 GUARD = 1e13  # |S a| below it for an operand of a sum: bounds the operands' own errors
+# the largest scale of a sum with the number RND draws unrounded (number_models._drawn_sum): the
+# number's distance from its 12-digit rounding, at most 0.5E-12, scaled, within 5E-4 (below)
+DRAWN_SCALE = 1e9
 _SCALES = {e: 10.0 ** (11 - e) for e in range(-11, 12)}  # exact doubles 10**0 .. 10**22
 _POWERS = {e: 10.0 ** e for e in range(-12, 14)}  # the decades' ends (decimals of one digit)
 # a binade's lowest decade: 2**(b-1) <= x < 2**b has floor(log10 x) this or one more
@@ -170,16 +173,33 @@ def writers(namespace: dict) -> dict:
         return retried(name, routine, a, b, lambda s: abs(s) * c <= GUARD)
 
     def guarded(name, routine, a, b):
-        def fits(s):
-            bound = GUARD / abs(s)
-            if -bound < a < bound:
-                namespace[name] = nan  # (matches nothing until the bounds fit it)
-                namespace[name + "l"], namespace[name + "h"] = -bound, bound
-                return True
-            return False
-        return retried(name, routine, a, b, fits)
+        return retried(name, routine, a, b, lambda s: guarded_fits(name, a, s))
 
-    return {"_zd": retried, "_zdc": with_constant, "_zdg": guarded}
+    def drawn_sum(name, routine, a, v):
+        """``a + RND`` for the number drawn ``v`` (the compiled code's ``_zdr``): ``v`` rounded to
+        12 digits (``_d13``), then the sum as :func:`guarded` gives it, whose scale is kept only up
+        to :data:`DRAWN_SCALE` in size (the compiled code adds ``v`` itself, unrounded).
+
+        **Why that is the sum with the rounded number.**  The compiled code's ``t`` is
+        ``fl(fl(a + v) * S)``; the rounded number ``R`` differs from ``v`` by at most half its
+        unit, ``0.5E-12`` (``v`` is below 1), and ``v`` itself is exact, so ``|t - X*S|`` is
+        within the bound ``E`` of a sum (above: the guard on ``a``, the other operand ``v``
+        below 1 scaled below ``10**13``) plus ``0.5E-12 |S| <= 5E-4``: below ``3E-3 < 2**-8``,
+        and the band test's argument gives ``n / S``, the 12-digit rounding of ``X = A + R``.
+        The compiled code takes no exact test here (``t`` whole says nothing of ``X``)."""
+        def fits(s):
+            return -DRAWN_SCALE <= s <= DRAWN_SCALE and guarded_fits(name, a, s)
+        return retried(name, routine, a, namespace["_d13"](v), fits)
+
+    def guarded_fits(name, a, s):
+        bound = GUARD / abs(s)
+        if -bound < a < bound:
+            namespace[name] = nan  # (matches nothing until the bounds fit it)
+            namespace[name + "l"], namespace[name + "h"] = -bound, bound
+            return True
+        return False
+
+    return {"_zd": retried, "_zdc": with_constant, "_zdg": guarded, "_zdr": drawn_sum}
 
 
 def initial(names) -> dict:

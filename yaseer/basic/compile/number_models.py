@@ -599,6 +599,7 @@ class DecimalNumbers(PlainNumbers):
         self._temps = 0
         self._exact: dict[str, tuple] = {}  # code with an exact form -> (its tree, its scaled code)
         self.cache_bases: list[str] = []  # the scale caches written (see _scaled)
+        self._draws: set[str] = set()  # the codes of RND's rounded number (see _drawn_sum)
         self.caching = True  # (off: the routines alone)
 
     def literal(self, value, kind: str) -> tuple[str, str]:
@@ -611,6 +612,8 @@ class DecimalNumbers(PlainNumbers):
         is exact (:func:`_exact_form`), else inline through a scale cache (:meth:`_scaled`)."""
         if not self.caching:
             return f"{self._OPERATIONS[op]}({left}, {right})", "n"
+        if op == "+" and left.isidentifier() and (right in self._draws or f"({right})" in self._draws):
+            return self._drawn_sum(left), "n"
         (left_tree, left_scaled), (right_tree, right_scaled) = self._operand(left), self._operand(right)
         if left_tree is not None and right_tree is not None:
             tree = (op, left_tree, right_tree)
@@ -665,6 +668,22 @@ class DecimalNumbers(PlainNumbers):
                 f"((_dn := _dt + {MAGIC!r} - {MAGIC!r}) == _dt or _dt >= {BOTTOM!r} and "
                 f"{-BAND!r} < _dt - _dn < {BAND!r}) else {written})")
 
+    def _drawn_sum(self, local: str) -> str:
+        """``local + RND``: the sum of the local and the number drawn, rounded once through a
+        scale cache ``_D<n>`` (decimal_scales.DRAWN_SCALE bounds its scale: its docstring proves
+        this is the sum of the local and the number drawn rounded to 12 digits), else the writer
+        ``_zdr``, which rounds the number drawn (``_d13``) and adds it with ``_dadd``.  The local
+        is read before the number is drawn, as in ``local + RND`` unfused."""
+        from yaseer.basic.arithmetic.decimal_scales import BAND, BOTTOM, MAGIC, TOP
+
+        self._temps += 1
+        cache = f"_D{self.site_salt}{self._temps}"
+        self.cache_bases.append(cache)
+        return (f"(_dn / {cache} if {BOTTOM!r} <= (_dt := ({local} + (_dv := _rndr())) * {cache}) < {TOP!r} and "
+                f"{cache}l < {local} < {cache}h and "
+                f"{-BAND!r} < _dt - (_dn := _dt + {MAGIC!r} - {MAGIC!r}) < {BAND!r} else "
+                f"_zdr({cache!r}, _dadd, {local}, _dv))")
+
     def cache_prelude(self, source: str) -> str:
         """The module code that sets the caches ``source`` writes to match nothing."""
         used = sorted(set(_SCALE_WRITTEN.findall(source)))
@@ -701,7 +720,9 @@ class DecimalNumbers(PlainNumbers):
         cache = f"_D{self.site_salt}{n}"
         self.cache_bases.append(cache)
         if helper == "_rndf":  # the number drawn, rounded as ``_d13`` (decimal_arith.rounded) rounds it
-            return _drawn_rounded(cache), "n"
+            code = _drawn_rounded(cache)
+            self._draws.add(code)
+            return code, "n"
         else:
             x = codes[0]
             first = x if _plain_operand(x) else f"(_x{n} := {x})"
@@ -832,7 +853,7 @@ def _float_code(tree) -> str:
 
 
 _CACHE_WRITTEN = Pattern(r"_zw[spq]\('(\w+)'")  # a binade cache's name where its writer is called
-_SCALE_WRITTEN = Pattern(r"_zd[cgf]?\('(\w+)'")  # a scale cache's name where its writer is called
+_SCALE_WRITTEN = Pattern(r"_zd[cgfr]?\('(\w+)'")  # a scale cache's name where its writer is called
 
 
 def number_model(dialect, def_types=None) -> PlainNumbers:
