@@ -27,12 +27,12 @@ from yaseer.basic.errors import (
     FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, error_for, not_emulated,
 )
 from yaseer.basic.machine import item_reading, random_files
+from yaseer.basic.machine.random_files import END_OF_FILE  # Ctrl-Z
 from yaseer.basic.machine.runtime import cint
 from yaseer.basic.machine.sandbox import Sandbox, identity_of
 from yaseer.basic.machine.screen import FileStream
 
 MAX_FILES = 3
-END_OF_FILE = "\x1a"  # Ctrl-Z
 RECORD = 128  # bytes: LOC counts these
 _MODES = {"I": "I", "O": "O", "A": "A", "R": "R", "INPUT": "I", "OUTPUT": "O", "APPEND": "A", "RANDOM": "R"}
 

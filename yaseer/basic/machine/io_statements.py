@@ -527,8 +527,7 @@ class UsingLine:
         else:  # a field that does not fit the row starts the next one, as a PRINT item does
             stream.item(text)
             stream.write(after)
-        if device is None:
-            machine._fields_follow(stream)
+        self._fields_follow()
 
     def end(self, newline: bool) -> None:
         """The statement's end: the line ends unless a ``;`` or ``,`` ended the list."""
