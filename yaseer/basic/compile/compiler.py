@@ -36,6 +36,10 @@ from yaseer.basic.compile.expressions import (
 )
 from yaseer.basic.compile.statements_io import InputOutputCompiler
 from yaseer.basic.compile.loops import LoopCompiler, LoopSplit
+from yaseer.basic.compile.markers import (
+    LOAD_LOCALS, STACK_CHECK, STORE_LOCALS, ArraysCall, Dimensioned, LoadLocals, PassTop, Refreshing, StackCheck,
+    StoreLocals,
+)
 from yaseer.basic.dialects.dialect import CASIO
 from yaseer.basic.compile.number_models import array_local, local_name, number_model, variant_function
 from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  (re-exported)
@@ -55,9 +59,6 @@ class _Block:
         self.loop_makes: dict[str, set] = {}  # a native loop's flag -> the names its body makes
         self.first_line = None
 
-
-# Where a making's code reads its block's flag again (compiler.made): block_source writes the reading.
-_REFRESH = "#REFRESH#"
 
 # What generated code calls that changes the GOSUB/FOR stack and goes on in the same block.
 _STACK_CHANGES = ("_pop(", "_next_any(", "_clear(", "_call(", "_M.", "_gosub(", "_stk.")
@@ -189,7 +190,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.loop_makings: list[set] = []  # the names each of those loops' bodies makes (note_making)
         self.header_parts: tuple = ()  # the last native loop's first line (loops.loop_header)
         self.split_loops: set = set()  # the native loops run in two (loops.unchecked_passes, _copies)
-        self.break_infos: list[tuple] = []  # #BREAK#k markers: (BASIC line, open loops)
+        self.break_infos: list[tuple] = []  # markers.PassTop's: (BASIC line, open loops)
         self.break_points: dict[int, dict] = {}  # block -> {Python line: (BASIC line, open loops)}
         self.fn_params: dict[str, list] = {}  # DEF FN name -> parameter names
         # under OPTION BASE 1 a constant subscript 0 must go through the check
@@ -248,7 +249,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.emit(f"raise _err('Out of memory', {OUT_OF_MEMORY})")
             return
         if scope.uses_fn:
-            block.code.insert(mark, (self.indent, "#FLUSH#"))
+            block.code.insert(mark, (self.indent, STORE_LOCALS))
 
     def assign(self, target, value_code: str, value_kind: str, scope, check: bool) -> None:
         """Store ``value_code`` in a variable or element; ``check`` adds the Overflow test.
@@ -279,7 +280,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             name = self.numbers.name(target.name)
             local = array_local(name)
             self.note_making(name + "()")
-            self.emit(f"{MAKING}{local} is None: {local} = _arr({name!r}, {len(target.indices)}); {_REFRESH}")
+            self.emit(Refreshing(f"{MAKING}{local} is None: {local} = _arr({name!r}, {len(target.indices)})"))
         if check:
             self.emit(f"_t = {value_code}")
             self.emit(f"if _t - _t: _t = _ovf(_t, {target_kind!r})")
@@ -320,7 +321,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         if stmt.target in self.plan.bare_returns:
             # a subroutine that is a plain RETURN: push and pop in place (a full stack
             # is still Out of memory at the GOSUB; TRON still shows the RETURN's line)
-            self.emit("#FULL#")  # the full-stack check (see block_source)
+            self.emit(STACK_CHECK)
             if self.trace:
                 self.emit(f"_tr({stmt.target})")
             return
@@ -332,8 +333,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         block.code.append((indent, target))
 
     def stmt_GosubProg(self, stmt, scope):
-        self.emit("#FLUSH#")
-        self.emit(f"#CALL#_call({stmt.area}, _ln)")  # the arrays reloaded only if it says they may have changed
+        self.emit(STORE_LOCALS)
+        self.emit(ArraysCall(f"_call({stmt.area}, _ln)"))
 
     def stmt_GosubArea(self, stmt, scope):
         self._call_program(f"_call({stmt.area}, _ln)")
@@ -353,9 +354,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         """Run another program (area or file) where the dialect has them; else Syntax error."""
         if not self.program_areas:
             raise syntax_error()
-        self.emit("#FLUSH#")
+        self.emit(STORE_LOCALS)
         self.emit(call)
-        self.emit("#RELOAD#")
+        self.emit(LOAD_LOCALS)
 
     def stmt_Return(self, stmt, scope):
         # the common case inline: a GOSUB's return block on top of the stack
@@ -466,14 +467,14 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             name = self.numbers.name(name)
             codes = ", ".join(self.integer(s, scope) for s in sizes)
             self.emit(f"_dim({name!r}, ({codes},))")
-            self.emit(f"#ARRAY#{name}")
+            self.emit(Dimensioned(name))
 
     def stmt_Clear(self, stmt, scope):
         if stmt.args:
             sizes = ", ".join("None" if a is None else self.numeric(a, scope) for a in stmt.args)
             self.emit(f"_clear_args({sizes})")
         self.emit("_clear()")
-        self.emit("#RELOAD#")
+        self.emit(LOAD_LOCALS)
         if self.dynamic_types:  # the type table is single again: on in that variant (stmt_DefType)
             self.hand_over()
 
@@ -574,7 +575,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         name = self.numbers.name(name)
         if counted and self.counts_made:
             self.note_making(name)
-            self.emit(f"{MAKING}{name!r} not in _made: _mk({name!r}); {_REFRESH}")
+            self.emit(Refreshing(f"{MAKING}{name!r} not in _made: _mk({name!r})"))
         elif self.direct or name in self.watched:
             self.emit(f"_made.add({name!r})")
 
@@ -715,10 +716,10 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             args = [self.numeric(arg, scope) for arg in stmt.args]
         writes = stmt.word in self.words.writes_variables
         if writes or stmt.word in self.words.reads_variables:
-            self.emit("#FLUSH#")
+            self.emit(STORE_LOCALS)
         self.emit(f"{helper}({', '.join(args)})")
         if writes:
-            self.emit("#RELOAD#")  # the helper set variables: the block takes their new values
+            self.emit(LOAD_LOCALS)  # the helper set variables: the block takes their new values
 
     def stmt_Angle(self, stmt, scope):
         self.emit(f"_M.set_angle({stmt.mode!r})")
@@ -889,40 +890,42 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         of its makings (compiler.made)."""
         load, load_arrays, store = lines["load"], lines["load_arrays"], lines["store"]
         loop_back, self_loop = lines["loop_back"], lines["self_loop"]
-        pending = None  # a #BREAK# marker waiting for the line it marks
+        pending = None  # a PassTop waiting for the line it marks
         for indent, text in _passes(block.code, self.split_loops, checked):
             pad = "    " * (indent + base)
-            if text == "#FLUSH#":
-                if store:
-                    out.append(pad + store)
-                continue
-            if text == "#RELOAD#":
-                if load:
-                    out.append(pad + load)
-                out += [pad + text for text in load_arrays]
-                continue
-            if text.startswith("#CALL#"):  # a call that returns whether the arrays may have changed
-                call = text[6:]
-                if load_arrays:
-                    out.append(pad + f"if {call}:")
-                    out += [pad + "    " + line for line in load_arrays]
-                else:
-                    out.append(pad + call)
-                if load:
-                    out.append(pad + load)
-                continue
-            if text.startswith("#ARRAY#"):
-                name = text[7:]
-                if name in block.arrays:
-                    out.append(pad + f"{array_local(name)} = _A[{name!r}]")  # just dimensioned
-                continue
-            if text == "#FULL#":
-                text = lines["full_check"]
-            if text.endswith(_REFRESH):
-                text = text[: -len(_REFRESH)] + lines["refresh"]
-            if text.startswith("#BREAK#"):
-                pending = self.break_infos[int(text[7:])]
-                continue
+            kind = type(text)
+            if kind is not str:
+                if kind is StoreLocals:
+                    if store:
+                        out.append(pad + store)
+                    continue
+                if kind is LoadLocals:
+                    if load:
+                        out.append(pad + load)
+                    out += [pad + line for line in load_arrays]
+                    continue
+                if kind is ArraysCall:
+                    if load_arrays:
+                        out.append(pad + f"if {text.call}:")
+                        out += [pad + "    " + line for line in load_arrays]
+                    else:
+                        out.append(pad + text.call)
+                    if load:
+                        out.append(pad + load)
+                    continue
+                if kind is Dimensioned:
+                    if text.name in block.arrays:
+                        out.append(pad + f"{array_local(text.name)} = _A[{text.name!r}]")  # just dimensioned
+                    continue
+                if kind is PassTop:
+                    pending = self.break_infos[text.index]
+                    continue
+                if kind is StackCheck:
+                    text = lines["full_check"]
+                elif kind is Refreshing:
+                    text = f"{text.code}; {lines['refresh']}"
+            elif text[:1] == "#":
+                raise AssertionError(f"a comment line in generated code: {text!r} (a marker is a markers.Marker)")
             if self_loop and (text == loop_back or text.endswith(": " + loop_back)):
                 if text != loop_back:  # "if c: return b": the continue on a line of its own
                     out.append(pad + text[: -len(loop_back) - 1])
@@ -938,7 +941,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
 
         Its break points (see :class:`CompiledArea`) go to ``self.break_points``:
         the ``continue`` lines of a block that loops back to its own start, and the
-        line marked ``#BREAK#k`` at the top of each native loop's pass.
+        line after each native loop's :class:`markers.PassTop`.
         """
         points: dict[int, tuple] = {}
         names = sorted(block.scalars)
@@ -957,7 +960,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         # or calls out, the stack's length cannot change while the block runs: it is
         # measured once, as the block starts.
         full_check = f"if {self.stack_full}: _oom()"
-        if any(text == "#FULL#" for _, text in block.code) and not any(
+        if any(type(text) is StackCheck for _, text in block.code) and not any(
                 name in text for _, text in block.code for name in _STACK_CHANGES):
             full_check = "if _full: _oom()"
         base = 2 if self_loop else 1
@@ -1056,7 +1059,8 @@ def _passes(code: list, split: set, checked: bool = True) -> list:
                 if k < len(code) and code[k][0] == indent:
                     continue
                 text = "pass"
-            text = _LAZY_ARRAY.sub(r"\1", text)
+            if type(text) is str:  # (a marker keeps its type)
+                text = _LAZY_ARRAY.sub(r"\1", text)
         out.append((indent, text))
     return out
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.blocks import nodes, walk_statements
 from yaseer.basic.compile.expressions import BlockScope, CompileError, constant_value, syntax_error, type_mismatch
+from yaseer.basic.compile.markers import LOAD_LOCALS, STORE_LOCALS, PassTop
 from yaseer.basic.compile.number_models import local_name
 from yaseer.basic.errors import FOR_WITHOUT_NEXT
 
@@ -174,9 +175,9 @@ class LoopCompiler:
         if var is None and self.depth == 0 and self.index in self.plan.next_for:
             var = self.flat[self.plan.next_for[self.index]][1].var
         if var is None:
-            self.emit("#FLUSH#")
+            self.emit(STORE_LOCALS)
             self.emit("if _next_any(): return _M.frame_body")
-            self.emit("#RELOAD#")
+            self.emit(LOAD_LOCALS)
         else:
             target, key = self.loop_var(var, scope)
             self.emit(f"_f = _next({key!r}, {self.index})")
@@ -346,7 +347,7 @@ class LoopCompiler:
         self.open_loops.append((i, self.loop_key(stmt.var), n, mode,
                                 local_name(self.numbers.name(stmt.var.name)) if isinstance(stmt.var, ast.Var)
                                 else None))
-        self.emit(f"#BREAK#{len(self.break_infos)}")
+        self.emit(PassTop(len(self.break_infos)))
         self.break_infos.append((self.flat[i + 1][0], tuple(self.open_loops)))
         self.line = None
         # (the line of the body's first statement, where a break lands; the FOR's for an empty body)

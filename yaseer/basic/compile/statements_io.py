@@ -9,6 +9,7 @@ from contextlib import contextmanager
 
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.expressions import CompileError, syntax_error, type_mismatch
+from yaseer.basic.compile.markers import LOAD_LOCALS, STORE_LOCALS
 from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, MISSING_OPERAND, OUT_OF_DATA, UNDEFINED_LINE, undefined_line_message
 
 
@@ -134,7 +135,7 @@ class InputOutputCompiler:
         self.emit(f"if {stream}.file is not None:")
         self.emit("    pass")
         self.indent += 1
-        self.emit("#FLUSH#")
+        self.emit(STORE_LOCALS)
         self.indent -= 1
         self.emit("try:")
         self.indent += 1
@@ -144,7 +145,7 @@ class InputOutputCompiler:
         self.emit(f"    if {stream}.file is not None:")
         self.emit("        pass")
         self.indent += 2
-        self.emit("#RELOAD#")
+        self.emit(LOAD_LOCALS)
         self.indent -= 2
 
     def written_items(self, items, scope) -> str:
@@ -299,7 +300,7 @@ class InputOutputCompiler:
                 scope.scalar(target.name)  # known to the machine from the start
                 self.made(target)  # FIELD's PTRGET makes it (a SWAP may ask: compiler.made)
         self.emit(f"{offset} = 0")
-        self.emit("#FLUSH#")  # FIELD stores the variables' slices in the machine's scalars
+        self.emit(STORE_LOCALS)  # FIELD stores the variables' slices in the machine's scalars
         self.emit("try:")
         for node, target in stmt.fields:
             width = self.when_reached(lambda: self.integer(node, scope))
@@ -313,7 +314,7 @@ class InputOutputCompiler:
         self.emit("finally:")  # those fielded before an error keep their values
         self.indent += 1
         self.emit("pass")
-        self.emit("#RELOAD#")
+        self.emit(LOAD_LOCALS)
         self.indent -= 1
 
     def stmt_FileFirst(self, stmt, scope):
@@ -331,15 +332,15 @@ class InputOutputCompiler:
             return
         number = self.new_temp()
         self.emit(f"{number} = ({file}, {record})")
-        self.emit("#FLUSH#")  # GET stores the fielded variables in the machine's scalars
+        self.emit(STORE_LOCALS)  # GET stores the fielded variables in the machine's scalars
         self.emit(f"_get(*{number})")
-        self.emit("#RELOAD#")
+        self.emit(LOAD_LOCALS)
 
     # -- CHAIN, MERGE (chaining.py): the machine reads the file here (an error is this
     # statement's, trappable), then ends the block with the program to go on with
     def stmt_Chain(self, stmt, scope):
         line = "None" if stmt.line is None else self.numeric(stmt.line, scope)
-        self.emit("#FLUSH#")  # the variables a CHAIN keeps are the machine's
+        self.emit(STORE_LOCALS)  # the variables a CHAIN keeps are the machine's
         self.emit(f"_chain({self.string(stmt.file, scope)}, {stmt.merge}, {line}, {stmt.everything}, "
                   f"{line_specs(stmt.delete)}, {stmt.run})")
 
@@ -358,9 +359,9 @@ class InputOutputCompiler:
             argument = self.string(argument, scope)
         else:
             argument = line_specs(argument)
-        self.emit("#FLUSH#")
+        self.emit(STORE_LOCALS)
         self.emit(f"_command({stmt.name!r}, {argument}, {stmt.option!r}, {stmt.everything})")
-        self.emit("#RELOAD#")
+        self.emit(LOAD_LOCALS)
 
     # -- the text screen (machine/console.py)
     def optional_numbers(self, args: list, scope) -> str:
@@ -402,15 +403,15 @@ class InputOutputCompiler:
 
     def stmt_LSet(self, stmt, scope):
         """LSET / RSET: the machine stores the value, and every variable fielded over the
-        same bytes of the buffer shows it (FLUSH and RELOAD around the call)."""
+        same bytes of the buffer shows it (its locals stored before the call and loaded after it)."""
         key = self.field_key(stmt.target, scope)  # (PTRGET finds the variable before the value is worked out)
         value = self.string(stmt.value, scope)
         current = scope.scalar(stmt.target.name) if isinstance(stmt.target, ast.Var) else "None"
         arguments = self.new_temp()
         self.emit(f"{arguments} = ({key}, {value}, {current}, {stmt.right})")
-        self.emit("#FLUSH#")
+        self.emit(STORE_LOCALS)
         self.emit(f"_lset(*{arguments})")
-        self.emit("#RELOAD#")
+        self.emit(LOAD_LOCALS)
 
     def stmt_Close(self, stmt, scope):
         self.emit(f"_close(({''.join(self.integer(n, scope) + ', ' for n in stmt.numbers)}))")
