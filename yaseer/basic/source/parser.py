@@ -1101,7 +1101,7 @@ def _printed_before_error(tokens: list, start: int) -> list:
             continue
         if len(found) == 1 and isinstance(found[0], ast.Print) and found[0].using is None:
             printed = found[0]
-            if printed.items and printed.items[-1] not in (",", ";"):
+            if not printed.items or printed.items[-1] not in (",", ";"):  # (``PRINT #1,`` wrote nothing)
                 printed.items = list(printed.items) + [";"]
             return [printed]
         return []
