@@ -177,3 +177,70 @@ def test_chain_options_as_the_source_reads_them(tmp_path):
 
 def test_system_ends_the_run(tmp_path):
     assert yaseer_run('10 PRINT "A": SYSTEM: PRINT "B"\n', tmp_path) == "A\n"
+
+
+# COMMON skips its list as DATA skips its items (FIVEO.ASM COMMON jumps to GWMAIN.ASM DATA);
+# only a CHAIN reads the lists (source/common_lists.py)
+MALFORMED_LISTS = ["A(1)", ",", "1", "A B", "A,", "A(1+2)", "A(1", 'A("S")', "A(", "A B: PRINT 2"]
+
+
+@pytest.mark.parametrize("listed", MALFORMED_LISTS)
+def test_common_skips_its_list_where_it_runs(tmp_path, listed):
+    """A COMMON whose list does not read is no error where it runs (PC-BASIC 2.0.8 agrees)."""
+    source = f'10 COMMON {listed}: PRINT "x"\n20 PRINT "ok"\n'
+    assert yaseer_run(source, tmp_path) == pcbasic_run(source, tmp_path)
+    assert yaseer_run(source, tmp_path).endswith("ok\n")
+
+
+B_PRINTS = b'10 PRINT "B";A;A(1);C;D\r\n'
+
+
+@pytest.mark.parametrize("listed", ["A B", "1", ",", "A,", "A(1+2)", "A(1", "A(1,2)", "A(-)", "C: COMMON 1"])
+def test_a_list_that_does_not_read_stops_the_chain_in_the_common_line(tmp_path, listed):
+    """FIVEO.ASM CHAIN reads each COMMON list as it scans the program, with the COMMON's
+    line in CURLIN: the error is the CHAIN's (ON ERROR traps it, RESUME NEXT goes on after
+    the CHAIN) and ERL the COMMON's line; PC-BASIC 2.0.8 agrees."""
+    (tmp_path / "B.BAS").write_bytes(B_PRINTS)
+    plain = f'10 A=5\n20 CHAIN "B"\n30 COMMON {listed}\n'
+    trapped = (f'10 A=5: ON ERROR GOTO 100\n20 CHAIN "B"\n25 PRINT "after"; ERL: END\n30 COMMON {listed}\n'
+               '100 PRINT ERR; ERL: RESUME NEXT\n')
+    for source in (plain, trapped):
+        assert yaseer_run(source, tmp_path) == pcbasic_run(source, tmp_path)
+    assert yaseer_run(plain, tmp_path) == "Syntax error in 30\n"
+
+
+@pytest.mark.parametrize("first, expected", [
+    ('10 A=5: DIM A(2): A(1)=7\n20 COMMON A\n30 CHAIN "B"\n', "B 5  0  0  0 \n"),
+    ('10 A=5: DIM A(2): A(1)=7\n20 COMMON A()\n30 CHAIN "B"\n', "B 0  7  0  0 \n"),
+    ('10 C=3: D=4\n20 IF 1 THEN C=3: COMMON C\n30 REM x: COMMON D\n40 CHAIN "B"\n', "B 0  0  3  0 \n"),
+    ('10 C=3: D=4\n20 PRINT 1 \'x: COMMON D\n30 CHAIN "B"\n', " 1 \nB 0  0  0  0 \n"),
+    ('10 C=3: D=4\n20 IF 1 THEN COMMON C ELSE COMMON D\n30 CHAIN "B"\n', "B 0  0  0  0 \n"),
+])
+def test_chain_finds_the_commons_that_begin_a_statement(tmp_path, first, expected):
+    """FIVEO.ASM CHAIN looks at each statement's first token (after a colon too, inside a
+    THEN branch; not right after THEN or ELSE, nor in a remark's text) and keeps a scalar
+    for a name, an array for a name with parentheses; PC-BASIC 2.0.8 agrees."""
+    (tmp_path / "B.BAS").write_bytes(B_PRINTS)
+    assert yaseer_run(first, tmp_path) == pcbasic_run(first, tmp_path) == expected
+
+
+@pytest.mark.parametrize("first, expected", [
+    # EVAL reads the operand in the parentheses: a variable, a sign, a bracketed sum
+    ('10 A=5: C=3\n20 CHAIN "B"\n30 COMMON A(X), C, D(-1), E((1+2))\n', "B 0  0  3  0 \n"),
+    # GETYPR after EVAL: a string is Illegal function call
+    ('10 A=5\n20 CHAIN "B"\n30 COMMON A("S")\n', "Illegal function call in 30\n"),
+    # EVAL at the statement's end: Missing operand
+    ('10 A=5\n20 CHAIN "B"\n30 COMMON A(\n', "Missing operand in 30\n"),
+    ('10 A=5\n20 CHAIN "B"\n30 COMMON A(-\n', "Missing operand in 30\n"),
+    # PRGFLI opens the file before the scan
+    ('10 A=5\n20 CHAIN "NOPE"\n30 COMMON 1\n', "File not found in 20\n"),
+    # with ALL CHAIN goes to DNCMDA without scanning
+    ('10 A=5\n20 CHAIN "B",,ALL\n30 COMMON 1\n', "B 5  0  0  0 \n"),
+    ('10 A=5\n20 CHAIN "B", 10, ALL\n30 COMMON 1\n', "B 5  0  0  0 \n"),
+])
+def test_chain_reads_the_lists_as_the_source_does(tmp_path, first, expected):
+    """Where PC-BASIC 2.0.8 differs, FIVEO.ASM CHAIN decides: PC-BASIC takes only a number
+    in an array's parentheses (Syntax error for the others), reports every list that does
+    not read as Syntax error, scans before it opens the file, and scans with ALL too."""
+    (tmp_path / "B.BAS").write_bytes(B_PRINTS)
+    assert yaseer_run(first, tmp_path) == expected

@@ -127,6 +127,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.counts_made = False  # each making is counted and checked against the 64 KB (see made)
         self.checked_once: set = set()  # the blocks whose later passes run without those tests (_checks_once)
         self.read_commits = dialect.read_commits  # a READ ends with _read_end (Dialect.read_commits)
+        self.list_dialect = dialect  # COMMON's lists are read by its scanner (common_variables)
         self.numbers = number_model(dialect, def_types)
         # the binade caches' names differ between the variants run in one namespace (TRON, DEF types)
         salt = "t" if trace else ""
@@ -840,7 +841,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         if not self.dynamic_types:
             self.numbers.set_types(statements)
         if self.variables_made:
-            self.watched = _watched_names(self.flat, self.numbers.name)
+            self.watched = _watched_names(self.flat, self.numbers.name, self.common_variables)
             self.counts_made = self.counts_strings
         for i, (number, stmt) in enumerate(self.flat):
             for s in ([] if isinstance(stmt, BasicError) else data_statements(stmt)):
@@ -1003,10 +1004,11 @@ class _EveryName:
         return True
 
 
-def _watched_names(flat, full_name):
+def _watched_names(flat, full_name, common_variables):
     """The simple variables whose making an area records (compiler.made): the second of a
     SWAP (it must exist), and those a CHAIN passes on made to a program whose SWAP may ask
-    (COMMON's; with CHAIN ... ALL every one).  ``full_name``: a name with its type."""
+    (COMMON's; with CHAIN ... ALL every one).  ``full_name``: a name with its type;
+    ``common_variables``: a COMMON's (name, is an array) pairs."""
     statements = [s for _, stmt in flat if not isinstance(stmt, BasicError) for s in walk_statements(stmt)]
     chains = [s for s in statements if isinstance(s, ast.Chain) and s.run]
     if any(chain.everything for chain in chains):
@@ -1014,7 +1016,7 @@ def _watched_names(flat, full_name):
     names = {full_name(s.second.name) for s in statements if isinstance(s, ast.Swap) and isinstance(s.second, ast.Var)}
     if chains:
         names.update(full_name(name) for s in statements if isinstance(s, ast.Common)
-                     for name, is_array in s.names if not is_array)
+                     for name, is_array in common_variables(s) if not is_array)
     return frozenset(names)
 
 

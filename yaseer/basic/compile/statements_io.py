@@ -397,9 +397,16 @@ class InputOutputCompiler:
             self.emit(f"_M.key_line({stmt.action!r})")
 
     def stmt_Common(self, stmt, scope):
-        for name, is_array in stmt.names:
+        for name, is_array in self.common_variables(stmt):
             if not is_array:
                 scope.scalar(name)  # a COMMON scalar exists (0 or "") for the CHAIN to keep
+
+    def common_variables(self, stmt) -> list:
+        """COMMON's (name, is an array) pairs as far as its list reads (a CHAIN reports the
+        rest: source/common_lists.py)."""
+        from yaseer.basic.source.common_lists import common_items  # (only programs with COMMON)
+
+        return common_items(stmt.text, self.list_dialect)[0]
 
     def stmt_LSet(self, stmt, scope):
         """LSET / RSET: the machine stores the value, and every variable fielded over the

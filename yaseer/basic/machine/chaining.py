@@ -7,7 +7,8 @@ as LOAD reads it: yaseer.basic.program_file) replaces the program, or with MERGE
 merged into it (an ASCII file only: ``Bad file mode``), after the lines of the DELETE
 range are removed (the range must end on an existing line: ``Illegal function call``).
 The variables named in the program's COMMON statements (wherever they are, run or
-not, but not after an IF's THEN: CHAIN scans the statements for them), or with ALL every variable, keep their
+not, at a statement's start, not right after THEN or ELSE: CHAIN scans the statements
+for them and reads their lists, source/common_lists.py), or with ALL every variable, keep their
 values; the others are cleared, as are DEF FN functions (unless MERGE with ALL), the
 GOSUB/FOR stack and ON ERROR.  Open files stay open and OPTION BASE stays.  The new
 program runs from its start or from ``line``.  ``MERGE file`` merges the file and
@@ -40,11 +41,12 @@ class ChainTo(ProgramEnd):
     """The program is being replaced (CHAIN) or merged into (MERGE): what to do next."""
 
     def __init__(self, lines: dict, merge: bool, line, everything: bool, delete, run: bool,
-                 stopped: BasicError | None = None):
+                 stopped: BasicError | None = None, common: tuple[set, set] | None = None):
         super().__init__()
         self.lines, self.merge, self.line = lines, merge, line
         self.everything, self.delete, self.run = everything, delete, run
         self.stopped = stopped  # the file's ``Direct statement in file``: raised once the lines are in
+        self.common = common  # the COMMON scalars and arrays kept (without ALL: Chaining.common_names)
 
 
 class ChainStart(namedtuple("ChainStart", "block direct_code", defaults=(None,))):
@@ -276,7 +278,8 @@ class Chaining:
             line = self._chain_line(line)
         if delete is not None:
             self._check_range(delete)
-        raise ChainTo(lines, merge, line, everything, delete, run and stopped is None, stopped)
+        common = self.common_names() if run and not everything else None  # (ALL: no scan, DNCMDA)
+        raise ChainTo(lines, merge, line, everything, delete, run and stopped is None, stopped, common)
 
     @staticmethod
     def _chain_line(line) -> int:
@@ -296,7 +299,7 @@ class Chaining:
         goes on (None: MERGE, which stops; a start with ``direct_code``: a direct line's
         error trapped, see :meth:`_merged_direct_line`)."""
         program = dict(self.programs.get(0, {}))
-        keep = None if chain.everything else self.common_names()
+        scalars, arrays = chain.common or (None, None)  # (None: ALL, every variable)
         if chain.delete is not None:
             doomed = set(deleted_lines(program, *chain.delete))
             program = {n: t for n, t in program.items() if n not in doomed}
@@ -317,9 +320,9 @@ class Chaining:
             raise stopped
         if not chain.run:
             return None
-        kept_scalars = {k: v for k, v in self.scalars.items() if keep is None or k in keep}
+        kept_scalars = {k: v for k, v in self.scalars.items() if scalars is None or k in scalars}
         kept_arrays = {k: (self.arrays[k], self.array_dims.get(k), k in self.explicit_arrays)
-                       for k in self.arrays if keep is None or k in keep}
+                       for k in self.arrays if arrays is None or k in arrays}
         functions = dict(self.fns) if chain.merge and chain.everything else {}
         base = self.subscript_base
         block = 0
@@ -366,20 +369,24 @@ class Chaining:
             raise stopped
         return ChainStart(handler, code)
 
-    def common_names(self) -> set[str]:
-        """The variables (typed names, as the machine keeps them) of the COMMON statements
-        of program area 0, wherever they are, but not inside an IF (FIVEO.ASM scans the
-        statements' first tokens)."""
-        from yaseer.basic.source import syntax_tree as ast
-        from yaseer.basic.source.parser import parse_line
+    def common_names(self) -> tuple[set[str], set[str]]:
+        """The scalars and the arrays (typed names, as the machine keeps them) of the COMMON
+        statements of program area 0 that begin a statement, wherever they are, in line
+        order (FIVEO.ASM CHAIN scans each statement's first token; an array is a name with
+        parentheses after it).  A list that does not read is the CHAIN's error, placed in
+        the COMMON's line (the scan keeps each line's number in CURLIN for errors)."""
+        from yaseer.basic.source.common_lists import chained_lists, common_items
 
-        letters = self.def_types  # the DEF types as they stand when CHAIN runs
-        names = set()
-        for number, text in self.programs.get(0, {}).items():
-            for stmt in parse_line(number, text, self.dialect).statements or ():
-                if isinstance(stmt, ast.Common):
-                    names.update(_typed(name, letters, self.dialect.typed_numbers) for name, _ in stmt.names)
-        return names
+        letters, typed = self.def_types, self.dialect.typed_numbers  # the DEF types as CHAIN finds them
+        scalars, arrays = set(), set()
+        for number, text in sorted(self.programs.get(0, {}).items()):
+            for listed in chained_lists(text, self.dialect):
+                items, error = common_items(listed, self.dialect)
+                if error is not None:
+                    raise error.at(number)
+                for name, array in items:
+                    (arrays if array else scalars).add(_typed(name, letters, typed))
+        return scalars, arrays
 
 
 def _typed(name: str, letters: dict, typed: bool) -> str:

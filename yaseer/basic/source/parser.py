@@ -349,10 +349,7 @@ class _ToAst:
         return (_line_spec(c[0]),) * 2
 
     def common_stmt(self, c):
-        return ast.Common([x for x in c[1:] if not isinstance(x, Token)])
-
-    def common_item(self, c):
-        return (c[0].value, len(c) > 1)
+        return ast.Common(c[1].value)
 
     # -- commands a program runs (chaining.py)
     @staticmethod
@@ -965,11 +962,11 @@ def _file_checked_first(tokens: list, start: int, err: BasicError):
     while end < len(tokens) and not (depth == 0 and tokens[end].type in ("COMMA", *_STATEMENT_ENDS)):
         depth += {"_LPAR": 1, "_RPAR": -1}.get(tokens[end].type, 0)
         end += 1
-    number = _expression(tokens[k:end])
+    number = parse_expression(tokens[k:end])
     return None if number is None else ast.FileFirst(number, modes, opened, err)
 
 
-def _expression(tokens: list):
+def parse_expression(tokens: list):
     """The expression ``tokens`` are, or None where they are none (read as ``X = ...``)."""
     if not tokens:
         return None

@@ -544,10 +544,11 @@ def entry_messages(text: str, dialect: Dialect = CASIO) -> list[str]:
     return notes
 
 
-def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
+def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None, begin: int = 0):
     """``(token type, value, start, end)`` for each token of one line, in order, as
     ``dialect`` reads it (see ``Dialect.keyword_first`` and ``Dialect.typed_numbers``);
-    ``notes`` collects the messages of literals beyond the range (see :func:`entry_messages`).
+    ``notes`` collects the messages of literals beyond the range (see :func:`entry_messages`);
+    ``begin``: where in ``text`` to start (outside a string).
 
     ``start:end`` is the token's span in ``text``.  A remark (``REM`` or ``'``)
     is the last lexeme: type ``REMARK``, value the text after it.  Raises
@@ -557,7 +558,7 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None):
     scan_word = _scan_word if dialect.keyword_first else _scan_word_whole
     typed = dialect.typed_numbers
     upper = _upper_outside_strings(text)
-    i = 0
+    i = begin
     n = len(text)
     while i < n:
         ch = upper[i]
@@ -688,6 +689,41 @@ class Token:
         return f"Token({self.type!r}, {self.value!r})"
 
 
+def _line_lexemes(text: str, dialect: Dialect):
+    """The lexemes of a line as :func:`tokenize` takes them: a COMMON's list is one lexeme
+    ``COMMON_TEXT``, its text as typed to the statement's end.  GW-BASIC's COMMON skips
+    its list as DATA does (FIVEO.ASM COMMON jumps to DATA): only a CHAIN reads it
+    (source/common_lists.py), so a list that does not read is no error where COMMON runs."""
+    begin = 0
+    while True:
+        for kind, value, start, end in _lexemes(text, dialect, begin=begin):
+            yield kind, value, start, end
+            if kind == "COMMON":
+                begin = _statement_end(text, end, dialect)
+                yield "COMMON_TEXT", text[end:begin], end, begin
+                break
+        else:
+            return
+
+
+def _statement_end(text: str, i: int, dialect: Dialect) -> int:
+    """Where the statement whose text goes on at ``i`` ends, as DATA's skip finds it in
+    GW-BASIC's crunched line (GWMAIN.ASM DATA): at a colon outside quotes, which CRUNCH also
+    puts before an ELSE and a ``'`` remark; a REM's text, stored as typed, runs on to a
+    colon, and so does a character no token starts with (CRUNCH stores it)."""
+    stop = i
+    try:
+        for kind, _value, start, end in _lexemes(text, dialect, begin=i):
+            if kind in ("_COLON", "ELSE") or (kind == "REMARK" and text[start] == "'"):
+                return start
+            if kind == "REMARK":
+                return _scan_data(text, start)[1]
+            stop = end
+    except BasicError:
+        return _scan_data(text, stop)[1]
+    return len(text)
+
+
 def tokenize(text: str, dialect: Dialect = CASIO) -> list:
     """The tokens of one line's statements (the text after its line number), as ``dialect`` reads them.
 
@@ -696,7 +732,7 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
     """
     tokens: list = []
     line_spec = False  # after a word whose line numbers may be "." (see below), up to another kind of token
-    for kind, value, start, end in _lexemes(text, dialect):
+    for kind, value, start, end in _line_lexemes(text, dialect):
         if kind == "REMARK" and tokens and text[start] == "'":
             break
         if _joins_go(tokens, kind, value, dialect.keyword_first):

@@ -401,8 +401,8 @@ class Command:
 
 @_node
 class Common:
-    """COMMON: ``names`` of (name, is an array) kept by a CHAIN; nothing when it runs."""
-    names: list
+    """COMMON: its list as typed, which a CHAIN reads (common_lists.py); nothing when it runs."""
+    text: str
 
 
 @_node
