@@ -618,6 +618,10 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit(self.expr(stmt.target, scope)[0])
         self.emit(f"raise _err({stmt.error.message!r}, {stmt.error.code})")
 
+    def stmt_CutShort(self, stmt, scope):
+        getattr(self, "stmt_" + type(stmt.statement).__name__)(stmt.statement, scope)
+        self.emit(f"raise _err({stmt.error.message!r}, {stmt.error.code})")
+
     def stmt_DefFn(self, stmt, scope):
         try:
             if isinstance(stmt.body, BasicError):

@@ -861,11 +861,14 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     touched = _touched_element(tokens, bad_start, err)
     if touched is not None:
         return [touched] + _statements_after_error(tokens, bad_start, dialect)
-    printed = _printed_before_error(tokens, bad_start) or _written_before_error(tokens, bad_start)
+    printed = (_printed_before_error(tokens, bad_start) or _written_before_error(tokens, bad_start)
+               or _assigned_before_error(tokens, bad_start))
     file_first = None if printed else _file_checked_first(tokens, bad_start, err)
     if file_first is not None:
         return [file_first] + _statements_after_error(tokens, bad_start, dialect)
-    return printed + [err] + _statements_after_error(tokens, bad_start, dialect)
+    if printed:
+        return [ast.CutShort(printed[0], err)] + _statements_after_error(tokens, bad_start, dialect)
+    return [err] + _statements_after_error(tokens, bad_start, dialect)
 
 
 def _guarding_if(tokens: list, start: int, err: BasicError, dialect: Dialect):
@@ -1102,6 +1105,33 @@ def _printed_before_error(tokens: list, start: int) -> list:
                 printed.items = list(printed.items) + [";"]
             return [printed]
         return []
+    return []
+
+
+# Tokens after which an expression goes on: its operators (a ``(`` after a name or a function
+# and a number after a number are handled by the caller).
+_EXPRESSION_GOES_ON = frozenset(("PLUS", "MINUS", "STAR", "SLASH", "BSLASH", "CARET", "EQ", "LT", "GT", "LE", "GE",
+                                 "NE", "AND", "OR", "XOR", "EQV", "IMP", "MOD", "PERIOD", "ELSE"))
+_ASSIGNMENTS = (ast.Let, ast.LSet)
+
+
+def _assigned_before_error(tokens: list, start: int) -> list:
+    """A bad assignment (LET, LSET, RSET) whose value ends before its
+    statement does (``A$ = "X" LPRINT``): the assignment, which GW-BASIC makes before it
+    finds no end of statement there (the statement's value is read by FRMEVL, which stops
+    at the first token that cannot go on with it; GWMAIN.ASM NEWSTT then wants ``:`` or the
+    line's end: ``Syntax error``).  Empty for any other bad statement, or when the value
+    itself is bad, or where the next token could go on with it (``A = 1 2`` is 12)."""
+    end = next((k for k in range(start, len(tokens)) if tokens[k].type == "_COLON"), len(tokens))
+    for k in range(end - 2, start, -1):
+        after, last = tokens[k + 1].type, tokens[k].type
+        if after in _EXPRESSION_GOES_ON or (after == "_LPAR" and last in _CALLED) or after == last == "NUMBER":
+            continue
+        try:
+            found = _parse(tokens[start:k + 1])
+        except (BasicError, GrammarError):
+            continue
+        return found if len(found) == 1 and isinstance(found[0], _ASSIGNMENTS) else []
     return []
 
 

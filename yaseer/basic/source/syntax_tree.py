@@ -474,6 +474,15 @@ class Touch:
 
 
 @_node
+class CutShort:
+    """A statement whose good start runs before the rest of its text fails: ``statement``
+    (the items a PRINT or WRITE printed, an assignment made), then ``error``, all one
+    statement (a RESUME NEXT goes on after the whole of it)."""
+    statement: object
+    error: object
+
+
+@_node
 class DefFn:
     name: str
     params: list
