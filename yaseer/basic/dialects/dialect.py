@@ -104,10 +104,11 @@ FIELDS = (
     "saves_going_on",  # tuple[str, ...]: ()
     "using_each_value",  # bool: False
     "delete_needs_last_line",  # bool: False
+    "unopened_file_mode",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None, False, (), False, False)
+            None, False, False, True, False, None, False, (), False, False, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -244,6 +245,14 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         ends there; docs/compatibility.md).
         ``file_devices``: device names a file name may start with that mean the
         program's one directory (casio: ``CAS0:``, ``CAS1:``, the cassette).
+        ``unopened_file_mode``: True when every statement and function that finds an
+        open file (PRINT #, WRITE #, INPUT #, LINE INPUT #, WIDTH #, FIELD, GET, PUT,
+        EOF, LOC, LOF, INPUT$) takes a number 1..255 that is not open, whatever the
+        number of files, as ``Bad file mode`` (GW-BASIC: GIO86.ASM ``FDBPTR`` walks the
+        chain of open files and each caller jumps to ``DERFNO``, whose code GWDATA.ASM
+        makes ``ERRBFM``'s; EOF looks for file 0 too, ``FACFPT``); False: a number
+        above the files' count or not open is ``Bad file number`` (files.MAX_FILES), but
+        for GET, PUT and INPUT$.
 
     Start-up environment
         ``angle``: ``"DEG"``, ``"RAD"`` (or, after ANGLE 2, ``"GRA"``), the unit of SIN COS
@@ -378,7 +387,7 @@ GW = Dialect(
     direct_line_number=65535, edit_clears=True, handler_must_resume=True,
     for_array_elements=False, untrapped_errors_noted=True,
     using_digits=24, else_alone_skips=True, saves_going_on=("", "P"), using_each_value=True,
-    delete_needs_last_line=True,
+    delete_needs_last_line=True, unopened_file_mode=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}
