@@ -194,6 +194,17 @@ FILE_AGREED = {
         '40 WIDTH #1, "A"\n50 FIELD #2, "A" AS A$\n60 FIELD #2, 5 AS A\n70 FIELD #3, "A" AS A$\n'
         '80 FIELD #3, 300 AS A\n90 FIELD #1, 5 AS A\n100 WIDTH #0, "A"\n110 FIELD #0, 5 AS A\n'
         '120 END\n200 PRINT ERR; ERL: RESUME NEXT\n'),
+    # GET and PUT find the file (open, random) before they read the record number (GIO86.ASM
+    # DPUTG: POFNUM, FDBPTR, the MD_RND check, then ADRGET); INPUT # and LINE INPUT # before
+    # a variable's subscripts (GWMAIN.ASM FILSTI, DSKCOM.ASM DLINE: FILINP first, then PTRGET
+    # for each variable); FIELD before its widths (FILSCN, then GTBYTC)
+    "get, put, input # and field find the file first": (
+        '10 ON ERROR GOTO 200\n20 OPEN "O", 1, "W.TXT": OPEN "R", 3, "R.DAT", 16\n30 GET #1, ABS("X")\n'
+        '40 PUT #1, ABS("X")\n50 GET #2, 1/0\n60 PUT #2, ABS("X")\n70 INPUT #1, A, B(ABS("X"))\n'
+        '80 LINE INPUT #1, A$(ABS("X"))\n90 GET #3, ABS("X")\n100 FIELD #2, ABS("X") AS A$\n'
+        '110 FIELD #1, 1/0 AS A$\n120 INPUT #2, A(ABS("X"))\n130 LINE INPUT #3, A$(ABS("X"))\n140 END\n'
+        '200 PRINT ERR; ERL: RESUME NEXT\n'),
+    "get finds the file before a division by zero": '10 PRINT "a": GET #2, 1/0\n20 PRINT "b"\n',
     # WRITE # writes each item and its comma before it reads the next (FIVEO.ASM WRITE)
     "write # items before a bad one": (
         '10 OPEN "O", 1, "W.TXT": ON ERROR GOTO 100: WRITE #1, 1, "B",\n'
@@ -214,6 +225,7 @@ FILE_SOURCE_DECIDED = {
     "file and field widths of 32768 and above overflow": [(" 52  60 ", " 54  60 "), (" 52  130 ", " 54  130 ")],
     "file and field widths read after the file": [(" 52  30 ", " 54  30 "), (" 52  50 ", " 54  50 "),
                                                    (" 52  60 ", " 54  60 ")],
+    "get, put, input # and field find the file first": [(" 52  100 ", " 54  100 "), (" 52  120 ", " 54  120 ")],
 }
 
 

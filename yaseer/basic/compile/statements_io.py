@@ -162,12 +162,16 @@ class InputOutputCompiler:
 
     def stmt_Input(self, stmt, scope):
         if stmt.channel is not None:  # INPUT #n: one field for each variable, stored at once
-            channel = self.numeric(stmt.channel, scope)
+            file = self.input_file(stmt.channel, scope)
             for target in stmt.targets:
                 kind = self.kind_of(target)
                 reader = "_fin_s" if kind == "s" else "_fin_n"
-                self.assign(target, f"{reader}({channel})", "s" if kind == "s" else self.numbers.widest,
-                            scope, self.numbers.typed and kind != "s")
+                try:
+                    self.assign(target, f"{reader}({file})", "s" if kind == "s" else self.numbers.widest,
+                                scope, self.numbers.typed and kind != "s")
+                except CompileError as err:  # a bad subscript: after the file and the items before it
+                    self.emit(f"_fail({err.message!r}, {err.code})")
+                    break
             return
         if stmt.asks is not None and not self.words.asks_each:
             raise syntax_error()  # a message before a later variable: the Casio's form only
@@ -237,9 +241,21 @@ class InputOutputCompiler:
             return
         self.emit(f"if not {found}: raise _err('Out of DATA', {OUT_OF_DATA})")
 
+    def input_file(self, channel, scope) -> str:
+        """A temporary holding the file INPUT # or LINE INPUT # reads, found (open for input or
+        random, else ``Bad file mode``) once and before any variable's subscripts are read
+        (GWMAIN.ASM FILSTI and DSKCOM.ASM DLINE call FILINP, GIO86.ASM FILGET, first)."""
+        file = self.new_temp()
+        self.emit(f"{file} = _M.files.checked({self.integer(channel, scope)}, 'IR')")
+        return file
+
     def stmt_LineInput(self, stmt, scope):
         if stmt.channel is not None:
-            self.assign(stmt.target, f"_fline({self.numeric(stmt.channel, scope)})", "s", scope, False)
+            file = self.input_file(stmt.channel, scope)
+            try:
+                self.assign(stmt.target, f"_fline({file})", "s", scope, False)
+            except CompileError as err:  # a bad subscript: after the file
+                self.emit(f"_fail({err.message!r}, {err.code})")
             return
         self.assign(stmt.target, f"_line_input({stmt.prompt!r}, {self.asking_again()})", "s", scope, False)
 
@@ -324,16 +340,18 @@ class InputOutputCompiler:
         self.emit(f"raise _err({stmt.error.message!r}, {stmt.error.code})")
 
     def stmt_GetPut(self, stmt, scope):
-        # the file number first, a 16-bit integer (GIO86.ASM DPUTG: POFNUM's GETBYT, FRCINT)
-        file = self.integer(stmt.number, scope)
-        record = "None" if stmt.record is None else self.numeric(stmt.record, scope)
+        # the file first, found and its mode checked, then the record number (GIO86.ASM
+        # DPUTG: POFNUM's GETBYT, FDBPTR, the MD_RND check, then ADRGET)
+        file = self.new_temp()
+        self.emit(f"{file} = _M.files.random({self.integer(stmt.number, scope)}, _M.files.opened)")
+        record = "None" if stmt.record is None else self.when_reached(lambda: self.numeric(stmt.record, scope))
         if stmt.put:
-            self.emit(f"_put({file}, {record})")
+            self.emit(f"{file}.put({record})")
             return
         number = self.new_temp()
-        self.emit(f"{number} = ({file}, {record})")
+        self.emit(f"{number} = {record}")
         self.emit(STORE_LOCALS)  # GET stores the fielded variables in the machine's scalars
-        self.emit(f"_get(*{number})")
+        self.emit(f"_get({file}, {number})")
         self.emit(LOAD_LOCALS)
 
     # -- CHAIN, MERGE (chaining.py): the machine reads the file here (an error is this

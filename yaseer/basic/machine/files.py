@@ -265,11 +265,6 @@ class FileTable:
         random one (else ``Bad file mode``)."""
         return self.checked(n, "R", find)
 
-
-    def put(self, n, record=None) -> None:
-        """PUT #n[, record]."""
-        self.random(n, self.opened).put(record)
-
     def justify(self, key, value: str, current: str, right: bool, variables) -> dict:
         """LSET / RSET of variable ``key`` (a scalar's name or an element's (array,
         subscripts), now holding ``current``): the new values of the variables, ``key``'s

@@ -399,9 +399,9 @@ class InputOutput:
             variables = self.fielded()
             variables.update(file.refreshed(variables))
 
-    def file_number(self, n) -> float:
-        """INPUT #n into a numeric variable: one field, read as GW-BASIC reads numbers."""
-        return gwfunctions.val(self.files.get(n).read_field(True, self.dialect.string_length), self.dialect.number_reading)
+    def file_number(self, file) -> float:
+        """INPUT #n into a numeric variable: one field of ``file``, read as GW-BASIC reads numbers."""
+        return gwfunctions.val(file.read_field(True, self.dialect.string_length), self.dialect.number_reading)
 
     def input_chars(self, count, n=None) -> str:
         """INPUT$(count[, #n]): ``count`` characters of the file (or of the input)."""
@@ -428,9 +428,9 @@ class InputOutput:
             values = values[k]
         return values
 
-    def get_record(self, n, record=None) -> None:
-        """GET #n[, record]: read the record; its fielded variables take their slices."""
-        file = self.files.random(n, self.files.opened)
+    def get_record(self, file, record=None) -> None:
+        """GET #n[, record] of random ``file`` (found first: files.FileTable.opened): read the
+        record; its fielded variables take their slices."""
         variables = self.fielded()
         variables.update(file.get(variables, record))
 
