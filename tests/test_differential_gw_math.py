@@ -101,6 +101,10 @@ def test_input_of_an_exponent_without_a_mantissa_is_zero():
 EVALUATED_AS_GW = [
     '10 PRINT ABS("ABC"); LEN(ABS("ABCD")); -"Q"; +"R"\n',  # $VABS, $VNEG leave a string as it is
     '10 A$ = "X": PRINT -A$: B$ = -A$ + "Y": PRINT B$; LEN(-B$)\n',
+    # INT of a string is the string (MATH1.ASM $VINT; the INT test recorded on real GW-BASIC
+    # in PC-BASIC's suite prints it); SGN tests the type (VSIGN: TMERR), and so do FIX and CINT
+    '10 PRINT INT("ABC"); LEN(INT("ABCD")): A$ = INT("Q") + "R": PRINT A$\n',
+    '10 ON ERROR GOTO 100\n20 PRINT SGN("A")\n30 PRINT FIX("A")\n40 PRINT CINT("A"): END\n100 PRINT ERR; ERL: RESUME NEXT\n',
     '10 PRINT POS("A"): PRINT "XYZ"; POS(A$)\n',  # POS's argument is a dummy of any type
     '10 PRINT ABS(-3); -(-2); ABS(-2.5#); -ABS(-4)\n',
     '10 A = -"X"\n',  # a string where a number must be: Type mismatch
@@ -130,5 +134,5 @@ def test_evaluated_as_pcbasic(pc, source):
 def test_casio_keeps_the_type_checks():
     from test_differential_support import run_yaseer
 
-    for source in ('10 PRINT ABS("ABC")\n', '10 A$ = "X": PRINT -A$\n'):
+    for source in ('10 PRINT ABS("ABC")\n', '10 A$ = "X": PRINT -A$\n', '10 PRINT INT("ABC")\n'):
         assert "Type mismatch" in run_yaseer(source, dialect="casio")

@@ -411,8 +411,8 @@ class ExpressionCompiler:
         args = list(node.args)
         if node.name == "RND" and (not args or (len(args) == 1 and (constant_value(args[0]) or 0) > 0)):
             return self.numbers.call("RND", "_rndf", [], [], "n")  # the next number (the generator's drawer)
-        if node.name == "ABS" and self.numbers.typed and len(args) == 1 and ast.expr_type(args[0]) == "s":
-            return self.string(args[0], scope), "s"  # $VABS leaves a string as it is (MATH1.ASM)
+        if node.name in ast.KEEPS_STRINGS and self.numbers.typed and len(args) == 1 and ast.expr_type(args[0]) == "s":
+            return self.string(args[0], scope), "s"
         form = _call_form(forms, [ast.expr_type(arg) for arg in args])
         codes, kinds = [], []
         for arg, want in zip(args, form):

@@ -141,14 +141,21 @@ if TYPE_CHECKING:
 STRING_FUNCTIONS = frozenset({"STR$", "CHR$", "LEFT$", "RIGHT$", "MID$"})
 
 
+# Functions of a string that give the string back in GW-BASIC: MATH1.ASM $VABS and $VINT look
+# at the type only to pick the integer routine, not for a string (VSIGN, for SGN, raises Type
+# mismatch); what $VINT's single-precision INT then does to a string's descriptor the real
+# machine's recorded output shows: nothing (PC-BASIC 2.0.8 agrees).  Casio: Type mismatch.
+KEEPS_STRINGS = frozenset(("ABS", "INT"))
+
+
 def expr_type(node) -> str:
     """``"s"`` for a string-valued expression, ``"n"`` for a number."""
     if isinstance(node, Str):
         return "s"
     if isinstance(node, (Var, Elem, FnCall)):
         return "s" if node.name.endswith("$") else "n"
-    if isinstance(node, Call) and node.name == "ABS" and len(node.args) == 1:
-        return expr_type(node.args[0])  # (ABS of a string is the string in GW, a mismatch in casio)
+    if isinstance(node, Call) and node.name in KEEPS_STRINGS and len(node.args) == 1:
+        return expr_type(node.args[0])
     if isinstance(node, (Call, SysVar)):
         return "s" if node.name.endswith("$") else "n"
     if isinstance(node, Unary) and node.op in "+-":  # (-A$ is A$ in GW)
