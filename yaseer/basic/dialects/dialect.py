@@ -104,7 +104,7 @@ FIELDS = (
     "saves_going_on",  # tuple[str, ...]: ()
     "using_each_value",  # bool: False
     "delete_needs_last_line",  # bool: False
-    "unopened_file_mode",  # bool: False
+    "eof_of_file_zero",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
@@ -245,14 +245,6 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         ends there; docs/compatibility.md).
         ``file_devices``: device names a file name may start with that mean the
         program's one directory (casio: ``CAS0:``, ``CAS1:``, the cassette).
-        ``unopened_file_mode``: True when every statement and function that finds an
-        open file (PRINT #, WRITE #, INPUT #, LINE INPUT #, WIDTH #, FIELD, GET, PUT,
-        EOF, LOC, LOF, INPUT$) takes a number 1..255 that is not open, whatever the
-        number of files, as ``Bad file mode`` (GW-BASIC: GIO86.ASM ``FDBPTR`` walks the
-        chain of open files and each caller jumps to ``DERFNO``, whose code GWDATA.ASM
-        makes ``ERRBFM``'s; EOF looks for file 0 too, ``FACFPT``); False: a number
-        above the files' count or not open is ``Bad file number`` (files.MAX_FILES), but
-        for GET, PUT and INPUT$.
 
     Start-up environment
         ``angle``: ``"DEG"``, ``"RAD"`` (or, after ANGLE 2, ``"GRA"``), the unit of SIN COS
@@ -300,6 +292,8 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         DELETE: FNDLIN must find the upper bound, which SCNLIN makes 65530, above every
         line, when none is given; source/line_ranges.py); False (casio): any range removes
         the lines in it, a single missing line is the error.
+        ``eof_of_file_zero``: True when EOF(0) is 0 rather than a file not open (a real GW-BASIC
+        recorded it so in PC-BASIC's EOF test, where LOC(0) and LOF(0) are Bad file number).
         ``handler_must_resume``: True when running off the program's last line inside an
         error handler is the error No RESUME in the last line run (GWMAIN.ASM PRGEND: ONEFLG
         still set); END leaves a handler quietly in both dialects. False (casio, whose RESUME
@@ -387,7 +381,7 @@ GW = Dialect(
     direct_line_number=65535, edit_clears=True, handler_must_resume=True,
     for_array_elements=False, untrapped_errors_noted=True,
     using_digits=24, else_alone_skips=True, saves_going_on=("", "P"), using_each_value=True,
-    delete_needs_last_line=True, unopened_file_mode=True,
+    delete_needs_last_line=True, eof_of_file_zero=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -12,8 +12,7 @@ for OUTPUT, APPEND or RANDOM (or KILLs / NAMEs / SAVEs one).
 The files are GW-BASIC's sequential files: text with CR LF line ends and a Ctrl-Z
 (``chr(26)``) written at CLOSE; reading stops at the first Ctrl-Z.  Characters are
 bytes (latin-1).  At most :data:`MAX_FILES` are open at once (GW-BASIC's default
-``/F:3``); file numbers 1..MAX_FILES (a number 1..255 not open is ``Bad file mode`` where
-the dialect says so: :meth:`FileTable.get`).  Errors are GW-BASIC's: ``Bad file number``
+``/F:3``); file numbers 1..MAX_FILES.  Errors are GW-BASIC's: ``Bad file number``
 (52), ``File not found`` (53), ``Bad file mode`` (54), ``File already open`` (55),
 ``File already exists`` (58), ``Input past end`` (62), ``Bad file name`` (64),
 ``Path/File access error`` (75).
@@ -165,13 +164,11 @@ def file_byte(n) -> int:
 class FileTable:
     """The open files of a machine, by file number, all inside one :class:`Sandbox`."""
 
-    def __init__(self, sandbox: Sandbox | None = None, devices: tuple = (), absent: dict | None = None,
-                 unopened_mode: bool = False):
+    def __init__(self, sandbox: Sandbox | None = None, devices: tuple = (), absent: dict | None = None):
         self.sandbox = sandbox or Sandbox()
         self.open_files: dict[int, OpenFile] = {}
         self.devices = devices  # device names that mean the sandbox ("CAS0:" on the Casio)
         self.absent = absent or {}  # device name -> what it is, for devices yaseer does not have
-        self.unopened_mode = unopened_mode  # Dialect.unopened_file_mode: every file found as GET finds it
 
     @staticmethod
     def number(n) -> int:
@@ -225,26 +222,20 @@ class FileTable:
                 return name[len(device):]
         return name
 
-    def get(self, n, zero_checked: bool = True) -> OpenFile:
-        """Open file ``n`` as PRINT #, INPUT #, WIDTH #, FIELD, EOF, LOC and LOF find it: where
-        the table's ``unopened_mode`` is set, as :meth:`opened` (EOF, ``zero_checked`` False,
-        looks for file 0 too: GIO86.ASM ``FACFPT`` has no check for it, so EOF(0) is not
-        open); else a number (:meth:`number`) that is open, not open ``Bad file number``."""
-        if self.unopened_mode:
-            return self.opened(n, zero_checked)
+    def get(self, n) -> OpenFile:
         f = self.open_files.get(self.number(n))
         if f is None:
             raise error_for(BAD_FILE_NUMBER)
         return f
 
-    def opened(self, n, zero_checked: bool = True) -> OpenFile:
+    def opened(self, n) -> OpenFile:
         """Open file ``n`` as GET, PUT and INPUT$ find it: a byte (above 255 ``Illegal
-        function call``), 0 ``Bad file number`` (GIO86.ASM ``POFNUM`` -> ``GETNZB``; not
-        checked where ``zero_checked`` is False), then looked for among the open files,
-        whatever the number of files: one not open is ``Bad file mode`` (``FDBPTR`` finds
-        none, ``DERFNO``: GWDATA.ASM gives ``ERRFNO`` the code of ``ERRBFM``)."""
+        function call``), 0 ``Bad file number`` (GIO86.ASM ``POFNUM`` -> ``GETNZB``), then
+        looked for among the open files, whatever the number of files: one not open is
+        ``Bad file mode`` (``FDBPTR`` finds none, ``DERFNO``: GWDATA.ASM gives ``ERRFNO`` the
+        code of ``ERRBFM``)."""
         k = file_byte(n)
-        if k == 0 and zero_checked:
+        if k == 0:
             raise error_for(BAD_FILE_NUMBER)
         f = self.open_files.get(k)
         if f is None:

@@ -53,7 +53,7 @@ from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401 
 from yaseer.basic.dialects import dialect as dialects
 from yaseer.basic.machine import gwfunctions, memory_model, runtime, string_space, val_numbers
 from yaseer.basic.machine.clock import Clock
-from yaseer.basic.machine.files import FileTable, Sandbox
+from yaseer.basic.machine.files import FileTable, Sandbox, file_byte
 from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
     BasicError, OutputError, BREAK, INPUT_PAST_END, NO_RESUME, OUT_OF_DATA, OUT_OF_MEMORY, STRING_TOO_LONG, SYNTAX_ERROR,
     TYPE_MISMATCH, UNDEFINED_LINE,
@@ -293,8 +293,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self._types_as_statements = None  # the program of area 0 a RUN n entered past its DEFs (_run_types)
         # the program's sequential files, all in one directory (``files``; default the current one)
         words = self.dialect.words
-        self.files = FileTable(Sandbox(files), self.dialect.file_devices, words.absent_devices if words else None,
-                               self.dialect.unopened_file_mode)
+        self.files = FileTable(Sandbox(files), self.dialect.file_devices, words.absent_devices if words else None)
         self.clock = Clock()  # TIMER, DATE$, TIME$; DATE$ = and TIME$ = move it
         self._output_eof = bool(words and words.output_eof)  # casio: EOF of an output file is 0 (EOF.md item 4)
         self.gosub_levels = words.gosub_levels if words else None  # casio: 96 (GOSUB.md item 2)
@@ -728,8 +727,10 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
 
     def end_of_file(self, n) -> float:
         """EOF(n): -1 at the end of an input file, else 0; an output file is Bad file mode, or 0
-        where the dialect says so (casio: EOF.md item 4)."""
-        file = self.files.get(n, zero_checked=False)
+        where the dialect says so (casio: EOF.md item 4); EOF(0) 0 where the dialect says so."""
+        if self.dialect.eof_of_file_zero and file_byte(n) == 0:
+            return 0.0
+        file = self.files.get(n)
         if self._output_eof and getattr(file, "is_output", False):
             return 0.0
         return -1.0 if file.at_end() else 0.0

@@ -938,10 +938,9 @@ def _checked_first(tokens: list, start: int, err: BasicError):
 
 
 # The file statements that find their file before they read on: the modes it must be open
-# in, whether the # may be left out, and whether it is found as GET and PUT find it in every
-# dialect (files.FileTable.opened; the others as the dialect's file table finds them: get)
-# (GIO86.ASM FILGET for PRINT #, WRITE #, INPUT #, LINE INPUT #; FILWID for WIDTH #;
-# DSKCOM.ASM FIELD: FILSCN; DPUTG for GET, PUT).
+# in, whether the # may be left out, and whether it is found as GET and PUT find it (a file
+# not open Bad file mode: files.FileTable.opened) (GIO86.ASM FILGET for PRINT #, WRITE #,
+# INPUT #, LINE INPUT #; FILWID for WIDTH #; DSKCOM.ASM FIELD: FILSCN; DPUTG for GET, PUT).
 _FILE_FIRST = {
     "PRINT": ("OAR", False, False), "WRITE": ("OAR", False, False), "INPUT": ("IR", False, False),
     "WIDTH": ("IOAR", False, False), "FIELD": ("R", True, False), "GET": ("R", True, True), "PUT": ("R", True, True),
@@ -950,7 +949,7 @@ _FILE_FIRST = {
 
 def _file_checked_first(tokens: list, start: int, err: BasicError):
     """A bad file statement whose file number reads: the file's checks, then ``err``
-    (``PRINT #1`` with file 1 not open is gw's ``Bad file mode``, not ``Syntax error``).
+    (``PRINT #1`` with file 1 not open is ``Bad file number``, not ``Syntax error``).
     None for any other bad statement."""
     k = start + (start + 1 < len(tokens) and tokens[start].type == "LINE" and tokens[start + 1].type == "INPUT")
     rule = _FILE_FIRST.get(tokens[k].type) if k < len(tokens) else None
