@@ -50,13 +50,15 @@ class StepLimitExceeded(Exception):
 class PcBasic:
     """One headless PC-BASIC session running direct statements and whole programs."""
 
-    def __init__(self, double: bool = False, source_digits: bool = True) -> None:
+    def __init__(self, double: bool = False, source_digits: bool = True, devices: dict | None = None) -> None:
         """``double``: PC-BASIC's /D option (double-precision SIN, COS, ATN, SQR ... of double
         arguments); ``source_digits``: singles print the source's 7 digits (module docstring),
-        False for PC-BASIC's own output."""
+        False for PC-BASIC's own output; ``devices``: PC-BASIC's device map (``{"LPT1:":
+        "FILE:path"}`` writes the printer's text to a file)."""
         import pcbasic  # test dependency, imported only when a differential test runs
 
-        self._session = pcbasic.Session(output_streams=None, input_streams=None, double=double)
+        self._session = pcbasic.Session(output_streams=None, input_streams=None, double=double,
+                                        devices=devices)
         self._session.start()
         self._steps = 0
         self._session.set_hook(self._count_step)

@@ -7,6 +7,8 @@ the messages are the table's texts, ...
 
 from __future__ import annotations
 
+import io
+
 import pytest
 
 from test_differential_support import PcBasic
@@ -244,6 +246,9 @@ CUT_STATEMENTS = [
     'GET #1, 1', 'PUT #1, 1', 'WIDTH #1, 80',
     # WRITE prints each item and its comma before it reads the next (FIVEO.ASM WRITE)
     'WRITE 1, "A", 3',
+    # the screen's statements (compared on the screen's rows) and the printer's (on its text)
+    'LOCATE 1,2,1', 'LOCATE ,,1,5,7', 'COLOR 7,0,0', 'COLOR ,1', 'CLS 0', 'KEY OFF', 'KEY 1, "A"',
+    'SCREEN 0,0,0', 'LPRINT 1;2', 'LPRINT USING "##";5', 'LPRINT 1,"A";',
 ]
 # Cuts where PC-BASIC 2.0.8 differs from GW-BASIC's source, which decides:
 SOURCE_DECIDED = {
@@ -266,15 +271,68 @@ def _cuts(statement: str) -> list[str]:
     return [statement[:end] for end in ends[:-1]]
 
 
-def test_cut_statements_give_pcbasics_errors(pc, tmp_path):
+@pytest.fixture(scope="module")
+def printing_pc(tmp_path_factory):
+    """A PC-BASIC session whose printer (LPT1:) writes to a file: (session, the file)."""
+    paper = tmp_path_factory.mktemp("lpt1") / "lpt1.txt"
+    session = PcBasic(devices={"LPT1:": f"FILE:{paper}"})
+    yield session, paper
+    session.close()
+
+
+def _screen_text(rows: list[str]) -> str:
+    """Screen rows as lines, the blank rows below the last written one dropped."""
+    while rows and not rows[-1]:
+        rows = rows[:-1]
+    return "".join(row + "\n" for row in rows)
+
+
+def pcbasic_cut(session: PcBasic, paper, source: str) -> tuple[str, str]:
+    """(the screen's rows, what the printer printed) after PC-BASIC runs ``source`` from a
+    cleared screen with one Enter waiting on the keyboard (taken away again afterwards)."""
+    from test_differential_gw_screen import RESET
+
+    session.statement("CLOSE: ON ERROR GOTO 0: " + RESET)
+    printed = paper.stat().st_size if paper.exists() else 0
+    session._session.press_keys("\r")
+    session.program(source)
+    rows = session._session.get_chars(as_type=bytes)
+    session.statement('WHILE INKEY$ <> "": WEND')
+    # (PC-BASIC draws the cursor after an error message as a cell of code 255)
+    screen = _screen_text(["".join(chr(b[0]) if b else " " for b in row).rstrip(" \xff") for row in rows])
+    return screen, paper.read_bytes()[printed:].decode("latin-1").replace("\r\n", "\n")
+
+
+def yaseer_cut(source: str, directory) -> tuple[str, str]:
+    """(the screen's rows, the printer's text) after yaseer runs ``source``: an error message
+    written on the screen as GW-BASIC writes it, the keys one Enter."""
+    from yaseer.basic.dialects.dialect import GW
+    from yaseer.basic.errors import BasicError
+    from yaseer.basic.machine.machine import Machine
+
+    paper = io.StringIO()
+    machine = Machine(screen=io.StringIO(), printer=paper, dialect=GW, angle="rad", files=directory,
+                      input_stream=io.StringIO("\n"))
+    machine.load(source)
+    try:
+        machine.run()
+    except BasicError as err:
+        machine.end_line()
+        machine.screen.write(str(err) + "\n")
+    machine.screen.catch_up()
+    return _screen_text([GW.charset.codes(line) for line in machine.display.lines()]), paper.getvalue()
+
+
+def test_cut_statements_give_pcbasics_errors(printing_pc, tmp_path):
+    """Each cut compared on the screen's rows (a LOCATE's column shows there, as does the
+    error's message) and on the printer's text (LPRINT's goes to the printer, not the screen)."""
+    session, paper = printing_pc
     found = []
     for statement in CUT_STATEMENTS:
         for text in _cuts(statement):
             source = f"10 {text}\n20 PRINT \"ok\"\n100 RETURN\n"
-            pc.statement("CLOSE")
-            pc.statement("ON ERROR GOTO 0")
-            ours = yaseer_run(source, tmp_path)
-            theirs = SOURCE_DECIDED[text] if text in SOURCE_DECIDED else pc.program(source)
+            ours = yaseer_cut(source, tmp_path)
+            theirs = (SOURCE_DECIDED[text], "") if text in SOURCE_DECIDED else pcbasic_cut(session, paper, source)
             if theirs != ours:
                 found.append((text, theirs, ours))
     assert not found, found

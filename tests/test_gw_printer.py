@@ -101,3 +101,32 @@ def test_width_of_a_device_needs_a_string_and_a_width():
         screen, _ = yaseer_printer(f"10 {bad}\n")
         assert screen == f"{error} in 10\n", (bad, screen)
     assert yaseer_printer("10 WIDTH 40, 25: PRINT 1\n")[0] == " 1 \n"
+
+
+# LPRINT with no printer file: its text, on the output as printed, never touches the screen
+APART_PROGRAM = """10 PRINT "A";: LPRINT "X";: LPRINT "Y": PRINT POS(0); CSRLIN
+20 LPRINT STRING$(30, "L"): PRINT "B"; SCREEN(1, 2); SCREEN(3, 1)
+30 WIDTH LPRINT 10: LPRINT STRING$(15, "W"): LOCATE 5, 3: PRINT "C": LPRINT "Z"
+"""
+
+
+def test_lprint_without_a_printer_leaves_the_screen_alone(tmp_path):
+    """GW-BASIC's LPRINT writes to LPT1: only (GIO86.ASM LPRINT points PTRFIL at the printer):
+    the screen keeps its cursor and cells, as PC-BASIC 2.0.8's screen shows.  Without
+    ``--printer`` yaseer writes the printer's text on the output as it is printed (wrapping
+    at the printer's width), beside the screens the transcript shows."""
+    from test_differential_gw_screen import pcbasic_screen, yaseer_screen
+    from test_differential_support import PcBasic
+
+    pc = PcBasic()
+    try:
+        theirs = pcbasic_screen(pc, APART_PROGRAM)
+    finally:
+        pc.close()
+    ours, written = yaseer_screen(APART_PROGRAM)
+    assert ours == theirs
+    assert theirs[:2] == ["A 2  1", "B 32  32"]
+    # the text streamed in order (PRINT's open row, the printer's text after it) until LOCATE
+    # places text: from then on the screen, shown when the run ends
+    printed = "AXY\n 2  1 \n" + "L" * 30 + "\nB 32  32 \n" + "W" * 10 + "\nWWWWW\nZ\n"
+    assert written == printed + "".join(row + "\n" for row in ours)

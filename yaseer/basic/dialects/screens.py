@@ -37,9 +37,10 @@ control code does its ``controls``.
   typed over what the screen held there (the Casio's INPUT.md, item 8); False takes the
   keys typed alone.
 * ``printer_apart``: True sends LPRINT without a printer (no ``--printer``) to the output as
-  it is printed, beside the screens and never part of them (CLS does not erase it: the
-  Casio's printer is a device of its own, part 7); False lets it share the screen's text
-  (GW-BASIC without a printer, as yaseer always ran it).
+  it is printed, beside the screens and never part of them (CLS does not erase it; CSRLIN,
+  POS and SCREEN() do not see it): the Casio's printer is a device of its own (part 7), and
+  GW-BASIC's LPRINT writes to LPT1: only (GIO86.ASM LPRINT sets PTRFIL to the printer),
+  leaving the screen as it was; False lets it share the screen's text.
 """
 
 from __future__ import annotations
@@ -64,7 +65,7 @@ GW_FUNCTION_KEYS = ("LIST ", "RUN\r", 'LOAD"', 'SAVE"', "CONT\r", ',"LPT1:"\r', 
 GW_SCREEN = ScreenRules(late_wrap=True, origin=1, row_first=True, locate_arguments=(0, 5),
                         function_keys=GW_FUNCTION_KEYS, key_label=6, clear_draws=False, attributes=True,
                         trace_mark="[{line}]", trace_halts=False, input_reads_screen=False,
-                        printer_apart=False)
+                        printer_apart=True)
 
 # What each control code does on GW-BASIC's text screen when PRINTed (the OEM's PRTMAP is
 # not in the published source; PC-BASIC 2.0.8's console does this): TAB to the next

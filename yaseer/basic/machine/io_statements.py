@@ -79,12 +79,13 @@ class InputOutput:
         """WIDTH n: the screen's width, 40 or 80 columns as GW-BASIC's text screen has
         (any other n is Illegal function call); PRINT wraps there from now on.
         WIDTH LPRINT n: the printer's, 0..255 (0 acts as 1, 255 never wraps, as
-        PC-BASIC 2.0.8 has it); nothing changes while LPRINT goes to the screen."""
+        PC-BASIC 2.0.8 has it), on a ``--printer`` file or, where the dialect's printer has a
+        width (GW's LPT1:), on the output beside the screen; nothing changes otherwise."""
         n = runtime.cint(columns)
         if printer:
             if not 0 <= n <= 255:
                 raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-            if self.own_printer:
+            if self.own_printer or (self.printer is not self.screen and self.dialect.printer_width):
                 self.printer.width = None if n == 255 else max(n, 1)
             return
         if n not in SCREEN_WIDTHS:
