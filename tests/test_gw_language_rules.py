@@ -249,6 +249,9 @@ CUT_STATEMENTS = [
     # the screen's statements (compared on the screen's rows) and the printer's (on its text)
     'LOCATE 1,2,1', 'LOCATE ,,1,5,7', 'COLOR 7,0,0', 'COLOR ,1', 'CLS 0', 'KEY OFF', 'KEY 1, "A"',
     'SCREEN 0,0,0', 'LPRINT 1;2', 'LPRINT USING "##";5', 'LPRINT 1,"A";',
+    # INPUT asks and reads its answer (an Enter) before it reads its names (GWMAIN.ASM INPUT:
+    # SINLIN, then PTRGTN); INPUT # finds its file first; LINE INPUT reads its name first
+    'INPUT #1, A', 'INPUT;"Q";A, B', 'INPUT "Q", A', 'LINE INPUT;"Q";A$',
 ]
 # Cuts where PC-BASIC 2.0.8 differs from GW-BASIC's source, which decides:
 SOURCE_DECIDED = {
@@ -256,7 +259,7 @@ SOURCE_DECIDED = {
     # PC-BASIC refuses a graphics statement on the text screen first (Illegal function call)
     "LINE": "Syntax error in 10\n",
 }
-# Left out (not generated): INPUT # (its cut INPUT alone waits for the keyboard); WRITE's
+# Left out (not generated): WRITE's
 # ``;`` between items (a comma printed, as PC-BASIC has it: yaseer's grammar refuses it);
 # an item WRITE cannot end (``WRITE 1 X``: the source prints 1, PC-BASIC ``1,``); the MID$ statement, which
 # checks its start and count as it reads them, the start against the length only after
@@ -287,14 +290,15 @@ def _screen_text(rows: list[str]) -> str:
     return "".join(row + "\n" for row in rows)
 
 
-def pcbasic_cut(session: PcBasic, paper, source: str) -> tuple[str, str]:
+def pcbasic_cut(session: PcBasic, paper, source: str, keys: str = "\n") -> tuple[str, str]:
     """(the screen's rows, what the printer printed) after PC-BASIC runs ``source`` from a
-    cleared screen with one Enter waiting on the keyboard (taken away again afterwards)."""
+    cleared screen with ``keys`` waiting on the keyboard (one Enter; what is left of them
+    taken away afterwards)."""
     from test_differential_gw_screen import RESET
 
     session.statement("CLOSE: ON ERROR GOTO 0: " + RESET)
     printed = paper.stat().st_size if paper.exists() else 0
-    session._session.press_keys("\r")
+    session._session.press_keys(keys.replace("\n", "\r"))
     session.program(source)
     rows = session._session.get_chars(as_type=bytes)
     session.statement('WHILE INKEY$ <> "": WEND')
@@ -303,16 +307,16 @@ def pcbasic_cut(session: PcBasic, paper, source: str) -> tuple[str, str]:
     return screen, paper.read_bytes()[printed:].decode("latin-1").replace("\r\n", "\n")
 
 
-def yaseer_cut(source: str, directory) -> tuple[str, str]:
+def yaseer_cut(source: str, directory, keys: str = "\n") -> tuple[str, str]:
     """(the screen's rows, the printer's text) after yaseer runs ``source``: an error message
-    written on the screen as GW-BASIC writes it, the keys one Enter."""
+    written on the screen as GW-BASIC writes it, the keys ``keys``."""
     from yaseer.basic.dialects.dialect import GW
     from yaseer.basic.errors import BasicError
     from yaseer.basic.machine.machine import Machine
 
     paper = io.StringIO()
     machine = Machine(screen=io.StringIO(), printer=paper, dialect=GW, angle="rad", files=directory,
-                      input_stream=io.StringIO("\n"))
+                      input_stream=io.StringIO(keys))
     machine.load(source)
     try:
         machine.run()
@@ -336,6 +340,32 @@ def test_cut_statements_give_pcbasics_errors(printing_pc, tmp_path):
             if theirs != ours:
                 found.append((text, theirs, ours))
     assert not found, found
+
+
+INPUT_KEPT_ROW = {
+    # INPUT; and LINE INPUT; leave the cursor after the answer (GWMAIN.ASM INPUT and LINE
+    # INPUT call SCNSEM for the semicolon); a list cut short is asked and answered first
+    "input; keeps the row": ('10 INPUT;A: PRINT "x"; A\n20 INPUT;"Q";B$, C: PRINT "y"; B$; C\n', "5\nab, 7\n"),
+    "line input; keeps the row": ('10 LINE INPUT;"L? ";A$: PRINT "z"; A$\n20 LINE INPUT;B$: PRINT "w"\n', "hi, x\nq\n"),
+    "input cut after an answer": ('10 INPUT "Q", A,\n', "12\n"),
+    "input cut, trapped": ('10 ON ERROR GOTO 100\n20 INPUT;\n30 PRINT "n": END\n100 PRINT ERR; ERL: RESUME NEXT\n', "1\n"),
+}
+
+
+@pytest.mark.parametrize("name", list(INPUT_KEPT_ROW))
+def test_input_forms_with_keys_as_pcbasic(printing_pc, tmp_path, name):
+    source, keys = INPUT_KEPT_ROW[name]
+    session, paper = printing_pc
+    assert yaseer_cut(source, tmp_path, keys) == pcbasic_cut(session, paper, source, keys)
+
+
+@pytest.mark.parametrize("name", list(INPUT_KEPT_ROW))
+def test_casio_refuses_gws_input_forms(tmp_path, name):
+    """The Casio's INPUT has no semicolon first and wants its names (INPUT.md)."""
+    source, keys = INPUT_KEPT_ROW[name]
+    if "ON ERROR" in source:
+        return
+    assert yaseer_run(source, tmp_path, "casio") == "Syntax error in 10\n"
 
 
 @pytest.mark.parametrize("text", ["LINE", "LINE X", "LINE @", "LINE STEP", "LINE , 1"])

@@ -139,6 +139,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.locate_arguments = dialect.screen.locate_arguments  # LOCATE's (fewest, most)
         self.late_errors = dialect.errors_when_reached  # a DEF FN body's errors when it is called
         self.using_each_value = dialect.using_each_value  # PRINT USING's values field by field
+        self.input_answer_first = dialect.input_answer_first  # INPUT; and INPUT cut short (GW)
         self.for_array_elements = dialect.for_array_elements  # FOR T(2) = ... (the paper's Example 3)
         # "." in LIST, EDIT ...: GW's DOT, the machine's current_line as the statement runs
         # (Dialect.current_line_listed); else (casio) the line the statement is in

@@ -173,6 +173,11 @@ class InputOutputCompiler:
                     self.emit(f"_fail({err.message!r}, {err.code})")
                     break
             return
+        if (stmt.names_cut or stmt.keeps_row) and not self.input_answer_first:
+            raise syntax_error()  # INPUT; and a list cut short: GW's forms only
+        if stmt.names_cut:  # asked and answered, then the missing name refused
+            self.emit(f"_input_cut({stmt.prompt!r}, {stmt.question_mark}, {stmt.keeps_row})")
+            return
         if stmt.asks is not None and not self.words.asks_each:
             raise syntax_error()  # a message before a later variable: the Casio's form only
         if self.words.asks_each and len(stmt.targets) > 1:  # one answer, one EXE, for each variable
@@ -181,13 +186,14 @@ class InputOutputCompiler:
                 prompt, question = ask or (None, True)
                 self._input_into([target], prompt, question, stmt.at, scope)
             return
-        self._input_into(stmt.targets, stmt.prompt, stmt.question_mark, stmt.at, scope)
+        self._input_into(stmt.targets, stmt.prompt, stmt.question_mark, stmt.at, scope, stmt.keeps_row)
 
-    def _input_into(self, targets, prompt, question_mark, at, scope):
+    def _input_into(self, targets, prompt, question_mark, at, scope, keeps_row=False):
         """One INPUT's question: ``prompt`` (and "?"), then one line of answers for ``targets``."""
         kinds = "".join("s" if self.kind_of(t) == "s" else "n" for t in targets)
         values = self.new_temp()
         limit = f", {at}" if at is not None else ""  # INPUT @n;: at most n characters
+        limit += ", keeps_row=True" if keeps_row else ""
         self.emit(f"{values} = _input({prompt!r}, {question_mark}, {kinds!r}, {self.asking_again()}{limit})")
         for n, target in enumerate(targets):
             value = f"{values}[{n}]"
@@ -257,7 +263,10 @@ class InputOutputCompiler:
             except CompileError as err:  # a bad subscript: after the file
                 self.emit(f"_fail({err.message!r}, {err.code})")
             return
-        self.assign(stmt.target, f"_line_input({stmt.prompt!r}, {self.asking_again()})", "s", scope, False)
+        if stmt.keeps_row and not self.input_answer_first:
+            raise syntax_error()  # LINE INPUT; : GW's form only
+        keeps_row = ", True" if stmt.keeps_row else ""
+        self.assign(stmt.target, f"_line_input({stmt.prompt!r}, {self.asking_again()}{keeps_row})", "s", scope, False)
 
     def asking_again(self) -> tuple | None:
         """For an INPUT or LINE INPUT that starts its block of area 0 (a top-level one):

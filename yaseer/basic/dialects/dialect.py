@@ -105,10 +105,11 @@ FIELDS = (
     "using_each_value",  # bool: False
     "delete_needs_last_line",  # bool: False
     "eof_of_file_zero",  # bool: False
+    "input_answer_first",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None, False, (), False, False, False)
+            None, False, False, True, False, None, False, (), False, False, False, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -240,6 +241,11 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         ``empty_input_keeps``: True (casio, the INPUT page: "a numeric variable
         retains its current value") makes an empty answer to INPUT keep the
         numeric variables' values; False reads it as 0 (GW-BASIC).
+        ``input_answer_first``: True (GW-BASIC) when INPUT shows its question and reads the
+        answer before it reads its names (GWMAIN.ASM INPUT: QTINP and SINLIN, then PTRGTN):
+        an INPUT with no names or a list ending in a comma asks, takes the answer, then is
+        Syntax error; and ``INPUT;`` / ``LINE INPUT;`` (a semicolon first: SCNSEM) leave the
+        cursor after the answer.  False (casio): those forms are Syntax error.
         ``library_forms``: True (casio) accepts what Becker's library for the
         FX-850P writes and the manual does not describe: ``THEN *`` (the program
         ends there; docs/compatibility.md).
@@ -381,7 +387,7 @@ GW = Dialect(
     direct_line_number=65535, edit_clears=True, handler_must_resume=True,
     for_array_elements=False, untrapped_errors_noted=True,
     using_digits=24, else_alone_skips=True, saves_going_on=("", "P"), using_each_value=True,
-    delete_needs_last_line=True, eof_of_file_zero=True,
+    delete_needs_last_line=True, eof_of_file_zero=True, input_answer_first=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

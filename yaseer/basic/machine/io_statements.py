@@ -13,7 +13,7 @@ from yaseer.basic.arithmetic import formatting, mbf_digits, values
 from yaseer.basic.machine import gwfunctions, runtime
 from yaseer.basic.machine.random_files import FieldedVariables
 from yaseer.basic.errors import (
-    BasicError, BAD_FILE_NAME, FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END,
+    BasicError, BAD_FILE_NAME, FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END, SYNTAX_ERROR,
 )
 from yaseer.basic.machine.console import end_of_keys
 from yaseer.basic.machine.signals import BreakPoint
@@ -265,15 +265,16 @@ class InputOutput:
         stream.column = 0
 
     def input_values(self, prompt, question_mark: bool, kinds: str, again: tuple | None = None,
-                     limit: int | None = None) -> list:
+                     limit: int | None = None, keeps_row: bool = False) -> list:
         """INPUT: prompt, read one line, split at commas; wrong values ask again.
 
         ``again``: (the block of area 0 this INPUT starts, its line); see :meth:`_read_line`.
         ``limit``: the most characters the answer takes (the library's ``INPUT @n;``: the
         keys past the field are not taken, as a field of n columns would refuse them).
+        ``keeps_row``: ``INPUT;`` (see :meth:`_read_line`).
         """
         while True:
-            line = self._read_line((prompt or "") + ("? " if question_mark or prompt is None else ""), again)
+            line = self._read_line(_question(prompt, question_mark), again, keeps_row)
             if limit is not None:
                 line = line[:limit]
             if not line and len(kinds) == 1 and self.dialect.empty_input_keeps:
@@ -285,16 +286,27 @@ class InputOutput:
                 return values
             self.screen.write("?Redo from start\n")
 
-    def line_input(self, prompt, again: tuple | None = None) -> str:
+    def input_names_cut(self, prompt, question_mark: bool, keeps_row: bool) -> None:
+        """INPUT whose names are missing or end in a comma (``Dialect.input_answer_first``):
+        GW-BASIC shows the question and reads the answer before it reads the names
+        (GWMAIN.ASM INPUT: SINLIN, then PTRGTN finds no name), so both come before the
+        Syntax error; the answer is not looked at.  ``keeps_row``: ``INPUT;``."""
+        self._read_line(_question(prompt, question_mark), keeps_row=keeps_row)
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+
+    def line_input(self, prompt, again: tuple | None = None, keeps_row: bool = False) -> str:
         """LINE INPUT ["prompt";] a$: the whole line, commas and quotes included (its
         trailing blanks dropped, as GW-BASIC's screen editor drops them); ``again``
-        as for INPUT (see :meth:`_read_line`); a line over the dialect's string length is
-        String too long."""
-        return runtime.limited(self._read_line(prompt or "", again).rstrip(" "), self.dialect.string_length)
+        and ``keeps_row`` as for INPUT (see :meth:`_read_line`); a line over the dialect's
+        string length is String too long."""
+        line = self._read_line(prompt or "", again, keeps_row)
+        return runtime.limited(line.rstrip(" "), self.dialect.string_length)
 
-    def _read_line(self, prompt: str, again: tuple | None = None) -> str:
+    def _read_line(self, prompt: str, again: tuple | None = None, keeps_row: bool = False) -> str:
         """Show ``prompt``, read one line of input (without its line end); the end of
-        the input is ``Input past end``.
+        the input is ``Input past end``.  ``keeps_row`` (GW's ``INPUT;``): an answer from
+        ``--input`` is not followed by a new row, the cursor stays after it (at a terminal
+        its echo of Enter has already moved the cursor: the column starts again at 0).
 
         ``again``: (a block of area 0 that starts with this statement, its line); with
         ``resumable_breaks`` a Ctrl-C while the line is awaited (or one that came just
@@ -331,7 +343,8 @@ class InputOutput:
         if under and display is not None:
             display.to_end_of_logical_line()  # EXE took the logical line: the next row is after it
         if self.input_stream is not None:
-            self.screen.write("\n")
+            if not keeps_row:
+                self.screen.write("\n")
         else:
             self.screen.column = 0
             if display is not None:
@@ -635,3 +648,7 @@ def parse_input(text: str, kinds: str, reading, longest: int):
 # of value 0 (``D``, ``-D``, ``.``, ``E+``, ``D5``)
 _NUMBER_WITHOUT_DIGITS = Pattern(r"[+-]?\.?(?:[DE][+-]?\d*)?")
 
+
+def _question(prompt: str | None, question_mark: bool) -> str:
+    """What INPUT shows before the answer: its prompt, then ``? `` unless a comma followed it."""
+    return (prompt or "") + ("? " if question_mark or prompt is None else "")

@@ -475,7 +475,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_pop": self.stack.pop, "_next_any": self.next_any, "_stop": self._stopper(area),
             "_dim": self.dim, "_clear": self.clear, "_made": self.made, "_mk": self.make_variable, "_dfn": self.define_function, "_swap2": self.swap_second, "_read_n": rt.read_number,
             "_read_s": rt.read_string, "_read_end": rt.read_end, "_restore": rt.restore, "_restore_at": rt.restore_at,
-            "_input": self.input_values,
+            "_input": self.input_values, "_input_cut": self.input_names_cut,
             "_fn": self.user_function, "_resume": self.resume, "_resume_at": self.resume_at,
             "_error_off": self.error_trapping_off, "_error": self.raise_error,
             "_randomize": self.randomize, "_rnd": self.rnd, "_rndf": self._first_draw,

@@ -56,6 +56,11 @@ def _without_commas(children) -> list:
     return [c for c in children if not (isinstance(c, Token) and c.type == "COMMA")]
 
 
+def _is_token(child, kind: str) -> bool:
+    """True when ``child`` is a token of type ``kind`` (not a subtree)."""
+    return isinstance(child, Token) and child.type == kind
+
+
 def _values(children) -> list:
     """The children that are not punctuation tokens."""
     return [c for c in children if not (isinstance(c, Token) and c.type in ("COMMA", "SEMI", "EQ"))]
@@ -268,10 +273,13 @@ class _ToAst:
         return ast.OptionBase(base)
 
     def line_input(self, c):
-        prompt, rest = None, c[2:]
-        if isinstance(rest[0], Token) and rest[0].type == "STRING":
+        rest = c[2:]
+        keeps_row = _is_token(rest[0], "SEMI")
+        rest = rest[keeps_row:]
+        prompt = None
+        if _is_token(rest[0], "STRING"):
             prompt, rest = rest[0].value, rest[2:]
-        return ast.LineInput(prompt, rest[0])
+        return ast.LineInput(prompt, rest[0], keeps_row=keeps_row)
 
     def write_stmt(self, c):
         return ast.Write(_values(c)[1:])
@@ -505,16 +513,21 @@ class _ToAst:
     def input_stmt(self, c):
         # each variable with the message before it (the Casio's INPUT "YEAR=",Y,"MONTH=",M)
         asks, targets, message = [], [], None
-        items = iter(c[1:])
+        rest = c[1:]
+        keeps_row = bool(rest) and _is_token(rest[0], "SEMI")  # INPUT; A
+        rest = rest[keeps_row:]
+        names_cut = not rest or _is_token(rest[-1], "COMMA") or _is_token(rest[-1], "SEMI")
+        items = iter(rest)
         for item in items:
-            if isinstance(item, Token) and item.type == "STRING":
+            if _is_token(item, "STRING"):
                 message = (item.value, next(items).type == "SEMI")
             elif not isinstance(item, Token):
                 targets.append(item)
                 asks.append(message)
                 message = None
-        prompt, question = asks[0] or (None, True)
-        return ast.Input(prompt, question, targets, asks=asks if any(asks[1:]) else None)
+        prompt, question = (asks[0] if asks else message) or (None, True)
+        return ast.Input(prompt, question, targets, asks=asks if any(asks[1:]) else None,
+                         keeps_row=keeps_row, names_cut=names_cut)
 
     def def_stmt(self, c):
         name = c[2].value

@@ -331,6 +331,7 @@ class LineInput:
     prompt: str | None
     target: object
     channel: object = None  # LINE INPUT #n
+    keeps_row: bool = False  # LINE INPUT; : the cursor stays after the answer
 
 
 @_node
@@ -470,6 +471,8 @@ class Input:
     channel: object = None  # INPUT #n
     at: int | None = None  # INPUT @n; (the FX-850P library's form)
     asks: list | None = None  # (message, "?" shown) or None for each target, when a later one has a message
+    keeps_row: bool = False  # INPUT; : the cursor stays after the answer
+    names_cut: bool = False  # no names, or a list ending in a comma: asked and read, then refused
 
 
 @_node
