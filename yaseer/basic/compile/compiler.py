@@ -123,6 +123,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.area = area
         self.statement_types = statement_types  # DEF types switched as they run, even where fixed would do
         self.variables_made = dialect.variables_made  # SWAP's second variable must exist (see made)
+        self.dim_name_alone_scalar = dialect.dim_name_alone_scalar  # DIM A: the simple variable
         self.watched: frozenset = frozenset()  # the names whose making is recorded (see made)
         self.counts_made = False  # each making is counted and checked against the 64 KB (see made)
         self.checked_once: set = set()  # the blocks whose later passes run without those tests (_checks_once)
@@ -467,6 +468,11 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             raise syntax_error()
         for name, sizes in stmt.arrays:
             name = self.numbers.name(name)
+            if sizes is None:  # a name alone
+                if self.dim_name_alone_scalar:
+                    self.made_name(name, counted=True)
+                    continue
+                sizes = (ast.Num(10.0),)
             codes = ", ".join(self.integer(s, scope) for s in sizes)
             self.emit(f"_dim({name!r}, ({codes},))")
             self.emit(Dimensioned(name))

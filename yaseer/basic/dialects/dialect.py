@@ -106,10 +106,12 @@ FIELDS = (
     "delete_needs_last_line",  # bool: False
     "eof_of_file_zero",  # bool: False
     "input_answer_first",  # bool: False
+    "dim_name_alone_scalar",  # bool: False
+    "dim_after_use_duplicate",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None, False, (), False, False, False, False)
+            None, False, False, True, False, None, False, (), False, False, False, False, False, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -300,6 +302,15 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         the lines in it, a single missing line is the error.
         ``eof_of_file_zero``: True when EOF(0) is 0 rather than a file not open (a real GW-BASIC
         recorded it so in PC-BASIC's EOF test, where LOC(0) and LOF(0) are Bad file number).
+        ``dim_name_alone_scalar``: True when a name without subscripts in DIM (``DIM A``) is the
+        simple variable, found or made (BIPTRG.ASM DIM sets DIMFLG and calls PTRGET, which
+        reads a name with no ``(`` as a simple variable; recorded on a real GW-BASIC in
+        PC-BASIC's DIM test, and PC-BASIC 2.0.8 agrees); False (casio, whose DIM page knows
+        only arrays): ``DIM A`` is ``DIM A(10)``.
+        ``dim_after_use_duplicate``: True when DIM of an array the program has already made by
+        using it (its implicit size) is ``Duplicate Definition`` (BIPTRG.ASM: PTRGET with
+        DIMFLG set finds the array: "doubly dimensioned"; PC-BASIC 2.0.8 agrees); False
+        (casio): DIM replaces the implicit array.
         ``handler_must_resume``: True when running off the program's last line inside an
         error handler is the error No RESUME in the last line run (GWMAIN.ASM PRGEND: ONEFLG
         still set); END leaves a handler quietly in both dialects. False (casio, whose RESUME
@@ -387,7 +398,8 @@ GW = Dialect(
     direct_line_number=65535, edit_clears=True, handler_must_resume=True,
     for_array_elements=False, untrapped_errors_noted=True,
     using_digits=24, else_alone_skips=True, saves_going_on=("", "P"), using_each_value=True,
-    delete_needs_last_line=True, eof_of_file_zero=True, input_answer_first=True,
+    delete_needs_last_line=True, eof_of_file_zero=True, input_answer_first=True, dim_name_alone_scalar=True,
+    dim_after_use_duplicate=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -82,10 +82,11 @@ class Variables:
         self.array_elements = total
 
     def dim(self, name: str, sizes: tuple) -> None:
-        """DIM name(sizes): replaces an implicit array; a second DIM is an error."""
+        """DIM name(sizes): replaces an implicit array (where the dialect allows it:
+        Dialect.dim_after_use_duplicate); a second DIM is an error."""
         words = self.dialect.words
         dims = tuple(int(s) if words and words.truncates else runtime.cint(s) for s in sizes)
-        if name in self.explicit_arrays:
+        if name in self.explicit_arrays or self.dialect.dim_after_use_duplicate and name in self.arrays:
             if words and words.redim_same and dims == self.array_dims.get(name):
                 return  # the Casio passes over the same declaration again (DIM.md)
             raise BasicError.of_code(DUPLICATE_DEFINITION)

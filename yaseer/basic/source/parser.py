@@ -241,7 +241,7 @@ class _ToAst:
         return (c[0].value, tuple(c[1]))
 
     def dim_scalar(self, c):
-        return (c[0].value, (ast.Num(10.0),))  # GW-BASIC: DIM A is DIM A(10)
+        return (c[0].value, None)  # (compiler: the dialect's Dialect.dim_name_alone_scalar)
 
     def clear_stmt(self, c):
         return ast.Clear([x for x in c[1:] if not isinstance(x, Token)])
@@ -875,7 +875,7 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     if touched is not None:
         return [touched] + _statements_after_error(tokens, bad_start, dialect)
     printed = (_printed_before_error(tokens, bad_start) or _written_before_error(tokens, bad_start)
-               or _assigned_before_error(tokens, bad_start))
+               or _assigned_before_error(tokens, bad_start) or _dimensioned_before_error(tokens, bad_start))
     file_first = None if printed else _file_checked_first(tokens, bad_start, err)
     if file_first is not None:
         return [file_first] + _statements_after_error(tokens, bad_start, dialect)
@@ -1145,6 +1145,28 @@ def _assigned_before_error(tokens: list, start: int) -> list:
         except (BasicError, GrammarError):
             continue
         return found if len(found) == 1 and isinstance(found[0], _ASSIGNMENTS) else []
+    return []
+
+
+def _dimensioned_before_error(tokens: list, start: int) -> list:
+    """A bad DIM whose first arrays read (``DIM A(1), B(``, ``DIM A(1),``, ``DIM A(1) B``):
+    those arrays, which GW-BASIC dimensions one by one before it looks at what follows
+    each (BIPTRG.ASM DIM and DIMCON: a comma, or the statement's end), so a second DIM of
+    one of them is Duplicate Definition before the cut's error.  Empty otherwise."""
+    if start >= len(tokens) or tokens[start].type != "DIM":
+        return []
+    end = next((k for k in range(start, len(tokens)) if tokens[k].type in _STATEMENT_ENDS), len(tokens))
+    depth, ends = 0, []  # where an item may end: after a name or a closing parenthesis at depth 0
+    for k in range(start + 1, end):
+        depth += {"_LPAR": 1, "_RPAR": -1}.get(tokens[k].type, 0)
+        if depth == 0 and tokens[k].type in ("_RPAR", "NAME", "STRNAME"):
+            ends.append(k + 1)
+    for k in reversed(ends):
+        try:
+            found = _parse(tokens[start:k])
+        except (BasicError, GrammarError):
+            continue
+        return found if len(found) == 1 and isinstance(found[0], ast.Dim) and found[0].arrays else []
     return []
 
 
