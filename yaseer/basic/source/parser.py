@@ -875,7 +875,7 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     if touched is not None:
         return [touched] + _statements_after_error(tokens, bad_start, dialect)
     printed = (_printed_before_error(tokens, bad_start) or _written_before_error(tokens, bad_start)
-               or _assigned_before_error(tokens, bad_start) or _dimensioned_before_error(tokens, bad_start))
+               or _assigned_before_error(tokens, bad_start) or _arrays_before_error(tokens, bad_start))
     file_first = None if printed else _file_checked_first(tokens, bad_start, err)
     if file_first is not None:
         return [file_first] + _statements_after_error(tokens, bad_start, dialect)
@@ -1148,13 +1148,21 @@ def _assigned_before_error(tokens: list, start: int) -> list:
     return []
 
 
-def _dimensioned_before_error(tokens: list, start: int) -> list:
-    """A bad DIM whose first arrays read (``DIM A(1), B(``, ``DIM A(1),``, ``DIM A(1) B``):
-    those arrays, which GW-BASIC dimensions one by one before it looks at what follows
-    each (BIPTRG.ASM DIM and DIMCON: a comma, or the statement's end), so a second DIM of
-    one of them is Duplicate Definition before the cut's error.  Empty otherwise."""
-    if start >= len(tokens) or tokens[start].type != "DIM":
+# Statements of a list of arrays that GW-BASIC handles one array at a time: the node and its list
+_ARRAY_LISTS = {"DIM": (ast.Dim, "arrays"), "ERASE": (ast.Erase, "names")}
+
+
+def _arrays_before_error(tokens: list, start: int) -> list:
+    """A bad DIM or ERASE whose first arrays read (``DIM A(1), B(``, ``ERASE A,``,
+    ``DIM A(1) B``): the statement with those arrays, which GW-BASIC dimensions or erases
+    one by one before it looks at what follows each (BIPTRG.ASM DIM and DIMCON: a comma, or
+    the statement's end; GWMAIN.ASM ERASE likewise), so a second DIM of one of them is
+    Duplicate Definition, and an array erased is gone, before the cut's error.  Empty
+    otherwise."""
+    rule = _ARRAY_LISTS.get(tokens[start].type) if start < len(tokens) else None
+    if rule is None:
         return []
+    node, field = rule
     end = next((k for k in range(start, len(tokens)) if tokens[k].type in _STATEMENT_ENDS), len(tokens))
     depth, ends = 0, []  # where an item may end: after a name or a closing parenthesis at depth 0
     for k in range(start + 1, end):
@@ -1166,7 +1174,7 @@ def _dimensioned_before_error(tokens: list, start: int) -> list:
             found = _parse(tokens[start:k])
         except (BasicError, GrammarError):
             continue
-        return found if len(found) == 1 and isinstance(found[0], ast.Dim) and found[0].arrays else []
+        return found if len(found) == 1 and isinstance(found[0], node) and getattr(found[0], field) else []
     return []
 
 

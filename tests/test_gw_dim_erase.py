@@ -1,4 +1,4 @@
-"""DIM as GW-BASIC runs it (BIPTRG.ASM DIM: DIMFLG set, then PTRGET for each name, DIMCON
+"""DIM and ERASE as GW-BASIC runs them (BIPTRG.ASM DIM: DIMFLG set, then PTRGET for each name, DIMCON
 between them), each case against PC-BASIC 2.0.8, which agrees with the source and with
 PC-BASIC's DIM test recorded on a real GW-BASIC:
 
@@ -7,7 +7,9 @@ PC-BASIC's DIM test recorded on a real GW-BASIC:
 - an array the program made by using it is dimensioned already: a DIM of it is Duplicate
   Definition (PTRGET with DIMFLG finds it);
 - the arrays before a bad item are dimensioned before the error (``DIM A(1), B(`` makes
-  A), and the error ends the whole statement for RESUME NEXT."""
+  A), and the error ends the whole statement for RESUME NEXT; so does ERASE (``ERASE A,``
+  erases A, then Syntax error: GWMAIN.ASM ERASE, an array at a time; PC-BASIC's ERASE test
+  recorded on a real GW-BASIC agrees)."""
 
 import pytest
 
@@ -34,6 +36,17 @@ def test_dim_runs_as_pcbasic(tmp_path, source):
 @pytest.mark.parametrize("cut", CUTS)
 def test_a_bad_dim_dimensions_the_arrays_before_its_error(tmp_path, cut):
     source = (f'10 ON ERROR GOTO 100\n20 {cut}\n30 PRINT A(1); B(2): DIM A(1): END\n'
+              '100 PRINT ERR; ERL: RESUME NEXT\n')
+    assert yaseer_run(source, tmp_path) == pcbasic_run(source, tmp_path)
+
+
+ERASE_CUTS = ['ERASE A, B(', 'ERASE A,', 'ERASE A B', 'ERASE Q', 'ERASE A, Q,', 'ERASE A(1)', 'ERASE A, B, Q,',
+              'ERASE LPRINT', 'ERASE "!"']
+
+
+@pytest.mark.parametrize("cut", ERASE_CUTS)
+def test_a_bad_erase_erases_the_arrays_before_its_error(tmp_path, cut):
+    source = (f'10 ON ERROR GOTO 100\n15 DIM A(2), B(2)\n20 {cut}\n30 DIM A(3): DIM B(3): END\n'
               '100 PRINT ERR; ERL: RESUME NEXT\n')
     assert yaseer_run(source, tmp_path) == pcbasic_run(source, tmp_path)
 
