@@ -211,6 +211,14 @@ FILE_AGREED = {
     "write # items before a bad one": (
         '10 OPEN "O", 1, "W.TXT": ON ERROR GOTO 100: WRITE #1, 1, "B",\n'
         '20 CLOSE: OPEN "I", 1, "W.TXT": LINE INPUT #1, A$: PRINT A$: END\n100 RESUME NEXT\n'),
+    # a ; between WRITE's items writes a comma, as a comma does (FIVEO.ASM WRITE: WASEMI)
+    "write # items separated by semicolons": (
+        '10 OPEN "O", 1, "W.TXT": WRITE #1, 1;"B";-2.5, 3: WRITE 4;"C"\n'
+        '20 CLOSE: OPEN "I", 1, "W.TXT": LINE INPUT #1, A$: PRINT A$: END\n'),
+    # an INPUT$ cut inside its file number finds the file (open for output: Bad file mode)
+    "input$ cut after an output file's number": (
+        '10 ON ERROR GOTO 100: OPEN "O", 1, "W.TXT"\n20 A$ = INPUT$(1, #1\n30 A$ = INPUT$(1, 1\n'
+        '40 END\n100 PRINT ERR; ERL: RESUME NEXT\n'),
     # FIELD fields each variable in turn: those before the one that fails keep their fields
     "field keeps the variables before a bad width": (
         '10 ON ERROR GOTO 200\n20 OPEN "R", 1, "R.DAT", 64\n30 FIELD #1, 10 AS A$, 300 AS B$\n'
@@ -244,8 +252,15 @@ CUT_STATEMENTS = [
     # DPUTG; DSKCOM.ASM FIELD: FILSCN), the file here not open
     'PRINT #1, USING "##"; 5', 'LINE INPUT #1, A$', 'WRITE #1, 5', 'FIELD #1, 5 AS A$', 'FIELD 1, 5 AS A$',
     'GET #1, 1', 'PUT #1, 1', 'WIDTH #1, 80',
-    # WRITE prints each item and its comma before it reads the next (FIVEO.ASM WRITE)
-    'WRITE 1, "A", 3',
+    # WRITE prints each item and its comma before it reads the next (FIVEO.ASM WRITE), a ;
+    # between items as a comma
+    'WRITE 1, "A", 3', 'WRITE 1;"A";3', 'WRITE #1, 1;2', 'WRITE 1 X, 2',
+    # the MID$ statement checks its start and count as it reads them (BISTRS.ASM LHSMID)
+    'MID$(A$,0,1)=5', 'MID$(A$,2,1)="X"',
+    # INPUT$ finds its file before its ) (DSKCOM.ASM FIXINP: FILSCN)
+    'X$=INPUT$(1,#1)', 'X$=INPUT$(1,1)',
+    # RENUM's increment: digits or none, none read as 0 (GWMAIN.ASM RESEQ: LINGET)
+    'RENUM 10,20,30',
     # the screen's statements (compared on the screen's rows) and the printer's (on its text)
     'LOCATE 1,2,1', 'LOCATE ,,1,5,7', 'COLOR 7,0,0', 'COLOR ,1', 'CLS 0', 'KEY OFF', 'KEY 1, "A"',
     'SCREEN 0,0,0', 'LPRINT 1;2', 'LPRINT USING "##";5', 'LPRINT 1,"A";',
@@ -258,13 +273,21 @@ SOURCE_DECIDED = {
     # GWMAIN.ASM LINE goes to GENGRP.ASM GLINE, which wants a point's ( first (SCAND's SYNCHR);
     # PC-BASIC refuses a graphics statement on the text screen first (Illegal function call)
     "LINE": "Syntax error in 10\n",
+    # FIVEO.ASM WRITE prints an item, then its SYNCHR wants a comma (or ;) before it prints
+    # one: an item followed by anything else prints without its comma (PC-BASIC prints it)
+    "WRITE 1 X": "1\nSyntax error in 10\n",
+    "WRITE 1 X,": "1\nSyntax error in 10\n",
+    # BISTRS.ASM LHSMID: SYNCHR for its ( (PC-BASIC reports the line after);
+    "MID$": "Syntax error in 10\n",
+    # MIDRST's SYNCHR for the , or ), FRMEQL's for the =, FRMEVL's Missing operand: the
+    # start is compared with the length only after the value (PC-BASIC compares it first)
+    "MID$(A$,2": "Syntax error in 10\n",
+    "MID$(A$,2,1": "Syntax error in 10\n",
+    "MID$(A$,2,1)": "Syntax error in 10\n",
+    "MID$(A$,2,1)=": "Missing operand in 10\n",
+    # a start of 0 is refused as GETBYT reads it, before the count (PC-BASIC reads the count)
+    "MID$(A$,0,": "Illegal function call in 10\n",
 }
-# Left out (not generated): WRITE's
-# ``;`` between items (a comma printed, as PC-BASIC has it: yaseer's grammar refuses it);
-# an item WRITE cannot end (``WRITE 1 X``: the source prints 1, PC-BASIC ``1,``); the MID$ statement, which
-# checks its start and count as it reads them, the start against the length only after
-# the value (BISTRS.ASM LHSMID; PC-BASIC checks the start first); INPUT$(n, #f), which
-# finds its file before its ``)``.
 
 
 def _cuts(statement: str) -> list[str]:
@@ -492,3 +515,34 @@ def test_date_set_knows_each_month_s_days_as_the_calendar_does():
             assert calendar_date(f"{month:02d}-{last:02d}-{year}") == (year, month, last)
             with pytest.raises(BasicError, match="Illegal function call"):
                 calendar_date(f"{month:02d}-{last + 1:02d}-{year}")
+
+
+@pytest.mark.parametrize("statement, expected", [
+    ('MID$(A$,0)=5', "Illegal function call in 10\n"),  # the start checked before the value's type
+    ('MID$(A$,1,300)=5', "Illegal function call in 10\n"),  # the count too
+    ('MID$(A$,1)=5', "Type mismatch in 10\n"),  # a good start and count: the value's type
+    ('MID$(A$,5)=5', "Type mismatch in 10\n"),  # ... before the start is compared with the length
+    ('MID$(A$,0', "Illegal function call in 10\n"),  # read only so far: its start checked
+    ('MID$(A$,1,300', "Illegal function call in 10\n"),
+    ('MID$(A,0', "Type mismatch in 10\n"),  # the target must be a string first (CHKSTR)
+])
+def test_the_mid_statement_checks_its_start_and_count_as_it_reads_them(tmp_path, statement, expected):
+    """BISTRS.ASM LHSMID: PTRGET and CHKSTR for the target, GETBYT for the start (0 Illegal
+    function call) and the count, FRMEQL for the value, FRESTR for its type, then the count
+    of 0 and the start against the length."""
+    assert yaseer_run(f'10 A$="AB": {statement}\n20 PRINT "no"\n', tmp_path) == expected
+
+
+def test_write_separates_items_by_semicolons_and_stops_at_anything_else(tmp_path):
+    """FIVEO.ASM WRITE: a ; is a comma (WASEMI prints one), and after an item anything but a
+    separator is SYNCHR's Syntax error, the item printed without a comma (PC-BASIC 2.0.8
+    prints the comma: the source decides)."""
+    assert yaseer_run('10 WRITE 1;"A";2: WRITE 3 X\n', tmp_path) == '1,"A",2\n3\nSyntax error in 10\n'
+
+
+def test_renum_reads_a_missing_increment_as_zero(tmp_path):
+    """GWMAIN.ASM RESEQ: after a second comma LINGET reads the increment, 0 where no digits
+    follow, which it refuses (Illegal function call); PC-BASIC 2.0.8 agrees."""
+    source = '10 RENUM 100,,\n20 PRINT "no"\n'
+    assert yaseer_run(source, tmp_path) == pcbasic_run(source, tmp_path) == "Illegal function call in 10\n"
+

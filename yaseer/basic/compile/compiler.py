@@ -602,11 +602,25 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
 
     def stmt_MidAssign(self, stmt, scope):
         target = self.string(stmt.target, scope)
-        count = "None" if stmt.count is None else self.numeric(stmt.count, scope)
+        if self.late_errors:
+            # GW (BISTRS.ASM LHSMID) checks the start and the count as it reads them (GETBYT),
+            # then evaluates the value, then finds it a string (FRESTR): MID$(A$,0)=5 is
+            # Illegal function call, not Type mismatch; a statement read only so far stops there
+            start, count = self.new_temp(), "None"
+            self.emit(f"{start} = _byte({self.numeric(stmt.start, scope)}, 1)")
+            if stmt.count is not None:
+                count = self.new_temp()
+                self.emit(f"{count} = _byte({self.numeric(stmt.count, scope)})")
+            if stmt.error is not None:
+                self.emit(f"raise _err({stmt.error.message!r}, {stmt.error.code})")
+                return
+            value = self.when_reached(lambda: self.string(stmt.value, scope))
+        else:
+            start, value = self.numeric(stmt.start, scope), self.string(stmt.value, scope)
+            count = "None" if stmt.count is None else self.numeric(stmt.count, scope)
         # the target itself as the value: GW copies it onto itself byte by byte (overlapping)
         same = stmt.value == stmt.target and self.numbers.typed
-        code = f"_midset({target}, {self.numeric(stmt.start, scope)}, {count}, {self.string(stmt.value, scope)}, {same})"
-        self.assign(stmt.target, code, "s", scope, False)
+        self.assign(stmt.target, f"_midset({target}, {start}, {count}, {value}, {same})", "s", scope, False)
 
     def stmt_Erase(self, stmt, scope):
         for name in stmt.names:

@@ -122,9 +122,9 @@ class InputOutputCompiler:
             stream = self.new_temp()
             self.emit(f"{stream} = _fout({self.numeric(stmt.channel, scope)})")
             with self.record_buffer(stream):
-                self.emit(f"_writef({stream}, ({self.written_items(stmt.items, scope)}), {stmt.cut})")
+                self.emit(f"_writef({stream}, ({self.written_items(stmt.items, scope)}), {stmt.cut!r})")
             return
-        self.emit(f"_write(0, ({self.written_items(stmt.items, scope)}), {stmt.cut})")
+        self.emit(f"_write(0, ({self.written_items(stmt.items, scope)}), {stmt.cut!r})")
 
     @contextmanager
     def record_buffer(self, stream: str):
@@ -343,7 +343,10 @@ class InputOutputCompiler:
         self.indent -= 1
 
     def stmt_FileFirst(self, stmt, scope):
-        """A file statement cut after its file number: the file's checks, then its error."""
+        """A file statement cut after its file number: the file's checks, then its error
+        (INPUT$'s: its count read as a byte first)."""
+        if stmt.count is not None:
+            self.emit(f"_byte({self.numeric(stmt.count, scope)})")
         find = "_M.files.opened" if stmt.opened else "None"
         self.emit(f"_M.files.checked({self.integer(stmt.number, scope)}, {stmt.modes!r}, {find})")
         self.emit(f"raise _err({stmt.error.message!r}, {stmt.error.code})")

@@ -44,6 +44,13 @@ def _count(n: float, low: int = 0, high: int = 255) -> int:
     return k
 
 
+def byte_argument(n: float, low: int = 0) -> int:
+    """A statement's byte argument as GETBYT reads it (MID$'s start, ``low`` 1, and count;
+    INPUT$'s count): ``low``..255, else Illegal function call (Overflow beyond a 16-bit
+    integer)."""
+    return _count(n, low)
+
+
 def _integer(n: float) -> int:
     """A 16-bit integer argument (-32768..32767), else Overflow."""
     k = cint(n)

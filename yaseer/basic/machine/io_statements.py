@@ -394,11 +394,11 @@ class InputOutput:
         finally:
             self._fields_follow(stream)
 
-    def write_to(self, stream, pieces: tuple, cut: bool = False) -> None:
+    def write_to(self, stream, pieces: tuple, cut: str | None = None) -> None:
         """WRITE #n (``cut``: see write_values)."""
         try:
-            if cut:
-                stream.write("".join(piece + "," for piece in pieces))
+            if cut is not None:
+                stream.write(",".join(pieces) + cut)
                 return
             stream.write(",".join(pieces))
             stream.end_line()
@@ -480,13 +480,14 @@ class InputOutput:
         self.print_items(0, (f" {sandbox.free_bytes()} Bytes free",), True)
         self.print_items(0, (), True)
 
-    def write_values(self, device: int, pieces: tuple, cut: bool = False) -> None:
+    def write_values(self, device: int, pieces: tuple, cut: str | None = None) -> None:
         """WRITE: the items (already as text: strings quoted, numbers without blanks)
-        separated by commas, then the line end; ``cut``: the items before one that fails,
-        each with the comma after it and no line end (FIVEO.ASM WRITE prints each item and
-        its comma before it reads the next)."""
-        if cut:
-            self.print_items(device, ("".join(piece + "," for piece in pieces),), False)
+        separated by commas, then the line end; ``cut``: the items of a WRITE that fails
+        part way, followed by ``cut`` (the comma after the last, or nothing) and no line end
+        (FIVEO.ASM WRITE prints each item, reads its separator, prints its comma, then
+        reads the next)."""
+        if cut is not None:
+            self.print_items(device, (",".join(pieces) + cut,), False)
             return
         self.print_items(device, (",".join(pieces),), True)
 

@@ -530,7 +530,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_hex": g.hex_dollar, "_oct": g.oct_dollar, "_mki": g.mki, "_mks": g.mks, "_mkd": g.mkd,
             "_cvi": g.cvi, "_cvs": g.cvs, "_cvd": g.cvd, "_timer": self.clock.timer, "_date": self.clock.date,
             "_time": self.clock.time, "_xor": g.logical_xor, "_eqv": g.logical_eqv,
-            "_imp": g.logical_imp, "_midset": g.mid_assign, "_fre": self.free_memory,
+            "_imp": g.logical_imp, "_midset": g.mid_assign, "_byte": g.byte_argument, "_fre": self.free_memory,
             "_pos": self.cursor_column,
             "_lpos": self.printer_column,
             "_erase": self.erase, "_option_base": self.option_base, "_line_input": self.line_input,

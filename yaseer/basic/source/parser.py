@@ -411,6 +411,8 @@ class _ToAst:
                 place += 1
             else:
                 values[place] = _line_spec(token) if place < 2 else _line_number(token)
+        if place == 2 and values[2] is None:  # RESEQ's LINGET reads no digits as 0, an increment it refuses
+            values[2] = 0
         return ast.Command("RENUM", tuple(values))
 
     def auto_stmt(self, c):
@@ -868,6 +870,9 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     checked_first = _checked_first(tokens, bad_start, err)
     if checked_first is not None:
         return [checked_first] + _statements_after_error(tokens, bad_start, dialect)
+    found = _mid_read_as_far(tokens, bad_start, err) or _input_file_first(tokens, bad_start, err)
+    if found is not None:
+        return [found] + _statements_after_error(tokens, bad_start, dialect)
     jump = _jump_read_as_needed(tokens, bad_start)
     if jump is not None:
         return [jump] + _statements_after_error(tokens, bad_start, dialect)
@@ -974,12 +979,61 @@ def _file_checked_first(tokens: list, start: int, err: BasicError):
         k += 1
     elif not optional:
         return None
-    end, depth = k, 0
-    while end < len(tokens) and not (depth == 0 and tokens[end].type in ("COMMA", *_STATEMENT_ENDS)):
-        depth += {"_LPAR": 1, "_RPAR": -1}.get(tokens[end].type, 0)
-        end += 1
+    end = argument_end(tokens, k)
     number = parse_expression(tokens[k:end])
     return None if number is None else ast.FileFirst(number, modes, opened, err)
+
+
+def argument_end(tokens: list, k: int, stops=("COMMA",)) -> int:
+    """Where the argument that starts at ``k`` ends: at a token of ``stops`` or the
+    statement's end outside parentheses (or the end of ``tokens``)."""
+    depth = 0
+    while k < len(tokens) and not (depth == 0 and (tokens[k].type in stops or tokens[k].type in _STATEMENT_ENDS)):
+        depth += {"_LPAR": 1, "_RPAR": -1}.get(tokens[k].type, 0)
+        k += 1
+    return k
+
+
+def _mid_read_as_far(tokens: list, start: int, err: BasicError):
+    """A bad MID$ statement whose target and start read: the statement up to its start and
+    count (where that reads), then ``err``: BISTRS.ASM LHSMID reads the start and the count
+    as bytes and checks each as it reads it (GETBYT; a start of 0 Illegal function call),
+    so ``MID$(A$,0`` is Illegal function call, not Syntax error.  None for any other bad
+    statement."""
+    if start + 1 >= len(tokens) or (tokens[start].type, tokens[start].value, tokens[start + 1].type) != (
+            "FUNCN", "MID$", "_LPAR"):
+        return None
+    pieces, k = [], start + 2
+    while len(pieces) < 3:
+        end = argument_end(tokens, k, ("COMMA", "_RPAR"))
+        piece = parse_expression(tokens[k:end])
+        if piece is None:
+            break
+        pieces.append(piece)
+        if end == len(tokens) or tokens[end].type != "COMMA":
+            break
+        k = end + 1
+    if len(pieces) < 2 or not isinstance(pieces[0], (ast.Var, ast.Elem)):
+        return None
+    return ast.MidAssign(pieces[0], pieces[1], pieces[2] if len(pieces) > 2 else None, None, err)
+
+
+def _input_file_first(tokens: list, start: int, err: BasicError):
+    """A bad statement that ends inside the file number of ``INPUT$(n, #f``: its count and
+    its file checked, then ``err`` (DSKCOM.ASM FIXINP reads the count with GETBYT and finds
+    the file, FILSCN, before its SYNCHR for the ``)``).  None for any other bad statement."""
+    end = argument_end(tokens, start, ())
+    for k in range(end - 2, start - 1, -1):
+        if (tokens[k].type, tokens[k].value, tokens[k + 1].type) != ("FUNCN", "INPUT$", "_LPAR"):
+            continue
+        comma = argument_end(tokens, k + 2)
+        count = parse_expression(tokens[k + 2:comma])
+        if count is None or comma == end:
+            return None
+        first = comma + 1 + (comma + 1 < end and tokens[comma + 1].type == "HASH")
+        number = parse_expression(tokens[first:end])
+        return None if number is None else ast.FileFirst(number, "IR", True, err, count)
+    return None
 
 
 def parse_expression(tokens: list):
@@ -1076,22 +1130,30 @@ _ITEM_STARTS = frozenset(("SEMI", "COMMA", "NAME", "STRNAME", "NUMBER", "STRING"
 _CALLED = frozenset(("NAME", "STRNAME", "FUNC", "FUNCN", "TAB", "SPC"))
 
 
+# Tokens an expression goes on with after an operand (FRMEVL reads on past them).
+_OPERATORS = frozenset(_OPERATOR_NAMES)
+
+
 def _written_before_error(tokens: list, start: int) -> list:
-    """A bad WRITE whose items up to a comma (or ``;``) read: those items, each with its comma
-    and no line end (FIVEO.ASM WRITE prints an item and the comma after it before it reads
-    the next: ``WRITE 1,`` prints ``1,``, then ``Missing operand``).  Empty otherwise."""
+    """A bad WRITE whose items read up to a separator or to a token no expression goes on
+    with: those items as FIVEO.ASM WRITE prints them, an item, then (after its ``,`` or
+    ``;``) a comma before it reads the next: ``WRITE 1,`` prints ``1,``, then the next
+    item's ``Missing operand``; ``WRITE 1 X`` prints ``1``, then ``Syntax error`` (its
+    SYNCHR for the comma).  Neither has a line end.  Empty otherwise."""
     if start >= len(tokens) or tokens[start].type != "WRITE":
         return []
-    end = next((k for k in range(start, len(tokens)) if tokens[k].type in _STATEMENT_ENDS), len(tokens))
+    end = argument_end(tokens, start, ())
     for k in range(end - 1, start, -1):
-        if tokens[k].type not in ("COMMA", "SEMI"):
-            continue
+        after, last = tokens[k].type, tokens[k - 1].type
+        separated = after in ("COMMA", "SEMI")
+        if not separated and (after in _OPERATORS or (after == "_LPAR" and last in _CALLED)):
+            continue  # the prefix ends inside an item (``1+``, ``A(``)
         try:
             found = _parse(tokens[start:k])
         except (BasicError, GrammarError):
             continue
         if len(found) == 1 and isinstance(found[0], ast.Write) and found[0].items:
-            found[0].cut = True
+            found[0].cut = "," if separated else ""  # (what follows: the comma, or the grammar's Syntax error)
             return found
     return []
 

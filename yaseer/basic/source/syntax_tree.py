@@ -309,11 +309,13 @@ class Swap:
 
 @_node
 class MidAssign:
-    """MID$(target, start[, count]) = value."""
+    """MID$(target, start[, count]) = value; ``error``: a statement that reads only up to
+    its start or count (``value`` None), checked as far as it reads, then this error."""
     target: object
     start: object
     count: object
     value: object
+    error: object = None
 
 
 @_node
@@ -338,7 +340,7 @@ class LineInput:
 class Write:
     items: list
     channel: object = None  # WRITE #n
-    cut: bool = False  # the items before one that fails, each with its comma, no line end
+    cut: str | None = None  # a WRITE that fails part way: what follows its items (their comma or nothing), no line end
 
 
 @_node
@@ -367,6 +369,7 @@ class FileFirst:
     modes: str
     opened: bool
     error: object
+    count: object = None  # INPUT$(count, #f: its count, read first as a byte
 
 
 @_node
