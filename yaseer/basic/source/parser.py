@@ -1210,27 +1210,32 @@ def _assigned_before_error(tokens: list, start: int) -> list:
     return []
 
 
-# Statements of a list of arrays that GW-BASIC handles one array at a time: the node and its list
-_ARRAY_LISTS = {"DIM": (ast.Dim, "arrays"), "ERASE": (ast.Erase, "names")}
+# Statements of a list that GW-BASIC handles one item at a time: the node, its list, and
+# whether an item may end without a comma after it (a name or a ``)``: DIM, ERASE) or only
+# at a comma (CLOSE's numbers: ``CLOSE 1 2`` is file 12)
+_ITEM_LISTS = {"DIM": (ast.Dim, "arrays", True), "ERASE": (ast.Erase, "names", True),
+               "CLOSE": (ast.Close, "numbers", False)}
 
 
 def _arrays_before_error(tokens: list, start: int) -> list:
-    """A bad DIM or ERASE whose first arrays read (``DIM A(1), B(``, ``ERASE A,``,
-    ``DIM A(1) B``): the statement with those arrays, which GW-BASIC dimensions or erases
-    one by one before it looks at what follows each (BIPTRG.ASM DIM and DIMCON: a comma, or
-    the statement's end; GWMAIN.ASM ERASE likewise), so a second DIM of one of them is
-    Duplicate Definition, and an array erased is gone, before the cut's error.  Empty
-    otherwise."""
-    rule = _ARRAY_LISTS.get(tokens[start].type) if start < len(tokens) else None
+    """A bad DIM, ERASE or CLOSE whose first items read (``DIM A(1), B(``, ``ERASE A,``,
+    ``DIM A(1) B``, ``CLOSE 1,``): the statement with those items, which GW-BASIC dimensions,
+    erases or closes one by one before it looks at what follows each (BIPTRG.ASM DIM and
+    DIMCON: a comma, or the statement's end; GWMAIN.ASM ERASE and GIO86.ASM CLOSE likewise),
+    so a second DIM of one of them is Duplicate Definition, and an array erased or a file
+    closed is gone, before the cut's error.  Empty otherwise."""
+    rule = _ITEM_LISTS.get(tokens[start].type) if start < len(tokens) else None
     if rule is None:
         return []
-    node, field = rule
+    node, field, ends_alone = rule
     end = next((k for k in range(start, len(tokens)) if tokens[k].type in _STATEMENT_ENDS), len(tokens))
-    depth, ends = 0, []  # where an item may end: after a name or a closing parenthesis at depth 0
+    depth, ends = 0, []  # where an item may end
     for k in range(start + 1, end):
         depth += {"_LPAR": 1, "_RPAR": -1}.get(tokens[k].type, 0)
-        if depth == 0 and tokens[k].type in ("_RPAR", "NAME", "STRNAME"):
+        if depth == 0 and ends_alone and tokens[k].type in ("_RPAR", "NAME", "STRNAME"):
             ends.append(k + 1)
+        elif depth == 0 and not ends_alone and tokens[k].type == "COMMA":
+            ends.append(k)
     for k in reversed(ends):
         try:
             found = _parse(tokens[start:k])

@@ -1,4 +1,4 @@
-"""DIM and ERASE as GW-BASIC runs them (BIPTRG.ASM DIM: DIMFLG set, then PTRGET for each name, DIMCON
+"""DIM, ERASE and CLOSE as GW-BASIC runs them (BIPTRG.ASM DIM: DIMFLG set, then PTRGET for each name, DIMCON
 between them), each case against PC-BASIC 2.0.8, which agrees with the source and with
 PC-BASIC's DIM test recorded on a real GW-BASIC:
 
@@ -9,7 +9,8 @@ PC-BASIC's DIM test recorded on a real GW-BASIC:
 - the arrays before a bad item are dimensioned before the error (``DIM A(1), B(`` makes
   A), and the error ends the whole statement for RESUME NEXT; so does ERASE (``ERASE A,``
   erases A, then Syntax error: GWMAIN.ASM ERASE, an array at a time; PC-BASIC's ERASE test
-  recorded on a real GW-BASIC agrees)."""
+  recorded on a real GW-BASIC agrees), and CLOSE (``CLOSE 1,`` closes file 1, then Missing
+  operand: GIO86.ASM CLOSE; PC-BASIC's recorded CLOSE test)."""
 
 import pytest
 
@@ -49,6 +50,21 @@ def test_a_bad_erase_erases_the_arrays_before_its_error(tmp_path, cut):
     source = (f'10 ON ERROR GOTO 100\n15 DIM A(2), B(2)\n20 {cut}\n30 DIM A(3): DIM B(3): END\n'
               '100 PRINT ERR; ERL: RESUME NEXT\n')
     assert yaseer_run(source, tmp_path) == pcbasic_run(source, tmp_path)
+
+
+CLOSE_CUTS = ['CLOSE 1,', 'CLOSE 1, 2,', 'CLOSE ,1', 'CLOSE 1 2', 'CLOSE 1,,2', 'CLOSE #1, #']
+
+
+@pytest.mark.parametrize("cut", CLOSE_CUTS)
+def test_a_bad_close_closes_the_files_before_its_error(tmp_path, cut):
+    source = (f'10 ON ERROR GOTO 100\n15 OPEN "A" FOR OUTPUT AS 1: OPEN "B" FOR OUTPUT AS 2\n20 {cut}\n'
+              '30 OPEN "C" FOR OUTPUT AS 1: OPEN "D" FOR OUTPUT AS 2: END\n100 PRINT ERR; ERL: RESUME NEXT\n')
+    ours, theirs = tmp_path / "y", tmp_path / "p"
+    ours.mkdir()
+    theirs.mkdir()
+    printed = yaseer_run(source, ours)
+    assert printed == pcbasic_run(source, theirs)
+    assert sorted(p.name for p in ours.iterdir()) == sorted(p.name for p in theirs.iterdir())
 
 
 def test_casio_replaces_an_implicit_array_and_reads_dim_a_as_ten(tmp_path):
