@@ -193,7 +193,8 @@ def element_fields_program(rng: random.Random) -> str:
     """FIELD into array elements (DSKCOM.ASM FIELD finds each variable with PTRGET: an element
     as well, its array made with the default size where there is no DIM) mixed with scalars:
     LSET, RSET, PUT, GET, an element given another string (detached), ERASE and a new DIM
-    of the array (its elements detached), each variable shown in brackets."""
+    of the array (its elements detached), SWAP with another variable or with F$, fielded
+    nowhere (the fields go with the descriptors), each variable shown in brackets."""
     length = rng.choice([10, 16, 24])
     names = ["A$(1)", "A$(7)", "B$(2,1)", "B$(0,0)", "C$", "D$"]
     rng.shuffle(names)
@@ -212,6 +213,7 @@ def element_fields_program(rng: random.Random) -> str:
         (20, lambda name: shown),
         (8, lambda name: f'{name} = "{random_text(rng)}!"'),  # detached from the buffer
         (7, lambda name: "ERASE B$: DIM B$(2,1)"),  # the elements fielded are gone with the array
+        (12, lambda name: f"SWAP {name}, {rng.choice(names + ['F$'])}: {shown}: S$=F$: GOSUB 1000: PRINT"),
     ]
     for _ in range(rng.randint(5, 12)):
         make = rng.choices([make for _, make in statements], [weight for weight, _ in statements])[0]
@@ -223,6 +225,34 @@ def element_fields_program(rng: random.Random) -> str:
 def test_fields_of_array_elements_match_pcbasic(tmp_path):
     """Array elements and scalars fielded together: output and file against PC-BASIC 2.0.8."""
     programs_match_pcbasic(tmp_path, element_fields_program, 41, 20)
+
+
+SWAPPED = """\
+10 OPEN "R", 1, "S.DAT", 8
+20 FIELD #1, 5 AS A$, 3 AS B$
+30 LSET A$ = "hello": LSET B$ = "xyz": SWAP A$, B$: PRINT A$; "|"; B$
+40 LSET A$ = "QQ": RSET B$ = "w": PRINT A$; "|"; B$: PUT #1, 1
+50 LSET A$ = "12345678": LSET B$ = "": PUT #1, 2: GET #1, 1: PRINT A$; "|"; B$
+60 C$ = "free": SWAP A$, C$: LSET C$ = "abcdefgh": PRINT A$; "|"; B$; "|"; C$
+70 GET #1, 2: PRINT A$; "|"; B$; "|"; C$
+80 DIM D$(2): FIELD #1, 2 AS D$(1), 6 AS D$(2): LSET D$(1) = "mm": SWAP D$(1), B$: RSET B$ = "k"
+90 PRINT D$(1); "|"; D$(2); "|"; B$: SWAP B$, B$: LSET B$ = "n": PRINT B$; "|"; D$(1): PUT #1, 3: CLOSE
+"""
+
+
+def test_swap_moves_the_fields_with_the_descriptors(tmp_path):
+    """BIMISC.ASM SWAP exchanges the two string descriptors (VMOVE), and a fielded variable's
+    descriptor points into the record buffer (DSKCOM.ASM FIELD): after SWAP A$, B$ the name
+    A$ writes and reads B$'s old bytes, and one swapped with a variable fielded nowhere hands
+    it its field.  PC-BASIC 2.0.8 does the same: output and file against it."""
+    theirs_dir, ours_dir = tmp_path / "pc", tmp_path / "ya"
+    theirs_dir.mkdir()
+    ours_dir.mkdir()
+    ours = yaseer_run(SWAPPED, ours_dir)
+    assert ours == ("xyz|hello\nQQ |    w\nQQ |    w\nfree|    w|abc\nfree|     |123\n k   |   123| k\n"
+                    "n |n    \n")
+    assert ours == pcbasic_run(SWAPPED, theirs_dir)
+    assert contents(ours_dir) == contents(theirs_dir)
 
 
 ELEMENTS = """\

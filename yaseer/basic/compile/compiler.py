@@ -124,6 +124,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.statement_types = statement_types  # DEF types switched as they run, even where fixed would do
         self.variables_made = dialect.variables_made  # SWAP's second variable must exist (see made)
         self.dim_name_alone_scalar = dialect.dim_name_alone_scalar  # DIM A: the simple variable
+        self.fields_bind = "FIELD" in dialect.own_words  # string variables may point into a file's buffer
         self.watched: frozenset = frozenset()  # the names whose making is recorded (see made)
         self.counts_made = False  # each making is counted and checked against the 64 KB (see made)
         self.checked_once: set = set()  # the blocks whose later passes run without those tests (_checks_once)
@@ -599,6 +600,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit(f"{t} = {first}")
         self.assign(stmt.first, second, kind, scope, False)
         self.assign(stmt.second, t, kind, scope, False)
+        if kind == "s" and self.fields_bind:
+            self.swap_fields(stmt, scope)
 
     def stmt_MidAssign(self, stmt, scope):
         target = self.string(stmt.target, scope)

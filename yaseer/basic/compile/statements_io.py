@@ -302,18 +302,30 @@ class InputOutputCompiler:
                   f"{self.string(stmt.name, scope)}, {length})")
 
     # -- random-access files (random_files.py): a fielded variable is named by its key
-    def field_key(self, target, scope) -> str:
+    def field_key(self, target, scope, made: bool = True) -> str:
         """Python code for the key of a FIELD or LSET variable (a string variable, DSKCOM.ASM
         ``PTRGET`` then ``FRCSTR``): a scalar's name, or an array element's (array name,
-        subscripts), the machine making the array if there is none."""
+        subscripts), the machine making the array if there is none (``made`` False: the
+        array is there, SWAP having read the element)."""
         if self.kind_of(target) != "s":
             raise type_mismatch()
         name = self.numbers.name(target.name)
         if isinstance(target, ast.Var):
             return repr(name)
         subscripts = self.subscripts(target, scope)
-        scope.array(target.name, len(subscripts), made=True)  # its local reloaded after the call
+        if made:
+            scope.array(target.name, len(subscripts), made=True)  # its local reloaded after the call
         return f"({name!r}, ({''.join(code + ', ' for code in subscripts)}))"
+
+    def swap_fields(self, stmt, scope) -> None:
+        """After SWAP of two strings, where FIELD is a word: a variable fielded on an open
+        file goes on pointing into its buffer under the other name (BIMISC.ASM SWAP
+        exchanges the two descriptors with VMOVE, and a fielded one points into the
+        record buffer: DSKCOM.ASM FIELD).  ``stmt.first`` now holds what ``stmt.second``
+        held and the reverse (machine.swap_fields sees which of them a file gave)."""
+        first, second = self.field_key(stmt.first, scope, False), self.field_key(stmt.second, scope, False)
+        now_first, now_second = self.string(stmt.first, scope), self.string(stmt.second, scope)
+        self.emit(f"if _M.files.open_files: _swapf({first}, {second}, {now_first}, {now_second})")
 
     def stmt_Field(self, stmt, scope):
         """FIELD #n, w AS v, ...: the file first (a random one), then each width and its

@@ -269,6 +269,14 @@ class FileTable:
                 return f.refreshed(variables, stored=key)
         return {key: random_files.justified(value, len(current), right)}
 
+    def swap_fields(self, first, second, now_first: str, now_second: str) -> None:
+        """SWAP of string variables ``first`` and ``second`` (keys), which now hold
+        ``now_first`` (what ``second`` held) and ``now_second``: on every random file the
+        field each was bound to goes with its value (RandomFile.swap)."""
+        for f in self.open_files.values():
+            if f.mode == "R":
+                f.swap(first, second, now_first, now_second)
+
     def forget_array(self, name: str) -> None:
         """ERASE or DIM of array ``name``: its elements are no longer fields of any file."""
         for f in self.open_files.values():

@@ -456,6 +456,12 @@ class InputOutput:
         variables = self.fielded()
         variables.update(self.files.justify(key, value, current, right, variables))
 
+    def swap_fields(self, first, second, now_first: str, now_second: str) -> None:
+        """SWAP of string variables ``first`` and ``second`` (keys as FIELD's), which now hold
+        ``now_first`` (what ``second`` held) and ``now_second``: the fields go with the
+        values (files.FileTable.swap_fields)."""
+        self.files.swap_fields(first, second, now_first, now_second)
+
     def field_variable(self, file, offset: int, width, key) -> int:
         """One ``width AS variable`` of FIELD #n on random ``file`` (random_files.RandomFile.field):
         the variable holds its slice of the buffer at once; the next one's offset."""

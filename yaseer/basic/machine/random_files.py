@@ -30,7 +30,9 @@ that pointed into the buffer are gone with the array).  GW-BASIC's field variabl
 into the buffer itself, so a ``LET`` to one detaches it from the buffer: GET no longer
 changes it and LSET pads to its own length.  Here a fielded variable stays bound while
 it holds the very string object the file last gave it (FIELD, GET, LSET give them);
-any other value was stored by the program, which detaches it.
+any other value was stored by the program, which detaches it.  SWAP moves the string to
+the other name, and the binding with it (:meth:`RandomFile.swap`), as GW-BASIC's SWAP
+moves the descriptor.
 """
 
 from __future__ import annotations
@@ -116,6 +118,21 @@ class RandomFile:
         for key in [k for k in self.fields if type(k) is tuple and k[0] == name]:
             del self.fields[key]
             self.given.pop(key, None)
+
+    def swap(self, first, second, now_first: str, now_second: str) -> None:
+        """SWAP of variables ``first`` and ``second``, which now hold ``now_first`` (what
+        ``second`` held) and ``now_second``: each one that was bound to a field (it held the
+        string this file gave it) hands its field to the other, which holds that string now
+        (BIMISC.ASM SWAP moves the descriptors, which point into the buffer)."""
+        if first == second:
+            return
+        moved = {}
+        for key, other, now in ((first, second, now_second), (second, first, now_first)):
+            if self.bound(key, now):  # bound before the SWAP: it held what the other holds now
+                moved[other] = (self.fields.pop(key), self.given.pop(key))
+        for key, (field, given) in moved.items():
+            self.fields[key] = field
+            self.given[key] = given
 
     def bound(self, key, current) -> bool:
         """Whether variable ``key``, now holding ``current``, is still a field of this file
