@@ -244,3 +244,17 @@ def test_chain_reads_the_lists_as_the_source_does(tmp_path, first, expected):
     not read as Syntax error, scans before it opens the file, and scans with ALL too."""
     (tmp_path / "B.BAS").write_bytes(B_PRINTS)
     assert yaseer_run(first, tmp_path) == expected
+
+
+@pytest.mark.parametrize("statement, with_file", [
+    ('CHAIN "B", 10,', "Syntax error"), ('CHAIN "B" X', "Syntax error"),
+    ('CHAIN MERGE "B", 10, DELETE', "Syntax error"), ('CHAIN MERGE "B", 10, DELETE 10-', "Illegal function call"),
+])
+def test_a_chain_whose_options_do_not_read_opens_its_file_first(tmp_path, statement, with_file):
+    """FIVEO.ASM CHAIN opens its file (PRGFLI) before it reads its options: without a file
+    B each is File not found (PC-BASIC 2.0.8 agrees but for a DELETE range, which it checks
+    first: the source decides); with the file the options' own error."""
+    source = f"10 {statement}\n20 PRINT \"no\"\n"
+    assert yaseer_run(source, tmp_path) == "File not found in 10\n"
+    (tmp_path / "B.BAS").write_bytes(b"10 PRINT 1\r\n")
+    assert yaseer_run(source, tmp_path) == f"{with_file} in 10\n"

@@ -381,6 +381,10 @@ class InputOutputCompiler:
     # -- CHAIN, MERGE (chaining.py): the machine reads the file here (an error is this
     # statement's, trappable), then ends the block with the program to go on with
     def stmt_Chain(self, stmt, scope):
+        if stmt.error is not None:  # its file first (FIVEO.ASM CHAIN: PRGFLI), then the options' error
+            self.emit(f"_M.chain_file({self.string(stmt.file, scope)})")
+            self.emit(f"raise _err({stmt.error.message!r}, {stmt.error.code})")
+            return
         line = "None" if stmt.line is None else self.numeric(stmt.line, scope)
         self.emit(STORE_LOCALS)  # the variables a CHAIN keeps are the machine's
         self.emit(f"_chain({self.string(stmt.file, scope)}, {stmt.merge}, {line}, {stmt.everything}, "

@@ -270,6 +270,11 @@ class Chaining:
             raise error_for(UNDEFINED_LINE)  # RUN has left the line it was in: none is named
         return self._line_block(again.line)
 
+    def chain_file(self, name: str) -> None:
+        """The file a CHAIN opens before it reads its options (FIVEO.ASM CHAIN: PRGFLI): its
+        errors (``File not found``), nothing else."""
+        read_program(self.files.sandbox, self._program_name(name))
+
     def chain(self, name: str, merge: bool, line, everything: bool, delete, run: bool = True) -> None:
         """CHAIN / MERGE as the statement runs: the file is read (its errors are this
         statement's) and the range checked, then :class:`ChainTo` ends the block."""

@@ -870,7 +870,8 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     checked_first = _checked_first(tokens, bad_start, err)
     if checked_first is not None:
         return [checked_first] + _statements_after_error(tokens, bad_start, dialect)
-    found = _mid_read_as_far(tokens, bad_start, err) or _input_file_first(tokens, bad_start, err)
+    found = (_mid_read_as_far(tokens, bad_start, err) or _input_file_first(tokens, bad_start, err)
+             or _chain_file_first(tokens, bad_start, err))
     if found is not None:
         return [found] + _statements_after_error(tokens, bad_start, dialect)
     jump = _jump_read_as_needed(tokens, bad_start)
@@ -992,6 +993,21 @@ def argument_end(tokens: list, k: int, stops=("COMMA",)) -> int:
         depth += {"_LPAR": 1, "_RPAR": -1}.get(tokens[k].type, 0)
         k += 1
     return k
+
+
+def _chain_file_first(tokens: list, start: int, err: BasicError):
+    """A bad CHAIN whose file name reads: the file found first, then ``err`` (FIVEO.ASM
+    CHAIN opens its file, PRGFLI, before it reads the options: ``CHAIN "B", 10,`` without a
+    file B is File not found).  None for any other bad statement."""
+    if tokens[start].type != "CHAIN":
+        return None
+    merge = start + 1 < len(tokens) and tokens[start + 1].type == "MERGE"
+    k = start + 1 + merge
+    for end in range(argument_end(tokens, k), k, -1):  # FRMEVL reads the longest expression
+        name = parse_expression(tokens[k:end])
+        if name is not None:
+            return ast.Chain(merge, name, None, False, None, error=err)
+    return None
 
 
 def _mid_read_as_far(tokens: list, start: int, err: BasicError):

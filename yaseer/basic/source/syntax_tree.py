@@ -390,6 +390,7 @@ class Chain:
     everything: bool  # ALL: every variable kept (else only COMMON ones)
     delete: object  # (first or None, last or None) or None
     run: bool = True
+    error: object = None  # options that do not read: the file found first, then this error
 
 
 # The period of LIST . and EDIT . (the Casio: LIST.md item 4, EDIT.md item 2): the line most
