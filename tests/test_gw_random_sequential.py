@@ -222,12 +222,13 @@ def test_put_and_get_set_the_buffer_position_back(tmp_path):
                                                  + b"  QDEF" + bytes(10))
 
 
-def test_input_after_a_get_beyond_the_end_is_input_past_end(tmp_path):
-    """A GET beyond the file's end leaves the file at its end (GIODSK.ASM $READS sets F_ORCT 0,
-    so EOF is -1) and GIO86.ASM INCHSI answers the end at once: INPUT # is Input past end
-    (PC-BASIC 2.0.8 reads the zero bytes to the record's end: FIELD overflow)."""
+def test_input_after_a_get_beyond_the_end_is_field_overflow(tmp_path):
+    """A GET beyond the file's end leaves EOF -1, but INPUT # still reads the buffer's zero
+    bytes to the record's end: FIELD overflow, as a real GW-BASIC recorded it (PC-BASIC's
+    FLDOVFL test) and PC-BASIC 2.0.8 does.  (The source, GIODSK.ASM $READS setting F_ORCT 0
+    and GIO86.ASM INCHSI answering the end at once, would say Input past end.)"""
     assert run(tmp_path, ['OPEN "R", 1, "R.DAT", 16: GET #1, 3: PRINT EOF(1)', "INPUT #1, A$", 'PRINT "on"']) \
-        == "-1 \nE 62  30 \non\n"
+        == "-1 \nE 50  30 \non\n"
 
 
 def test_a_ctrl_z_ends_the_input_and_the_file_until_the_next_get(tmp_path):

@@ -80,7 +80,8 @@ class RandomFile:
         self.fields: dict = {}  # variable key (str or (array, subscripts)) -> (offset, width)
         self.given: dict = {}  # variable key -> the string object it was last given
         self.last = 0  # LOC: the record last read or written
-        self.past_end = False  # the last GET read beyond the end, or INPUT # met a Ctrl-Z
+        self.past_end = False  # the last GET read beyond the end (EOF only: the buffer is still read)
+        self.input_ended = False  # INPUT # met a Ctrl-Z: the end, until the next GET or PUT
         self.position = 0  # the buffer's byte PRINT # writes or INPUT # reads next (FD_OPS)
         self.given_back: str | None = None  # a character INPUT # gave back (F_BAKC)
         self.stream = RecordStream(self)
@@ -179,6 +180,7 @@ class RandomFile:
         self.handle.seek((n - 1) * self.length_of_record)
         data = self.handle.read(self.length_of_record)
         self.past_end = len(data) < self.length_of_record
+        self.input_ended = False
         self.position = 0  # DSKRND clears FD_OPS; the column (F_POS) stays
         self.buffer[:] = data + bytes(self.length_of_record - len(data))
         self.last = n
@@ -194,7 +196,7 @@ class RandomFile:
         self.handle.seek(start)
         self.handle.write(self.buffer)
         self.last = n
-        self.past_end = False
+        self.past_end = self.input_ended = False
         self.position = 0
 
     # -- PRINT #, WRITE #, INPUT #, LINE INPUT #, INPUT$ through the record buffer
@@ -233,21 +235,23 @@ class RandomFile:
 
     def next(self) -> str | None:
         """The next character of the buffer, or None at the file's end (GIO86.ASM
-        ``INCHSI``): a character given back comes first; a file whose last GET read beyond
-        its end (its ``F_ORCT`` 0) is at its end; else GIODSK.ASM ``DSKSIN``: the byte at the
-        position (``FOVCHK``: at the record's end ``FIELD overflow``), and a Ctrl-Z is the
-        end, from then on (``INCEOF``) until the next GET or PUT."""
+        ``INCHSI``): a character given back comes first; else GIODSK.ASM ``DSKSIN``: the byte
+        at the position (``FOVCHK``: at the record's end ``FIELD overflow``), and a Ctrl-Z is
+        the end, from then on (``INCEOF``) until the next GET or PUT.  A GET that read beyond
+        the file's end leaves zero bytes to read, not the end: a real GW-BASIC recorded
+        FIELD overflow there (PC-BASIC's FLDOVFL test; PC-BASIC 2.0.8 agrees), where the
+        source's ``F_ORCT`` of 0 would say Input past end."""
         if self.given_back is not None:
             ch, self.given_back = self.given_back, None
             return ch
-        if self.past_end:
+        if self.input_ended:
             return None
         if self.position >= self.length_of_record:
             raise error_for(FIELD_OVERFLOW)
         ch = chr(self.buffer[self.position])
         self.position += 1
         if ch == END_OF_FILE:
-            self.past_end = True
+            self.input_ended = True
             return None
         return ch
 
@@ -270,7 +274,7 @@ class RandomFile:
     def at_end(self) -> bool:
         """EOF: the last GET read beyond the end, or an input met a Ctrl-Z; not while a
         character is given back (GIO86.ASM ``EOF`` tests ``FL_BKC`` first)."""
-        return self.past_end and self.given_back is None
+        return (self.past_end or self.input_ended) and self.given_back is None
 
     def length(self) -> int:
         self.handle.flush()
