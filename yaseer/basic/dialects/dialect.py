@@ -48,6 +48,16 @@ COMMAND_WORDS = ("RUN", "LIST", "LLIST", "LOAD", "SAVE", "NEW", "EDIT", "RENUM",
 # ... and the text screen's (yaseer/basic/machine/display.py) and keyboard's
 SCREEN_WORDS = ("LOCATE", "CSRLIN", "COLOR", "SCREEN", "VIEW", "INKEY$")
 
+# The devices GW-BASIC opens by name (machine/device_files.py): its own (GIOTBL.ASM's
+# SCRN, KYBD, CONS, LPTn, CASn, COMn, with a colon) and DOS's (without)
+GW_DEVICES = (
+    ("SCRN:", "screen"), ("LPT1:", "printer"), ("KYBD:", "keyboard"), ("CONS:", "screen"), ("LPT2:", "absent"),
+    ("LPT3:", "absent"), ("CAS1:", "absent"), ("COM1:", "absent"), ("COM2:", "absent"),
+    ("CON", "screen"), ("NUL", "null"), ("PRN", "printer"), ("LPT1", "printer"), ("LPT2", "absent"),
+    ("LPT3", "absent"), ("AUX", "absent"), ("COM1", "absent"), ("COM2", "absent"), ("COM3", "absent"),
+    ("COM4", "absent"), ("CLOCK$", "absent"),
+)
+
 FIELDS = (
     "name",  # str: casio, gw
     "keyword_first",  # bool
@@ -108,10 +118,11 @@ FIELDS = (
     "input_answer_first",  # bool: False
     "dim_name_alone_scalar",  # bool: False
     "dim_after_use_duplicate",  # bool: False
+    "device_files",  # tuple[tuple[str, str], ...]: ()
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None, False, (), False, False, False, False, False, False)
+            None, False, False, True, False, None, False, (), False, False, False, False, False, False, ())
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -253,6 +264,10 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         ends there; docs/compatibility.md).
         ``file_devices``: device names a file name may start with that mean the
         program's one directory (casio: ``CAS0:``, ``CAS1:``, the cassette).
+        ``device_files``: ``(name, kind)`` pairs, the devices OPEN knows by name
+        (machine/device_files.py): ``NAME:`` the BASIC's own (GW-BASIC's GIOTBL.ASM table;
+        another name with a colon after two or more characters is ``Bad file name``),
+        ``NAME`` DOS's, whatever extension follows, and never made a file of the directory.
 
     Start-up environment
         ``angle``: ``"DEG"``, ``"RAD"`` (or, after ANGLE 2, ``"GRA"``), the unit of SIN COS
@@ -399,7 +414,7 @@ GW = Dialect(
     for_array_elements=False, untrapped_errors_noted=True,
     using_digits=24, else_alone_skips=True, saves_going_on=("", "P"), using_each_value=True,
     delete_needs_last_line=True, eof_of_file_zero=True, input_answer_first=True, dim_name_alone_scalar=True,
-    dim_after_use_duplicate=True,
+    dim_after_use_duplicate=True, device_files=GW_DEVICES,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

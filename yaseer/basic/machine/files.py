@@ -26,7 +26,7 @@ from yaseer.basic.errors import (
     BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, DEVICE_IO_ERROR, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
     FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, error_for, not_emulated,
 )
-from yaseer.basic.machine import item_reading, random_files
+from yaseer.basic.machine import device_files, item_reading, random_files
 from yaseer.basic.machine.random_files import END_OF_FILE  # Ctrl-Z
 from yaseer.basic.machine.runtime import cint
 from yaseer.basic.machine.sandbox import Sandbox, identity_of
@@ -164,11 +164,14 @@ def file_byte(n) -> int:
 class FileTable:
     """The open files of a machine, by file number, all inside one :class:`Sandbox`."""
 
-    def __init__(self, sandbox: Sandbox | None = None, devices: tuple = (), absent: dict | None = None):
+    def __init__(self, sandbox: Sandbox | None = None, devices: tuple = (), absent: dict | None = None,
+                 device_files: tuple = ()):
         self.sandbox = sandbox or Sandbox()
         self.open_files: dict[int, OpenFile] = {}
         self.devices = devices  # device names that mean the sandbox ("CAS0:" on the Casio)
         self.absent = absent or {}  # device name -> what it is, for devices yaseer does not have
+        self.device_files = device_files  # Dialect.device_files: the devices OPEN knows by name
+        self.device_streams: dict = {}  # the machine's "screen" and "printer" streams, for those devices
 
     @staticmethod
     def number(n) -> int:
@@ -188,6 +191,10 @@ class FileTable:
         k = self.number(n)
         if k in self.open_files:
             raise error_for(FILE_ALREADY_OPEN)
+        device = device_files.device_kind(name, self.device_files) if self.device_files else None
+        if device is not None:  # never a file of the directory
+            self.open_files[k] = device_files.open_device(device, kind, self.device_streams)
+            return
         size = random_files.record_length(length) if kind == "R" else None
         sandbox = self.sandbox
         name = sandbox.dos_name(self._local_name(name))

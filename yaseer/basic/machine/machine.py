@@ -53,6 +53,7 @@ from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401 
 from yaseer.basic.dialects import dialect as dialects
 from yaseer.basic.machine import gwfunctions, memory_model, runtime, string_space, val_numbers
 from yaseer.basic.machine.clock import Clock
+from yaseer.basic.machine.device_files import reserved_names
 from yaseer.basic.machine.files import FileTable, Sandbox, file_byte
 from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
     BasicError, OutputError, BREAK, INPUT_PAST_END, NO_RESUME, OUT_OF_DATA, OUT_OF_MEMORY, STRING_TOO_LONG, SYNTAX_ERROR,
@@ -293,7 +294,10 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self._types_as_statements = None  # the program of area 0 a RUN n entered past its DEFs (_run_types)
         # the program's sequential files, all in one directory (``files``; default the current one)
         words = self.dialect.words
-        self.files = FileTable(Sandbox(files), self.dialect.file_devices, words.absent_devices if words else None)
+        devices = self.dialect.device_files
+        self.files = FileTable(Sandbox(files, reserved_names(devices)), self.dialect.file_devices,
+                               words.absent_devices if words else None, devices)
+        self.files.device_streams.update(screen=self.screen, printer=self.printer)
         self.clock = Clock()  # TIMER, DATE$, TIME$; DATE$ = and TIME$ = move it
         self._output_eof = bool(words and words.output_eof)  # casio: EOF of an output file is 0 (EOF.md item 4)
         self.gosub_levels = words.gosub_levels if words else None  # casio: 96 (GOSUB.md item 2)

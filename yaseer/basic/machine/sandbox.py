@@ -48,8 +48,15 @@ def _os_error(error: OSError) -> BasicError:
 class Sandbox:
     """The one directory a program's files live in (see the module docstring)."""
 
-    def __init__(self, root: str | os.PathLike | None = None):
+    def __init__(self, root: str | os.PathLike | None = None, reserved: frozenset = frozenset()):
         self._root = os.fspath(root) if root is not None else os.getcwd()
+        self.reserved = reserved  # names of devices (DOS's CON, NUL ...), whatever the extension: never made
+
+    def _not_reserved(self, name: str) -> None:
+        """Refuse to make a file named as a device (``Path/File access error``): on DOS the
+        name is the device, so a program meaning it must never leave such a file behind."""
+        if self.reserved and self.parts(name)[-1].split(".", 1)[0].rstrip().upper() in self.reserved:
+            raise error_for(PATH_FILE_ACCESS_ERROR)
 
     # ---------------------------------------------------------------- names
     @staticmethod
@@ -218,6 +225,7 @@ class Sandbox:
     def open_output(self, name: str, readable: bool = False) -> int:
         """A descriptor of file ``name`` for writing (``readable``: also reading), created new
         (``O_CREAT | O_EXCL``) or an existing regular file with one name; nothing is truncated."""
+        self._not_reserved(name)
         directory, leaf = self._walk(name)
         access = os.O_RDWR if readable else os.O_WRONLY
         try:
@@ -275,6 +283,7 @@ class Sandbox:
     def rename(self, old: str, new: str) -> None:
         """NAME old AS new (the names themselves, never what a link points to)."""
         self.identity(old)
+        self._not_reserved(new)
         source, old_leaf = self._walk(old, follow_last=False)
         try:
             target, new_leaf = self._walk(new, follow_last=False)

@@ -42,6 +42,7 @@ class OutputStream:
     """A text stream with its current column; ``width`` None never wraps (see module docstring)."""
 
     row_waits = True  # a full row waits for its next character to wrap (a file's line never does)
+    file = None  # a random file whose record buffer this writes into (PRINT # to a device: none)
 
     def __init__(self, stream: TextIO, width: int | None = None, moves_items: bool = True):
         self.stream = stream
@@ -145,7 +146,6 @@ class FileStream(OutputStream):
     disk driver itself never breaks a line (GIODSK.ASM; as PC-BASIC 2.0.8 writes it)."""
 
     row_waits = False
-    file = None  # a random file whose record buffer this writes into (random_files.RecordStream)
 
     def write(self, text: str) -> None:
         if not text:
