@@ -246,7 +246,9 @@ def test_a_ctrl_z_ends_the_input_and_the_file_until_the_next_get(tmp_path):
 def test_a_character_given_back_is_read_first_even_after_a_get(tmp_path):
     """After a closing quote INPUT # reads on over blanks; a character that is neither a comma
     nor a CR is given back (GIO86.ASM BAKCHR keeps it in the file's block, FL_BKC): the next
-    item starts with it, also after a GET, and EOF is 0 while it waits (GIO86.ASM EOF)."""
+    item starts with it, also after a GET, and EOF is 0 while it waits (GIO86.ASM EOF); after
+    a GET beyond the end the item then reads on through the zero bytes to FIELD overflow (as
+    a real GW-BASIC recorded a read after such a GET: tests/test_gw_random_beyond_end.py)."""
     assert run(tmp_path, ['OPEN "R", 1, "R.DAT", 16: FIELD 1, 16 AS A$',
                           'LSET A$ = CHR$(34) + "ab" + CHR$(34) + " x,": PUT #1, 1: GET #1, 1',
                           'INPUT #1, X$: PRINT X$', 'GET #1, 1: INPUT #1, Y$: PRINT Y$']) \
@@ -254,7 +256,7 @@ def test_a_character_given_back_is_read_first_even_after_a_get(tmp_path):
     assert run(tmp_path, ['OPEN "R", 1, "R.DAT", 16: FIELD 1, 16 AS A$',
                           'LSET A$ = "12 x": PUT #1, 1: GET #1, 1: INPUT #1, N: PRINT N',
                           'GET #1, 9: PRINT EOF(1): INPUT #1, V$: PRINT V$; EOF(1)']) \
-        == " 12 \n 0 \nx-1 \n"
+        == " 12 \n 0 \nE 50  40 \n-1 \n"
 
 
 def test_field_overflow_is_one_line_naming_the_line(tmp_path):
