@@ -2,9 +2,11 @@
 GWMAIN.ASM SCNLIN makes a left-out first line 0 and a left-out last line 65530, FNDLIN finds
 the first line from the first number on, then must find the last number exactly (GWLIST.ASM
 DELETE: "MUST HAVE A MATCH ON THE UPPER BOUND", else FCERR), and the first line found must
-come before the line after the last.  So ``DELETE`` alone, ``DELETE -``, ``DELETE 20-`` and a
-range ending on a missing line are ``Illegal function call``; FIVEO.ASM CHAIN reads its DELETE
-option the same way.
+come before the line after the last.  So a range ending on a missing line is ``Illegal
+function call``; FIVEO.ASM CHAIN reads its DELETE option the same way.  A DELETE whose last
+line is left out (``DELETE``, ``DELETE -``, ``DELETE 20-``) deletes to the program's end: a
+real GW-BASIC 3.23 recorded ``DELETE 60-`` doing so (PC-BASIC's DELETE test), where the
+source would refuse it; CHAIN's option keeps the exact match (PC-BASIC 2.0.8 agrees).
 
 The expectations come from the source's steps written below over a list of line numbers
 (:func:`source_delete`); PC-BASIC 2.0.8 deletes every line in such a range instead (and
@@ -38,7 +40,9 @@ def source_delete(lines: list[int], first: int | None, last: int | None) -> list
         return k, k < len(lines) and lines[k] == n
 
     start, _ = find(0 if first is None else first)
-    end, exact = find(ABOVE_EVERY_LINE if last is None else last)
+    if last is None:  # (the recorded machine: to the program's end)
+        return lines[:start] if start < len(lines) else None
+    end, exact = find(last)
     if not exact or not start < end + 1:  # JAE FCERRG; CMP BX,DX / JNAE
         return None
     return lines[:start] + lines[end + 1:]
@@ -89,17 +93,28 @@ def test_generated_delete_ranges_in_the_session(pc, tmp_path):
             assert clean_output(pc_session.execute("LIST")) == "".join(f"{n} PRINT {n}\n" for n in left)
 
 
-@pytest.mark.parametrize("command", ["DELETE", "DELETE -", "DELETE 20-", "DELETE 20-25", "DELETE -25",
-                                     "DELETE 10-40", "DELETE 30-20", "DELETE 25"])
+@pytest.mark.parametrize("command", ["DELETE 20-25", "DELETE -25", "DELETE 10-40", "DELETE 30-20", "DELETE 25"])
 def test_a_range_not_ending_on_a_line_is_refused(tmp_path, command):
     """In the session: Illegal function call and nothing deleted (PC-BASIC 2.0.8 deletes
-    everything for ``DELETE`` and ``DELETE -``, and the lines in the others but 30-20 and 25)."""
+    the lines in the others but 30-20 and 25)."""
     session, shown = gw_session(tmp_path)
     typed(session, shown, ["10 PRINT 1", "20 PRINT 2", "30 PRINT 3"])
     assert typed(session, shown, [command, "LIST"]) == "Illegal function call\n10 PRINT 1\n20 PRINT 2\n30 PRINT 3\n"
 
 
-@pytest.mark.parametrize("command", ["DELETE", "DELETE 20-", "DELETE 20-25", "DELETE -"])
+@pytest.mark.parametrize("command", ["DELETE", "DELETE -", "DELETE 20-", "DELETE 60-", "DELETE 25-"])
+def test_an_open_range_deletes_to_the_end_as_recorded(tmp_path, command):
+    """``DELETE 60-`` deleted lines 60 to the end on a real GW-BASIC (PC-BASIC's DELETE test);
+    so does every range with its last line left out, from its first line found on."""
+    session, shown = gw_session(tmp_path)
+    typed(session, shown, ["10 PRINT 1", "20 PRINT 2", "30 PRINT 3"])
+    first = int(command[7:-1] or 0) if command != "DELETE" else 0
+    left = "".join(f"{n} PRINT {n // 10}\n" for n in (10, 20, 30) if n < first)
+    expected = ("Illegal function call\n10 PRINT 1\n20 PRINT 2\n30 PRINT 3\n" if first > 30 else left)
+    assert typed(session, shown, [command, "LIST"]) == expected
+
+
+@pytest.mark.parametrize("command", ["DELETE 20-25", "DELETE -25"])
 def test_a_program_s_delete_is_refused_the_same_way(tmp_path, command):
     """A program's DELETE: the error is the statement's (ON ERROR traps it, ERR 5; before,
     ``DELETE`` alone was Missing operand and the others deleted lines)."""

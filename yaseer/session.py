@@ -440,7 +440,7 @@ class Session:
             raise BasicError("Syntax error", SYNTAX_ERROR)
         self._refuse_password()  # a program write (PASS.md item 5)
         if exact:
-            doomed = deleted_lines(self.program, *given_range(argument))
+            doomed = deleted_lines(self.program, *given_range(argument), open_end=True)
         else:
             first, last = parse_range(argument)
             doomed = lines_in_range(self.program, first, last)

@@ -137,7 +137,7 @@ class Chaining:
             self.program_protected = False
             raise ChainTo({}, False, None, True, None, False)
         elif name == "DELETE":  # its range must end on a line (GWLIST.ASM DELETE: source/line_ranges.py)
-            doomed = deleted_lines(program, *argument)
+            doomed = deleted_lines(program, *argument, open_end=True)
             raise ChainTo({n: t for n, t in program.items() if n not in doomed}, False, None, True, None, False)
         elif name == "EDIT" and words is not None and words.edit_lists_from:
             self._list_lines(program, (argument, None), 0)  # the edit mode shows the program from there
