@@ -423,18 +423,20 @@ def test_chain_s_delete_range_and_a_direct_error_as_the_source_reads_dot(tmp_pat
     assert typed(session, shown, ["ERROR 5", "LIST ."])[-len("10 ON ERROR GOTO 100\n"):] == "10 ON ERROR GOTO 100\n"
 
 
-@pytest.mark.parametrize("dialect", ["gw", "casio"])
-def test_an_empty_program_name_is_a_bad_file_name(tmp_path, dialect):
-    """SAVE, LOAD, RUN, CHAIN and MERGE of "" (or of a device and nothing) are ``Bad file name``,
-    as OPEN's "" is, and write nothing: GW-BASIC's NAMSCN (GIO86.ASM) makes the name eight
-    blanks, NAMBAS adds BAS and DOS refuses the name (PC-BASIC 2.0.8 says Bad file number; a
-    file called ``.BAS``, which yaseer used to write, is a hidden file nobody asked for)."""
+@pytest.mark.parametrize("dialect, code", [("gw", 52), ("casio", 64)])
+def test_an_empty_program_name_names_nothing(tmp_path, dialect, code):
+    """SAVE, LOAD, RUN, CHAIN and MERGE of "" (or of a device and nothing, or of blanks) are
+    the error OPEN's "" gives, and write nothing: in gw Bad file number, as a real GW-BASIC
+    recorded ``SAVE ""`` (PC-BASIC's SAVE test; PC-BASIC 2.0.8 agrees), in casio Bad file
+    name (Dialect.nameless_file_error).  A file called ``.BAS`` or ``" .BAS"``, which yaseer
+    used to write, is a file nobody asked for."""
     device = "" if dialect == "gw" else "CAS0:"
-    statements = [f'SAVE "{device}"', 'SAVE ""', 'SAVE "",A', 'LOAD ""', 'LOAD "",R', 'RUN ""', 'OPEN "O",1,""']
+    statements = [f'SAVE "{device}"', 'SAVE ""', 'SAVE "",A', 'LOAD ""', 'LOAD "",R', 'RUN ""', 'OPEN "O",1,""',
+                  'SAVE " "', 'OPEN "O",1,"  .TXT"']
     if dialect == "gw":  # (words casio has not)
-        statements += ['SAVE "",P', 'CHAIN ""', 'CHAIN MERGE "",10', 'MERGE ""']
+        statements += ['SAVE "",P', 'CHAIN ""', 'CHAIN MERGE "",10', 'MERGE ""', 'OPEN CHR$(0) FOR OUTPUT AS 1']
     lines = [f"{10 * (k + 2)} {s}" for k, s in enumerate(statements)]
     source = "10 ON ERROR GOTO 900\n" + "\n".join(lines) + '\n800 PRINT "end": END\n900 PRINT ERR;: RESUME NEXT\n'
     out = yaseer_run(source, tmp_path, dialect)
-    assert out == " 64 " * len(statements) + "end\n"
+    assert out == f" {code} " * len(statements) + "end\n"
     assert sorted(p.name for p in tmp_path.iterdir()) == []

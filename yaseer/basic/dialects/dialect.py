@@ -119,10 +119,11 @@ FIELDS = (
     "dim_name_alone_scalar",  # bool: False
     "dim_after_use_duplicate",  # bool: False
     "device_files",  # tuple[tuple[str, str], ...]: ()
+    "nameless_file_error",  # int: 64 (Bad file name)
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None, False, (), False, False, False, False, False, False, ())
+            None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -326,6 +327,12 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         using it (its implicit size) is ``Duplicate Definition`` (BIPTRG.ASM: PTRGET with
         DIMFLG set finds the array: "doubly dimensioned"; PC-BASIC 2.0.8 agrees); False
         (casio): DIM replaces the implicit array.
+        ``nameless_file_error``: the error code of a file or program name that names nothing:
+        empty, blanks before any ``.``, or starting with CHR$(0) (DOS reads the name up to a
+        NUL and drops trailing blanks).  GW: 52, Bad file number, as a real GW-BASIC recorded
+        ``SAVE ""`` and ``OPEN CHR$(0) ...`` in PC-BASIC's SAVE and OPEN_null tests
+        (PC-BASIC 2.0.8 agrees for ``""``); casio: 64, Bad file name (the manual's nameless
+        file is the cassette's, which yaseer has not).  Such a name never makes a file.
         ``handler_must_resume``: True when running off the program's last line inside an
         error handler is the error No RESUME in the last line run (GWMAIN.ASM PRGEND: ONEFLG
         still set); END leaves a handler quietly in both dialects. False (casio, whose RESUME
@@ -414,7 +421,7 @@ GW = Dialect(
     for_array_elements=False, untrapped_errors_noted=True,
     using_digits=24, else_alone_skips=True, saves_going_on=("", "P"), using_each_value=True,
     delete_needs_last_line=True, eof_of_file_zero=True, input_answer_first=True, dim_name_alone_scalar=True,
-    dim_after_use_duplicate=True, device_files=GW_DEVICES,
+    dim_after_use_duplicate=True, device_files=GW_DEVICES, nameless_file_error=52,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

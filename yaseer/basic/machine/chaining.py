@@ -25,8 +25,9 @@ from collections import namedtuple
 
 from yaseer.basic.machine import memory_model
 from yaseer.basic.machine.files import read_program
+from yaseer.basic.machine.sandbox import nameless
 from yaseer.basic.errors import (
-    BAD_FILE_MODE, BAD_FILE_NAME, BasicError, ILLEGAL_DIRECT, ILLEGAL_FUNCTION_CALL, UNDEFINED_LINE, error_for,
+    BAD_FILE_MODE, BasicError, ILLEGAL_DIRECT, ILLEGAL_FUNCTION_CALL, UNDEFINED_LINE, error_for,
     password_protected,
 )
 from yaseer.basic.machine.signals import ProgramEnd
@@ -218,13 +219,13 @@ class Chaining:
     def _program_name(self, name: str) -> str:
         """A program file's name as LOAD, SAVE, CHAIN read it: without the device that means
         the program's directory (the Casio's ``CAS0:``), ``.BAS`` added to a name without
-        ``.`` (GIO86.ASM NAMBAS; ``GOSUB "name"`` finds it too: program_files.py).  An empty
-        name is ``Bad file name``, as OPEN's (GW-BASIC hands DOS a name of blanks, which DOS
-        refuses; a file called ``.BAS`` would be a hidden file no user meant; the Casio's
-        nameless file is the cassette's, which yaseer has not)."""
+        ``.`` (GIO86.ASM NAMBAS; ``GOSUB "name"`` finds it too: program_files.py).  A name
+        that names nothing (sandbox.nameless) is the dialect's error for it, as OPEN's
+        (Dialect.nameless_file_error): a file called ``.BAS`` would be a hidden file no user
+        meant."""
         name = self.files._local_name(name)
-        if not name:
-            raise error_for(BAD_FILE_NAME)
+        if nameless(name):
+            raise error_for(self.dialect.nameless_file_error)
         return name if "." in name else name + ".BAS"
 
     def _list_lines(self, program: dict, line_range, device: int) -> None:

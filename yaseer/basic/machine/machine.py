@@ -295,7 +295,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         # the program's sequential files, all in one directory (``files``; default the current one)
         words = self.dialect.words
         devices = self.dialect.device_files
-        self.files = FileTable(Sandbox(files, reserved_names(devices)), self.dialect.file_devices,
+        self.files = FileTable(Sandbox(files, reserved_names(devices), self.dialect.nameless_file_error),
+                               self.dialect.file_devices,
                                words.absent_devices if words else None, devices)
         self.files.device_streams.update(screen=self.screen, printer=self.printer)
         self.clock = Clock()  # TIMER, DATE$, TIME$; DATE$ = and TIME$ = move it

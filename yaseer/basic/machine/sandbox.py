@@ -45,12 +45,22 @@ def _os_error(error: OSError) -> BasicError:
     return error_for(PATH_FILE_ACCESS_ERROR)
 
 
+def nameless(name: str) -> bool:
+    """Does ``name`` name nothing as DOS reads it: nothing but blanks up to a NUL, or only
+    blanks before its first ``.`` (DOS drops a name's trailing blanks: ``"  .TXT"``)?"""
+    head = name.split("\x00", 1)[0]
+    stem = head.split(".", 1)[0]
+    return not head.strip(" ") or (stem != "" and not stem.strip(" "))
+
+
 class Sandbox:
     """The one directory a program's files live in (see the module docstring)."""
 
-    def __init__(self, root: str | os.PathLike | None = None, reserved: frozenset = frozenset()):
+    def __init__(self, root: str | os.PathLike | None = None, reserved: frozenset = frozenset(),
+                 nameless: int = BAD_FILE_NAME):
         self._root = os.fspath(root) if root is not None else os.getcwd()
         self.reserved = reserved  # names of devices (DOS's CON, NUL ...), whatever the extension: never made
+        self.nameless = nameless  # the error of a name that names nothing (Dialect.nameless_file_error)
 
     def _not_reserved(self, name: str) -> None:
         """Refuse to make a file named as a device (``Path/File access error``): on DOS the
@@ -59,10 +69,12 @@ class Sandbox:
             raise error_for(PATH_FILE_ACCESS_ERROR)
 
     # ---------------------------------------------------------------- names
-    @staticmethod
-    def parts(name: str) -> list[str]:
-        """The components of ``name`` checked as text (see the module docstring)."""
-        if not name or "\x00" in name:
+    def parts(self, name: str) -> list[str]:
+        """The components of ``name`` checked as text (see the module docstring); a name
+        that names nothing (:func:`nameless`) is the sandbox's ``nameless`` error."""
+        if nameless(name):
+            raise error_for(self.nameless)
+        if "\x00" in name:
             raise error_for(BAD_FILE_NAME)
         text = name.replace("\\", "/")
         if text.startswith("/") or ":" in name:
