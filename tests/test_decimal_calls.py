@@ -330,6 +330,19 @@ def drawn_sum_site():
     return site
 
 
+def test_a_fused_sum_lists_only_the_caches_its_code_writes():
+    """The rounded number's code is dropped where the sum takes the number unrounded: its cache
+    is not among the model's caches (they are the ones the code's writers name)."""
+    from yaseer.basic.compile.number_models import _SCALE_WRITTEN
+
+    model = DecimalNumbers()
+    draw, _ = model.call("RND", "_rndf", [], [], "n")
+    code, _ = model.arithmetic("+", "a", "n", draw, "n")
+    other, _ = model.call("RND", "_rndf", [], [], "n")  # an RND left alone keeps its cache
+    assert sorted(model.cache_bases) == sorted(set(_SCALE_WRITTEN.findall(code + other)))
+    assert len(model.cache_bases) == 2
+
+
 def test_a_sum_with_rnd_is_the_sum_with_the_rounded_number():
     """``a + RND`` (the number drawn added unrounded, one rounding) against the sum of ``a`` and
     the number rounded to 12 digits: decimal_arith's add of ``_d13``'s number (the code before),

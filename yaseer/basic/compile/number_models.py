@@ -599,7 +599,7 @@ class DecimalNumbers(PlainNumbers):
         self._temps = 0
         self._exact: dict[str, tuple] = {}  # code with an exact form -> (its tree, its scaled code)
         self.cache_bases: list[str] = []  # the scale caches written (see _scaled)
-        self._draws: set[str] = set()  # the codes of RND's rounded number (see _drawn_sum)
+        self._draws: dict[str, str] = {}  # the code of RND's rounded number -> its cache (see _drawn_sum)
         self.caching = True  # (off: the routines alone)
 
     def literal(self, value, kind: str) -> tuple[str, str]:
@@ -612,8 +612,12 @@ class DecimalNumbers(PlainNumbers):
         is exact (:func:`_exact_form`), else inline through a scale cache (:meth:`_scaled`)."""
         if not self.caching:
             return f"{self._OPERATIONS[op]}({left}, {right})", "n"
-        if op == "+" and left.isidentifier() and (right in self._draws or f"({right})" in self._draws):
-            return self._drawn_sum(left), "n"
+        if op == "+" and left.isidentifier():
+            draw = self._draws.get(right) or self._draws.get(f"({right})")
+            if draw is not None:
+                if draw in self.cache_bases:  # (the rounded number's code, and its cache, go unused)
+                    self.cache_bases.remove(draw)
+                return self._drawn_sum(left), "n"
         (left_tree, left_scaled), (right_tree, right_scaled) = self._operand(left), self._operand(right)
         if left_tree is not None and right_tree is not None:
             tree = (op, left_tree, right_tree)
@@ -721,7 +725,7 @@ class DecimalNumbers(PlainNumbers):
         self.cache_bases.append(cache)
         if helper == "_rndf":  # the number drawn, rounded as ``_d13`` (decimal_arith.rounded) rounds it
             code = _drawn_rounded(cache)
-            self._draws.add(code)
+            self._draws[code] = cache
             return code, "n"
         else:
             x = codes[0]
