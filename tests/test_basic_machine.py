@@ -645,11 +645,12 @@ def test_width_40_and_bad_widths():
     assert error_of("10 WIDTH 50", dialect="gw") == "Illegal function call in 10"
 
 
-def test_gw_number_before_comma_drops_its_blank_at_a_zone_end():
-    """GW-BASIC's source (GIO86.ASM, MODCOM): a number a comma follows that ends one
-    column before a zone loses its trailing blank; PC-BASIC 2.0.8 keeps it and prints
-    "ABCD 12345678" + 15 blanks + "5"."""
-    assert gw_text('10 PRINT "ABCD";12345678,5') == "ABCD 12345678 " + " 5 \n"
+def test_gw_number_before_comma_keeps_its_blank_at_a_zone_end():
+    """A number a comma follows that ends one column before a zone keeps its trailing blank,
+    so the comma moves a whole zone, as a real GW-BASIC 3.23 recorded it (PC-BASIC's PRFLOAT
+    test: the item after `` 7.369805E-02`` at column 29) and PC-BASIC 2.0.8 prints it; the
+    published source's MODCOM would drop the blank (column 15)."""
+    assert gw_text('10 PRINT "ABCD";12345678,5') == "ABCD 12345678" + " " * 15 + " 5 \n"
     assert run_text('10 PRINT "ABCD";12345678,5') == "ABCD 12345678" + " " * 15 + " 5 \n"
 
 

@@ -9,8 +9,7 @@ cut into rows of the screen width before comparing (:func:`screen_rows`).
 
 Kept differences, where GW-BASIC's source decides (docs/compatibility.md), are not
 generated: ``TAB`` of a negative number (column 1 in GIO86.ASM ``TABER``; PC-BASIC
-wraps it modulo the width) and a number directly followed by ``,`` (GIO86.ASM
-``MODCOM`` may drop its blank; PC-BASIC never does).  Programs these tests once
+wraps it modulo the width).  Programs these tests once
 failed on are kept in tests/corpus/gw/ with PC-BASIC's rows (run by
 tests/test_differential_programs.py).
 """

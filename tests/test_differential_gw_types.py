@@ -348,8 +348,7 @@ def test_val_reads_its_text_as_a_double_as_the_source(pc):
     (:func:`read_as_double`), which it reads as FINDBL does.
     The operations are exact (by 2, 4, 0.5), since MBF's 56-bit doubles may round a 16th
     digit otherwise, and a double made from a single is compared, not printed (PC-BASIC
-    rounds its 16th digit differently: ``A! = .60326: B# = A!``); no comma after a
-    13-character number, whose blank GW's MODCOM drops and PC-BASIC keeps."""
+    rounds its 16th digit differently: ``A! = .60326: B# = A!``)."""
     cases, reference = val_cases(random.Random(base_seed() + 17), case_count(200))
     bad = differing_rows(pc, cases, reference=reference)
     assert not bad, f"{len(bad)} of {len(cases)} differ, e.g. {bad[:5]}"

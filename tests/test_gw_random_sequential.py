@@ -62,9 +62,7 @@ def random_number(rng: random.Random) -> str:
 
 
 def print_items(rng: random.Random) -> tuple[str, int]:
-    """A PRINT # list and the most bytes it can write.  A comma follows only a string (after
-    a number GW drops the number's blank where it ends just before a zone, GIO86.ASM MODCOM,
-    and PC-BASIC 2.0.8 keeps it: docs/compatibility.md)."""
+    """A PRINT # list and the most bytes it can write.  A comma follows only a string."""
     text, most, after_string = "", 2, False
     for k in range(rng.randint(1, 4)):
         if k:

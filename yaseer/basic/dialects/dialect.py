@@ -181,9 +181,10 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         ``printer_width``: where LPRINT wraps (``None`` never; GW-BASIC's printer:
         80, changed with ``WIDTH LPRINT n``).
         ``comma_trims_number``: True drops the trailing blank of a number a
-        ``,`` follows when the number ends one column before a zone (GW-BASIC's
-        source, GIO86.ASM ``MODCOM``), so the comma moves one column instead of
-        a whole zone.
+        ``,`` follows when the number ends one column before a zone (the published
+        GW-BASIC source, GIO86.ASM ``MODCOM``), so the comma moves one column instead
+        of a whole zone.  No dialect sets it: a real GW-BASIC 3.23 keeps the blank
+        (PC-BASIC's recorded PRFLOAT and DATEFN tests), as PC-BASIC 2.0.8 does.
 
         ``random``: the class of RND's generator (yaseer/basic/arithmetic/randomness.py):
         ``RepeatableRandom`` (Python's, seed 0 at RUN) or ``GwRandom``
@@ -409,7 +410,7 @@ GW = Dialect(
     typed_numbers=True, print_digits=7,
     width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
     implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,
-    errors_when_reached=True, comma_trims_number=True, for_binds_next=True, number_reading=MBF_READING,
+    errors_when_reached=True, for_binds_next=True, number_reading=MBF_READING,
     printer_width=80, joins_unnumbered_lines=False, names_missing_line=False, spaced_relations=True,
     bracket_subscripts=True, display=(80, 25, 25), controls=tuple(sorted(GW_CONTROLS.items())), screen=GW_SCREEN,
     string_length=255,  # a string descriptor holds its length in one byte
