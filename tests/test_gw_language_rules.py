@@ -96,6 +96,15 @@ AGREED = {
     "line input alone": '10 LINE INPUT\n',
     # DEF wants FN, SEG or USR, no operand (GWEVAL.ASM DEF: SYNCHR for SEG's letters)
     "def alone": '10 DEF\n20 PRINT "no"\n',
+    # DEF SEG [= s] sets the segment PEEK and POKE would use, DEF USR[n] = a a machine-code
+    # routine's address (GWEVAL.ASM DEF, DEFUSR: FRMQNT, an unsigned 16-bit number); USR
+    # cannot run machine code: Illegal function call after its argument is read
+    "def seg and def usr": ('10 ON ERROR GOTO 100\n20 DEF SEG: DEF SEG = &HB800: DEF SEG=-1: DEF SEG = 65535.4\n'
+                            '30 DEFSEG = 7: PRINT DEFSEG; SEG\n40 DEF USR0 = &H1000: DEF USR = 5: DEF USR9 = -32768\n'
+                            '50 DEF SEG = 65536\n60 DEF USR3 = 70000!\n70 DEF SEG = "A"\n80 X = USR5(2)\n'
+                            '90 X = USR("A"): END\n100 PRINT ERR; ERL: RESUME NEXT\n'),
+    "def usr with two digits": '10 DEF USR10 = 5\n',
+    "usr of a bad argument": '10 X = USR(1 / 0) + USR(LOG(-1))\n',
     "def alone trapped": '10 ON ERROR GOTO 100\n20 DEF: PRINT "no"\n30 END\n100 PRINT ERR; ERL: RESUME NEXT\n',
     "date$ = alone": '10 DATE$ =\n',
     "time$ = alone": '10 TIME$=\n',
@@ -267,6 +276,9 @@ CUT_STATEMENTS = [
     # INPUT asks and reads its answer (an Enter) before it reads its names (GWMAIN.ASM INPUT:
     # SINLIN, then PTRGTN); INPUT # finds its file first; LINE INPUT reads its name first
     'INPUT #1, A', 'INPUT;"Q";A, B', 'INPUT "Q", A', 'LINE INPUT;"Q";A$',
+    # DEF reads S, E, G letter by letter, then an = and a number if anything follows
+    # (GWEVAL.ASM DEF); DEF USR its one-digit number (SCNUSR); USR its ( and argument (USRFN)
+    'DEF SEG = 47104', 'DEF SEG', 'DEF USR0 = 4096', 'DEF USR = 5', 'X = USR0(1)', 'X = USR(1)',
 ]
 # Cuts where PC-BASIC 2.0.8 differs from GW-BASIC's source, which decides:
 SOURCE_DECIDED = {
@@ -389,6 +401,12 @@ def test_casio_refuses_gws_input_forms(tmp_path, name):
     if "ON ERROR" in source:
         return
     assert yaseer_run(source, tmp_path, "casio") == "Syntax error in 10\n"
+
+
+def test_def_seg_below_its_range_overflows(tmp_path):
+    """GWMAIN.ASM FRQINT takes -32768..65535 (FRMQNT for DEF SEG): -32769 is Overflow.
+    (PC-BASIC 2.0.8 sets the segment silently.)"""
+    assert yaseer_run("10 DEF SEG = -32769\n", tmp_path) == "Overflow in 10\n"
 
 
 @pytest.mark.parametrize("text", ["LINE", "LINE X", "LINE @", "LINE STEP", "LINE , 1"])

@@ -142,6 +142,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.late_errors = dialect.errors_when_reached  # a DEF FN body's errors when it is called
         self.using_each_value = dialect.using_each_value  # PRINT USING's values field by field
         self.input_answer_first = dialect.input_answer_first  # INPUT; and INPUT cut short (GW)
+        self.def_seg_usr = dialect.def_seg_usr  # DEF SEG, DEF USR (GW)
         self.for_array_elements = dialect.for_array_elements  # FOR T(2) = ... (the paper's Example 3)
         # "." in LIST, EDIT ...: GW's DOT, the machine's current_line as the statement runs
         # (Dialect.current_line_listed); else (casio) the line the statement is in
@@ -702,6 +703,13 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
 
     def stmt_Error(self, stmt, scope):
         self.emit(f"_error({self.integer(stmt.code, scope)})")
+
+    def stmt_DefMachine(self, stmt, scope):
+        """DEF SEG and DEF USR (``Dialect.def_seg_usr``): their number read and kept."""
+        if not self.def_seg_usr:
+            raise syntax_error()
+        value = "None" if stmt.value is None else self.numeric(stmt.value, scope)
+        self.emit(f"_M.define_machine({stmt.word!r}, {value})")
 
     def stmt_Randomize(self, stmt, scope):
         if stmt.seed is not None and self.kind_of(stmt.seed) == "s":

@@ -43,7 +43,7 @@ _FUNCTIONS = {
     "FRE": (("x",), "n", "_fre"), "POS": (("x",), "n", "_pos"), "LPOS": (("i",), "n", "_lpos"),
     "EOF": (("i",), "n", "_eof"), "LOF": (("i",), "n", "_lof"), "LOC": (("i",), "n", "_loc"),
     "INPUT$": (("i", "ii"), "s", "_input_chars"),
-    "PEEK": (("n",), "n", "_peek"),
+    "PEEK": (("n",), "n", "_peek"), "USR": (("x",), "n", "_usr"),
     "SCREEN": (("nn", "nnn"), "n", "_M.screen_char"),
 }
 

@@ -47,6 +47,8 @@ CHAIN_WORDS = ("CHAIN", "COMMON", "MERGE", "DELETE")
 COMMAND_WORDS = ("RUN", "LIST", "LLIST", "LOAD", "SAVE", "NEW", "EDIT", "RENUM", "AUTO", "KEY", "OFF", "SYSTEM")
 # ... and the text screen's (yaseer/basic/machine/display.py) and keyboard's
 SCREEN_WORDS = ("LOCATE", "CSRLIN", "COLOR", "SCREEN", "VIEW", "INKEY$")
+# ... and the machine-code function USR (DEF USR sets its address)
+MACHINE_WORDS = ("USR",)
 
 # The devices GW-BASIC opens by name (machine/device_files.py): its own (GIOTBL.ASM's
 # SCRN, KYBD, CONS, LPTn, CASn, COMn, with a colon) and DOS's (without)
@@ -120,10 +122,11 @@ FIELDS = (
     "dim_after_use_duplicate",  # bool: False
     "device_files",  # tuple[tuple[str, str], ...]: ()
     "nameless_file_error",  # int: 64 (Bad file name)
+    "def_seg_usr",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64)
+            None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -261,6 +264,10 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         an INPUT with no names or a list ending in a comma asks, takes the answer, then is
         Syntax error; and ``INPUT;`` / ``LINE INPUT;`` (a semicolon first: SCNSEM) leave the
         cursor after the answer.  False (casio): those forms are Syntax error.
+        ``def_seg_usr``: True (GW-BASIC) makes ``DEF SEG [= s]`` a statement (the segment
+        PEEK, POKE, BLOAD would use: GWEVAL.ASM DEF stores SAVSEG) and ``DEF USR[n] = a``
+        (the address of machine code: DEFUSR); a USR call then runs no machine code:
+        ``Illegal function call``.  False (casio): Syntax error (its DEFSEG is one word).
         ``library_forms``: True (casio) accepts what Becker's library for the
         FX-850P writes and the manual does not describe: ``THEN *`` (the program
         ends there; docs/compatibility.md).
@@ -406,7 +413,7 @@ CASIO = Dialect(
 GW = Dialect(
     name="gw", keyword_first=False, pi_keyword=False,
     own_words=("DEFINT", "DEFSNG", "DEFDBL", "DEFSTR", "XOR", "EQV", "IMP") + RANDOM_FILE_WORDS + CHAIN_WORDS
-    + COMMAND_WORDS + SCREEN_WORDS,
+    + COMMAND_WORDS + SCREEN_WORDS + MACHINE_WORDS,
     typed_numbers=True, print_digits=7,
     width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
     implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,
@@ -422,7 +429,7 @@ GW = Dialect(
     for_array_elements=False, untrapped_errors_noted=True,
     using_digits=24, else_alone_skips=True, saves_going_on=("", "P"), using_each_value=True,
     delete_needs_last_line=True, eof_of_file_zero=True, input_answer_first=True, dim_name_alone_scalar=True,
-    dim_after_use_duplicate=True, device_files=GW_DEVICES, nameless_file_error=52,
+    dim_after_use_duplicate=True, device_files=GW_DEVICES, nameless_file_error=52, def_seg_usr=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

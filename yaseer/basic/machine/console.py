@@ -494,6 +494,23 @@ class Console:
         return self._key_text(text)
 
     # ------------------------------------------------------------ memory
+    def define_machine(self, word: str, value) -> None:
+        """DEF SEG [= s] (``word`` "SEG") and DEF USR[n] = a ("USR"): s or a is read as an
+        unsigned 16-bit number (GWMAIN.ASM FRQINT: beyond -32768..65535 Overflow); DEF SEG
+        keeps the segment (alone: BASIC's own data segment, kept as 0), which nothing
+        in gw reads (no PEEK, POKE or BLOAD); DEF USR's address is not kept: no machine
+        code runs (see :meth:`user_routine`)."""
+        segment = 0 if value is None else runtime.unsigned_word(value)
+        if word == "SEG":
+            self.segment = segment
+
+    @staticmethod
+    def user_routine(_argument) -> float:
+        """USR[n](x): a machine-code routine, which yaseer cannot run: Illegal function call
+        once x is read (GWEVAL.ASM USRFN: PARCHK, then FCERR for an address never set by
+        DEF USR; as PC-BASIC 2.0.8 for any address)."""
+        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+
     def peek(self, address) -> float:
         """PEEK(address): the byte at segment * 16 + address (a negative address counts from
         65536, as the manual's PEEK page says)."""

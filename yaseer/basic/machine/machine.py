@@ -552,7 +552,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_lof": lambda n: float(self.files.get(n).length()),
             "_loc": lambda n: float(self.files.get(n).records()),
             "_input_chars": self.input_chars, "_inkey": self.inkey, "_input_keys": self.input_keys,
-            "_peek": self.peek, "_locate": self.locate,
+            "_peek": self.peek, "_usr": self.user_routine, "_locate": self.locate,
         }
 
     def _trig_functions(self) -> dict:

@@ -88,6 +88,15 @@ def cint(x: float) -> int:
     return nearest_integer(x)
 
 
+def unsigned_word(x: float) -> int:
+    """``x`` as GW-BASIC's unsigned 16-bit number 0..65535 (GWMAIN.ASM FRQINT: -32768..-1
+    count from 65536; beyond -32768..65535 Overflow)."""
+    n = nearest_integer(x)
+    if not -32768 <= n <= 65535:
+        overflow()
+    return n & 0xFFFF
+
+
 def power(a: float, b: float) -> float:
     """a ^ b; 0 ^ negative is Division by zero, negative ^ fraction Illegal function call."""
     try:

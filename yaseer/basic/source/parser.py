@@ -61,6 +61,13 @@ def _is_token(child, kind: str) -> bool:
     return isinstance(child, Token) and child.type == kind
 
 
+def _usr_number(children) -> None:
+    """USR's number, if any: one digit 0..9, as the cruncher stores it in one byte (GWEVAL.ASM
+    SCNUSR; a longer number is read as what follows a plain USR: Syntax error)."""
+    if children and _number_value(children[0]) not in range(10):
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+
+
 def _values(children) -> list:
     """The children that are not punctuation tokens."""
     return [c for c in children if not (isinstance(c, Token) and c.type in ("COMMA", "SEMI", "EQ"))]
@@ -536,6 +543,19 @@ class _ToAst:
         params = c[3] if isinstance(c[3], list) else []
         return ast.DefFn(name, params, c[-1])
 
+    def def_seg(self, c):  # DEF SEG [= s]: the word is read letter by letter (GWEVAL.ASM DEF)
+        if c[1].value != "SEG":
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return ast.DefMachine("SEG", c[3] if len(c) > 2 else None)
+
+    def def_usr(self, c):  # DEF USR[n] = a
+        _usr_number(c[2:-2])
+        return ast.DefMachine("USR", c[-1])
+
+    def usr_call(self, c):  # USR[n](x): the function's number one digit (GWEVAL.ASM SCNUSR)
+        _usr_number(c[1:-1])
+        return ast.Call("USR", (c[-1],))
+
     def params(self, c):
         return [t.value for t in _values(c)]
 
@@ -761,7 +781,7 @@ def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
 # statement's own scan finds nothing: "Syntax error".  An expression may always start with
 # a variable's name: where none is expected no expression starts (``GOTO`` wants a line,
 # ``DEF`` the word FN, SEG or USR: GWEVAL.ASM DEF's SYNCHR), whatever else may follow.
-_OPERAND_STARTS = frozenset(("FUNC", "FUNCN", "MINUS", "NOT"))
+_OPERAND_STARTS = frozenset(("FUNCN", "MINUS", "NOT"))  # (not FUNC: the Casio's DEFCHR$ follows DEF)
 _STATEMENT_ENDS = frozenset(("$END", "_COLON", "ELSE"))
 
 

@@ -64,10 +64,10 @@ DIALECT_WORDS = {
     "CHAIN": "CHAIN", "COMMON": "COMMON", "MERGE": "MERGE", "DELETE": "DELETE",
     "RUN": "RUN", "LIST": "LIST", "LLIST": "LIST", "LOAD": "LOAD", "SAVE": "SAVE", "NEW": "NEW",
     "EDIT": "EDIT", "RENUM": "RENUM", "AUTO": "AUTO", "KEY": "KEY", "OFF": "OFF", "SYSTEM": "SYSTEM", "ALL": "ALL",
-    "CSRLIN": "SYSVAR", "COLOR": "COLOR", "SCREEN": "SCREEN", "VIEW": "VIEW",
+    "CSRLIN": "SYSVAR", "COLOR": "COLOR", "SCREEN": "SCREEN", "VIEW": "VIEW", "USR": "USR",
 }
-# GW-BASIC reads these keywords even when name characters follow (``FNA``, ``TAB(``).
-_GW_PREFIX_KEYWORDS = ("FN",)
+# GW-BASIC reads these keywords even when name characters follow (``FNA``, ``USR0(``, ``TAB(``).
+_GW_PREFIX_KEYWORDS = ("FN", "USR")
 
 _COMMON_TYPES: dict[str, str] = {}
 for _word in STATEMENT_KEYWORDS + GW_STATEMENT_KEYWORDS:

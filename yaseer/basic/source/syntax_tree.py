@@ -522,6 +522,13 @@ class Randomize:
 
 
 @_node
+class DefMachine:
+    """DEF SEG [= value] (``word`` "SEG") or DEF USR[n] = value (``word`` "USR")."""
+    word: str
+    value: object = None
+
+
+@_node
 class Angle:
     mode: str  # "DEG" or "RAD"
 
