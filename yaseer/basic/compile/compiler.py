@@ -35,6 +35,7 @@ from yaseer.basic.compile.expressions import (
     MAKING, BlockScope, CompileError, ExpressionCompiler, FnScope, calls_fn, may_overflow, syntax_error, type_mismatch,
 )
 from yaseer.basic.compile.statements_io import InputOutputCompiler
+from yaseer.basic.compile.device_words import device_statement
 from yaseer.basic.compile.loops import LoopCompiler, LoopSplit
 from yaseer.basic.compile.markers import (
     LOAD_LOCALS, STACK_CHECK, STORE_LOCALS, ArraysCall, Dimensioned, LoadLocals, PassTop, Refreshing, StackCheck,
@@ -157,6 +158,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.counts_strings = dialect.free_memory is not None  # strings take room (string_space.py)
         self.strings_in_area = self.words.variable_area is not None  # casio: a stored string takes room (_sroom)
         self.own_functions = dict(self.words.functions, DEG=self.words.deg_function) if dialect.words else {}
+        self.device_words = dialect.device_words  # gw's INP, OUT, LOCK ... (dialects/gw_words.py)
+        if self.device_words:
+            self.own_functions.update(self.device_words.functions)
         self.direct = direct
         self.trace = trace and not direct
         self.dynamic_loops = set(dynamic_loops)
@@ -738,6 +742,13 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         """A statement of the dialect's own words: its helper called with its arguments,
         each of the kind the table gives ("n", "s"; "format": SET's letter and digit)."""
         word = stmt.word
+        devices = self.device_words
+        if devices and word in devices.statements:
+            device_statement(self, stmt, devices, scope)
+            return
+        commas = "," * max(len(stmt.args) - 1, 0)
+        if not word.endswith("()") and stmt.marks not in (commas, "=" + commas):
+            raise syntax_error()  # the casio words take no #, TO or comma after the last argument
         table = self.words.routine_calls if word.endswith("()") else self.words.statements
         least, most, helper, kind = table[word.removesuffix("()")]
         if not least <= len(stmt.args) <= most:

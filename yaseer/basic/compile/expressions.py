@@ -466,7 +466,7 @@ class ExpressionCompiler:
     def expr_SysVar(self, node, scope):
         if node.name == "PI":
             return self.numbers.pi, "n"
-        code, kind = _SYSTEM_VARIABLES[node.name]
+        code, kind = _SYSTEM_VARIABLES.get(node.name) or self.device_words.system_values[node.name]
         if kind == "!":
             return self.numbers.convert(code, "#", "!"), self.numbers.single
         return code, kind or self.numbers.integer

@@ -28,6 +28,7 @@ from yaseer.basic.arithmetic.values import MBF_READING
 from yaseer.basic.arithmetic.randomness import GwRandom, RepeatableRandom
 from yaseer.basic.dialects.charset import CASIO as CASIO_CHARACTERS, CASIO_CONTROLS, CP437, LATIN1
 from yaseer.basic.dialects import casio as casio_words
+from yaseer.basic.dialects import gw_words
 from yaseer.basic.dialects.screens import CASIO_SCREEN, GW_CONTROLS, GW_SCREEN
 
 # The paper's universal line 2: these arrays exist with these sizes from the start
@@ -123,10 +124,11 @@ FIELDS = (
     "device_files",  # tuple[tuple[str, str], ...]: ()
     "nameless_file_error",  # int: 64 (Bad file name)
     "def_seg_usr",  # bool: False
+    "device_words",  # gw_words.Words | None: None
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False)
+            None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -213,6 +215,10 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         ``names_keep_case``: True makes ``a`` and ``A`` two variables (the Casio
         manual lists both as names; keywords are still read in either case).
         ``name_length``: the longest name (15 on the Casio); None: no limit.
+        ``device_words``: the tables of GW-BASIC's words for the PC's ports, environment,
+        speaker, file locks and machine code (yaseer/basic/dialects/gw_words.py: INP, OUT,
+        ENVIRON$, LOCK, CALL ...), read as keywords and run by machine/devices.py; None: no
+        such words (casio).
         ``hex_literals``: True reads ``&H1F`` as a number (the Casio's ``&H``, 0..&HFFFF)
         in a dialect without typed numbers.
 
@@ -430,6 +436,7 @@ GW = Dialect(
     using_digits=24, else_alone_skips=True, saves_going_on=("", "P"), using_each_value=True,
     delete_needs_last_line=True, eof_of_file_zero=True, input_answer_first=True, dim_name_alone_scalar=True,
     dim_after_use_duplicate=True, device_files=GW_DEVICES, nameless_file_error=52, def_seg_usr=True,
+    device_words=gw_words.WORDS,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

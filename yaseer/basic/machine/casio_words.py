@@ -121,6 +121,11 @@ class CasioWords:
         ``NG RAM 1`` before its endless BEEP loop)."""
         if self.display is not None and self.display.changed:
             self.show_screen()
+        self.ring_bell()
+
+    def ring_bell(self) -> None:
+        """The terminal's bell, where standard output is one (gw's BEEP: the PC's speaker);
+        output to a file or a pipe is left as it is."""
         stream = self.screen.stream
         isatty = getattr(stream, "isatty", None)
         if isatty is not None and isatty():

@@ -68,6 +68,10 @@ def _usr_number(children) -> None:
         raise BasicError("Syntax error", SYNTAX_ERROR)
 
 
+# the punctuation of a word statement, kept as WordStatement.marks
+_WORD_MARKS = {"EQ": "=", "HASH": "#", "COMMA": ",", "TO": "T"}
+
+
 def _values(children) -> list:
     """The children that are not punctuation tokens."""
     return [c for c in children if not (isinstance(c, Token) and c.type in ("COMMA", "SEMI", "EQ"))]
@@ -514,7 +518,9 @@ class _ToAst:
         return ast.Restore(target)
 
     def word_stmt(self, c):
-        return ast.WordStatement(c[0].value, _values(c[1:]))
+        marks = "".join(_WORD_MARKS[t.type] for t in c[1:] if isinstance(t, Token) and t.type in _WORD_MARKS)
+        return ast.WordStatement(c[0].value, [a for a in c[1:] if not (isinstance(a, Token) and a.type in _WORD_MARKS)],
+                                 marks)
 
     def word_call(self, c):  # MODE 33(a, b, c): the word's number n with arguments (a ROM routine's call)
         return ast.WordStatement(c[0].value + "()", [ast.Num(_number_value(c[1]))] + _values(c[2:]))

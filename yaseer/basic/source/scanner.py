@@ -111,8 +111,19 @@ class _Keywords:
                 words.setdefault(word, UNSUPPORTED)
             for word in table.reserved_variables:
                 words[word] = "STRNAME"
-        # a longer GW-BASIC word that is no keyword here stays whole (VARPTR, CSRLIN in casio)
-        self.longer = dict(_longer_reserved())
+        # GW-BASIC's words for the PC's devices (dialects/gw_words.py)
+        devices = dialect.device_words
+        if devices:
+            for word, entry in devices.functions.items():
+                words[word] = entry[0]
+            for word in devices.system_values:
+                words[word] = "SYSVAR"
+            for word in devices.statements:
+                words[word] = "WORDSTMT"
+        self.dollar_apart = devices.dollar_apart if devices else frozenset()
+        # a longer GW-BASIC word that is no keyword here stays whole (VARPTR, CSRLIN in casio;
+        # LOCK, not LOC K, where LOCK is no keyword)
+        self.longer = {word: tuple(r for r in longer if r not in words) for word, longer in _longer_reserved().items()}
         for word in (table.reserved_only if table else ()):
             self.longer[word] = tuple(r for r in GW_RESERVED_WORDS if r.startswith(word) and r not in words)
         self.types = words
@@ -143,7 +154,7 @@ _ADDED_KEYWORDS = set(GW_STATEMENT_KEYWORDS) | {RENAME_KEYWORD} | {
 def _longer_reserved() -> dict[str, tuple[str, ...]]:
     """Each added keyword's longer reserved words (made when a line is first scanned: a run of
     a cached program reads no tokens)."""
-    return {word: tuple(r for r in GW_RESERVED_WORDS if r.startswith(word) and r != word and r not in _KEYWORD_TYPES)
+    return {word: tuple(r for r in GW_RESERVED_WORDS if r.startswith(word) and r != word and r not in _COMMON_TYPES)
             for word in _ADDED_KEYWORDS}
 
 
@@ -257,6 +268,8 @@ def _scan_word_whole(upper: str, i: int, keywords: _Keywords) -> tuple[str, str,
         kind = keywords.types.get(word)
         if kind is not None and j < n and upper[j] == "$" and word + "$" in keywords.types:
             return keywords.types[word + "$"], word + "$", j + 1  # INPUT$, not INPUT
+        if kind is not None and word in keywords.dollar_apart and upper[j:].lstrip(" ").startswith("$"):
+            return keywords.types[word + "$"], word + "$", upper.index("$", j) + 1  # ENVIRON $(1)
         if kind is not None and (word in _GW_PREFIX_KEYWORDS or j >= n or upper[j] not in _NAME_CHARS):
             return kind, word, j
         if ch not in _NAME_CHARS:

@@ -535,9 +535,11 @@ class Angle:
 
 @_node
 class WordStatement:
-    """A statement of the dialect's own words (dialects/casio.py): ANGLE 1, POKE a, d."""
+    """A statement of the dialect's own words (dialects/casio.py): ANGLE 1, POKE a, d; or of
+    gw's device words (dialects/gw_words.py)."""
     word: str
     args: list
+    marks: str = ""  # its punctuation in order: "=" "#" "," and "T" for TO (``LOCK #1, 2 TO 6``: "#,T")
 
 
 @_node

@@ -1,0 +1,98 @@
+"""The statements of gw's device words (dialects/gw_words.py: OUT, WAIT, LOCK, CALL ...) as
+GW-BASIC reads them: argument by argument, each error where its routine finds it.
+
+GW-BASIC has no grammar: a statement's routine reads an argument, checks its type, reads a
+comma (SYNCHR), reads the next, and returns to NEWSTT, which refuses anything but the end of
+the statement (GWMAIN.ASM GONZER).  So ``OUT "!"`` is Type mismatch before the missing
+comma is seen, ``OUT 0,`` is Missing operand (FRMEVL finds no operand), and ``OUT 0,0,0``
+does its OUT and is then Syntax error.  :func:`device_statement` writes the code that does
+the same: the arguments evaluated in order up to the first that fails, or the helper called
+with them and then the error of what follows.
+"""
+
+from __future__ import annotations
+
+from yaseer.basic.source import syntax_tree as ast
+from yaseer.basic.errors import MISSING_OPERAND, SYNTAX_ERROR, TYPE_MISMATCH, error_message
+
+
+def _fail(code: int) -> str:
+    return f"_fail({error_message(code)!r}, {code})"
+
+
+def _routine_error(arg) -> int | None:
+    """CALL's routine: a numeric variable, with variables in parentheses (CALL86.ASM reads each
+    as PTRGET does); None when it is one, else its error (a string variable: Type mismatch)."""
+    if not isinstance(arg, (ast.Var, ast.Elem)):
+        return SYNTAX_ERROR
+    if arg.name.endswith("$"):
+        return TYPE_MISMATCH
+    if isinstance(arg, ast.Elem) and not all(isinstance(a, (ast.Var, ast.Elem)) for a in arg.indices):
+        return SYNTAX_ERROR
+    return None
+
+
+def _argument(compiler, arg, kind: str, scope) -> tuple[str | None, int | None]:
+    """(code, None) for an argument of ``kind`` (gw_words.STATEMENTS), or (None, its error)."""
+    if kind == "v":
+        error = _routine_error(arg)
+        return ("None", None) if error is None else (None, error)
+    is_string = ast.expr_type(arg) == "s"
+    if is_string != (kind == "s"):
+        return None, TYPE_MISMATCH
+    if kind == "s":
+        return compiler.string(arg, scope), None
+    if kind == "i":
+        return compiler.integer(arg, scope), None
+    return compiler.numeric(arg, scope), None
+
+
+def device_statement(compiler, stmt, words, scope) -> None:
+    """Emit ``stmt``, a statement of the device words ``words`` (gw_words.Words): its entry's
+    kinds, least arguments, helper and the marks that may come first; the word before its last
+    argument (LOCK's TO: ``range_words``), else a comma; whether it checks the end of the
+    statement before it acts (``ends_first``)."""
+    kinds, least, helper, first = words.statements[stmt.word]
+    range_word = words.range_words.get(stmt.word)
+    checks_end = stmt.word in words.ends_first
+    marks = stmt.marks
+    lead = marks[:1] if marks[:1] in ("#", "=") else ""
+    separators = marks[len(lead):]
+    codes: list[str] = []
+    before = after = None  # the error before the helper runs, and after it
+    if lead and lead not in first:
+        before = SYNTAX_ERROR
+    for k, arg in enumerate(stmt.args):
+        if before is not None:
+            break
+        if k >= len(kinds):  # the routine has read all it reads: NEWSTT finds the rest (EOSCHK first)
+            if checks_end:
+                before = SYNTAX_ERROR
+            else:
+                after = SYNTAX_ERROR
+            break
+        wanted = "T" if range_word and k == len(kinds) - 1 else ","
+        if k and separators[k - 1] != wanted:
+            before = SYNTAX_ERROR
+            break
+        code, before = _argument(compiler, arg, kinds[k], scope)
+        if code is not None:
+            codes.append(code)
+    if before is None and after is None:
+        trailing = len(separators) >= max(len(stmt.args), 1) and separators.endswith(",")
+        if trailing and len(stmt.args) < len(kinds):
+            before = MISSING_OPERAND  # a comma read, then FRMEVL finds no operand
+        elif trailing and checks_end:
+            before = SYNTAX_ERROR
+        elif trailing:
+            after = SYNTAX_ERROR
+        elif not stmt.args and least:  # FRMEVL finds no operand; CALL's PTRGET finds no name
+            before = SYNTAX_ERROR if kinds[0] == "v" else MISSING_OPERAND
+        elif len(stmt.args) < least:
+            before = SYNTAX_ERROR  # SYNCHR wants the comma
+    if before is not None:
+        compiler.emit(f"({', '.join(codes + [_fail(before)])},)")
+        return
+    compiler.emit(f"{helper}({', '.join(codes)})")
+    if after is not None:
+        compiler.emit(_fail(after))

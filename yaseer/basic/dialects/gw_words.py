@@ -1,0 +1,75 @@
+"""GW-BASIC's words for the PC's devices: the tables the gw dialect adds (data only).
+
+The words that reach a port, the DOS environment, a device driver, the speaker, a file
+lock or machine code (``INP OUT WAIT IOCTL IOCTL$ ENVIRON ENVIRON$ ERDEV ERDEV$ EXTERR
+LCOPY LOCK UNLOCK SOUND BEEP CALL CALLS``).  yaseer has none of those devices: each word
+reads its arguments as GW-BASIC 3.23 reads them and gives its errors in the same order
+(GWEVAL.ASM FNINP/SETIO/FNWAIT, GWSTS.ASM SOUNDS/BEEPS/LCOPYS, CALL86.ASM), then does what a
+PC without the device would: the machine's side is yaseer/basic/machine/devices.py, the
+behaviour and its sources are docs/compatibility.md's row "Device words".  The words the
+released source only stubs (GWSTS.ASM: ERDEV, IOCTL, ENVIRON jump to ADVERR) follow the
+outputs of real GW-BASIC 3.23 recorded in PC-BASIC's test suite and PC-BASIC 2.0.8 where
+the two agree.  The scanner reads these words as keywords in gw only.
+"""
+
+from __future__ import annotations
+
+# Functions: word -> (token type, argument forms, result, helper of the compiled code); the
+# kinds are those of compile/expressions.py ("i" an integer as FRCINT makes it, "x" either).
+FUNCTIONS = {
+    "INP": ("FUNC", ("n",), "n", "_M.devices.inp"),  # GWEVAL.ASM FNINP: FRQINT (-32768..65535), the port
+    "EXTERR": ("FUNC", ("i",), "n", "_M.devices.extended_error"),
+    "IOCTL$": ("FUNC", ("i",), "s", "_M.devices.control_string"),
+    "ENVIRON$": ("FUNC", ("x",), "s", "_M.devices.environment"),
+}
+# Values without arguments: name -> (Python expression, "s" or None for an integer).
+SYSTEM_VALUES = {"ERDEV": ("0", None), "ERDEV$": ('""', "s")}
+
+# Statements: word -> (argument kinds in order, least arguments, helper, first marks).  A kind:
+# "i" an integer (FRCINT: beyond -32768..32767 Overflow), "u" a port (FRQINT: -32768..65535),
+# "n" a number, "s" a string, "v" CALL's routine (a numeric variable, optionally with
+# variables in parentheses).  "first marks": what may stand before the first argument ("#":
+# a file number).  A word's arguments are read one by one: a wrong type is Type mismatch at
+# that argument, too few is Syntax error (Missing operand where a comma or the word itself
+# was read and no expression follows), and what follows the last argument is Syntax error
+# after the statement has run (NEWSTT finds no end of statement: GWMAIN.ASM GONZER).
+STATEMENTS = {
+    "OUT": ("ui", 2, "_M.devices.out", ""),  # SETIO: FRMQNT, ",", GETBYT
+    "WAIT": ("uii", 2, "_M.devices.wait", ""),  # FNWAIT: SETIO, then an optional "," GETBYT
+    "LCOPY": ("i", 0, "_M.devices.screen_copy", ""),  # LCOPYS: an optional byte
+    "SOUND": ("in", 2, "_M.devices.sound", ""),  # SOUNDS: GETIN2, ",", FRMEVL
+    "IOCTL": ("is", 2, "_M.devices.control", "#"),
+    "ENVIRON": ("s", 1, "_M.devices.set_environment", ""),
+    "LOCK": ("inn", 1, "_M.devices.lock", "#"),  # LOCK [#]n [, [start] [TO end]]
+    "UNLOCK": ("inn", 1, "_M.devices.unlock", "#"),
+    "CALL": ("v", 1, "_M.devices.call", ""),
+    "CALLS": ("v", 1, "_M.devices.call", ""),
+    # BEEPS reads nothing: it beeps, then NEWSTT finds what follows (``BEEP 10`` beeps and
+    # is Syntax error: PC-BASIC 2.0.8; the recorded real run of such lines never ended)
+    "BEEP": ("", 0, "_M.ring_bell", ""),
+}
+# Statements that check the end of the statement before they act (GWSTS.ASM SOUNDS calls
+# EOSCHK before the note: ``SOUND 1,1,1`` is Syntax error, not the frequency's error); the
+# others act, then NEWSTT finds what follows (``LOCK #1, 1 TO 2 TO 3`` locks first).
+ENDS_FIRST = frozenset({"SOUND"})
+# The word between LOCK's first and last record (the other arguments: commas).
+RANGE_WORDS = {"LOCK": "TO", "UNLOCK": "TO"}
+# Words whose ``$`` form GW-BASIC tokenises as the word and a ``$``, so blanks may stand
+# between them (``ENVIRON $(1)`` is ENVIRON$(1): the recordings).
+DOLLAR_APART = frozenset({"ENVIRON", "IOCTL", "ERDEV"})
+
+
+class Words:
+    """The tables above as one object, ``Dialect.device_words``: its attributes are the
+    tables' names in lower case (hashed by identity, as a dialect is a key of the scanner's
+    cache; its repr names it: a dialect's repr is part of the compile cache's key)."""
+
+    def __init__(self, **tables):
+        self.__dict__.update(tables)
+
+    def __repr__(self) -> str:
+        return "gw_words.Words()"
+
+
+WORDS = Words(functions=FUNCTIONS, system_values=SYSTEM_VALUES, statements=STATEMENTS, range_words=RANGE_WORDS,
+              ends_first=ENDS_FIRST, dollar_apart=DOLLAR_APART)
