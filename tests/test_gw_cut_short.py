@@ -16,7 +16,7 @@ Each case against PC-BASIC 2.0.8, which agrees with the source here."""
 
 import pytest
 
-from test_gw_files import contents, pcbasic_run, yaseer_run
+from test_gw_files import both_runs, pcbasic_run, yaseer_run
 
 FILE_CUTS = ['PRINT #1, ABS(', 'PRINT#1, ABS(', 'PRINT #1, "A"; ABS(', 'PRINT #1, "A", ABS(', 'PRINT #1, 1 + ',
              'PRINT #1, USING "##"; ABS(', 'PRINT #1, (', 'PRINT #1, "A";: PRINT #1, ABS(']
@@ -35,11 +35,8 @@ SCREEN_CUTS = [
 def test_a_cut_print_to_a_file_writes_what_pcbasic_writes(tmp_path, cut):
     source = ('10 OPEN "O.TXT" FOR OUTPUT AS 1: ON ERROR GOTO 100\n'
               f'20 {cut}\n30 PRINT #1, "B": CLOSE: END\n100 PRINT #1, ERR; ERL: RESUME NEXT\n')
-    theirs, ours = tmp_path / "pc", tmp_path / "ya"
-    theirs.mkdir()
-    ours.mkdir()
-    assert yaseer_run(source, ours) == pcbasic_run(source, theirs)
-    assert contents(ours) == contents(theirs)
+    ours, theirs, our_files, their_files = both_runs(source, tmp_path)
+    assert (ours, our_files) == (theirs, their_files)
 
 
 @pytest.mark.parametrize("cut", SCREEN_CUTS)

@@ -56,6 +56,16 @@ def contents(directory: Path) -> dict[str, bytes]:
     return {p.name: p.read_bytes() for p in sorted(directory.iterdir())}
 
 
+def both_runs(source: str, tmp_path: Path) -> tuple[str, str, dict, dict]:
+    """``source`` run by yaseer (gw) and by PC-BASIC 2.0.8, each in a directory of its own
+    under ``tmp_path``: (yaseer's output, PC-BASIC's, yaseer's files, PC-BASIC's files)."""
+    ours, theirs = tmp_path / "yaseer", tmp_path / "pcbasic"
+    ours.mkdir()
+    theirs.mkdir()
+    printed = yaseer_run(source, ours), pcbasic_run(source, theirs)
+    return (*printed, contents(ours), contents(theirs))
+
+
 @pytest.mark.parametrize("dialect", ["gw", "casio"])
 @pytest.mark.parametrize("name", PROGRAMS)
 def test_file_program_matches_pcbasic_output_and_files(tmp_path, name, dialect):

@@ -14,7 +14,7 @@ PC-BASIC's DIM test recorded on a real GW-BASIC:
 
 import pytest
 
-from test_gw_files import pcbasic_run, yaseer_run
+from test_gw_files import both_runs, pcbasic_run, yaseer_run
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
 
@@ -59,12 +59,8 @@ CLOSE_CUTS = ['CLOSE 1,', 'CLOSE 1, 2,', 'CLOSE ,1', 'CLOSE 1 2', 'CLOSE 1,,2', 
 def test_a_bad_close_closes_the_files_before_its_error(tmp_path, cut):
     source = (f'10 ON ERROR GOTO 100\n15 OPEN "A" FOR OUTPUT AS 1: OPEN "B" FOR OUTPUT AS 2\n20 {cut}\n'
               '30 OPEN "C" FOR OUTPUT AS 1: OPEN "D" FOR OUTPUT AS 2: END\n100 PRINT ERR; ERL: RESUME NEXT\n')
-    ours, theirs = tmp_path / "y", tmp_path / "p"
-    ours.mkdir()
-    theirs.mkdir()
-    printed = yaseer_run(source, ours)
-    assert printed == pcbasic_run(source, theirs)
-    assert sorted(p.name for p in ours.iterdir()) == sorted(p.name for p in theirs.iterdir())
+    ours, theirs, our_files, their_files = both_runs(source, tmp_path)
+    assert (ours, sorted(our_files)) == (theirs, sorted(their_files))
 
 
 def test_casio_replaces_an_implicit_array_and_reads_dim_a_as_ten(tmp_path):

@@ -6,7 +6,7 @@ Each case against PC-BASIC 2.0.8, which agrees with the recording."""
 
 import pytest
 
-from test_gw_files import pcbasic_run, yaseer_run
+from test_gw_files import both_runs
 
 pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")
 
@@ -22,7 +22,5 @@ BODIES = [
 def test_reading_a_record_beyond_the_end(tmp_path, body):
     source = ('10 ON ERROR GOTO 100\n20 OPEN "R.DAT" FOR RANDOM AS #1 LEN=3: FIELD #1, 3 AS A$\n'
               f'30 {body}\n40 END\n100 PRINT "E"; ERR; ERL: RESUME NEXT\n')
-    ours, theirs = tmp_path / "y", tmp_path / "p"
-    ours.mkdir()
-    theirs.mkdir()
-    assert yaseer_run(source, ours) == pcbasic_run(source, theirs)
+    ours, theirs, _, _ = both_runs(source, tmp_path)
+    assert ours == theirs
