@@ -1207,21 +1207,29 @@ def _printed_before_error(tokens: list, start: int) -> list:
     if start >= len(tokens) or tokens[start].type not in ("PRINT", "LPRINT"):
         return []
     end = next((k for k in range(start, len(tokens)) if tokens[k].type == "_COLON"), len(tokens))
+    ends = []  # (not inside an item: ``1+``, ``A(``, ``1 2``, which GW reads 12)
     for k in range(end - 1, start, -1):
         after, last = tokens[k + 1].type if k + 1 < end else None, tokens[k].type
-        if after is not None and after not in _ITEM_STARTS or (after == "_LPAR" and last in _CALLED) \
-                or after == last == "NUMBER":
-            continue  # the prefix ends inside an item (``1+``, ``A(``, ``1 2``: GW reads 12)
+        if not (after is not None and after not in _ITEM_STARTS or (after == "_LPAR" and last in _CALLED)
+                or after == last == "NUMBER"):
+            ends.append(k + 1)
+    found = _first_parse(tokens, start, ends)
+    if len(found) == 1 and isinstance(found[0], ast.Print) and found[0].using is None:
+        printed = found[0]
+        if not printed.items or printed.items[-1] not in (",", ";"):  # (``PRINT #1,`` wrote nothing)
+            printed.items = list(printed.items) + [";"]
+        return [printed]
+    return []
+
+
+def _first_parse(tokens: list, start: int, ends) -> list:
+    """The statements ``tokens[start:k]`` parse as, for the first ``k`` of ``ends`` (the
+    longest good start first) at which they parse at all; empty when none does."""
+    for k in ends:
         try:
-            found = _parse(tokens[start:k + 1])
+            return _parse(tokens[start:k])
         except (BasicError, GrammarError):
             continue
-        if len(found) == 1 and isinstance(found[0], ast.Print) and found[0].using is None:
-            printed = found[0]
-            if not printed.items or printed.items[-1] not in (",", ";"):  # (``PRINT #1,`` wrote nothing)
-                printed.items = list(printed.items) + [";"]
-            return [printed]
-        return []
     return []
 
 
@@ -1240,16 +1248,11 @@ def _assigned_before_error(tokens: list, start: int) -> list:
     line's end: ``Syntax error``).  Empty for any other bad statement, or when the value
     itself is bad, or where the next token could go on with it (``A = 1 2`` is 12)."""
     end = next((k for k in range(start, len(tokens)) if tokens[k].type == "_COLON"), len(tokens))
-    for k in range(end - 2, start, -1):
-        after, last = tokens[k + 1].type, tokens[k].type
-        if after in _EXPRESSION_GOES_ON or (after == "_LPAR" and last in _CALLED) or after == last == "NUMBER":
-            continue
-        try:
-            found = _parse(tokens[start:k + 1])
-        except (BasicError, GrammarError):
-            continue
-        return found if len(found) == 1 and isinstance(found[0], _ASSIGNMENTS) else []
-    return []
+    ends = [k + 1 for k in range(end - 2, start, -1)
+            if not (tokens[k + 1].type in _EXPRESSION_GOES_ON or tokens[k + 1].type == tokens[k].type == "NUMBER"
+                    or (tokens[k + 1].type == "_LPAR" and tokens[k].type in _CALLED))]
+    found = _first_parse(tokens, start, ends)
+    return found if len(found) == 1 and isinstance(found[0], _ASSIGNMENTS) else []
 
 
 # Statements of a list that GW-BASIC handles one item at a time: the node, its list, and
@@ -1278,13 +1281,8 @@ def _arrays_before_error(tokens: list, start: int) -> list:
             ends.append(k + 1)
         elif depth == 0 and not ends_alone and tokens[k].type == "COMMA":
             ends.append(k)
-    for k in reversed(ends):
-        try:
-            found = _parse(tokens[start:k])
-        except (BasicError, GrammarError):
-            continue
-        return found if len(found) == 1 and isinstance(found[0], node) and getattr(found[0], field) else []
-    return []
+    found = _first_parse(tokens, start, reversed(ends))
+    return found if len(found) == 1 and isinstance(found[0], node) and getattr(found[0], field) else []
 
 
 MAX_NESTING = 60  # IFs in one line, or parentheses inside each other
