@@ -97,6 +97,7 @@ def main(argv=None) -> int:
     parser.add_argument("--only", nargs="*", default=None, help="only these folders (e.g. gwbasic unsorted)")
     parser.add_argument("--timeout", type=float, default=30.0, help="seconds a program may run (default 30)")
     parser.add_argument("--list", choices=("all", "failed"), default=None, help="print each test's verdict")
+    parser.add_argument("--tests", nargs="*", default=None, help="only tests with these names (e.g. SWAP FORERR)")
     args = parser.parse_args(argv)
     if not args.corpus.is_dir():
         print(f"recorded_gw: no folder {args.corpus}", file=sys.stderr)
@@ -105,7 +106,8 @@ def main(argv=None) -> int:
     total_passed = total_run = 0
     causes: Counter = Counter()
     for group in groups:
-        tests = sorted(p for p in group.iterdir() if p.is_dir() and runnable(p))
+        tests = sorted(p for p in group.iterdir()
+                       if p.is_dir() and runnable(p) and (args.tests is None or p.name in args.tests))
         passed = 0
         for test in tests:
             ok, note = run_one(test, args.timeout)
@@ -114,6 +116,8 @@ def main(argv=None) -> int:
                 causes[note.split(" in ")[0][:60]] += 1
             if args.list == "all" or args.list == "failed" and not ok:
                 print(f"  {'pass' if ok else 'FAIL'} {group.name}/{test.name}: {note}")
+        if args.tests is not None and not tests:
+            continue
         skipped = sum(1 for p in group.iterdir() if p.is_dir()) - len(tests)
         print(f"{group.name}: {passed} of {len(tests)} reproduced ({skipped} other tests not run)")
         total_passed += passed
