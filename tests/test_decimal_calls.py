@@ -382,6 +382,42 @@ def test_a_sum_with_rnd_is_the_sum_with_the_rounded_number():
     assert site["slow"] < calls * 0.6, (site["slow"], calls)  # the fused path is taken
 
 
+def test_a_sum_with_rnd_needs_no_guard_on_the_local():
+    """The fused ``a + RND`` tests no bounds on ``a`` (a sum of two variables does: ``_D<n>l <
+    a < _D<n>h``): with the number drawn in [0, 1) and the scale at most DRAWN_SCALE, the range
+    test bounds ``a``.  Against the decimal module (the number rounded half to even to 12 digits,
+    the sum half up) on the locals where a missing bound could show: 0, -0, locals just below 0
+    that the number carries across it, every decade's ends from 1E-12 to 1E+12 and next to the
+    sums' decades' ends, both signs, locals from which the sum's scale is the largest kept
+    (1E+9: sums from 100 up), the largest scale's neighbours, and the range's ends."""
+    from decimal import ROUND_HALF_EVEN, ROUND_HALF_UP, Context, Decimal
+
+    drawn_context = Context(prec=12, rounding=ROUND_HALF_EVEN)
+    sum_context = Context(prec=12, rounding=ROUND_HALF_UP, Emax=99)
+
+    def reference(a, v):
+        return float(sum_context.add(Decimal(format(a, ".12g")), drawn_context.plus(Decimal(v))))
+
+    model = DecimalNumbers()
+    draw, _ = model.call("RND", "_rndf", [], [], "n")
+    code, _ = model.arithmetic("+", "a", "n", draw, "n")
+    (cache,) = model.cache_bases
+    assert f"{cache}l" not in code and f"{cache}h" not in code
+    rng = random.Random(29)
+    locals_ = [0.0, -0.0, -1e-12, -0.5, -0.999999999999, 9.99999999999e99, -9.99999999999e99, 1e-99, -1e-99]
+    for e in range(-12, 13):
+        for m in (1.0, 9.99999999999, 9.9999999999, 5.0, 1.00000000001):
+            locals_ += [own(m * 10.0 ** e), own(-m * 10.0 ** e)]
+    locals_ += [own(rng.uniform(99.0, 101.0)) for _ in range(300)] + [own(-rng.uniform(0.0, 1.0)) for _ in range(300)]
+    numbers = [0.0, 0.5, 1 - 2.0 ** -53, 2.0 ** -53, 0.0999999999995, 0.00999999999995] + [rng.random() for _ in range(40)]
+    site = drawn_sum_site()
+    pairs = [(a, v) for a in locals_ for v in numbers]
+    site["drawn"] = iter(v for _, v in pairs * 2)
+    for a, v in pairs * 2:  # twice: the second time the site's cache holds a scale from the first
+        assert site["run"](a) == decimal_arith.add(a, decimal_arith.rounded(v)) == reference(a, v), (a, v)
+    assert site["slow"] < len(pairs) * 2 * 0.9, site["slow"]  # the fused path is taken
+
+
 def test_a_sum_with_rnd_keeps_no_scale_beyond_its_bound():
     """A planted bug: the drawn number's distance from its rounding is only small enough up to
     the scale 1E+9 (sums from 100 up); a site that keeps larger scales gives wrong sums."""

@@ -10,6 +10,7 @@ inline path gave, so that a family the fast path never reaches fails."""
 from __future__ import annotations
 
 import io
+import math
 import random
 from decimal import Decimal, Overflow as DecimalOverflow
 
@@ -232,6 +233,34 @@ def test_scale_of_decades():
     assert decimal_scales.scale(999999999999.0) == 1.0
     for x in (1e12, 9.99999999999e-12, 0.0, 1e99):
         assert decimal_scales.scale(x) != decimal_scales.scale(x)  # NaN: no scale
+
+
+def test_scale_is_the_decade_of_the_decimal_each_double_stands_for():
+    """decimal_scales.scale (one binary search over the decades' powers of ten) against the
+    decimal module: the decade of the shortest decimal that reads back as the double (a held
+    value's own decimal; ``Decimal.adjusted``), ``10**(11 - e)`` with the value's sign for the
+    decades 1E-11 .. 1E+11, else NaN.  Every power of ten from 1E-14 to 1E+14 as a double and the
+    doubles next to it on both sides, both signs, 0 and -0, infinities, NaN, the range's ends
+    1E-99 and 9.99999999999E+99, and 12-digit decimals of every decade in between."""
+    def expected(x: float) -> float:
+        if x != x or x in (math.inf, -math.inf) or x == 0.0:
+            return math.nan
+        e = Decimal(repr(x)).adjusted()
+        if not -11 <= e <= 11:
+            return math.nan
+        return math.copysign(float(10 ** (11 - e)), x)
+
+    rng = random.Random(11)
+    values = [0.0, -0.0, math.inf, -math.inf, math.nan, 1e-99, 9.99999999999e99, 5e-324, 1.7976931348623157e308]
+    for e in range(-14, 15):
+        power = float(f"1e{e}")
+        values += [power, math.nextafter(power, 0.0), math.nextafter(power, math.inf)]
+        values += [own(rng.uniform(1.0, 10.0) * power) for _ in range(200)]
+        values += [float(f"9.99999999999e{e}"), float(f"1.00000000001e{e}")]
+    values += [-x for x in values]
+    for x in values:
+        got, want = decimal_scales.scale(x), expected(x)
+        assert got == want or (got != got and want != want), (x, got, want)
 
 
 def run(program: str, stdin: str = "") -> tuple[str, object]:

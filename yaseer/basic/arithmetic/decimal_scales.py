@@ -61,6 +61,7 @@ routine on hundreds of thousands of operands.
 
 from __future__ import annotations
 
+from bisect import bisect_right
 from math import floor, frexp, log10, nan
 
 MAGIC = 1.5 * 2.0 ** 52  # (t + MAGIC) - MAGIC: t rounded to a whole number (|t| < 2**51)
@@ -90,22 +91,19 @@ def scale(x: float) -> float:
     """``S`` of the decade of ``x`` (a nonzero own decimal from 1E-11 to below 1E+12),
     with its sign; NaN (a scale no value matches) for any other ``x``.  The decade's
     power of ten is a decimal of one digit, so comparing the doubles compares the
-    decimals.  (:func:`decade_scale`'s steps, from one table by the binade: the writers
-    call this on every result their site's scale missed.)"""
-    if 0.0 < x < TOP:
-        edge, low, high = _BINADES.get(frexp(x)[1], _OUTSIDE)
-        return low if x < edge else high
-    if -TOP < x < 0.0:
-        edge, low, high = _BINADES.get(frexp(x)[1], _OUTSIDE)
-        return -low if -edge < x else -high
-    return nan
+    decimals: the decade is the number of powers 1E-11 .. 1E+12 (as doubles, each the
+    nearest to its decimal) at or below ``|x|``, one binary search in C (the writers call
+    this on every result their site's scale missed; a search of 24 doubles costs about half
+    of ``frexp``'s tuple and a table lookup by the binade)."""
+    if x > 0.0:
+        return _BY_EDGES[bisect_right(_EDGES, x)]
+    return -_BY_EDGES[bisect_right(_EDGES, -x)]  # (0 and -0 give index 0: NaN; a NaN x: the last)
 
 
-# a binade's (the power of ten above its lowest decade, the scale of that decade, of the next),
-# NaN for a decade outside 1E-11 .. 1E+12
-_BINADES = {b: (_POWERS.get(e + 1, nan), _SCALES.get(e, nan), _SCALES.get(e + 1, nan))
-            for b, e in _LOW_DECADE.items()}
-_OUTSIDE = (nan, nan, nan)
+# the decades' lower ends 1E-11 .. 1E+12, and the scale of the decade starting at each (NaN below
+# the first and from the last on): bisect_right(_EDGES, x) is the index of x's decade plus one
+_EDGES = [_POWERS[e] for e in range(-11, 13)]
+_BY_EDGES = [nan] + [_SCALES[e] for e in range(-11, 12)] + [nan]
 
 
 def rounded_within(value: float, error: float):
@@ -179,18 +177,20 @@ def writers(namespace: dict) -> dict:
 
     def drawn_sum(name, routine, a, v):
         """``a + RND`` for the number drawn ``v`` (the compiled code's ``_zdr``): ``v`` rounded to
-        12 digits (``_d13``), then the sum as :func:`guarded` gives it, whose scale is kept only up
+        12 digits (``_d13``), then the sum as :func:`retried` gives it, whose scale is kept only up
         to :data:`DRAWN_SCALE` in size (the compiled code adds ``v`` itself, unrounded).
 
         **Why that is the sum with the rounded number.**  The compiled code's ``t`` is
         ``fl(fl(a + v) * S)``; the rounded number ``R`` differs from ``v`` by at most half its
         unit, ``0.5E-12`` (``v`` is below 1), and ``v`` itself is exact, so ``|t - X*S|`` is
-        within the bound ``E`` of a sum (above: the guard on ``a``, the other operand ``v``
-        below 1 scaled below ``10**13``) plus ``0.5E-12 |S| <= 5E-4``: below ``3E-3 < 2**-8``,
+        within the bound ``E`` of a sum (above: ``|S a|`` below ``10**13``, see below, the other
+        operand ``v`` below 1 scaled below ``10**13``) plus ``0.5E-12 |S| <= 5E-4``: below ``3E-3 < 2**-8``,
         and the band test's argument gives ``n / S``, the 12-digit rounding of ``X = A + R``.
-        The compiled code takes no exact test here (``t`` whole says nothing of ``X``)."""
+        The compiled code takes no exact test here (``t`` whole says nothing of ``X``), and no
+        guard on ``a``: with ``|S|`` at most DRAWN_SCALE and ``0 <= v < 1`` the range test
+        ``10**11 <= t < 10**12`` already bounds ``|S a|`` below ``10**12 + 10**9 + 1``."""
         def fits(s):
-            return -DRAWN_SCALE <= s <= DRAWN_SCALE and guarded_fits(name, a, s)
+            return -DRAWN_SCALE <= s <= DRAWN_SCALE
         return retried(name, routine, a, namespace["_d13"](v), fits)
 
     def guarded_fits(name, a, s):

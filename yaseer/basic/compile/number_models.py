@@ -677,14 +677,18 @@ class DecimalNumbers(PlainNumbers):
         scale cache ``_D<n>`` (decimal_scales.DRAWN_SCALE bounds its scale: its docstring proves
         this is the sum of the local and the number drawn rounded to 12 digits), else the writer
         ``_zdr``, which rounds the number drawn (``_d13``) and adds it with ``_dadd``.  The local
-        is read before the number is drawn, as in ``local + RND`` unfused."""
+        is read before the number is drawn, as in ``local + RND`` unfused.
+
+        No guard on the local (a sum of two variables tests ``l < a < h``): the range test
+        implies it here.  The number drawn ``v`` is from 0 up to below 1 and ``|S|`` at most
+        DRAWN_SCALE (1E+9), so ``10**11 <= t < 10**12`` gives ``|S a| <= |t| + |S v| + (t's
+        rounding) < 10**12 + 10**9 + 1``, inside the guard's ``10**13`` (decimal_scales.GUARD)."""
         from yaseer.basic.arithmetic.decimal_scales import BAND, BOTTOM, MAGIC, TOP
 
         self._temps += 1
         cache = f"_D{self.site_salt}{self._temps}"
         self.cache_bases.append(cache)
         return (f"(_dn / {cache} if {BOTTOM!r} <= (_dt := ({local} + (_dv := _rndr())) * {cache}) < {TOP!r} and "
-                f"{cache}l < {local} < {cache}h and "
                 f"{-BAND!r} < _dt - (_dn := _dt + {MAGIC!r} - {MAGIC!r}) < {BAND!r} else "
                 f"_zdr({cache!r}, _dadd, {local}, _dv))")
 
