@@ -307,6 +307,57 @@ def test_whole_degrees_come_from_the_table_of_the_routines_results(helper):
     assert site.slow > 0
 
 
+@pytest.mark.parametrize("helper", ["_sqrt", "_log", "_log10", "_exp", "_sin", "_cos"])
+def test_a_function_site_keeps_two_decades(helper):
+    """A function site tries its second scale (the one its cache held before the writer last
+    changed it) before the writer: arguments whose values move between two decades (a square
+    root of numbers from 1 to 1000, as Ahl's benchmark takes them) call the writer only while
+    the site learns them, and every result is mpmath's value rounded to 12 digits.  Each value's
+    decade's ends (both sides of the power of ten), negative values (SIN, COS, LN below 1),
+    0, the routine's errors and the range's ends in between; a planted bug (a result of the
+    second scale divided by the first) fails."""
+    rng = random.Random(41)
+    pairs = {"_sqrt": (own(rng.uniform(30.0, 99.0)), own(rng.uniform(100.0, 999.0))),
+             "_log": (own(rng.uniform(1.2, 2.7)), own(rng.uniform(2.8, 9e3))),
+             "_log10": (own(rng.uniform(1.3, 9.9)), own(rng.uniform(11.0, 9e8))),
+             "_exp": (own(rng.uniform(0.1, 2.3)), own(rng.uniform(2.31, 4.6))),
+             "_sin": (own(rng.uniform(5.8, 60.0)), own(rng.uniform(185.8, 240.0))),
+             "_cos": (own(rng.uniform(0.5, 84.0)), own(rng.uniform(95.0, 174.0)))}
+    edges = {"_sqrt": [100.0, own(99.9999999999), own(100.000000001), 1e-99, 9.99999999999e99, 0.0],
+             "_log": [own(math.e), own(math.e * (1 + 1e-12)), own(1 / math.e), 0.5, 1e-99, 9.99999999999e99],
+             "_log10": [10.0, own(9.99999999999), own(10.0000000001), 0.01, 1e-99, 9.99999999999e99],
+             "_exp": [own(math.log(10)), own(math.log(10) * (1 + 1e-12)), -4.0, 0.0, 230.0, -230.0],
+             "_sin": [own(math.degrees(math.asin(0.1))), own(5.73917047726), -30.0, 0.0, 1e-99, 210.5],
+             "_cos": [own(math.degrees(math.acos(0.1))), own(84.2608295227), 120.5, 0.0, 1e-99, -95.5]}
+    site = Site(helper)
+    arguments_ = []
+    for _ in range(40):  # a loop's arguments: one decade of values, then the other, in turn
+        first, second = pairs[helper]
+        arguments_ += [own(first * (1 + rng.uniform(-0.01, 0.01))) for _ in range(5)]
+        arguments_ += [own(second * (1 + rng.uniform(-0.01, 0.01))) for _ in range(5)]
+    for x in arguments_:
+        assert site(x) == reference(helper, x), (helper, x)
+    # the two decades learnt, then the writer only near a rounding boundary (about 1 in 128 values;
+    # with one scale it was called at each of the 79 changes of decade)
+    assert site.slow <= 12, site.slow
+    for x in edges[helper] + arguments_[:20]:
+        expected = reference(helper, x) if helper != "_sqrt" or x >= 0 else None
+        if expected is not None and abs(expected) < 1e-99:
+            expected = 0.0  # (below 1E-99 the calculator's 0)
+        try:
+            got = site(x)
+        except BasicError:
+            got = "error"
+            with pytest.raises(BasicError):
+                site.routine(x)
+        else:
+            assert got == site.routine(x)
+        if got != "error" and expected is not None:
+            assert got == expected, (helper, x, got, expected)
+    planted = Site(helper, mutate=lambda code: code.replace("_dn / _D1b if", "_dn / _D1 if"))  # the wrong scale
+    assert any(planted(x) != reference(helper, x) for x in arguments_)
+
+
 def drawn_sum_site():
     """``a + RND`` compiled (number_models.DecimalNumbers._drawn_sum) on the local ``a``, with the
     drawn numbers from ``site["drawn"]`` and a count of the writer's calls."""

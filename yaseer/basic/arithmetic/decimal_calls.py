@@ -91,15 +91,18 @@ def angle_functions(unit: str) -> dict:
 def helpers(namespace: dict) -> dict:
     """The compiled code's float functions (``_msqrt`` ...; the bounds of SIN and COS depend on
     the angle unit: :func:`angle_functions`) and ``_zdf(name, routine, x, v, largest)``: for a value ``v`` of the
-    function at ``x`` the site's cached scale did not give, the band test with the scale of
+    function at ``x`` neither of the site's cached scales gave, the band test with the scale of
     ``v``'s own decade (kept for the site), else ``routine(x)`` (decimal_arith's, whose
     errors are raised; for RND ``x`` is the number drawn and the routine rounds it), whose
-    decade's scale is kept, or NaN (matches nothing) beyond ``largest``."""
+    decade's scale is kept, or NaN (matches nothing) beyond ``largest``.  The scale a new one
+    replaces stays as the site's second (``namespace[name + "b"]``), which the compiled code
+    tries before calling ``_zdf``: a function whose values move between two decades (a square
+    root of numbers from 1 to 1000) keeps both and calls ``_zdf`` only for a third."""
 
     def function(name, routine, x, v, largest):
         s = scale(v)  # (NaN for a NaN v: every test below fails)
         if -largest <= s <= largest:
-            namespace[name] = s
+            keep(name, s)
             t = v * s
             if BOTTOM <= t < TOP:
                 n = t + MAGIC - MAGIC
@@ -108,8 +111,15 @@ def helpers(namespace: dict) -> dict:
         result = routine(x)
         if result:
             s = scale(result)
-            namespace[name] = s if -largest <= s <= largest else nan
+            keep(name, s if -largest <= s <= largest else nan)
         return result
+
+    def keep(name, s):
+        """The site's scale is ``s`` from now on; the one it replaces becomes its second."""
+        old = namespace[name]
+        if old != s:
+            namespace[name + "b"] = old
+            namespace[name] = s
 
     return {"_zdf": function, "_msqrt": sqrt, "_mlog": log, "_mlog10": log10, "_mexp": exp, "_msin": sin,
             "_mcos": cos, "_mfmod": fmod, "_nan": nan}

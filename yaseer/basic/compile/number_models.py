@@ -695,7 +695,7 @@ class DecimalNumbers(PlainNumbers):
     def cache_prelude(self, source: str) -> str:
         """The module code that sets the caches ``source`` writes to match nothing."""
         used = sorted(set(_SCALE_WRITTEN.findall(source)))
-        return "".join(f"{name} = 1e999 - 1e999\n{name}l = {name}h = 0.0\n" for name in used)
+        return "".join(f"{name} = {name}b = 1e999 - 1e999\n{name}l = {name}h = 0.0\n" for name in used)
 
     # the float value of a function the compiled code rounds through a scale cache
     # (decimal_calls.py): {x} the argument, {first} its first evaluation
@@ -714,9 +714,11 @@ class DecimalNumbers(PlainNumbers):
 
     def call(self, name: str, helper: str, codes: list[str], kinds: list[str], result: str) -> tuple[str, str]:
         """SQR LN LOG EXP SIN COS and RND's next number inline: the float function's value
-        through a scale cache ``_D<n>`` (decimal_calls.py proves it), else decimal_arith's
-        routine through the cache's writer ``_zdf``; SIN and COS of a whole angle in degrees
-        first from the table of the whole degrees (:data:`_WHOLE_DEGREES`)."""
+        through a scale cache ``_D<n>`` (decimal_calls.py proves it for any scale the writer
+        keeps), then through the site's second scale ``_D<n>b`` (the one ``_D<n>`` had before the
+        writer last changed it), else decimal_arith's routine through the cache's writer
+        ``_zdf``; SIN and COS of a whole angle in degrees first from the table of the whole
+        degrees (:data:`_WHOLE_DEGREES`)."""
         from yaseer.basic.arithmetic.decimal_calls import LARGEST_SCALE
         from yaseer.basic.arithmetic.decimal_scales import BAND, BOTTOM, MAGIC, TOP
 
@@ -736,10 +738,12 @@ class DecimalNumbers(PlainNumbers):
             first = x if _plain_operand(x) else f"(_x{n} := {x})"
             x = x if _plain_operand(x) else f"_x{n}"
             table = self._WHOLE_DEGREES.get(helper)
+            self.cache_bases.append(f"{cache}b")  # (the site's second scale: a name its code reads)
             scaled = f"(_dv := {form.format(x=x, first=x if table else first)}) * {cache}"
             cache_value, routine = cache, helper
-        code = (f"(_dn / {cache_value} if {BOTTOM!r} <= (_dt := {scaled}) < {TOP!r} and "
-                f"{-BAND!r} < _dt - (_dn := _dt + {MAGIC!r} - {MAGIC!r}) < {BAND!r} else "
+        band = f"{-BAND!r} < _dt - (_dn := _dt + {MAGIC!r} - {MAGIC!r}) < {BAND!r}"
+        code = (f"(_dn / {cache_value} if {BOTTOM!r} <= (_dt := {scaled}) < {TOP!r} and {band} else "
+                f"_dn / {cache}b if {BOTTOM!r} <= (_dt := _dv * {cache}b) < {TOP!r} and {band} else "
                 f"_zdf({cache!r}, {routine}, {x}, _dv, {LARGEST_SCALE[helper]!r}))")
         if table:  # a whole angle in degrees: the routine's result from a table
             code = f"({table}[{x} % 360.0] if -_Xu < {first} < _Xu and not {x} % 1.0 else {code})"
