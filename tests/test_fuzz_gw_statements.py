@@ -2,7 +2,8 @@
 CLS, KEY, SCREEN, VIEW PRINT, WIDTH, CSRLIN, POS, SCREEN(), INKEY$, PRINT of control
 codes, FRE, RETURN's forms, DEF FN bodies, bad IF branches, MID$ onto itself, WHILE,
 RANDOMIZE, LPOS, PRINT USING, DEFINT/DEFSTR run as statements, CLEAR, blanks inside
-numbers, filling the string space, RENUM, ``.`` as the current line, with arguments in and out of range,
+numbers, filling the string space, RENUM, ``.`` as the current line, DEF SEG, PEEK and POKE,
+with arguments in and out of range,
 left out or of the wrong type.  Each program ends normally or with a BASIC error line
 naming its line (never a Python exception), and writes nothing in its directory.
 
@@ -56,6 +57,9 @@ def statement(data) -> str:
         # "." as the current line (GW's DOT) where a line number may stand, and where it may not
         "LIST .", "LIST 10-.", "LLIST .-", f"DELETE .-{a}", "DELETE .", "EDIT .", f"AUTO ., {a}", "AUTO .",
         f"RENUM {a}, .", "RENUM ., ., .", "LIST .5", "LIST . - .", 'CHAIN "NONE", , DELETE .-', "GOTO .",
+        # memory: the text screen's at &HB800 (and WIDTH 40's pages), the data segment, any other
+        "DEF SEG = &HB800", "DEF SEG", f"DEF SEG = {a}", f"POKE {a}, {b}", f"POKE {a}", f"PRINT PEEK({a})",
+        f"POKE {a} * 2 + 1, {b}: PRINT PEEK({a} * 2 + 1)", f"X = PEEK({a}, {b})",
     ]
     return data.draw(st.sampled_from(choices))
 

@@ -28,8 +28,9 @@ PROGRAMS = ["files.bas", "files_write.bas", "files_input.bas", "files_columns.ba
 def pcbasic_run(source: str, directory: Path) -> str:
     import pcbasic
 
+    # (peek_values: PC-BASIC's table of preset PEEK bytes, none; without one its PEEK fails)
     session = pcbasic.Session(output_streams=None, input_streams=None,
-                              devices={"C:": str(directory)}, current_device="C:")
+                              devices={"C:": str(directory)}, current_device="C:", peek_values={})
     session.start()
     session.execute("NEW")
     out = clean_output(session.execute(source.rstrip("\n") + "\nRUN"))

@@ -21,6 +21,8 @@ FUNCTIONS = {
     "EXTERR": ("FUNC", ("i",), "n", "_M.devices.extended_error"),
     "IOCTL$": ("FUNC", ("i",), "s", "_M.devices.control_string"),
     "ENVIRON$": ("FUNC", ("x",), "s", "_M.devices.environment"),
+    # GWMAIN.ASM PEEK: FRQINT (-32768..65535), the byte at DEF SEG's segment (machine/address_space.py)
+    "PEEK": ("FUNC", ("n",), "n", "_M.address_space.peek"),
 }
 # Values without arguments: name -> (Python expression, "s" or None for an integer).
 SYSTEM_VALUES = {"ERDEV": ("0", None), "ERDEV$": ('""', "s")}
@@ -35,6 +37,7 @@ SYSTEM_VALUES = {"ERDEV": ("0", None), "ERDEV$": ('""', "s")}
 # after the statement has run (NEWSTT finds no end of statement: GWMAIN.ASM GONZER).
 STATEMENTS = {
     "OUT": ("ui", 2, "_M.devices.out", ""),  # SETIO: FRMQNT, ",", GETBYT
+    "POKE": ("ui", 2, "_M.address_space.poke", ""),  # GWMAIN.ASM POKE: FRMQNT, ",", GETBYT
     "WAIT": ("uii", 2, "_M.devices.wait", ""),  # FNWAIT: SETIO, then an optional "," GETBYT
     "LCOPY": ("i", 0, "_M.devices.screen_copy", ""),  # LCOPYS: an optional byte
     "SOUND": ("in", 2, "_M.devices.sound", ""),  # SOUNDS: GETIN2, ",", FRMEVL

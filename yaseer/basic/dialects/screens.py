@@ -41,6 +41,10 @@ control code does its ``controls``.
   POS and SCREEN() do not see it): the Casio's printer is a device of its own (part 7), and
   GW-BASIC's LPRINT writes to LPT1: only (GIO86.ASM LPRINT sets PTRFIL to the printer),
   leaving the screen as it was; False lets it share the screen's text.
+* ``video_segment``: the segment (a paragraph number) where the text screen's memory starts
+  for PEEK and POKE (machine/address_space.py): &HB800 on GW-BASIC's colour PC (the CGA's
+  text memory; a monochrome adapter's would be &HB000); None: the screen has no memory a
+  program reaches (the Casio's PEEK reads its own RAM).
 """
 
 from __future__ import annotations
@@ -50,7 +54,7 @@ from collections import namedtuple
 ScreenRules = namedtuple("ScreenRules", ("late_wrap", "origin", "row_first", "locate_arguments",
                                          "function_keys", "key_label", "clear_draws", "attributes",
                                          "trace_mark", "trace_halts", "input_reads_screen",
-                                         "printer_apart"))
+                                         "printer_apart", "video_segment"), defaults=(None,))
 
 CASIO_SCREEN = ScreenRules(late_wrap=False, origin=0, row_first=False, locate_arguments=(2, 2),
                            function_keys=(), key_label=0, clear_draws=True, attributes=False,
@@ -65,7 +69,7 @@ GW_FUNCTION_KEYS = ("LIST ", "RUN\r", 'LOAD"', 'SAVE"', "CONT\r", ',"LPT1:"\r', 
 GW_SCREEN = ScreenRules(late_wrap=True, origin=1, row_first=True, locate_arguments=(0, 5),
                         function_keys=GW_FUNCTION_KEYS, key_label=6, clear_draws=False, attributes=True,
                         trace_mark="[{line}]", trace_halts=False, input_reads_screen=False,
-                        printer_apart=True)
+                        printer_apart=True, video_segment=0xB800)
 
 # What each control code does on GW-BASIC's text screen when PRINTed (the OEM's PRTMAP is
 # not in the published source; PC-BASIC 2.0.8's console does this): TAB to the next

@@ -497,12 +497,12 @@ class Console:
     def define_machine(self, word: str, value) -> None:
         """DEF SEG [= s] (``word`` "SEG") and DEF USR[n] = a ("USR"): s or a is read as an
         unsigned 16-bit number (GWMAIN.ASM FRQINT: beyond -32768..65535 Overflow); DEF SEG
-        keeps the segment (alone: BASIC's own data segment, kept as 0), which nothing
-        in gw reads (no PEEK, POKE or BLOAD); DEF USR's address is not kept: no machine
-        code runs (see :meth:`user_routine`)."""
-        segment = 0 if value is None else runtime.unsigned_word(value)
+        sets the segment gw's PEEK and POKE use (alone: BASIC's own data segment;
+        machine/address_space.py); DEF USR's address is not kept: no machine code runs
+        (see :meth:`user_routine`)."""
+        segment = None if value is None else runtime.unsigned_word(value)
         if word == "SEG":
-            self.segment = segment
+            self.address_space.define_segment(segment)
 
     @staticmethod
     def user_routine(_argument) -> float:

@@ -344,6 +344,17 @@ class Display:
             k += 1
         return text
 
+    def poke_cell(self, x: int, y: int, byte: int, attribute: bool) -> None:
+        """Put code ``byte`` (0..255) in the cell of column ``x``, row ``y``, or with
+        ``attribute`` make it the cell's colour attribute (a screen without colours keeps
+        none): a POKE into the screen's memory, which places text as LOCATE does."""
+        if attribute:
+            if self.attrs is not None:
+                self.attrs[y][x] = byte
+        else:
+            self.cells[y][x] = chr(byte)
+        self.drawn = self.changed = True
+
     def attr_at(self, x: int, y: int) -> int:
         """The colour attribute of column ``x`` of row ``y`` (0..255; 7 without colours)."""
         return NORMAL if self.attrs is None else self.attrs[y][x]

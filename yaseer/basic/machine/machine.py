@@ -65,6 +65,7 @@ from yaseer.basic.machine.chaining import ChainTo, Chaining, RunAgain
 from yaseer.basic.machine.breaks import Breaks, _interrupt_handler
 from yaseer.basic.machine import casio_words
 from yaseer.basic.machine.casio_words import CasioWords
+from yaseer.basic.machine.address_space import AddressSpace
 from yaseer.basic.machine.devices import Devices
 from yaseer.basic.machine.signals import (  # noqa: F401  (the run-time exceptions are re-exported)
     END, INTERNAL_ERROR, BreakPoint, DirectJump, ErrorTrapping, ProgramEnd, ProgramStop, ResumeDirect,
@@ -301,6 +302,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
                                words.absent_devices if words else None, devices)
         self.files.device_streams.update(screen=self.screen, printer=self.printer)
         self.devices = Devices(self.files)  # gw's INP, OUT, ENVIRON, LOCK ... (machine/devices.py)
+        # gw's PEEK and POKE (machine/address_space.py): the screen's memory is the display's
+        self.address_space = AddressSpace(self._screen_model, self.dialect.charset, self.dialect.screen.video_segment)
         self.clock = Clock()  # TIMER, DATE$, TIME$; DATE$ = and TIME$ = move it
         self._output_eof = bool(words and words.output_eof)  # casio: EOF of an output file is 0 (EOF.md item 4)
         self.gosub_levels = words.gosub_levels if words else None  # casio: 96 (GOSUB.md item 2)

@@ -13,7 +13,7 @@ import operator
 from collections import deque
 from itertools import repeat
 
-from yaseer.basic.arithmetic.values import Wide, nearest_integer, to_int
+from yaseer.basic.arithmetic.values import Wide, nearest_integer, to_int, to_single
 from yaseer.basic.errors import (
     BasicError, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_CALL, OVERFLOW, STRING_TOO_LONG,
 )
@@ -89,10 +89,15 @@ def cint(x: float) -> int:
 
 
 def unsigned_word(x: float) -> int:
-    """``x`` as GW-BASIC's unsigned 16-bit number 0..65535 (GWMAIN.ASM FRQINT: -32768..-1
-    count from 65536; beyond -32768..65535 Overflow)."""
+    """``x`` as GW-BASIC's unsigned 16-bit number 0..65535, as GWMAIN.ASM FRQINT makes it:
+    a positive number from 32768 below 65536 is made a single and 65536 taken off before it
+    is rounded to an integer (FRCINT), any other rounded as it is; a rounded value outside
+    -32768..32767 is Overflow (so 32767.6 and -32768.6 are, 65535.6 is 0); -32768..-1 count
+    from 65536."""
+    if 32768.0 <= x < 65536.0:
+        x = to_single(x) - 65536.0
     n = nearest_integer(x)
-    if not -32768 <= n <= 65535:
+    if not -32768 <= n <= 32767:
         overflow()
     return n & 0xFFFF
 

@@ -1,0 +1,130 @@
+"""GW-BASIC's memory as PEEK and POKE reach it: the PC's 20-bit address space, as far as a
+program can see it on yaseer's machine.
+
+``PEEK(a)`` reads the byte at segment * 16 + a, ``POKE a, b`` writes one there; the segment
+is the one ``DEF SEG`` set (GWEVAL.ASM DEF stores it in SAVSEG; at start and after a ``DEF
+SEG`` without a number, BASIC's own data segment: ITSA86.ASM puts DS in SAVSEG).  The address
+is an unsigned 16-bit number (GWMAIN.ASM PEEK and POKE read it with FRQINT: -32768..65535,
+a negative one counting from 65536; beyond, Overflow); POKE's byte is GETBYT's (0..255, else
+Illegal function call).  Units: addresses and segments are byte counts, segments in
+paragraphs of 16 bytes.
+
+What lies where (a colour PC, as the machine behind PC-BASIC's recordings had):
+
+* the text screen's memory, 16 KB from the video segment (``ScreenRules.video_segment``,
+  &HB800; the CGA's): the screen's pages one after another, each 4096 bytes at 80 columns
+  and 2048 at 40 (the BIOS's page sizes), a cell two bytes, its character's code at the even
+  offset and its colour attribute at the odd one, row by row.  Page 0 is yaseer's display
+  (machine/display.py): PEEK reads its cells, POKE writes them, the key line included; the
+  other pages are memory of their own, blank cells (32, 7) until POKEd, as a mode set
+  leaves them (PC-BASIC 2.0.8 reads them so); the bytes past a page's cells read 0;
+* BASIC's data segment (see :data:`DATA_SEGMENT`): its first bytes are those the
+  recordings read (0, 0, 16, 130: PEEK(2) is 16 on the real machine; PC-BASIC 2.0.8 gives
+  the four) and what POKE wrote;
+* the rest of the PC's RAM (below &HA0000): what POKE wrote there, else 0 (yaseer does not
+  model DOS, the BIOS's data or interrupt vectors; PC-BASIC 2.0.8 reads 0 where it models
+  nothing);
+* above: ROM and adapters yaseer does not have: 0, and POKE changes nothing.
+"""
+
+from __future__ import annotations
+
+from yaseer.basic.machine import runtime
+from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, error_for
+
+# BASIC's data segment (a paragraph number): where DEF SEG alone points, and what PEEK reads at
+# start.  The real machine's, as PC-BASIC's recordings name it (its PEEK test presets a byte of
+# segment 5037, &H13AD, the real run's data segment); nothing a program sees depends on the
+# number itself but a DEF SEG that names it.
+DATA_SEGMENT = 0x13AD
+# The first bytes of the data segment (offset -> byte): what the real machine reads there.
+DATA_SEGMENT_START = {0: 0, 1: 0, 2: 16, 3: 130}
+VIDEO_BYTES = 0x4000  # the colour adapter's 16 KB of text memory
+PAGE_BYTES = {80: 4096, 40: 2048}  # a text page's size at each width (BIOS)
+RAM_END = 0xA0000  # the PC's 640 KB of RAM end here; adapters and ROM above
+BLANK_CELL = (32, 7)  # a cleared cell: a blank, white on black
+ADDRESS_MASK = 0xFFFFF  # 20 bits: segment * 16 + offset wraps at 1 MB
+
+
+class AddressSpace:
+    """The memory PEEK and POKE see (module docstring).
+
+    ``screen_model``: a callable giving the display (machine/display.py) brought up to date
+    with what was printed (Console._screen_model); ``charset``: the machine's codes;
+    ``video_segment``: the text screen's segment (None: no screen memory)."""
+
+    def __init__(self, screen_model, charset, video_segment: int | None):
+        self.screen_model = screen_model
+        self.charset = charset
+        self.video = None if video_segment is None else video_segment * 16
+        self.segment = DATA_SEGMENT
+        self.ram: dict[int, int] = {}  # 20-bit address -> the byte POKE left there
+
+    def define_segment(self, segment: int | None) -> None:
+        """DEF SEG [= s]: s (a paragraph number, 0..65535), or BASIC's data segment."""
+        self.segment = DATA_SEGMENT if segment is None else segment
+
+    def peek(self, offset: float) -> float:
+        """PEEK(offset): the byte at the segment's ``offset`` (FRQINT: -32768..65535)."""
+        return float(self.read(self._address(offset)))
+
+    def poke(self, offset: float, byte: int) -> None:
+        """POKE offset, byte: offset as PEEK's, then the byte 0..255 (GETBYT)."""
+        where = self._address(offset)
+        if not 0 <= byte <= 255:
+            raise error_for(ILLEGAL_FUNCTION_CALL)
+        self.write(where, byte)
+
+    def _address(self, offset: float) -> int:
+        return (self.segment * 16 + runtime.unsigned_word(offset)) & ADDRESS_MASK
+
+    # ------------------------------------------------------------ bytes by address
+    def read(self, address: int) -> int:
+        """The byte at 20-bit ``address``."""
+        video = self._video_cell(address)
+        if video is not None:
+            return self._read_video(address, video)
+        if address in self.ram:
+            return self.ram[address]
+        data = address - DATA_SEGMENT * 16
+        return DATA_SEGMENT_START.get(data, 0)
+
+    def write(self, address: int, byte: int) -> None:
+        """Put ``byte`` at 20-bit ``address`` (ROM and absent adapters keep theirs)."""
+        video = self._video_cell(address)
+        if video is not None:
+            self._write_video(address, video, byte)
+        elif address < RAM_END:
+            self.ram[address] = byte
+
+    # ------------------------------------------------------------ the text screen's memory
+    def _video_cell(self, address: int):
+        """(page, cell number, attribute byte?) for an address in the screen's memory, the
+        cell None past the page's cells; None outside the screen's memory."""
+        if self.video is None or not 0 <= address - self.video < VIDEO_BYTES:
+            return None
+        display = self.screen_model()
+        size = PAGE_BYTES.get(display.columns, 4096)
+        page, offset = divmod(address - self.video, size)
+        cell = offset // 2 if offset < display.columns * display.rows * 2 else None
+        return page, cell, offset % 2
+
+    def _read_video(self, address: int, where) -> int:
+        page, cell, odd = where
+        if cell is None:
+            return self.ram.get(address, 0)
+        if page:
+            return self.ram.get(address, BLANK_CELL[odd])
+        display = self.screen_model()
+        x, y = cell % display.columns, cell // display.columns
+        if odd:
+            return display.attr_at(x, y)
+        return ord(self.charset.codes(display.char_at(x, y))[0])
+
+    def _write_video(self, address: int, where, byte: int) -> None:
+        page, cell, odd = where
+        if page or cell is None:
+            self.ram[address] = byte
+            return
+        display = self.screen_model()
+        display.poke_cell(cell % display.columns, cell // display.columns, byte, odd)
