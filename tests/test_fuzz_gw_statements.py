@@ -2,7 +2,7 @@
 CLS, KEY, SCREEN, VIEW PRINT, WIDTH, CSRLIN, POS, SCREEN(), INKEY$, PRINT of control
 codes, FRE, RETURN's forms, DEF FN bodies, bad IF branches, MID$ onto itself, WHILE,
 RANDOMIZE, LPOS, PRINT USING, DEFINT/DEFSTR run as statements, CLEAR, blanks inside
-numbers, filling the string space, RENUM, ``.`` as the current line, DEF SEG, PEEK and POKE,
+numbers, filling the string space, RENUM, ``.`` as the current line, DEF SEG, PEEK, POKE and VARPTR,
 with arguments in and out of range,
 left out or of the wrong type.  Each program ends normally or with a BASIC error line
 naming its line (never a Python exception), and writes nothing in its directory.
@@ -60,6 +60,7 @@ def statement(data) -> str:
         # memory: the text screen's at &HB800 (and WIDTH 40's pages), the data segment, any other
         "DEF SEG = &HB800", "DEF SEG", f"DEF SEG = {a}", f"POKE {a}, {b}", f"POKE {a}", f"PRINT PEEK({a})",
         f"POKE {a} * 2 + 1, {b}: PRINT PEEK({a} * 2 + 1)", f"X = PEEK({a}, {b})",
+        f"P = VARPTR(#{a}) + 188: POKE P, {b}: PRINT PEEK(P)", "PRINT VARPTR(X)", f"PRINT VARPTR({a})",
     ]
     return data.draw(st.sampled_from(choices))
 

@@ -160,3 +160,56 @@ def test_the_address_as_frqint_makes_it(tmp_path, address, expected):
               '90 OPEN "O.TXT" FOR OUTPUT AS 1: PRINT #1, "E"; ERR: END\n')
     yaseer_run(source, tmp_path)
     assert (tmp_path / "O.TXT").read_bytes() == expected.replace("\n", "\r\n").encode() + b"\x1a"
+
+
+FIELD_BUFFERS = """\
+10 ON ERROR GOTO 900: OPEN "O.TXT" FOR OUTPUT AS 2
+20 OPEN "T.DAT" FOR RANDOM AS 1: OPEN "U.DAT" AS 3 LEN = 20
+30 FIELD #1, 10 AS A$, 5 AS B$: FIELD #3, 4 AS C$
+40 LSET A$ = "hello": RSET B$ = "xy": LSET C$ = "wxyz"
+50 PRINT #2, VARPTR(#0); VARPTR(#1); VARPTR(#2); VARPTR(#3)
+60 P = VARPTR(#1) + 188: FOR I = P TO P + 16: PRINT #2, PEEK(I);: NEXT: PRINT #2,
+70 POKE P, 72: POKE P + 14, 33: PRINT #2, A$; "|"; B$; "|"
+80 Q = VARPTR(#3) + 188: FOR I = Q TO Q + 5: PRINT #2, PEEK(I);: NEXT: PRINT #2,
+90 POKE Q + 1, 65: PRINT #2, C$: PUT #3, 1: GET #3, 1: PRINT #2, C$
+100 A$ = "own": POKE P + 1, 66: PRINT #2, A$; PEEK(P + 1)
+110 PRINT #2, VARPTR(#4)
+120 PRINT #2, VARPTR(#256)
+130 PRINT #2, VARPTR(#-1)
+140 PRINT #2, VARPTR(# 1.4)
+150 PRINT #2, PEEK(VARPTR(#2) + 188); PEEK(P - 1)
+160 CLOSE: END
+900 PRINT #2, "E"; ERR; ERL: RESUME NEXT
+"""
+
+
+def test_varptr_of_a_file_and_its_field_buffer(tmp_path):
+    """VARPTR(#n) is file n's control block (n 0..3, open or not; beyond: Bad file number; a
+    byte, else Illegal function call): 3435 + 322 n, as the recordings of the real GW-BASIC
+    3.23 show (VARPTR(#1) 3757); its FIELD buffer 188 bytes on.  PEEK reads a random file's
+    record buffer, POKE writes it and the variables fielded over it show the byte (GW's
+    descriptors point into the buffer); a variable the program stored another string in
+    is no longer fielded."""
+    ours = _files_alike(FIELD_BUFFERS, tmp_path)
+    rows = ours["O.TXT"].decode().split("\r\n")
+    assert rows[0].split() == ["3435", "3757", "4079", "4401"]
+    assert rows[2] == "Hello     |   x!|"
+
+
+def test_varptr_of_a_string_file_number_is_type_mismatch(tmp_path):
+    """GTBYTC reads a number (a string: Type mismatch; PC-BASIC 2.0.8 fails with a Python error)."""
+    assert yaseer_run('10 PRINT VARPTR(#"A")\n', tmp_path) == "Type mismatch in 10\n"
+
+
+@pytest.mark.parametrize("statement, expected", [
+    ("PRINT VARPTR(A)", "VARPTR of a variable is not emulated in 10\n"),
+    ("PRINT VARPTR(1)", "Syntax error in 10\n"),
+    ('PRINT VARPTR("A")', "Syntax error in 10\n"),
+    ("PRINT VARPTR", "Syntax error in 10\n"),
+    ("PRINT VARPTR(A, B)", "Syntax error in 10\n"),
+])
+def test_varptr_of_a_variable_says_what_is_missing(tmp_path, statement, expected):
+    """VARPTR's argument must be a variable (GWEVAL.ASM: PTRGTN reads a name; the recordings:
+    ``VARPTR(1)``, ``VARPTR("ABC")`` Syntax error); yaseer keeps no data segment of its
+    variables, so a variable's address ends the run naming what is missing."""
+    assert yaseer_run(f"10 {statement}\n", tmp_path) == expected

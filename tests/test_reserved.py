@@ -42,7 +42,7 @@ def outcome(program: str, dialect: str) -> tuple[str, str]:
 CASIO_MACHINE_WORDS = ("PEEK", "INKEY$", "LOCATE")  # the FX-850P's display, keyboard and memory
 GW_SCREEN_WORDS = ("INKEY$", "CSRLIN", "LOCATE")  # GW-BASIC's text screen and keyboard
 GW_DEVICE_WORDS = ("SOUND",)  # ... and the PC's devices (dialects/gw_words.py: a keyword, DIM SOUND(3) Syntax error)
-GW_MEMORY_WORDS = ("PEEK",)  # ... and its memory (machine/address_space.py)
+GW_MEMORY_WORDS = ("PEEK", "VARPTR")  # ... and its memory (machine/address_space.py)
 
 
 UNIMPLEMENTED = [

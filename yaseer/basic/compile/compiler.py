@@ -744,7 +744,12 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         word = stmt.word
         devices = self.device_words
         if devices and word in devices.statements:
+            writes = word in devices.writes_variables  # (POKE into a FIELD buffer)
+            if writes:
+                self.emit(STORE_LOCALS)
             device_statement(self, stmt, devices, scope)
+            if writes:
+                self.emit(LOAD_LOCALS)
             return
         commas = "," * max(len(stmt.args) - 1, 0)
         if not word.endswith("()") and stmt.marks not in (commas, "=" + commas):

@@ -409,6 +409,10 @@ class ExpressionCompiler:
         own = self.own_functions.get(node.name)  # the dialect's own words (dialects/casio.py)
         forms, result, helper = own[1:] if own else _FUNCTIONS[node.name]
         args = list(node.args)
+        if forms == ("v",):  # VARPTR(variable): a variable's name, not its value
+            if len(args) != 1 or not isinstance(args[0], (ast.Var, ast.Elem)):
+                raise syntax_error()
+            return self.numbers.call(node.name, helper, [repr(self.numbers.name(args[0].name))], ["s"], "n")
         if node.name == "RND" and (not args or (len(args) == 1 and (constant_value(args[0]) or 0) > 0)):
             return self.numbers.call("RND", "_rndf", [], [], "n")  # the next number (the generator's drawer)
         if node.name in ast.KEEPS_STRINGS and self.numbers.typed and len(args) == 1 and ast.expr_type(args[0]) == "s":
@@ -462,6 +466,15 @@ class ExpressionCompiler:
         name = self.numbers.name(node.name)
         held = self.held(list(node.args), args)
         return self.let_go(f"_fn({name!r}, {len(node.args)})({', '.join(args)})", held), self.kind_of(node)
+
+    def expr_FilePointer(self, node, scope):
+        """``WORD(#n)`` (VARPTR(#n)): the dialect's function of a file number, else Syntax error."""
+        helper = self.device_words.file_functions.get(node.name) if self.device_words else None
+        if helper is None:
+            raise syntax_error()
+        if ast.expr_type(node.number) == "s":
+            raise type_mismatch()
+        return self.numbers.call(node.name, helper, [self.numeric(node.number, scope)], ["n"], "n")
 
     def expr_SysVar(self, node, scope):
         if node.name == "PI":

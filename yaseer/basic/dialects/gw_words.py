@@ -23,7 +23,14 @@ FUNCTIONS = {
     "ENVIRON$": ("FUNC", ("x",), "s", "_M.devices.environment"),
     # GWMAIN.ASM PEEK: FRQINT (-32768..65535), the byte at DEF SEG's segment (machine/address_space.py)
     "PEEK": ("FUNC", ("n",), "n", "_M.address_space.peek"),
+    # GWEVAL.ASM VARPTR: "(" then a variable (PTRGTN; form "v": a variable, else Syntax error)
+    "VARPTR": ("FUNCN", ("v",), "n", "_M.address_space.variable_pointer"),
 }
+# Functions of a file number: ``WORD(#n)`` -> helper (GWEVAL.ASM VARPTR: "#", GTBYTC, GETPTR).
+FILE_FUNCTIONS = {"VARPTR": "_M.address_space.file_pointer"}
+# Statements that may change variables the compiled block holds: its values are stored before
+# and taken back after (a POKE into a FIELD buffer changes the variables fielded over it).
+WRITES_VARIABLES = frozenset({"POKE"})
 # Values without arguments: name -> (Python expression, "s" or None for an integer).
 SYSTEM_VALUES = {"ERDEV": ("0", None), "ERDEV$": ('""', "s")}
 
@@ -75,4 +82,5 @@ class Words:
 
 
 WORDS = Words(functions=FUNCTIONS, system_values=SYSTEM_VALUES, statements=STATEMENTS, range_words=RANGE_WORDS,
-              ends_first=ENDS_FIRST, dollar_apart=DOLLAR_APART)
+              ends_first=ENDS_FIRST, dollar_apart=DOLLAR_APART, file_functions=FILE_FUNCTIONS,
+              writes_variables=WRITES_VARIABLES)

@@ -20,7 +20,14 @@ What lies where (a colour PC, as the machine behind PC-BASIC's recordings had):
   leaves them (PC-BASIC 2.0.8 reads them so); the bytes past a page's cells read 0;
 * BASIC's data segment (see :data:`DATA_SEGMENT`): its first bytes are those the
   recordings read (0, 0, 16, 130: PEEK(2) is 16 on the real machine; PC-BASIC 2.0.8 gives
-  the four) and what POKE wrote;
+  the four) and what POKE wrote; the files' blocks from :data:`FILE_BLOCKS` on, one for
+  each file number 0..3 (GW's default /F:3 and /S:128), each a 6-byte header, the 188-byte
+  file control block ``VARPTR(#n)`` points at (GIO86.ASM GETPTR: the FDB's F_MODE) and the
+  128-byte FIELD buffer (FD_DAT): the addresses the recordings show (``VARPTR(#1)`` is 3757,
+  file 1's buffer at 3945).  A random file's buffer bytes are its record buffer
+  (machine/random_files.py): PEEK reads them, POKE writes them and the variables FIELDed
+  over them see the byte, as GW's descriptors point into the buffer; the other bytes
+  there, and a buffer no random file holds, read what POKE left, else 0;
 * the rest of the PC's RAM (below &HA0000): what POKE wrote there, else 0 (yaseer does not
   model DOS, the BIOS's data or interrupt vectors; PC-BASIC 2.0.8 reads 0 where it models
   nothing);
@@ -30,7 +37,7 @@ What lies where (a colour PC, as the machine behind PC-BASIC's recordings had):
 from __future__ import annotations
 
 from yaseer.basic.machine import runtime
-from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, error_for
+from yaseer.basic.errors import BAD_FILE_NUMBER, ILLEGAL_FUNCTION_CALL, error_for, not_emulated
 
 # BASIC's data segment (a paragraph number): where DEF SEG alone points, and what PEEK reads at
 # start.  The real machine's, as PC-BASIC's recordings name it (its PEEK test presets a byte of
@@ -39,6 +46,14 @@ from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, error_for
 DATA_SEGMENT = 0x13AD
 # The first bytes of the data segment (offset -> byte): what the real machine reads there.
 DATA_SEGMENT_START = {0: 0, 1: 0, 2: 16, 3: 130}
+# The files' blocks in the data segment (offsets; GW-BASIC 3.23's defaults /F:3, /S:128), as the
+# recordings of the real machine place them: VARPTR(#0..#3) 3435, 3757, 4079, 4401.
+FILE_BLOCKS = 3429  # file 0's block
+FILE_HEADER = 6  # bytes before a file's control block
+CONTROL_BLOCK = 188  # the control block's bytes before its FIELD buffer
+BUFFER_BYTES = 128  # a FIELD buffer (/S:128)
+BLOCK_BYTES = FILE_HEADER + CONTROL_BLOCK + BUFFER_BYTES  # 322
+BLOCK_FILES = 4  # file 0 (the program's) and files 1..3
 VIDEO_BYTES = 0x4000  # the colour adapter's 16 KB of text memory
 PAGE_BYTES = {80: 4096, 40: 2048}  # a text page's size at each width (BIOS)
 RAM_END = 0xA0000  # the PC's 640 KB of RAM end here; adapters and ROM above
@@ -51,11 +66,15 @@ class AddressSpace:
 
     ``screen_model``: a callable giving the display (machine/display.py) brought up to date
     with what was printed (Console._screen_model); ``charset``: the machine's codes;
-    ``video_segment``: the text screen's segment (None: no screen memory)."""
+    ``video_segment``: the text screen's segment (None: no screen memory); ``files``: the
+    machine's file table (machine/files.py); ``fields_changed(file)``: called after a POKE
+    into random file ``file``'s buffer (the machine's FIELD variables take their slices)."""
 
-    def __init__(self, screen_model, charset, video_segment: int | None):
+    def __init__(self, screen_model, charset, video_segment: int | None, files=None, fields_changed=None):
         self.screen_model = screen_model
         self.charset = charset
+        self.files = files
+        self.fields_changed = fields_changed
         self.video = None if video_segment is None else video_segment * 16
         self.segment = DATA_SEGMENT
         self.ram: dict[int, int] = {}  # 20-bit address -> the byte POKE left there
@@ -75,6 +94,22 @@ class AddressSpace:
             raise error_for(ILLEGAL_FUNCTION_CALL)
         self.write(where, byte)
 
+    def file_pointer(self, number: float) -> float:
+        """VARPTR(#n): the offset of file n's control block in the data segment, n a byte
+        (GTBYTC: 0..255, else Illegal function call) naming one of the blocks (0..3, open or
+        not, as the recordings show; beyond, Bad file number: GETPTR's ERFNO3)."""
+        n = runtime.cint(number)
+        if not 0 <= n <= 255:
+            raise error_for(ILLEGAL_FUNCTION_CALL)
+        if n >= BLOCK_FILES:
+            raise error_for(BAD_FILE_NUMBER)
+        return float(FILE_BLOCKS + n * BLOCK_BYTES + FILE_HEADER)
+
+    @staticmethod
+    def variable_pointer(_name) -> float:
+        """VARPTR(variable): yaseer does not lay its variables out in a data segment."""
+        raise not_emulated("VARPTR of a variable")
+
     def _address(self, offset: float) -> int:
         return (self.segment * 16 + runtime.unsigned_word(offset)) & ADDRESS_MASK
 
@@ -84,6 +119,10 @@ class AddressSpace:
         video = self._video_cell(address)
         if video is not None:
             return self._read_video(address, video)
+        buffer = self._field_byte(address)
+        if buffer is not None:
+            file, k = buffer
+            return file.buffer[k]
         if address in self.ram:
             return self.ram[address]
         data = address - DATA_SEGMENT * 16
@@ -92,10 +131,31 @@ class AddressSpace:
     def write(self, address: int, byte: int) -> None:
         """Put ``byte`` at 20-bit ``address`` (ROM and absent adapters keep theirs)."""
         video = self._video_cell(address)
+        buffer = None if video is not None else self._field_byte(address)
         if video is not None:
             self._write_video(address, video, byte)
+        elif buffer is not None:
+            file, k = buffer
+            file.buffer[k] = byte
+            if self.fields_changed is not None:
+                self.fields_changed(file)
         elif address < RAM_END:
             self.ram[address] = byte
+
+    # ------------------------------------------------------------ the files' FIELD buffers
+    def _field_byte(self, address: int):
+        """(the random file, the byte's index in its record buffer) for an address in an open
+        random file's FIELD buffer; None elsewhere."""
+        offset = address - DATA_SEGMENT * 16 - FILE_BLOCKS
+        if self.files is None or not 0 <= offset < BLOCK_FILES * BLOCK_BYTES:
+            return None
+        n, k = divmod(offset, BLOCK_BYTES)
+        k -= FILE_HEADER + CONTROL_BLOCK
+        file = self.files.open_files.get(n)
+        buffer = getattr(file, "buffer", None)  # (a random file's; a sequential file has none here)
+        if buffer is None or not 0 <= k < len(buffer):
+            return None
+        return file, k
 
     # ------------------------------------------------------------ the text screen's memory
     def _video_cell(self, address: int):

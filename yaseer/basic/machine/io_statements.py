@@ -410,8 +410,13 @@ class InputOutput:
         fielded variables show what is there now (GW-BASIC's point into the buffer)."""
         file = getattr(stream, "file", None)
         if file is not None:
-            variables = self.fielded()
-            variables.update(file.refreshed(variables))
+            self._fields_poked(file)
+
+    def _fields_poked(self, file) -> None:
+        """After something wrote into random file ``file``'s buffer (PRINT #, a POKE): its
+        fielded variables show what is there now."""
+        variables = self.fielded()
+        variables.update(file.refreshed(variables))
 
     def file_number(self, file) -> float:
         """INPUT #n into a numeric variable: one field of ``file``, read as GW-BASIC reads numbers."""

@@ -303,7 +303,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.files.device_streams.update(screen=self.screen, printer=self.printer)
         self.devices = Devices(self.files)  # gw's INP, OUT, ENVIRON, LOCK ... (machine/devices.py)
         # gw's PEEK and POKE (machine/address_space.py): the screen's memory is the display's
-        self.address_space = AddressSpace(self._screen_model, self.dialect.charset, self.dialect.screen.video_segment)
+        self.address_space = AddressSpace(self._screen_model, self.dialect.charset, self.dialect.screen.video_segment,
+                                          self.files, self._fields_poked)
         self.clock = Clock()  # TIMER, DATE$, TIME$; DATE$ = and TIME$ = move it
         self._output_eof = bool(words and words.output_eof)  # casio: EOF of an output file is 0 (EOF.md item 4)
         self.gosub_levels = words.gosub_levels if words else None  # casio: 96 (GOSUB.md item 2)

@@ -640,6 +640,9 @@ class _ToAst:
     def call_keys(self, c):  # INPUT$(n, @): n keys
         return ast.Call(c[0].value, (c[1],))
 
+    def file_pointer(self, c):  # VARPTR(#n): a file's block (a function without it: compiler's Syntax error)
+        return ast.FilePointer(c[0].value, c[2])
+
     def fn_call(self, c):
         args = tuple(c[2]) if len(c) > 2 else ()
         return ast.FnCall(c[1].value, args)

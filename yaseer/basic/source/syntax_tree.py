@@ -128,6 +128,13 @@ class SetClock:
 
 
 @_node
+class FilePointer:
+    """``VARPTR(#n)``: where file n's block lies (a function of a file number)."""
+    name: str
+    number: object
+
+
+@_node
 class SysVar:
     name: str  # "ERR", "ERL"
 
