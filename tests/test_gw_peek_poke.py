@@ -213,3 +213,26 @@ def test_varptr_of_a_variable_says_what_is_missing(tmp_path, statement, expected
     ``VARPTR(1)``, ``VARPTR("ABC")`` Syntax error); yaseer keeps no data segment of its
     variables, so a variable's address ends the run naming what is missing."""
     assert yaseer_run(f"10 {statement}\n", tmp_path) == expected
+
+
+SCREEN_FILE_WIDTHS = """\
+10 KEY OFF: CLS: DEF SEG = &HB800
+20 FOR W = 1 TO 4: READ N: OPEN "SCRN:" FOR OUTPUT AS 1: WIDTH #1, N
+30 PRINT #1, N; STRING$(25, "x"); "ab": PRINT #1, "cd";: PRINT #1, STRING$(100, "y");: CLOSE 1: PRINT: NEXT
+40 DATA 12, 90, 255, 80
+50 OPEN "O.TXT" FOR OUTPUT AS 2
+60 FOR Y = 0 TO 24: FOR X = 0 TO 79: PRINT #2, CHR$(PEEK(2 * (Y * 80 + X)));: NEXT: PRINT #2,: NEXT
+70 CLOSE
+"""
+
+
+def test_a_screen_file_wraps_at_its_own_width(tmp_path):
+    """WIDTH #n, w on SCRN: (GIOSCN.ASM SCNOL2, SCNGWD, SCNGPS): an item that does not fit w
+    starts a new row, a character past column w too; wider than the screen (90, 255) no row
+    breaks: the characters past the row's end are written over its last column; each
+    PRINT # line ends with one new row (CR LF), even after a full row.  As the real GW-BASIC
+    3.23's screen dumps after such files show them; PC-BASIC 2.0.8 agrees."""
+    ours = _files_alike(SCREEN_FILE_WIDTHS, tmp_path)
+    rows = ours["O.TXT"].decode("latin-1").split("\r\n")
+    assert rows[1].rstrip() == "xab" and rows[3].rstrip() == "y" * 12  # width 12
+    assert "cd" + "y" * 78 in rows  # width 255: 100 y after cd, 78 of them shown

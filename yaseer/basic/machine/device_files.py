@@ -8,7 +8,8 @@ follows (``NUL.TXT`` is the null device).  Which names are which is the dialect'
 (``Dialect.device_files``); this module makes the open "file" of each kind:
 
 * ``screen``: PRINT # and WRITE # print on the screen as PRINT does (SCRN:, CONS:, and
-  DOS's CON, whose text reaches the same screen);
+  DOS's CON, whose text reaches the same screen); ``WIDTH #n, w`` gives the file a width of
+  its own (:class:`ScreenFile`);
 * ``printer``: as LPRINT prints (LPT1:, PRN, LPT1);
 * ``null``: output is dropped, input is at its end at once (EOF -1, the next read
   ``Input past end``);
@@ -58,7 +59,7 @@ def open_device(kind: str, mode: str, streams: dict) -> "DeviceFile":
         raise error_for(DEVICE_UNAVAILABLE)
     if mode == "R" or (mode == "I" and kind != "null"):
         raise error_for(BAD_FILE_MODE)
-    return DeviceFile(mode, None if kind == "null" else streams[kind])
+    return DeviceFile(mode, None if kind == "null" else streams[kind], kind)
 
 
 class _Dropped:
@@ -75,10 +76,11 @@ class DeviceFile:
 
     identity = None  # never the same file as one of the directory's
 
-    def __init__(self, mode: str, stream):
+    def __init__(self, mode: str, stream, kind: str = ""):
         from yaseer.basic.machine.screen import FileStream
 
         self.mode = mode
+        self.kind = kind
         self.stream = stream if stream is not None else FileStream(_Dropped())
 
     @property
@@ -91,7 +93,11 @@ class DeviceFile:
         return self.stream
 
     def set_width(self, width: int | None) -> None:
-        """WIDTH #n: the screen and printer keep their own widths (WIDTH, WIDTH LPRINT)."""
+        """WIDTH #n, w: the screen's file takes width w (None: 255, no width) as its own
+        (:class:`ScreenFile`); the screen and printer keep theirs (WIDTH, WIDTH LPRINT)."""
+        screen = getattr(self.stream, "screen", self.stream)
+        if self.kind == "screen":
+            self.stream = ScreenFile(screen, width)
 
     def close(self) -> None:
         """Nothing to write out: a device keeps no Ctrl-Z."""
@@ -130,3 +136,66 @@ class DeviceFile:
 
     def records(self) -> int:
         return 0
+
+
+BACK_ONTO_LAST_COLUMN = "\x1d"  # the screen's cursor-left code: from the waiting wrap to the last column
+
+
+class ScreenFile:
+    """The screen as a file with a width of its own (``WIDTH #n, w`` on SCRN:), as GIOSCN.ASM
+    prints through a file: a PRINT item is fitted to the file's width (SCNGWD gives F_WID)
+    and the column is the screen cursor's (SCNGPS); a character (not a carriage return)
+    that would stand past column w starts a new row first, unless w is the screen's own
+    width, where the screen's wrap does it (SCNOL2: CSRX against F_WID, then LINLEN); a
+    file wider than the screen never wraps: a character past the row's end is written
+    over its last column.  ``screen``: the screen's output stream; ``width``
+    None: no width of its own (255)."""
+
+    row_waits = True
+    file = None
+
+    def __init__(self, screen, width: int | None):
+        self.screen = screen
+        self.width = width
+        self.moves_items = True
+
+    @property
+    def column(self) -> int:
+        return self.screen.column
+
+    @column.setter
+    def column(self, value: int) -> None:
+        self.screen.column = value
+
+    @property
+    def row(self) -> list:
+        return self.screen.row
+
+    def write(self, text: str) -> None:
+        width, screen = self.width or 255, self.screen
+        if width == screen.width:
+            screen.write(text)
+            return
+        for ch in text:
+            if ch not in "\r\n":
+                if screen.column >= width:
+                    screen.new_row()
+                elif screen.column >= screen.width:  # wider than the screen: no wrap, the last
+                    screen.write(BACK_ONTO_LAST_COLUMN)  # column is written over (SCNOL2 DEC CSRX)
+            screen.write(ch)
+
+    def new_row(self) -> None:
+        self.screen.new_row()
+
+    def end_line(self) -> None:
+        """The end of a PRINT # line: CR and LF to the screen (SCNOL1), one new row even
+        after a full row (the screen's PRINT leaves an empty row there)."""
+        self.screen.new_row()
+
+    def flush(self) -> None:
+        self.screen.flush()
+
+    def __getattr__(self, name):  # item, comma, tab, spc: OutputStream's, on the file's width
+        from yaseer.basic.machine.screen import OutputStream
+
+        return getattr(OutputStream, name).__get__(self)
