@@ -125,10 +125,11 @@ FIELDS = (
     "nameless_file_error",  # int: 64 (Bad file name)
     "def_seg_usr",  # bool: False
     "device_words",  # gw_words.Words | None: None
+    "not_after_operator",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None)
+            None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -223,6 +224,11 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         in a dialect without typed numbers.
 
     Syntax errors
+        ``not_after_operator``: True when NOT may stand as any operator's right operand,
+        taking what follows as far as a NOT at the start would (``13*NOT 7`` is
+        ``13*(NOT 7)``, ``10^NOT 0+1`` is ``10^(NOT 1)``: GWEVAL.ASM EVAL meets the NOT
+        token where an operand starts and reads on at NOT's precedence); False (casio, as
+        yaseer always read it): only a sign may come before NOT there, else Syntax error.
         ``errors_when_reached``: True (GW-BASIC) runs a line statement by
         statement up to a bad one, which is the error when execution reaches
         it (``10 PRINT 50: X`` prints 50, then ``Syntax error in 10``), and an
@@ -436,7 +442,7 @@ GW = Dialect(
     using_digits=24, else_alone_skips=True, saves_going_on=("", "P"), using_each_value=True,
     delete_needs_last_line=True, eof_of_file_zero=True, input_answer_first=True, dim_name_alone_scalar=True,
     dim_after_use_duplicate=True, device_files=GW_DEVICES, nameless_file_error=52, def_seg_usr=True,
-    device_words=gw_words.WORDS,
+    device_words=gw_words.WORDS, not_after_operator=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

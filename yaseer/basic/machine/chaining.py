@@ -330,7 +330,7 @@ class Chaining:
         kept_arrays = {k: (self.arrays[k], self.array_dims.get(k), k in self.explicit_arrays)
                        for k in self.arrays if arrays is None or k in arrays}
         functions = dict(self.fns) if chain.merge and chain.everything else {}
-        base = self.subscript_base
+        base, option_seen = self.subscript_base, self.option_seen
         block = 0
         if chain.line:  # line 0: the start (FIVEO.ASM CHNRET)
             if chain.line not in program:
@@ -357,6 +357,7 @@ class Chaining:
                 self.explicit_arrays.add(name)
         self.fns.update(functions)
         self.set_subscript_base(base)
+        self.option_seen = option_seen  # (FIVEO.ASM CHAIN keeps OPTFLG and OPTVAL: TOPTFG, TOPTVL)
         return ChainStart(block)
 
     def _merged_direct_line(self, stopped: BasicError) -> ChainStart:

@@ -279,6 +279,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self._line_values: tuple[list, list] = ([], [])
         self.tracing = False  # TRON: lines run are shown (the dialect's trace_mark)
         self.subscript_base = 0  # OPTION BASE
+        self.option_seen = False  # an OPTION BASE has run since the run or a CLEAR
         # gw: program area 0 came from a file SAVEd with ,P (LIST, EDIT and a SAVE other than ,P
         # refuse it: GIODSK.ASM PROCHK); LOAD, RUN "file" and CHAIN set it, NEW clears it
         self.program_protected = False

@@ -158,10 +158,16 @@ class Variables:
         self.unmark_made(name + "()")
 
     def option_base(self, base: int) -> None:
-        """OPTION BASE 0 or 1: the lowest subscript; once an array exists: Duplicate Definition."""
-        if self.arrays:
-            raise BasicError("Duplicate Definition", DUPLICATE_DEFINITION)
-        self.set_subscript_base(base)
+        """OPTION BASE 0 or 1: the lowest subscript.  The base it already is: no error, even with
+        arrays made; another once an OPTION BASE has run or an array exists (since the run or a
+        CLEAR): Duplicate Definition (GWMAIN.ASM OPTION: OPTVAL, then OPTFLG, then the arrays).
+        A real GW-BASIC 3.23 counts an OPTION BASE of the base it already is as one that ran
+        (recorded in PC-BASIC's OPTION test: ``OPTION BASE 0`` then ``OPTION BASE 1``)."""
+        if base != self.subscript_base:
+            if self.arrays or self.option_seen:
+                raise BasicError("Duplicate Definition", DUPLICATE_DEFINITION)
+            self.set_subscript_base(base)
+        self.option_seen = True
 
     def set_subscript_base(self, base: int) -> None:
         self.subscript_base = base
@@ -354,6 +360,8 @@ class Variables:
         self.string_space.temps.clear()
         self._unmade()
         self.reset_def_types()
+        self.set_subscript_base(0)  # OPTION BASE 0, as none had run (BIMISC.ASM CLEARC: OPTFLG, OPTVAL)
+        self.option_seen = False
 
 
 def _check_clear_arguments(*sizes) -> None:

@@ -625,6 +625,8 @@ class _ToAst:
         left, op, right = c
         return ast.Binary(_OPERATOR_NAMES[op.type], left, right)
 
+    binop_not = binop  # 13*NOT 7: parse_statements refuses it where the dialect has no such NOT
+
     def unop(self, c):
         return ast.Unary(_OPERATOR_NAMES.get(c[0].type, c[0].type), c[1])
 
@@ -778,10 +780,27 @@ def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
     if not tokens:
         return []
     _check_nesting(tokens)
+    if not dialect.not_after_operator:
+        _refuse_not_after_operator(tokens)
     try:
         return _parse(tokens)
     except GrammarError as exc:
         raise _grammar_error(exc, dialect) from None
+
+
+# Tokens an operand follows as a binary operator's right side (a sign only after an operand).
+_BINARY_ONLY = frozenset(("STAR", "SLASH", "BSLASH", "CARET", "MOD", "EQ", "LT", "GT", "LE", "GE", "NE"))
+_OPERAND_ENDS = frozenset(("NUMBER", "STRING", "NAME", "STRNAME", "_RPAR", "SYSVAR", "FUNC"))
+
+
+def _refuse_not_after_operator(tokens: list) -> None:
+    """Syntax error for a NOT that is a binary operator's right side (``13*NOT 7``, ``1-NOT 0``)
+    where the dialect reads none (see ``Dialect.not_after_operator``)."""
+    for k in range(2, len(tokens)):
+        if tokens[k].type == "NOT":
+            before = tokens[k - 1].type
+            if before in _BINARY_ONLY or (before in ("PLUS", "MINUS") and tokens[k - 2].type in _OPERAND_ENDS):
+                raise BasicError("Syntax error", SYNTAX_ERROR)
 
 
 # Terminals only an expression starts with: one expected here and the statement ended
@@ -1168,10 +1187,7 @@ def _branch_if(tokens: list):
     return found[0] if len(found) == 1 and isinstance(found[0], ast.If) else None
 
 
-# Tokens that begin another PRINT item after a complete one (``PRINT "a" "b"``), and those
-# a ``(`` after which continues (a subscript, a function's arguments).
-_ITEM_STARTS = frozenset(("SEMI", "COMMA", "NAME", "STRNAME", "NUMBER", "STRING", "_LPAR", "FUNC", "FUNCN",
-                          "FN", "SYSVAR", "TAB", "SPC"))
+# Tokens a ``(`` after which continues an item (a subscript, a function's arguments).
 _CALLED = frozenset(("NAME", "STRNAME", "FUNC", "FUNCN", "TAB", "SPC"))
 
 
@@ -1210,11 +1226,13 @@ def _printed_before_error(tokens: list, start: int) -> list:
     if start >= len(tokens) or tokens[start].type not in ("PRINT", "LPRINT"):
         return []
     end = next((k for k in range(start, len(tokens)) if tokens[k].type == "_COLON"), len(tokens))
-    ends = []  # (not inside an item: ``1+``, ``A(``, ``1 2``, which GW reads 12)
+    # (not inside an item: ``1+``, ``A(``, ``1 2``, which GW reads 12; before anything else the
+    # item is printed: PRINT's loop then reads what follows as the next item, ``(1)%`` or
+    # ``LEFT $(``, and FRMEVL finds no operand there)
+    ends = []
     for k in range(end - 1, start, -1):
         after, last = tokens[k + 1].type if k + 1 < end else None, tokens[k].type
-        if not (after is not None and after not in _ITEM_STARTS or (after == "_LPAR" and last in _CALLED)
-                or after == last == "NUMBER"):
+        if not (after in _EXPRESSION_GOES_ON or (after == "_LPAR" and last in _CALLED) or after == last == "NUMBER"):
             ends.append(k + 1)
     found = _first_parse(tokens, start, ends)
     if len(found) == 1 and isinstance(found[0], ast.Print) and found[0].using is None:
@@ -1240,7 +1258,9 @@ def _first_parse(tokens: list, start: int, ends) -> list:
 # and a number after a number are handled by the caller).
 _EXPRESSION_GOES_ON = frozenset(("PLUS", "MINUS", "STAR", "SLASH", "BSLASH", "CARET", "EQ", "LT", "GT", "LE", "GE",
                                  "NE", "AND", "OR", "XOR", "EQV", "IMP", "MOD", "PERIOD", "ELSE"))
-_ASSIGNMENTS = (ast.Let, ast.LSet)
+# (SWAP exchanges, DATE$ = sets the date, OPTION BASE sets the base, then the statement must end:
+# BIMISC.ASM SWAP, GWSTS.ASM DATES, GWMAIN.ASM OPTION's CHRGTR for the terminator)
+_ASSIGNMENTS = (ast.Let, ast.LSet, ast.Swap, ast.SetClock, ast.OptionBase)
 
 
 def _assigned_before_error(tokens: list, start: int) -> list:

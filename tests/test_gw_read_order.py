@@ -1,0 +1,42 @@
+"""GW-BASIC reads a statement left to right and checks what it has read before it finds the
+junk after it: the statement's good start runs, its own checks come first, then the Syntax
+error (GWMAIN.ASM NEWSTT finds no statement's end).
+
+- NOT where an operand stands after any operator (``13*NOT 7``, ``10^NOT 0``) takes what
+  follows as far as a NOT at the start would (GWEVAL.ASM EVAL); casio keeps its Syntax error.
+- OPTION BASE: the base it already is is no error, another after one has run (since the run
+  or a CLEAR) is Duplicate Definition; ``OPTION BASE 1 X`` sets the base, then Syntax error
+  (GWMAIN.ASM OPTION, BIMISC.ASM CLEARC).  A real GW-BASIC 3.23 counts an OPTION BASE of the
+  base it already is as one that ran (PC-BASIC's recorded OPTION test; PC-BASIC 2.0.8 agrees).
+- SWAP exchanges, DATE$ = checks its date, before the junk after them.
+- PRINT prints an item before it finds that what follows is no item (``(1)%2``, ``LEFT $(``:
+  LEFT is a variable there), but not an item an operator goes on with (``1 +``).
+
+Each case against PC-BASIC 2.0.8, which agrees with the recordings here."""
+
+import pytest
+
+from test_gw_files import pcbasic_run, yaseer_run
+
+HANDLER = '100 PRINT "E"; ERR; ERL: RESUME NEXT\n'
+
+PROGRAMS = [
+    '20 PRINT 13*NOT 7; 10^NOT 0; 1=NOT 1; 13-NOT 7+1; 13 MOD NOT 7; 13\\NOT 7; 2^NOT 1*3; -2*NOT 0\n',
+    '20 OPTION BASE 0\n30 OPTION BASE 1\n40 CLEAR: ON ERROR GOTO 100\n50 OPTION BASE 1: OPTION BASE 1: PRINT "S"\n'
+    '60 OPTION BASE 0\n70 CLEAR: ON ERROR GOTO 100: OPTION BASE 1 X\n80 OPTION BASE 0: PRINT "X"\n',
+    '20 DIM A(3): OPTION BASE 0: PRINT "S"\n30 OPTION BASE 1\n',
+    '20 A=1: B=2: C=3: SWAP A, B, C\n30 PRINT A; B; C\n40 SWAP A, B$,\n50 SWAP A, B X\n60 PRINT A; B; C\n',
+    '20 DATE$ = "10" X\n30 DATE$ = "01-02-2003" X\n',
+    '20 PRINT (1)%2\n30 PRINT "A"; LEFT $("AB", 1)\n40 PRINT 1; 2 LPRINT\n50 PRINT 1 +\n60 PRINT "B" 3 X\n',
+]
+
+
+@pytest.mark.parametrize("program", PROGRAMS)
+def test_a_statement_checks_what_it_read_before_the_junk_after_it(tmp_path, program):
+    source = '10 ON ERROR GOTO 100\n' + program + '99 END\n' + HANDLER
+    assert yaseer_run(source, tmp_path) == pcbasic_run(source, tmp_path)
+
+
+def test_casio_reads_no_not_after_an_operator(tmp_path):
+    assert yaseer_run('10 PRINT 13*NOT 7\n', tmp_path, "casio") == "Syntax error in 10\n"
+    assert yaseer_run('10 PRINT -NOT 0; 1 AND NOT 0\n', tmp_path, "casio") == " 1  1 \n"
