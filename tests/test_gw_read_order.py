@@ -11,6 +11,14 @@ error (GWMAIN.ASM NEWSTT finds no statement's end).
 - SWAP exchanges, DATE$ = checks its date, before the junk after them.
 - PRINT prints an item before it finds that what follows is no item (``(1)%2``, ``LEFT $(``:
   LEFT is a variable there), but not an item an operator goes on with (``1 +``).
+- A function call whose arguments do not fit is read argument by argument, each checked
+  before the ``,`` or ``)`` after it is looked for (BISTRS.ASM INSTR, STRNG$; GWEVAL.ASM
+  ISFUN for LEFT$, RIGHT$, MID$; PARCHK for a function of one argument): ``INSTR(-1)``
+  Illegal function call, ``LEFT$(1)`` Syntax error, ``INSTR(1, 2, 3, 4)`` Type mismatch.
+- A call or an expression the text cuts short evaluates what it read first, in order:
+  ``PRINT "A"; INSTR(-1`` prints A, then Illegal function call; ``X = 5 + LEFT$(1`` is Syntax
+  error, not Type mismatch; a DEF FN body ``FNA(X) + PRINT`` calls FNA (Undefined user
+  function) before its Missing operand.
 
 Each case against PC-BASIC 2.0.8, which agrees with the recordings here."""
 
@@ -28,6 +36,16 @@ PROGRAMS = [
     '20 A=1: B=2: C=3: SWAP A, B, C\n30 PRINT A; B; C\n40 SWAP A, B$,\n50 SWAP A, B X\n60 PRINT A; B; C\n',
     '20 DATE$ = "10" X\n30 DATE$ = "01-02-2003" X\n',
     '20 PRINT (1)%2\n30 PRINT "A"; LEFT $("AB", 1)\n40 PRINT 1; 2 LPRINT\n50 PRINT 1 +\n60 PRINT "B" 3 X\n',
+    '20 PRINT INSTR(-1)\n30 PRINT INSTR(1)\n40 PRINT INSTR(0, "A", "B")\n50 PRINT INSTR(300)\n60 PRINT INSTR(40000)\n'
+    '70 PRINT INSTR(1, 1)\n80 PRINT INSTR(1, 2, 3, 4)\n90 PRINT INSTR("A", "B", "C")\n95 PRINT INSTR("AB", 1)\n',
+    '20 PRINT STRING$(-1)\n30 PRINT STRING$("A")\n40 PRINT STRING$(1, #2)\n50 PRINT STRING$(2, 3, 4)\n'
+    '60 PRINT LEFT$(1)\n70 PRINT LEFT$(1, 1)\n80 PRINT LEFT$("A", "B")\n90 PRINT MID$("ABC", 0)\n'
+    '95 PRINT MID$("ABC", 1, "A")\n96 PRINT RIGHT$("A", 1, 1)\n97 PRINT SIN(1, 2); CHR$("A")\n',
+    '20 PRINT "A"; INSTR(-1\n30 PRINT "B"; STRING$("X"\n40 PRINT "C"; MID$("ABC", 1, "A"\n'
+    '50 PRINT "D"; MID$("ABC", "A"\n60 X = 5 + LEFT$(1\n70 PRINT "E"; INSTR(\n80 PRINT "F"; LEFT$("AB", 1 X\n'
+    '90 X = LEFT$(1\n95 PRINT "H"; FNZ(1) +\n',
+    '20 DEF FNB(X) = FNA(X) + PRINT\n30 PRINT "A"; FNB(1)\n40 DEF FNA(X) = X: PRINT "B"; FNB(1)\n'
+    '50 DEF FNC(X) = INSTR(-1\n60 PRINT "C"; FNC(1)\n',
 ]
 
 
@@ -40,3 +58,8 @@ def test_a_statement_checks_what_it_read_before_the_junk_after_it(tmp_path, prog
 def test_casio_reads_no_not_after_an_operator(tmp_path):
     assert yaseer_run('10 PRINT 13*NOT 7\n', tmp_path, "casio") == "Syntax error in 10\n"
     assert yaseer_run('10 PRINT -NOT 0; 1 AND NOT 0\n', tmp_path, "casio") == " 1  1 \n"
+
+
+def test_casio_keeps_a_call_that_does_not_fit_the_statements_error(tmp_path):
+    assert yaseer_run('10 PRINT "A"; LEFT$(1)\n', tmp_path, "casio") == "A\nSyntax error in 10\n"
+    assert yaseer_run('10 PRINT "A"; MID$("AB", 1, 2, 3)\n', tmp_path, "casio") == "A\nSyntax error in 10\n"

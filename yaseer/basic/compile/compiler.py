@@ -141,6 +141,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.library_forms = dialect.library_forms  # THEN *
         self.locate_arguments = dialect.screen.locate_arguments  # LOCATE's (fewest, most)
         self.late_errors = dialect.errors_when_reached  # a DEF FN body's errors when it is called
+        self.reads_arguments_in_order = dialect.argument_readings  # a call that does not fit (argument_reading)
         self.using_each_value = dialect.using_each_value  # PRINT USING's values field by field
         self.input_answer_first = dialect.input_answer_first  # INPUT; and INPUT cut short (GW)
         self.def_seg_usr = dialect.def_seg_usr  # DEF SEG, DEF USR (GW)
@@ -298,6 +299,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
 
     def stmt_Let(self, stmt, scope):
         code, kind = self.expr(stmt.value, scope)
+        if isinstance(stmt.value, (ast.CutCall, ast.CutExpression)):
+            self.emit(code)  # a value the text cuts short raises as it is read: no assignment, no type to match
+            return
         if kind == "s" and self.counts_strings and isinstance(stmt.value, (ast.Var, ast.Elem)):
             code = f"_scopy({code})"  # another variable's string is copied (machine/string_space.py)
         check = kind != "s" and may_overflow(stmt.value, self.numbers.typed) and self.kind_of(stmt.target) != "%"

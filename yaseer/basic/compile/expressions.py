@@ -60,6 +60,9 @@ _SYSTEM_VARIABLES = {
 }
 
 
+_CUTS = (ast.CutCall, ast.CutExpression)  # expressions the text cuts short: they raise when reached
+
+
 def _call_form(forms: tuple, kinds: list) -> str:
     """The form of a function that takes arguments of ``kinds`` ("s"/"n"): wrong count
     Syntax error, wrong types Type mismatch."""
@@ -70,6 +73,13 @@ def _call_form(forms: tuple, kinds: list) -> str:
         if all(want in ("x", kind) or (want, kind) == ("i", "n") for want, kind in zip(form, kinds)):
             return form
     raise type_mismatch()
+
+
+def _read_in_order(name: str, forms: tuple, readings: tuple) -> bool:
+    """Whether a call of ``name`` that does not fit it is read argument by argument, where the
+    dialect reads so (``Dialect.argument_readings``): the functions with a reading of their
+    own (machine/argument_reading.py) and those of one argument."""
+    return bool(readings) and (name in readings or all(len(form) == 1 for form in forms))
 
 
 class CompileError(BasicError):
@@ -372,6 +382,8 @@ class ExpressionCompiler:
         op = node.op
         left, lkind = self.expr(node.left, scope)
         right, rkind = self.expr(node.right, scope)
+        if isinstance(node.right, _CUTS) or isinstance(node.left, _CUTS):
+            return f"({left}, {right})[0]", lkind  # both read in order, the cut raising: no types to match
         if lkind == "s" and rkind == "s" and (op in _PY_RELATIONS or op == "+"):
             codes = [left, right]
             relation = op in _PY_RELATIONS
@@ -417,7 +429,13 @@ class ExpressionCompiler:
             return self.numbers.call("RND", "_rndf", [], [], "n")  # the next number (the generator's drawer)
         if node.name in ast.KEEPS_STRINGS and self.numbers.typed and len(args) == 1 and ast.expr_type(args[0]) == "s":
             return self.string(args[0], scope), "s"
-        form = _call_form(forms, [ast.expr_type(arg) for arg in args])
+        try:
+            form = _call_form(forms, [ast.expr_type(arg) for arg in args])
+        except CompileError as err:
+            if own or not _read_in_order(node.name, forms, self.reads_arguments_in_order):
+                raise
+            return self.read_in_order(node, scope, err.message, err.code, ".close()"), (
+                "s" if result == "s" else self.numbers.integer)
         codes, kinds = [], []
         for arg, want in zip(args, form):
             if want == "s" or (want == "x" and ast.expr_type(arg) == "s"):
@@ -438,6 +456,30 @@ class ExpressionCompiler:
             code, kind = self.numbers.call(node.name, helper, codes, kinds, result)
             return self.let_go(code, held, used_up), kind
         return self.numbers.call(node.name, helper, codes, kinds, result)
+
+    def read_in_order(self, node, scope, message: str, code: int, end: str) -> str:
+        """A call whose arguments do not fit its function, as GW-BASIC reads it: each argument
+        evaluated and checked in turn, ``end`` (``.close()`` or a cut) raising what comes then
+        (machine/argument_reading.py); ``message``, ``code``: the error should the reading
+        accept it all."""
+        reads = "".join(f".a({self.expr(arg, scope)[0]})" for arg in node.args)
+        return f"_rd({node.name!r}, {message!r}, {code}){reads}{end}"
+
+    def expr_CutCall(self, node, scope):
+        """A call the text cuts short (``INSTR(-1``, ``MID$("A", 1, "B"``): its arguments read
+        in order, then the cut's error where the reading meets it."""
+        end = f".cut({node.after_comma}, {node.error.message!r}, {node.error.code})"
+        forms = (self.own_functions.get(node.name) or _FUNCTIONS.get(node.name, (None, ())))[0]
+        if forms is None or not _read_in_order(node.name, forms, self.reads_arguments_in_order):
+            raise CompileError(node.error.message, node.error.code)
+        result = (self.own_functions.get(node.name) or _FUNCTIONS.get(node.name, (None, "n")))[1]
+        return self.read_in_order(node, scope, "Syntax error", SYNTAX_ERROR, end), (
+            "s" if result == "s" else self.numbers.integer)
+
+    def expr_CutExpression(self, node, scope):
+        """What an expression cut short after an operator read (evaluated), then its error."""
+        code, kind = self.expr(node.read, scope)
+        return f"_fail_after({code}, {node.error.message!r}, {node.error.code})", kind
 
     def pair_to_x_y(self, pair: str, scope) -> str:
         """POL and REC (POL.md, REC.md): the pair ``pair`` is computed, its values go to

@@ -126,10 +126,11 @@ FIELDS = (
     "def_seg_usr",  # bool: False
     "device_words",  # gw_words.Words | None: None
     "not_after_operator",  # bool: False
+    "argument_readings",  # tuple[str, ...]: ()
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None, False)
+            None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None, False, ())
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -224,6 +225,15 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         in a dialect without typed numbers.
 
     Syntax errors
+        ``argument_readings``: where not empty, a function call whose arguments do not fit
+        the function is read as GW-BASIC's routines read it, argument by argument, each
+        checked as it is read before the ``,`` or ``)`` after it is looked for (``INSTR(-1)``
+        Illegal function call, ``LEFT$(1)`` Syntax error, ``INSTR(1, 1, 1, 1)`` Type mismatch:
+        machine/argument_reading.py), and a call the text cuts short evaluates what it read
+        first; the names are the functions with readings of their own there (BISTRS.ASM
+        INSTR, STRNG$; GWEVAL.ASM ISFUN's LEFT$, RIGHT$, MID$), every function of one
+        argument reads ``(``, it, ``)`` (GWEVAL.ASM PARCHK).  Empty (casio): such a call is
+        the statement's error.
         ``not_after_operator``: True when NOT may stand as any operator's right operand,
         taking what follows as far as a NOT at the start would (``13*NOT 7`` is
         ``13*(NOT 7)``, ``10^NOT 0+1`` is ``10^(NOT 1)``: GWEVAL.ASM EVAL meets the NOT
@@ -443,6 +453,7 @@ GW = Dialect(
     delete_needs_last_line=True, eof_of_file_zero=True, input_answer_first=True, dim_name_alone_scalar=True,
     dim_after_use_duplicate=True, device_files=GW_DEVICES, nameless_file_error=52, def_seg_usr=True,
     device_words=gw_words.WORDS, not_after_operator=True,
+    argument_readings=("INSTR", "STRING$", "LEFT$", "RIGHT$", "MID$"),
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

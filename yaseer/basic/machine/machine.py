@@ -51,7 +51,7 @@ from yaseer.basic.compile.number_models import initial_value
 from yaseer.basic.compile import program_cache
 from yaseer.basic.compile.compiled import MAX_STACK, CompiledArea  # noqa: F401  MAX_STACK: GOSUB returns + open FOR loops together
 from yaseer.basic.dialects import dialect as dialects
-from yaseer.basic.machine import gwfunctions, memory_model, runtime, string_space, val_numbers
+from yaseer.basic.machine import argument_reading, gwfunctions, memory_model, runtime, string_space, val_numbers
 from yaseer.basic.machine.clock import Clock
 from yaseer.basic.machine.device_files import reserved_names
 from yaseer.basic.machine.files import FileTable, Sandbox, file_byte
@@ -478,7 +478,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "__builtins__": {"abs": abs, "len": len, "float": float, "map": map, "range": range, "type": type, "int": int, "iter": iter,
                              "BaseException": BaseException, "KeyError": KeyError},
             "_M": self, "_S": self.scalars, "_A": self.arrays, "_arr": self.array_nd, "_ix": self.subscript_check(0),
-            "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_err": BasicError, "_wh": self.while_loops, "_END": END, "_off_end": self._ran_off_end, "_DirectJump": DirectJump,
+            "_ovf": self.arith.overflowed, "_fail": runtime.fail, "_fail_after": runtime.fail_after, "_err": BasicError, "_rd": argument_reading.Reading, "_wh": self.while_loops, "_END": END, "_off_end": self._ran_off_end, "_DirectJump": DirectJump,
             "_pr": self.print_items, "_pru": self.print_using, "_puo": self.using_line, "_COMMA": COMMA, "_NUMCOMMA": NUMBER_THEN_COMMA, "_Tab": Tab, "_Spc": Spc,
             "_gosub": self.gosub, "_return": self.gosub_return, "_stk": self.stack,
             "_oom": self._out_of_memory, "_deep": self.gosubs_full, "_loops": self.open_loops, "_call": self.call_area, "_call_file": self.call_file,

@@ -30,6 +30,12 @@ def fail(message: str, code: int):
     raise BasicError(message, code)
 
 
+def fail_after(_value, message: str, code: int):
+    """Raise the BASIC error ``message`` once the value before it has been computed (an
+    expression cut short after an operator: its operand is read first)."""
+    raise BasicError(message, code)
+
+
 def overflow() -> None:
     """Raise Overflow: a result beyond double range (the code checks ``x - x``)."""
     raise BasicError("Overflow", OVERFLOW)

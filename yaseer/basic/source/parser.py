@@ -630,7 +630,7 @@ class _ToAst:
     def unop(self, c):
         return ast.Unary(_OPERATOR_NAMES.get(c[0].type, c[0].type), c[1])
 
-    def call(self, c):
+    def _call(self, c):
         name = c[0].value
         if len(c) == 1:
             return ast.Call(name, ())
@@ -662,6 +662,15 @@ class _ToAst:
         if c[0].value not in ("DATE$", "TIME$"):  # ERR = 1, CSRLIN = 2: no statement
             raise BasicError("Syntax error", SYNTAX_ERROR)
         return ast.SetClock(c[0].value, c[2])
+
+    def partial(self, c):
+        return c[0].value  # the CutCall or CutExpression the token carries
+
+    def call(self, c):
+        name = c[0].value
+        if len(c) > 2 and name != "INPUT$":  # (c, #f): only INPUT$ reads a file number there
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        return self._call(c)
 
     def sysvar(self, c):
         return ast.SysVar(c[0].value)
@@ -912,7 +921,7 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     guarded = _guarding_if(tokens, bad_start, err, dialect)
     if guarded is not None:
         return [guarded]
-    defined = _deferred_definition(tokens, bad_start, err)
+    defined = _deferred_definition(tokens, bad_start, err, dialect)
     if defined is not None:
         return [defined] + _statements_after_error(tokens, bad_start, dialect)
     checked_first = _checked_first(tokens, bad_start, err)
@@ -925,6 +934,9 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     jump = _jump_read_as_needed(tokens, bad_start)
     if jump is not None:
         return [jump] + _statements_after_error(tokens, bad_start, dialect)
+    cut = _cut_expression(tokens, bad_start, err, dialect)
+    if cut is not None:
+        return cut + _statements_after_error(tokens, bad_start, dialect)
     touched = _touched_element(tokens, bad_start, err)
     if touched is not None:
         return [touched] + _statements_after_error(tokens, bad_start, dialect)
@@ -968,7 +980,7 @@ def _branch(head: list, part: list, err: BasicError, dialect: Dialect):
     return (_recover_tokens(part, err, dialect) if part else None) or [err]
 
 
-def _deferred_definition(tokens: list, start: int, err: BasicError):
+def _deferred_definition(tokens: list, start: int, err: BasicError, dialect: Dialect):
     """A DEF FN whose name and parameters read but whose body does not: the function, its
     body the error raised when it is called (GWEVAL.ASM DEF reads the name and the
     parameters in parentheses, if a ``(`` follows, then skips the rest of the statement as
@@ -988,6 +1000,11 @@ def _deferred_definition(tokens: list, start: int, err: BasicError):
         return None
     equals = after < len(tokens) and tokens[after].type == "EQ"
     found[0].body = err if equals else BasicError("Syntax error", SYNTAX_ERROR)
+    if equals:  # what the body reads before its bad text is evaluated first (FNA(X) + PRINT: FNA's error)
+        end = next((k for k in range(after, len(tokens)) if tokens[k].type == "_COLON"), len(tokens))
+        cut = _cut_expression([Token("NAME", "X")] + tokens[after:end], 0, err, dialect)
+        if cut is not None and isinstance(cut[0], ast.Let):
+            found[0].body = cut[0].value
     return found[0]
 
 
@@ -1143,6 +1160,86 @@ def _jump_read_as_needed(tokens: list, start: int):
     if k < len(tokens) and tokens[k].type not in _STATEMENT_ENDS:
         found[0].rest_error = BasicError("Syntax error", SYNTAX_ERROR)  # NEWSTT finds no statement's end
     return found[0]
+
+
+# Binary operators: a cut after one leaves the operand before it read (FRMEVL evaluated it).
+_BINARY_OPERATORS = frozenset(("PLUS", "MINUS", "STAR", "SLASH", "BSLASH", "CARET", "EQ", "LT", "GT", "LE", "GE",
+                               "NE", "AND", "OR", "XOR", "EQV", "IMP", "MOD"))
+
+
+def _cut_expression(tokens: list, start: int, err: BasicError, dialect: Dialect):
+    """A bad statement whose text goes wrong inside a function call's arguments or after an
+    operator: the statement with what was read standing in for the rest (a
+    :class:`ast.CutCall` or :class:`ast.CutExpression`), so that what GW-BASIC evaluated
+    before it met the bad text runs first, in order (``PRINT "A"; INSTR(-1`` prints A, then
+    INSTR's start is Illegal function call; ``X = FNA(1) +`` calls FNA first).  None where
+    the dialect does not read so (``Dialect.argument_readings``) or nothing fits."""
+    if not dialect.argument_readings or tokens[start].type == "WRITE":  # (WRITE: _written_before_error)
+        return None
+    end = next((k for k in range(start, len(tokens)) if tokens[k].type == "_COLON"), len(tokens))
+    try:
+        _parse(tokens[start:end])
+        return None
+    except GrammarError as exc:
+        at = next((k for k in range(start, end) if tokens[k] is exc.token), end)
+    except BasicError:
+        return None
+    opens: list = []
+    for k in range(start, at):
+        if tokens[k].type == "_LPAR":
+            opens.append(k)
+        elif tokens[k].type == "_RPAR" and opens:
+            opens.pop()
+    calls = [k for k in opens if k > start and tokens[k - 1].type == "FUNCN"]
+    if calls:
+        paren = calls[-1]
+        node = _cut_call(tokens, paren, at, err)
+        if node is None:
+            return None
+        return _with_partial(tokens, start, paren - 1, node, [k for k in opens if k < paren])
+    if at == start or tokens[at - 1].type not in _BINARY_OPERATORS or at - 1 <= start:
+        return None
+    for k in range(start + 1, at - 1):  # the longest operand before the operator that fits
+        read = parse_expression(tokens[k:at - 1])
+        if read is None:
+            continue
+        found = _with_partial(tokens, start, k, ast.CutExpression(read, err), [j for j in opens if j < k])
+        if found is not None:
+            return found
+    return None
+
+
+def _cut_call(tokens: list, paren: int, at: int, err: BasicError):
+    """The call whose ``(`` is at ``paren``, its text cut at ``at``: the arguments that read
+    whole, and whether the cut comes where an argument starts."""
+    pieces, depth, begin = [], 0, paren + 1
+    for k in range(paren + 1, at):
+        kind = tokens[k].type
+        depth += {"_LPAR": 1, "_RPAR": -1}.get(kind, 0)
+        if kind == "COMMA" and depth == 0:
+            pieces.append(tokens[begin:k])
+            begin = k + 1
+    args = []
+    for piece in pieces:
+        arg = parse_expression(piece)
+        if arg is None:
+            return None
+        args.append(arg)
+    last = tokens[begin:at]
+    whole = parse_expression(last) if last else None
+    if whole is not None:
+        return ast.CutCall(tokens[paren - 1].value, tuple(args + [whole]), False, BasicError("Syntax error", SYNTAX_ERROR))
+    return ast.CutCall(tokens[paren - 1].value, tuple(args), True, err)
+
+
+def _with_partial(tokens: list, start: int, at: int, node, opens: list):
+    """The statement ``tokens[start:at]`` followed by ``node`` (and a ``)`` for each of
+    ``opens``), if it reads as one statement; else None."""
+    try:
+        found = _parse(tokens[start:at] + [Token("PARTIAL", node)] + [Token("_RPAR", ")")] * len(opens))
+    except (BasicError, GrammarError):
+        return None
+    return found if len(found) == 1 else None
 
 
 def _is_line_number(token: Token) -> bool:

@@ -163,8 +163,10 @@ def expr_type(node) -> str:
         return "s" if node.name.endswith("$") else "n"
     if isinstance(node, Call) and node.name in KEEPS_STRINGS and len(node.args) == 1:
         return expr_type(node.args[0])
-    if isinstance(node, (Call, SysVar)):
+    if isinstance(node, (Call, SysVar, CutCall)):
         return "s" if node.name.endswith("$") else "n"
+    if isinstance(node, CutExpression):
+        return expr_type(node.read)
     if isinstance(node, Unary) and node.op in "+-":  # (-A$ is A$ in GW)
         return expr_type(node.operand)
     if isinstance(node, Binary) and node.op == "+":
@@ -500,6 +502,25 @@ class CutShort:
     (the items a PRINT or WRITE printed, an assignment made), then ``error``, all one
     statement (a RESUME NEXT goes on after the whole of it)."""
     statement: object
+    error: object
+
+
+@_node
+class CutCall:
+    """A function call the text cuts short (``INSTR(-1``): the arguments read whole, then
+    ``error`` where the next argument should start (``after_comma``) or where a ``,`` or
+    ``)`` should follow the last one (Syntax error)."""
+    name: str
+    args: tuple
+    after_comma: bool
+    error: object
+
+
+@_node
+class CutExpression:
+    """An expression the text cuts short after an operator (``FNA(X) + PRINT``): ``read``,
+    the part before the operator, is evaluated, then ``error``."""
+    read: object
     error: object
 
 

@@ -1,0 +1,173 @@
+"""A function call whose arguments do not fit it, read as GW-BASIC reads them: argument by
+argument, each checked as soon as it is read, before what follows it is looked at.
+
+GW-BASIC has no list of arguments to count: each function's routine reads its ``(``, an
+argument (FRMEVL), checks it, then asks for a ``,`` or the ``)`` (SYNCHR: Syntax error when
+another character is there) and so on.  So ``INSTR(-1)`` is Illegal function call (the
+start is checked before the missing comma is found), ``LEFT$(1)`` Syntax error (the comma
+is asked for before the string is checked), ``INSTR(1, 1, 1, 1)`` Type mismatch (the second
+argument must be a string), and an argument after a cut is never evaluated.
+
+A reading is a generator that yields what it asks for next: ``"e"`` an argument (sent back
+its value), ``","`` or ``")"``; it raises the errors of its checks.  :class:`Reading` drives
+it with what the call's text holds, in order (the compiler chains ``.a(value)`` for each
+argument, then ``.close()`` for a ``)`` or ``.cut(...)`` where the text went wrong), so each
+argument is evaluated only when the routine would have read it.
+"""
+
+from __future__ import annotations
+
+from yaseer.basic.arithmetic.values import to_int
+from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, SYNTAX_ERROR, TYPE_MISMATCH
+
+
+def _syntax_error() -> BasicError:
+    return BasicError("Syntax error", SYNTAX_ERROR)
+
+
+def _string(value) -> None:
+    """CHKSTR, FRESTR: a number where a string must be is Type mismatch."""
+    if not isinstance(value, str):
+        raise BasicError("Type mismatch", TYPE_MISMATCH)
+
+
+def _byte(value, nonzero: bool = False) -> int:
+    """GETBYT, CONINT (GWEVAL.ASM): a number (else Type mismatch), made an integer (FRCINT:
+    beyond -32768..32767 Overflow), then 0..255 (else Illegal function call); ``nonzero``:
+    0 too is Illegal function call (INSTR's start, MID$'s position)."""
+    if isinstance(value, str):
+        raise BasicError("Type mismatch", TYPE_MISMATCH)
+    n = to_int(value)
+    if not 0 <= n <= 255 or (nonzero and n == 0):
+        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+    return n
+
+
+def _instr():
+    """BISTRS.ASM INSTR: FRMPRN; a string first is the text (then ``, t)``), a number the
+    start (CONINT, not 0), then ``, text, t)``; the strings found to be strings at the end."""
+    first = yield "e"
+    if not isinstance(first, str):
+        _byte(first, nonzero=True)
+        yield ","
+        _string((yield "e"))
+    yield ","
+    last = yield "e"
+    yield ")"
+    _string(last)
+
+
+def _string_dollar():
+    """BISTRS.ASM STRNG$: GETBYT the count, ``,``, FRMEVL the character, ``)``, then the
+    character: a string's first (ASC2: empty Illegal function call) or CONINT's byte."""
+    count = yield "e"
+    _byte(count)
+    yield ","
+    character = yield "e"
+    yield ")"
+    if isinstance(character, str):
+        if not character:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+    else:
+        _byte(character)
+
+
+def _left_right():
+    """GWEVAL.ASM ISFUN's two-argument functions (LEFT$, RIGHT$): FRMPRN, ``,``, CHKSTR of
+    the first, GETBYT of the second, then ``)``."""
+    text = yield "e"
+    yield ","
+    _string(text)
+    _byte((yield "e"))
+    yield ")"
+
+
+def _mid():
+    """MID$: as LEFT$ up to its position (not 0: BISTRS.ASM MID$ via PREAM2), then an optional
+    ``, length`` (GETBYT) before the ``)``."""
+    text = yield "e"
+    yield ","
+    _string(text)
+    _byte((yield "e"), nonzero=True)
+    if (yield ",?") == ",":
+        _byte((yield "e"))
+    yield ")"
+
+
+def _one():
+    """A function of one argument (GWEVAL.ASM OKNORM: PARCHK reads ``(``, the argument and
+    ``)`` before the function looks at it)."""
+    yield "e"
+    yield ")"
+
+
+# (the names are Dialect.argument_readings of gw)
+READINGS = {"INSTR": _instr, "STRING$": _string_dollar, "LEFT$": _left_right, "RIGHT$": _left_right,
+            "MID$": _mid}
+
+
+def reading_of(name: str, one_argument: bool):
+    """The reading of function ``name`` (a one-argument function's where none of its own is
+    listed and ``one_argument``), or None."""
+    found = READINGS.get(name)
+    return found if found is not None or not one_argument else _one
+
+
+class Reading:
+    """One call's reading: ``Reading(name, error).a(x).a(y).close()`` (or ``.cut(...)``).
+    Every path ends in an error: the reading's own, a misplaced ``,`` or ``)``, the cut's;
+    a reading that accepts the whole text raises ``error``, what the compiler found."""
+
+    __slots__ = ("steps", "wants", "given", "error")
+
+    def __init__(self, name: str, message: str, code: int):
+        self.steps = reading_of(name, True)()
+        self.error = BasicError(message, code)
+        self.given = 0
+        self.wants = self._next(None)
+
+    def _next(self, sent):
+        try:
+            wants = self.steps.send(sent)
+        except StopIteration:
+            return None
+        return self._next(None) if wants is None else wants
+
+    def _separator(self, found: str) -> None:
+        """The routine's next request met ``found`` (``,`` or ``)``) in the text."""
+        wants = self.wants
+        if wants == ",?":
+            self.wants = self._next(found)
+            if found == ",":
+                return
+            wants = self.wants
+        if wants != found:
+            raise _syntax_error()
+        self.wants = self._next(None)
+
+    def a(self, value) -> "Reading":
+        """The next argument, evaluated (the comma before it first, unless it is the first)."""
+        if self.given:
+            self._separator(",")
+        if self.wants != "e":
+            raise _syntax_error()
+        self.given += 1
+        self.wants = self._next(value)
+        return self
+
+    def close(self):
+        """The ``)`` after the last argument: the checks after it, else the compiler's error."""
+        if self.wants == "e":  # FN(): no argument where one must be
+            raise _syntax_error()
+        self._separator(")")
+        raise self.error
+
+    def cut(self, after_comma: bool, message: str, code: int):
+        """The text went wrong here (``message``, ``code``): after a comma (or the ``(``),
+        where an argument must start, or after a whole argument, where the routine wants a
+        separator (Syntax error)."""
+        if after_comma and self.given:
+            self._separator(",")
+        if self.wants == "e" and (after_comma or not self.given):
+            raise BasicError(message, code)
+        raise _syntax_error()
