@@ -625,7 +625,9 @@ class _ToAst:
         left, op, right = c
         return ast.Binary(_OPERATOR_NAMES[op.type], left, right)
 
-    binop_not = binop  # 13*NOT 7: parse_statements refuses it where the dialect has no such NOT
+    def binop_not(self, c):  # 13*NOT 7: parse_statements refuses it where the dialect has no such NOT
+        left, op, right = c
+        return ast.Binary(_OPERATOR_NAMES[op.type], left, right, bare_not=True)
 
     def unop(self, c):
         return ast.Unary(_OPERATOR_NAMES.get(c[0].type, c[0].type), c[1])
@@ -789,27 +791,24 @@ def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
     if not tokens:
         return []
     _check_nesting(tokens)
-    if not dialect.not_after_operator:
-        _refuse_not_after_operator(tokens)
     try:
-        return _parse(tokens)
+        statements = _parse(tokens)
     except GrammarError as exc:
         raise _grammar_error(exc, dialect) from None
+    if not dialect.not_after_operator and any(token.type == "NOT" for token in tokens) and _bare_not(statements):
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+    return statements
 
 
-# Tokens an operand follows as a binary operator's right side (a sign only after an operand).
-_BINARY_ONLY = frozenset(("STAR", "SLASH", "BSLASH", "CARET", "MOD", "EQ", "LT", "GT", "LE", "GE", "NE"))
-_OPERAND_ENDS = frozenset(("NUMBER", "STRING", "NAME", "STRNAME", "_RPAR", "SYSVAR", "FUNC"))
-
-
-def _refuse_not_after_operator(tokens: list) -> None:
-    """Syntax error for a NOT that is a binary operator's right side (``13*NOT 7``, ``1-NOT 0``)
-    where the dialect reads none (see ``Dialect.not_after_operator``)."""
-    for k in range(2, len(tokens)):
-        if tokens[k].type == "NOT":
-            before = tokens[k - 1].type
-            if before in _BINARY_ONLY or (before in ("PLUS", "MINUS") and tokens[k - 2].type in _OPERAND_ENDS):
-                raise BasicError("Syntax error", SYNTAX_ERROR)
+def _bare_not(node) -> bool:
+    """Whether ``node`` (a statement, an expression, a list of them) holds a NOT that is a
+    binary operator's right side (``13*NOT 7``), which a dialect without
+    ``Dialect.not_after_operator`` refuses."""
+    if isinstance(node, list):
+        return any(map(_bare_not, node))
+    if isinstance(node, ast.Binary) and node.bare_not:
+        return True
+    return isinstance(node, ast.Node) and any(_bare_not(getattr(node, name)) for name in node._fields)
 
 
 # Terminals only an expression starts with: one expected here and the statement ended

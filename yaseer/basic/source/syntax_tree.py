@@ -104,6 +104,7 @@ class Binary:
     op: str  # "+", "-", "*", "/", "\\", "^", "MOD", "=", "<>", "<", ">", "<=", ">=", "AND", "OR"
     left: object
     right: object
+    bare_not: bool = False  # the right side a NOT without parentheses (13*NOT 7: Dialect.not_after_operator)
 
 
 @_node
