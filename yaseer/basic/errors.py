@@ -50,6 +50,7 @@ BAD_FILE_NAME = 64
 DEVICE_UNAVAILABLE = 68
 DIRECT_STATEMENT_IN_FILE = 66
 PERMISSION_DENIED = 70
+RENAME_ACROSS_DISKS = 74
 PATH_FILE_ACCESS_ERROR = 75
 PASSWORD_PROTECTED = 251  # yaseer's own: the Casio PR error (a password registered, or PASS with another one)
 UNDEFINED_PROGRAM_AREA = 252  # yaseer's own: GOSUB PROG n with nothing in area n

@@ -437,7 +437,12 @@ class InputOutputCompiler:
         self.emit(f"_M.view_print({rows})")
 
     def stmt_Key(self, stmt, scope):
-        if stmt.action == "DEFINE":
+        if stmt.action == "NUMBER":  # GETBYT of the key's number, then what follows it is bad
+            self.emit(f"_M.key_number({self.numeric(stmt.number, scope)})")
+            self.emit(f"raise _err({stmt.text.message!r}, {stmt.text.code})")
+        elif stmt.action == "TRAP":
+            self.emit(f"_M.key_number({self.numeric(stmt.number, scope)})")
+        elif stmt.action == "DEFINE":
             self.emit(f"_M.define_key({self.integer(stmt.number, scope)}, {self.string(stmt.text, scope)})")
         else:
             self.emit(f"_M.key_line({stmt.action!r})")
@@ -473,7 +478,16 @@ class InputOutputCompiler:
         self.emit(f"_kill({self.string(stmt.name, scope)})")
 
     def stmt_Rename(self, stmt, scope):
-        self.emit(f"_rename({self.string(stmt.old, scope)}, {self.string(stmt.new, scope)})")
+        old = self.string(stmt.old, scope)
+        try:
+            new = None if stmt.new is None else self.string(stmt.new, scope)
+        except CompileError as err:  # the old file is found before the new name is read (GIODSK.ASM NAME)
+            stmt = ast.Rename(stmt.old, None, err)
+        if stmt.new is None:
+            self.emit(f"_rename_from({old})")
+            self.emit(f"raise _err({stmt.error.message!r}, {stmt.error.code})")
+            return
+        self.emit(f"_rename({old}, {new})")
 
     def stmt_Files(self, stmt, scope):
         self.emit(f"_files({'None' if stmt.pattern is None else self.string(stmt.pattern, scope)})")

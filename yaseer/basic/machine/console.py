@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import sys
 
+from yaseer.basic.arithmetic.values import to_int
 from yaseer.basic.machine import runtime
 from yaseer.basic.machine.display import DRAWING_ACTIONS, Display, boxed
 from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END
@@ -393,12 +394,25 @@ class Console:
 
     def define_key(self, number, text: str) -> None:
         """KEY n, text: function key n (1..10) types ``text`` (its first 15 characters,
-        GWSTS.ASM KEYS); n out of range is Illegal function call."""
+        GWSTS.ASM KEYS); another n with a text of two characters (a key to trap: a shift
+        code and a scan code) is no error, a real GW-BASIC 3.23 recorded it so for 15 and for
+        255 (PC-BASIC's KEY and KEY_definition_two_chars_no_error tests); else Illegal
+        function call."""
         display = self._screen_model()
-        n = runtime.cint(number)
-        if not 1 <= n <= len(display.keys):
+        n = self.key_number(number)
+        if 1 <= n <= len(display.keys):
+            display.define_key(n, text)
+        elif len(text) != 2:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-        display.define_key(n, text)
+
+    @staticmethod
+    def key_number(number) -> int:
+        """A key's number as GETBYT reads it (GWEVAL.ASM): beyond -32768..32767 Overflow,
+        outside 0..255 Illegal function call."""
+        n = to_int(number)
+        if not 0 <= n <= 255:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        return n
 
     def set_screen_size(self, columns, rows) -> None:
         """WIDTH columns, rows: 40 or 80 columns, and the screen's 25 rows (any other number

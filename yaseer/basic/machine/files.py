@@ -24,13 +24,18 @@ import os
 
 from yaseer.basic.errors import (
     BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, DEVICE_IO_ERROR, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
-    FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, error_for, not_emulated,
+    FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, RENAME_ACROSS_DISKS, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, error_for, not_emulated,
 )
 from yaseer.basic.machine import device_files, item_reading, random_files
 from yaseer.basic.machine.random_files import END_OF_FILE  # Ctrl-Z
 from yaseer.basic.machine.runtime import cint
 from yaseer.basic.machine.sandbox import Sandbox, identity_of
 from yaseer.basic.machine.screen import FileStream
+
+
+def _drive(name: str) -> str:
+    """The drive letter a file name starts with (``C:``), in capitals, or ``""``."""
+    return name[0].upper() if len(name) > 1 and name[1] == ":" and name[0].isalpha() else ""
 
 MAX_FILES = 3
 RECORD = 128  # bytes: LOC counts these
@@ -298,8 +303,19 @@ class FileTable:
                 f.close()
 
     def rename(self, old: str, new: str) -> None:
-        """NAME old AS new (``old`` found as DOS finds it, whatever its case)."""
-        self.sandbox.rename(self.sandbox.dos_name(old), new)
+        """NAME old AS new (``old`` found as DOS finds it, whatever its case); a new name on
+        another drive than the old one's is Rename across disks once the old file is found
+        (GIODSK.ASM NAME compares the drives, no drive being 0)."""
+        old = self.rename_from(old)
+        if _drive(new) and _drive(new) != _drive(old):
+            raise error_for(RENAME_ACROSS_DISKS)
+        self.sandbox.rename(old, new)
+
+    def rename_from(self, old: str) -> str:
+        """NAME's old file, found (else File not found) before anything after it is read."""
+        old = self.sandbox.dos_name(old)
+        self.sandbox.identity(old)
+        return old
 
     def kill(self, name: str) -> None:
         name = self.sandbox.dos_name(name)

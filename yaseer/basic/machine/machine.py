@@ -550,7 +550,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             # sequential files (files.py)
             "_open": self.files.open, "_close": self.files.close, "_field": self.field_variable,
             "_get": self.get_record, "_swapf": self.swap_fields, "_lset": self.set_field, "_kill": self.files.kill,
-            "_rename": self.files.rename, "_chain": self.chain, "_command": self.program_command, "_files": self.list_files,
+            "_rename": self.files.rename, "_rename_from": self.files.rename_from, "_chain": self.chain, "_command": self.program_command, "_files": self.list_files,
             "_fout": lambda n: self.files.get(n).output(), "_prf": self.print_to,
             "_pruf": self.print_using_to, "_puof": self.using_line_to, "_writef": self.write_to,
             "_fin_n": self.file_number, "_fin_s": lambda f: f.read_field(False, self.dialect.string_length),

@@ -444,6 +444,12 @@ class _ToAst:
     def key_stmt(self, c):
         return ast.Key(c[1].type)
 
+    def key_trap(self, c):  # KEY (n) ON/OFF/STOP: no key is ever pressed to trap (the number still read)
+        return ast.Key("TRAP", c[1])
+
+    def key_paren_define(self, c):  # KEY (n), text: the ( makes it KEY(n)'s form (GWSTS.ASM KEYS), no comma there
+        raise BasicError("Syntax error", SYNTAX_ERROR)
+
     def key_define(self, c):
         return ast.Key("DEFINE", c[1], c[3])
 
@@ -936,6 +942,9 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     cut = _cut_expression(tokens, bad_start, err, dialect)
     if cut is not None:
         return cut + _statements_after_error(tokens, bad_start, dialect)
+    first = _first_value_checked(tokens, bad_start, err)
+    if first is not None:
+        return [first] + _statements_after_error(tokens, bad_start, dialect)
     touched = _touched_element(tokens, bad_start, err)
     if touched is not None:
         return [touched] + _statements_after_error(tokens, bad_start, dialect)
@@ -1241,6 +1250,23 @@ def _with_partial(tokens: list, start: int, at: int, node, opens: list):
     return found if len(found) == 1 else None
 
 
+def _first_value_checked(tokens: list, start: int, err: BasicError):
+    """A bad KEY n, text or NAME old AS new whose first value reads: that value checked as the
+    statement checks it before it reads on (GWSTS.ASM KEYS: GETBYT of the key's number;
+    GIODSK.ASM NAME: the old file found before the AS), then ``err``.  None otherwise."""
+    kind = tokens[start].type if start < len(tokens) else None
+    if kind not in ("KEY", "RENAME") or start + 1 >= len(tokens) or tokens[start + 1].type in ("ON", "OFF", "LIST"):
+        return None
+    if _assigned_before_error(tokens, start):
+        return None  # the whole statement reads, junk after it (it runs first: _bad_and_after)
+    end = argument_end(tokens, start + 1, ())
+    value = next((found for found in (parse_expression(tokens[start + 1:k]) for k in range(end, start + 1, -1))
+                  if found is not None), None)  # the longest value that reads
+    if value is None:
+        return None
+    return ast.Key("NUMBER", value, err) if kind == "KEY" else ast.Rename(value, None, err)
+
+
 def _is_line_number(token: Token) -> bool:
     """A NUMBER token GW would have stored as a line number (digits only)."""
     try:
@@ -1354,9 +1380,10 @@ def _first_parse(tokens: list, start: int, ends) -> list:
 # and a number after a number are handled by the caller).
 _EXPRESSION_GOES_ON = frozenset(("PLUS", "MINUS", "STAR", "SLASH", "BSLASH", "CARET", "EQ", "LT", "GT", "LE", "GE",
                                  "NE", "AND", "OR", "XOR", "EQV", "IMP", "MOD", "PERIOD", "ELSE"))
-# (SWAP exchanges, DATE$ = sets the date, OPTION BASE sets the base, then the statement must end:
-# BIMISC.ASM SWAP, GWSTS.ASM DATES, GWMAIN.ASM OPTION's CHRGTR for the terminator)
-_ASSIGNMENTS = (ast.Let, ast.LSet, ast.Swap, ast.SetClock, ast.OptionBase)
+# (SWAP exchanges, DATE$ = sets the date, OPTION BASE sets the base, KEY defines or lists,
+# NAME renames, then the statement must end: BIMISC.ASM SWAP, GWSTS.ASM DATES and KEYS,
+# GWMAIN.ASM OPTION's CHRGTR for the terminator, GIODSK.ASM NAME)
+_ASSIGNMENTS = (ast.Let, ast.LSet, ast.Swap, ast.SetClock, ast.OptionBase, ast.Key, ast.Rename)
 
 
 def _assigned_before_error(tokens: list, start: int) -> list:

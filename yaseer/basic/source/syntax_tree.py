@@ -447,8 +447,10 @@ class Kill:
 
 @_node
 class Rename:
+    """NAME old AS new; ``new`` None: ``old`` checked (a string, an existing file), then ``error``."""
     old: object
     new: object
+    error: object = None
 
 
 @_node
@@ -600,7 +602,8 @@ class ViewPrint:
 
 @_node
 class Key:
-    """KEY ON / OFF / LIST (``action``), or KEY n, text (``number``, ``text``)."""
+    """KEY ON / OFF / LIST (``action``), KEY n, text (``"DEFINE"``: ``number``, ``text``), KEY (n)
+    ON / OFF / STOP (``"TRAP"``), or ``"NUMBER"``: the key's number checked, then ``text``, an error."""
     action: str
     number: object = None
     text: object = None
