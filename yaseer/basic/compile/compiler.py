@@ -339,6 +339,12 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
                 self.emit(f"_tr({stmt.target})")
             return
         target = self.jump(stmt.target)
+        if target.startswith("raise _err("):
+            # GWMAIN.ASM GOSUB: GETSTK's room first, then the line; a trapped error's SAVSTK
+            # drops what was pushed, so RETURN never comes back here
+            self.emit(f"if {self.stack_full}: _oom()")
+            self.emit(target)
+            return
         block, indent = self.cur, self.indent
         ret = self.continuation()
         block.code.append((indent, f"if {self.stack_full}: _oom()"))
@@ -398,9 +404,15 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         block, indent = self.cur, self.indent
         self.emit(f"if {k}:")
         ret = self.continuation()
+        # a line that does not exist is found missing before the return is pushed (GWMAIN.ASM
+        # GOSUB: a trapped error's SAVSTK drops what the statement pushed)
+        missing = {n: jump for n, jump in jumps.items() if jump.startswith("raise _err(")}
+        for n, jump in missing.items():
+            block.code.append((indent + 1, f"if {k} == {n}: _oom() if {self.stack_full} else None; {jump}"))
         block.code.append((indent + 1, f"_gosub({ret})"))
         for n, jump in jumps.items():
-            block.code.append((indent + 1, f"if {k} == {n}: {jump}"))
+            if n not in missing:
+                block.code.append((indent + 1, f"if {k} == {n}: {jump}"))
         block.code.append((indent, f"return {ret}"))
 
     def stmt_OnError(self, stmt, scope):

@@ -154,13 +154,22 @@ class LoopCompiler:
 
     def bound_next(self, stmt):
         """What GW-BASIC's FOR finds scanning for its NEXT (``Machine.for_push``):
-        ``(statement index, line, names this loop?)``, None for no NEXT.  A FOR inside
-        an IF branch scans on from itself through the rest of its IF statement."""
+        ``(statement index, line, names this loop?, the NEXT's place)``, None for no NEXT.
+        The place (:meth:`next_place`) is the loop's NEXT: GW-BASIC's FOR entry keeps the
+        text pointer of the NEXT it found, and a NEXT elsewhere does not step the loop
+        (NEXT86.ASM NEXTC compares it with its own).  A FOR inside an IF branch scans on
+        from itself through the rest of its IF statement."""
         found = self.scanned_next(stmt)
         if found is None:
             return None
         k, next_stmt = found
-        return (k, self.flat[k][0], next_stmt.var is None or next_stmt.var == stmt.var)
+        return (k, self.flat[k][0], next_stmt.var is None or next_stmt.var == stmt.var, self.next_place(next_stmt))
+
+    def next_place(self, stmt) -> int:
+        """Where the NEXT ``stmt`` is in the program's text: its place among the statements
+        and IF branches in text order (``NEXT J, I`` is two places), as the FOR stack's
+        frames name the NEXT they are bound to."""
+        return self.plan.next_scan.position[id(stmt)]
 
     def scanned_next(self, stmt):
         """``(statement index, NEXT)`` that the FOR ``stmt``'s scan finds, or None."""
@@ -176,11 +185,11 @@ class LoopCompiler:
             var = self.flat[self.plan.next_for[self.index]][1].var
         if var is None:
             self.emit(STORE_LOCALS)
-            self.emit("if _next_any(): return _M.frame_body")
+            self.emit(f"if _next_any({self.next_place(stmt)}): return _M.frame_body")
             self.emit(LOAD_LOCALS)
         else:
             target, key = self.loop_var(var, scope)
-            self.emit(f"_f = _next({key!r}, {self.index})")
+            self.emit(f"_f = _next({key!r}, {self.next_place(stmt)})")
             self.emit(f"{target} = {self.stepping(var, target, '_f.step')}")
             self.emit(f"if {target} <= _f.limit if _f.step >= 0.0 else {target} >= _f.limit: return _f.body")
             self.emit("_pop()")

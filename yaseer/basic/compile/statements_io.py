@@ -10,7 +10,9 @@ from contextlib import contextmanager
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.expressions import CompileError, syntax_error, type_mismatch
 from yaseer.basic.compile.markers import LOAD_LOCALS, STORE_LOCALS
-from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, MISSING_OPERAND, OUT_OF_DATA, UNDEFINED_LINE, undefined_line_message
+from yaseer.basic.errors import (
+    ILLEGAL_FUNCTION_CALL, MISSING_OPERAND, OUT_OF_DATA, SYNTAX_ERROR, UNDEFINED_LINE, undefined_line_message,
+)
 
 
 def _is_safe_item(item) -> bool:
@@ -287,7 +289,10 @@ class InputOutputCompiler:
     def stmt_Restore(self, stmt, scope):
         if stmt.target is not None and not isinstance(stmt.target, int):  # RESTORE (expression)
             if not self.words.computed_restore:
-                raise syntax_error()
+                # BIMISC.ASM RESTORE: LINGET reads no digits, line 0, then the rest is no statement's end
+                self.stmt_Restore(ast.Restore(0), scope)
+                self.emit(f"raise _err('Syntax error', {SYNTAX_ERROR})")
+                return
             self.emit(f"_restore_at({self.numeric(stmt.target, scope)})")
             return
         if stmt.target is not None and stmt.target not in self.line_first:

@@ -80,7 +80,8 @@ class ControlStack:
         """FOR (through the stack): open a loop over ``key`` whose body starts at block ``body``.
 
         ``bound`` is what GW-BASIC's FOR finds scanning for its NEXT (see
-        ``blocks.scan_for_next``): ``(NEXT id, its line, names this loop?)`` or None
+        ``blocks.scan_for_next``): ``(statement index, its line, names this loop?, the
+        NEXT's place)`` or None
         for no NEXT.  In a dialect with ``Dialect.for_binds_next`` the loop is bound
         to that NEXT, and no NEXT (``FOR without NEXT``) or one naming another
         variable (``NEXT without FOR`` in its line) is an error now.
@@ -106,7 +107,7 @@ class ControlStack:
             return None
         if bound is None:
             raise BasicError("FOR without NEXT", FOR_WITHOUT_NEXT)
-        next_id, next_line, names_this = bound
+        _, next_line, names_this, next_id = bound
         if not names_this:
             raise BasicError("NEXT without FOR", NEXT_WITHOUT_FOR).at(next_line)
         return next_id
@@ -126,11 +127,15 @@ class ControlStack:
             stack.pop()
         raise BasicError("NEXT without FOR", NEXT_WITHOUT_FOR)
 
-    def next_any(self) -> bool:
-        """NEXT with no name whose FOR the compiler could not see: step the innermost loop."""
+    def next_any(self, next_id=None) -> bool:
+        """NEXT with no name whose FOR the compiler could not see: step the innermost loop,
+        unless that loop is bound to another NEXT (GW-BASIC: NEXT86.ASM NEXTC finds the top
+        FOR entry, then compares the text pointer of the NEXT it keeps with its own)."""
         if not self.stack or type(self.stack[-1]) is not ForFrame or self.stack[-1].key.endswith("()"):
             raise BasicError("NEXT without FOR", NEXT_WITHOUT_FOR)
         frame = self.stack[-1]
+        if frame.next_id is not None and next_id is not None and frame.next_id != next_id:
+            raise BasicError("NEXT without FOR", NEXT_WITHOUT_FOR)
         value = values.stepped(frame.key, self.scalars[frame.key], frame.step)
         self.scalars[frame.key] = value
         if (value <= frame.limit) if frame.step >= 0 else (value >= frame.limit):

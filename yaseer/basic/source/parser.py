@@ -1026,7 +1026,34 @@ def _checked_first(tokens: list, start: int, err: BasicError):
         return ast.Resume("bad", error=err)
     if kind == "WHILE":
         return ast.While(err)
+    if kind == "RETURN":
+        return _return_read_first(tokens, start)
+    if kind == "RESTORE":
+        return _restore_read_first(tokens, start, err)
     return None
+
+
+def _restore_read_first(tokens: list, start: int, err: BasicError):
+    """A bad RESTORE: BIMISC.ASM RESTORE reads the digits that follow as a line (none: line
+    0), which must exist (Undefined line number), sets the DATA pointer there, and only then
+    is the rest of the statement ``err`` (``RESTORE 10 X`` restores, then Syntax error)."""
+    line = 0
+    if start + 1 < len(tokens) and tokens[start + 1].type == "NUMBER" and tokens[start + 1].value != ast.CURRENT_LINE:
+        value = _number_value(tokens[start + 1])
+        if not 0 <= value < 65530:
+            return None
+        line = int(value)  # (LINGET's digits: 1.5 is line 1)
+    return ast.CutShort(ast.Restore(line), err)
+
+
+def _return_read_first(tokens: list, start: int):
+    """A bad RETURN: GWMAIN.ASM RETURN takes its GOSUB off the stack first (RETURN without
+    GOSUB when there is none), then goes on at GOTO, whose LINGET reads the digits and jumps
+    without reading what follows them (``RETURN 40,`` goes to 40); with no digits, a plain
+    RETURN, as ``return_stmt`` reads ``RETURN X`` (PC-BASIC 2.0.8)."""
+    if start + 1 < len(tokens) and tokens[start + 1].type == "NUMBER" and _is_line_number(tokens[start + 1]):
+        return ast.ReturnTo(_line_number(tokens[start + 1]))
+    return ast.Return()
 
 
 # The file statements that find their file before they read on: the modes it must be open
@@ -1146,7 +1173,7 @@ def _jump_read_as_needed(tokens: list, start: int):
         return None
     jump = next((k for k in range(start + 1, len(tokens)) if tokens[k].type in ("GOTO", "GOSUB", "_COLON")), None)
     if jump is None or tokens[jump].type == "_COLON":
-        return None
+        return _selector_read_first(tokens, start, len(tokens) if jump is None else jump)
     try:
         found = _parse(tokens[start:jump + 1])
     except (BasicError, GrammarError):
@@ -1265,6 +1292,31 @@ def _first_value_checked(tokens: list, start: int, err: BasicError):
     if value is None:
         return None
     return ast.Key("NUMBER", value, err) if kind == "KEY" else ast.Rename(value, None, err)
+
+
+# tokens an expression goes on with (what follows a selector that stops before one is no place to stop)
+_OPERATORS = frozenset(("PLUS", "MINUS", "STAR", "SLASH", "BSLASH", "CARET", "MOD", "EQ", "LT", "GT", "LE", "GE",
+                        "NE", "AND", "OR", "XOR", "EQV", "IMP", "NOT", "_LPAR"))
+
+
+def _selector_read_first(tokens: list, start: int, end: int):
+    """``ON x`` with no GOTO or GOSUB before ``end``: the selector's value is checked
+    (GWMAIN.ASM NTONGS: GETBYT, Illegal function call outside 0..255), then the missing
+    word is a Syntax error (SYNCHR for GOTO): a jump with no places whose ``rest_error``
+    is that error.  None when no selector reads after ON, or when it stops at an operator
+    (``ON A+``: the expression's own error, Missing operand)."""
+    for k in range(end, start + 1, -1):
+        if k < end and tokens[k].type in _OPERATORS:
+            continue
+        try:
+            found = _parse(tokens[start:k] + [Token("GOTO", "GOTO"), Token("NUMBER", (0, "%"))])
+        except (BasicError, GrammarError):
+            continue
+        if len(found) == 1 and isinstance(found[0], ast.OnJump):
+            found[0].targets = []
+            found[0].rest_error = BasicError("Syntax error", SYNTAX_ERROR)
+            return found[0]
+    return None
 
 
 def _is_line_number(token: Token) -> bool:
