@@ -5,6 +5,11 @@ GOTO/GOSUB, RETURN and RESTORE check before what follows them is read.
   elsewhere, named or not, is ``NEXT without FOR`` (NEXT86.ASM NEXTC compares the text
   pointers), as the recordings of PC-BASIC's test suite show (a loop whose scan finds a
   NEXT inside an IF branch and whose body jumps past it).
+  A bad NEXT is read as far as its names go (NEXT86.ASM: one name at a time, LOOPDN
+  reads the comma); an unowned ELSE's remark still holds text the scan reads (NXTSCN takes
+  the word after ELSE as a statement's start).
+* WHILE scans for its WEND, evaluates its condition and makes its entry before it reads on
+  (FIVEO.ASM WHILE, FNWEND); WEND with more after it is a Syntax error (FIVEO.ASM WEND).
 * GOSUB makes room on the stack, reads the line and only then pushes; a missing line's
   error, trapped, leaves nothing on the stack (GWMAIN.ASM GOSUB; the error handler's SAVSTK).
 * ``ON x`` with no GOTO or GOSUB reads x as GETBYT does (Illegal function call outside
@@ -39,6 +44,25 @@ CASES = {
     # the loop's own NEXT, reached by a jump, steps it
     "own_next_by_jump": ("10 FOR I=1 TO 3: PRINT I;: GOTO 30\n20 PRINT \"x\"\n30 NEXT\n40 PRINT \"end\"\n",
                          " 1  2  3 end\n"),
+    # NEXT J, I reads one name at a time: both loops run, then what follows is the error;
+    # a FOR whose scan stops at a name that does not read fails its first test there
+    "next_read_as_far": ("10 ON ERROR GOTO 100\n20 FOR I=1 TO 2\n30 FOR J=1 TO 2\n40 PRINT I; J\n"
+                         "50 NEXT J, I PRINT\n60 FOR A=1 TO 10 STEP 2: NEXT \"A\"\n65 PRINT A\n"
+                         "70 FOR A=1 TO 3: PRINT A;: NEXT A,\n"
+                         "80 FOR B=1 TO 2: FOR C=1 TO 2: PRINT B; C;: NEXT C, 2\n90 END\n" + TRAP,
+                         " 1  1 \n 1  2 \n 2  1 \n 2  2 \nerr 2  50 \nerr 2  60 \nerr 2  60 \n 0 \n"
+                         " 1  2  3 err 1  70 \nerr 2  80 \n 0  1  0  2 err 2  80 \n"),
+    "next_of_a_string": ("10 ON ERROR GOTO 100\n20 FOR A$=\"1\" TO \"2\": NEXT A$\n30 END\n" + TRAP,
+                         "err 13  20 \nerr 1  20 \n"),
+    # an unowned ELSE skips its line, but the FOR's scan finds the NEXT after it
+    "next_after_else": ("10 ON ERROR GOTO 100\n20 FOR I=1 TO 3: PRINT I;: GOTO 40\n30 ELSE NEXT\n40 NEXT\n"
+                        "50 END\n" + TRAP, " 1 err 1  40 \n"),
+    # WHILE evaluates its condition and makes its entry before what follows is read; WEND
+    # with more after it is a Syntax error, but still the WEND a WHILE's scan finds
+    "while_wend_with_more": ("10 ON ERROR GOTO 100\n20 A=1: WHILE A < 20 PRINT\n30 PRINT A;: A = A*3\n40 WEND\n"
+                             "50 B=0: WHILE B < 2\n60 PRINT \"b\"; B;: B = B+1\n70 WEND B\n"
+                             "80 WHILE 0 X: PRINT \"no\"\n85 WEND\n90 PRINT \"end\": END\n" + TRAP,
+                             "err 2  20 \n 1 err 2  20 \n 3 err 2  20 \n 9 b 0 err 2  70 \nend\n"),
     "gosub_missing_line": ("10 ON ERROR GOTO 100\n20 GOSUB 50\n30 PRINT \"back\": END\n"
                            "50 GOSUB 70\n55 PRINT \"55\": RETURN\n" + TRAP,
                            "err 8  50 \n55\nback\n"),

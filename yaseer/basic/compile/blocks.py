@@ -62,6 +62,16 @@ def walk_statements(stmt, unreachable: bool = True):
                     yield from walk_statements(s, unreachable)
 
 
+def scanned_statements(stmt):
+    """:func:`walk_statements`, and the statements of the text a remark made of an unowned
+    ELSE skips (``Rem.skipped``): what GW-BASIC's FOR sees scanning the text for its NEXT."""
+    for s in walk_statements(stmt):
+        yield s
+        if isinstance(s, ast.Rem) and s.skipped:
+            for inner in s.skipped:
+                yield from scanned_statements(inner)
+
+
 def data_statements(stmt):
     """The DATA statements of ``stmt`` that READ sees: GW-BASIC looks for DATA at the
     start of a statement after a colon, so a DATA right after THEN or ELSE is not one."""
@@ -275,7 +285,7 @@ class NextScan:
         for k, stmt in enumerate(statements):
             self.first.append(len(self.inners))
             if not isinstance(stmt, BasicError):
-                self.inners.extend((k, inner) for inner in walk_statements(stmt))
+                self.inners.extend((k, inner) for inner in scanned_statements(stmt))
         self.first.append(len(self.inners))
         self.position = {id(inner): p for p, (_, inner) in enumerate(self.inners)}
         levels, level = [], 0

@@ -146,6 +146,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.input_answer_first = dialect.input_answer_first  # INPUT; and INPUT cut short (GW)
         self.def_seg_usr = dialect.def_seg_usr  # DEF SEG, DEF USR (GW)
         self.for_array_elements = dialect.for_array_elements  # FOR T(2) = ... (the paper's Example 3)
+        self.for_binds_next = dialect.for_binds_next  # a NEXT looks for its FOR entry by name (GW)
         # "." in LIST, EDIT ...: GW's DOT, the machine's current_line as the statement runs
         # (Dialect.current_line_listed); else (casio) the line the statement is in
         self.dot_runs = dialect.current_line_listed
@@ -523,12 +524,15 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         # the loops running (GW's stack of WHILE entries): a WEND reached by a GOTO into a loop
         # that is not running is WEND without WHILE (GWMAIN.ASM WEND searches the stack)
         condition, after = self.condition(stmt.condition, scope), self.after(*found).number
+        rest = stmt.rest_error  # (the loop's entry made: FIVEO.ASM FNWEND, then NEWSTT reads on)
         if not self.entered_inside(self.index, found[0]):
             self.emit(f"if not ({condition}): return {after}")
-            return
-        key = self.while_key(stmt)
-        self.emit(f"if not ({condition}): _wh.discard({key}); return {after}")
-        self.emit(f"_wh.add({key})")
+        else:
+            key = self.while_key(stmt)
+            self.emit(f"if not ({condition}): _wh.discard({key}); return {after}")
+            self.emit(f"_wh.add({key})")
+        if rest is not None:
+            self.emit(f"raise _err({rest.message!r}, {rest.code})")
 
     def entered_inside(self, start: int, end: int) -> bool:
         """Whether a block starts inside the loop from statement ``start`` to ``end`` (a GOTO
@@ -564,6 +568,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit(f"_ln = {self.line}")
 
     def stmt_Wend(self, stmt, scope):
+        if stmt.error is not None:  # WEND with more after it (parser._checked_first)
+            self.emit(f"raise _err({stmt.error.message!r}, {stmt.error.code})")
+            return
         found = self.plan.wend_while.get(id(stmt))
         start = None
         if found is not None:

@@ -14,7 +14,7 @@ from yaseer.basic.compile.blocks import nodes, walk_statements
 from yaseer.basic.compile.expressions import BlockScope, CompileError, constant_value, syntax_error, type_mismatch
 from yaseer.basic.compile.markers import LOAD_LOCALS, STORE_LOCALS, PassTop
 from yaseer.basic.compile.number_models import local_name
-from yaseer.basic.errors import FOR_WITHOUT_NEXT
+from yaseer.basic.errors import FOR_WITHOUT_NEXT, NEXT_WITHOUT_FOR, BasicError
 
 
 class LoopSplit(str):
@@ -73,7 +73,7 @@ class LoopCompiler:
                 isinstance(i, ast.Num) for i in stmt.var.indices):
             raise syntax_error()  # a computed subscript would be re-evaluated each pass
         bound = self.bound_next(stmt)
-        if bound is None or not bound[2]:
+        if bound is None or bound[2] is not True:
             # GW-BASIC's FOR keeps the start value aside until its scan has found the NEXT
             # (GWMAIN.ASM FOR, NXTSCN): no NEXT, or one of another loop, leaves the variable as it was
             self.emit(f"_M.bound_next({bound!r})")
@@ -142,7 +142,10 @@ class LoopCompiler:
         bound = self.bound_next(stmt)
         if bound:  # GW-BASIC: no NEXT, or one naming another loop, is an error; else go on after it
             block.code.append((indent, f"_M.bound_next({bound!r})"))
-            after = self.after(bound[0], self.scanned_next(stmt)[1]).number
+            found = self.scanned_next(stmt)[1]
+            if not any(s is found for s in walk_statements(self.flat[bound[0]][1])):
+                found = self.flat[bound[0]][1]  # a NEXT in text an unowned ELSE skips: on after its statement
+            after = self.after(bound[0], found).number
             block.code.append((indent, f"if _M.dialect.for_binds_next: return {after}"))
         elif bound is None:
             block.code.append((indent, "_M.bound_next(None)"))
@@ -154,7 +157,8 @@ class LoopCompiler:
 
     def bound_next(self, stmt):
         """What GW-BASIC's FOR finds scanning for its NEXT (``Machine.for_push``):
-        ``(statement index, line, names this loop?, the NEXT's place)``, None for no NEXT.
+        ``(statement index, line, names this loop?, the NEXT's place)``, None for no NEXT;
+        "names this loop?" is ``(message, code)`` for a NEXT whose name does not read.
         The place (:meth:`next_place`) is the loop's NEXT: GW-BASIC's FOR entry keeps the
         text pointer of the NEXT it found, and a NEXT elsewhere does not step the loop
         (NEXT86.ASM NEXTC compares it with its own).  A FOR inside an IF branch scans on
@@ -163,6 +167,8 @@ class LoopCompiler:
         if found is None:
             return None
         k, next_stmt = found
+        if isinstance(next_stmt.var, BasicError):  # a NEXT whose name does not read: its error
+            return (k, self.flat[k][0], (next_stmt.var.message, next_stmt.var.code), self.next_place(next_stmt))
         return (k, self.flat[k][0], next_stmt.var is None or next_stmt.var == stmt.var, self.next_place(next_stmt))
 
     def next_place(self, stmt) -> int:
@@ -181,6 +187,13 @@ class LoopCompiler:
 
     def stmt_Next(self, stmt, scope):
         var = stmt.var
+        if isinstance(var, BasicError):  # a name that does not read (parser._next_read_as_far)
+            self.emit(f"raise _err({var.message!r}, {var.code})")
+            return
+        if var is not None and self.for_binds_next and self.kind_of(var) == "s":
+            # no FOR entry is a string's (FOR A$ is Type mismatch): NEXT86.ASM FNDFOR finds none
+            self.emit(f"raise _err('NEXT without FOR', {NEXT_WITHOUT_FOR})")
+            return
         if var is None and self.depth == 0 and self.index in self.plan.next_for:
             var = self.flat[self.plan.next_for[self.index]][1].var
         if var is None:

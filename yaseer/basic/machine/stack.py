@@ -108,6 +108,8 @@ class ControlStack:
         if bound is None:
             raise BasicError("FOR without NEXT", FOR_WITHOUT_NEXT)
         _, next_line, names_this, next_id = bound
+        if type(names_this) is tuple:  # its name does not read: the first test's error (NEXTS's PTRGET)
+            raise BasicError(*names_this).at(next_line)
         if not names_this:
             raise BasicError("NEXT without FOR", NEXT_WITHOUT_FOR).at(next_line)
         return next_id

@@ -18,7 +18,7 @@ from itertools import chain
 
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.dialects.dialect import CASIO, Dialect
-from yaseer.basic.errors import BasicError, MISSING_OPERAND, SYNTAX_ERROR
+from yaseer.basic.errors import BasicError, MISSING_OPERAND, NEXT_WITHOUT_FOR, SYNTAX_ERROR
 from yaseer.basic.source.parse_tables import ACTIONS, END, RULES, START
 from yaseer.basic.dialects.reserved import UNSUPPORTED, mark_unsupported, unsupported_message
 from yaseer.basic.source.scanner import UNSCANNED, Token, tokenize, tokenize_statements
@@ -243,7 +243,7 @@ class _ToAst:
         return ast.Stop()
 
     def rem_stmt(self, c):
-        return ast.Rem(c[0].value)
+        return ast.Rem(c[0].value, list(getattr(c[0].value, "skipped", ())))
 
     def dim_stmt(self, c):
         return ast.Dim(_values(c)[1:])
@@ -787,8 +787,31 @@ def _else_alone(tokens: list, dialect: Dialect) -> list:
             return tokens
         if token.type == "ELSE":
             colon = [Token("_COLON", ":")] if k and tokens[k - 1].type != "_COLON" else []
-            return tokens[:k] + colon + [Token("REMARK", "")]
+            return tokens[:k] + colon + [Token("REMARK", _SkippedText(tokens[k + 1:]))]
     return tokens
+
+
+class _SkippedText(str):
+    """The remark an unowned ELSE makes of the rest of its line (an empty text), with the
+    statements that rest holds (``skipped``): they never run, but GW-BASIC's FOR scans the
+    text for its NEXT through them (GWMAIN.ASM NXTSCN takes the word after an ELSE as a
+    statement's start).  As far as each piece between ELSEs reads."""
+
+    def __new__(cls, tokens: list):
+        text = super().__new__(cls, "")
+        text.skipped = []
+        piece: list = []
+        for token in tokens + [Token("ELSE", "ELSE")]:
+            if token.type != "ELSE":
+                piece.append(token)
+                continue
+            if piece:
+                try:
+                    text.skipped.extend(_parse(piece))
+                except (BasicError, GrammarError):
+                    text.skipped.extend(_statements_before_error(piece)[0])
+            piece = []
+        return text
 
 
 def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
@@ -936,6 +959,9 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
              or _chain_file_first(tokens, bad_start, err))
     if found is not None:
         return [found] + _statements_after_error(tokens, bad_start, dialect)
+    nexts = _next_read_as_far(tokens, bad_start, err)
+    if nexts is not None:
+        return nexts + _statements_after_error(tokens, bad_start, dialect)
     jump = _jump_read_as_needed(tokens, bad_start)
     if jump is not None:
         return [jump] + _statements_after_error(tokens, bad_start, dialect)
@@ -1025,7 +1051,9 @@ def _checked_first(tokens: list, start: int, err: BasicError):
     if kind == "RESUME":
         return ast.Resume("bad", error=err)
     if kind == "WHILE":
-        return ast.While(err)
+        return _while_read_first(tokens, start, err)
+    if kind == "WEND":
+        return ast.Wend(err)  # FIVEO.ASM WEND: Syntax error before it looks at the stack
     if kind == "RETURN":
         return _return_read_first(tokens, start)
     if kind == "RESTORE":
@@ -1044,6 +1072,25 @@ def _restore_read_first(tokens: list, start: int, err: BasicError):
             return None
         line = int(value)  # (LINGET's digits: 1.5 is line 1)
     return ast.CutShort(ast.Restore(line), err)
+
+
+def _while_read_first(tokens: list, start: int, err: BasicError):
+    """A bad WHILE: FIVEO.ASM WHILE scans for its WEND, then evaluates its condition; a false
+    one goes on after the WEND, a true one makes the loop's entry, and only then does NEWSTT
+    meet what follows the condition: ``err`` (``WHILE A < 9 PRINT`` runs the loop, each pass
+    starting with the Syntax error).  A condition that does not read is itself ``err``."""
+    end = next((k for k in range(start + 1, len(tokens)) if tokens[k].type in _STATEMENT_ENDS), len(tokens))
+    for k in range(end - 1, start + 1, -1):
+        if tokens[k].type in _OPERATORS:
+            continue
+        try:
+            found = _parse(tokens[start:k])
+        except (BasicError, GrammarError):
+            continue
+        if len(found) == 1 and isinstance(found[0], ast.While):
+            found[0].rest_error = err
+            return found[0]
+    return ast.While(err)
 
 
 def _return_read_first(tokens: list, start: int):
@@ -1161,6 +1208,31 @@ def parse_expression(tokens: list):
     except (BasicError, GrammarError):
         return None
     return found[0].value if len(found) == 1 and isinstance(found[0], ast.Let) else None
+
+
+def _next_read_as_far(tokens: list, start: int, err: BasicError):
+    """A bad NEXT: the NEXTs of the names that read, then ``err``, raised once the last of
+    them lets its loop end (NEXT86.ASM NEXT reads one name at a time, LOOPDN the comma after
+    it; ``NEXT J, I PRINT`` runs both loops, then Syntax error).  When not even the first
+    name reads (``NEXT "A"``), a NEXT whose name is ``err``: still a NEXT that a FOR's scan
+    finds (GWMAIN.ASM NXTSCN stops at the word), the error raised by that FOR's first test
+    (NEXTS's PTRGET) and by the NEXT when reached.  None for any other bad statement."""
+    if tokens[start].type != "NEXT":
+        return None
+    end = next((k for k in range(start + 1, len(tokens)) if tokens[k].type in _STATEMENT_ENDS), len(tokens))
+    for k in range(end, start + 1, -1):
+        try:
+            found = _parse(tokens[start:k])
+        except (BasicError, GrammarError):
+            continue
+        if found and all(isinstance(node, ast.Next) and node.var is not None for node in found):
+            if tokens[k].type != "COMMA":
+                return found + [err]
+            # after a comma another NEXT: the name that does not read, or none (LOOPD1 calls
+            # NEXTC with a variable pointer no FOR entry has: NEXT without FOR)
+            last = err if k + 1 < end else BasicError("NEXT without FOR", NEXT_WITHOUT_FOR)
+            return found + [ast.Next(last)]
+    return [ast.Next(err)]
 
 
 def _jump_read_as_needed(tokens: list, start: int):

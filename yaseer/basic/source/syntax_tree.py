@@ -289,6 +289,7 @@ class Stop:
 @_node
 class Rem:
     text: str = ""
+    skipped: list = _LIST  # an ELSE no IF owns: the statements after it, never run (blocks.scanned_statements)
 
 
 @_node
@@ -304,11 +305,12 @@ class Clear:
 @_node
 class While:
     condition: object  # an expression, or the BasicError a condition that does not read is
+    rest_error: object = None  # a BasicError: what follows the condition does not read
 
 
 @_node
 class Wend:
-    pass
+    error: object = None  # a BasicError: what follows WEND (raised when it is reached)
 
 
 @_node
