@@ -10,6 +10,9 @@ GOTO/GOSUB, RETURN and RESTORE check before what follows them is read.
   the word after ELSE as a statement's start).
 * WHILE scans for its WEND, evaluates its condition and makes its entry before it reads on
   (FIVEO.ASM WHILE, FNWEND); WEND with more after it is a Syntax error (FIVEO.ASM WEND).
+* IF takes GOTO where THEN may stand and runs a statement where no line number follows
+  (GWMAIN.ASM IFS, DOCOND); PRINT prints each item, comma and semicolon as it reads them, so a
+  word that starts no item ends it after the comma (``PRINT 50, IF``).
 * GOSUB makes room on the stack, reads the line and only then pushes; a missing line's
   error, trapped, leaves nothing on the stack (GWMAIN.ASM GOSUB; the error handler's SAVSTK).
 * ``ON x`` with no GOTO or GOSUB reads x as GETBYT does (Illegal function call outside
@@ -63,6 +66,12 @@ CASES = {
                              "50 B=0: WHILE B < 2\n60 PRINT \"b\"; B;: B = B+1\n70 WEND B\n"
                              "80 WHILE 0 X: PRINT \"no\"\n85 WEND\n90 PRINT \"end\": END\n" + TRAP,
                              "err 2  20 \n 1 err 2  20 \n 3 err 2  20 \n 9 b 0 err 2  70 \nend\n"),
+    # IF c GOTO without a line number is IF c THEN; a PRINT cut short by a word that starts no
+    # item has printed the comma or semicolon before the word
+    "if_goto_statement": ("10 ON ERROR GOTO 100\n20 IF 1 GOTO PRINT \"a\"\n30 IF 0 GOTO PRINT \"b\" ELSE PRINT \"c\"\n"
+                          "40 IF 1, GOTO A=5: PRINT A\n50 PRINT 50, IF 0 THEN 60\n60 PRINT 60; THEN\n"
+                          "70 PRINT \"x\", TO\n80 END\n" + TRAP,
+                          "a\nc\n 5 \n 50           err 2  50 \n 60 err 2  60 \nx             err 2  70 \n"),
     "gosub_missing_line": ("10 ON ERROR GOTO 100\n20 GOSUB 50\n30 PRINT \"back\": END\n"
                            "50 GOSUB 70\n55 PRINT \"55\": RETURN\n" + TRAP,
                            "err 8  50 \n55\nback\n"),

@@ -946,6 +946,12 @@ def _recover_tokens(tokens: list, err: BasicError, dialect: Dialect) -> list:
 def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Dialect) -> list:
     """The bad statement that starts at ``bad_start`` as it runs (see :func:`_recover_tokens`),
     then the statements after it."""
+    as_then = _goto_as_then(tokens, bad_start)
+    if as_then is not None:
+        try:
+            return _parse(as_then)
+        except (BasicError, GrammarError):
+            return _recover_tokens(as_then, err, dialect)
     guarded = _guarding_if(tokens, bad_start, err, dialect)
     if guarded is not None:
         return [guarded]
@@ -982,6 +988,19 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     if printed:
         return [ast.CutShort(printed[0], err)] + _statements_after_error(tokens, bad_start, dialect)
     return [err] + _statements_after_error(tokens, bad_start, dialect)
+
+
+def _goto_as_then(tokens: list, start: int) -> list | None:
+    """``IF c GOTO`` with no line number after GOTO: the tokens from ``start`` with that GOTO
+    read as THEN (GWMAIN.ASM IFS takes GOTO where THEN may stand, and DOCOND runs a statement
+    where no line number follows: ``IF 1 GOTO PRINT 2`` prints 2).  None for any other bad
+    statement."""
+    if tokens[start].type != "IF":
+        return None
+    word = next((k for k in range(start + 1, len(tokens)) if tokens[k].type in ("GOTO", "THEN", "_COLON")), None)
+    if word is None or tokens[word].type != "GOTO" or (word + 1 < len(tokens) and tokens[word + 1].type == "NUMBER"):
+        return None
+    return tokens[start:word] + [Token("THEN", "THEN")] + tokens[word + 1:]
 
 
 def _guarding_if(tokens: list, start: int, err: BasicError, dialect: Dialect):
@@ -1364,11 +1383,6 @@ def _first_value_checked(tokens: list, start: int, err: BasicError):
     if value is None:
         return None
     return ast.Key("NUMBER", value, err) if kind == "KEY" else ast.Rename(value, None, err)
-
-
-# tokens an expression goes on with (what follows a selector that stops before one is no place to stop)
-_OPERATORS = frozenset(("PLUS", "MINUS", "STAR", "SLASH", "BSLASH", "CARET", "MOD", "EQ", "LT", "GT", "LE", "GE",
-                        "NE", "AND", "OR", "XOR", "EQV", "IMP", "NOT", "_LPAR"))
 
 
 def _selector_read_first(tokens: list, start: int, end: int):
