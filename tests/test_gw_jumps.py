@@ -72,6 +72,16 @@ CASES = {
                           "40 IF 1, GOTO A=5: PRINT A\n50 PRINT 50, IF 0 THEN 60\n60 PRINT 60; THEN\n"
                           "70 PRINT \"x\", TO\n80 END\n" + TRAP,
                           "a\nc\n 5 \n 50           err 2  50 \n 60 err 2  60 \nx             err 2  70 \n"),
+    # a FOR of a variable another FOR statement's loop already runs opens a loop of its own
+    # (GWMAIN.ASM FOR's LPFORM drops only its own statement's entry); jumps out of loops,
+    # RETURN from one, NEXT in a branch
+    "loops_and_jumps": ('10 ON ERROR GOTO 100\n20 FOR I=1 TO 3: PRINT "o";: FOR I=1 TO 2: PRINT "i";: NEXT I: NEXT I\n30 PRINT: PRINT I\n40 FOR J=1 TO 2: FOR K=1 TO 2: PRINT J;K;: IF K=1 THEN GOTO 60\n50 NEXT K\n60 NEXT J\n70 PRINT: FOR L=1 TO 3: GOSUB 90: NEXT L: PRINT "end": END\n90 FOR M=1 TO 2: PRINT L; M;: IF M=2 THEN RETURN\n95 NEXT M: PRINT "x": RETURN\n100 PRINT "err"; ERR; ERL: RESUME NEXT\n',
+                        'oii\n 4 \n 1  1  2  1 \n 1  1  1  2  2  1  2  2  3  1  3  2 end\n'),
+    "loops_and_errors": ('10 ON ERROR GOTO 100\n20 FOR I = 1 TO 2: GOSUB 60: PRINT "r"; I;: NEXT I\n30 PRINT: FOR I = 1 TO 3: FOR J = 1 TO 3: IF J = 2 THEN NEXT I\n40 PRINT I; J;: NEXT J: PRINT "x";: NEXT I\n50 PRINT: GOTO 80\n60 FOR J = 1 TO 5: IF J = 2 THEN RETURN\n70 NEXT J\n80 FOR K = 1 TO 2: PRINT "k"; K;\n85 NEXT K, K\n90 PRINT "end": END\n100 PRINT "err"; ERR; ERL: RESUME NEXT\n',
+                         'r 1 r 2 \nerr 1  40 \nerr 1  30 \nerr 1  30 \n 3  2 err 1  40 \nxerr 1  40 \n\nk 1 k 2 err 1  85 \nend\n'),
+    # RESUME NEXT after an error in a NEXT inside an IF branch goes on after that NEXT
+    "resume_after_next_in_branch": ('10 ON ERROR GOTO 100\n20 FOR I = 1 TO 3: FOR J = 1 TO 3: IF J = 0 THEN NEXT I\n30 PRINT "30"; I; J: NEXT J\n40 PRINT "40"; I; J: END\n100 PRINT "err"; ERR; ERL: N = N + 1: IF N > 8 THEN END ELSE RESUME NEXT\n',
+                                    'err 1  30 \nerr 1  20 \nerr 1  20 \n30 0  0 \nerr 1  30 \n40 0  0 \n'),
     "gosub_missing_line": ("10 ON ERROR GOTO 100\n20 GOSUB 50\n30 PRINT \"back\": END\n"
                            "50 GOSUB 70\n55 PRINT \"55\": RETURN\n" + TRAP,
                            "err 8  50 \n55\nback\n"),

@@ -564,6 +564,8 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         block = self.after(self.index, node)
         if fall_through:
             self.emit(f"return {block.number}")
+        # RESUME NEXT after an error in ``node`` goes on there too (not at the block numbered next)
+        self.block_next.setdefault(self.cur.number, block.number)
         self.cur, self.indent = block, 1
         self.emit(f"_ln = {self.line}")
 

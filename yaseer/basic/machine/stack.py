@@ -88,11 +88,15 @@ class ControlStack:
         """
         next_id = self.bound_next(bound)
         stack = self.stack
+        same_statement = self.dialect.for_binds_next
         for k in range(len(stack) - 1, -1, -1):
             frame = stack[k]
             if type(frame) is not ForFrame:
                 break
-            if frame.key == key:  # re-entering a loop: drop it and the loops inside it
+            if frame.key == key and (frame.body == body or not same_statement):
+                # re-entering a loop: drop it and the loops inside it (GW-BASIC: only a loop this
+                # FOR statement opened, GWMAIN.ASM FOR's LPFORM compares the FOR's end in the
+                # text; another FOR of the variable opens a loop of its own above it)
                 del stack[k:]
                 break
         levels = self.for_levels
