@@ -190,7 +190,7 @@ def test_a_protected_program_does_not_list_itself(pc, tmp_path):
     assert typed(session, shown, ['RUN "SELF"']) == theirs == "A\nIllegal function call in 20\n"
     (tmp_path / "SAVER.BAS").write_bytes(pc_saved(pc, '10 SAVE "PLAIN"', "SAVER"))
     assert typed(session, shown, ['RUN "SAVER"']) == "Illegal function call in 10\n"
-    assert program_text(data) == "10 PRINT \"A\"\n20 LIST\n30 PRINT \"B\"\n"
+    assert program_text(data) == "10 PRINT \"A\"\r\n20 LIST\r\n30 PRINT \"B\"\r\n"  # as LIST writes it to a file
 
 
 def test_a_program_saves_itself_protected_as_pc_basic_does(pc, tmp_path):

@@ -372,8 +372,9 @@ def _source(listing: Listing, charset=None) -> tuple[str, str, str | None, bool,
 
 
 def _file_text(data: bytes, charset, name: str | None) -> tuple[str, str, str | None, bool, bool]:
-    """:func:`_source`'s answer for a program file's bytes (lines end in LF, as text mode reads
-    them): the program keeps a tokenised file's double constants whole, the listing shows
+    """:func:`_source`'s answer for a program file's bytes (the listing's lines end in LF, as
+    text mode reads them; the program keeps the file's line ends for the dialect's LOAD to
+    read, scanner.program_lines): the program keeps a tokenised file's double constants whole, the listing shows
     their digits; a protected program has no listing (GIODSK.ASM PROCHK: GW-BASIC's LIST of it
     is Illegal function call)."""
     from yaseer.basic.machine.program_file import is_protected, program_text
@@ -382,7 +383,7 @@ def _file_text(data: bytes, charset, name: str | None) -> tuple[str, str, str | 
         return text.replace("\r\n", "\n").replace("\r", "\n")
 
     protected = is_protected(data)
-    program = lines(program_text(data, charset))
+    program = program_text(data, charset)  # its line ends as the dialect's LOAD reads them (a LF inside a gw line)
     listing = "" if protected else lines(program_text(data, charset, exact=False))
     return program, listing, name, protected, data[:1] not in (b"\xfe", b"\xff")
 

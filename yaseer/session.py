@@ -199,7 +199,7 @@ def read_program_file(name: str, directory: Path, dialect=None) -> ProgramFile:
         name += ".bas"
     data = sandbox.read_bytes(sandbox.dos_name(name))  # DOS ignores case: a program's SAVE "f" wrote F.BAS
     dialect = dialect or CASIO
-    program, stopped = program_lines(program_text(data, dialect.charset), dialect)
+    program, stopped = program_lines(program_text(data, dialect.charset), dialect, from_file=True)
     program, full = fitting_lines({}, program, dialect.free_memory)  # gw: the lines that fit are loaded
     stopped = full or stopped
     if any(number > MAX_LINE_NUMBER for number in program):

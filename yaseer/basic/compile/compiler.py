@@ -95,6 +95,7 @@ class _NoWords:
     gosub_levels = for_levels = None
     computed_restore = empty_on_targets = truncates = asks_each = False
     command_options = {"LOAD": "R", "SAVE": "AP", "RUN": "R"}  # GW-BASIC's LOAD ,R; SAVE ,A ,P; RUN ,R
+    list_to_file = True  # LIST [range], "f" (GWLIST.ASM LIST)
 
 
 NO_WORDS = _NoWords()

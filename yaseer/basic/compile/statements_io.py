@@ -402,6 +402,8 @@ class InputOutputCompiler:
         if stmt.option is not None and stmt.name in options and stmt.option not in options[stmt.name]:
             raise syntax_error()
         argument = stmt.argument
+        if stmt.file is not None and not self.words.list_to_file:
+            raise syntax_error()
         if stmt.name == "EDIT" and argument is None and not self.words.edit_lists_from:
             raise syntax_error()  # GW-BASIC's EDIT needs its line
         if argument == ast.CURRENT_LINE and not self.dot_runs:  # casio's LIST . / EDIT .: its own line
@@ -410,8 +412,9 @@ class InputOutputCompiler:
             argument = self.string(argument, scope)
         else:
             argument = line_specs(argument)
+        file = "" if stmt.file is None else f", {self.string(stmt.file, scope)}"
         self.emit(STORE_LOCALS)
-        self.emit(f"_command({stmt.name!r}, {argument}, {stmt.option!r}, {stmt.everything})")
+        self.emit(f"_command({stmt.name!r}, {argument}, {stmt.option!r}, {stmt.everything}{file})")
         self.emit(LOAD_LOCALS)
 
     # -- the text screen (machine/console.py)

@@ -266,6 +266,7 @@ class Words:
     current_line_period = CURRENT_LINE_PERIOD
     edit_lists_from = EDIT_LISTS_FROM
     command_options = COMMAND_OPTIONS
+    list_to_file = False  # LIST.md: LIST writes to the display only; a comma after it is a Syntax error
     variable_area = VARIABLE_AREA
     system_memory = SYSTEM_MEMORY
     input_buffer = INPUT_BUFFER

@@ -127,10 +127,12 @@ FIELDS = (
     "device_words",  # gw_words.Words | None: None
     "not_after_operator",  # bool: False
     "argument_readings",  # tuple[str, ...]: ()
+    "dos_program_lines",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
-            None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None, False, ())
+            None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None, False, (),
+            False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -202,6 +204,12 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         joins a line of a program file that has no line number onto the line
         before; False (GW-BASIC's LOAD, DSKCOM.ASM) stops loading there with
         ``Direct statement in file``, the lines before it loaded.
+        ``dos_program_lines``: True (GW-BASIC) reads a program file's lines as its
+        ASCII LOAD does (SCNEDT.ASM DSKCHI, GWMAIN.ASM MAIN and LINGET;
+        scanner.dos_lines): a line ends at a CR, a LF inside it is part of it, more
+        than 255 characters is ``Line buffer overflow``; a line number takes digits
+        while it is at most 6552 (the rest is the line's text) and one blank after it
+        is skipped unless it is 0.  False: a line ends at CR LF, CR or LF.
 
     Messages
         ``names_missing_line``: True (Casio, as yaseer has always named it) says which
@@ -453,7 +461,7 @@ GW = Dialect(
     delete_needs_last_line=True, eof_of_file_zero=True, input_answer_first=True, dim_name_alone_scalar=True,
     dim_after_use_duplicate=True, device_files=GW_DEVICES, nameless_file_error=52, def_seg_usr=True,
     device_words=gw_words.WORDS, not_after_operator=True,
-    argument_readings=("INSTR", "STRING$", "LEFT$", "RIGHT$", "MID$"),
+    argument_readings=("INSTR", "STRING$", "LEFT$", "RIGHT$", "MID$"), dos_program_lines=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -87,7 +87,7 @@ class Chaining:
         text = charset.codes(program_text(data, charset))  # as shown, then in the machine's codes
         if not merge:
             self.program_protected = is_protected(data)
-        lines, stopped = program_lines(text, self.dialect)
+        lines, stopped = program_lines(text, self.dialect, from_file=True)
         if not merge:  # (MERGE's lines must fit with the program they join: chained)
             lines, full = memory_model.fitting_lines({}, lines, self.dialect.free_memory)
             stopped = full or stopped
@@ -95,7 +95,7 @@ class Chaining:
             self._entered(lines)
         return lines, stopped
 
-    def program_command(self, name: str, argument, option, everything: bool = False) -> None:
+    def program_command(self, name: str, argument, option, everything: bool = False, file: str | None = None) -> None:
         """A command run by a program (GW-BASIC runs them and, but for RUN and the saves of
         the dialect's ``saves_going_on``, returns to direct mode: the run ends): RUN [line | "file"[,R]], LIST/LLIST [range], LOAD
         "file"[,R], SAVE "file"[,A|,P] (program_crunch.saved_program), NEW, SYSTEM, DELETE
@@ -129,7 +129,7 @@ class Chaining:
         if self.program_protected and (name in ("LIST", "LLIST", "EDIT") or (name == "SAVE" and option != "P")):
             raise error_for(ILLEGAL_FUNCTION_CALL)  # GIODSK.ASM PROCHK: a protected program is not shown
         if name in ("LIST", "LLIST"):
-            self._list_lines(program, argument, 1 if name == "LLIST" else 0)
+            self._list_lines(program, argument, 1 if name == "LLIST" else 0, file)
         elif name == "SAVE":
             self._save(program, argument, option=option or "")
             if (option or "") in self.dialect.saves_going_on:
@@ -228,16 +228,26 @@ class Chaining:
             raise error_for(self.dialect.nameless_file_error)
         return name if "." in name else name + ".BAS"
 
-    def _list_lines(self, program: dict, line_range, device: int) -> None:
-        """LIST / LLIST: the lines in ``line_range`` as LIST shows them."""
-        from yaseer.basic.machine.program_crunch import listed_line
+    def _list_lines(self, program: dict, line_range, device: int, file: str | None = None) -> None:
+        """LIST / LLIST: the lines in ``line_range`` as LIST shows them; ``file``: written to
+        that file instead (GWLIST.ASM LIST opens it for output as file 0), closed at the end."""
+        from yaseer.basic.machine.program_crunch import listed_row
 
         first, last = line_range
-        for number in sorted(program):
-            if (first or 0) <= number <= (65529 if last is None else last):
-                if self.dialect.current_line_listed:
-                    self.current_line = number  # GWLIST.ASM LIST keeps each line shown in DOT
-                self.print_items(device, (f"{number} {listed_line(program[number], self.dialect)}",), True)
+        listing = None if file is None else self.files.listing_file(file)
+        try:
+            for number in sorted(program):
+                if (first or 0) <= number <= (65529 if last is None else last):
+                    if self.dialect.current_line_listed:
+                        self.current_line = number  # GWLIST.ASM LIST keeps each line shown in DOT
+                    row = listed_row(number, program[number], self.dialect, listing is not None)
+                    if listing is None:
+                        self.print_items(device, (row,), True)
+                    else:
+                        listing.output().write(row + "\r\n")
+        finally:
+            if listing is not None:
+                listing.close()
 
     def _save(self, program: dict, name: str, areas: dict | None = None, option: str = "") -> None:
         """SAVE "f"[,A|,P]: the program as ``option`` asks (program_crunch.saved_program) in the

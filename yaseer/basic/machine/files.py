@@ -196,10 +196,19 @@ class FileTable:
         k = self.number(n)
         if k in self.open_files:
             raise error_for(FILE_ALREADY_OPEN)
+        self.open_files[k] = self._opened(kind, name, length)
+
+    def listing_file(self, name: str):
+        """The file LIST [range], "f" writes its lines to (GWLIST.ASM LIST: NAMSCN reads the
+        name, NULOPM opens file 0 for output), as OPEN "f" FOR OUTPUT opens it but under no
+        number; the caller closes it."""
+        return self._opened("O", name)
+
+    def _opened(self, kind: str, name: str, length=None):
+        """The open file (or device) OPEN makes of ``name`` in mode ``kind``, not yet numbered."""
         device = device_files.device_kind(name, self.device_files) if self.device_files else None
         if device is not None:  # never a file of the directory
-            self.open_files[k] = device_files.open_device(device, kind, self.device_streams)
-            return
+            return device_files.open_device(device, kind, self.device_streams)
         size = random_files.record_length(length) if kind == "R" else None
         sandbox = self.sandbox
         name = sandbox.dos_name(self._local_name(name))
@@ -209,7 +218,7 @@ class FileTable:
             os.close(descriptor)  # nothing truncated yet: OpenFile does that
             raise error_for(FILE_ALREADY_OPEN)
         try:
-            self.open_files[k] = random_files.RandomFile(descriptor, size) if size else OpenFile(descriptor, kind)
+            return random_files.RandomFile(descriptor, size) if size else OpenFile(descriptor, kind)
         except OSError:
             try:
                 os.close(descriptor)

@@ -226,8 +226,25 @@ def saved_program(program: dict[int, str], option: str, dialect) -> bytes:
 
 
 def listing_text(program: dict[int, str], dialect) -> str:
-    """``program``'s lines as LIST shows them, each ending in CR LF (SAVE ,A)."""
-    return "".join(f"{n} {listed_line(program[n], dialect)}\r\n" for n in sorted(program))
+    """``program``'s lines as LIST writes them to a file, each ending in CR LF (SAVE ,A)."""
+    return "".join(listed_row(n, program[n], dialect, True) + "\r\n" for n in sorted(program))
+
+
+def listed_row(number: int, text: str, dialect, to_file: bool = False) -> str:
+    """Line ``number`` with its ``text`` as LIST shows it: the number, a blank, the line
+    (:func:`listed_line`).  Where the ``dialect`` keeps programs as tokens, as GWLIST.ASM LIST
+    writes it: no blank when the line starts with a TAB (NOSPAL), a blank that begins line 0
+    (which LOAD keeps there, GWMAIN.ASM MAIN) not shown, as a real GW-BASIC 3.23 lists it
+    (PC-BASIC's recorded line_number_0 test); ``to_file``: each LF of the line written LF CR
+    (SCNEDT.ASM OUTCH1, so that LOAD reads the line back whole)."""
+    body = listed_line(text, dialect)
+    if not dialect.tokenised_programs:
+        return f"{number} {body}"
+    if number == 0 and body.startswith(" "):
+        body = body[1:]
+    if to_file:
+        body = body.replace("\n", "\n\r")
+    return f"{number}{'' if body.startswith(chr(9)) else ' '}{body}"
 
 
 def listed_line(text: str, dialect) -> str:

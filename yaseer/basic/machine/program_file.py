@@ -117,7 +117,10 @@ def unprotect(data: bytes) -> bytes:
 
 
 def detokenise(data: bytes, exact: bool = False) -> str:
-    """A tokenised program (after the 0xFF) as numbered text lines, as LIST shows them; a file
+    """A tokenised program (after the 0xFF) as numbered text lines, as LIST shows them (CR LF
+    after each, a LF inside a line written LF CR as LIST writes it to a file: the lines read
+    back as GW-BASIC's ASCII LOAD reads them, scanner.dos_lines, keep their LFs; line 0's
+    text follows its number with no blank, as LOAD keeps a blank after line number 0); a file
     cut short ends with its last whole line.  ``exact``: a double or single constant is its
     16 or 7 digits only where they read back to its 8 or 4 bytes, else scanner.EXACT_DOUBLE
     or EXACT_SINGLE and the bytes (the program then keeps all their bits, and SAVE writes
@@ -129,8 +132,9 @@ def detokenise(data: bytes, exact: bool = False) -> str:
             break
         number = data[i + 2] | data[i + 3] << 8
         text, i = _line_text(data, i + 4, exact)
-        lines.append(f"{number} {text}")
-    return "".join(line + "\n" for line in lines)
+        blank = "" if number == 0 and text[:1] not in "0123456789" else " "
+        lines.append(f"{number}{blank}{text}".replace("\n", "\n\r"))
+    return "".join(line + "\r\n" for line in lines)
 
 
 def line_text(tokens: bytes) -> str:

@@ -390,9 +390,12 @@ class _ToAst:
 
     def list_stmt(self, c):
         c, everything = _without_all(c)
+        file = None
+        if len(c) > 2 and isinstance(c[-2], Token) and c[-2].type == "COMMA":  # LIST [range], "f"
+            c, file = c[:-2], c[-1]
         if len(c) > 1 and isinstance(c[1], Token):  # LIST . (the Casio's PERIOD)
-            return ast.Command(c[0].value, ast.CURRENT_LINE)
-        return ast.Command(c[0].value, c[1] if len(c) > 1 else (None, None), everything=everything)
+            return ast.Command(c[0].value, ast.CURRENT_LINE, file=file)
+        return ast.Command(c[0].value, c[1] if len(c) > 1 else (None, None), everything=everything, file=file)
 
     def load_stmt(self, c):
         c, everything = _without_all(c)

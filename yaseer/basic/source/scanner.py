@@ -23,7 +23,7 @@ from __future__ import annotations
 import functools
 
 from yaseer.basic.dialects.dialect import CASIO, Dialect
-from yaseer.basic.errors import DIRECT_STATEMENT_IN_FILE, BasicError, OVERFLOW, SYNTAX_ERROR, error_message
+from yaseer.basic.errors import DIRECT_STATEMENT_IN_FILE, LINE_BUFFER_OVERFLOW, BasicError, OVERFLOW, SYNTAX_ERROR, error_message
 from yaseer.basic.dialects.reserved import GW_RESERVED_WORDS, UNSUPPORTED
 from yaseer.patterns import Pattern
 
@@ -976,8 +976,8 @@ class DirectStatementInFile(BasicError):
     the line before: loading stops there; ``lines`` holds the lines read before it and
     ``statement`` the line's own text (a direct statement, as GW-BASIC's MAIN read it)."""
 
-    def __init__(self, lines: list, statement: str = ""):
-        super().__init__(error_message(DIRECT_STATEMENT_IN_FILE), DIRECT_STATEMENT_IN_FILE)
+    def __init__(self, lines: list, statement: str = "", code: int = DIRECT_STATEMENT_IN_FILE):
+        super().__init__(error_message(code), code)
         self.lines = lines
         self.statement = statement
 
@@ -986,7 +986,73 @@ class DirectStatementInFile(BasicError):
         return self
 
 
-def split_lines(source: str, joins_unnumbered: bool = True, keeps_blanks: bool = False) -> list[tuple[int, str, int]]:
+class LineBufferOverflowInFile(DirectStatementInFile):
+    """A program file's line of more than 255 characters (SCNEDT.ASM DSKCHI: ``LBOERR``,
+    ``Line buffer overflow``): loading stops there as at a direct statement, the lines
+    before it loaded."""
+
+    def __init__(self, lines: list, statement: str = ""):
+        super().__init__(lines, statement, LINE_BUFFER_OVERFLOW)
+
+
+DOS_LINE_LENGTH = 255  # SCNEDT.ASM DSKCHI: BUFLEN, the characters a loaded line may hold
+_DOS_BLANKS = " \t\n"  # GWMAIN.ASM CHRGTR steps over them (also between a line number's digits)
+_LINE_NUMBER_ROOM = 6552  # GWMAIN.ASM LINGET takes another digit only up to this value
+
+
+def dos_lines(source: str) -> list[str]:
+    """A program file's physical lines as GW-BASIC's ASCII LOAD reads them (SCNEDT.ASM
+    DSKCHI): a line ends at a CR, but a CR right after a LF is dropped and the LF stays in
+    the line (``10 A=1:\\n\\rB=2`` is one line: LIST writes a line's LF as LF CR, GWLIST.ASM
+    LISPRT / SCNEDT.ASM OUTCH1); LFs at a line's start are dropped (the LF of CR LF).  Text
+    with no CR at all (written on Unix, never by DOS) has its lines end at LF (yaseer's
+    choice: DSKCHI would read it as one line)."""
+    if "\r" not in source:
+        return source.split("\n")
+    lines: list[str] = []
+    current = ""
+    for piece in source.split("\r"):
+        current += piece.lstrip("\n") if not current else piece
+        if not current.endswith("\n"):
+            lines.append(current)
+            current = ""
+    if current:
+        lines.append(current)
+    return lines
+
+
+def _dos_line_number(physical: str) -> tuple[int, int] | None:
+    """The number a loaded line starts with and where its text begins, as GWMAIN.ASM MAIN
+    reads it (None: no digit first, a direct statement): blanks, then LINGET's digits
+    (blanks between them skipped; another digit taken only while the number is at most
+    6552, so a longer run of digits leaves the rest to the text: ``111111`` is line 11111
+    and the text ``1``); BAKSP gives back the blanks after the last digit, then one blank
+    is skipped unless the number is 0."""
+    end = len(physical)
+    i = 0
+    while i < end and physical[i] in _DOS_BLANKS:
+        i += 1
+    if i == end or not "0" <= physical[i] <= "9":
+        return None
+    number = 0
+    after = i
+    while i < end and number <= _LINE_NUMBER_ROOM:
+        ch = physical[i]
+        if "0" <= ch <= "9":
+            number = number * 10 + ord(ch) - 48
+            i += 1
+            after = i
+        elif ch in _DOS_BLANKS:
+            i += 1
+        else:
+            break
+    if number and after < end and physical[after] == " ":
+        after += 1
+    return number, after
+
+
+def split_lines(source: str, joins_unnumbered: bool = True, keeps_blanks: bool = False,
+                dos: bool = False, longest: int | None = None) -> list[tuple[int, str, int]]:
     """Split a listing into ``(line number, statement text, physical line index)``.
 
     Lines end at CR LF, LF or CR only (a machine's codes 28-31 and 133, which
@@ -1000,6 +1066,8 @@ def split_lines(source: str, joins_unnumbered: bool = True, keeps_blanks: bool =
     the one after the number (GWMAIN.ASM MAIN eats one: LIST prints one); else it is
     stripped.  A text of blanks only is empty (the line is deleted).
     """
+    if dos:
+        return _dos_split(source, keeps_blanks, longest)
     lines: list[tuple[int, str, int]] = []
     # (lines end at CR LF, then a lone CR or LF: as re.split(r"\r\n|\n|\r") cuts them)
     for index, physical in enumerate(source.replace("\r\n", "\n").replace("\r", "\n").split("\n")):
@@ -1024,17 +1092,49 @@ def split_lines(source: str, joins_unnumbered: bool = True, keeps_blanks: bool =
     return lines
 
 
-def program_lines(text: str, dialect: Dialect = CASIO) -> tuple[dict[int, str], DirectStatementInFile | None]:
+def _dos_split(source: str, keeps_blanks: bool, longest: int | None) -> list[tuple[int, str, int]]:
+    """:func:`split_lines` for ``dos``: :func:`dos_lines`, each read by :func:`_dos_line_number`
+    up to its first zero byte (the end of the line as MAIN and CRUNCH read it); a line of
+    more than ``longest`` characters (None: any length) stops the reading
+    (:class:`LineBufferOverflowInFile`), so does one without a number
+    (:class:`DirectStatementInFile`)."""
+    lines: list[tuple[int, str, int]] = []
+    for index, physical in enumerate(dos_lines(source)):
+        if longest is not None and len(physical) > longest:
+            raise LineBufferOverflowInFile(lines, physical[:30])
+        physical = physical.split("\0", 1)[0]  # DSKCHI ends the buffer with a 0: MAIN reads up to the first
+        if not physical.strip(_DOS_BLANKS):
+            continue
+        found = _dos_line_number(physical)
+        if found is None:
+            raise DirectStatementInFile(lines, physical.strip())
+        number, begins = found
+        text = physical[begins:]
+        if not text.strip(_DOS_BLANKS):
+            text = ""
+        elif not keeps_blanks:
+            text = text.strip()
+        lines.append((number, text, index))
+    return lines
+
+
+def program_lines(text: str, dialect: Dialect = CASIO,
+                  from_file: bool = False) -> tuple[dict[int, str], DirectStatementInFile | None]:
     """A program file's text as the ``dialect``'s LOAD reads it (the one reader of program
     text: LOAD, RUN "f", CHAIN and MERGE in a program, the session's LOAD, the API and
     ``yaseer run``): line number -> text in the order the lines were read, a later line of a
     number replacing an earlier one and a line of blanks deleting it (:func:`split_lines`, with the dialect's
     ``joins_unnumbered_lines`` and ``tokenised_programs``); and the
     :class:`DirectStatementInFile` that stopped the reading at a line without a number
-    (GIO86.ASM DIRDO: the lines before it are loaded), None if none."""
+    (GIO86.ASM DIRDO: the lines before it are loaded), None if none.  ``from_file``: a file
+    a program or the session loads (LOAD, RUN "f", CHAIN, MERGE): where the dialect reads
+    lines as DSKCHI does (``dos_program_lines``) one of more than 255 characters stops the
+    reading with ``Line buffer overflow``; the program handed to ``yaseer run`` or the API
+    may hold longer lines (yaseer's choice: a listing written in an editor runs whole)."""
     stopped = None
     try:
-        lines = split_lines(text, dialect.joins_unnumbered_lines, dialect.tokenised_programs)
+        lines = split_lines(text, dialect.joins_unnumbered_lines, dialect.tokenised_programs,
+                            dialect.dos_program_lines, DOS_LINE_LENGTH if from_file else None)
     except DirectStatementInFile as error:
         lines, stopped = error.lines, error
     program: dict[int, str] = {}

@@ -416,11 +416,13 @@ class Command:
     KEY; ``argument`` its file name expression, line, line range or :data:`CURRENT_LINE`
     (the Casio's ``LIST .``, ``EDIT .``); ``option`` the
     letter after the comma (``,R`` ``,A`` ``,P``) or KEY's ON/OFF; ``everything`` the
-    Casio's ALL (NEW ALL, LIST ALL, SAVE ALL, LOAD ALL: every program area)."""
+    Casio's ALL (NEW ALL, LIST ALL, SAVE ALL, LOAD ALL: every program area); ``file`` the
+    file name expression of ``LIST [range], "f"`` (None: the screen or the printer)."""
     name: str
     argument: object = None
     option: object = None
     everything: bool = False
+    file: object = None
 
 
 @_node
