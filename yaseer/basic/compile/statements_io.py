@@ -11,7 +11,8 @@ from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.expressions import CompileError, syntax_error, type_mismatch
 from yaseer.basic.compile.markers import LOAD_LOCALS, STORE_LOCALS
 from yaseer.basic.errors import (
-    ILLEGAL_FUNCTION_CALL, MISSING_OPERAND, OUT_OF_DATA, SYNTAX_ERROR, UNDEFINED_LINE, undefined_line_message,
+    ILLEGAL_FUNCTION_CALL, MISSING_OPERAND, OUT_OF_DATA, PATH_FILE_ACCESS_ERROR, SYNTAX_ERROR, UNDEFINED_LINE,
+    error_message, undefined_line_message,
 )
 
 
@@ -36,6 +37,10 @@ def _print_chunks(parts: list) -> list:
     if current or not chunks:
         chunks.append(current)
     return chunks
+
+
+# The one ACCESS each sequential mode allows (GW-BASIC 3.23 as recorded, see stmt_Open)
+_ACCESS_OF_MODE = {"I": "R", "O": "W", "A": "RW"}
 
 
 class InputOutputCompiler:
@@ -302,9 +307,23 @@ class InputOutputCompiler:
         self.emit(f"_restore({stmt.target!r})")
 
     def stmt_Open(self, stmt, scope):
+        """OPEN; GW-BASIC 3.23's ACCESS clause must suit the FOR mode (as a real GW-BASIC 3.23
+        recorded it, PC-BASIC's OPEN2 test: INPUT only ACCESS READ, OUTPUT only ACCESS WRITE,
+        APPEND ACCESS READ WRITE, and ACCESS WRITE Path/File access error when it runs;
+        RANDOM any), else Syntax error; the clauses go to the file table
+        (machine/file_locks.py)."""
         length = "None" if stmt.length is None else self.integer(stmt.length, scope)
+        clauses = ""
+        if stmt.access is not None or stmt.lock is not None:
+            mode = stmt.mode.value[:1].upper()
+            if stmt.access is not None and mode != "R" and stmt.access != _ACCESS_OF_MODE.get(mode, stmt.access):
+                if (mode, stmt.access) == ("A", "W"):
+                    self.emit(f"raise _err({error_message(PATH_FILE_ACCESS_ERROR)!r}, {PATH_FILE_ACCESS_ERROR})")
+                    return
+                raise syntax_error()
+            clauses = f", {stmt.access!r}, {stmt.lock!r}"
         self.emit(f"_open({self.string(stmt.mode, scope)}, {self.integer(stmt.number, scope)}, "
-                  f"{self.string(stmt.name, scope)}, {length})")
+                  f"{self.string(stmt.name, scope)}, {length}{clauses})")
 
     # -- random-access files (random_files.py): a fielded variable is named by its key
     def field_key(self, target, scope, made: bool = True) -> str:

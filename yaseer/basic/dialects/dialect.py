@@ -128,11 +128,12 @@ FIELDS = (
     "not_after_operator",  # bool: False
     "argument_readings",  # tuple[str, ...]: ()
     "dos_program_lines",  # bool: False
+    "open_clauses",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
             None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None, False, (),
-            False)
+            False, False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -210,6 +211,10 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         than 255 characters is ``Line buffer overflow``; a line number takes digits
         while it is at most 6552 (the rest is the line's text) and one blank after it
         is skipped unless it is 0.  False: a line ends at CR LF, CR or LF.
+        ``open_clauses``: True (GW-BASIC 3.23) reads OPEN's ``ACCESS READ|WRITE|READ
+        WRITE`` and ``SHARED``/``LOCK READ|WRITE|READ WRITE`` clauses after its FOR
+        mode (machine/file_locks.py decides what they allow); False: they are
+        Syntax errors.
 
     Messages
         ``names_missing_line``: True (Casio, as yaseer has always named it) says which
@@ -461,7 +466,7 @@ GW = Dialect(
     delete_needs_last_line=True, eof_of_file_zero=True, input_answer_first=True, dim_name_alone_scalar=True,
     dim_after_use_duplicate=True, device_files=GW_DEVICES, nameless_file_error=52, def_seg_usr=True,
     device_words=gw_words.WORDS, not_after_operator=True,
-    argument_readings=("INSTR", "STRING$", "LEFT$", "RIGHT$", "MID$"), dos_program_lines=True,
+    argument_readings=("INSTR", "STRING$", "LEFT$", "RIGHT$", "MID$"), dos_program_lines=True, open_clauses=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

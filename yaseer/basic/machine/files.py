@@ -24,9 +24,10 @@ import os
 
 from yaseer.basic.errors import (
     BAD_FILE_MODE, BAD_FILE_NAME, BAD_FILE_NUMBER, DEVICE_IO_ERROR, FILE_ALREADY_EXISTS, FILE_ALREADY_OPEN,
-    FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, RENAME_ACROSS_DISKS, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, error_for, not_emulated,
+    FILE_NOT_FOUND, ILLEGAL_FUNCTION_CALL, RENAME_ACROSS_DISKS, INPUT_PAST_END, PATH_FILE_ACCESS_ERROR, BasicError,
+    error_for, not_emulated,
 )
-from yaseer.basic.machine import device_files, item_reading, random_files
+from yaseer.basic.machine import device_files, file_locks, item_reading, random_files
 from yaseer.basic.machine.random_files import END_OF_FILE  # Ctrl-Z
 from yaseer.basic.machine.runtime import cint
 from yaseer.basic.machine.sandbox import Sandbox, identity_of
@@ -50,7 +51,10 @@ def read_program(sandbox: Sandbox, name: str) -> bytes:
 class OpenFile:
     """One open sequential file: ``mode`` "I", "O" or "A", on ``descriptor`` (from
     :class:`Sandbox`: a regular file inside it, opened without following a link, not yet
-    truncated), which it takes over; ``identity`` is its (device, inode)."""
+    truncated), which it takes over; ``identity`` is its (device, inode); ``sharing`` its
+    OPEN clauses (file_locks.Sharing; the file table sets it)."""
+
+    sharing = file_locks.Sharing(None, None, list)  # no clauses (a file OPEN did not make)
 
     def __init__(self, descriptor: int, mode: str):
         self.identity, self.mode = identity_of(descriptor), mode
@@ -83,6 +87,7 @@ class OpenFile:
     def output(self) -> FileStream:
         if self.stream is None:
             raise error_for(BAD_FILE_MODE)
+        self.sharing.use("W")
         return self.stream
 
     def close(self) -> None:
@@ -94,6 +99,7 @@ class OpenFile:
     def _input(self) -> str:
         if self.stream is not None:
             raise error_for(BAD_FILE_MODE)
+        self.sharing.use("R")
         return self.data
 
     @property
@@ -187,16 +193,17 @@ class FileTable:
             raise error_for(BAD_FILE_NUMBER)
         return k
 
-    def open(self, mode: str, n, name: str, length=None) -> None:
+    def open(self, mode: str, n, name: str, length=None, access: str | None = None, lock: str | None = None) -> None:
         """OPEN: ``mode`` "I"/"O"/"A"/"R" (or INPUT, OUTPUT, APPEND, RANDOM) as file number
-        ``n``; ``length``: a random file's record length (yaseer.basic.random_files)."""
+        ``n``; ``length``: a random file's record length (yaseer.basic.random_files);
+        ``access``, ``lock``: GW-BASIC 3.23's clauses (machine/file_locks.py)."""
         kind = _MODES.get(mode.strip().upper())
         if kind is None:
             raise error_for(BAD_FILE_MODE)
         k = self.number(n)
         if k in self.open_files:
             raise error_for(FILE_ALREADY_OPEN)
-        self.open_files[k] = self._opened(kind, name, length)
+        self.open_files[k] = self._opened(kind, name, length, access, lock)
 
     def listing_file(self, name: str):
         """The file LIST [range], "f" writes its lines to (GWLIST.ASM LIST: NAMSCN reads the
@@ -204,8 +211,12 @@ class FileTable:
         number; the caller closes it."""
         return self._opened("O", name)
 
-    def _opened(self, kind: str, name: str, length=None):
-        """The open file (or device) OPEN makes of ``name`` in mode ``kind``, not yet numbered."""
+    def _opened(self, kind: str, name: str, length=None, access: str | None = None, lock: str | None = None):
+        """The open file (or device) OPEN makes of ``name`` in mode ``kind``, not yet numbered:
+        a file open already is ``File already open`` for OUTPUT and APPEND (GIODSK.ASM DSKOPN
+        calls CHKFOP for those modes only: INPUT and RANDOM may open a file open for output,
+        as a real GW-BASIC 3.23 recorded it, PC-BASIC's LockFilesOutput test), then the
+        clauses decide (file_locks.check_opening)."""
         device = device_files.device_kind(name, self.device_files) if self.device_files else None
         if device is not None:  # never a file of the directory
             return device_files.open_device(device, kind, self.device_streams)
@@ -214,17 +225,25 @@ class FileTable:
         name = sandbox.dos_name(self._local_name(name))
         descriptor = sandbox.open_input(name) if kind == "I" else sandbox.open_output(name, readable=kind != "O")
         identity = identity_of(descriptor)
-        if any(f.identity == identity and (kind != f.mode or kind not in "IR") for f in self.open_files.values()):
-            os.close(descriptor)  # nothing truncated yet: OpenFile does that
-            raise error_for(FILE_ALREADY_OPEN)
+        same = [f for f in self.open_files.values() if getattr(f, "identity", None) == identity]
         try:
-            return random_files.RandomFile(descriptor, size) if size else OpenFile(descriptor, kind)
+            if same and kind in "OA":  # GIODSK.ASM DSKOPN: CHKFOP for sequential output and append only
+                raise error_for(FILE_ALREADY_OPEN)
+            file_locks.check_opening(access, lock, [f.sharing for f in same])
+        except BasicError:
+            os.close(descriptor)  # nothing truncated yet: OpenFile does that
+            raise
+        try:
+            opened = random_files.RandomFile(descriptor, size) if size else OpenFile(descriptor, kind)
         except OSError:
             try:
                 os.close(descriptor)
             except OSError:  # the file object had closed it already
                 pass
             raise error_for(PATH_FILE_ACCESS_ERROR) from None
+        opened.sharing = file_locks.Sharing(access, lock, lambda: [
+            f.sharing for f in self.open_files.values() if f is not opened and getattr(f, "identity", None) == identity])
+        return opened
 
     def verify(self, name: str) -> None:
         """VERIFY "file": closes every file, then reads the file through (not there: File not

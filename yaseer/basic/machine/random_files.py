@@ -42,7 +42,7 @@ import math
 from yaseer.basic.errors import (
     BAD_RECORD_NUMBER, FIELD_OVERFLOW, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END, OVERFLOW, error_for,
 )
-from yaseer.basic.machine import item_reading
+from yaseer.basic.machine import file_locks, item_reading
 from yaseer.basic.machine.screen import FileStream
 
 END_OF_FILE = "\x1a"  # Ctrl-Z: ends an input item (GIODSK.ASM DSKSIN)
@@ -64,9 +64,11 @@ def record_length(length) -> int:
 
 
 class RandomFile:
-    """One file open for random access: its handle, record buffer and fields."""
+    """One file open for random access: its handle, record buffer and fields; ``sharing``
+    its OPEN clauses (file_locks.Sharing; the file table sets it)."""
 
     mode = "R"
+    sharing = file_locks.Sharing(None, None, list)
 
     def __init__(self, descriptor: int, length: int):
         """``descriptor``: the file, opened for reading and writing by the sandbox (which it
@@ -177,6 +179,7 @@ class RandomFile:
         """GET: read a record into the buffer; the new values of the variables (read from
         ``scalars``: a :class:`FieldedVariables`) still fielded."""
         n = self._record(record)
+        self.sharing.use("R")
         self.handle.seek((n - 1) * self.length_of_record)
         data = self.handle.read(self.length_of_record)
         self.past_end = len(data) < self.length_of_record
@@ -189,6 +192,7 @@ class RandomFile:
     def put(self, record=None) -> None:
         """PUT: write the buffer as a record (a gap before it filled with zero bytes)."""
         n = self._record(record)
+        self.sharing.use("W")
         start = (n - 1) * self.length_of_record
         end = self.handle.seek(0, 2)
         if end < start:

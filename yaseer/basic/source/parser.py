@@ -304,7 +304,14 @@ class _ToAst:
         mode = c[3]
         if mode.type == "NAME" and mode.value not in ("OUTPUT", "RANDOM"):
             raise BasicError("Syntax error", SYNTAX_ERROR)
-        return self._open_as(ast.Str(mode.value), c[1], c[4:])
+        clauses = [x.value for x in c[4:] if isinstance(x, Token) and x.type == "OPENCLAUSE"]
+        words = [word for word, _ in clauses]
+        if words not in ([], ["ACCESS"], ["LOCK"], ["ACCESS", "LOCK"]):
+            raise BasicError("Syntax error", SYNTAX_ERROR)
+        rights = dict(clauses)
+        node = self._open_as(ast.Str(mode.value), c[1], c[4 + len(clauses):])
+        node.access, node.lock = rights.get("ACCESS"), rights.get("LOCK")
+        return node
 
     def open_as(self, c):
         return self._open_as(ast.Str("R"), c[1], c[2:])  # no FOR: a random file (GW-BASIC)

@@ -766,7 +766,47 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
         tokens = _closed_parentheses(tokens)
     if words and words.open_words and "OPEN" in text.upper():
         _open_words(tokens, words.open_words)
+    if dialect.open_clauses and "OPEN" in text.upper():
+        _open_clauses(tokens)
     return tokens
+
+
+OPEN_CLAUSE = "OPENCLAUSE"  # OPEN's ACCESS ..., SHARED, LOCK ...: (word, "R" | "W" | "RW" | "SHARED")
+
+
+def _open_clauses(tokens: list) -> None:
+    """In an OPEN statement's FOR form, its ACCESS and LOCK clauses as one
+    :data:`OPEN_CLAUSE` token each (after the mode: ``ACCESS`` then READ, WRITE or READ
+    WRITE; ``SHARED`` before AS; ``LOCK`` then READ, WRITE or READ WRITE); any other
+    word stays as it is, for the grammar to refuse."""
+    k = 0
+    after_mode = False
+    while k < len(tokens):
+        kind, value = tokens[k].type, tokens[k].value
+        if kind in ("_COLON", "ELSE", "THEN", "OPEN"):
+            after_mode = False
+        if kind == "FOR" and k and any(t.type == "OPEN" for t in tokens[:k]):
+            after_mode = True
+            k += 2  # FOR and its mode
+            continue
+        if after_mode and ((kind == "NAME" and value == "ACCESS") or (kind == "WORDSTMT" and value == "LOCK")):
+            rights = _read_write(tokens, k + 1)
+            if rights:
+                word = "ACCESS" if kind == "NAME" else "LOCK"
+                tokens[k:k + 1 + len(rights)] = [Token(OPEN_CLAUSE, (word, "".join(r[0] for r in rights)))]
+        elif after_mode and kind == "NAME" and value == "SHARED" and k + 1 < len(tokens) \
+                and tokens[k + 1].type == "NAME" and tokens[k + 1].value.startswith("AS"):
+            tokens[k] = Token(OPEN_CLAUSE, ("LOCK", "SHARED"))
+        k += 1
+
+
+def _read_write(tokens: list, k: int) -> list[str]:
+    """READ, WRITE or READ WRITE at ``tokens[k]``: the words (none: [])."""
+    if k < len(tokens) and tokens[k].type == "WRITE":
+        return ["WRITE"]
+    if k < len(tokens) and tokens[k].type == "READ":
+        return ["READ", "WRITE"] if k + 1 < len(tokens) and tokens[k + 1].type == "WRITE" else ["READ"]
+    return []
 
 
 UNSCANNED = "UNSCANNED"  # a statement the scanner cannot read; its value the scanner's error

@@ -358,11 +358,14 @@ class Write:
 @_node
 class Open:
     """OPEN: mode ("I"/"O"/"A"/"R", or INPUT/OUTPUT/APPEND/RANDOM) expression, file number,
-    name, and the record length (None: not given)."""
+    name, and the record length (None: not given); GW-BASIC 3.23's ``access`` ("R", "W",
+    "RW") and ``lock`` ("SHARED", "R", "W", "RW"), None where the clause is left out."""
     mode: object
     number: object
     name: object
     length: object = None
+    access: str | None = None
+    lock: str | None = None
 
 
 @_node
