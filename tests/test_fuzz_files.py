@@ -1,7 +1,8 @@
 """Fuzzing the file statements (issue 12): random OPEN / PRINT # / WRITE # / INPUT # /
 LINE INPUT # / INPUT$ / EOF / LOF / LOC / CLOSE / KILL / NAME / FILES programs, and the
 random-access files' OPEN ... LEN / FIELD / GET / PUT / LSET / RSET / RESET, and
-CHAIN / MERGE / COMMON / SAVE (,A ,P) / LOAD (,R) / RUN "file", with
+CHAIN / MERGE / COMMON / SAVE (,A ,P) / LOAD (,R) / RUN "file" / LIST to a file, OPEN with
+ACCESS and LOCK clauses, with
 names that try to leave the directory (absolute, ``..``, a symbolic link out), run in
 both dialects.  Each ends normally or with a BASIC error line, and no file ever
 appears, changes or disappears outside the program's directory.
@@ -50,6 +51,11 @@ def statement(data) -> str:
         f"CHAIN {name}", f"CHAIN MERGE {name}, 999, ALL", f"MERGE {name}", "COMMON A$, X",
         f"SAVE {name}", f"SAVE {name}, A", f"LOAD {name}", "LIST", "DELETE 10-20", "NEW",
         f"SAVE {name}, P", f"RUN {name}", f"LOAD {name}, R", f"CHAIN {name}, 10, ALL, DELETE 10-20",
+        f"LIST , {name}", f"LIST 10-20, {name}",
+        # OPEN's ACCESS and LOCK clauses (gw; casio: Syntax error)
+        f"OPEN {name} FOR {data.draw(st.sampled_from(['INPUT', 'OUTPUT', 'APPEND', 'RANDOM']))}"
+        f"{data.draw(st.sampled_from(['', ' ACCESS READ', ' ACCESS WRITE', ' ACCESS READ WRITE']))}"
+        f"{data.draw(st.sampled_from(['', ' SHARED', ' LOCK READ', ' LOCK WRITE', ' LOCK READ WRITE', ' LOCK']))} AS {n}",
         # the Casio's data bank and program files (gw: a Syntax error)
         f"NEW#: WRITE# {value}: SAVE# {name}", f"LOAD# {name}", f"GOSUB {name}",
         # strings at the limit
