@@ -53,6 +53,7 @@ LINE_BUFFER_OVERFLOW = 23
 PERMISSION_DENIED = 70
 RENAME_ACROSS_DISKS = 74
 PATH_FILE_ACCESS_ERROR = 75
+PATH_NOT_FOUND = 76
 PASSWORD_PROTECTED = 251  # yaseer's own: the Casio PR error (a password registered, or PASS with another one)
 UNDEFINED_PROGRAM_AREA = 252  # yaseer's own: GOSUB PROG n with nothing in area n
 BREAK = 253  # yaseer's own: Ctrl-C (not trappable)

@@ -1,8 +1,8 @@
 """GW-BASIC's words for the PC's devices: the tables the gw dialect adds (data only).
 
 The words that reach a port, the DOS environment, a device driver, the speaker, a file
-lock or machine code (``INP OUT WAIT IOCTL IOCTL$ ENVIRON ENVIRON$ ERDEV ERDEV$ EXTERR
-LCOPY LOCK UNLOCK SOUND BEEP CALL CALLS``).  yaseer has none of those devices: each word
+lock, DOS's directories or machine code (``INP OUT WAIT IOCTL IOCTL$ ENVIRON ENVIRON$ ERDEV
+ERDEV$ EXTERR LCOPY LOCK UNLOCK SOUND BEEP CHDIR MKDIR RMDIR CALL CALLS``).  yaseer has none of those devices: each word
 reads its arguments as GW-BASIC 3.23 reads them and gives its errors in the same order
 (GWEVAL.ASM FNINP/SETIO/FNWAIT, GWSTS.ASM SOUNDS/BEEPS/LCOPYS, CALL86.ASM), then does what a
 PC without the device would: the machine's side is yaseer/basic/machine/devices.py, the
@@ -53,6 +53,12 @@ STATEMENTS = {
     "LOCK": ("inn", 1, "_M.devices.lock", "#"),  # LOCK [#]n [, [start] [TO end]]
     "UNLOCK": ("inn", 1, "_M.devices.unlock", "#"),
     "CALL": ("v", 1, "_M.devices.call", ""),
+    # DOS's directories, inside the program's directory (machine/sandbox.py: its top is the
+    # drive's root): one string each, as a real GW-BASIC 3.23 recorded them (PC-BASIC's DISK
+    # and DISK2 tests: alone Missing operand, a number Type mismatch, "" Bad file name)
+    "CHDIR": ("s", 1, "_M.files.sandbox.change_directory", ""),
+    "MKDIR": ("s", 1, "_M.files.sandbox.make_directory", ""),
+    "RMDIR": ("s", 1, "_M.files.sandbox.remove_directory", ""),
     "CALLS": ("v", 1, "_M.devices.call", ""),
     # BEEPS reads nothing: it beeps, then NEWSTT finds what follows (``BEEP 10`` beeps and
     # is Syntax error: PC-BASIC 2.0.8; the recorded real run of such lines never ended)

@@ -30,7 +30,7 @@ from yaseer.basic.errors import (
 from yaseer.basic.machine import device_files, file_locks, item_reading, random_files
 from yaseer.basic.machine.random_files import END_OF_FILE  # Ctrl-Z
 from yaseer.basic.machine.runtime import cint
-from yaseer.basic.machine.sandbox import Sandbox, identity_of
+from yaseer.basic.machine.sandbox import Sandbox, identity_of, nameless
 from yaseer.basic.machine.screen import FileStream
 
 
@@ -163,6 +163,11 @@ class OpenFile:
         return self.position // RECORD + 1
 
 
+def _fcb_name(name: str) -> str:
+    """The name a DOS FCB keeps of file ``name``: its last part, in capitals (no folder)."""
+    return name.replace("\\", "/").rsplit("/", 1)[-1].upper()
+
+
 def file_byte(n) -> int:
     """A file number as a byte: outside 0..255 ``Illegal function call`` (a CLOSE of a
     number in range that is not open does nothing)."""
@@ -215,8 +220,10 @@ class FileTable:
         """The open file (or device) OPEN makes of ``name`` in mode ``kind``, not yet numbered:
         a file open already is ``File already open`` for OUTPUT and APPEND (GIODSK.ASM DSKOPN
         calls CHKFOP for those modes only: INPUT and RANDOM may open a file open for output,
-        as a real GW-BASIC 3.23 recorded it, PC-BASIC's LockFilesOutput test), then the
-        clauses decide (file_locks.check_opening)."""
+        as a real GW-BASIC 3.23 recorded it, PC-BASIC's LockFilesOutput test), and so is any
+        open file of the same name in another folder (CHKFOP compares the FCBs' names, which
+        hold no folder: PC-BASIC's recorded FileNameExclusion test), then the clauses
+        decide (file_locks.check_opening)."""
         device = device_files.device_kind(name, self.device_files) if self.device_files else None
         if device is not None:  # never a file of the directory
             return device_files.open_device(device, kind, self.device_streams)
@@ -226,9 +233,10 @@ class FileTable:
         descriptor = sandbox.open_input(name) if kind == "I" else sandbox.open_output(name, readable=kind != "O")
         identity = identity_of(descriptor)
         same = [f for f in self.open_files.values() if getattr(f, "identity", None) == identity]
+        fcb_name = _fcb_name(name)
         try:
-            if same and kind in "OA":  # GIODSK.ASM DSKOPN: CHKFOP for sequential output and append only
-                raise error_for(FILE_ALREADY_OPEN)
+            if kind in "OA" and (same or any(getattr(f, "fcb_name", None) == fcb_name for f in self.open_files.values())):
+                raise error_for(FILE_ALREADY_OPEN)  # GIODSK.ASM DSKOPN: CHKFOP for sequential output and append only
             file_locks.check_opening(access, lock, [f.sharing for f in same])
         except BasicError:
             os.close(descriptor)  # nothing truncated yet: OpenFile does that
@@ -241,6 +249,7 @@ class FileTable:
             except OSError:  # the file object had closed it already
                 pass
             raise error_for(PATH_FILE_ACCESS_ERROR) from None
+        opened.fcb_name = fcb_name
         opened.sharing = file_locks.Sharing(access, lock, lambda: [
             f.sharing for f in self.open_files.values() if f is not opened and getattr(f, "identity", None) == identity])
         return opened
@@ -346,6 +355,10 @@ class FileTable:
         return old
 
     def kill(self, name: str) -> None:
+        """KILL name: a name that names nothing is ``Bad file name`` (as a real GW-BASIC 3.23
+        recorded it, PC-BASIC's DISK2 test: OPEN's is Bad file number)."""
+        if nameless(name):
+            raise error_for(BAD_FILE_NAME)
         name = self.sandbox.dos_name(name)
         identity = self.sandbox.identity(name)
         if any(f.identity == identity for f in self.open_files.values()):

@@ -477,12 +477,12 @@ class InputOutput:
 
     def list_files(self, pattern) -> None:
         """FILES [pattern]: GW-BASIC's listing: the directory (``C:\\``, the sandbox as
-        a drive's root), the matching entries in as many columns of 18 as the width
+        a drive's root, and CHDIR's folders), the matching entries in as many columns of 18 as the width
         has 20s, the disk's bytes free, an empty line; nothing matching is ``File not
         found`` after the directory line (as PC-BASIC 2.0.8 prints it)."""
         sandbox = self.files.sandbox
         entries = sandbox.directory(pattern)
-        self.print_items(0, ("C:\\",), True)
+        self.print_items(0, ("C:" + sandbox.current_path(),), True)
         if not entries:
             raise BasicError("File not found", FILE_NOT_FOUND)
         columns = max(1, (self.screen.width or 80) // 20)

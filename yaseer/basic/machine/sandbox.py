@@ -25,7 +25,7 @@ import os
 import stat
 
 from yaseer.basic.errors import (
-    BAD_FILE_NAME, FILE_ALREADY_EXISTS, FILE_NOT_FOUND, PATH_FILE_ACCESS_ERROR, BasicError, error_for,
+    BAD_FILE_NAME, FILE_ALREADY_EXISTS, FILE_NOT_FOUND, PATH_FILE_ACCESS_ERROR, PATH_NOT_FOUND, BasicError, error_for,
 )
 
 NAME_MAX = 255  # bytes in one part of a name (Linux's NAME_MAX; longer is Bad file name)
@@ -59,6 +59,7 @@ class Sandbox:
     def __init__(self, root: str | os.PathLike | None = None, reserved: frozenset = frozenset(),
                  nameless: int = BAD_FILE_NAME):
         self._root = os.fspath(root) if root is not None else os.getcwd()
+        self.current: list[str] = []  # CHDIR's directory: its parts from the sandbox's top (its "root")
         self.reserved = reserved  # names of devices (DOS's CON, NUL ...), whatever the extension: never made
         self.nameless = nameless  # the error of a name that names nothing (Dialect.nameless_file_error)
 
@@ -70,8 +71,17 @@ class Sandbox:
 
     # ---------------------------------------------------------------- names
     def parts(self, name: str) -> list[str]:
-        """The components of ``name`` checked as text (see the module docstring); a name
-        that names nothing (:func:`nameless`) is the sandbox's ``nameless`` error."""
+        """The components of ``name`` from the sandbox's top, checked as text (see the module
+        docstring), read from CHDIR's directory (``current``; ``..`` goes up, above the top
+        ``Path/File access error``); a name that names nothing (:func:`nameless`) is the
+        sandbox's ``nameless`` error."""
+        parts = self._resolved(name)
+        if not parts:
+            raise error_for(BAD_FILE_NAME)
+        return parts
+
+    def _resolved(self, name: str) -> list[str]:
+        """:meth:`parts`, which may be none (the top itself: ``CHDIR ".."`` from a folder)."""
         if nameless(name):
             raise error_for(self.nameless)
         if "\x00" in name:
@@ -79,11 +89,14 @@ class Sandbox:
         text = name.replace("\\", "/")
         if text.startswith("/") or ":" in name:
             raise error_for(PATH_FILE_ACCESS_ERROR)
-        parts = [part for part in text.split("/") if part not in ("", ".")]
-        if ".." in parts:
-            raise error_for(PATH_FILE_ACCESS_ERROR)
-        if not parts:
-            raise error_for(BAD_FILE_NAME)
+        parts = list(self.current)  # a name is read from CHDIR's directory, ".." going up
+        for part in text.split("/"):
+            if part == "..":
+                if not parts:  # above the sandbox's top
+                    raise error_for(PATH_FILE_ACCESS_ERROR)
+                parts.pop()
+            elif part not in ("", "."):
+                parts.append(part)
         if any(len(os.fsencode(part)) > NAME_MAX for part in parts):
             raise error_for(BAD_FILE_NAME)
         return parts
@@ -113,11 +126,11 @@ class Sandbox:
         folder = name.replace("\\", "/").rpartition("/")[0]
         return (folder + "/" if folder else "") + matches[0]
 
-    def _walk(self, name: str, follow_last: bool = True) -> tuple[int, str]:
+    def _walk(self, name: str | None, follow_last: bool = True, parts: list[str] | None = None) -> tuple[int, str]:
         """(an open descriptor of the directory holding ``name``'s last component, that component);
         links on the way (and the last one, with ``follow_last``) followed inside the sandbox only.
-        The caller closes the descriptor."""
-        pending = self.parts(name)
+        ``parts``: the components from the top instead of a name.  The caller closes the descriptor."""
+        pending = list(parts) if parts is not None else self.parts(name)
         stack = [self._top()]
         links = 0
         try:
@@ -158,6 +171,80 @@ class Sandbox:
             for descriptor in stack:
                 os.close(descriptor)
 
+    # ---------------------------------------------------------------- directories
+    def change_directory(self, name: str) -> None:
+        """CHDIR name: the directory names are read from from now on (the sandbox's top is
+        the drive's root: nothing above it is reached); a missing one ``Path not found``."""
+        parts = self._directory_name(name)
+        if parts:
+            os.close(self._open_directory(parts))
+        self.current = parts
+
+    def make_directory(self, name: str) -> None:
+        """MKDIR name: a new directory (one there already, or a file of that name,
+        ``Path/File access error``; its folder missing ``Path not found``)."""
+        parts = self._directory_name(name)
+        if not parts:
+            raise error_for(PATH_FILE_ACCESS_ERROR)
+        self._not_reserved(name)
+        directory, leaf = self._directory_walk(parts, follow_last=False)
+        try:
+            os.mkdir(leaf, 0o777, dir_fd=directory)
+        except FileExistsError:
+            raise error_for(PATH_FILE_ACCESS_ERROR) from None
+        except OSError as error:
+            raise _directory_error(error) from None
+        finally:
+            os.close(directory)
+
+    def remove_directory(self, name: str) -> None:
+        """RMDIR name: an empty directory removed (not the current one or one holding it, nor a
+        directory with entries: ``Path/File access error``; a missing one, a file or a link
+        ``Path not found``)."""
+        parts = self._directory_name(name)
+        if not parts or self.current[:len(parts)] == parts:
+            raise error_for(PATH_FILE_ACCESS_ERROR)
+        directory, leaf = self._directory_walk(parts, follow_last=False)
+        try:
+            if not stat.S_ISDIR(os.stat(leaf, dir_fd=directory, follow_symlinks=False).st_mode):
+                raise error_for(PATH_NOT_FOUND)
+            os.rmdir(leaf, dir_fd=directory)
+        except OSError as error:
+            raise _directory_error(error) from None
+        finally:
+            os.close(directory)
+
+    def _directory_name(self, name: str) -> list[str]:
+        """A directory's parts from the top (none: the top); an empty name ``Bad file name``."""
+        if nameless(name):
+            raise error_for(BAD_FILE_NAME)
+        return self._resolved(name)
+
+    def _directory_walk(self, parts: list[str], follow_last: bool) -> tuple[int, str]:
+        """:meth:`_walk` of ``parts``, a missing folder on the way ``Path not found``."""
+        try:
+            return self._walk(None, follow_last, parts)
+        except BasicError as error:
+            if error.code == FILE_NOT_FOUND:
+                raise error_for(PATH_NOT_FOUND) from None
+            raise
+
+    def _open_directory(self, parts: list[str]) -> int:
+        """A descriptor of the directory ``parts`` (none: the top), walked as every name is."""
+        if not parts:
+            return self._top()
+        directory, leaf = self._directory_walk(parts, follow_last=True)
+        try:
+            return os.open(leaf, os.O_RDONLY | _DIRECTORY | _NOFOLLOW | _CLOEXEC, dir_fd=directory)
+        except OSError as error:
+            raise _directory_error(error) from None
+        finally:
+            os.close(directory)
+
+    def current_path(self) -> str:
+        """CHDIR's directory as DOS shows it after the drive: ``\\`` and the folders."""
+        return "\\" + "\\".join(self.current)
+
     # ---------------------------------------------------------------- listings
     def listing(self, pattern: str | None = None) -> list[str]:
         """FILES [pattern]: the names of the files in the sandbox that match (``*`` ``?``);
@@ -183,7 +270,8 @@ class Sandbox:
         if pattern is not None:
             if not pattern:
                 raise error_for(BAD_FILE_NAME)
-            self.check(pattern.replace("*", "x").replace("?", "x"))  # the same rules for the pattern
+            if pattern not in (".", ".."):  # (DOS matches these to the entries "." and "..")
+                self.check(pattern.replace("*", "x").replace("?", "x"))  # the same rules for the pattern
         mask = dos_split((pattern or "*.*").upper())
         dirs, files = [("", ""), ("", ".")], []
         for entry in self._entries():
@@ -195,7 +283,7 @@ class Sandbox:
     def _entries(self) -> list:
         """The directory's entries (``os.DirEntry``, read through a descriptor of it; a link is
         shown as what it is, never followed)."""
-        directory = self._top()
+        directory = self._open_directory(self.current)
         try:
             with os.scandir(directory) as entries:
                 return list(entries)
@@ -313,6 +401,14 @@ class Sandbox:
                 os.close(target)
         finally:
             os.close(source)
+
+
+def _directory_error(error: OSError) -> BasicError:
+    """The BASIC error of a failed directory call: missing (or not a directory) ``Path not
+    found``, any other ``Path/File access error``."""
+    if error.errno in (errno.ENOENT, errno.ENOTDIR, errno.ELOOP):
+        return error_for(PATH_NOT_FOUND)
+    return error_for(PATH_FILE_ACCESS_ERROR)
 
 
 def _link_target(name: str, directory: int) -> str | None:
