@@ -37,7 +37,10 @@ def common_items(text: str, dialect: Dialect) -> tuple[list[tuple[str, bool]], B
     starts), an array with ``()`` or ``(`` one operand ``)`` after it (the operand, a number
     of dimensions other compilers want, read by GWEVAL.ASM EVAL: none at the statement's end
     Missing operand, a string Illegal function call, more than one operand Syntax error),
-    then a comma and the next, or the statement's end.  The operand is not evaluated."""
+    then a comma and the next, or the statement's end.  The operand is not evaluated.  A
+    name followed by ``[``, a number and ``]`` is passed over and not kept, any other
+    bracket Syntax error, as a real GW-BASIC 3.23 recorded them (PC-BASIC's COMMONA,
+    COMMONC, COMMONI) and PC-BASIC 2.0.8 reads them."""
     tokens = tokenize_statements(text, dialect)
     items: list[tuple[str, bool]] = []
     k = 0
@@ -45,6 +48,19 @@ def common_items(text: str, dialect: Dialect) -> tuple[list[tuple[str, bool]], B
         if k == len(tokens) or tokens[k].type not in ("NAME", "STRNAME"):
             return items, error_for(SYNTAX_ERROR)
         name, k = tokens[k].value, k + 1
+        if k < len(tokens) and tokens[k].value == "[":
+            # a bracket after the name (the recordings: ``COMMON A[2]`` keeps neither A nor
+            # A(), no error; ``COMMON B[]`` is Syntax error; FIVEO.ASM's scan knows only
+            # "("): a number, then the closing bracket, as PC-BASIC 2.0.8 reads it
+            if not (k + 2 < len(tokens) and tokens[k + 1].type == "NUMBER" and tokens[k + 2].type == "_RPAR"):
+                return items, error_for(SYNTAX_ERROR)
+            k += 3
+            if k == len(tokens):
+                break
+            if tokens[k].type != "COMMA":
+                return items, error_for(SYNTAX_ERROR)
+            k += 1
+            continue
         array = k < len(tokens) and tokens[k].type == "_LPAR"
         if array:
             k, error = _dimensions(tokens, k + 1)

@@ -1,0 +1,36 @@
+"""COMMON with a bracket after a name (gw): as a real GW-BASIC 3.23 recorded it (PC-BASIC's
+COMMONA, COMMONC and COMMONI tests) and PC-BASIC 2.0.8 runs it, ``COMMON A[2]`` keeps
+neither the array A nor the variable A, with no error; ``COMMON B[]`` stops the CHAIN with
+Syntax error in the COMMON's line (source/common_lists.py)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from test_gw_files import contents, pcbasic_run, yaseer_run
+
+pytestmark = pytest.mark.filterwarnings("ignore::DeprecationWarning")  # PC-BASIC's importlib use
+
+NEXT = b'10 PRINT A(1); A(2); A; B; C(1)\r\n'
+
+
+def chained(source: str, tmp_path: Path) -> tuple[str, str]:
+    outputs = []
+    for who, run in (("yaseer", yaseer_run), ("pcbasic", pcbasic_run)):
+        directory = tmp_path / who
+        directory.mkdir()
+        (directory / "NEXT.BAS").write_bytes(NEXT)
+        outputs.append(run(source, directory))
+        assert set(contents(directory)) == {"NEXT.BAS"}
+    return outputs[0], outputs[1]
+
+
+@pytest.mark.parametrize("common", ["COMMON A[2]", "COMMON A[1], B", "COMMON B, A[1 + 1], C()", "COMMON A[]",
+                                    "COMMON B, C[]: COMMON A()", "COMMON A(1), B"])
+def test_a_bracket_in_common_as_pcbasic(tmp_path, common):
+    source = ('10 ON ERROR GOTO 100\n20 A(1) = 1: A(2) = 2: A = 3: B = 4: C(1) = 5\n'
+              f'30 {common}\n40 CHAIN "NEXT"\n50 PRINT "back"\n60 END\n100 PRINT "E"; ERR; ERL: RESUME NEXT\n')
+    ours, theirs = chained(source, tmp_path)
+    assert ours == theirs
