@@ -768,7 +768,37 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
         _open_words(tokens, words.open_words)
     if dialect.open_clauses and "OPEN" in text.upper():
         _open_clauses(tokens)
+    if "CHAIN" in text.upper():
+        _chain_delete_tail(tokens)
     return tokens
+
+
+def _chain_delete_tail(tokens: list) -> None:
+    """A comma after the line range of a CHAIN's DELETE option and what follows it, to the
+    statement's end, are never read (FIVEO.ASM CHAIN: GWMAIN.ASM SCNLIN reads the range up
+    to the statement's end or a comma, then the chaining goes on: a real GW-BASIC 3.23
+    ignores ``CHAIN "f",,ALL,DELETE 10,PRINT``'s last item, PC-BASIC's
+    CHAIN_with_dummy_fifth_argument test): those tokens are dropped."""
+    k = 0
+    while k < len(tokens):
+        if tokens[k].type == "CHAIN":
+            j = k + 1
+            while j < len(tokens) and tokens[j].type not in ("DELETE", "_COLON"):
+                j += 1
+            if j < len(tokens) and tokens[j].type == "DELETE":
+                j += 1
+                if j < len(tokens) and tokens[j].type == "NUMBER":
+                    j += 1
+                if j < len(tokens) and tokens[j].type == "MINUS":
+                    j += 1
+                    if j < len(tokens) and tokens[j].type == "NUMBER":
+                        j += 1
+                end = j
+                while end < len(tokens) and tokens[end].type != "_COLON" and tokens[j].type == "COMMA":
+                    end += 1
+                del tokens[j:end]
+            k = j
+        k += 1
 
 
 OPEN_CLAUSE = "OPENCLAUSE"  # OPEN's ACCESS ..., SHARED, LOCK ...: (word, "R" | "W" | "RW" | "SHARED")

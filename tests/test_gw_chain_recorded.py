@@ -1,7 +1,11 @@
-"""COMMON with a bracket after a name (gw): as a real GW-BASIC 3.23 recorded it (PC-BASIC's
-COMMONA, COMMONC and COMMONI tests) and PC-BASIC 2.0.8 runs it, ``COMMON A[2]`` keeps
-neither the array A nor the variable A, with no error; ``COMMON B[]`` stops the CHAIN with
-Syntax error in the COMMON's line (source/common_lists.py)."""
+"""CHAIN and COMMON as a real GW-BASIC 3.23 recorded them (gw), checked against PC-BASIC
+2.0.8, which runs them so.
+
+COMMON with a bracket after a name (PC-BASIC's COMMONA, COMMONC and COMMONI tests):
+``COMMON A[2]`` keeps neither the array A nor the variable A, with no error; ``COMMON B[]``
+stops the CHAIN with Syntax error in the COMMON's line (source/common_lists.py).  What
+follows a CHAIN's DELETE range is never read (CHAIN_with_dummy_fifth_argument; FIVEO.ASM
+CHAIN reads the range with SCNLIN and chains)."""
 
 from __future__ import annotations
 
@@ -34,3 +38,11 @@ def test_a_bracket_in_common_as_pcbasic(tmp_path, common):
               f'30 {common}\n40 CHAIN "NEXT"\n50 PRINT "back"\n60 END\n100 PRINT "E"; ERR; ERL: RESUME NEXT\n')
     ours, theirs = chained(source, tmp_path)
     assert ours == theirs
+
+
+@pytest.mark.parametrize("tail", [",PRINT", ", 5", " PRINT 7", ", ,", ""])
+def test_what_follows_the_delete_range_after_a_comma_is_not_read(tmp_path, tail):
+    # GWMAIN.ASM SCNLIN: the range ends at the statement's end or a comma, else Syntax error
+    source = f'10 A(1) = 7: CHAIN "NEXT", , ALL, DELETE 10-20{tail}\n20 PRINT "kept"\n'
+    ours, theirs = chained(source, tmp_path)
+    assert ours == theirs == ("Syntax error in 10\n" if tail == " PRINT 7" else " 7  0  0  0  0 \n")
