@@ -78,3 +78,12 @@ def test_casio_has_no_clauses(tmp_path):
     from test_gw_files import yaseer_run
 
     assert yaseer_run('10 OPEN "S.TXT" FOR OUTPUT ACCESS WRITE AS 1\n', tmp_path, "casio").startswith("Syntax error")
+
+
+def test_save_over_an_open_file_is_file_already_open(tmp_path):
+    # SAVE opens its file for output (GIODSK.ASM CHKFOP): PC-BASIC's recorded OpenSave test
+    source = ('10 ON ERROR GOTO 900\n20 OPEN "PROG.BAS" FOR OUTPUT AS 1: PRINT #1, "text"\n30 SAVE "PROG"\n'
+              '40 CLOSE: SAVE "PROG": PRINT "saved"\n800 END\n900 PRINT "E"; ERR; ERL: RESUME NEXT\n')
+    ours, theirs, our_files, their_files = both_runs(source, tmp_path)
+    assert ours == theirs == "E 55  30 \nsaved\n"
+    assert our_files == their_files

@@ -260,6 +260,7 @@ class Chaining:
         else:
             data = ascii_file("".join(f"PROG {n}\r\n" + listing_text(lines, self.dialect) for n, lines in areas.items()))
         sandbox = self.files.sandbox
+        self.files.check_not_open(self._program_name(name))
         sandbox.write_bytes(sandbox.dos_name(self._program_name(name)), data)
 
     def run_again(self, again: RunAgain) -> int:

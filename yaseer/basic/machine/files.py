@@ -210,6 +210,14 @@ class FileTable:
             raise error_for(FILE_ALREADY_OPEN)
         self.open_files[k] = self._opened(kind, name, length, access, lock)
 
+    def check_not_open(self, name: str) -> None:
+        """A file SAVE writes (GIODSK.ASM opens it for output: CHKFOP): ``File already open``
+        where an open file has its name (in any folder, as CHKFOP compares names; PC-BASIC's
+        recorded OpenSave test)."""
+        fcb_name = _fcb_name(name)
+        if any(getattr(f, "fcb_name", None) == fcb_name for f in self.open_files.values()):
+            raise error_for(FILE_ALREADY_OPEN)
+
     def listing_file(self, name: str):
         """The file LIST [range], "f" writes its lines to (GWLIST.ASM LIST: NAMSCN reads the
         name, NULOPM opens file 0 for output), as OPEN "f" FOR OUTPUT opens it but under no
