@@ -20,6 +20,15 @@ LOCKS = ["", " SHARED", " LOCK READ", " LOCK WRITE", " LOCK READ WRITE"]
 MODES = ["INPUT", "OUTPUT", "APPEND", "RANDOM"]
 
 
+def agreed(source: str, tmp_path) -> str:
+    """``source``'s screen output, after checking that yaseer and PC-BASIC print the same
+    and leave the same files."""
+    ours, theirs, our_files, their_files = both_runs(source, tmp_path)
+    assert ours == theirs
+    assert our_files == their_files
+    return ours
+
+
 def test_each_clause_with_each_mode_as_pcbasic(tmp_path):
     lines = ['10 ON ERROR GOTO 900', '20 OPEN "D.DAT" FOR OUTPUT AS 1: PRINT #1, "x": CLOSE']
     number = 100
@@ -27,9 +36,7 @@ def test_each_clause_with_each_mode_as_pcbasic(tmp_path):
         lines.append(f'{number} OPEN "D.DAT" FOR {mode}{access}{lock} AS #2 LEN = 64: PRINT {number};: CLOSE 2')
         number += 10
     lines += ["800 END", '900 PRINT "E"; ERR; ERL: RESUME NEXT']
-    ours, theirs, our_files, their_files = both_runs("\n".join(lines) + "\n", tmp_path)
-    assert ours == theirs
-    assert our_files == their_files
+    ours = agreed("\n".join(lines) + "\n", tmp_path)
     assert "E 2 " in ours and "E 75 " in ours  # INPUT ACCESS WRITE; APPEND ACCESS WRITE
 
 
@@ -43,9 +50,7 @@ def test_a_second_opening_and_its_records_as_pcbasic(tmp_path, first_lock):
         lines.append(f'{number + 1} GET #2, 1: PUT #2, 2: GET #1, 1: PUT #1, 1: CLOSE 2')
         number += 10
     lines += ["800 CLOSE: END", '900 PRINT "E"; ERR; ERL: RESUME NEXT']
-    ours, theirs, our_files, their_files = both_runs("\n".join(lines) + "\n", tmp_path)
-    assert ours == theirs
-    assert our_files == their_files
+    agreed("\n".join(lines) + "\n", tmp_path)
 
 
 def test_a_sequential_file_with_clauses_as_pcbasic(tmp_path):
@@ -59,19 +64,14 @@ def test_a_sequential_file_with_clauses_as_pcbasic(tmp_path):
         '70 OPEN "S.TXT" FOR INPUT ACCESS READ AS 2',
         '80 OPEN "S.TXT" FOR APPEND AS 3',
         '800 CLOSE: END', '900 PRINT "E"; ERR; ERL: RESUME NEXT']) + "\n"
-    ours, theirs, our_files, their_files = both_runs(source, tmp_path)
-    assert ours == theirs
-    assert our_files == their_files
-    assert "E 70 " in ours
+    assert "E 70 " in agreed(source, tmp_path)
 
 
 def test_input_or_random_may_open_a_file_open_for_output(tmp_path):
     # GIODSK.ASM DSKOPN calls CHKFOP (File already open) for OUTPUT and APPEND only
     source = ('10 OPEN "S.TXT" FOR OUTPUT AS 1: OPEN "S.TXT" FOR INPUT AS 2: PRINT EOF(2)\n'
               '20 OPEN "S.TXT" FOR RANDOM AS 3: PRINT LOF(3)\n30 OPEN "S.TXT" FOR APPEND AS 3\n')
-    ours, theirs, our_files, their_files = both_runs(source, tmp_path)
-    assert ours == theirs == "-1 \n 0 \nFile already open in 30\n"
-    assert our_files == their_files
+    assert agreed(source, tmp_path) == "-1 \n 0 \nFile already open in 30\n"
 
 
 def test_casio_has_no_clauses(tmp_path):
@@ -84,6 +84,4 @@ def test_save_over_an_open_file_is_file_already_open(tmp_path):
     # SAVE opens its file for output (GIODSK.ASM CHKFOP): PC-BASIC's recorded OpenSave test
     source = ('10 ON ERROR GOTO 900\n20 OPEN "PROG.BAS" FOR OUTPUT AS 1: PRINT #1, "text"\n30 SAVE "PROG"\n'
               '40 CLOSE: SAVE "PROG": PRINT "saved"\n800 END\n900 PRINT "E"; ERR; ERL: RESUME NEXT\n')
-    ours, theirs, our_files, their_files = both_runs(source, tmp_path)
-    assert ours == theirs == "E 55  30 \nsaved\n"
-    assert our_files == their_files
+    assert agreed(source, tmp_path) == "E 55  30 \nsaved\n"
