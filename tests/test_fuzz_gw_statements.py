@@ -3,7 +3,7 @@ CLS, KEY, SCREEN, VIEW PRINT, WIDTH, CSRLIN, POS, SCREEN(), INKEY$, PRINT of con
 codes, FRE, RETURN's forms, DEF FN bodies, bad IF branches, MID$ onto itself, WHILE,
 RANDOMIZE, LPOS, PRINT USING, DEFINT/DEFSTR run as statements, CLEAR, blanks inside
 numbers, filling the string space, RENUM, ``.`` as the current line, DEF SEG, PEEK, POKE and VARPTR,
-with arguments in and out of range,
+event traps (ON KEY(n) GOSUB, TIMER ON ...), STICK, STRIG, PEN, MOTOR, with arguments in and out of range,
 left out or of the wrong type.  Each program ends normally or with a BASIC error line
 naming its line (never a Python exception), and writes nothing in its directory.
 
@@ -61,6 +61,10 @@ def statement(data) -> str:
         "DEF SEG = &HB800", "DEF SEG", f"DEF SEG = {a}", f"POKE {a}, {b}", f"POKE {a}", f"PRINT PEEK({a})",
         f"POKE {a} * 2 + 1, {b}: PRINT PEEK({a} * 2 + 1)", f"X = PEEK({a}, {b})",
         f"P = VARPTR(#{a}) + 188: POKE P, {b}: PRINT PEEK(P)", "PRINT VARPTR(X)", f"PRINT VARPTR({a})",
+        # event traps and the game port
+        f"ON KEY({a}) GOSUB 1000", f"ON TIMER({a}) GOSUB 1000", "ON PEN GOSUB 1000", f"ON STRIG({a}) GOSUB 1000",
+        f"KEY({a}) ON", f"COM({a}) STOP", f"STRIG({a}) OFF", "TIMER ON", "TIMER STOP", "TIMER OFF", "PEN ON",
+        f"PLAY({a}) ON", f"PRINT STICK({a}); STRIG({b}); PEN({c})", f"MOTOR {a}", "ON TIMER GOSUB 1000",
     ]
     return data.draw(st.sampled_from(choices))
 

@@ -34,6 +34,8 @@ def _jump_targets(stmt) -> list:
         return list(stmt.targets)
     if isinstance(stmt, ast.OnError):
         return [stmt.target] if stmt.target else []
+    if isinstance(stmt, ast.EventTrap):  # where the event's GOSUB goes
+        return [stmt.line] if stmt.line else []
     if isinstance(stmt, ast.Resume) and stmt.mode == "line":
         return [stmt.target]
     if isinstance(stmt, ast.Bank) and stmt.word == "RESTORE#" and len(stmt.args) == 3 \
@@ -169,7 +171,7 @@ _NATIVE_BODY = (
     ast.Let, ast.Print, ast.GosubProg, ast.Rem, ast.Data, ast.Read, ast.Dim, ast.Angle,
     ast.Randomize, ast.DefFn, ast.Restore, ast.End, ast.OnError, ast.Cls,
     ast.Error, ast.Swap, ast.MidAssign, ast.Write, ast.Open, ast.Close,
-    ast.Kill, ast.Rename, ast.Files, ast.Locate, ast.ScreenStatement, ast.ViewPrint, ast.Key, ast.DefChr, ast.EndMark, ast.GosubArea, ast.GotoArea, ast.GosubFile, ast.GotoFile,
+    ast.Kill, ast.Rename, ast.Files, ast.Locate, ast.ScreenStatement, ast.ViewPrint, ast.Key, ast.EventTrap, ast.EventSwitch, ast.DefChr, ast.EndMark, ast.GosubArea, ast.GotoArea, ast.GosubFile, ast.GotoFile,
 )  # not INPUT nor LINE INPUT: they start a block (see plan)
 
 
@@ -322,7 +324,11 @@ def plan(flat: list, entry_lines=(), dynamic_loops=(), resumable: bool = False) 
     even without a RESUME here (a direct line whose error a program's handler may RESUME NEXT)."""
     n = len(flat)
     statements = [s for _, s in flat]
-    fine = resumable or any(isinstance(s, ast.Resume) and s.mode != "line"
+    # every statement starts a block where a RESUME may go back into a line, and where an
+    # event's GOSUB may come between any two statements (GW-BASIC looks for events before each)
+    events = any(isinstance(s, ast.EventTrap) for stmt in statements if not isinstance(stmt, BasicError)
+                 for s in walk_statements(stmt))
+    fine = resumable or events or any(isinstance(s, ast.Resume) and s.mode != "line"
                for stmt in statements if not isinstance(stmt, BasicError) for s in walk_statements(stmt))
     bare_returns = bare_return_lines(flat, fine)
     first_index: dict[int, int] = {}
@@ -393,6 +399,7 @@ def plan(flat: list, entry_lines=(), dynamic_loops=(), resumable: bool = False) 
     dynamic_for_next = {f: j for f, j in for_next.items() if f not in native}
     branch_for_next = _branch_loops(statements, entries, for_next)  # adds the entries it needs
     result = Plan(sorted(entries), native, dynamic_for_next, next_for, fine, branch_for_next, bare_returns)
+    result.polls_events = events  # no block loops inside itself: each pass goes by the run loop
     result.next_scan = scan  # the compiler asks it again for each FOR
     result.branch_nexts = {id(found) for k, found in bounds if found is not statements[k] and any(
         s is found for s in walk_statements(statements[k], unreachable=False))}

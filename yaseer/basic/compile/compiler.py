@@ -35,7 +35,7 @@ from yaseer.basic.compile.expressions import (
     MAKING, BlockScope, CompileError, ExpressionCompiler, FnScope, calls_fn, may_overflow, syntax_error, type_mismatch,
 )
 from yaseer.basic.compile.statements_io import InputOutputCompiler
-from yaseer.basic.compile.device_words import device_statement
+from yaseer.basic.compile.device_words import device_statement, event_switch, event_trap
 from yaseer.basic.compile.loops import LoopCompiler, LoopSplit
 from yaseer.basic.compile.markers import (
     LOAD_LOCALS, STACK_CHECK, STORE_LOCALS, ArraysCall, Dimensioned, LoadLocals, PassTop, Refreshing, StackCheck,
@@ -426,6 +426,12 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.emit(self.jump(stmt.target))
             return
         self.emit(f"_M.on_error = ({self.area}, {block})")
+
+    def stmt_EventTrap(self, stmt, scope):
+        event_trap(self, stmt, self.device_words.events, scope)
+
+    def stmt_EventSwitch(self, stmt, scope):
+        event_switch(self, stmt, self.device_words.events, scope)
 
     def stmt_EndMark(self, stmt, scope):
         if not self.library_forms:
@@ -1033,7 +1039,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             load = f"{load}; _f = _f{block.number}" if load else f"_f = _f{block.number}"
         store = "; ".join(f"_S[{n!r}] = {local_name(n)}" for n in written)
         loop_back = f"return {block.number}"
-        self_loop = _loops_back(block)
+        self_loop = _loops_back(block) and not self.plan.polls_events
         # A GOSUB compiled in place checks for a full stack.  Every push onto the stack
         # ends its block, so unless the block pops (a NEXT through the stack), clears
         # or calls out, the stack's length cannot change while the block runs: it is

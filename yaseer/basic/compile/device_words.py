@@ -96,3 +96,50 @@ def device_statement(compiler, stmt, words, scope) -> None:
     compiler.emit(f"{helper}({', '.join(codes)})")
     if after is not None:
         compiler.emit(_fail(after))
+
+
+def _event_index(compiler, stmt, form: str | None, scope) -> tuple[str | None, int | None]:
+    """(code of the number in parentheses, None), or (None, the error): Syntax error where the
+    word wants parentheses and has none or has them and wants none; a string is Type mismatch
+    (GETBYT's FRMEVL, before anything else is checked)."""
+    if (form is None) != (stmt.index is None):
+        return None, SYNTAX_ERROR
+    if stmt.index is None:
+        return "None", None
+    if ast.expr_type(stmt.index) == "s":
+        return None, TYPE_MISMATCH
+    if form == "seconds":
+        return compiler.numeric(stmt.index, scope), None
+    return compiler.integer(stmt.index, scope), None
+
+
+def event_trap(compiler, stmt, events, scope) -> None:
+    """Emit ``ON word(n) GOSUB line`` (gw_words.EVENTS): n checked (GWSTS.ASM ONGOTP), then the
+    line found (FNDLN1: Undefined line number), then the trap set; line 0 ends the trap."""
+    form = events[stmt.word][0]
+    index, error = _event_index(compiler, stmt, form, scope)
+    if error is not None:
+        compiler.emit(_fail(error))
+        return
+    compiler.emit(f"_M.events.check({stmt.word!r}, {index}, False)")
+    if not stmt.line:
+        compiler.emit(f"_M.events.trap({stmt.word!r}, {index}, None)")
+        return
+    block = compiler.block_of_line(stmt.line)
+    if block is None:
+        compiler.emit(compiler.jump(stmt.line))  # the line's error, as a GOTO to it
+        return
+    compiler.emit(f"_M.events.trap({stmt.word!r}, {index}, ({compiler.area}, {block}))")
+
+
+def event_switch(compiler, stmt, events, scope) -> None:
+    """Emit ``word(n) ON|OFF|STOP`` or ``word ON|OFF|STOP`` (GWSTS.ASM SEVSTT, PENS, STRIGS)."""
+    _, form, _, alone = events[stmt.word]
+    if stmt.index is None and stmt.state not in alone:
+        compiler.emit(_fail(SYNTAX_ERROR))
+        return
+    index, error = _event_index(compiler, stmt, form if stmt.index is not None else None, scope)
+    if error is not None:
+        compiler.emit(_fail(error))
+        return
+    compiler.emit(f"_M.events.switch({stmt.word!r}, {index}, {stmt.state!r})")

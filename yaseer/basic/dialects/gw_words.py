@@ -25,6 +25,10 @@ FUNCTIONS = {
     "PEEK": ("FUNC", ("n",), "n", "_M.address_space.peek"),
     # GWEVAL.ASM VARPTR: "(" then a variable (PTRGTN; form "v": a variable, else Syntax error)
     "VARPTR": ("FUNCN", ("v",), "n", "_M.address_space.variable_pointer"),
+    # the game port and the light pen (GWSTS.ASM STICKF, STRIGF, PENF: ONESUB reads a byte)
+    "STICK": ("FUNC", ("i",), "n", "_M.devices.stick"),
+    "STRIG": ("FUNC", ("i",), "n", "_M.devices.trigger"),
+    "PEN": ("FUNC", ("i",), "n", "_M.devices.pen"),
 }
 # Functions of a file number: ``WORD(#n)`` -> helper (GWEVAL.ASM VARPTR: "#", GTBYTC, GETPTR).
 FILE_FUNCTIONS = {"VARPTR": "_M.address_space.file_pointer"}
@@ -63,6 +67,10 @@ STATEMENTS = {
     # BEEPS reads nothing: it beeps, then NEWSTT finds what follows (``BEEP 10`` beeps and
     # is Syntax error: PC-BASIC 2.0.8; the recorded real run of such lines never ended)
     "BEEP": ("", 0, "_M.ring_bell", ""),
+    # the cassette's motor: a byte or nothing (the recordings: MOTOR -1 and MOTOR 256 are
+    # Illegal function call, MOTOR 0 and MOTOR 255 do nothing; GIOCAS.ASM's stub, Device
+    # unavailable, is not what GW-BASIC 3.23 did)
+    "MOTOR": ("i", 0, "_M.devices.motor", ""),
 }
 # Statements that check the end of the statement before they act (GWSTS.ASM SOUNDS calls
 # EOSCHK before the note: ``SOUND 1,1,1`` is Syntax error, not the frequency's error); the
@@ -73,6 +81,24 @@ RANGE_WORDS = {"LOCK": "TO", "UNLOCK": "TO"}
 # Words whose ``$`` form GW-BASIC tokenises as the word and a ``$``, so blanks may stand
 # between them (``ENVIRON $(1)`` is ENVIRON$(1): the recordings).
 DOLLAR_APART = frozenset({"ENVIRON", "IOCTL", "ERDEV"})
+
+
+# Event traps: word -> (what ``ON word(n) GOSUB line`` reads in parentheses, what ``word(n)
+# ON|OFF|STOP`` reads there, how many events the word has, the states ``word ON|OFF|STOP``
+# may set without parentheses).  What is read: "byte" a number GETBYT reads (0..255), the
+# event n-1; "trigger" a trigger number (0, 2, 4, 6: n/2 is the event); "seconds" a number
+# of seconds above 0; None: no parentheses.  GWSTS.ASM ONGOTP, SEVSTT, PENS, STRIGS for KEY,
+# COM, PEN and STRIG (14 keys there; 20 on the real GW-BASIC 3.23, whose KEY 15 takes a
+# definition, and in PC-BASIC 2.0.8); TIMER and PLAY, which the released source lacks, as
+# the recordings and PC-BASIC 2.0.8 read them (PLAY's queue holds 32 notes).
+EVENTS = {
+    "KEY": ("byte", "byte", 20, ()),
+    "COM": ("byte", "byte", 2, ()),
+    "STRIG": ("trigger", "trigger", 4, ("ON", "OFF")),  # STRIG ON/OFF: IBM BASIC's form, read and ignored
+    "PEN": (None, None, 1, ("ON", "OFF", "STOP")),
+    "TIMER": ("seconds", None, 1, ("ON", "OFF", "STOP")),
+    "PLAY": ("byte", None, 32, ("ON", "OFF", "STOP")),
+}
 
 
 class Words:
@@ -89,4 +115,4 @@ class Words:
 
 WORDS = Words(functions=FUNCTIONS, system_values=SYSTEM_VALUES, statements=STATEMENTS, range_words=RANGE_WORDS,
               ends_first=ENDS_FIRST, dollar_apart=DOLLAR_APART, file_functions=FILE_FUNCTIONS,
-              writes_variables=WRITES_VARIABLES)
+              writes_variables=WRITES_VARIABLES, events=EVENTS)

@@ -66,6 +66,38 @@ class Devices:
         """INP(port): the byte the port reads (a negative port is its two's complement)."""
         return float(port_value(_port(port)))
 
+    # the game port and the light pen: nothing is attached, so a stick's coordinate is 0, a
+    # trigger is never pressed and the pen never down, at the position (0, 0), on character
+    # row and column 1 (PEN(6)..PEN(9): PC-BASIC 2.0.8; the recordings show the 0s); the
+    # argument is a byte (ONESUB), then the routine's own range: STICK 0..3 (RDSTIK), STRIG
+    # 0..7 (STRIGF: n/2 below the 4 triggers), PEN 0..9 (PENF)
+    @staticmethod
+    def stick(k: int) -> float:
+        """STICK(k): a joystick's coordinate (0, 1: the first's x, y; 2, 3: the second's)."""
+        if _byte(k) > 3:
+            raise error_for(ILLEGAL_FUNCTION_CALL)
+        return 0.0
+
+    @staticmethod
+    def trigger(k: int) -> float:
+        """STRIG(k): a trigger pressed since the last look (even k) or now (odd k)."""
+        if _byte(k) >> 1 >= 4:
+            raise error_for(ILLEGAL_FUNCTION_CALL)
+        return 0.0
+
+    @staticmethod
+    def pen(k: int) -> float:
+        """PEN(k): the light pen's state or position (k 0..9)."""
+        if _byte(k) > 9:
+            raise error_for(ILLEGAL_FUNCTION_CALL)
+        return 1.0 if k >= 6 else 0.0
+
+    @staticmethod
+    def motor(k: int | None = None) -> None:
+        """MOTOR [k]: the cassette's motor, on or off; there is none."""
+        if k is not None:
+            _byte(k)
+
     @staticmethod
     def out(port: float, byte: int) -> None:
         """OUT port, byte: checked (SETIO), then written to no device."""

@@ -306,6 +306,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         # gw's PEEK and POKE (machine/address_space.py): the screen's memory is the display's
         self.address_space = AddressSpace(self._screen_model, self.dialect.charset, self.dialect.screen.video_segment,
                                           self.files, self._fields_poked)
+        self._events = None  # gw's event traps, made by the first statement that sets one (events)
         self.clock = Clock()  # TIMER, DATE$, TIME$; DATE$ = and TIME$ = move it
         self._output_eof = bool(words and words.output_eof)  # casio: EOF of an output file is 0 (EOF.md item 4)
         self.gosub_levels = words.gosub_levels if words else None  # casio: 96 (GOSUB.md item 2)
@@ -592,6 +593,15 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             name = next((file.split(":", 1)[0] for file, n in self.file_areas.items() if n == area), name)
         return lambda number: self.trace_line(number, name)
 
+    @property
+    def events(self):
+        """gw's event traps (machine/events.py), made when a program first sets one up."""
+        if self._events is None:
+            from yaseer.basic.machine.events import Events  # (only programs with event traps)
+
+            self._events = Events(self.dialect.device_words.events, self)
+        return self._events
+
     def set_trace(self, on: bool) -> None:
         """TRON / TROFF: swap every compiled area's blocks for its traced (or plain) variant.
 
@@ -819,6 +829,9 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.set_subscript_base(0)
         self.files.close()
         self.random.reset()
+        if self._events is not None:  # RUN forgets the traps
+            self._events.disarm()
+            self._events = None
         if self.display is not None:
             self.display.drawn = False  # the new run's text streams until it draws
 

@@ -21,6 +21,7 @@ from yaseer.basic.dialects.dialect import CASIO, Dialect
 from yaseer.basic.errors import BasicError, MISSING_OPERAND, NEXT_WITHOUT_FOR, SYNTAX_ERROR
 from yaseer.basic.source.parse_tables import ACTIONS, END, RULES, START
 from yaseer.basic.dialects.reserved import UNSUPPORTED, mark_unsupported, unsupported_message
+from yaseer.basic.source.event_tokens import mark_events
 from yaseer.basic.source.scanner import UNSCANNED, Token, tokenize, tokenize_statements
 
 
@@ -235,6 +236,13 @@ class _ToAst:
 
     def on_error(self, c):
         return ast.OnError(_line_number(c[3]))
+
+    def on_event(self, c):
+        index = c[2] if len(c) == 5 else None
+        return ast.EventTrap(c[1].value, index, _line_number(c[-1]))
+
+    def event_switch(self, c):
+        return ast.EventSwitch(c[0].value, c[1] if len(c) == 3 else None, c[-1].type)
 
     def end_stmt(self, c):
         return ast.End()
@@ -824,9 +832,16 @@ class _SkippedText(str):
         return text
 
 
+def _read_as_statements(tokens: list, dialect: Dialect) -> list:
+    """A line's tokens as its statements read them: event words as events (gw), reserved words
+    the dialect lacks as unsupported, an ELSE no IF owns as the end of the line."""
+    words = dialect.device_words
+    return _else_alone(mark_unsupported(mark_events(tokens, words.events if words else None)), dialect)
+
+
 def parse_statements(text: str, dialect: Dialect = CASIO) -> list:
     """The statements of one line's text as ``dialect`` reads it; raises ``BasicError`` (Syntax error)."""
-    tokens = _else_alone(mark_unsupported(tokenize(text, dialect)), dialect)
+    tokens = _read_as_statements(tokenize(text, dialect), dialect)
     if not tokens:
         return []
     _check_nesting(tokens)
@@ -935,7 +950,7 @@ def _place_error(statements: list, rest: list) -> list:
 def _recover(text: str, err: BasicError, dialect: Dialect):
     """The statements of a bad line with ``err`` in place of its first bad statement
     (see :func:`_recover_tokens`); a statement the scanner cannot read is bad in its turn."""
-    tokens = _else_alone(mark_unsupported(tokenize_statements(text, dialect)), dialect)
+    tokens = _read_as_statements(tokenize_statements(text, dialect), dialect)
     if any(token.type == UNSCANNED for token in tokens):
         try:  # err was the scanner's; an earlier statement may be bad in another way (``PRINT 1+``)
             _parse(tokens)

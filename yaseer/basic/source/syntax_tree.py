@@ -617,6 +617,23 @@ class Key:
 
 
 @_node
+class EventTrap:
+    """ON word(index) GOSUB line (gw's event traps: dialects/gw_words.py EVENTS); ``index``
+    None where no parentheses follow the word, ``line`` 0 to stop trapping."""
+    word: str
+    index: object
+    line: int
+
+
+@_node
+class EventSwitch:
+    """word(index) ON | OFF | STOP (``state``): an event's trapping switched."""
+    word: str
+    index: object
+    state: str
+
+
+@_node
 class Bank:
     """A DATA BANK statement (``WRITE#`` ... ``LOAD#``) and its expressions."""
     word: str
