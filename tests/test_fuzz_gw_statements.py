@@ -3,7 +3,8 @@ CLS, KEY, SCREEN, VIEW PRINT, WIDTH, CSRLIN, POS, SCREEN(), INKEY$, PRINT of con
 codes, FRE, RETURN's forms, DEF FN bodies, bad IF branches, MID$ onto itself, WHILE,
 RANDOMIZE, LPOS, PRINT USING, DEFINT/DEFSTR run as statements, CLEAR, blanks inside
 numbers, filling the string space, RENUM, ``.`` as the current line, DEF SEG, PEEK, POKE and VARPTR,
-event traps (ON KEY(n) GOSUB, TIMER ON ...), STICK, STRIG, PEN, MOTOR, with arguments in and out of range,
+event traps (ON KEY(n) GOSUB, TIMER ON ...), STICK, STRIG, PEN, MOTOR, SWAP, OPTION BASE, MKI$/CVI and the
+other conversions, USR, the device words, with arguments in and out of range,
 left out or of the wrong type.  Each program ends normally or with a BASIC error line
 naming its line (never a Python exception), and writes nothing in its directory.
 
@@ -65,6 +66,11 @@ def statement(data) -> str:
         f"ON KEY({a}) GOSUB 1000", f"ON TIMER({a}) GOSUB 1000", "ON PEN GOSUB 1000", f"ON STRIG({a}) GOSUB 1000",
         f"KEY({a}) ON", f"COM({a}) STOP", f"STRIG({a}) OFF", "TIMER ON", "TIMER STOP", "TIMER OFF", "PEN ON",
         f"PLAY({a}) ON", f"PRINT STICK({a}); STRIG({b}); PEN({c})", f"MOTOR {a}", "ON TIMER GOSUB 1000",
+        # SWAP, OPTION BASE, the MKx$/CVx conversions, DEF SEG and USR, the device words
+        f"SWAP X, A$", f"SWAP X, Y: PRINT X; Y", f'A$ = "Q": SWAP A$, B$: PRINT A$; B$', f"OPTION BASE {a}",
+        f"DIM Q({a}): OPTION BASE 1", f"PRINT CVI(MKI$({a})); CVS(MKS$({a})); CVD(MKD$({a}))",
+        f'PRINT CVI("{chr(65 + code % 26)}"); CVS(""); CVD(A$)', f"DEF USR{code % 10} = {a}",
+        f"PRINT USR({a})", f"OUT {a}, {b}", f"PRINT INP({a})", f"SOUND {a}, {b}", "BEEP", f"PRINT ENVIRON$({a})",
     ]
     return data.draw(st.sampled_from(choices))
 
