@@ -41,7 +41,7 @@ def outcome(program: str, dialect: str) -> tuple[str, str]:
 
 CASIO_MACHINE_WORDS = ("PEEK", "INKEY$", "LOCATE")  # the FX-850P's display, keyboard and memory
 GW_SCREEN_WORDS = ("INKEY$", "CSRLIN", "LOCATE")  # GW-BASIC's text screen and keyboard
-GW_DEVICE_WORDS = ("SOUND",)  # ... and the PC's devices (dialects/gw_words.py: a keyword, DIM SOUND(3) Syntax error)
+GW_DEVICE_WORDS = ("SOUND", "STICK")  # ... and the PC's devices (dialects/gw_words.py: a keyword, DIM SOUND(3) Syntax error)
 GW_MEMORY_WORDS = ("PEEK", "VARPTR")  # ... and its memory (machine/address_space.py)
 
 
@@ -61,7 +61,7 @@ def test_unimplemented_word_stops_with_its_name(program, word, dialect):
 
 
 def test_gw_runs_the_statements_before_it():
-    assert outcome('10 PRINT 50: PRINT STICK(0)', "gw") == (" 50 \n", "Unsupported word STICK in 10")
+    assert outcome('10 PRINT 50: PRINT PMAP(0, 0)', "gw") == (" 50 \n", "Unsupported word PMAP in 10")
 
 
 def test_names_that_only_contain_a_reserved_word_are_names():
