@@ -37,7 +37,7 @@ What lies where (a colour PC, as the machine behind PC-BASIC's recordings had):
 from __future__ import annotations
 
 from yaseer.basic.machine import runtime
-from yaseer.basic.errors import BAD_FILE_NUMBER, ILLEGAL_FUNCTION_CALL, error_for, not_emulated
+from yaseer.basic.errors import BAD_FILE_NUMBER, error_for, not_emulated
 
 # BASIC's data segment (a paragraph number): where DEF SEG alone points, and what PEEK reads at
 # start.  The real machine's, as PC-BASIC's recordings name it (its PEEK test presets a byte of
@@ -90,17 +90,13 @@ class AddressSpace:
     def poke(self, offset: float, byte: int) -> None:
         """POKE offset, byte: offset as PEEK's, then the byte 0..255 (GETBYT)."""
         where = self._address(offset)
-        if not 0 <= byte <= 255:
-            raise error_for(ILLEGAL_FUNCTION_CALL)
-        self.write(where, byte)
+        self.write(where, runtime.byte_argument(byte))
 
     def file_pointer(self, number: float) -> float:
         """VARPTR(#n): the offset of file n's control block in the data segment, n a byte
         (GTBYTC: 0..255, else Illegal function call) naming one of the blocks (0..3, open or
         not, as the recordings show; beyond, Bad file number: GETPTR's ERFNO3)."""
-        n = runtime.cint(number)
-        if not 0 <= n <= 255:
-            raise error_for(ILLEGAL_FUNCTION_CALL)
+        n = runtime.byte_argument(runtime.cint(number))
         if n >= BLOCK_FILES:
             raise error_for(BAD_FILE_NUMBER)
         return float(FILE_BLOCKS + n * BLOCK_BYTES + FILE_HEADER)

@@ -13,7 +13,7 @@ from __future__ import annotations
 from yaseer.basic.errors import (
     BAD_RECORD_NUMBER, ILLEGAL_FUNCTION_CALL, OVERFLOW, PERMISSION_DENIED, error_for, not_emulated,
 )
-from yaseer.basic.machine.runtime import cint
+from yaseer.basic.machine.runtime import byte_argument as _byte, cint
 
 # The ports of the PC's DMA controller (8237, 0..&H1F), on every PC: idle, they read 0, as
 # the IBM PC behind PC-BASIC's recordings answered INP(0), INP(1) and INP(2).
@@ -24,13 +24,6 @@ FLOATING_BUS = 255
 # A record number of LOCK (PC-BASIC 2.0.8: 1 .. 2^25-2, else Bad record number).
 LAST_RECORD = 2 ** 25 - 2
 WHOLE_FILE = (1, LAST_RECORD)
-
-
-def _byte(k: int) -> int:
-    """An argument GETBYT reads: 0..255, else Illegal function call (already an integer)."""
-    if not 0 <= k <= 255:
-        raise error_for(ILLEGAL_FUNCTION_CALL)
-    return k
 
 
 def _port(x: float) -> int:

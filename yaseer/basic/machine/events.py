@@ -19,6 +19,7 @@ from __future__ import annotations
 import time
 
 from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, error_for
+from yaseer.basic.machine.runtime import byte_argument as _byte
 
 
 def _signed_byte(k: int) -> int:
@@ -28,12 +29,6 @@ def _signed_byte(k: int) -> int:
 def _turned(k: int) -> int:
     """A trigger number rotated right one bit (ROR AL,1): 0, 2, 4, 6 -> 0..3; an odd one gets bit 7."""
     return k >> 1 | (k & 1) << 7
-
-
-def _byte(k: int) -> int:
-    if not 0 <= k <= 255:  # GETBYT
-        raise error_for(ILLEGAL_FUNCTION_CALL)
-    return k
 
 
 class Events:

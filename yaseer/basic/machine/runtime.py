@@ -25,6 +25,14 @@ def illegal_function_call() -> BasicError:
     return BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
 
 
+def byte_argument(k: int) -> int:
+    """An argument GW-BASIC reads with GETBYT (already a whole number): 0..255, else Illegal
+    function call."""
+    if not 0 <= k <= 255:
+        raise illegal_function_call()
+    return k
+
+
 def fail(message: str, code: int):
     """Raise the BASIC error ``message`` (a PRINT item the compiler found bad, reached at run time)."""
     raise BasicError(message, code)
