@@ -103,6 +103,13 @@ def test_an_event_due_while_its_handler_runs_comes_right_after_the_return(tmp_pa
     assert yaseer_run(source, tmp_path) == " 0  3 \n"
 
 
+def test_the_trap_reads_its_number_once(tmp_path):
+    # RND in the number is drawn once: the next RND is the same as after drawing it beforehand
+    once = yaseer_run("10 ON TIMER(RND(1) + 5) GOSUB 100\n20 PRINT RND(1)\n30 END\n100 RETURN\n", tmp_path)
+    before = yaseer_run("10 X = RND(1) + 5: ON TIMER(X) GOSUB 100\n20 PRINT RND(1)\n30 END\n100 RETURN\n", tmp_path)
+    assert once == before and once.strip()
+
+
 def test_the_timer_reaches_a_line_that_jumps_to_itself(tmp_path):
     source = "10 ON TIMER(1) GOSUB 100\n20 TIMER ON\n30 GOTO 30\n100 PRINT \"HIT\"\n110 END\n"
     assert yaseer_run(source, tmp_path) == "HIT\n"

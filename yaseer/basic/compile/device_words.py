@@ -121,15 +121,13 @@ def event_trap(compiler, stmt, events, scope) -> None:
     if error is not None:
         compiler.emit(_fail(error))
         return
-    compiler.emit(f"_M.events.check({stmt.word!r}, {index}, False)")
-    if not stmt.line:
-        compiler.emit(f"_M.events.trap({stmt.word!r}, {index}, None)")
+    block = compiler.block_of_line(stmt.line) if stmt.line else None
+    if stmt.line and block is None:  # n checked, then the line's error, as a GOTO to it
+        compiler.emit(f"_M.events.check({stmt.word!r}, {index}, False)")
+        compiler.emit(compiler.jump(stmt.line))
         return
-    block = compiler.block_of_line(stmt.line)
-    if block is None:
-        compiler.emit(compiler.jump(stmt.line))  # the line's error, as a GOTO to it
-        return
-    compiler.emit(f"_M.events.trap({stmt.word!r}, {index}, ({compiler.area}, {block}))")
+    target = "None" if block is None else f"({compiler.area}, {block})"
+    compiler.emit(f"_M.events.trap({stmt.word!r}, {index}, {target})")  # (trap checks n)
 
 
 def event_switch(compiler, stmt, events, scope) -> None:
