@@ -288,3 +288,23 @@ def test_a_program_that_loads_another_leaves_it_in_the_session(tmp_path):
     for line in ("10 PRINT 7", "20 NEW", "RUN", "LIST"):
         gw.handle(line)
     assert "".join(shown) == " 7 \n"
+
+
+def test_save_in_the_session_refuses_a_file_a_stopped_program_holds_open(tmp_path):
+    # GW-BASIC's SAVE opens its file for output (GIODSK.ASM CHKFOP): a file the STOPped
+    # program still has open is File already open, as the program's own SAVE says; DOS
+    # ignores case, so SAVE "x" writes over the X.BAS the program made, not beside it
+    shown = []
+    gw = Session(write=shown.append, engine=MachineEngine(shown.append, dialect="gw", files=tmp_path),
+                 directory=tmp_path, dialect="gw")
+    for line in ('10 OPEN "O",1,"X.BAS"', "20 STOP", "RUN", 'SAVE "x"'):
+        gw.handle(line)
+    assert "".join(shown).endswith("File already open\n")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["X.BAS"]
+    assert (tmp_path / "X.BAS").read_bytes() in (b"", b"\x1a")  # still the program's empty file
+    shown.clear()
+    for line in ("CONT", 'SAVE "x"'):  # the program ends: END closes its files
+        gw.handle(line)
+    assert "".join(shown) == ""
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["X.BAS"]
+    assert (tmp_path / "X.BAS").read_bytes().startswith(b"\xff")  # the tokenised program

@@ -577,7 +577,12 @@ class Session:
         dialect = self._dialect()
         codes = dialect.charset.codes  # the session keeps lines as typed: the file holds the machine's codes
         data = saved_program({n: codes(t) for n, t in self.program.items()}, option, dialect)
-        Sandbox(self.directory).write_bytes(name, data)
+        sandbox = Sandbox(self.directory)
+        name = sandbox.dos_name(name)  # DOS ignores case: SAVE "x" writes over X.BAS, not beside it
+        check_not_open = getattr(self.engine, "check_not_open", None)
+        if check_not_open is not None:  # a program STOPped with the file open (GIODSK.ASM CHKFOP)
+            check_not_open(name)
+        sandbox.write_bytes(name, data)
 
     def command_run(self, argument: str) -> None:
         """RUN [line] or RUN "file": fresh variables, then run PROG 0 from its start (or ``line``).
@@ -810,6 +815,13 @@ class MachineEngine:
     def reset(self) -> None:
         """Fresh variables and areas (NEW)."""
         self._machine = None
+
+    def check_not_open(self, name: str) -> None:
+        """``File already open`` when the machine's files (a program STOPped leaves them
+        open; END and RUN close them) include one called ``name``, as the program's SAVE
+        checks (machine/files.py FileTable.check_not_open)."""
+        if self._machine is not None:
+            self._machine.files.check_not_open(name)
 
     def program_edited(self) -> None:
         """A program line was typed, replaced or deleted: where the dialect says so
