@@ -425,7 +425,9 @@ class ExpressionCompiler:
             if len(args) != 1 or not isinstance(args[0], (ast.Var, ast.Elem)):
                 raise syntax_error()
             return self.numbers.call(node.name, helper, [repr(self.numbers.name(args[0].name))], ["s"], "n")
-        if node.name == "RND" and (not args or (len(args) == 1 and (constant_value(args[0]) or 0) > 0)):
+        # RND, or RND(x) with a constant x > 0 that a single holds (a larger one is Overflow
+        # as it is made a single: the general call below)
+        if node.name == "RND" and (not args or (len(args) == 1 and 0 < (constant_value(args[0]) or 0) < 1e38)):
             return self.numbers.call("RND", "_rndf", [], [], "n")  # the next number (the generator's drawer)
         if node.name in ast.KEEPS_STRINGS and self.numbers.typed and len(args) == 1 and ast.expr_type(args[0]) == "s":
             return self.string(args[0], scope), "s"

@@ -418,6 +418,8 @@ class TypedNumbers(PlainNumbers):
             return code, kind
         if kind == "!":
             if name == "RND":  # already a single: the generator's 24-bit state over 2**24 (randomness.py)
+                if kinds and kinds[0] in "#?":  # its argument made a single first: beyond it Overflow (MATH1.ASM RND: FRCSNG)
+                    code = f"{helper}({self.convert(codes[0], '#', '!')})"
                 return code, "!"
             if name in self._SINGLE_FUNCTIONS and kinds and kinds[0] in "#?":  # computed on the single
                 code = f"{helper}({', '.join([self.convert(codes[0], '#', '!')] + codes[1:])})"
