@@ -15,3 +15,33 @@ def test_rnd_of_a_double_beyond_single_range_is_overflow():
     out = run_gw("10 ON ERROR GOTO 900\n20 PRINT RND(1.701411834604692D+38)\n30 X# = 1.70141183D+38: PRINT RND(X#)"
                  "\n40 PRINT RND(1D+38) > 0\n50 END" + TRAP)
     assert out == " 6  20 \n 6  30 \n-1 \n"
+
+
+def test_clear_reads_its_places_one_by_one_with_gw_basics_errors():
+    # recorded unsorted/CLEARERR (BIMISC.ASM CLEAR): n by INTID2 (negative Illegal function call,
+    # beyond 16 bits Overflow), m and k by GETMPM (0 Illegal function call), m above 65534 Out of
+    # memory; an empty last place after a comma and a fourth place are Syntax errors (where the
+    # published source would clear); a CLEAR that fails clears nothing (A keeps 7, the trap stays).
+    source = """10 ON ERROR GOTO 900
+20 A = 7
+30 CLEAR -5
+40 CLEAR 40000
+50 CLEAR 1, 0
+60 CLEAR , 1000, 0
+70 CLEAR 3, 65535
+80 CLEAR 2,
+90 CLEAR ,,
+100 CLEAR 1, 2000, 300, 4
+110 CLEAR -1,
+120 PRINT A
+130 CLEAR , 65534, 512
+140 PRINT A: END""" + TRAP
+    assert run_gw(source) == (" 5  30 \n 6  40 \n 5  50 \n 5  60 \n 7  70 \n 2  80 \n 2  90 \n 2  100 \n"
+                              " 5  110 \n 7 \n 0 \n")
+
+
+def test_clear_stack_size_beyond_what_the_segment_can_give_is_out_of_memory():
+    # the published source, BIMISC.ASM CLEART (no recording checks it): a stack of at most
+    # 2 * NUMLEV + 20 = 240 bytes (OEM.H), or one reaching the top of memory, is Out of memory
+    source = "10 ON ERROR GOTO 900\n20 CLEAR ,,240\n30 CLEAR , 30000, 30000\n40 CLEAR ,,241: PRINT \"ok\": END" + TRAP
+    assert run_gw(source) == " 7  20 \n 7  30 \nok\n"

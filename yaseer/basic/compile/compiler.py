@@ -146,6 +146,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.using_each_value = dialect.using_each_value  # PRINT USING's values field by field
         self.input_answer_first = dialect.input_answer_first  # INPUT; and INPUT cut short (GW)
         self.def_seg_usr = dialect.def_seg_usr  # DEF SEG, DEF USR (GW)
+        self.clear_readings = dialect.clear_readings  # how CLEAR reads its places (GW)
         self.for_array_elements = dialect.for_array_elements  # FOR T(2) = ... (the paper's Example 3)
         self.for_binds_next = dialect.for_binds_next  # a NEXT looks for its FOR entry by name (GW)
         # "." in LIST, EDIT ...: GW's DOT, the machine's current_line as the statement runs
@@ -508,13 +509,28 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.emit(Dimensioned(name))
 
     def stmt_Clear(self, stmt, scope):
-        if stmt.args:
-            sizes = ", ".join("None" if a is None else self.numeric(a, scope) for a in stmt.args)
+        readings = self.clear_readings
+        if readings:
+            self._clear_arguments(stmt.args, readings, scope)
+        elif any(a is not None for a in stmt.args):
+            sizes = ", ".join(self.numeric(a, scope) for a in stmt.args if a is not None)
             self.emit(f"_clear_args({sizes})")
         self.emit("_clear()")
         self.emit(LOAD_LOCALS)
         if self.dynamic_types:  # the type table is single again: on in that variant (stmt_DefType)
             self.hand_over()
+
+    def _clear_arguments(self, args: list, readings: tuple, scope) -> None:
+        """CLEAR's places (None: left empty) read one by one as ``readings`` say, each checked
+        before the next is read; more places than readings, or an empty last place after a
+        comma, is a Syntax error where it is met (Dialect.clear_readings)."""
+        if not args:
+            return
+        codes = [None if a is None else f"_clear_arg({reading!r}, {self.numeric(a, scope)})"
+                 for a, reading in zip(args, readings)]
+        if len(args) > len(readings) or len(args) > 1 and args[-1] is None:
+            codes.append(f"_fail('Syntax error', {SYNTAX_ERROR})")
+        self.emit(f"_clear_sizes({', '.join(c or 'None' for c in codes)})")
 
     # -- GW-BASIC's statements
     def stmt_While(self, stmt, scope):

@@ -129,11 +129,12 @@ FIELDS = (
     "argument_readings",  # tuple[str, ...]: ()
     "dos_program_lines",  # bool: False
     "open_clauses",  # bool: False
+    "clear_readings",  # tuple[str, ...]: ()
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
             None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None, False, (),
-            False, False)
+            False, False, ())
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -215,6 +216,12 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         WRITE`` and ``SHARED``/``LOCK READ|WRITE|READ WRITE`` clauses after its FOR
         mode (machine/file_locks.py decides what they allow); False: they are
         Syntax errors.
+        ``clear_readings``: how CLEAR reads its places, one reading each (machine/variables.py
+        clear_argument; GW-BASIC: ``("whole", "top", "stack")``, BIMISC.ASM CLEAR): each checked
+        as it is read, more places or an empty last place after a comma a Syntax error there
+        (``CLEAR ,`` as a real GW-BASIC 3.23 recorded it in PC-BASIC's CLEARERR test, where the
+        published source would clear).  Empty (casio): the sizes given are evaluated, a negative
+        first one Illegal function call, any number of places.
 
     Messages
         ``names_missing_line``: True (Casio, as yaseer has always named it) says which
@@ -467,6 +474,7 @@ GW = Dialect(
     dim_after_use_duplicate=True, device_files=GW_DEVICES, nameless_file_error=52, def_seg_usr=True,
     device_words=gw_words.WORDS, not_after_operator=True,
     argument_readings=("INSTR", "STRING$", "LEFT$", "RIGHT$", "MID$"), dos_program_lines=True, open_clauses=True,
+    clear_readings=("whole", "top", "stack"),
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

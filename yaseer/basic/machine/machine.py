@@ -76,7 +76,7 @@ from yaseer.basic.machine.io_statements import (  # noqa: F401  (the PRINT items
 )
 from yaseer.basic.machine.stack import AREA_MARK, ControlStack, ForFrame  # noqa: F401  (re-exported)
 from yaseer.basic.machine.variables import (  # noqa: F401  (the array limits are re-exported)
-    MAX_ARRAY_ELEMENTS, MAX_TOTAL_ELEMENTS, Variables, _check_clear_arguments,
+    MAX_ARRAY_ELEMENTS, MAX_TOTAL_ELEMENTS, Variables, _check_clear_arguments, clear_argument, clear_sizes,
 )
 from yaseer.basic.source.scanner import entry_messages, program_lines
 from yaseer.basic.machine.screen import OutputStream
@@ -547,7 +547,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             "_pos": self.cursor_column,
             "_lpos": self.printer_column,
             "_erase": self.erase, "_option_base": self.option_base, "_line_input": self.line_input,
-            "_write": self.write_values, "_clear_args": _check_clear_arguments,
+            "_write": self.write_values, "_clear_args": _check_clear_arguments, "_clear_arg": clear_argument, "_clear_sizes": clear_sizes,
             # sequential files (files.py)
             "_open": self.files.open, "_close": self.files.close, "_field": self.field_variable,
             "_get": self.get_record, "_swapf": self.swap_fields, "_lset": self.set_field, "_kill": self.files.kill,

@@ -369,3 +369,38 @@ def _check_clear_arguments(*sizes) -> None:
     if sizes and sizes[0] is not None and sizes[0] < 0:
         raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
 
+
+# GW-BASIC's CLEAR [n][, m[, k]] (BIMISC.ASM CLEAR): the highest data-segment byte a program
+# may ask for (m; a real GW-BASIC 3.23 recorded 65535 as Out of memory, 65534 accepted: PC-BASIC's
+# CLEARERR test), and the smallest stack k (2 * NUMLEV + 20 bytes, OEM.H NUMLEV = 110)
+CLEAR_TOP = 65534
+CLEAR_LEAST_STACK = 2 * 110 + 20
+
+
+def clear_argument(reading: str, value: float) -> int:
+    """One of GW-BASIC's CLEAR arguments, checked as it is read: ``"whole"`` (n, BIMISC.ASM
+    CLEAR's INTID2: an integer, beyond 16 bits Overflow, negative Illegal function call),
+    ``"top"`` or ``"stack"`` (m and k in bytes, GETMPM: FRQINT's unsigned word, 0 Illegal
+    function call; m above :data:`CLEAR_TOP` Out of memory)."""
+    if reading == "whole":
+        n = runtime.cint(value)
+        if not -32768 <= n <= 32767:
+            runtime.overflow()
+        if n < 0:
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        return n
+    n = runtime.unsigned_word(value)
+    if n == 0:
+        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+    if reading == "top" and n > CLEAR_TOP:
+        raise BasicError("Out of memory", OUT_OF_MEMORY)
+    return n
+
+
+def clear_sizes(_whole=None, top=None, stack=None) -> None:
+    """GW-BASIC's CLEAR once its arguments are read (BIMISC.ASM CLEART): a stack k of at most
+    :data:`CLEAR_LEAST_STACK` bytes, or not below the top m (or :data:`CLEAR_TOP`), is Out of
+    memory.  The sizes are not kept: yaseer's memory model has no stack."""
+    if stack is not None and (stack <= CLEAR_LEAST_STACK or stack >= (top or CLEAR_TOP)):
+        raise BasicError("Out of memory", OUT_OF_MEMORY)
+

@@ -263,7 +263,13 @@ class _ToAst:
         return (c[0].value, None)  # (compiler: the dialect's Dialect.dim_name_alone_scalar)
 
     def clear_stmt(self, c):
-        return ast.Clear([x for x in c[1:] if not isinstance(x, Token)])
+        places = [None] if len(c) > 1 else []  # each comma opens a place; None: left empty
+        for x in c[1:]:
+            if _is_token(x, "COMMA"):
+                places.append(None)
+            else:
+                places[-1] = x
+        return ast.Clear(places)
 
     # -- GW-BASIC statements
     def while_stmt(self, c):

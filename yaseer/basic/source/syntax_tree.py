@@ -299,7 +299,7 @@ class Dim:
 
 @_node
 class Clear:
-    args: list = _LIST  # CLEAR [n][,[m][,k]]: memory sizes, evaluated and checked only
+    args: list = _LIST  # CLEAR [n][,[m][,k]]: memory sizes by place (None: a place left empty), evaluated and checked only
 
 
 @_node
