@@ -45,3 +45,18 @@ def test_clear_stack_size_beyond_what_the_segment_can_give_is_out_of_memory():
     # 2 * NUMLEV + 20 = 240 bytes (OEM.H), or one reaching the top of memory, is Out of memory
     source = "10 ON ERROR GOTO 900\n20 CLEAR ,,240\n30 CLEAR , 30000, 30000\n40 CLEAR ,,241: PRINT \"ok\": END" + TRAP
     assert run_gw(source) == " 7  20 \n 7  30 \nok\n"
+
+
+def test_numbers_after_erl_are_line_numbers_digits_only():
+    # recorded unsorted/ERL: after ERL (a word of GWMAIN.ASM CRUNCH's LINRES list) a number is
+    # crunched as a line number by LINGET, digits only up to 65529, up to the next word, name or
+    # colon: ERL(2.5) is ERL then (2 .5), a Syntax error once ERL is printed; ERL(40000) is ERL then
+    # 40000; ERL(65530) is (6553 0) and ERL(1E2) is (1 E2), Syntax errors.  PC-BASIC 2.0.8 agrees.
+    source = """10 ON ERROR GOTO 900
+20 PRINT ERL(2.5)
+30 PRINT ERL(40000)
+40 PRINT ERL(65530)
+50 PRINT ERL(1E2)
+60 A = ERL: B = 1.5: PRINT A; B: IF ERL = 50 THEN PRINT 2.5 ELSE 70
+70 END""" + TRAP
+    assert run_gw(source) == " 0  2  20 \n 20  40000 \n 20  2  40 \n 40  2  50 \n 50  1.5 \n 2.5 \n"

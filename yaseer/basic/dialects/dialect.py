@@ -130,11 +130,12 @@ FIELDS = (
     "dos_program_lines",  # bool: False
     "open_clauses",  # bool: False
     "clear_readings",  # tuple[str, ...]: ()
+    "line_number_digits",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
             None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None, False, (),
-            False, False, ())
+            False, False, (), False)
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -222,6 +223,13 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         (``CLEAR ,`` as a real GW-BASIC 3.23 recorded it in PC-BASIC's CLEARERR test, where the
         published source would clear).  Empty (casio): the sizes given are evaluated, a negative
         first one Illegal function call, any number of places.
+        ``line_number_digits``: True (GW-BASIC) reads a number after a word that takes line
+        numbers (scanner.LINE_NUMBER_WORDS: GOTO, THEN, ELSE, ERL, RESTORE ...), and after each
+        blank, comma or operator that follows, up to another word, a name or a colon, as a line
+        number: digits only, at most 65529, a ``.`` a number of its own (GWMAIN.ASM CRUNCH's
+        DONUM, LINRES and LINGET), so ``ERL(1.5)`` and ``ERL(65536)`` are Syntax errors and
+        ``ERL(32768)`` is ERL, then 32768 (recorded in PC-BASIC's ERL test).  False (casio):
+        numbers are read alike everywhere.
 
     Messages
         ``names_missing_line``: True (Casio, as yaseer has always named it) says which
@@ -474,7 +482,7 @@ GW = Dialect(
     dim_after_use_duplicate=True, device_files=GW_DEVICES, nameless_file_error=52, def_seg_usr=True,
     device_words=gw_words.WORDS, not_after_operator=True,
     argument_readings=("INSTR", "STRING$", "LEFT$", "RIGHT$", "MID$"), dos_program_lines=True, open_clauses=True,
-    clear_readings=("whole", "top", "stack"),
+    clear_readings=("whole", "top", "stack"), line_number_digits=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -38,7 +38,7 @@ from yaseer.basic.machine.program_file import (
     END_OF_FILE, TOKENISED, TOKENS, TWO_BYTE_TOKENS, line_text, protected_file,
 )
 from yaseer.basic.source.scanner import (
-    EXACT_MARKERS, LINE_NUMBER_WORDS, detokenize, exact_constant, gw_number, radix_number,
+    EXACT_MARKERS, LINE_NUMBER_WORDS, detokenize, exact_constant, gw_number, linget, radix_number,
 )
 
 # GW-BASIC 3.23's program start (TXTTAB) with its default /F:3 /S:128 file buffers: the
@@ -113,7 +113,7 @@ def crunch_line(text: str) -> bytes:
                 out += _codes(c)
                 i += 1
             elif donum == _LINE_NUMBER:
-                number, i = _line_number(text, i)
+                number, i = linget(text, i)
                 out += bytes((0x0E,)) + number.to_bytes(2, "little")
             else:
                 (value, kind), i = gw_number(upper, i)
@@ -169,21 +169,6 @@ def _reserved_word(upper: str, i: int) -> tuple[str | None, int]:
                 return word, i + length
             return None, i
     return None, i
-
-
-def _line_number(text: str, i: int) -> tuple[int, int]:
-    """A line number's digits from ``text[i]`` (blanks between them skipped, as LINGET's
-    CHRGTR does; the blanks after it stay: BAKSP) and the position after the last digit."""
-    digits = ""
-    end = j = i
-    while j < len(text) and len(digits) < 5 and (text[j].isdigit() or text[j] in " \t\n"):
-        if text[j].isdigit():
-            if digits and int(digits + text[j]) > 65529:
-                break
-            digits += text[j]
-            end = j + 1
-        j += 1
-    return int(digits), end
 
 
 def _number(value, kind: str) -> bytes:

@@ -573,11 +573,20 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None, beg
     upper = _upper_outside_strings(text)
     i = begin
     n = len(text)
+    line_numbers = False  # (Dialect.line_number_digits) a digit here starts a line number
     while i < n:
         ch = upper[i]
         start = i
         if ch in " \t\r\n":
             i += 1
+            continue
+        if line_numbers and (ch.isdigit() or ch == "."):
+            if ch == ".":  # stored as it is (GWMAIN.ASM NUMTRY: "EDIT ."), read as a number 0
+                i += 1
+                yield "NUMBER", (0.0, "!"), start, i
+            else:  # LINCON: its value a single when an expression reads it (CONFC1: INEG2)
+                number, i = linget(upper, i)
+                yield "NUMBER", (float(number), "!"), start, i
             continue
         if ch == '"':
             value, i = _scan_string(text, i)
@@ -615,7 +624,13 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None, beg
                 yield "DATA_TEXT", raw, start, i
             else:
                 i = end
+                if dialect.line_number_digits:  # GWMAIN.ASM CRUNCH's DONUM: set by a word of LINRES
+                    line_numbers = kind not in _NAME_TYPES and word in LINE_NUMBER_WORDS
                 yield kind, word, start, i
+        elif ch == ":":
+            line_numbers = False
+            i += 1
+            yield "_COLON", ch, start, i
         elif ch in "<>=":
             pair, after = upper[i:i + 2], i + 2
             if dialect.spaced_relations and pair not in _RELATIONS:
@@ -637,6 +652,7 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None, beg
             yield keywords.operators[ch], ch, start, i
         elif ch == "?":
             i += 1
+            line_numbers = False
             yield "PRINT", "PRINT", start, i
         elif ch == "." and dialect.words and dialect.words.current_line_period:
             i += 1
@@ -1089,6 +1105,20 @@ def dos_lines(source: str) -> list[str]:
     if current:
         lines.append(current)
     return lines
+
+
+def linget(text: str, i: int) -> tuple[int, int]:
+    """The line number whose first digit is ``text[i]`` and the position after its last
+    digit, as GWMAIN.ASM LINGET reads it: blanks between the digits skipped (CHRGTR), those
+    after the last given back (BAKSP), another digit taken only while the number is at most
+    6552 (so at most 65529; ``65536`` is 6553, then the text ``6``)."""
+    number, end, j = 0, i, i
+    while j < len(text) and number <= _LINE_NUMBER_ROOM and (text[j].isdigit() or text[j] in _DOS_BLANKS):
+        if text[j].isdigit():
+            number = number * 10 + ord(text[j]) - 48
+            end = j + 1
+        j += 1
+    return number, end
 
 
 def _dos_line_number(physical: str) -> tuple[int, int] | None:
