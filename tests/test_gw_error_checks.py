@@ -60,3 +60,27 @@ def test_numbers_after_erl_are_line_numbers_digits_only():
 60 A = ERL: B = 1.5: PRINT A; B: IF ERL = 50 THEN PRINT 2.5 ELSE 70
 70 END""" + TRAP
     assert run_gw(source) == " 0  2  20 \n 20  40000 \n 20  2  40 \n 40  2  50 \n 50  1.5 \n 2.5 \n"
+
+
+def test_a_file_function_cut_before_its_parenthesis_checks_the_file_first(tmp_path, monkeypatch):
+    # recorded unsorted/FILEXPR: VARPTR(#n and IOCTL$(#n without the ")" find the file first
+    # (VARPTR: GWEVAL.ASM GTBYTC, GETPTR: blocks 0..3, beyond Bad file number; IOCTL$: an open
+    # file), then the missing ")" is a Syntax error; IOCTL$(#1) of a disk file is Illegal
+    # function call, as the recorded IOCTL$ test shows.
+    source = """10 ON ERROR GOTO 900
+20 OPEN "A.TXT" FOR OUTPUT AS 2
+30 PRINT VARPTR(#3
+40 PRINT VARPTR(#5
+50 PRINT IOCTL$(#2
+60 PRINT IOCTL$(#0
+70 PRINT IOCTL$(#3
+80 PRINT IOCTL$(#2)
+90 CLOSE: KILL "A.TXT": END""" + TRAP
+    monkeypatch.chdir(tmp_path)
+    assert run_gw(source) == " 2  30 \n 52  40 \n 2  50 \n 52  60 \n 52  70 \n 5  80 \n"
+
+
+def test_varptr_cut_after_its_parenthesis_is_syntax_error():
+    # GWEVAL.ASM VARPTR: after "(" PTRGTN must find a name, else SNERR (not the Missing
+    # operand of an expression cut short); PC-BASIC 2.0.8 agrees
+    assert run_gw("10 ON ERROR GOTO 900\n20 PRINT VARPTR(\n30 PRINT 1; VARPTR(\n40 END" + TRAP) == " 2  20 \n 1  2  30 \n"

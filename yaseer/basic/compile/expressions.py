@@ -471,10 +471,12 @@ class ExpressionCompiler:
         """A call the text cuts short (``INSTR(-1``, ``MID$("A", 1, "B"``): its arguments read
         in order, then the cut's error where the reading meets it."""
         end = f".cut({node.after_comma}, {node.error.message!r}, {node.error.code})"
-        forms = (self.own_functions.get(node.name) or _FUNCTIONS.get(node.name, (None, ())))[0]
+        own = self.own_functions.get(node.name)  # (token type, forms, result, helper)
+        forms, result = own[1:3] if own else _FUNCTIONS.get(node.name, (None, "n"))[:2]
+        if forms == ("v",):  # VARPTR(: a variable's name must follow (GWEVAL.ASM VARPTR: PTRGTN)
+            raise syntax_error()
         if forms is None or not _read_in_order(node.name, forms, self.reads_arguments_in_order):
             raise CompileError(node.error.message, node.error.code)
-        result = (self.own_functions.get(node.name) or _FUNCTIONS.get(node.name, (None, "n")))[1]
         return self.read_in_order(node, scope, "Syntax error", SYNTAX_ERROR, end), (
             "s" if result == "s" else self.numbers.integer)
 
@@ -518,7 +520,19 @@ class ExpressionCompiler:
             raise syntax_error()
         if ast.expr_type(node.number) == "s":
             raise type_mismatch()
-        return self.numbers.call(node.name, helper, [self.numeric(node.number, scope)], ["n"], "n")
+        result = "s" if node.name.endswith("$") else "n"
+        return self.numbers.call(node.name, helper, [self.numeric(node.number, scope)], ["n"], result)
+
+    def expr_CutFileCall(self, node, scope):
+        """``WORD(#n`` cut before its ``)``: n read and its file checked as the word checks it
+        (gw_words.FILE_CHECKS), then the cut's error; a word without such a check: the error."""
+        check = self.device_words.file_checks.get(node.name) if self.device_words else None
+        if check is None:
+            raise CompileError(node.error.message, node.error.code)
+        if ast.expr_type(node.number) == "s":
+            raise type_mismatch()
+        kind = "s" if node.name.endswith("$") else self.numbers.integer
+        return f"_fail_after({check}({self.numeric(node.number, scope)}), {node.error.message!r}, {node.error.code})", kind
 
     def expr_SysVar(self, node, scope):
         if node.name == "PI":

@@ -30,8 +30,12 @@ FUNCTIONS = {
     "STRIG": ("FUNC", ("i",), "n", "_M.devices.trigger"),
     "PEN": ("FUNC", ("i",), "n", "_M.devices.pen"),
 }
-# Functions of a file number: ``WORD(#n)`` -> helper (GWEVAL.ASM VARPTR: "#", GTBYTC, GETPTR).
-FILE_FUNCTIONS = {"VARPTR": "_M.address_space.file_pointer"}
+# Functions of a file number: ``WORD(#n)`` -> helper (GWEVAL.ASM VARPTR: "#", GTBYTC, GETPTR;
+# IOCTL$ reads an optional "#" before its number, as the recordings show).
+FILE_FUNCTIONS = {"VARPTR": "_M.address_space.file_pointer", "IOCTL$": "_M.devices.control_string"}
+# ... and what each checks of its file before it asks for the ")" (a call cut there: VARPTR's
+# whole value, GETPTR; IOCTL$ the file open, then the ")", then the device: the recorded FILEXPR test).
+FILE_CHECKS = {"VARPTR": "_M.address_space.file_pointer", "IOCTL$": "_M.devices.control_file"}
 # Statements that may change variables the compiled block holds: its values are stored before
 # and taken back after (a POKE into a FIELD buffer changes the variables fielded over it).
 WRITES_VARIABLES = frozenset({"POKE"})
@@ -114,5 +118,5 @@ class Words:
 
 
 WORDS = Words(functions=FUNCTIONS, system_values=SYSTEM_VALUES, statements=STATEMENTS, range_words=RANGE_WORDS,
-              ends_first=ENDS_FIRST, dollar_apart=DOLLAR_APART, file_functions=FILE_FUNCTIONS,
+              ends_first=ENDS_FIRST, dollar_apart=DOLLAR_APART, file_functions=FILE_FUNCTIONS, file_checks=FILE_CHECKS,
               writes_variables=WRITES_VARIABLES, events=EVENTS)

@@ -127,8 +127,12 @@ class Devices:
     # -- device drivers and DOS
     def control(self, n: int, _control: str) -> None:
         """IOCTL #n, s$: file n must be open; a disk file has no control channel."""
-        self.files.get(n)
+        self.control_file(n)
         raise error_for(ILLEGAL_FUNCTION_CALL)
+
+    def control_file(self, n) -> None:
+        """The check of IOCTL's and IOCTL$'s file: n must be an open file (Bad file number)."""
+        self.files.get(n)
 
     def control_string(self, n: int) -> str:
         """IOCTL$(n): as IOCTL (its answer would come from the device's driver)."""

@@ -1347,7 +1347,8 @@ def _cut_expression(tokens: list, start: int, err: BasicError, dialect: Dialect)
             opens.append(k)
         elif tokens[k].type == "_RPAR" and opens:
             opens.pop()
-    calls = [k for k in opens if k > start and tokens[k - 1].type == "FUNCN"]
+    calls = [k for k in opens if k > start and (tokens[k - 1].type == "FUNCN" or (
+        tokens[k - 1].type == "FUNC" and k + 1 < len(tokens) and tokens[k + 1].type == "HASH"))]
     if calls:
         paren = calls[-1]
         node = _cut_call(tokens, paren, at, err)
@@ -1369,6 +1370,10 @@ def _cut_expression(tokens: list, start: int, err: BasicError, dialect: Dialect)
 def _cut_call(tokens: list, paren: int, at: int, err: BasicError):
     """The call whose ``(`` is at ``paren``, its text cut at ``at``: the arguments that read
     whole, and whether the cut comes where an argument starts."""
+    if paren + 1 < at and tokens[paren + 1].type == "HASH":  # WORD(#n: the file's checks, then the ")"
+        number = parse_expression(tokens[paren + 2:at])
+        return None if number is None else ast.CutFileCall(tokens[paren - 1].value, number,
+                                                           BasicError("Syntax error", SYNTAX_ERROR))
     pieces, depth, begin = [], 0, paren + 1
     for k in range(paren + 1, at):
         kind = tokens[k].type

@@ -130,9 +130,18 @@ class SetClock:
 
 @_node
 class FilePointer:
-    """``VARPTR(#n)``: where file n's block lies (a function of a file number)."""
+    """``VARPTR(#n)``, ``IOCTL$(#n)``: a function of a file number."""
     name: str
     number: object
+
+
+@_node
+class CutFileCall:
+    """``VARPTR(#n`` with no ``)``: the file number read and its file checked as the function
+    checks it, then ``error`` where the ``)`` should be."""
+    name: str
+    number: object
+    error: object
 
 
 @_node
