@@ -45,3 +45,13 @@ def test_auto_ends_a_run_without_the_session(tmp_path):
     done = subprocess.run([sys.executable, "-m", "yaseer", "--dialect", "gw", "run", str(program)],
                           capture_output=True, text=True, timeout=120)
     assert (done.stdout, done.stderr, done.returncode) == ("a\n", "", 0)
+
+
+def test_auto_after_a_comma_with_no_auto_before_is_illegal_function_call(tmp_path):
+    # recorded gwbasic/various_syntax_errors: ``AUTO 10,`` in a program run first thing is
+    # error 5: GWMAIN.ASM AUTO takes the step AUTINC after a comma alone, 0 until an AUTO sets it
+    program = tmp_path / "auto.bas"
+    program.write_text('10 ON ERROR GOTO 90\n20 AUTO 10,\n30 PRINT "c": END\n90 PRINT ERR; ERL: RESUME NEXT\n')
+    done = subprocess.run([sys.executable, "-m", "yaseer", "--dialect", "gw", "run", str(program)],
+                          capture_output=True, text=True, timeout=120)
+    assert (done.stdout, done.returncode) == (" 5  20 \nc\n", 0)

@@ -430,6 +430,8 @@ class Session:
         if start > MAX_LINE_NUMBER or step <= 0:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         self._auto_step = step
+        if hasattr(self.engine, "auto_step"):  # a program's AUTO n, takes this step after it
+            self.engine.auto_step = step
         self.auto = (start, step)
 
     def command_delete(self, argument: str) -> None:
@@ -692,6 +694,8 @@ class Session:
         if request is not None:
             start, step = request
             self._auto_step = self._auto_step if step is None else step
+            if hasattr(self.engine, "auto_step"):
+                self.engine.auto_step = self._auto_step
             self.auto = (start, self._auto_step)
 
     def _take_back_programs(self) -> None:
@@ -801,6 +805,7 @@ class MachineEngine:
         # as the machine keeps it until PASS cancels it (PASS.md)
         self.password: str | None = None
         self.typed_line = "RUN"  # the line last typed (the session sets it): the machine's input buffer
+        self.auto_step = 0  # gw: the step AUTO used last, handed to each machine (GWMAIN.ASM AUTINC)
 
     @property
     def machine(self):
@@ -859,6 +864,7 @@ class MachineEngine:
         machine = self.machine
         machine.program_protected = self.protected
         machine.password_set = self.password
+        machine.auto_step = self.auto_step
         for area, program in areas.items():
             held = machine.programs.get(area)
             if program and held != {n: text.strip() for n, text in program.items()}:

@@ -169,10 +169,15 @@ class Chaining:
     def _auto_mode(self, start: int | None, step: int | None) -> None:
         """AUTO [start][, [step]] in a program (GWMAIN.ASM AUTO): the program stops and the
         command level numbers the lines typed next from ``start`` (10) by ``step`` (10; None:
-        the step AUTO used last), which the session takes up (``auto_request``); a step of
-        0 is Illegal function call.  Run without the session, the program ends there."""
+        the step AUTO used last, AUTINC, which is 0 before any AUTO), which the session takes
+        up (``auto_request``); a step of 0 is Illegal function call (``AUTO 10,`` with no AUTO
+        before it: recorded in PC-BASIC's various_syntax_errors test).  Run without the
+        session, the program ends there."""
+        if step is None:
+            step = self.auto_step
         if step == 0:
             raise error_for(ILLEGAL_FUNCTION_CALL)
+        self.auto_step = step
         self.auto_request = (10 if start is None else start, step)
         raise ProgramEnd()
 

@@ -283,7 +283,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         # gw: program area 0 came from a file SAVEd with ,P (LIST, EDIT and a SAVE other than ,P
         # refuse it: GIODSK.ASM PROCHK); LOAD, RUN "file" and CHAIN set it, NEW clears it
         self.program_protected = False
-        self.auto_request = None  # gw: AUTO run by a program: (start, step or None) for the session
+        self.auto_request = None  # gw: AUTO run by a program: (start, step) for the session
+        self.auto_step = 0  # gw: the step AUTO used last (GWMAIN.ASM AUTINC: 0 until an AUTO sets it)
         self.edit_request = None  # casio: the line a program's EDIT put up for editing, for the session
         # gw: GW's DOT, the line ``.`` stands for in LIST, LLIST, DELETE, EDIT, AUTO and RENUM
         # (GWMAIN.ASM LINSPC): the line last entered, listed or edited, or where an error
