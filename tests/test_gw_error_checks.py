@@ -84,3 +84,16 @@ def test_varptr_cut_after_its_parenthesis_is_syntax_error():
     # GWEVAL.ASM VARPTR: after "(" PTRGTN must find a name, else SNERR (not the Missing
     # operand of an expression cut short); PC-BASIC 2.0.8 agrees
     assert run_gw("10 ON ERROR GOTO 900\n20 PRINT VARPTR(\n30 PRINT 1; VARPTR(\n40 END" + TRAP) == " 2  20 \n 1  2  30 \n"
+
+
+def test_date_set_refuses_years_before_1980_and_shows_a_day_beyond_its_month_as_set():
+    # recorded gwbasic/faulty_DATE: two-digit 78 and 79 (GWSTS.ASM PRSDAT: 19yy) and 1979 are
+    # error 5 (DOS's set-date call), 32 days too, while 02-30-2000 is taken and DATE$ shows it
+    source = """10 ON ERROR GOTO 900
+20 DATE$ = "06-15-79"
+30 DATE$ = "6/15/1979"
+40 DATE$ = "4-32-1990"
+50 DATE$ = "02-31-2001": PRINT DATE$
+60 DATE$ = "7-4-80": PRINT DATE$
+70 END""" + TRAP
+    assert run_gw(source) == " 5  20 \n 5  30 \n 5  40 \n02-31-2001\n07-04-1980\n"

@@ -114,7 +114,7 @@ AGREED = {
                       '40 DATE$ = "12-31-99": PRINT DATE$\n'),
     "the clock's texts refused": (
         '10 ON ERROR GOTO 200\n20 TIME$ = 5\n30 TIME$ = "25:00"\n40 TIME$ = ""\n50 TIME$ = "12:60"\n'
-        '60 TIME$ = "12-00"\n70 DATE$ = "2-30-2000"\n80 DATE$ = "1/2/1977"\n90 DATE$ = "1/2"\n'
+        '60 TIME$ = "12-00"\n70 DATE$ = "2-32-2000"\n80 DATE$ = "1/2/1977"\n90 DATE$ = "1/2"\n'
         '100 DATE$ = "13-01-1990"\n110 DATE$ = "01-01-2100"\n120 DATE$ = "0-1-1990"\n130 ERR = 1\n'
         '140 END\n200 PRINT ERR; ERL: RESUME NEXT\n'),
     # an ELSE that no IF owns is skipped as REM to the line's end (GWMAIN.ASM ELSES; the
@@ -497,10 +497,10 @@ def test_the_clock_reads_its_texts_as_the_source_does(tmp_path):
     """GWSTS.ASM PRSTIM takes ``.`` as a separator too and PRSTIM and PRSDAT do not read
     what follows their last number (PC-BASIC 2.0.8 refuses both); the clock set goes on
     from the time set (an offset the machine keeps: machine/clock.py)."""
-    source = ('10 TIME$ = "1:2:3.45x": PRINT LEFT$(TIME$, 5)\n20 DATE$ = "1/2/78x": PRINT DATE$\n'
+    source = ('10 TIME$ = "1:2:3.45x": PRINT LEFT$(TIME$, 5)\n20 DATE$ = "1/2/80x": PRINT DATE$\n'
               '30 TIME$ = "13:58:59.5": PRINT LEFT$(TIME$, 2); INT(TIMER / 3600)\n'
               '40 TIME$ = "12": T = TIMER: PRINT T >= 43200 AND T < 43260\n')
-    assert yaseer_run(source, tmp_path) == "01:02\n01-02-1978\n13 13 \n-1 \n"
+    assert yaseer_run(source, tmp_path) == "01:02\n01-02-1980\n13 13 \n-1 \n"
 
 
 def test_a_while_whose_condition_fails_is_no_loop(tmp_path):
@@ -519,20 +519,21 @@ def test_a_def_fn_skips_what_follows_its_parameters(tmp_path):
     assert yaseer_run(source, tmp_path) == "same\ntoo\nSyntax error in 30\n"
 
 
-def test_date_set_knows_each_month_s_days_as_the_calendar_does():
-    """DATE$ = accepts the last day of each month of 1978..2099 and refuses the day after
-    (against the standard library's calendar, which the clock itself does not import)."""
-    import calendar
-
+def test_date_set_takes_days_1_to_31_of_every_month_of_1980_to_2099():
+    """DATE$ = as a real GW-BASIC 3.23 took it in PC-BASIC's recorded faulty_DATE test (its
+    DOS's set-date call): any day 1..31 of a month 1..12 of 1980..2099 (``02-30-2000`` too),
+    the 32nd refused, and a year before 1980 (PRSDAT's 1978 and 1979 too)."""
     from yaseer.basic.errors import BasicError
     from yaseer.basic.machine.clock import calendar_date
 
-    for year in range(1978, 2100):
+    for year in (1980, 1999, 2000, 2077, 2099):
         for month in range(1, 13):
-            last = calendar.monthrange(year, month)[1]
-            assert calendar_date(f"{month:02d}-{last:02d}-{year}") == (year, month, last)
+            assert calendar_date(f"{month:02d}-31-{year}") == (year, month, 31)
             with pytest.raises(BasicError, match="Illegal function call"):
-                calendar_date(f"{month:02d}-{last + 1:02d}-{year}")
+                calendar_date(f"{month:02d}-32-{year}")
+    for text in ("1-1-78", "1-1-1979", "1-1-2100", "13-1-1990", "0-1-1990", "1-0-1990"):
+        with pytest.raises(BasicError, match="Illegal function call"):
+            calendar_date(text)
 
 
 @pytest.mark.parametrize("statement, expected", [

@@ -8,9 +8,12 @@ starts at the host's time again.
 
 The texts are read as GWSTS.ASM reads them: PRSTIM ``h[:m[:s[:t]]]`` (``.`` also separates;
 hours below 24, minutes and seconds below 60, hundredths below 100; a missing part is 0),
-PRSDAT ``m/d/y`` or ``m-d-y`` (a year 0..77 is 20yy, 78..99 19yy, else 1978..2099; the day
-within its month).  Each number is digits up to the next non-digit; what follows the last
-one is not read.  Anything else, an empty text among it, is ``Illegal function call``.
+PRSDAT ``m/d/y`` or ``m-d-y`` (a year 0..77 is 20yy, 78..99 19yy, else 1978..2099).  Each
+number is digits up to the next non-digit; what follows the last one is not read.  Then DOS
+sets the date (GW's SETDAT, INT 21h function 2Bh), which the machine the PC-BASIC suite was
+recorded on (its faulty_DATE test) refuses for a year before 1980, a month beyond 1..12 or a
+day beyond 1..31, whatever the month: ``02-30-2000`` is taken and DATE$ shows it so.
+Anything else, an empty text among it, is ``Illegal function call``.
 """
 
 from __future__ import annotations
@@ -68,12 +71,8 @@ def time_of_day(text: str) -> tuple[int, int, int, int]:
     return parts[0], parts[1], parts[2], parts[3]
 
 
-def _days_in(year: int, month: int) -> int:
-    """Days in ``month`` of ``year`` (the Gregorian calendar; ``calendar`` is not imported:
-    it brings ``locale`` into every run)."""
-    if month == 2:
-        return 29 if year % 4 == 0 and (year % 100 != 0 or year % 400 == 0) else 28
-    return 30 if month in (4, 6, 9, 11) else 31
+# the dates DOS's set-date call took on the machine the recordings were made on
+FIRST_YEAR, LAST_DAY = 1980, 31
 
 
 def calendar_date(text: str) -> tuple[int, int, int]:
@@ -88,8 +87,8 @@ def calendar_date(text: str) -> tuple[int, int, int]:
         year += 2000 if year < 78 else 1900
     elif year < 1978:
         raise _illegal()
-    if year >= 2100 or not 1 <= month <= 12 or not 1 <= day <= _days_in(year, month):
-        raise _illegal()
+    if not FIRST_YEAR <= year < 2100 or not 1 <= month <= 12 or not 1 <= day <= LAST_DAY:
+        raise _illegal()  # (the year from 1978 is PRSDAT's; DOS's call refuses the rest)
     return year, month, day
 
 
@@ -98,6 +97,9 @@ class Clock:
 
     def __init__(self) -> None:
         self.offset = 0.0  # seconds added to the host's clock
+        # a date set beyond its month's days (``02-30-2000``): (DATE$ as the calendar shows
+        # the day it falls on, DATE$ as set), the text shown while the clock is on that day
+        self.shown_date: tuple[str, str] | None = None
 
     def now(self) -> float:
         """The machine's time, seconds since the epoch."""
@@ -111,7 +113,10 @@ class Clock:
 
     def date(self) -> str:
         """DATE$: ``MM-DD-YYYY``."""
-        return time.strftime("%m-%d-%Y", time.localtime(self.now()))
+        shown = time.strftime("%m-%d-%Y", time.localtime(self.now()))
+        if self.shown_date is not None and shown == self.shown_date[0]:
+            return self.shown_date[1]
+        return shown
 
     def time(self) -> str:
         """TIME$: ``HH:MM:SS`` (24-hour)."""
@@ -131,3 +136,6 @@ class Clock:
             fraction = now % 1.0
         target = time.mktime(fields + (0, 0, -1)) + fraction
         self.offset += target - now
+        if name != "TIME$":
+            year, month, day = fields[:3]
+            self.shown_date = (time.strftime("%m-%d-%Y", time.localtime(target)), f"{month:02d}-{day:02d}-{year}")
