@@ -272,3 +272,58 @@ def test_whatever_the_scanner_reads_argparse_reads_the_same(argv):
     scanned = scan(argv, ARGUMENTS)
     if scanned is not None:
         assert vars(scanned) == vars(command_parser("run").parse_args(argv))
+
+
+def test_a_gw_run_imports_no_library_binding(cache):
+    """gw has no library programs (PROG is no word): its runs leave yaseer.binding unimported."""
+    listing = cache.parent / "print.bas"
+    listing.write_text("10 PRINT 1\n")
+    output, imported = warm_run(listing, cache, ("yaseer.binding",), ("--dialect", "gw"))
+    assert output == " 1 \n"
+    assert imported == set()
+
+
+COLLECTOR_PROBE = (
+    f"import gc, sys; sys.path.insert(0, {PACKAGE_PARENT!r})\n"
+    "import yaseer.entry\n"  # the program's first code: the collector paused from here
+    "from yaseer.basic.machine.machine import Machine\n"
+    "from yaseer.cli import main\n"
+    "seen = [gc.isenabled()]\n"
+    "run = Machine.run\n"
+    "def watched(self):\n"
+    "    seen.append((gc.isenabled(), gc.get_freeze_count() > 0))\n"
+    "    return run(self)\n"
+    "Machine.run = watched\n"
+    "status = main()\n"  # as the program calls it: the command line is sys.argv[1:]
+    "print(seen, gc.isenabled(), status)\n")
+
+
+def collector_states(*argv: str) -> str:
+    """The last line of the probe above run with the command line ``argv``: whether the
+    collector was on after yaseer.entry was imported, [(on, objects frozen) when each BASIC
+    program started], whether it was on at the end, and the exit status."""
+    done = subprocess.run([sys.executable, "-c", COLLECTOR_PROBE, *argv], capture_output=True, text=True,
+                          check=True)
+    return done.stdout.splitlines()[-1]
+
+
+def test_the_collector_is_paused_while_a_process_starts_and_on_when_the_program_runs(tmp_path):
+    """collection_pause: a `yaseer run` process collects no garbage while it imports and loads
+    (none is made), freezes what the start made and runs the BASIC program with the collector on."""
+    listing = tmp_path / "print.bas"
+    listing.write_text("10 PRINT 1\n")
+    assert collector_states("run", str(listing)) == "[False, (True, True)] True 0"
+    assert collector_states("run", "--dialect", "gw", str(listing)) == "[False, (True, True)] True 0"
+
+
+def test_every_other_command_switches_the_collector_on_once_its_command_line_is_read():
+    assert collector_states("--version") == "[False] True 0"
+    assert collector_states("run", "--no-such-option") == "[False] True 2"
+
+
+def test_a_program_run_inside_another_python_never_pauses_the_collector():
+    import gc
+
+    frozen = gc.get_freeze_count()
+    assert yaseer.run("10 PRINT 1").text == " 1 \n"
+    assert gc.isenabled() and gc.get_freeze_count() == frozen

@@ -270,7 +270,7 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
     """Load, bind and run ``program`` (default ``result.listing``; ``entered``: its lines are
     read as typed ones, not a tokenised file's: Machine.load) as ``typed`` starts it (the line
     typed, in the machine's input buffer); fill in ``result`` (text, rows, frames, error, status)."""
-    from yaseer import binding
+    from yaseer import collection_pause
     from yaseer.basic.errors import BasicError
     from yaseer.basic.machine.machine import Machine
 
@@ -296,10 +296,13 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
         machine.load(result.listing if program is None else program, entered=entered)
         machine.program_protected = result.protected
         if library:
+            from yaseer import binding  # the library's methods (casio): a gw start imports none of them
+
             binding.install(machine, methods or None)
         for number, text in areas.items():
             machine.set_area(number, text)
         machine.type_line(typed)
+        collection_pause.resume()  # a `yaseer run` process: the start is over (a no-op in any other caller)
         result.status = machine.run()
         if result.status == "stop":
             result.line = machine.line

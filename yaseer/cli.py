@@ -20,6 +20,7 @@ from __future__ import annotations
 import os
 import sys
 
+from yaseer import collection_pause
 from yaseer.version import __version__
 
 TYPE_CHECKING = False
@@ -99,7 +100,10 @@ def main(argv: list[str] | None = None) -> int:
     interpreter's own shutdown end the process by SIGINT instead.
     """
     if argv is None:
-        status = main(sys.argv[1:])
+        try:
+            status = main(sys.argv[1:])
+        finally:  # on again whatever ended the command (a run stopped before its program started)
+            collection_pause.resume()
         if status == 130:
             for stream in (sys.stdout, sys.stderr):
                 try:
@@ -108,15 +112,16 @@ def main(argv: list[str] | None = None) -> int:
                     pass
             os._exit(130)
         return status
-    argv = list(argv)
+    argv = _command_first(list(argv))
+    command = argv[0] if argv and argv[0] in COMMANDS else None
+    if command != "run":  # the collector paused at start (yaseer.entry) is on again, except while
+        collection_pause.resume()  # `run` starts: it is switched on just before the program runs (api.execute)
     if sys.stdout is None:  # started with standard output closed (`yaseer run x >&-`)
         if sys.stderr is not None:
             print("yaseer: standard output is closed", file=sys.stderr)
         return 1
     if not argv:
         return guarded("session", lambda: _load("interactive").main(None))
-    argv = _command_first(argv)
-    command = argv[0] if argv[0] in COMMANDS else None
     return guarded(command or "session", lambda: _dispatch(argv, command))
 
 

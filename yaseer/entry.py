@@ -25,6 +25,10 @@ def _interrupted_while_starting(signum, frame) -> None:
 
 _signal.signal(_signal.SIGINT, _interrupted_while_starting)  # at import: the script imports this module first
 
+from yaseer import collection_pause  # noqa: E402
+
+collection_pause.pause()  # until the program runs: the start's objects are no garbage
+
 
 def main() -> int:
     """Import the command line quietly interruptible, then run it (``sys.argv``); the exit status."""
