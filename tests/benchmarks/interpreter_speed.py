@@ -41,6 +41,7 @@ nothing is compared with stored times.
 from __future__ import annotations
 
 import argparse
+import atexit
 import io
 import os
 import resource
@@ -142,7 +143,18 @@ def plain_python_range(n: int) -> float:
 
 # Whole processes start outside the checkout: ``python -m yaseer`` started in it would import
 # ./yaseer (the current directory comes first on sys.path), not the yaseer of ``--python``.
-OUTSIDE = tempfile.gettempdir()
+# They start in an empty directory of their own, not in the shared temporary directory: the
+# first import lists the current directory (the shared /tmp held 2,451 files one evening: 10-27M
+# of a 120M-instruction start, varying with what other jobs had left there).  Their compiled
+# programs are kept in a cache of their own too: the shared ~/.cache/yaseer, which other jobs
+# fill, dropped every entry older than three minutes that evening (a dropped entry or source
+# fingerprint makes a start cold).
+WORK = tempfile.mkdtemp(prefix="yaseer-bench-")
+OUTSIDE = os.path.join(WORK, "run")
+CACHE = os.path.join(WORK, "cache")
+os.mkdir(OUTSIDE)
+os.mkdir(CACHE, 0o700)
+atexit.register(shutil.rmtree, WORK, True)
 
 
 PROCESS_TIMEOUT = [120.0]  # seconds a whole process may take before its row is given up (--timeout)
@@ -186,10 +198,12 @@ def yaseer_process_time(text: str, repeat: int, dialect: str = "casio") -> float
 
 
 def installed_env() -> dict:
-    """The environment of an installed yaseer: bytecode cached (pip compiles it on install)."""
+    """The environment of an installed yaseer: bytecode cached (pip compiles it on install), and
+    compiled programs in this run's own cache (:data:`CACHE`)."""
     env = dict(os.environ)
     env.pop("PYTHONDONTWRITEBYTECODE", None)
     env["PYTHONPYCACHEPREFIX"] = os.path.join(tempfile.gettempdir(), "yaseer-pycache")
+    env["YASEER_CACHE_DIR"] = CACHE
     return env
 
 
