@@ -29,6 +29,8 @@ FUNCTIONS = {
     "STICK": ("FUNC", ("i",), "n", "_M.devices.stick"),
     "STRIG": ("FUNC", ("i",), "n", "_M.devices.trigger"),
     "PEN": ("FUNC", ("i",), "n", "_M.devices.pen"),
+    # the music queue's notes waiting (machine/music.py): n a byte; also a statement (below)
+    "PLAY": ("FUNC", ("i",), "n", "_M.music.count"),
 }
 # Functions of a file number: ``WORD(#n)`` -> helper (GWEVAL.ASM VARPTR: "#", GTBYTC, GETPTR;
 # IOCTL$ reads an optional "#" before its number, as the recordings show).
@@ -38,7 +40,7 @@ FILE_FUNCTIONS = {"VARPTR": "_M.address_space.file_pointer", "IOCTL$": "_M.devic
 FILE_CHECKS = {"VARPTR": "_M.address_space.file_pointer", "IOCTL$": "_M.devices.control_file"}
 # Statements that may change variables the compiled block holds: its values are stored before
 # and taken back after (a POKE into a FIELD buffer changes the variables fielded over it).
-WRITES_VARIABLES = frozenset({"POKE"})
+WRITES_VARIABLES = frozenset({"POKE", "PLAY"})  # (PLAY's X and = read variables: they are stored first)
 # Values without arguments: name -> (Python expression, "s" or None for an integer).
 SYSTEM_VALUES = {"ERDEV": ("0", None), "ERDEV$": ('""', "s")}
 
@@ -55,7 +57,10 @@ STATEMENTS = {
     "POKE": ("ui", 2, "_M.address_space.poke", ""),  # GWMAIN.ASM POKE: FRMQNT, ",", GETBYT
     "WAIT": ("uii", 2, "_M.devices.wait", ""),  # FNWAIT: SETIO, then an optional "," GETBYT
     "LCOPY": ("i", 0, "_M.devices.screen_copy", ""),  # LCOPYS: an optional byte
-    "SOUND": ("in", 2, "_M.devices.sound", ""),  # SOUNDS: GETIN2, ",", FRMEVL
+    "SOUND": ("in", 2, "_M.music.sound", ""),  # SOUNDS: GETIN2, ",", FRMEVL (machine/music.py)
+    # PLAY string (GWSTS.ASM PLAYS, MACLNG.ASM): at a statement's start; elsewhere the
+    # function above (source/event_tokens.py)
+    "PLAY": ("s", 1, "_M.music.play", ""),
     "IOCTL": ("is", 2, "_M.devices.control", "#"),
     "ENVIRON": ("s", 1, "_M.devices.set_environment", ""),
     "LOCK": ("inn", 1, "_M.devices.lock", "#"),  # LOCK [#]n [, [start] [TO end]]
@@ -70,7 +75,7 @@ STATEMENTS = {
     "CALLS": ("v", 1, "_M.devices.call", ""),
     # BEEPS reads nothing: it beeps, then NEWSTT finds what follows (``BEEP 10`` beeps and
     # is Syntax error: PC-BASIC 2.0.8; the recorded real run of such lines never ended)
-    "BEEP": ("", 0, "_M.ring_bell", ""),
+    "BEEP": ("", 0, "_M.music.beep", ""),
     # the cassette's motor: a byte or nothing (the recordings: MOTOR -1 and MOTOR 256 are
     # Illegal function call, MOTOR 0 and MOTOR 255 do nothing; GIOCAS.ASM's stub, Device
     # unavailable, is not what GW-BASIC 3.23 did)

@@ -105,6 +105,11 @@ class Clock:
         """The machine's time, seconds since the epoch."""
         return time.time() + self.offset
 
+    def skip(self, seconds: float) -> None:
+        """Move the clock on by ``seconds`` at once (a wait the machine does not sleep: the
+        music queue's, machine/music.py)."""
+        self.offset += seconds
+
     def timer(self) -> float:
         """TIMER: seconds since midnight (local time), to the hundredth."""
         now = self.now()

@@ -1,17 +1,20 @@
 """gw's event traps: ON KEY(n) GOSUB line, KEY(n) ON, TIMER ON ... (dialects/gw_words.py EVENTS).
 
 Each trap is a line to GOSUB when its event happens and a state (OFF, ON, STOP: GWSTS.ASM
-EVSET).  yaseer has no function keys to watch, no serial port, light pen, joystick or music
-queue: their events never happen, so setting them up checks the arguments as GW-BASIC does
-and changes nothing a program can see.  The timer's event is the one that happens.
+EVSET).  yaseer has no function keys to watch, no serial port, light pen or joystick: their
+events never happen, so setting them up checks the arguments as GW-BASIC does and changes
+nothing a program can see.  The timer's event and the music queue's happen: PLAY's when the
+notes waiting (machine/music.py) go from n to n-1, ``ON PLAY(n)``'s n (as the recordings
+show: a trap at 18 with at most 16 staccato notes queued never happens).
 
 GW-BASIC looks for events before every statement (GWMAIN.ASM NEWSTT calls CHKINT).  A
 program that sets up a trap is compiled with a block for every statement and no loop
-inside a block (compile/blocks.py ``plan``), and while the timer is ON with a line to go to,
-each block of the program is wrapped: when the period has passed since TIMER ON or the
-last event, the wrapper GOSUBs the line instead of running the block, which the handler's
+inside a block (compile/blocks.py ``plan``), and while the timer or the music's trap is ON
+(or STOPped) with a line to go to, each block of the program is wrapped: when its event has
+happened (the period has passed since TIMER ON or the last event; the notes waiting went
+below n), the wrapper GOSUBs the line instead of running the block, which the handler's
 RETURN then runs.  As in GW-BASIC the event waits while its own handler runs (until that
-RETURN) and while the timer is STOPped; TIMER OFF forgets it.
+RETURN) and while the trap is STOPped; OFF forgets it.
 """
 
 from __future__ import annotations
@@ -20,6 +23,9 @@ import time
 
 from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, error_for
 from yaseer.basic.machine.runtime import byte_argument as _byte
+
+
+_WATCHED = ("TIMER", "PLAY")  # the events that happen here: their switches wrap the blocks
 
 
 def _signed_byte(k: int) -> int:
@@ -42,8 +48,8 @@ class Events:
         self.states: dict = {}
         self.period = 0.0  # the timer's, in seconds
         self.due = 0.0  # time.monotonic() of the timer's next event
-        self.wrapped = None  # (the blocks list wrapped, its real blocks) while the timer is armed
-        self.handler_depth = None  # the stack's length inside the running timer handler
+        self.wrapped = None  # (the blocks list wrapped, its real blocks) while a trap is armed
+        self.handler_depth: dict = {}  # word -> the stack's length inside its running handler
 
     def check(self, word: str, n, switching: bool) -> tuple[int, ...]:
         """The events ``word(n)`` names, or Illegal function call.  ON word(n) GOSUB
@@ -68,12 +74,19 @@ class Events:
         return (event,)
 
     def trap(self, word: str, n, target) -> None:
-        """ON word(n) GOSUB: the block to GOSUB (None: no trap)."""
+        """ON word(n) GOSUB: the block to GOSUB (None: no trap).  A word switched without
+        parentheses (TIMER, PLAY) has one trap, n its period or its count of notes."""
         (event,) = self.check(word, n, False)
+        if self.events[word][1] is None:
+            event = 0
         self.targets[word, event] = target
         if word == "TIMER":
             self.period = float(n)
-            self._timer_changed()
+        if word == "PLAY":
+            queue = self.machine.music.queue
+            queue.threshold = int(n)
+            queue.observe()
+        self._watch_changed()
 
     def switch(self, word: str, n, state: str) -> None:
         """word(n) ON | OFF | STOP."""
@@ -81,21 +94,27 @@ class Events:
             if state == "ON" and word == "TIMER" and self.states.get((word, event)) != "STOP":
                 self.due = time.monotonic() + self.period  # the count starts at TIMER ON
             self.states[word, event] = state
-        if word == "TIMER":
-            self._timer_changed()
+        if word == "PLAY" and state == "OFF" and self.machine._music is not None:
+            self.machine._music.queue.crossed = False  # OFF forgets an event that happened
+        if word in _WATCHED:
+            self._watch_changed()
 
-    def _timer_changed(self) -> None:
-        """Wrap the program's blocks while the timer may fire (a line to go to, not OFF), else unwrap."""
-        target = self.targets.get(("TIMER", 0))
-        live = target is not None and self.states.get(("TIMER", 0), "OFF") != "OFF"
-        if live and self.wrapped is None:
+    def _live(self, word: str):
+        """The trap's target while ``word``'s event may fire (a line to go to, not OFF)."""
+        target = self.targets.get((word, 0))
+        return target if target is not None and self.states.get((word, 0), "OFF") != "OFF" else None
+
+    def _watch_changed(self) -> None:
+        """Wrap the program's blocks while the timer or the music may fire, else unwrap."""
+        target = self._live("TIMER") or self._live("PLAY")
+        if target is not None and self.wrapped is None:
             compiled = self.machine.compiled.get(target[0])
             if compiled is None:
                 return
             blocks = compiled.blocks
             self.wrapped = (blocks, list(blocks))
             blocks[:] = [self._watching(b, real) for b, real in enumerate(blocks)]
-        elif not live:
+        elif target is None:
             self.disarm()
 
     def disarm(self) -> None:
@@ -106,17 +125,32 @@ class Events:
             self.wrapped = None
 
     def _watching(self, b: int, real):
-        """Block ``b`` run after a look at the timer: when its event is due, the handler's
-        block instead, with ``b`` pushed for its RETURN."""
-        stack = self.machine.stack
+        """Block ``b`` run after a look at the timer and the music: when an event is due,
+        its handler's block instead, with ``b`` pushed for its RETURN."""
 
         def watched():
-            if time.monotonic() >= self.due and self.states.get(("TIMER", 0)) == "ON":
-                depth = self.handler_depth
-                if depth is None or len(stack) < depth:  # not inside its own handler
-                    self.due = time.monotonic() + self.period
-                    self.machine.gosub(b)
-                    self.handler_depth = len(stack)
-                    return self.targets["TIMER", 0][1]
+            if time.monotonic() >= self.due and self._may_run("TIMER"):
+                self.due = time.monotonic() + self.period
+                return self._handle("TIMER", b)
+            music = self.machine._music
+            if music is not None and self._may_run("PLAY"):
+                queue = music.queue
+                queue.observe()
+                if queue.crossed:
+                    queue.crossed = False
+                    return self._handle("PLAY", b)
             return real()
         return watched
+
+    def _may_run(self, word: str) -> bool:
+        """``word``'s trap is ON, has a line, and its handler is not running."""
+        if self.states.get((word, 0)) != "ON" or self.targets.get((word, 0)) is None:
+            return False
+        depth = self.handler_depth.get(word)
+        return depth is None or len(self.machine.stack) < depth
+
+    def _handle(self, word: str, b: int):
+        """GOSUB ``word``'s handler from block ``b``: the handler's block."""
+        self.machine.gosub(b)
+        self.handler_depth[word] = len(self.machine.stack)
+        return self.targets[word, 0][1]

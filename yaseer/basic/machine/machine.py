@@ -58,7 +58,7 @@ from yaseer.basic.machine.files import FileTable, Sandbox, file_byte
 from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
     BasicError, OutputError, BREAK, INPUT_PAST_END, NO_RESUME, OUT_OF_DATA, OUT_OF_MEMORY, STRING_TOO_LONG, SYNTAX_ERROR,
     TYPE_MISMATCH, UNDEFINED_LINE,
-    UNDEFINED_PROGRAM_AREA, error_for, undefined_line_message,
+    UNDEFINED_PROGRAM_AREA, error_for, not_emulated, undefined_line_message,
 )
 from yaseer.basic.machine.console import Console
 from yaseer.basic.machine.chaining import ChainTo, Chaining, RunAgain
@@ -308,6 +308,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.address_space = AddressSpace(self._screen_model, self.dialect.charset, self.dialect.screen.video_segment,
                                           self.files, self._fields_poked)
         self._events = None  # gw's event traps, made by the first statement that sets one (events)
+        self._music = None  # gw's music queue, made by the first PLAY, SOUND or BEEP (music)
         self.clock = Clock()  # TIMER, DATE$, TIME$; DATE$ = and TIME$ = move it
         self._output_eof = bool(words and words.output_eof)  # casio: EOF of an output file is 0 (EOF.md item 4)
         self.gosub_levels = words.gosub_levels if words else None  # casio: 96 (GOSUB.md item 2)
@@ -602,6 +603,28 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
 
             self._events = Events(self.dialect.device_words.events, self)
         return self._events
+
+    @property
+    def music(self):
+        """gw's music queue and PLAY's state (machine/music.py), made when a program first
+        uses PLAY, SOUND, BEEP or PLAY(n)."""
+        if self._music is None:
+            from yaseer.basic.machine.music import Music  # (only programs with music)
+
+            self._music = Music(self)
+        return self._music
+
+    def clear(self) -> None:
+        """CLEAR, RUN: the variables (Variables.clear), and PLAY's settings and queue back to
+        their start (BIMISC.ASM CLEARC calls GWSTS.ASM SNDINI)."""
+        super().clear()
+        if self._music is not None:
+            self._music.reset()
+
+    def pointed_value(self, pointer: str):
+        """The value of the variable a VARPTR$ string points to (PLAY's X and =): yaseer
+        keeps no addresses of variables."""
+        raise not_emulated("PLAY's VARPTR$ string")
 
     def set_trace(self, on: bool) -> None:
         """TRON / TROFF: swap every compiled area's blocks for its traced (or plain) variant.

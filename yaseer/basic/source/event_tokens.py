@@ -6,8 +6,10 @@ before any expression: ``ON TIMER GOSUB 10`` is Syntax error, not ON of TIMER's 
 at the start of a statement followed by ``(`` or by ON, OFF or STOP (the words' statement
 routines SEVSTT, PENS, STRIGS).  Elsewhere each stays what the scanner made of it: KEY ON
 (the function-key line), a function (STRIG(0)), a value (TIMER), an unsupported word
-(PLAY "CDE").  This pass turns those tokens into ``EVENT`` tokens; the grammar's on_event
-and event_switch read them.
+(PLAY(0)).  This pass turns those tokens into ``EVENT`` tokens; the grammar's on_event
+and event_switch read them.  An event word that is also a statement of the device words
+(PLAY "CDE": dialects/gw_words.py STATEMENTS) and starts a statement without being an event
+is that statement (a ``WORDSTMT``).
 """
 
 from __future__ import annotations
@@ -22,9 +24,10 @@ def _word(token) -> str | None:
     return value.upper() if isinstance(value, str) else None
 
 
-def mark_events(tokens: list, events: dict | None) -> list:
+def mark_events(tokens: list, events: dict | None, statements=()) -> list:
     """``tokens`` with each event word that reads as an event as an ``EVENT`` token
-    (``events``: the dialect's table, None where it has none)."""
+    (``events``: the dialect's table, None where it has none), and each that starts a
+    statement otherwise as a ``WORDSTMT`` if it is one of ``statements``."""
     if not events:
         return tokens
     marked = None
@@ -34,8 +37,11 @@ def mark_events(tokens: list, events: dict | None) -> list:
             continue
         before = tokens[k - 1].type if k else "_COLON"
         after = tokens[k + 1].type if k + 1 < len(tokens) else None
-        if before == "ON" or before in _STATEMENT_STARTS and (after == "_LPAR" or after in SWITCH_STATES
-                                                             and events[word][3]):
+        starts = before in _STATEMENT_STARTS
+        if before == "ON" or starts and (after == "_LPAR" or after in SWITCH_STATES and events[word][3]):
             marked = marked or list(tokens)
             marked[k] = token.update(type=EVENT, value=word)
+        elif starts and word in statements:
+            marked = marked or list(tokens)
+            marked[k] = token.update(type="WORDSTMT", value=word)
     return marked or tokens

@@ -842,7 +842,8 @@ def _read_as_statements(tokens: list, dialect: Dialect) -> list:
     """A line's tokens as its statements read them: event words as events (gw), reserved words
     the dialect lacks as unsupported, an ELSE no IF owns as the end of the line."""
     words = dialect.device_words
-    return _else_alone(mark_unsupported(mark_events(tokens, words.events if words else None)), dialect)
+    marked = mark_events(tokens, words.events, words.statements) if words else tokens
+    return _else_alone(mark_unsupported(marked), dialect)
 
 
 def parse_statements(text: str, dialect: Dialect = CASIO) -> list:

@@ -118,8 +118,9 @@ class _Keywords:
                 words[word] = entry[0]
             for word in devices.system_values:
                 words[word] = "SYSVAR"
-            for word in devices.statements:
-                words[word] = "WORDSTMT"
+            for word in devices.statements:  # (PLAY: a function; a statement where one starts)
+                if word not in devices.functions:
+                    words[word] = "WORDSTMT"
         self.dollar_apart = devices.dollar_apart if devices else frozenset()
         # a longer GW-BASIC word that is no keyword here stays whole (VARPTR, CSRLIN in casio;
         # LOCK, not LOC K, where LOCK is no keyword)
