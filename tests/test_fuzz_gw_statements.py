@@ -4,7 +4,8 @@ codes, FRE, RETURN's forms, DEF FN bodies, bad IF branches, MID$ onto itself, WH
 RANDOMIZE, LPOS, PRINT USING, DEFINT/DEFSTR run as statements, CLEAR, blanks inside
 numbers, filling the string space, RENUM, ``.`` as the current line, DEF SEG, PEEK, POKE and VARPTR,
 event traps (ON KEY(n) GOSUB, TIMER ON ...), STICK, STRIG, PEN, MOTOR, SWAP, OPTION BASE, MKI$/CVI and the
-other conversions, USR, the device words, with arguments in and out of range,
+other conversions, USR, the device words, PLAY's music language, PLAY(n), ON PLAY(n) and SOUND,
+with arguments in and out of range,
 left out or of the wrong type.  Each program ends normally or with a BASIC error line
 naming its line (never a Python exception), and writes nothing in its directory.
 
@@ -25,6 +26,14 @@ from yaseer.basic.errors import BasicError
 from yaseer.basic.machine.machine import INTERNAL_ERROR, Machine
 
 ARGUMENTS = ["1", "0", "-1", "25", "24", "80", "81", "255", "256", "32767", "32768", "1E10", '"A"', "X", "", "2.5"]
+# pieces of PLAY's music language (machine/mml.py), good and bad
+MUSIC = ["C", "D#", "E-", "F+", "B#", "A.", "G64..", "N40", "N0", "N85", "O3", "O9", ">", "<", "P8", "P0", "P",
+         "T200", "T20", "L8", "L0", "MB", "MF", "ML", "MN", "MS", "MQ", "XA$;", "XX;", "X", "N=X;", "L=X;",
+         "O=Q(1);", "T=-X;", "Z", ";", " ", "c+2.", "l64;a;", "=", "+", "65536"]
+
+
+def music(data) -> str:
+    return "".join(data.draw(st.lists(st.sampled_from(MUSIC), max_size=6)))
 
 
 def argument(data) -> str:
@@ -34,6 +43,7 @@ def argument(data) -> str:
 def statement(data) -> str:
     a, b, c = argument(data), argument(data), argument(data)
     code = data.draw(st.integers(0, 40))
+    tune = music(data)
     choices = [
         f"LOCATE {a}, {b}", f"LOCATE {a}", f"LOCATE , {b}", f"LOCATE {a}, {b}, {c}, {a}, {b}", f"LOCATE {a},{b},{c},{a},{b},{c}",
         f"COLOR {a}, {b}, {c}", f"COLOR {a}", f"COLOR , {b}", "COLOR", f"CLS {a}", "CLS",
@@ -71,6 +81,10 @@ def statement(data) -> str:
         f"DIM Q({a}): OPTION BASE 1", f"PRINT CVI(MKI$({a})); CVS(MKS$({a})); CVD(MKD$({a}))",
         f'PRINT CVI("{chr(65 + code % 26)}"); CVS(""); CVD(A$)', f"DEF USR{code % 10} = {a}",
         f"PRINT USR({a})", f"OUT {a}, {b}", f"PRINT INP({a})", f"SOUND {a}, {b}", "BEEP", f"PRINT ENVIRON$({a})",
+        # PLAY, its music language, PLAY(n) and its trap, SOUND into the music queue
+        f'PLAY "{tune}"', f'A$ = "{tune}": PLAY "XA$;"', 'A$ = "XA$;": PLAY A$', f"PLAY {a}", f'PLAY "{tune}", {a}',
+        f"PRINT PLAY({a})", "WHILE PLAY(0) > 0: WEND", f"ON PLAY({a}) GOSUB 1000", "PLAY ON", "PLAY STOP",
+        f'PLAY "MB{tune}": PRINT PLAY(0)', f"SOUND {a}, {b}: PRINT PLAY(0)", "SOUND 440, 0",
     ]
     return data.draw(st.sampled_from(choices))
 

@@ -1,7 +1,7 @@
 """What gw's device words do on a machine without the devices (dialects/gw_words.py).
 
-yaseer has no I/O ports, no speaker, no device drivers, no DOS environment of the host's
-and runs no machine code.  Each word checks its arguments as GW-BASIC 3.23 does, then does
+yaseer has no I/O ports, no device drivers, no DOS environment of the host's and runs no
+machine code (the speaker's words, SOUND and BEEP, fill the music queue: machine/music.py).  Each word checks its arguments as GW-BASIC 3.23 does, then does
 what a PC with nothing attached would do; where the real machine would hang or jump into
 memory, the run ends with one line naming what is not emulated.  Nothing here reads or
 writes outside the program's directory: the environment is the program's own table (the
@@ -108,21 +108,11 @@ class Devices:
         if not (port_value(k) ^ flip) & mask:
             raise not_emulated(f"WAIT for port &H{k:X} to change (yaseer's ports never change)")
 
-    # -- the printer, the speaker
+    # -- the printer
     @staticmethod
     def screen_copy(k: int = 0) -> None:
         """LCOPY [n]: n a byte (LCOPYS); GW-BASIC 3.23 for the IBM PC copies nothing."""
         _byte(k)
-
-    @staticmethod
-    def sound(frequency: int, duration: float) -> None:
-        """SOUND frequency, duration: checked as PC-BASIC 2.0.8 checks it (a duration of
-        -65535..65535 ticks, else Illegal function call; with a duration not 0 a frequency
-        other than 0 of 37..32767); the machine has no speaker, so the run goes on at once."""
-        if not -65535 <= duration <= 65535:
-            raise error_for(ILLEGAL_FUNCTION_CALL)
-        if duration and frequency and not 37 <= frequency <= 32767:
-            raise error_for(ILLEGAL_FUNCTION_CALL)
 
     # -- device drivers and DOS
     def control(self, n: int, _control: str) -> None:

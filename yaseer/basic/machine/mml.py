@@ -23,7 +23,7 @@ import re
 
 from yaseer.basic.arithmetic.values import nearest_integer
 from yaseer.basic.errors import (
-    ILLEGAL_FUNCTION_CALL, OVERFLOW, SUBSCRIPT_OUT_OF_RANGE, TYPE_MISMATCH, error_for, not_emulated,
+    ILLEGAL_FUNCTION_CALL, OUT_OF_MEMORY, OVERFLOW, SUBSCRIPT_OUT_OF_RANGE, TYPE_MISMATCH, error_for, not_emulated,
 )
 
 # the top octave's frequencies in Hz, C to B (GWSTS.ASM NOTTAB); lower octaves halve them
@@ -34,6 +34,9 @@ NOTE_INDEX = (9, 10, 11, 12, None, 1, 2, 3, 4, 5, None, 6, 7, 8, 9)
 DIVIDEND = 96000  # 4 x 60 x 400: a quarter note at T beats a minute lasts 96000/(T x 4) units
 VARPTR_TYPES = 9  # a VARPTR$ string starts with its variable's type, below 9 (SCNVAR)
 NAME_LONGEST = 40  # SCNVR2 copies at most 40 characters of a name
+# strings Xed inside each other: MCLXEQ asks GETSTK for room on BASIC's stack for each, and
+# a full stack is Out of memory; yaseer's bound (the room depends on what else is stacked)
+X_DEPTH = 100
 # what ISVAR reads of a name: letters, digits and dots, a type mark, subscripts (the rest is not read)
 _VARIABLE = re.compile(r"([A-Z][A-Z0-9.]*)([%!#$]?)(?:\((.*)\))?")
 
@@ -257,6 +260,8 @@ class Player:
         if not isinstance(value, str):
             raise error_for(TYPE_MISMATCH)
         if value:
+            if len(self.reader.stack) > X_DEPTH:
+                raise error_for(OUT_OF_MEMORY)
             self.reader.stack.append([value, 0])
 
     def note_letter(self, c: str) -> None:
