@@ -58,7 +58,7 @@ from yaseer.basic.machine.files import FileTable, Sandbox, file_byte
 from yaseer.basic.errors import (  # noqa: F401  (INPUT_PAST_END re-exported)
     BasicError, OutputError, BREAK, INPUT_PAST_END, NO_RESUME, OUT_OF_DATA, OUT_OF_MEMORY, STRING_TOO_LONG, SYNTAX_ERROR,
     TYPE_MISMATCH, UNDEFINED_LINE,
-    UNDEFINED_PROGRAM_AREA, error_for, not_emulated, undefined_line_message,
+    UNDEFINED_PROGRAM_AREA, error_for, undefined_line_message,
 )
 from yaseer.basic.machine.console import Console
 from yaseer.basic.machine.chaining import ChainTo, Chaining, RunAgain
@@ -620,11 +620,6 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         super().clear()
         if self._music is not None:
             self._music.reset()
-
-    def pointed_value(self, pointer: str):
-        """The value of the variable a VARPTR$ string points to (PLAY's X and =): yaseer
-        keeps no addresses of variables."""
-        raise not_emulated("PLAY's VARPTR$ string")
 
     def set_trace(self, on: bool) -> None:
         """TRON / TROFF: swap every compiled area's blocks for its traced (or plain) variant.

@@ -149,7 +149,7 @@ class Player:
         text, at = reader.raw()
         if at < len(text) and ord(text[at]) < VARPTR_TYPES and len(text) - at >= 3:
             reader.stack[-1][1] = at + 3
-            return self.machine.pointed_value(text[at:at + 3])
+            return self.pointed(text[at:at + 3])
         c = reader.fetch_needed()
         if not "A" <= c <= "Z":
             raise _illegal()
@@ -160,6 +160,28 @@ class Player:
             if len(name) > NAME_LONGEST:
                 raise _illegal()
         return self._value_of(name[:-1])
+
+    def pointed(self, pointer: str):
+        """The value at a VARPTR$ string's address (RETVAR): the type byte's 2, 4 or 8 bytes
+        of a number, or a string's descriptor (length, address) and its characters, read
+        from the data segment as PEEK reads it (machine/address_space.py); another type
+        byte is Illegal function call."""
+        from yaseer.basic.machine import gwfunctions
+        from yaseer.basic.machine.address_space import DATA_SEGMENT
+
+        kind, address = ord(pointer[0]), ord(pointer[1]) | ord(pointer[2]) << 8
+        memory = self.machine.address_space
+
+        def chars(at: int, count: int) -> str:
+            return "".join(chr(memory.read(DATA_SEGMENT * 16 + (at + k & 0xFFFF))) for k in range(count))
+
+        if kind == 3:
+            descriptor = chars(address, 3)
+            return chars(ord(descriptor[1]) | ord(descriptor[2]) << 8, ord(descriptor[0]))
+        reading = {2: gwfunctions.cvi, 4: gwfunctions.cvs, 8: gwfunctions.cvd}.get(kind)
+        if reading is None:
+            raise _illegal()
+        return reading(chars(address, kind))
 
     def variable_number(self) -> int:
         """VARGET: the variable's value as an integer (FRCINT), 16 bits."""
