@@ -202,7 +202,7 @@ def test_varptr_of_a_string_file_number_is_type_mismatch(tmp_path):
 
 
 @pytest.mark.parametrize("statement, expected", [
-    ("PRINT VARPTR(A)", "VARPTR of a variable is not emulated in 10\n"),
+    ("PRINT VARPTR(A)", "Illegal function call in 10\n"),  # (not made: machine/data_segment.py)
     ("PRINT VARPTR(1)", "Syntax error in 10\n"),
     ('PRINT VARPTR("A")', "Syntax error in 10\n"),
     ("PRINT VARPTR", "Syntax error in 10\n"),
@@ -210,8 +210,8 @@ def test_varptr_of_a_string_file_number_is_type_mismatch(tmp_path):
 ])
 def test_varptr_of_a_variable_says_what_is_missing(tmp_path, statement, expected):
     """VARPTR's argument must be a variable (GWEVAL.ASM: PTRGTN reads a name; the recordings:
-    ``VARPTR(1)``, ``VARPTR("ABC")`` Syntax error); yaseer keeps no data segment of its
-    variables, so a variable's address ends the run naming what is missing."""
+    ``VARPTR(1)``, ``VARPTR("ABC")`` Syntax error); a variable not made yet is Illegal
+    function call (recorded: VARPTR_on_undefined_variables)."""
     assert yaseer_run(f"10 {statement}\n", tmp_path) == expected
 
 

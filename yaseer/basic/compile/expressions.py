@@ -421,10 +421,13 @@ class ExpressionCompiler:
         own = self.own_functions.get(node.name)  # the dialect's own words (dialects/casio.py)
         forms, result, helper = own[1:] if own else _FUNCTIONS[node.name]
         args = list(node.args)
-        if forms == ("v",):  # VARPTR(variable): a variable's name, not its value
+        if forms == ("v",):  # VARPTR(variable): a variable's name (and an element's subscripts), not its value
             if len(args) != 1 or not isinstance(args[0], (ast.Var, ast.Elem)):
                 raise syntax_error()
-            return self.numbers.call(node.name, helper, [repr(self.numbers.name(args[0].name))], ["s"], "n")
+            codes = [repr(self.numbers.name(args[0].name))]
+            if isinstance(args[0], ast.Elem):
+                codes.append("(" + "".join(self.typed(i, scope)[0] + ", " for i in args[0].indices) + ")")
+            return self.numbers.call(node.name, helper, codes, ["s"] * len(codes), result)
         # RND, or RND(x) with a constant x > 0 that a single holds (a larger one is Overflow
         # as it is made a single: the general call below)
         if node.name == "RND" and (not args or (len(args) == 1 and 0 < (constant_value(args[0]) or 0) < 1e38)):

@@ -131,11 +131,18 @@ FIELDS = (
     "open_clauses",  # bool: False
     "clear_readings",  # tuple[str, ...]: ()
     "line_number_digits",  # bool: False
+    "data_segment",  # DataSegmentRules | None: None
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
             None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None, False, (),
-            False, False, (), False)
+            False, False, (), False, None)
+
+# Where BASIC's data segment puts the program and the strings (offsets in the segment, bytes;
+# machine/data_segment.py): ``text_start`` the program's first line (TXTTAB), ``string_top``
+# the end of the string space (its first string ends there), ``memory_top`` the top of
+# BASIC's memory as the segment's pointer at &H2C holds it.
+DataSegmentRules = namedtuple("DataSegmentRules", "text_start string_top memory_top")
 
 
 class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
@@ -483,6 +490,9 @@ GW = Dialect(
     device_words=gw_words.WORDS, not_after_operator=True,
     argument_readings=("INSTR", "STRING$", "LEFT$", "RIGHT$", "MID$"), dos_program_lines=True, open_clauses=True,
     clear_readings=("whole", "top", "stack"), line_number_digits=True,
+    # GW-BASIC 3.23 with /F:3 /S:128, as the recordings of the real machine read it: the program
+    # from 4718 (&H30), the first string ending at 65021 (PEEK of VARPTR(A$)), &H2C holding 65534
+    data_segment=DataSegmentRules(text_start=4718, string_top=65021, memory_top=65534),
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

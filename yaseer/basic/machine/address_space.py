@@ -28,6 +28,15 @@ What lies where (a colour PC, as the machine behind PC-BASIC's recordings had):
   (machine/random_files.py): PEEK reads them, POKE writes them and the variables FIELDed
   over them see the byte, as GW's descriptors point into the buffer; the other bytes
   there, and a buffer no random file holds, read what POKE left, else 0;
+* from the program up (machine/data_segment.py, laid out from the machine's state only
+  when a program reads there or asks VARPTR of a variable): the program text, the simple
+  variables, the arrays and the strings, and below, the pointers to them GW keeps at
+  &H2C, &H30, &H358, &H35A and &H35C; ``VARPTR(v)`` is the address of v's value there
+  (its descriptor for a string), ``VARPTR$(v)`` its type byte and that address as a
+  3-character string (GWEVAL.ASM VARPTR); a variable not made yet is Illegal function
+  call (PTRGET makes none for VARPTR), an array element's array is made as any use makes
+  it, a subscript beyond it Subscript out of range.  A byte POKEd there is read back
+  (the variables do not change);
 * the rest of the PC's RAM (below &HA0000): what POKE wrote there, else 0 (yaseer does not
   model DOS, the BIOS's data or interrupt vectors; PC-BASIC 2.0.8 reads 0 where it models
   nothing);
@@ -37,7 +46,7 @@ What lies where (a colour PC, as the machine behind PC-BASIC's recordings had):
 from __future__ import annotations
 
 from yaseer.basic.machine import runtime
-from yaseer.basic.errors import BAD_FILE_NUMBER, error_for, not_emulated
+from yaseer.basic.errors import BAD_FILE_NUMBER, SUBSCRIPT_OUT_OF_RANGE, error_for
 
 # BASIC's data segment (a paragraph number): where DEF SEG alone points, and what PEEK reads at
 # start.  The real machine's, as PC-BASIC's recordings name it (its PEEK test presets a byte of
@@ -68,9 +77,13 @@ class AddressSpace:
     with what was printed (Console._screen_model); ``charset``: the machine's codes;
     ``video_segment``: the text screen's segment (None: no screen memory); ``files``: the
     machine's file table (machine/files.py); ``fields_changed(file)``: called after a POKE
-    into random file ``file``'s buffer (the machine's FIELD variables take their slices)."""
+    into random file ``file``'s buffer (the machine's FIELD variables take their slices);
+    ``variables``: the machine whose variables the data segment holds (its
+    ``data_layout()``, ``array_nd`` and ``subscript_base``; None: no variables there)."""
 
-    def __init__(self, screen_model, charset, video_segment: int | None, files=None, fields_changed=None):
+    def __init__(self, screen_model, charset, video_segment: int | None, files=None, fields_changed=None,
+                 variables=None):
+        self.variables = variables
         self.screen_model = screen_model
         self.charset = charset
         self.files = files
@@ -101,10 +114,33 @@ class AddressSpace:
             raise error_for(BAD_FILE_NUMBER)
         return float(FILE_BLOCKS + n * BLOCK_BYTES + FILE_HEADER)
 
-    @staticmethod
-    def variable_pointer(_name) -> float:
-        """VARPTR(variable): yaseer does not lay its variables out in a data segment."""
-        raise not_emulated("VARPTR of a variable")
+    def variable_pointer(self, name: str, subscripts: tuple = ()) -> float:
+        """VARPTR(variable): the offset of its value in the data segment (``name`` the full
+        name, ``subscripts`` an element's, not yet checked)."""
+        return float(self._variable_address(name, subscripts)[0])
+
+    def variable_pointer_string(self, name: str, subscripts: tuple = ()) -> str:
+        """VARPTR$(variable): its type byte (the value's size) and its offset, low byte first."""
+        address, size = self._variable_address(name, subscripts)
+        return chr(size) + chr(address & 0xFF) + chr(address >> 8)
+
+    def _variable_address(self, name: str, subscripts: tuple) -> tuple[int, int]:
+        from yaseer.basic.machine.data_segment import TYPE_BYTES, type_of
+
+        machine = self.variables
+        if subscripts:
+            indices = tuple(runtime.subscript_integer(x) for x in subscripts)
+            machine.array_nd(name, len(indices))  # (an array used without DIM is made)
+            counts = tuple(d + 1 for d in machine.held_dims()[name])
+            base = machine.subscript_base
+            if len(counts) != len(indices) or any(not base <= i < c + base for i, c in zip(indices, counts)):
+                raise error_for(SUBSCRIPT_OUT_OF_RANGE)
+            address = machine.data_layout().element(name, indices, base)
+        else:
+            address = machine.data_layout().scalars.get(name)
+            if address is None:  # (not made: PTRGET returns no variable to VARPTR)
+                raise runtime.illegal_function_call()
+        return address, TYPE_BYTES[type_of(name)]
 
     def _address(self, offset: float) -> int:
         return (self.segment * 16 + runtime.unsigned_word(offset)) & ADDRESS_MASK
@@ -122,7 +158,11 @@ class AddressSpace:
         if address in self.ram:
             return self.ram[address]
         data = address - DATA_SEGMENT * 16
-        return DATA_SEGMENT_START.get(data, 0)
+        if data in DATA_SEGMENT_START:
+            return DATA_SEGMENT_START[data]
+        if self.variables is not None and 0 <= data < 0x10000 and not 0 <= data - FILE_BLOCKS < BLOCK_FILES * BLOCK_BYTES:
+            return self.variables.data_layout().memory.get(data, 0)
+        return 0
 
     def write(self, address: int, byte: int) -> None:
         """Put ``byte`` at 20-bit ``address`` (ROM and absent adapters keep theirs)."""

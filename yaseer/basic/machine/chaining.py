@@ -355,7 +355,9 @@ class Chaining:
         self._compiled(0)
         # the variables passed on that the first program made (it recorded COMMON's or, with
         # ALL, every making: compiler._watched_names), or that hold a value other than 0 or ""
-        made = {name for name, value in kept_scalars.items() if name in self.made or value}
+        # (in the order they were made: the new program's variable table starts with them)
+        made = [name for name in self.made if name in kept_scalars]
+        made += [name for name, value in kept_scalars.items() if value and name not in self.made]
         self.clear()
         self.stack.clear()
         self.on_error = None

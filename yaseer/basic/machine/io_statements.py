@@ -459,7 +459,19 @@ class InputOutput:
         if type(key) is not str:
             current = self.field_element(key)
         variables = self.fielded()
-        variables.update(self.files.justify(key, value, current, right, variables))
+        changed = self.files.justify(key, value, current, right, variables)
+        space = self.string_space
+        if self.dialect.free_memory is not None and len(changed) == 1:
+            # LSET writes into the variable's own string, never into a literal (the result is
+            # a string of its own even where Python gave the literal back); a variable pointing
+            # at a literal of the program text gets a copy in the string space first
+            # (DSKCOM.ASM LSET: GETSPA when the string lies below VARTAB)
+            new = changed[key]
+            if len(new) > 1 and id(new) in space.text:
+                changed[key] = new[:1] + new[1:]
+            if len(current) > 1 and id(current) in space.text:
+                space.take_room(len(new))
+        variables.update(changed)
 
     def swap_fields(self, first, second, now_first: str, now_second: str) -> None:
         """SWAP of string variables ``first`` and ``second`` (keys as FIELD's), which now hold

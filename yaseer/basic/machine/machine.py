@@ -76,7 +76,7 @@ from yaseer.basic.machine.io_statements import (  # noqa: F401  (the PRINT items
 )
 from yaseer.basic.machine.stack import AREA_MARK, ControlStack, ForFrame  # noqa: F401  (re-exported)
 from yaseer.basic.machine.variables import (  # noqa: F401  (the array limits are re-exported)
-    MAX_ARRAY_ELEMENTS, MAX_TOTAL_ELEMENTS, Variables, _check_clear_arguments, clear_argument, clear_sizes,
+    MAX_ARRAY_ELEMENTS, MAX_TOTAL_ELEMENTS, MadeNames, Variables, _check_clear_arguments, clear_argument, clear_sizes,
 )
 from yaseer.basic.source.scanner import entry_messages, program_lines
 from yaseer.basic.machine.screen import OutputStream
@@ -292,7 +292,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.current_line = 0
         self._direct_line = None  # (compiled, program, namespace) of a direct line whose DEFs switch it
         # gw: the simple variables a statement made (recorded only where a SWAP may ask: compiler.made)
-        self.made: set[str] = set()
+        self.made = MadeNames()
         # gw: key -> (namespace, block -> names it makes, name -> blocks): Variables.register_makings
         self.making_flags: dict = {}
         self._types_as_statements = None  # the program of area 0 a RUN n entered past its DEFs (_run_types)
@@ -306,7 +306,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.devices = Devices(self.files)  # gw's INP, OUT, ENVIRON, LOCK ... (machine/devices.py)
         # gw's PEEK and POKE (machine/address_space.py): the screen's memory is the display's
         self.address_space = AddressSpace(self._screen_model, self.dialect.charset, self.dialect.screen.video_segment,
-                                          self.files, self._fields_poked)
+                                          self.files, self._fields_poked,
+                                          self if self.dialect.data_segment is not None else None)
         self._events = None  # gw's event traps, made by the first statement that sets one (events)
         self._music = None  # gw's music queue, made by the first PLAY, SOUND or BEEP (music)
         self.clock = Clock()  # TIMER, DATE$, TIME$; DATE$ = and TIME$ = move it

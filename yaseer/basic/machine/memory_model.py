@@ -35,6 +35,7 @@ from yaseer.basic.errors import OUT_OF_MEMORY, BasicError
 from yaseer.basic.machine.program_crunch import crunch_line
 
 _VALUE_BYTES = {"%": 2, "!": 4, "#": 8, "$": 3}
+FN_KEY = "\0FN"  # a DEF FN's place among the made names (``made``: FN_KEY + its name)
 _LINE_BYTES: dict[str, int] = {}  # a line's text -> its bytes (FRE counts every line each time)
 
 

@@ -92,6 +92,14 @@ class StringSpace:
         self.base = None
         self.last[0] = None
 
+    def take_room(self, size: int) -> None:
+        """A string of ``size`` bytes made outside the compiled code's helpers (LSET's copy):
+        counted as theirs are, a collection first where it does not fit."""
+        count = self.count
+        count[0] += size
+        if count[0] > count[1]:
+            self.collect(size)
+
     def collect(self, needed: int, operands: tuple = ()) -> None:
         """GARBAG, after a string of ``needed`` bytes did not fit: room for it, or Out of
         string space (the count then stands as if it had not been made).  The

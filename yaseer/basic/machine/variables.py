@@ -28,6 +28,23 @@ def _new_array(dims: tuple, fill):
     return [_new_array(dims[1:], fill) for _ in range(dims[0] + 1)]
 
 
+class MadeNames(dict):
+    """The simple variables a statement made (compiler.made), in the order they were made
+    (a set that keeps its order: GW's variable table lists them so, machine/data_segment.py);
+    a DEF FN's entry among them as ``memory_model.FN_KEY`` + its name."""
+
+    __slots__ = ()
+
+    def add(self, name: str) -> None:
+        self[name] = None
+
+    def discard(self, name: str) -> None:
+        self.pop(name, None)
+
+    def update(self, names) -> None:
+        dict.update(self, dict.fromkeys(names))
+
+
 class Variables:
     """Scalars (``scalars``: name -> float or str) and arrays (``arrays``: name -> list,
     nested for more than one dimension).  A mixin of ``Machine``, on its state."""
@@ -213,6 +230,19 @@ class Variables:
                                              self.arrays, self.held_dims(), self.fns, self.string_space.text,
                                              self.made)
 
+    def data_layout(self):
+        """gw: the data segment laid out as GW-BASIC would hold the program and the variables
+        now (machine/data_segment.py, imported only here), the running block's values
+        over the scalars (see :meth:`measure_memory`)."""
+        from yaseer.basic.machine.data_segment import Layout
+
+        scalars = self.scalars_with(string_space.block_locals())
+        made = self.made
+        order = [name for name in made if name in scalars or name.startswith(memory_model.FN_KEY)]
+        order += [name for name, value in scalars.items() if value and name not in made]
+        return Layout(self.dialect.data_segment, self.programs.get(0, {}), scalars, order, self.arrays,
+                      self.held_dims(), self.fns, self.string_space.text, self.subscript_base)
+
     def held_dims(self) -> dict:
         """Each array's largest subscripts as GW's memory holds it: under OPTION BASE 1 one
         entry fewer a dimension (BIPTRG.ASM reads each subscript less one, DEC DX after
@@ -300,9 +330,11 @@ class Variables:
         that does not exist yet, as a LET would (:meth:`make_variable`)."""
         new = name not in self.fns
         self.fns[name] = (function, len(parameters))
-        if new and self.dialect.free_memory is not None and not self._take_room(memory_model.function_bytes(name)):
-            del self.fns[name]
-            raise BasicError("Out of memory", OUT_OF_MEMORY)
+        if new and self.dialect.free_memory is not None:
+            if not self._take_room(memory_model.function_bytes(name)):
+                del self.fns[name]
+                raise BasicError("Out of memory", OUT_OF_MEMORY)
+            self.made.add(memory_model.FN_KEY + name)  # its entry's place among the variables
         if self.dialect.variables_made:
             for parameter in parameters:
                 if parameter in self.made:

@@ -1,0 +1,203 @@
+"""GW-BASIC's data segment from the program up, as VARPTR and PEEK see it: laid out from
+the machine's state when a program asks (yaseer keeps its values in Python; this module
+is imported only then, so other programs pay nothing).
+
+From ``DataSegmentRules.text_start`` (TXTTAB, 4718 with GW's default /F:3 /S:128; the byte
+before it is 0) upwards, GW-BASIC 3.23 keeps (GWMAIN.ASM, BIPTRG.ASM, BISTRS.ASM):
+
+* the program text (TXTTAB): each line's link, number, tokens and 0, then a 0 link
+  (machine/program_crunch.py's bytes);
+* the simple variables (VARTAB), in the order PTRGET made them (machine/variables.py's
+  ``made``), each its type (2 an integer, 3 a string, 4 a single, 8 a double), its name's
+  first two characters (0 for none), the count of the others and those others with bit 7
+  set, then its value: an integer in two bytes, low first; a single or a double in
+  Microsoft's binary format (MKS$, MKD$); a string's descriptor, its length and the
+  address of its characters.  A DEF FN is such an entry with bit 7 of its first letter
+  set (GWEVAL.ASM DEF: GETFNM), of the function's type, holding the address of the text
+  after its name in the DEF statement, the rest of the value 0;
+* the arrays (ARYTAB), in the order they were made: the name as a simple variable's, the
+  bytes that follow (2), the dimension count (1) and each dimension's element count (2,
+  the last dimension first: BIPTRG.ASM ISARY pops the subscripts it pushed), then the
+  elements, the first subscript running fastest; STREND ends them;
+* the strings, from ``string_top`` down (FRETOP): a string's characters lie in the
+  string space, or in the program text for a literal assigned or a DATA item (GWMAIN.ASM
+  LETCN6 copies neither).  yaseer does not keep the history of the string space: its
+  strings are laid from the top down in the order of the variables holding them, as
+  after a garbage collection (BISTRS.ASM GARBAG keeps them at the top in order).
+
+Below the program, the data segment holds the pointers (offsets into it, low byte first):
+``&H2C`` the top of BASIC's memory, ``&H30`` TXTTAB, ``&H358`` VARTAB, ``&H35A`` ARYTAB,
+``&H35C`` STREND (the addresses the recordings of the real machine read).
+Units: addresses are offsets in the data segment, sizes bytes.
+"""
+
+from __future__ import annotations
+
+from yaseer.basic.machine.gwfunctions import mkd, mks
+from yaseer.basic.machine.memory_model import FN_KEY
+from yaseer.basic.machine.program_crunch import tokenised_program
+
+# where GW-BASIC keeps its pointers in the data segment (GWRAM.ASM's order; offsets)
+MEMORY_TOP_AT, TEXT_AT, VARIABLES_AT, ARRAYS_AT, ARRAYS_END_AT = 0x2C, 0x30, 0x358, 0x35A, 0x35C
+TYPE_BYTES = {"%": 2, "$": 3, "!": 4, "#": 8}  # a value's bytes, also its type byte (VALTYP)
+FUNCTION_BIT = 0x80  # on a DEF FN's first letter
+DEF, FN = 0x97, 0xD1  # the tokens of DEF and FN
+
+
+def type_of(name: str) -> str:
+    """A full name's type character (a name without one is a single's)."""
+    return name[-1] if name[-1] in TYPE_BYTES else "!"
+
+
+def name_bytes(name: str) -> bytes:
+    """A variable's header: its type, two name characters, the count of the others and those."""
+    letters = name.rstrip("%!#$").encode("latin-1")
+    rest = bytes(c | 0x80 for c in letters[2:])
+    first = letters[:2].ljust(2, b"\0")
+    return bytes((TYPE_BYTES[type_of(name)],)) + first + bytes((len(rest),)) + rest
+
+
+def value_bytes(kind: str, value) -> bytes:
+    """A number's bytes as GW holds it (``kind`` "%", "!" or "#")."""
+    if kind == "%":
+        return (int(value) & 0xFFFF).to_bytes(2, "little")
+    text = mks(value) if kind == "!" else mkd(value)
+    return bytes(map(ord, text))
+
+
+class Layout:
+    """The data segment from ``text_start - 1`` to STREND, with the strings above
+    (``memory``: address -> byte there), and where each variable's value lies
+    (``scalars``: full name -> address; ``arrays``: full name -> (address of the first
+    element, element counts in subscript order))."""
+
+    def __init__(self, rules, program: dict, scalars: dict, order, arrays: dict, held_dims: dict,
+                 fns: dict, literals: dict, base: int = 0):
+        self.rules = rules
+        self.memory: dict[int, int] = {}
+        self.scalars: dict[str, int] = {}
+        self.arrays: dict[str, tuple[int, tuple]] = {}
+        self.string_top = rules.string_top
+        self.text = tokenised_program(program, rules.text_start)
+        self.literals = literals  # id -> string of the literals and DATA items (string_space.text)
+        self._put(rules.text_start - 1, b"\0" + self.text)
+        at = self.variables = rules.text_start + len(self.text)
+        for name in order:
+            if name.startswith(FN_KEY):
+                name = name[len(FN_KEY):]
+                if name in fns:
+                    at = self._function(at, name)
+                continue
+            value = scalars.get(name)
+            if value is None:
+                continue
+            head = name_bytes(name)
+            self.scalars[name] = at + len(head)
+            at = self._put(at, head + self._value(name, value))
+        self.array_start = at
+        for name, values in arrays.items():
+            counts = tuple(d + 1 for d in held_dims[name])
+            data = b"".join(self._value(name, v) for v in _column_order(values, len(counts), base))
+            head = name_bytes(name)
+            sizes = b"".join(n.to_bytes(2, "little") for n in reversed(counts))
+            rest = bytes((len(counts),)) + sizes
+            self.arrays[name] = (at + len(head) + 2 + len(rest), counts)
+            at = self._put(at, head + (len(rest) + len(data)).to_bytes(2, "little") + rest + data)
+        self.array_end = at
+        self._put(MEMORY_TOP_AT, rules.memory_top.to_bytes(2, "little"))
+        self._put(TEXT_AT, rules.text_start.to_bytes(2, "little"))
+        for where, address in ((VARIABLES_AT, self.variables), (ARRAYS_AT, self.array_start),
+                               (ARRAYS_END_AT, self.array_end)):
+            self._put(where, address.to_bytes(2, "little"))
+
+    def _put(self, at: int, data: bytes) -> int:
+        memory = self.memory
+        for i, byte in enumerate(data):
+            memory[at + i] = byte
+        return at + len(data)
+
+    def _value(self, name: str, value) -> bytes:
+        kind = type_of(name)
+        if kind != "$":
+            return value_bytes(kind, value)
+        return bytes((len(value),)) + self._string_address(value).to_bytes(2, "little")
+
+    def _string_address(self, text: str) -> int:
+        """Where string ``text``'s characters lie: in the program text for a literal (its
+        first place there between quotes, or as a DATA item), else the next place down the
+        string space."""
+        if not text:
+            return 0
+        if len(text) == 1 or id(text) in self.literals:  # (one character: maybe a literal)
+            found = self._in_text(text)
+            if found is not None:
+                return found
+        self.string_top -= len(text)
+        self._put(self.string_top, text.encode("latin-1", "replace"))
+        return self.string_top
+
+    def _in_text(self, text: str):
+        data = text.encode("latin-1", "replace")
+        where = self.text.find(b'"' + data + b'"')
+        if where < 0:
+            where = self.text.find(b'"' + data + b"\0")
+        if where >= 0:
+            return self.rules.text_start + where + 1
+        where = self.text.find(data)
+        return None if where < 0 else self.rules.text_start + where
+
+    def _function(self, at: int, name: str) -> int:
+        """A DEF FN's entry: its value the address after its name in the DEF statement."""
+        head = bytearray(name_bytes(name))
+        head[1] |= FUNCTION_BIT
+        self.scalars[FN_KEY + name] = at + len(head)
+        size = TYPE_BYTES[type_of(name)]
+        pointer = self._definition(name)
+        return self._put(at, bytes(head) + (pointer.to_bytes(2, "little") + bytes(8))[:size])
+
+    def _definition(self, name: str) -> int:
+        """The address after ``FN name`` (and the blanks after it) in the program's DEF."""
+        letters = name.rstrip("%!#$").encode("latin-1")
+        text = self.text
+        start = 0
+        while True:
+            i = text.find(bytes((DEF,)), start)
+            if i < 0:
+                return 0
+            j = i + 1
+            while j < len(text) and text[j] == 0x20:
+                j += 1
+            if text[j:j + 1] == bytes((FN,)):
+                j += 1
+                while j < len(text) and text[j] == 0x20:
+                    j += 1
+                k = j
+                while k < len(text) and (chr(text[k]).isalnum() or text[k] == 0x2E):
+                    k += 1
+                if text[j:k] == letters:
+                    if k < len(text) and chr(text[k]) in "%!#$":
+                        k += 1
+                    while k < len(text) and text[k] == 0x20:
+                        k += 1
+                    return self.rules.text_start + k
+            start = i + 1
+
+    def element(self, name: str, subscripts: tuple, base: int) -> int:
+        """The address of array ``name``'s element at ``subscripts`` (checked already)."""
+        first, counts = self.arrays[name]
+        index, stride = 0, 1
+        for subscript, count in zip(subscripts, counts):
+            index += (subscript - base) * stride
+            stride *= count
+        return first + index * TYPE_BYTES[type_of(name)]
+
+
+def _column_order(values, ndim: int, base: int):
+    """The elements of nested lists ``values`` (first subscript outermost) with the first
+    subscript running fastest, as GW keeps them; under OPTION BASE 1 (``base``) without
+    the unused entry 0 of each dimension."""
+    values = values[base:]
+    if ndim == 1:
+        return list(values)
+    columns = [_column_order(v, ndim - 1, base) for v in values]  # each: the rest, in GW's order
+    return [column[k] for k in range(len(columns[0])) for column in columns]
