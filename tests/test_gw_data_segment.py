@@ -158,3 +158,34 @@ def test_lset_of_a_variable_holding_a_literal_copies_it_to_the_string_space(tmp_
 def test_casio_has_no_varptr(tmp_path):
     """The Casio has no VARPTR: its word stays unsupported there."""
     assert "VARPTR" in yaseer_run("10 PRINT VARPTR(A)\n", tmp_path, dialect="casio")
+
+
+GARBAGE = """\
+10 OPEN "O.TXT" FOR OUTPUT AS 1: A$ = "ab" + "c": B$ = "de" + "f": GOSUB 100
+20 A$ = "gh" + "ij": GOSUB 100
+30 X = FRE(""): GOSUB 100: CLOSE: END
+100 PRINT #1, PEEK(VARPTR(A$) + 1) + 256 * PEEK(VARPTR(A$) + 2); PEEK(VARPTR(B$) + 1) + 256 * PEEK(VARPTR(B$) + 2)
+110 RETURN
+"""
+
+
+def test_a_new_string_goes_below_the_garbage_until_a_collection_moves_them_up(tmp_path):
+    """Each new string lies at FRETOP, below the strings and the garbage before it
+    (BISTRS.ASM GETSPA); FRE("") collects the garbage, moving the strings kept up to the
+    top in the order they lay (GARBAG; recorded: DEFFNGRB, STRGARBG)."""
+    rows = [[int(x) for x in row.split()] for row in _files_alike(GARBAGE, tmp_path)[:3]]
+    assert rows[0] == [65021 - 3, 65021 - 6]
+    assert rows[1] == [65021 - 10, 65021 - 6]
+    assert rows[2] == [65021 - 3 - 4, 65021 - 3]
+
+
+def test_chain_copies_a_common_literal_below_the_other_strings(tmp_path):
+    """CHAIN keeps the variables, not the old program's text: a COMMON string that was a
+    literal there gets a copy in the string space, below the others (recorded: STRCOMN)."""
+    (tmp_path / "NEXT.BAS").write_text(
+        '10 OPEN "O.TXT" FOR OUTPUT AS 1\n'
+        '20 PRINT #1, PEEK(VARPTR(A$) + 1) + 256 * PEEK(VARPTR(A$) + 2); PEEK(VARPTR(B$) + 1) + 256 * PEEK(VARPTR(B$) + 2)\n'
+        '30 CLOSE\n')
+    source = '10 COMMON A$, B$\n20 A$ = "lit": B$ = "mad" + "e": CHAIN "NEXT.BAS"\n'
+    assert yaseer_run(source, tmp_path) == ""
+    assert (tmp_path / "O.TXT").read_bytes().split() == [str(65021 - 4 - 3).encode(), str(65021 - 4).encode(), b"\x1a"]

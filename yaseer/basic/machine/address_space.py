@@ -161,7 +161,10 @@ class AddressSpace:
         if data in DATA_SEGMENT_START:
             return DATA_SEGMENT_START[data]
         if self.variables is not None and 0 <= data < 0x10000 and not 0 <= data - FILE_BLOCKS < BLOCK_FILES * BLOCK_BYTES:
-            return self.variables.data_layout().memory.get(data, 0)
+            from yaseer.basic.machine.data_segment import in_layout
+
+            if in_layout(data, self.variables.dialect.data_segment):
+                return self.variables.data_layout().memory.get(data, 0)
         return 0
 
     def write(self, address: int, byte: int) -> None:

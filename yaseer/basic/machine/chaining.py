@@ -376,7 +376,28 @@ class Chaining:
         self.fns.update(functions)
         self.set_subscript_base(base)
         self.option_seen = option_seen  # (FIVEO.ASM CHAIN keeps OPTFLG and OPTVAL: TOPTFG, TOPTVL)
+        if self.dialect.data_segment is not None:
+            self._strings_out_of_the_text(kept_scalars, program)
         return ChainStart(block)
+
+    def _strings_out_of_the_text(self, kept: dict, program: dict) -> None:
+        """The strings passed on that lay in the old program's text (a literal, a DATA item)
+        are copied into the string space, below the others (FIVEO.ASM CHAIN keeps the
+        variables, not the text they pointed into: the copies come after its collection).
+        Where the new program reads the data segment (VARPTR), the strings' places are kept
+        from here on (machine/data_segment.py), so that the copies lie below the others."""
+        space = self.string_space
+        copies = [name for name, value in kept.items()
+                  if type(value) is str and len(value) > 1 and id(value) in space.text]
+        if not copies:
+            return
+        if space.places[0] is None and any("VARPTR" in text.upper() for text in program.values()):
+            self.data_layout()
+        for name in copies:
+            value = self.scalars[name]
+            copy = value[:1] + value[1:]
+            space.take_room(copy)  # (made before the variable holds it: a collection keeps the old)
+            self.scalars[name] = copy
 
     def _merged_direct_line(self, stopped: BasicError) -> ChainStart:
         """MERGE of a file whose first line has no number: GW-BASIC's MERGE reads the file

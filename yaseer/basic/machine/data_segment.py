@@ -21,9 +21,10 @@ before it is 0) upwards, GW-BASIC 3.23 keeps (GWMAIN.ASM, BIPTRG.ASM, BISTRS.ASM
   elements, the first subscript running fastest; STREND ends them;
 * the strings, from ``string_top`` down (FRETOP): a string's characters lie in the
   string space, or in the program text for a literal assigned or a DATA item (GWMAIN.ASM
-  LETCN6 copies neither).  yaseer does not keep the history of the string space: its
-  strings are laid from the top down in the order of the variables holding them, as
-  after a garbage collection (BISTRS.ASM GARBAG keeps them at the top in order).
+  LETCN6 copies neither).  The first time a program looks, the strings the variables
+  hold are laid from the top down in the variables' order, as after a garbage collection
+  (yaseer kept no addresses before); from then on the string space keeps where each new
+  string goes and how a collection moves them (machine/string_space.py ``track``).
 
 Below the program, the data segment holds the pointers (offsets into it, low byte first):
 ``&H2C`` the top of BASIC's memory, ``&H30`` TXTTAB, ``&H358`` VARTAB, ``&H35A`` ARYTAB,
@@ -72,13 +73,15 @@ class Layout:
     element, element counts in subscript order))."""
 
     def __init__(self, rules, program: dict, scalars: dict, order, arrays: dict, held_dims: dict,
-                 fns: dict, literals: dict, base: int = 0):
+                 fns: dict, literals: dict, base: int = 0, places: dict | None = None):
         self.rules = rules
         self.memory: dict[int, int] = {}
         self.scalars: dict[str, int] = {}
         self.arrays: dict[str, tuple[int, tuple]] = {}
-        self.string_top = rules.string_top
-        self.text = tokenised_program(program, rules.text_start)
+        self.places = places or {}  # id -> (string, address): where the string space's strings lie
+        self.placed: dict = {}  # the same for the strings this layout put in the space
+        self.string_top = min([rules.string_top] + [address for _, address in self.places.values()])
+        self.text = _program_text(program, rules.text_start)
         self.literals = literals  # id -> string of the literals and DATA items (string_space.text)
         self._put(rules.text_start - 1, b"\0" + self.text)
         at = self.variables = rules.text_start + len(self.text)
@@ -104,6 +107,8 @@ class Layout:
             self.arrays[name] = (at + len(head) + 2 + len(rest), counts)
             at = self._put(at, head + (len(rest) + len(data)).to_bytes(2, "little") + rest + data)
         self.array_end = at
+        for text, address in list(self.places.values()) + list(self.placed.values()):
+            self._put(address, text.encode("latin-1", "replace"))
         self._put(MEMORY_TOP_AT, rules.memory_top.to_bytes(2, "little"))
         self._put(TEXT_AT, rules.text_start.to_bytes(2, "little"))
         for where, address in ((VARIABLES_AT, self.variables), (ARRAYS_AT, self.array_start),
@@ -128,12 +133,16 @@ class Layout:
         string space."""
         if not text:
             return 0
+        place = self.places.get(id(text))
+        if place is not None and place[0] is text:
+            return place[1]
         if len(text) == 1 or id(text) in self.literals:  # (one character: maybe a literal)
             found = self._in_text(text)
             if found is not None:
                 return found
         self.string_top -= len(text)
-        self._put(self.string_top, text.encode("latin-1", "replace"))
+        if id(text) not in self.literals:  # (a literal of a program gone: CHAIN copies it later)
+            self.placed[id(text)] = (text, self.string_top)
         return self.string_top
 
     def _in_text(self, text: str):
@@ -190,6 +199,24 @@ class Layout:
             index += (subscript - base) * stride
             stride *= count
         return first + index * TYPE_BYTES[type_of(name)]
+
+
+_TEXT: list = [None, None, b""]  # the last program laid out: (its lines, its start, its bytes)
+
+
+def _program_text(program: dict, start: int) -> bytes:
+    """:func:`tokenised_program`, kept for the same program (a PEEK loop lays it out again
+    for every byte it reads)."""
+    if _TEXT[0] != program or _TEXT[1] != start:
+        _TEXT[:] = [dict(program), start, tokenised_program(program, start)]
+    return _TEXT[2]
+
+
+def in_layout(offset: int, rules) -> bool:
+    """Does data-segment ``offset`` lie where the layout has bytes: GW's pointers to the
+    tables, or from the byte before the program up?"""
+    return offset >= rules.text_start - 1 or MEMORY_TOP_AT <= offset < TEXT_AT + 2 or (
+        VARIABLES_AT <= offset < ARRAYS_END_AT + 2)
 
 
 def _column_order(values, ndim: int, base: int):

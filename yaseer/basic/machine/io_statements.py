@@ -470,7 +470,9 @@ class InputOutput:
             if len(new) > 1 and id(new) in space.text:
                 changed[key] = new[:1] + new[1:]
             if len(current) > 1 and id(current) in space.text:
-                space.take_room(len(new))
+                space.take_room(changed[key])
+            elif space.places[0] is not None and id(current) in space.places[0]:  # (written in place)
+                space.places[0][id(changed[key])] = (changed[key], space.places[0][id(current)][1])
         variables.update(changed)
 
     def swap_fields(self, first, second, now_first: str, now_second: str) -> None:

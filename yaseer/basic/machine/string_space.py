@@ -72,6 +72,10 @@ class StringSpace:
         self.last: list = [None]  # the last string made (those used up at once are not)
         self.count = [0, -1]  # -1: count the free bytes at the next string
         self.base = None  # (strings held, count) at the last collection; None: none since a reset
+        # once a program reads the data segment (machine/data_segment.py): id -> (string, its
+        # address) of each string in the space, kept from then on (:meth:`track`); None before
+        self.places: list = [None]
+        self.top = 0  # the string space's end (an offset in the data segment) while tracked
 
     def keep_text(self, code) -> None:
         """Note the string literals of generated ``code`` (and of the code inside it): a
@@ -91,14 +95,47 @@ class StringSpace:
         self.count[1] = -1
         self.base = None
         self.last[0] = None
+        if self.places[0] is not None:
+            self.places[0] = {}
 
-    def take_room(self, size: int) -> None:
-        """A string of ``size`` bytes made outside the compiled code's helpers (LSET's copy):
-        counted as theirs are, a collection first where it does not fit."""
+    def take_room(self, text: str) -> None:
+        """String ``text`` made outside the compiled code's helpers (LSET's copy): counted
+        as theirs are, a collection first where it does not fit."""
         count = self.count
-        count[0] += size
+        count[0] += len(text)
         if count[0] > count[1]:
-            self.collect(size)
+            self.collect(len(text))
+        if self.places[0] is not None:
+            self.place(text)
+
+    def track(self, top: int, placed: dict) -> None:
+        """Keep, from now on, where each new string lies: the space ends at ``top``, the
+        strings the variables hold lie at ``placed`` (id -> (string, address)).  Each new
+        string goes at FRETOP, below the others and the garbage (BISTRS.ASM GETSPA); a
+        collection moves the strings kept up to the top in the order they lay (GARBAG)."""
+        self.top = top
+        self.places[0] = dict(placed)
+
+    def place(self, text: str) -> None:
+        """String ``text``, just made, lies at FRETOP: the top less the strings the last
+        collection kept and the bytes made since."""
+        held, made = self.base if self.base is not None else (0, 0)
+        self.places[0][id(text)] = (text, self.top - held - (self.count[0] - made))
+
+    def _compact(self, names: dict, operands: tuple = ()) -> None:
+        """GARBAG's moves, where the strings are tracked: those a variable holds, the
+        temporaries and ``operands`` go up to the top, the highest first."""
+        places = self.places[0]
+        if places is None:
+            return
+        keep = self.held(names) | {id(text) for text in self.temps} | {id(text) for text in operands}
+        at = self.top
+        moved = {}
+        for key, (text, address) in sorted(places.items(), key=lambda item: -item[1][1]):
+            if key in keep:
+                at -= len(text)
+                moved[key] = (text, at)
+        self.places[0] = moved
 
     def collect(self, needed: int, operands: tuple = ()) -> None:
         """GARBAG, after a string of ``needed`` bytes did not fit: room for it, or Out of
@@ -112,6 +149,7 @@ class StringSpace:
         free -= kept
         count[1] = count[0] + free
         self.base = (strings + kept, count[0])
+        self._compact(names, operands)
         if free < needed:
             raise BasicError("Out of string space", OUT_OF_STRING_SPACE)
         count[0] += needed
@@ -125,6 +163,7 @@ class StringSpace:
         self.count[1] = self.count[0] + free - kept
         self.base = (strings + kept, self.count[0])
         self.last[0] = None
+        self._compact(names)
         return free - kept
 
     def kept(self, names: dict, operands: tuple = ()) -> int:
@@ -165,6 +204,7 @@ class StringSpace:
         room (a collection where there is none) and leaves the count as it was."""
         count, collect, temps = self.count, self.collect, self.temps
         last, in_text = self.last, self.text
+        places, place = self.places, self.place  # (where the strings lie: only once tracked)
 
         def take(text: str) -> str:
             if id(text) in in_text:  # a literal's or DATA's: it stays where it is
@@ -174,6 +214,8 @@ class StringSpace:
             if made > count[1]:  # (what it copies is a variable's or outside the space)
                 collect(len(text))
             last[0] = text
+            if places[0] is not None:
+                place(text)
             return text
 
         def hold(text: str) -> str:
@@ -210,6 +252,8 @@ class StringSpace:
                 if made > count[1]:
                     collect(n, (a, b))
                 last[0] = text
+                if places[0] is not None:
+                    place(text)
                 if lets_go:
                     temps.pop()
                 return text
@@ -225,6 +269,8 @@ class StringSpace:
                 if made > count[1]:
                     collect(len(text), args)
                 last[0] = text
+                if places[0] is not None:
+                    place(text)
                 return text
             return made_by
 

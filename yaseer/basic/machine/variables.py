@@ -240,8 +240,13 @@ class Variables:
         made = self.made
         order = [name for name in made if name in scalars or name.startswith(memory_model.FN_KEY)]
         order += [name for name, value in scalars.items() if value and name not in made]
-        return Layout(self.dialect.data_segment, self.programs.get(0, {}), scalars, order, self.arrays,
-                      self.held_dims(), self.fns, self.string_space.text, self.subscript_base)
+        space = self.string_space
+        places = space.places[0]
+        layout = Layout(self.dialect.data_segment, self.programs.get(0, {}), scalars, order, self.arrays,
+                        self.held_dims(), self.fns, space.text, self.subscript_base, places)
+        if places is None:  # the strings' places are kept from now on (string_space.track)
+            space.track(self.dialect.data_segment.string_top, layout.placed)
+        return layout
 
     def held_dims(self) -> dict:
         """Each array's largest subscripts as GW's memory holds it: under OPTION BASE 1 one
