@@ -164,7 +164,7 @@ class AddressSpace:
             from yaseer.basic.machine.data_segment import in_layout
 
             if in_layout(data, self.variables.dialect.data_segment):
-                return self.variables.data_layout().memory.get(data, 0)
+                return self.variables.data_layout().byte(data)
         return 0
 
     def write(self, address: int, byte: int) -> None:

@@ -67,15 +67,15 @@ def value_bytes(kind: str, value) -> bytes:
 
 
 class Layout:
-    """The data segment from ``text_start - 1`` to STREND, with the strings above
-    (``memory``: address -> byte there), and where each variable's value lies
-    (``scalars``: full name -> address; ``arrays``: full name -> (address of the first
-    element, element counts in subscript order))."""
+    """The data segment from ``text_start - 1`` up, with the strings above, as it stands
+    (:meth:`byte`: the byte at an offset; a numeric array's elements are read only where a
+    PEEK reads them), and where each variable's value lies (``scalars``: full name ->
+    address; ``arrays``: full name -> (address of the first element, element counts in
+    subscript order))."""
 
     def __init__(self, rules, program: dict, scalars: dict, order, arrays: dict, held_dims: dict,
                  fns: dict, literals: dict, base: int = 0, places: dict | None = None):
         self.rules = rules
-        self.memory: dict[int, int] = {}
         self.scalars: dict[str, int] = {}
         self.arrays: dict[str, tuple[int, tuple]] = {}
         self.places = places or {}  # id -> (string, address): where the string space's strings lie
@@ -83,43 +83,72 @@ class Layout:
         self.string_top = min([rules.string_top] + [address for _, address in self.places.values()])
         self.text = _program_text(program, rules.text_start)
         self.literals = literals  # id -> string of the literals and DATA items (string_space.text)
-        self._put(rules.text_start - 1, b"\0" + self.text)
+        self.base = base
+        self._strings = None  # address -> byte of the strings, made when a PEEK reads there
+        table = bytearray()
         at = self.variables = rules.text_start + len(self.text)
         for name in order:
             if name.startswith(FN_KEY):
                 name = name[len(FN_KEY):]
                 if name in fns:
-                    at = self._function(at, name)
+                    table += self._function(at + len(table), name)
                 continue
             value = scalars.get(name)
             if value is None:
                 continue
             head = name_bytes(name)
-            self.scalars[name] = at + len(head)
-            at = self._put(at, head + self._value(name, value))
-        self.array_start = at
+            self.scalars[name] = at + len(table) + len(head)
+            table += head + self._value(name, value)
+        self.table = bytes(table)
+        at = self.array_start = self.variables + len(table)
+        self.parts = []  # (start, first element, end, header, the elements' bytes or None: read when peeked, name, values)
         for name, values in arrays.items():
             counts = tuple(d + 1 for d in held_dims[name])
-            data = b"".join(self._value(name, v) for v in _column_order(values, len(counts), base))
+            size = TYPE_BYTES[type_of(name)]
+            elements = 1
+            for n in counts:
+                elements *= n
+            data = None
+            if name.endswith("$"):  # (the descriptors now: their strings are placed in this order)
+                data = b"".join(self._value(name, v) for v in _column_order(values, len(counts), base))
             head = name_bytes(name)
-            sizes = b"".join(n.to_bytes(2, "little") for n in reversed(counts))
-            rest = bytes((len(counts),)) + sizes
-            self.arrays[name] = (at + len(head) + 2 + len(rest), counts)
-            at = self._put(at, head + (len(rest) + len(data)).to_bytes(2, "little") + rest + data)
+            rest = bytes((len(counts),)) + b"".join(n.to_bytes(2, "little") for n in reversed(counts))
+            header = head + (len(rest) + elements * size).to_bytes(2, "little") + rest
+            first = at + len(header)
+            self.arrays[name] = (first, counts)
+            self.parts.append((at, first, first + elements * size, header, data, name, values))
+            at = first + elements * size
         self.array_end = at
-        for text, address in list(self.places.values()) + list(self.placed.values()):
-            self._put(address, text.encode("latin-1", "replace"))
-        self._put(MEMORY_TOP_AT, rules.memory_top.to_bytes(2, "little"))
-        self._put(TEXT_AT, rules.text_start.to_bytes(2, "little"))
-        for where, address in ((VARIABLES_AT, self.variables), (ARRAYS_AT, self.array_start),
+        self.low: dict[int, int] = {}  # GW's pointers below the program
+        for where, address in ((MEMORY_TOP_AT, rules.memory_top), (TEXT_AT, rules.text_start),
+                               (VARIABLES_AT, self.variables), (ARRAYS_AT, self.array_start),
                                (ARRAYS_END_AT, self.array_end)):
-            self._put(where, address.to_bytes(2, "little"))
+            self.low[where], self.low[where + 1] = address & 0xFF, address >> 8
 
-    def _put(self, at: int, data: bytes) -> int:
-        memory = self.memory
-        for i, byte in enumerate(data):
-            memory[at + i] = byte
-        return at + len(data)
+    def byte(self, offset: int) -> int:
+        """The byte at data-segment ``offset`` (0 where nothing lies)."""
+        if offset in self.low:
+            return self.low[offset]
+        k = offset - self.rules.text_start
+        if -1 <= k < len(self.text):
+            return self.text[k] if k >= 0 else 0
+        if self.variables <= offset < self.array_start:
+            return self.table[offset - self.variables]
+        if self.array_start <= offset < self.array_end:
+            for start, first, end, header, data, name, values in self.parts:
+                if start <= offset < end:
+                    if offset < first:
+                        return header[offset - start]
+                    if data is not None:
+                        return data[offset - first]
+                    index, k = divmod(offset - first, TYPE_BYTES[type_of(name)])
+                    return self._value(name, _element(values, index, self.arrays[name][1], self.base))[k]
+        if self._strings is None:
+            self._strings = {}
+            for text, address in list(self.places.values()) + list(self.placed.values()):
+                for i, code in enumerate(text.encode("latin-1", "replace")):
+                    self._strings[address + i] = code
+        return self._strings.get(offset, 0)
 
     def _value(self, name: str, value) -> bytes:
         kind = type_of(name)
@@ -155,14 +184,14 @@ class Layout:
         where = self.text.find(data)
         return None if where < 0 else self.rules.text_start + where
 
-    def _function(self, at: int, name: str) -> int:
-        """A DEF FN's entry: its value the address after its name in the DEF statement."""
+    def _function(self, at: int, name: str) -> bytes:
+        """A DEF FN's entry at ``at``: its value the address after its name in the DEF statement."""
         head = bytearray(name_bytes(name))
         head[1] |= FUNCTION_BIT
         self.scalars[FN_KEY + name] = at + len(head)
         size = TYPE_BYTES[type_of(name)]
         pointer = self._definition(name)
-        return self._put(at, bytes(head) + (pointer.to_bytes(2, "little") + bytes(8))[:size])
+        return bytes(head) + (pointer.to_bytes(2, "little") + bytes(8))[:size]
 
     def _definition(self, name: str) -> int:
         """The address after ``FN name`` (and the blanks after it) in the program's DEF."""
@@ -199,6 +228,18 @@ class Layout:
             index += (subscript - base) * stride
             stride *= count
         return first + index * TYPE_BYTES[type_of(name)]
+
+
+def _element(values, index: int, counts: tuple, base: int):
+    """Element ``index`` (in GW's order, the first subscript fastest) of nested lists
+    ``values`` holding ``counts`` elements a dimension (from ``base``)."""
+    subscripts = []
+    for count in counts:
+        index, subscript = divmod(index, count)
+        subscripts.append(subscript + base)
+    for subscript in subscripts:
+        values = values[subscript]
+    return values
 
 
 _TEXT: list = [None, None, b""]  # the last program laid out: (its lines, its start, its bytes)
