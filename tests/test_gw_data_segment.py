@@ -189,3 +189,18 @@ def test_chain_copies_a_common_literal_below_the_other_strings(tmp_path):
     source = '10 COMMON A$, B$\n20 A$ = "lit": B$ = "mad" + "e": CHAIN "NEXT.BAS"\n'
     assert yaseer_run(source, tmp_path) == ""
     assert (tmp_path / "O.TXT").read_bytes().split() == [str(65021 - 4 - 3).encode(), str(65021 - 4).encode(), b"\x1a"]
+
+
+@pytest.mark.parametrize("statement, expected", [
+    ("A% = 1: P$ = VARPTR$(A%): PRINT ASC(P$); CVI(MID$(P$, 2)) = VARPTR(A%)", " 2 -1 \n"),
+    ("PRINT VARPTR$(", "Syntax error in 10\n"),
+    ('PRINT VARPTR$("ABC")', "Syntax error in 10\n"),
+    ("PRINT VARPTR$(1)", "Syntax error in 10\n"),
+    ("PRINT VARPTR$(A, 1)", "Syntax error in 10\n"),
+    ("PRINT VARPTR$", "Syntax error in 10\n"),
+])
+def test_varptr_dollar_reads_a_variable_as_varptr_does(tmp_path, statement, expected):
+    """VARPTR$ is VARPTR's string: the type byte and the address, low byte first
+    (GWEVAL.ASM VARPTR); its argument must be a variable, else Syntax error, cut short too
+    (recorded: unsorted/VARPTR, lines 1050-1340)."""
+    assert yaseer_run(f"10 {statement}\n", tmp_path) == expected

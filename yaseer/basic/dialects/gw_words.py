@@ -26,7 +26,7 @@ FUNCTIONS = {
     # GWEVAL.ASM VARPTR: "(" then a variable (PTRGTN; form "v": a variable, else Syntax error)
     "VARPTR": ("FUNCN", ("v",), "n", "_M.address_space.variable_pointer"),
     # GWEVAL.ASM VARPTR with "$": the variable's type byte and address as a 3-byte string
-    "VARPTR$": ("FUNC", ("v",), "s", "_M.address_space.variable_pointer_string"),
+    "VARPTR$": ("FUNCN", ("v",), "s", "_M.address_space.variable_pointer_string"),
     # the game port and the light pen (GWSTS.ASM STICKF, STRIGF, PENF: ONESUB reads a byte)
     "STICK": ("FUNC", ("i",), "n", "_M.devices.stick"),
     "STRIG": ("FUNC", ("i",), "n", "_M.devices.trigger"),
