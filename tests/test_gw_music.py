@@ -54,10 +54,12 @@ def test_the_music_language_is_read_as_maclng_reads_it(tmp_path):
 
 def test_play_function_counts_the_notes_waiting(tmp_path):
     """PLAY(n): n a byte after CINT (recording PLAYFN: -1 and 256 Illegal function call, 32768
-    Overflow, a string Type mismatch); nothing queued: 0."""
+    Overflow, a string Type mismatch); nothing queued: 0; the argument is read and checked
+    before the ``)`` is looked for (PLAYFN: ``PLAY("ABC"`` Type mismatch, ``PLAY(1`` Syntax error)."""
     lines = ["PRINT PLAY(300)", "PRINT PLAY(-2)", "PRINT PLAY(40000)", 'PRINT PLAY("X")', "PRINT PLAY(7.4)",
-             "PRINT PLAY", "PRINT PLAY(1, 2)"]
-    assert run(errors_program(lines), tmp_path) == " 5  10 \n 5  20 \n 6  30 \n 13  40 \n 0 \n 2  60 \n 2  70 \n"
+             "PRINT PLAY", "PRINT PLAY(1, 2)", 'X = PLAY("Y"', "X = PLAY(3", "X = PLAY(999", "X = PLAY("]
+    assert run(errors_program(lines), tmp_path) == (" 5  10 \n 5  20 \n 6  30 \n 13  40 \n 0 \n 2  60 \n 2  70 \n"
+                                                    " 13  80 \n 2  90 \n 5  100 \n 22  110 \n")
 
 
 def timed(statement: str) -> str:

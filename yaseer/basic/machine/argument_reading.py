@@ -101,9 +101,16 @@ def _one():
     yield ")"
 
 
+def _byte_first():
+    """A function that reads its argument as a byte before its ``)`` (PLAY(n): the recording
+    PLAYFN shows ``PLAY("ABC"`` Type mismatch, ``PLAY(1`` Syntax error)."""
+    _byte((yield "e"))
+    yield ")"
+
+
 # (the names are Dialect.argument_readings of gw)
 READINGS = {"INSTR": _instr, "STRING$": _string_dollar, "LEFT$": _left_right, "RIGHT$": _left_right,
-            "MID$": _mid}
+            "MID$": _mid, "PLAY": _byte_first}
 
 
 def reading_of(name: str, one_argument: bool):

@@ -1348,8 +1348,8 @@ def _cut_expression(tokens: list, start: int, err: BasicError, dialect: Dialect)
             opens.append(k)
         elif tokens[k].type == "_RPAR" and opens:
             opens.pop()
-    calls = [k for k in opens if k > start and (tokens[k - 1].type == "FUNCN" or (
-        tokens[k - 1].type == "FUNC" and k + 1 < len(tokens) and tokens[k + 1].type == "HASH"))]
+    calls = [k for k in opens if k > start and (tokens[k - 1].type == "FUNCN" or tokens[k - 1].type == "FUNC" and (
+        k + 1 < len(tokens) and tokens[k + 1].type == "HASH" or tokens[k - 1].value in dialect.argument_readings))]
     if calls:
         paren = calls[-1]
         node = _cut_call(tokens, paren, at, err)
