@@ -143,3 +143,15 @@ def test_only_programs_with_music_import_it(tmp_path, listing, imported):
     path = tmp_path / "music.bas"
     path.write_text(listing)
     assert warm_run(path, tmp_path / "cache", MUSIC_MODULES, ("--dialect", "gw"))[1] == imported
+
+
+def test_a_varptr_string_is_read_at_its_address(tmp_path):
+    """X and = followed by a type byte below 9 and an address read the variable there
+    (MACLNG.ASM SCNVAR, RETVAR): here bytes POKEd into the data segment, a string descriptor
+    (length 3, address 1010) over "CDE" and an integer 40 at 1020: four notes of 1 s (T60
+    ML L4), the last starting after 3 s; type byte 7 is no variable's."""
+    program = ("10 DEF SEG: POKE 1000, 3: POKE 1001, 1010 MOD 256: POKE 1002, 1010 \\ 256\n"
+               "20 POKE 1010, 67: POKE 1011, 68: POKE 1012, 69: POKE 1020, 40: POKE 1021, 0\n"
+               '30 PLAY "T60 ML": ' + timed('PLAY "X" + CHR$(3) + MKI$(1000) + "N=" + CHR$(2) + MKI$(1020)') + "\n"
+               '40 PLAY "N=" + CHR$(7) + MKI$(1020)\n')
+    assert run(program, tmp_path) == " 3.0 0 \nIllegal function call in 40\n"
