@@ -700,31 +700,42 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit(f"raise _err({stmt.error.message!r}, {stmt.error.code})")
 
     def stmt_DefFn(self, stmt, scope):
+        self.fn_count += 1
+        fname = function = f"_fn_{self.fn_count}"
+        params = ", ".join("p" + local_name(self.numbers.name(p)) for p in stmt.params)
+        if not self.dynamic_types:
+            self.prelude.append(f"def {fname}({params}):\n    {self.fn_body(stmt, self.numbers.kind(stmt.name))}\n")
+        else:
+            # the parameters and the body's names typed by the DEF types when it is called
+            # (each variant of the area has its own function, found by name then), its result
+            # by the type its name had when the DEF ran (GWEVAL.ASM FNDOFN: the value is
+            # checked against the function's variable, made by DEF): one for each such type
+            function = repr(function)
+            results = (stmt.name[-1],) if stmt.name[-1] in "$%!#" else ("$", "%", "!", "#")
+            for result in results:
+                name = variant_function(fname, self.numbers.def_types(), result)
+                self.prelude.append(f"def {name}({params}):\n    {self.fn_body(stmt, 's' if result == '$' else result)}\n")
+        names = tuple(self.numbers.name(p) for p in stmt.params)  # DEF's PTRGET makes each one's variable
+        self.emit(f"_dfn({self.numbers.name(stmt.name)!r}, {function}, {names!r})")
+
+    def fn_body(self, stmt, fn_kind: str) -> str:
+        """The Python statement of DEF FN ``stmt``'s body giving a value of type ``fn_kind``
+        (``"s"`` or a number's type character): its value converted, or its error."""
         try:
             if isinstance(stmt.body, BasicError):
                 raise stmt.body
             fn_scope = FnScope(self, stmt.params)
             body, kind = self.expr(stmt.body, fn_scope)
-            fn_kind = self.numbers.kind(stmt.name)
             if (kind == "s") != (fn_kind == "s"):
                 raise type_mismatch()
             if kind != "s":
                 body = self.numbers.convert(body, kind, fn_kind)
-            code = f"return {body}"
+            return f"return {body}"
         except BasicError as err:
             if not self.late_errors:
                 raise
             # GW-BASIC's DEF only notes where the body is: its errors come when it is called
-            code = f"raise _err({err.message!r}, {err.code})"
-        self.fn_count += 1
-        fname = function = f"_fn_{self.fn_count}"
-        if self.dynamic_types:  # the body's names typed when it is called: each variant has its
-            fname = variant_function(fname, self.numbers.def_types())  # own, found by name then
-            function = repr(function)
-        params = ", ".join("p" + local_name(self.numbers.name(p)) for p in stmt.params)
-        self.prelude.append(f"def {fname}({params}):\n    {code}\n")
-        names = tuple(self.numbers.name(p) for p in stmt.params)  # DEF's PTRGET makes each one's variable
-        self.emit(f"_dfn({self.numbers.name(stmt.name)!r}, {function}, {names!r})")
+            return f"raise _err({err.message!r}, {err.code})"
 
     def stmt_DefType(self, stmt, scope):
         """Applied to the whole area before compiling where that gives GW's types
@@ -949,8 +960,10 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
                 self.data.extend((item, number) for item in split_data(s.text))
         for _, stmt in self.flat:
             for s in ([] if isinstance(stmt, BasicError) else walk_statements(stmt)):
-                if isinstance(s, ast.DefFn):
-                    self.fn_params.setdefault(self.numbers.name(s.name), s.params)
+                if isinstance(s, ast.DefFn):  # (a name typed by the DEF types as the DEF runs: each type)
+                    typed = self.dynamic_types and s.name[-1] not in "$%!#"
+                    for name in [s.name + c for c in "$%!#"] if typed else [self.numbers.name(s.name)]:
+                        self.fn_params.setdefault(name, s.params)
         self.walk(0, len(self.flat))
         end = self.entry_block[len(self.flat)]
         if self.cur is not None:

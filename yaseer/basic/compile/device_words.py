@@ -37,7 +37,7 @@ def _argument(compiler, arg, kind: str, scope) -> tuple[str | None, int | None]:
     if kind == "v":
         error = _routine_error(arg)
         return ("None", None) if error is None else (None, error)
-    is_string = ast.expr_type(arg) == "s"
+    is_string = compiler.type_of(arg) == "s"
     if is_string != (kind == "s"):
         return None, TYPE_MISMATCH
     if kind == "s":
@@ -106,7 +106,7 @@ def _event_index(compiler, stmt, form: str | None, scope) -> tuple[str | None, i
         return None, SYNTAX_ERROR
     if stmt.index is None:
         return "None", None
-    if ast.expr_type(stmt.index) == "s":
+    if compiler.type_of(stmt.index) == "s":
         return None, TYPE_MISMATCH
     if form == "seconds":
         return compiler.numeric(stmt.index, scope), None

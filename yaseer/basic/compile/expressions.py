@@ -221,24 +221,25 @@ def calls_fn(node) -> bool:
     return isinstance(node, ast.Call) and any(calls_fn(a) for a in node.args)
 
 
-def makes_string(node) -> bool:
-    """Can evaluating ``node`` make a new string (take string space, maybe collect)?"""
+def makes_string(node, named=None) -> bool:
+    """Can evaluating ``node`` make a new string (take string space, maybe collect)?
+    (``named``: the type of a name, as for ``syntax_tree.expr_type``.)"""
     if isinstance(node, (ast.Call, ast.SysVar)) and node.name.endswith("$"):
         return True
     if isinstance(node, ast.FnCall) or (isinstance(node, ast.Binary) and node.op == "+"
-                                         and ast.expr_type(node) == "s"):
+                                         and ast.expr_type(node, named) == "s"):
         return True
     if isinstance(node, ast.Binary):
-        return makes_string(node.left) or makes_string(node.right)
+        return makes_string(node.left, named) or makes_string(node.right, named)
     if isinstance(node, ast.Unary):
-        return makes_string(node.operand)
+        return makes_string(node.operand, named)
     return isinstance(node, (ast.Call, ast.Elem)) and any(
-        makes_string(arg) for arg in (node.args if isinstance(node, ast.Call) else node.indices))
+        makes_string(arg, named) for arg in (node.args if isinstance(node, ast.Call) else node.indices))
 
 
-def _temporary(node) -> bool:
+def _temporary(node, named=None) -> bool:
     """Is ``node``'s value a string an operation made (not a variable's or a literal)?"""
-    return ast.expr_type(node) == "s" and not isinstance(node, (ast.Str, ast.Var, ast.Elem))
+    return ast.expr_type(node, named) == "s" and not isinstance(node, (ast.Str, ast.Var, ast.Elem))
 
 
 _MAKERS = frozenset(helper for _, result, helper in _FUNCTIONS.values() if result == "s") | {"_cat"}
@@ -272,10 +273,11 @@ class ExpressionCompiler:
         if not self.counts_strings:
             return 0
         held = 0
+        named = self.numbers.kind
         for k, node in enumerate(nodes):
-            if not _temporary(node):
+            if not _temporary(node, named):
                 continue
-            if any(makes_string(later) for later in nodes[k + 1:]):
+            if any(makes_string(later, named) for later in nodes[k + 1:]):
                 codes[k] = f"_hold({codes[k]})"
                 held += 1
             elif used_up:
@@ -324,7 +326,12 @@ class ExpressionCompiler:
         """The type of a variable, array element or FN reference (``"s"`` or numeric)."""
         if isinstance(node, (ast.Var, ast.Elem, ast.FnCall)):
             return self.numbers.kind(node.name)
-        return ast.expr_type(node)
+        return ast.expr_type(node, self.numbers.kind)
+
+    def type_of(self, node) -> str:
+        """``"s"`` or ``"n"``: the type of expression ``node``, its names typed as the
+        DEF types of this compile make them (gw's DEFSTR)."""
+        return ast.expr_type(node, self.numbers.kind)
 
     def string(self, node, scope) -> str:
         code, kind = self.expr(node, scope)
@@ -432,10 +439,10 @@ class ExpressionCompiler:
         # as it is made a single: the general call below)
         if node.name == "RND" and (not args or (len(args) == 1 and 0 < (constant_value(args[0]) or 0) < 1e38)):
             return self.numbers.call("RND", "_rndf", [], [], "n")  # the next number (the generator's drawer)
-        if node.name in ast.KEEPS_STRINGS and self.numbers.typed and len(args) == 1 and ast.expr_type(args[0]) == "s":
+        if node.name in ast.KEEPS_STRINGS and self.numbers.typed and len(args) == 1 and self.type_of(args[0]) == "s":
             return self.string(args[0], scope), "s"
         try:
-            form = _call_form(forms, [ast.expr_type(arg) for arg in args])
+            form = _call_form(forms, [self.type_of(arg) for arg in args])
         except CompileError as err:
             if own or not _read_in_order(node.name, forms, self.reads_arguments_in_order):
                 raise
@@ -443,7 +450,7 @@ class ExpressionCompiler:
                 "s" if result == "s" else self.numbers.integer)
         codes, kinds = [], []
         for arg, want in zip(args, form):
-            if want == "s" or (want == "x" and ast.expr_type(arg) == "s"):
+            if want == "s" or (want == "x" and self.type_of(arg) == "s"):
                 code, kind = self.string(arg, scope), "s"
             elif want == "i":
                 code, kind = self.integer(arg, scope), "%"
@@ -503,7 +510,7 @@ class ExpressionCompiler:
             if len(params) != len(node.args):
                 raise syntax_error()
             for param, arg in zip(params, node.args):
-                if (ast.expr_type(arg) == "s") != (self.numbers.kind(param) == "s"):
+                if (self.type_of(arg) == "s") != (self.numbers.kind(param) == "s"):
                     raise type_mismatch()
         scope.uses_fn = True
         args = []
@@ -521,7 +528,7 @@ class ExpressionCompiler:
         helper = self.device_words.file_functions.get(node.name) if self.device_words else None
         if helper is None:
             raise syntax_error()
-        if ast.expr_type(node.number) == "s":
+        if self.type_of(node.number) == "s":
             raise type_mismatch()
         result = "s" if node.name.endswith("$") else "n"
         return self.numbers.call(node.name, helper, [self.numeric(node.number, scope)], ["n"], result)

@@ -54,10 +54,13 @@ def initial_value(name: str):
 _TYPE_LETTERS = str.maketrans("%!#$", "isdt")  # a type character as a letter of a Python name
 
 
-def variant_function(name: str, table: dict) -> str:
+def variant_function(name: str, table: dict, result: str = "") -> str:
     """The Python name of DEF FN function ``name`` in the variant of an area compiled for the
-    DEF type table ``table`` (letter -> type character): ``_fn_1_ssis...``, a letter per A..Z."""
-    return name + "_" + "".join(table.get(chr(c), "!") for c in range(65, 91)).translate(_TYPE_LETTERS)
+    DEF type table ``table`` (letter -> type character): ``_fn_1_ssis...``, a letter per A..Z;
+    ``result``: the type character the function had when its DEF ran (``$ % ! #``), a last
+    letter (``_fn_1_ssis..._t``)."""
+    letters = "".join(table.get(chr(c), "!") for c in range(65, 91)).translate(_TYPE_LETTERS)
+    return f"{name}_{letters}" + (f"_{result.translate(_TYPE_LETTERS)}" if result else "")
 
 
 class PlainNumbers:

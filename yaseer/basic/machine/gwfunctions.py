@@ -227,6 +227,11 @@ def read_number(text: str, reading: NumberReading | None = None) -> tuple[float,
     return value, end
 
 
+# CHR$(28), CHR$(29), CHR$(31): the bytes that mark a constant inside a tokenised line
+# (GWMAIN.ASM INTCON, SNGCON, DBLCON), which the number reader's CHRGTR takes as such
+_CONSTANT_TOKENS = frozenset("\x1c\x1d\x1f")
+
+
 def val_typed(text: str, reading: NumberReading | None) -> tuple[float, str]:
     """VAL in gw: the number (:func:`read_number`) and its type as GW-BASIC's VAL gives
     them.  VAL reads with ``FINDBL`` (BISTRS.ASM VAL; MATH1.ASM ``$FINDB``, the reader's
@@ -234,11 +239,18 @@ def val_typed(text: str, reading: NumberReading | None) -> tuple[float, str]:
     (``VAL("1.1")`` is the double 1.1); only a ``!`` after the number makes it single
     (``$FINS``), whose value is the one GW's conversion gives (``values.single_literal``).
     ``&H``/``&O`` numbers are GW's integers (``OCTCNS``), kept as singles of the same value.
-    Beyond the range infinite."""
+    Beyond the range infinite.  A decimal number followed by CHR$(28), CHR$(29) or
+    CHR$(31) (blanks between allowed) is 0: the reader's CHRGTR meets an embedded
+    constant's token there (GWMAIN.ASM ``CHRCON``), and a real GW-BASIC 3.23 gives 0
+    (``VAL("1" + CHR$(28) + "2")``: the recorded unsorted/VAL test of PC-BASIC's suite;
+    PC-BASIC 2.0.8 agrees)."""
     value, end, kind, literal = _read(text, reading)
     if not literal:
         return value, "!"
-    if text[end:].lstrip(_BLANKS)[:1] != "!":
+    after = text[end:].lstrip(_BLANKS)[:1]
+    if after in _CONSTANT_TOKENS:
+        return 0.0, "#"
+    if after != "!":
         return value, "#"
     if 0.0 < abs(value) < math.inf:
         from yaseer.basic.arithmetic.values import single_literal, to_single

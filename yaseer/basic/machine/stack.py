@@ -170,8 +170,8 @@ class ControlStack:
         function, expected = entry
         if expected != nargs:
             raise BasicError("Syntax error", SYNTAX_ERROR)
-        if type(function) is str:  # its body typed by the DEF types of now: the variant's function
-            return self.namespaces[0][variant_function(function, self.def_types)]
+        if type(function) is str:  # its body typed by the DEF types of now, its result as DEF made it
+            return self.namespaces[0][variant_function(function, self.def_types, name[-1])]
         return function
 
     def _stopper(self, area):

@@ -165,22 +165,26 @@ STRING_FUNCTIONS = frozenset({"STR$", "CHR$", "LEFT$", "RIGHT$", "MID$"})
 KEEPS_STRINGS = frozenset(("ABS", "INT"))
 
 
-def expr_type(node) -> str:
-    """``"s"`` for a string-valued expression, ``"n"`` for a number."""
+def expr_type(node, named=None) -> str:
+    """``"s"`` for a string-valued expression, ``"n"`` for a number.  ``named``: the type
+    (``"s"`` or another) of a variable's or FN's name, where it is not the name's own
+    character alone (gw's DEFSTR: compile.number_models); default: a name ending in ``$``."""
     if isinstance(node, Str):
         return "s"
     if isinstance(node, (Var, Elem, FnCall)):
+        if named is not None:
+            return "s" if named(node.name) == "s" else "n"
         return "s" if node.name.endswith("$") else "n"
     if isinstance(node, Call) and node.name in KEEPS_STRINGS and len(node.args) == 1:
-        return expr_type(node.args[0])
+        return expr_type(node.args[0], named)
     if isinstance(node, (Call, SysVar, CutCall)):
         return "s" if node.name.endswith("$") else "n"
     if isinstance(node, CutExpression):
-        return expr_type(node.read)
+        return expr_type(node.read, named)
     if isinstance(node, Unary) and node.op in "+-":  # (-A$ is A$ in GW)
-        return expr_type(node.operand)
+        return expr_type(node.operand, named)
     if isinstance(node, Binary) and node.op == "+":
-        return expr_type(node.left)
+        return expr_type(node.left, named)
     return "n"
 
 
