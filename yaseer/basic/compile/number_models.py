@@ -424,6 +424,8 @@ class TypedNumbers(PlainNumbers):
                 if kinds and kinds[0] in "#?":  # its argument made a single first: beyond it Overflow (MATH1.ASM RND: FRCSNG)
                     code = f"{helper}({self.convert(codes[0], '#', '!')})"
                 return code, "!"
+            if name == "CVS":  # already a single: its 4 bytes (a -0.0 kept: gwfunctions._signed_zero)
+                return code, "!"
             if name in self._SINGLE_FUNCTIONS and kinds and kinds[0] in "#?":  # computed on the single
                 code = f"{helper}({', '.join([self.convert(codes[0], '#', '!')] + codes[1:])})"
             if name in self._STEPPED_FUNCTIONS and self.tests_inline:

@@ -150,10 +150,11 @@ def cvi(s: str) -> float:
 
 
 def _to_mbf(x: float, mantissa_bits: int) -> bytes:
-    """``x`` in Microsoft Binary Format with a ``mantissa_bits`` mantissa (rounded half up)."""
+    """``x`` in Microsoft Binary Format with a ``mantissa_bits`` mantissa (rounded half up).
+    A zero is all zero bytes; -0.0 has the sign bit (see :func:`_signed_zero`)."""
     size = mantissa_bits // 8 + 1
     if x == 0:
-        return bytes(size)
+        return _signed_zero(x, size)
     m, e = math.frexp(abs(x))  # abs(x) = m * 2**e, 0.5 <= m < 1
     mantissa = math.floor(m * 2 ** mantissa_bits + 0.5)
     if mantissa >= 2 ** mantissa_bits:  # rounding carried into a new leading bit
@@ -170,10 +171,20 @@ def _to_mbf(x: float, mantissa_bits: int) -> bytes:
     return mantissa.to_bytes(size - 1, "little") + bytes((exponent,))
 
 
+def _signed_zero(x: float, size: int) -> bytes:
+    """The ``size`` bytes of zero ``x``: GW-BASIC negates a single or double by flipping its
+    sign bit, a zero's too (MATH1.ASM ``$NEG``: XOR of the sign byte), so ``-Z!`` of a zero is
+    a zero whose bytes hold the sign (MKS$ gives 00 00 80 00: the recorded unsorted/NEGZERO
+    test of PC-BASIC's suite); yaseer's -0.0 is that zero, 0.0 the one with no sign."""
+    if math.copysign(1.0, x) > 0:
+        return bytes(size)
+    return bytes(size - 2) + b"\x80\x00"
+
+
 def _from_mbf(data: bytes) -> float:
     exponent = data[-1]
-    if exponent == 0:
-        return 0.0
+    if exponent == 0:  # zero, whatever the mantissa; the sign bit kept (CVS of MKS$(-Z!))
+        return -0.0 if data[-2] & 0x80 else 0.0
     bits = 8 * (len(data) - 1)
     mantissa = int.from_bytes(data[:-1], "little")
     negative = mantissa >> (bits - 1)
@@ -187,7 +198,9 @@ def mks(x: float) -> str:
 
 
 def mkd(x: float) -> str:
-    """MKD$: the 8 bytes of a double (a Wide's own 56 bits)."""
+    """MKD$: the 8 bytes of a double (a Wide's own 56 bits; -0.0's sign: :func:`_signed_zero`)."""
+    if x == 0:
+        return _bytes_to_str(_signed_zero(x, 8))
     return _bytes_to_str(mbf_double.to_bytes(values.double_parts(x)))
 
 
@@ -197,7 +210,10 @@ def cvs(s: str) -> float:
 
 def cvd(s: str) -> float:
     """CVD: the double of 8 bytes, all 56 bits of it (a Wide where a float cannot hold them)."""
-    return values.double_of(mbf_double.from_bytes(_str_to_bytes(s, 8)))
+    data = _str_to_bytes(s, 8)
+    if not data[7]:  # zero, its sign kept (as _from_mbf)
+        return -0.0 if data[6] & 0x80 else 0.0
+    return values.double_of(mbf_double.from_bytes(data))
 
 
 # ------------------------------------------------------------------ reading numbers
