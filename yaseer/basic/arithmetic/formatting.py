@@ -383,10 +383,13 @@ def _scientific_body(x: float, field: NumericField) -> str:
     (``D`` for a gw double, :class:`Shown`).
 
     Zero shows no digit left of the point (GW-BASIC prints ``  E+00`` for
-    ``##^^^^``); with no mantissa digit at all only the exponent is shown.
+    ``##^^^^``); with no mantissa digit at all only the exponent is shown.  A double
+    zero in a field without a point shows one ``0`` (``   0D+00`` for ``####^^^^``: a
+    real GW-BASIC 3.23 so, the recorded unsorted/USING test of PC-BASIC's suite, and
+    PC-BASIC 2.0.8; a single's ``    E+00`` beside it).
     """
     if x == 0:
-        mantissa, exponent = ("." + "0" * field.decimals) if field.point else "", 0
+        mantissa, exponent = ("." + "0" * field.decimals) if field.point else ("0" if type(x) is Shown else ""), 0
     else:
         from decimal import localcontext
 

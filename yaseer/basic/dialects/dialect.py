@@ -132,11 +132,12 @@ FIELDS = (
     "clear_readings",  # tuple[str, ...]: ()
     "line_number_digits",  # bool: False
     "data_segment",  # DataSegmentRules | None: None
+    "point_after_name_is_text",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
             None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None, False, (),
-            False, False, (), False, None)
+            False, False, (), False, None, False)
 
 # Where BASIC's data segment puts the program and the strings (offsets in the segment, bytes;
 # machine/data_segment.py): ``text_start`` the program's first line (TXTTAB), ``string_top``
@@ -237,6 +238,11 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         DONUM, LINRES and LINGET), so ``ERL(1.5)`` and ``ERL(65536)`` are Syntax errors and
         ``ERL(32768)`` is ERL, then 32768 (recorded in PC-BASIC's ERL test).  False (casio):
         numbers are read alike everywhere.
+        ``point_after_name_is_text``: True (GW-BASIC 3.23): a number that begins with
+        ``.`` after a name and blanks (``OPEN "a" FOR OUTPUT AS .6``, ``PRINT A .5``) is a
+        Syntax error where it is read: CRUNCH keeps digits and points after a name as
+        text (GWMAIN.ASM, its number flag left as a name's), and EVAL reads no number
+        from a ``.`` there (GWEVAL.ASM EVAL: FIN only for a digit); False: it is a number.
 
     Messages
         ``names_missing_line``: True (Casio, as yaseer has always named it) says which
@@ -493,6 +499,7 @@ GW = Dialect(
     # GW-BASIC 3.23 with /F:3 /S:128, as the recordings of the real machine read it: the program
     # from 4718 (&H30), the first string ending at 65021 (PEEK of VARPTR(A$)), &H2C holding 65534
     data_segment=DataSegmentRules(text_start=4718, string_top=65021, memory_top=65534),
+    point_after_name_is_text=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

@@ -575,11 +575,13 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None, beg
     i = begin
     n = len(text)
     line_numbers = False  # (Dialect.line_number_digits) a digit here starts a line number
+    name_text = False  # after a name CRUNCH keeps as letters, and blanks (point_after_name_is_text)
     while i < n:
         ch = upper[i]
         start = i
         if ch in " \t\r\n":
             i += 1
+            name_text = name_text and ch == " "
             continue
         if line_numbers and (ch.isdigit() or ch == "."):
             if ch == ".":  # stored as it is (GWMAIN.ASM NUMTRY: "EDIT ."), read as a number 0
@@ -589,6 +591,9 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None, beg
                 number, i = linget(upper, i)
                 yield "NUMBER", (float(number), "!"), start, i
             continue
+        if name_text and ch == "." and dialect.point_after_name_is_text:
+            raise _syntax_error()
+        name_text = False
         if ch == '"':
             value, i = _scan_string(text, i)
             yield "STRING", value, start, i
@@ -627,6 +632,7 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None, beg
                 i = end
                 if dialect.line_number_digits:  # GWMAIN.ASM CRUNCH's DONUM: set by a word of LINRES
                     line_numbers = kind not in _NAME_TYPES and word in LINE_NUMBER_WORDS
+                name_text = kind in _NAME_TYPES and upper[i - 1] not in "$%!#"
                 yield kind, word, start, i
         elif ch == ":":
             line_numbers = False
