@@ -334,6 +334,19 @@ class FileTable:
             if f.mode == "R":
                 f.swap(first, second, now_first, now_second)
 
+    def field_strings(self) -> dict:
+        """id -> string of each string a random file's FIELD, GET, LSET or RSET gave a
+        variable: GW's field variable points into the file's buffer (DSKCOM.ASM FIELD
+        stores the buffer's address in its descriptor), so its characters take no string
+        space (a real GW-BASIC 3.23's FRE("") after FIELD #1, 128 AS A$: PC-BASIC's
+        recorded FLDGARB test).  Strings of one character are left out: Python shares
+        those with every string of that character (as StringSpace.keep_text)."""
+        found = {}
+        for f in self.open_files.values():
+            if f.mode == "R":
+                found.update((id(text), text) for text in f.given.values() if len(text) > 1)
+        return found
+
     def forget_array(self, name: str) -> None:
         """ERASE or DIM of array ``name``: its elements are no longer fields of any file."""
         for f in self.open_files.values():
