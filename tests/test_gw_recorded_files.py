@@ -33,3 +33,26 @@ def test_field_variable_takes_no_string_space(tmp_path):
               '60 A$=A$+"": PRINT F-FRE("")\n')
     ours, theirs = _both(source, tmp_path)
     assert ours == theirs == " 0 \n 0 \n 100 \n"
+
+
+@pytest.mark.parametrize("length, record, error", [
+    (12, b'"AB",5    \r\n', ""),  # blanks up to the record's last two bytes, then CR LF
+    (6, b'"AB"  ', " 50 \n"),  # exactly two left: the count runs past 0, FIELD overflow
+    (5, b'"AB"\r', " 50 \n"),  # fewer than two: no blank, the CR LF overflows
+])
+def test_write_to_a_random_file_fills_its_record(tmp_path, length, record, error):
+    """RandomWidth: WRITE # to a random file sends blanks up to the record's last two bytes
+    before its CR LF (FIVEO.ASM WRITE, WRTFIN: CMPFBC's bytes left less two); PRINT # does
+    not.  The recording and the source decide: PC-BASIC 2.0.8 writes no blanks."""
+    source = (f'10 ON ERROR GOTO 100\n20 OPEN "R.DAT" FOR RANDOM AS 1 LEN={length}\n'
+              '30 WRITE #1, "AB"' + (", 5" if length == 12 else "") + '\n40 PUT #1, 1: CLOSE: END\n'
+              '100 PRINT ERR: RESUME NEXT\n')
+    assert yaseer_run(source, tmp_path) == error
+    assert (tmp_path / "R.DAT").read_bytes() == record + bytes(length - len(record))
+
+
+def test_print_to_a_random_file_is_not_filled(tmp_path):
+    """RandomWidth: PRINT # ends its line with CR LF alone (the rest of the buffer as it was)."""
+    source = '10 OPEN "R.DAT" FOR RANDOM AS 1 LEN=10\n20 PRINT #1, "AB"\n30 PUT #1, 1: CLOSE\n'
+    assert yaseer_run(source, tmp_path) == ""
+    assert (tmp_path / "R.DAT").read_bytes() == b"AB\r\n" + bytes(6)

@@ -401,6 +401,7 @@ class InputOutput:
                 stream.write(",".join(pieces) + cut)
                 return
             stream.write(",".join(pieces))
+            stream.before_write_end()
             stream.end_line()
         finally:
             self._fields_follow(stream)

@@ -351,5 +351,15 @@ class RecordStream(FileStream):
     def new_row(self) -> None:
         self.write("\r\n")
 
-    def flush(self) -> None:
-        pass
+    def before_write_end(self) -> None:
+        """WRITE # fills the rest of the record but its last two bytes with blanks, so that
+        its CR LF ends the record (FIVEO.ASM WRITE: WRTFIN, for a random disk file, counts
+        the bytes left with CMPFBC less the two of CR LF and sends that many blanks; a real
+        GW-BASIC 3.23 recorded it, PC-BASIC's RandomWidth test).  With fewer than two left
+        it sends none; with exactly two its count starts at 0 and runs down through 65535,
+        so the blanks meet the record's end: ``FIELD overflow``."""
+        left = self.file.length_of_record - self.file.position - 2
+        if left == 0:
+            left = 0x10000
+        if left > 0:
+            self.write(" " * left)

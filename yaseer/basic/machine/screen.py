@@ -85,6 +85,9 @@ class OutputStream:
         width = self.width
         self.write("\n\n" if width is not None and self.column >= width else "\n")
 
+    def before_write_end(self) -> None:
+        """What WRITE # writes before its line end: nothing (a random file pads its record)."""
+
     def new_row(self) -> None:
         """Start a new row (a row that is full has one already waiting: no empty row)."""
         self.stream.write("\n")
