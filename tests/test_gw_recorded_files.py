@@ -56,3 +56,16 @@ def test_print_to_a_random_file_is_not_filled(tmp_path):
     source = '10 OPEN "R.DAT" FOR RANDOM AS 1 LEN=10\n20 PRINT #1, "AB"\n30 PUT #1, 1: CLOSE\n'
     assert yaseer_run(source, tmp_path) == ""
     assert (tmp_path / "R.DAT").read_bytes() == b"AB\r\n" + bytes(6)
+
+
+def test_directory_words_and_kill_act_before_their_leftover(tmp_path):
+    """DISK2: KILL, MKDIR, RMDIR and CHDIR read their name and act before NEWSTT meets what
+    follows (GIODSK.ASM KILL: NAMFIL, the delete, RET; GWMAIN.ASM GONZER): ``CHDIR ""
+    LPRINT`` is Bad file name (the recording), ``KILL "K.TXT" X`` deletes the file, then
+    Syntax error; with no name read (``CHDIR MKDIR``) the expression's Syntax error.  As
+    PC-BASIC 2.0.8."""
+    source = ('10 ON ERROR GOTO 100\n15 OPEN "K.TXT" FOR OUTPUT AS 1: CLOSE\n20 KILL "K.TXT" X\n'
+              '30 KILL "K.TXT"\n40 MKDIR "SUB" LPRINT\n50 CHDIR MKDIR\n60 RMDIR "SUB" 5\n70 RMDIR "SUB"\n'
+              '80 CHDIR "" LPRINT\n90 KILL "" LPRINT\n99 END\n100 PRINT ERR; ERL: RESUME NEXT\n')
+    ours, theirs = _both(source, tmp_path)
+    assert ours == theirs == " 2  20 \n 53  30 \n 2  40 \n 2  50 \n 2  60 \n 76  70 \n 64  80 \n 64  90 \n"

@@ -994,7 +994,7 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     if checked_first is not None:
         return [checked_first] + _statements_after_error(tokens, bad_start, dialect)
     found = (_mid_read_as_far(tokens, bad_start, err) or _input_file_first(tokens, bad_start, err)
-             or _chain_file_first(tokens, bad_start, err))
+             or _chain_file_first(tokens, bad_start, err) or _run_before_leftover(tokens, bad_start, err, dialect))
     if found is not None:
         return [found] + _statements_after_error(tokens, bad_start, dialect)
     nexts = _next_read_as_far(tokens, bad_start, err)
@@ -1206,6 +1206,36 @@ def _chain_file_first(tokens: list, start: int, err: BasicError):
         if name is not None:
             return ast.Chain(merge, name, None, False, None, error=err)
     return None
+
+
+def _run_before_leftover(tokens: list, start: int, err: BasicError, dialect: Dialect):
+    """A KILL or a device word's statement (CHDIR, MKDIR, RMDIR, OUT, LOCK ...) whose text
+    reads up to where the grammar stops: the statement as far as it reads, run, then
+    ``err`` (GIODSK.ASM KILL reads its name with NAMFIL and deletes the file before NEWSTT
+    meets what follows; the device words act, then GWMAIN.ASM GONZER finds the leftover:
+    ``CHDIR "" LPRINT`` is Bad file name, as a real GW-BASIC 3.23 recorded it, PC-BASIC's
+    DISK2 test).  None for any other statement, for SOUND (it checks its end first,
+    gw_words.ENDS_FIRST) and where the part before the stop does not read whole or ends
+    where an argument should follow (``CHDIR MKDIR``: the expression's Syntax error)."""
+    kind, words = tokens[start].type, dialect.device_words
+    if not (kind == "KILL" or (kind == "WORDSTMT" and words is not None and tokens[start].value in words.statements
+                                and tokens[start].value not in words.ends_first)):
+        return None
+    end = next((k for k in range(start, len(tokens)) if tokens[k].type in _STATEMENT_ENDS), len(tokens))
+    try:
+        _parse(tokens[start:end])
+        return None
+    except GrammarError as exc:
+        at = next((k for k in range(start, end) if tokens[k] is exc.token), end)
+    except BasicError:
+        return None
+    if at in (start, end) or tokens[at - 1].type in ("WORDSTMT", "KILL", "HASH", "COMMA", "TO", "EQ"):
+        return None  # (no argument read: the stop is the expression's own Syntax error)
+    try:
+        found = _parse(tokens[start:at])
+    except (BasicError, GrammarError):
+        return None
+    return ast.CutShort(found[0], err) if len(found) == 1 else None
 
 
 def _mid_read_as_far(tokens: list, start: int, err: BasicError):
