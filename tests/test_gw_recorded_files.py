@@ -69,3 +69,19 @@ def test_directory_words_and_kill_act_before_their_leftover(tmp_path):
               '80 CHDIR "" LPRINT\n90 KILL "" LPRINT\n99 END\n100 PRINT ERR; ERL: RESUME NEXT\n')
     ours, theirs = _both(source, tmp_path)
     assert ours == theirs == " 2  20 \n 53  30 \n 2  40 \n 2  50 \n 2  60 \n 76  70 \n 64  80 \n 64  90 \n"
+
+
+@pytest.mark.parametrize("merge", ["", "MERGE "])
+def test_option_base_holds_in_the_chained_program(tmp_path, merge):
+    """CHAIN: the chained program runs under the first one's OPTION BASE (FIVEO.ASM CHAIN
+    saves OPTFLG and OPTVAL in TOPTFG and TOPTVL, CHNRET puts them back), also where its
+    subscript 0 is a constant: a COMMON array and a new one alike refuse it (Subscript out
+    of range, as a real GW-BASIC 3.23 recorded it: PC-BASIC's CHAIN test).  As PC-BASIC
+    2.0.8."""
+    from test_gw_chain import run_both
+
+    first = f'10 OPTION BASE 1: COMMON D()\n20 DIM D(2): D(1)=7\n30 CHAIN {merge}"B", 1000\n'
+    chained = ('1000 ON ERROR GOTO 1090\r\n1010 PRINT D(1): PRINT D(0)\r\n1020 PRINT H(0): H(1)=2: PRINT H(1)\r\n'
+               '1030 END\r\n1090 PRINT ERR; ERL: RESUME NEXT\r\n')
+    ours, theirs, _, _ = run_both(tmp_path, 0, first, {"B.BAS": chained})
+    assert ours == theirs == " 7 \n 9  1010 \n 9  1020 \n 2 \n"

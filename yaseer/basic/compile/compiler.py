@@ -121,7 +121,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
     (:mod:`~yaseer.basic.compile.loops`) are compiled by the mixins."""
 
     def __init__(self, lines: list, area: int = 0, direct: bool = False, entry_lines=(), trace: bool = False,
-                 dynamic_loops=(), dialect=CASIO, def_types=None, statement_types=False):
+                 dynamic_loops=(), dialect=CASIO, def_types=None, statement_types=False, base_one: bool = False):
         self.area = area
         self.statement_types = statement_types  # DEF types switched as they run, even where fixed would do
         self.variables_made = dialect.variables_made  # SWAP's second variable must exist (see made)
@@ -173,6 +173,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         # traps it (GW), so each of its statements is a place to come back to.
         self.plan = plan(self.flat, entry_lines, self.dynamic_loops,
                          resumable=direct and dialect.direct_line_number is not None)
+        # under an OPTION BASE 1 in force when the code is made (a CHAIN keeps the first
+        # program's) subscripts go through the check as if the area held the statement
+        self.plan.option_base = self.plan.option_base or base_one
         self.line_first = {}
         for i, (number, _) in enumerate(self.flat):
             self.line_first.setdefault(number, i)
@@ -1274,7 +1277,7 @@ def split_data(text: str) -> list[str]:
 
 def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=(),
                  trace: bool = False, dynamic_loops=(), dialect=CASIO, def_types=None,
-                 statement_types: bool = False) -> CompiledArea:
+                 statement_types: bool = False, base_one: bool = False) -> CompiledArea:
     """Compile an area's parsed lines (``syntax_tree.Line`` in line order) for ``dialect``.
 
     ``entry_lines`` are lines that must start a block although no jump names
@@ -1283,14 +1286,16 @@ def compile_area(lines: list, area: int = 0, direct: bool = False, entry_lines=(
     indices of FOR loops to run through the FOR stack even where they could be
     native (CONT resumes a native loop broken by Ctrl-C that way); ``statement_types``
     compiles DEFINT ... as switches of the type table where they run even where
-    applying them first would do (a RUN n typed in direct mode skips those before n).
+    applying them first would do (a RUN n typed in direct mode skips those before n);
+    ``base_one``: OPTION BASE 1 is in force as the code is made (no subscript 0 read
+    unchecked, whether or not the area holds an OPTION BASE).
     """
     compiler = AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect, def_types,
-                            statement_types)
+                            statement_types, base_one)
     compiled = compiler.compile()
     if compiler.numbers.cache_bases and sum(len(text) for _, text in compiled.pieces) > CACHED_CODE_LIMIT:
         compiler = AreaCompiler(lines, area, direct, entry_lines, trace, dynamic_loops, dialect, def_types,
-                                statement_types)
+                                statement_types, base_one)
         compiler.numbers.caching = False  # the code without them (the machine's limit is 4 MB)
         compiled = compiler.compile()
     return compiled

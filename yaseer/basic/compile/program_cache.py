@@ -69,9 +69,10 @@ def _text_fingerprint(names) -> bytes:
     return sealed_cache.text_fingerprint(_SOURCES, names, _toolchain_digest())
 
 
-def key(area, program: dict[int, str], entry_lines=(), dialect=None) -> str | None:
+def key(area, program: dict[int, str], entry_lines=(), dialect=None, base_one: bool = False) -> str | None:
     """The cache key of compiling ``program`` (line -> text) as ``area`` in
-    ``dialect`` (its repr: every field); None when the cache is switched off, cannot be
+    ``dialect`` (its repr: every field), under OPTION BASE 1 when ``base_one``
+    (compiler.compile_area); None when the cache is switched off, cannot be
     trusted (see :func:`private_dir`) or its sources cannot be read."""
     if private_dir() is None:
         return None
@@ -79,7 +80,7 @@ def key(area, program: dict[int, str], entry_lines=(), dialect=None) -> str | No
         digest = blake2b(toolchain_fingerprint())
     except OSError:
         return None
-    digest.update(repr((area, sorted(entry_lines), dialect)).encode())
+    digest.update(repr((area, sorted(entry_lines), dialect) + ((True,) if base_one else ())).encode())
     for number, text in sorted(program.items()):
         digest.update(f"{number}\0{text}\0".encode("utf-8", "surrogatepass"))
     return digest.hexdigest()

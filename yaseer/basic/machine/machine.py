@@ -410,7 +410,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         ``dynamic_loops``, see ``cont``)."""
         statement_types = area == 0 and not direct and program == self._types_as_statements
         plain = not (direct or self.tracing or dynamic_loops or statement_types)
-        entry = program_cache.key(area, program, entry_lines, self.dialect) if plain else None
+        base_one = self.subscript_base == 1  # (a CHAIN's new program keeps the OPTION BASE)
+        entry = program_cache.key(area, program, entry_lines, self.dialect, base_one) if plain else None
         cached = program_cache.load(entry) if entry else None
         if cached is not None:
             compiled, codes = cached
@@ -423,7 +424,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             compiled = compile_area(lines, area if isinstance(area, int) else 0, direct=direct,
                                     entry_lines=entry_lines, trace=self.tracing, dynamic_loops=dynamic_loops,
                                     dialect=self.dialect, def_types=self.def_types if direct else None,
-                                    statement_types=statement_types)
+                                    statement_types=statement_types, base_one=base_one)
             if sum(len(text) for _, text in compiled.pieces) > MAX_PYTHON_CHARACTERS:
                 raise BasicError("Out of memory", OUT_OF_MEMORY)
             codes = [None] * len(compiled.pieces)
@@ -639,7 +640,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
                      for number, text in sorted(self.programs.get(area, {}).items())]
             variant = compile_area(lines, area, entry_lines=extra, trace=on, dynamic_loops=compiled.dynamic_loops,
                                    dialect=self.dialect, def_types=self.def_types if compiled.dynamic_types else None,
-                                   statement_types=compiled.dynamic_types)
+                                   statement_types=compiled.dynamic_types, base_one=self.subscript_base == 1)
             namespace = self.namespaces[area]
             for first_line, text in variant.pieces:
                 self._exec_piece(text, first_line, area, namespace)
@@ -684,7 +685,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             lines = [_parse_cached(number, text, self.dialect) for number, text in sorted(program.items())]
             variant = compile_area(lines, area or 0, direct=area is None, entry_lines=extra, trace=self.tracing,
                                    dynamic_loops=compiled.dynamic_loops, dialect=self.dialect, def_types=table,
-                                   statement_types=True)
+                                   statement_types=True, base_one=self.subscript_base == 1)
             if variant.block_count != compiled.block_count:  # (a compile error cut a statement's blocks short)
                 raise BasicError("Internal error (the DEF type variants differ)", INTERNAL_ERROR)
             for first_line, text in variant.pieces:
