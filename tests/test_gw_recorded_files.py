@@ -85,3 +85,27 @@ def test_option_base_holds_in_the_chained_program(tmp_path, merge):
                '1030 END\r\n1090 PRINT ERR; ERL: RESUME NEXT\r\n')
     ours, theirs, _, _ = run_both(tmp_path, 0, first, {"B.BAS": chained})
     assert ours == theirs == " 7 \n 9  1010 \n 9  1020 \n 2 \n"
+
+
+_REMARKS = "".join(f"{1000 + 10 * k} REM {'*' * 60}\r\n" for k in range(40))  # 40 lines of 67 bytes
+
+
+@pytest.mark.parametrize("chain, kept", [
+    ('CHAIN MERGE "B", 1000, ALL', True),  # every variable stays: the lines do not fit beside them
+    ('COMMON A(): CHAIN "B", 1000', True),  # the COMMON array stays
+    ('CHAIN "B", 1000', False),  # the array goes: room enough
+    ('CHAIN MERGE "B", 1000', False),
+])
+def test_chained_lines_must_fit_beside_the_variables_kept(tmp_path, chain, kept):
+    """FULLCHN: CHAIN moves the variables it keeps to the top of memory and loads the new
+    lines below them (FIVEO.ASM CHAIN; the insertion's BIMISC.ASM REASON): with ALL or a
+    COMMON array holding most of the 64 KB, 2680 bytes of lines are Out of memory, as a
+    real GW-BASIC 3.23 stopped such a CHAIN MERGE (PC-BASIC's FULLCHN test).  FRE and the
+    verdicts as PC-BASIC 2.0.8 (which names the CHAIN's line for ALL; the program text's
+    Out of memory names none here, as for MERGE: chaining.Chaining.chained)."""
+    from test_gw_chain import run_both
+
+    first = f'10 DIM A(14682): A(1)=1\n20 PRINT FRE(0)\n30 {chain}\n'
+    ours, theirs, _, _ = run_both(tmp_path, 0, first, {"B.BAS": "1000 PRINT FRE(0)\r\n" + _REMARKS})
+    assert ours.split("\n")[0] == theirs.split("\n")[0]
+    assert ours.split("\n")[1].startswith("Out of memory") == theirs.split("\n")[1].startswith("Out of memory") == kept

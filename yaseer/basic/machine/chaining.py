@@ -326,9 +326,14 @@ class Chaining:
             doomed = set(deleted_lines(program, *chain.delete))
             program = {n: t for n, t in program.items() if n not in doomed}
         stopped = chain.stopped
-        if chain.merge:  # a line that does not fit with the program: Out of memory, not trapped
-            program, full = memory_model.fitting_lines(program, chain.lines, self.dialect.free_memory)
-            stopped = full or stopped  # (the line insertion clears ONELIN first: GWMAIN.ASM LEVFRE)
+        room = self.dialect.free_memory
+        if room is not None and chain.run:  # CHAIN keeps its variables above the lines it loads
+            room = self._room_beside(scalars, arrays, chain.merge and chain.everything)
+        if chain.merge or room != self.dialect.free_memory:
+            # a line that does not fit: Out of memory, not trapped (the line insertion clears
+            # ONELIN first: GWMAIN.ASM LEVFRE)
+            program, full = memory_model.fitting_lines(program if chain.merge else {}, chain.lines, room)
+            stopped = full or stopped
         else:
             program, full = dict(chain.lines), None
         self.programs[0] = program
@@ -398,6 +403,21 @@ class Chaining:
             copy = value[:1] + value[1:]
             space.take_room(copy)  # (made before the variable holds it: a collection keeps the old)
             self.scalars[name] = copy
+
+    def _room_beside(self, scalars: set | None, arrays: set | None, functions: bool) -> int:
+        """The bytes the program text may take beside what a CHAIN keeps: the simple
+        variables ``scalars`` and arrays ``arrays`` (None: every one, ALL), the DEF FN
+        functions where ``functions`` (MERGE with ALL), and their strings, the garbage
+        collected (FIVEO.ASM CHAIN moves what it keeps to the top of memory before it loads
+        the new program's lines, whose insertion BIMISC.ASM REASON then refuses past it; a
+        real GW-BASIC 3.23 stopped a CHAIN MERGE, ALL with Out of memory so: PC-BASIC's
+        FULLCHN test)."""
+        kept_scalars = {k: v for k, v in self.scalars.items() if scalars is None or k in scalars}
+        kept_arrays = {k: v for k, v in self.arrays.items() if arrays is None or k in arrays}
+        dims = {k: d for k, d in self.held_dims().items() if k in kept_arrays}
+        free, _ = memory_model.free_and_strings(self.dialect.free_memory, {}, kept_scalars, kept_arrays, dims,
+                                                self.fns if functions else {}, self.strings_outside(), self.made)
+        return free
 
     def _merged_direct_line(self, stopped: BasicError) -> ChainStart:
         """MERGE of a file whose first line has no number: GW-BASIC's MERGE reads the file

@@ -226,12 +226,15 @@ class Variables:
         """(GW's free bytes without garbage, the bytes its strings hold), the running block's
         ``block_locals`` (its scalars' Python locals, not yet stored back) over the scalars."""
         scalars = self.scalars_with(block_locals)
-        outside = self.string_space.text  # strings held in the program text or a file's buffer
-        fielded = self.files.field_strings()
-        if fielded:
-            outside = {**outside, **fielded}
         return memory_model.free_and_strings(self.dialect.free_memory, self.programs.get(0, {}), scalars,
-                                             self.arrays, self.held_dims(), self.fns, outside, self.made)
+                                             self.arrays, self.held_dims(), self.fns, self.strings_outside(),
+                                             self.made)
+
+    def strings_outside(self) -> dict:
+        """id -> string of the strings that take no string space: held in the program text
+        (StringSpace.text) or in a random file's buffer (FileTable.field_strings)."""
+        fielded = self.files.field_strings()
+        return {**self.string_space.text, **fielded} if fielded else self.string_space.text
 
     def data_layout(self):
         """gw: the data segment laid out as GW-BASIC would hold the program and the variables
