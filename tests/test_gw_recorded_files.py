@@ -109,3 +109,56 @@ def test_chained_lines_must_fit_beside_the_variables_kept(tmp_path, chain, kept)
     ours, theirs, _, _ = run_both(tmp_path, 0, first, {"B.BAS": "1000 PRINT FRE(0)\r\n" + _REMARKS})
     assert ours.split("\n")[0] == theirs.split("\n")[0]
     assert ours.split("\n")[1].startswith("Out of memory") == theirs.split("\n")[1].startswith("Out of memory") == kept
+
+
+def _pcbasic_commands(directory: Path, commands: list[str]) -> str:
+    import pcbasic
+    from test_differential_support import clean_output
+
+    session = pcbasic.Session(output_streams=None, input_streams=None, devices={"C:": str(directory)},
+                              current_device="C:", peek_values={})
+    session.start()
+    out = "".join(clean_output(session.execute(command)) for command in commands)
+    session.close()
+    return out
+
+
+@pytest.mark.parametrize("text", [
+    "10 PRINT 1\r\n20 PRINT 2\r\n20\r\n30 PRINT 3\r\n",  # deletes line 20, as typed
+    "10 PRINT 1\r\n15\r\n20 PRINT 2\r\n",  # no line 15: loading stops, line 20 never read
+    "10 PRINT 1\r\n20 PRINT 2\r\n20\r\n20  \r\n30 PRINT 3\r\n",  # deleted already: stops
+])
+def test_a_bare_line_number_in_a_file(tmp_path, text):
+    """undefined_line_number: a file's line number with nothing after it is read as typed
+    (GWMAIN.ASM EDENT): it deletes its line, and where there is none loading stops with
+    Undefined line number (FNDLIN, USERR), the lines before it kept; the program then runs
+    (a real GW-BASIC 3.23 ran it so).  LOAD then RUN in PC-BASIC 2.0.8, which agrees; and
+    RUN "file" in a program, whose error is not trapped (PC-BASIC agrees)."""
+    ours_dir, theirs_dir = tmp_path / "yaseer", tmp_path / "pcbasic"
+    for folder in (ours_dir, theirs_dir):
+        folder.mkdir()
+        (folder / "P.BAS").write_bytes(text.encode())
+    theirs = _pcbasic_commands(theirs_dir, ['LOAD "P"', "RUN"])
+    assert yaseer_run(text, ours_dir) == theirs
+    program = '5 ON ERROR GOTO 9\n6 RUN "P"\n9 PRINT "E";ERR;ERL: END\n'
+    assert yaseer_run(program, ours_dir) == _pcbasic_commands(theirs_dir, ["NEW", program, "RUN"])
+
+
+def test_a_bare_line_number_only_deletes_in_casio():
+    """``Dialect.bare_line_must_exist`` False (casio): a bare number deletes its line if any."""
+    from yaseer.basic.dialects.dialect import CASIO
+    from yaseer.basic.source.scanner import program_lines
+
+    assert program_lines("10 PRINT 1\n15\n20 PRINT 2\n", CASIO) == ({10: "PRINT 1", 20: "PRINT 2"}, None)
+
+
+@pytest.mark.parametrize("text", ["20\r\n40 PRINT 4\r\n", "20\r\n22\r\n40 PRINT 4\r\n"])
+def test_a_bare_line_number_in_a_merged_file(tmp_path, text):
+    """undefined_line_number, MERGE: a merged file's bare number deletes the program's line
+    (the lines are entered as typed: GWMAIN.ASM EDENT), and one of no line stops the merge
+    with Undefined line number.  As PC-BASIC 2.0.8."""
+    from test_gw_chain import run_both
+
+    first = '10 PRINT 1\n20 PRINT 2\n25 IF X THEN END\n26 X=1\n30 CHAIN MERGE "M", 10, ALL\n'
+    ours, theirs, _, _ = run_both(tmp_path, 0, first, {"M.BAS": text})
+    assert ours == theirs

@@ -133,11 +133,12 @@ FIELDS = (
     "line_number_digits",  # bool: False
     "data_segment",  # DataSegmentRules | None: None
     "point_after_name_is_text",  # bool: False
+    "bare_line_must_exist",  # bool: False
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
             None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None, False, (),
-            False, False, (), False, None, False)
+            False, False, (), False, None, False, False)
 
 # Where BASIC's data segment puts the program and the strings (offsets in the segment, bytes;
 # machine/data_segment.py): ``text_start`` the program's first line (TXTTAB), ``string_top``
@@ -243,6 +244,10 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         Syntax error where it is read: CRUNCH keeps digits and points after a name as
         text (GWMAIN.ASM, its number flag left as a name's), and EVAL reads no number
         from a ``.`` there (GWEVAL.ASM EVAL: FIN only for a digit); False: it is a number.
+        ``bare_line_must_exist``: True (GW-BASIC) reads a program file's line number
+        with nothing after it as the line typed so: it deletes that line, and where
+        there is none loading stops with ``Undefined line number``, the lines before it
+        loaded (GWMAIN.ASM EDENT: FNDLIN, then USERR); False: it deletes the line, if any.
 
     Messages
         ``names_missing_line``: True (Casio, as yaseer has always named it) says which
@@ -500,6 +505,7 @@ GW = Dialect(
     # from 4718 (&H30), the first string ending at 65021 (PEEK of VARPTR(A$)), &H2C holding 65534
     data_segment=DataSegmentRules(text_start=4718, string_top=65021, memory_top=65534),
     point_after_name_is_text=True,
+    bare_line_must_exist=True,
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

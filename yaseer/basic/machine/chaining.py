@@ -32,6 +32,7 @@ from yaseer.basic.errors import (
 )
 from yaseer.basic.machine.signals import ProgramEnd
 from yaseer.basic.source.line_ranges import deleted_lines
+from yaseer.basic.source.scanner import DirectStatementInFile
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
@@ -71,12 +72,14 @@ class RunAgain(ProgramEnd):
 class Chaining:
     """CHAIN and MERGE on the machine's programs and variables (a mixin of ``Machine``)."""
 
-    def _program_lines(self, name: str, merge: bool = False) -> tuple[dict[int, str], BasicError | None]:
+    def _program_lines(self, name: str, merge: bool = False,
+                       existing=None) -> tuple[dict[int, str | None], BasicError | None]:
         """The lines of program file ``name`` (``.BAS`` added to a name without ``.``), read
         as LOAD reads it (scanner.program_lines), and the ``Direct statement in file`` that
         stopped the reading (None if none: the lines before it are the program's); MERGE reads
         ASCII files only (``Bad file mode``).  An ASCII file's lines are entered as typed ones:
-        the last is the current line (``_entered``)."""
+        the last is the current line (``_entered``).  ``existing``: MERGE's, the lines of the
+        program the file joins (a bare number of one deletes it: None)."""
         from yaseer.basic.machine.program_file import TOKENISED, is_protected, program_text
         from yaseer.basic.source.scanner import program_lines
 
@@ -87,7 +90,7 @@ class Chaining:
         text = charset.codes(program_text(data, charset))  # as shown, then in the machine's codes
         if not merge:
             self.program_protected = is_protected(data)
-        lines, stopped = program_lines(text, self.dialect, from_file=True)
+        lines, stopped = program_lines(text, self.dialect, from_file=True, existing=existing if merge else None)
         if not merge:  # (MERGE's lines must fit with the program they join: chained)
             lines, full = memory_model.fitting_lines({}, lines, self.dialect.free_memory)
             stopped = full or stopped
@@ -295,7 +298,13 @@ class Chaining:
     def chain(self, name: str, merge: bool, line, everything: bool, delete, run: bool = True) -> None:
         """CHAIN / MERGE as the statement runs: the file is read (its errors are this
         statement's) and the range checked, then :class:`ChainTo` ends the block."""
-        lines, stopped = self._program_lines(name, merge)
+        existing = set(self.programs.get(0, {}))
+        if merge and delete is not None:  # the DELETE comes first: a bare number of a deleted line deletes none
+            try:
+                existing -= set(deleted_lines(self.programs.get(0, {}), *delete))
+            except BasicError:
+                pass  # (a bad range's error comes after the file's: below)
+        lines, stopped = self._program_lines(name, merge, existing)
         if line is not None:
             line = self._chain_line(line)
         if delete is not None:
@@ -340,7 +349,7 @@ class Chaining:
         self._invalidate(0)
         self._extra_entries.clear()
         if stopped is not None:
-            if chain.merge and full is None and not stopped.lines:
+            if chain.merge and full is None and not stopped.lines and isinstance(stopped, DirectStatementInFile):
                 return self._merged_direct_line(stopped)
             if not chain.merge or full is not None:
                 self.on_error = None  # the old program's handler went with it

@@ -78,7 +78,7 @@ from yaseer.basic.machine.stack import AREA_MARK, ControlStack, ForFrame  # noqa
 from yaseer.basic.machine.variables import (  # noqa: F401  (the array limits are re-exported)
     MAX_ARRAY_ELEMENTS, MAX_TOTAL_ELEMENTS, MadeNames, Variables, _check_clear_arguments, clear_argument, clear_sizes,
 )
-from yaseer.basic.source.scanner import entry_messages, program_lines
+from yaseer.basic.source.scanner import UndefinedLineInFile, entry_messages, program_lines
 from yaseer.basic.machine.screen import OutputStream
 
 TYPE_CHECKING = False
@@ -344,7 +344,11 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.programs[area] = program
         self.python_areas.pop(area, None)
         self._invalidate(area)
-        if stopped is not None:
+        if isinstance(stopped, UndefinedLineInFile):
+            # GW's LOAD prints it and keeps the lines before it, which RUN then runs (a real
+            # GW-BASIC 3.23 ran such a program so: PC-BASIC's undefined_line_number test)
+            self.show_messages([str(stopped)])
+        elif stopped is not None:
             raise stopped
 
     def _entered(self, program: dict[int, str]) -> None:

@@ -65,19 +65,24 @@ def program_bytes(program: dict) -> int:
 def fitting_lines(program: dict, lines: dict, total: int | None) -> tuple[dict, BasicError | None]:
     """``program`` (number -> text) with ``lines`` entered one by one in their order, as
     GW-BASIC enters a typed line or one LOAD, MERGE or CHAIN reads: each replaces the line of
-    its number, and the first that would take the program past ``total`` bytes (None: no
-    limit) is Out of memory, the lines before it entered (REASON: the program may end
+    its number (a number with None: deletes the line), and the first that would take the
+    program past ``total`` bytes (None: no limit) is Out of memory, the lines before it entered (REASON: the program may end
     exactly at the top).  (The new program, that error or None.)"""
     merged = dict(program)
+    deleted = [number for number, text in lines.items() if text is None]
+    if deleted:  # (a MERGE file's bare number of a program line: scanner.program_lines)
+        lines = {number: text for number, text in lines.items() if text is not None}
+        for number in deleted:
+            merged.pop(number, None)
     if total is None:
         merged.update(lines)
         return merged, None
     # a bound from the characters first: most programs are not tokenised to know they fit
-    texts = list(program.values()) + list(lines.values())
+    texts = list(merged.values()) + list(lines.values())
     if sum(_MOST_BYTES_A_CHARACTER * len(text) + 5 for text in texts) <= total:
         merged.update(lines)
         return merged, None
-    used = program_bytes(program)
+    used = program_bytes(merged)
     for number, text in lines.items():
         used += line_bytes(text) - (line_bytes(merged[number]) if number in merged else 0)
         if used > total:  # (the old line of the number was deleted first: ERAINS calls DEL)

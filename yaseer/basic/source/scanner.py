@@ -23,7 +23,9 @@ from __future__ import annotations
 import functools
 
 from yaseer.basic.dialects.dialect import CASIO, Dialect
-from yaseer.basic.errors import DIRECT_STATEMENT_IN_FILE, LINE_BUFFER_OVERFLOW, BasicError, OVERFLOW, SYNTAX_ERROR, error_message
+from yaseer.basic.errors import (
+    DIRECT_STATEMENT_IN_FILE, LINE_BUFFER_OVERFLOW, BasicError, OVERFLOW, SYNTAX_ERROR, UNDEFINED_LINE, error_message,
+)
 from yaseer.basic.dialects.reserved import GW_RESERVED_WORDS, UNSUPPORTED
 from yaseer.patterns import Pattern
 
@@ -1088,6 +1090,21 @@ class LineBufferOverflowInFile(DirectStatementInFile):
         super().__init__(lines, statement, LINE_BUFFER_OVERFLOW)
 
 
+class UndefinedLineInFile(BasicError):
+    """A program file's line number with nothing after it, where no line of that number
+    was read before it (``Dialect.bare_line_must_exist``): loading stops there with
+    ``Undefined line number`` (GWMAIN.ASM EDENT: deleting a line that is not there is
+    USERR), the lines before it loaded; ``lines`` as :class:`DirectStatementInFile`'s."""
+
+    def __init__(self, lines: list):
+        super().__init__(error_message(UNDEFINED_LINE), UNDEFINED_LINE)
+        self.lines = lines
+
+    def at(self, line, area: int = 0) -> "UndefinedLineInFile":
+        """Never placed at a line: the line is the file's, not the program's."""
+        return self
+
+
 DOS_LINE_LENGTH = 255  # SCNEDT.ASM DSKCHI: BUFLEN, the characters a loaded line may hold
 _DOS_BLANKS = " \t\n"  # GWMAIN.ASM CHRGTR steps over them (also between a line number's digits)
 _LINE_NUMBER_ROOM = 6552  # GWMAIN.ASM LINGET takes another digit only up to this value
@@ -1225,19 +1242,22 @@ def _dos_split(source: str, keeps_blanks: bool, longest: int | None) -> list[tup
     return lines
 
 
-def program_lines(text: str, dialect: Dialect = CASIO,
-                  from_file: bool = False) -> tuple[dict[int, str], DirectStatementInFile | None]:
+def program_lines(text: str, dialect: Dialect = CASIO, from_file: bool = False,
+                  existing=None) -> tuple[dict[int, str | None], BasicError | None]:
     """A program file's text as the ``dialect``'s LOAD reads it (the one reader of program
     text: LOAD, RUN "f", CHAIN and MERGE in a program, the session's LOAD, the API and
     ``yaseer run``): line number -> text in the order the lines were read, a later line of a
     number replacing an earlier one and a line of blanks deleting it (:func:`split_lines`, with the dialect's
     ``joins_unnumbered_lines`` and ``tokenised_programs``); and the
     :class:`DirectStatementInFile` that stopped the reading at a line without a number
-    (GIO86.ASM DIRDO: the lines before it are loaded), None if none.  ``from_file``: a file
+    (GIO86.ASM DIRDO: the lines before it are loaded), or the :class:`UndefinedLineInFile`
+    of a bare line number that deletes no line (``bare_line_must_exist``), None if none.  ``from_file``: a file
     a program or the session loads (LOAD, RUN "f", CHAIN, MERGE): where the dialect reads
     lines as DSKCHI does (``dos_program_lines``) one of more than 255 characters stops the
     reading with ``Line buffer overflow``; the program handed to ``yaseer run`` or the API
-    may hold longer lines (yaseer's choice: a listing written in an editor runs whole)."""
+    may hold longer lines (yaseer's choice: a listing written in an editor runs whole).
+    ``existing``: the line numbers of the program the file is merged into (MERGE): a bare
+    number of one of them deletes it, noted as the number with None."""
     stopped = None
     try:
         lines = split_lines(text, dialect.joins_unnumbered_lines, dialect.tokenised_programs,
@@ -1245,8 +1265,17 @@ def program_lines(text: str, dialect: Dialect = CASIO,
     except DirectStatementInFile as error:
         lines, stopped = error.lines, error
     program: dict[int, str] = {}
-    for number, statement_text, _ in lines:
+    present = set(existing or ())
+    for k, (number, statement_text, _) in enumerate(lines):
+        if not statement_text and dialect.bare_line_must_exist:
+            if number not in present:
+                return program, UndefinedLineInFile(lines[:k])  # (the lines after it are never read)
+            present.discard(number)
+        elif statement_text:
+            present.add(number)
         program.pop(number, None)  # the dict's order is the order the lines were read in
         if statement_text:
             program[number] = statement_text
+        elif existing is not None and number in existing:
+            program[number] = None
     return program, stopped
