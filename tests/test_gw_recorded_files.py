@@ -162,3 +162,20 @@ def test_a_bare_line_number_in_a_merged_file(tmp_path, text):
     first = '10 PRINT 1\n20 PRINT 2\n25 IF X THEN END\n26 X=1\n30 CHAIN MERGE "M", 10, ALL\n'
     ours, theirs, _, _ = run_both(tmp_path, 0, first, {"M.BAS": text})
     assert ours == theirs
+
+
+def test_record_locks_bind_the_other_openings_of_a_file(tmp_path):
+    """LockFiles, LockFilesOutput: LOCK holds records (a sequential file whole) against
+    the file's other openings, as DOS's SHARE holds a handle's region: their PUT of a
+    locked record, their GET of one the file holds and their LOCK of a range that meets it
+    are Permission Denied (70); the opening that locked uses its records freely; a GET
+    of bytes beyond the file's end reads none of them and goes on; UNLOCK frees them.  As
+    a real GW-BASIC 3.23 recorded it; PC-BASIC 2.0.8 agrees but for that GET beyond the
+    end (line 30's first GET: Permission Denied there, where the recording's GET #3, 2 of
+    the empty file went on)."""
+    source = ('10 ON ERROR GOTO 100\n20 OPEN "R.DAT" FOR RANDOM AS 1: OPEN "R.DAT" FOR RANDOM AS 2\n'
+              '30 LOCK #1, 1 TO 3: GET #2, 2: PUT #1, 2: GET #2, 2: GET #2, 5: PUT #2, 4: PUT #2, 3\n'
+              '40 LOCK #2, 3 TO 4: LOCK #2, 4: GET #1, 4: UNLOCK #1, 1 TO 3: PUT #2, 2: GET #1, 4\n'
+              '50 CLOSE: OPEN "S.DAT" FOR OUTPUT AS 1: LOCK #1, 7 TO 9: OPEN "S.DAT" FOR RANDOM AS 2\n'
+              '60 GET #2, 1: PUT #2, 9: UNLOCK #1, 1: PUT #2, 9: END\n100 PRINT ERR; ERL: RESUME NEXT\n')
+    assert yaseer_run(source, tmp_path) == " 70  30 \n 70  30 \n 70  40 \n 70  40 \n 70  40 \n 70  60 \n"

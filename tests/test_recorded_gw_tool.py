@@ -42,3 +42,18 @@ def test_counts_a_match_a_difference_and_leaves_out_a_typed_test(tmp_path, capsy
     out = capsys.readouterr().out
     assert "SAME" not in out and "FAIL unsorted/OTHER" in out
     assert "all: 0 of 1 reproduced" in out
+
+
+def test_the_settings_file_is_there_where_the_model_holds_it(tmp_path, capsys):
+    """A test whose model/ holds PCBASIC.INI ran with it in its directory (LockFiles): the
+    run has it too; elsewhere it stays out of the program's directory."""
+    group = tmp_path / "corpus" / "unsorted"
+    lists_ini = '10 OPEN "output.txt" FOR OUTPUT AS 1\n20 PRINT #1, 3+4\n30 CLOSE\n'
+    make_test(group, "WITHINI", lists_ini, b" 7 \r\n\x1a")
+    (group / "WITHINI" / "model" / "PCBASIC.INI").write_text(RUN_AND_QUIT)
+    make_test(group, "WITHOUT", '10 OPEN "I", 1, "PCBASIC.INI"\n', b"")
+    tool = load_tool()
+    assert tool.main([str(tmp_path / "corpus"), "--list", "all"]) == 0
+    out = capsys.readouterr().out
+    assert "pass unsorted/WITHINI" in out
+    assert "FAIL unsorted/WITHOUT: File not found" in out

@@ -13,6 +13,7 @@ from __future__ import annotations
 from yaseer.basic.errors import (
     BAD_RECORD_NUMBER, ILLEGAL_FUNCTION_CALL, OVERFLOW, PERMISSION_DENIED, error_for, not_emulated,
 )
+from yaseer.basic.machine import file_locks
 from yaseer.basic.machine.runtime import byte_argument as _byte, cint
 
 # The ports of the PC's DMA controller (8237, 0..&H1F), on every PC: idle, they read 0, as
@@ -51,7 +52,6 @@ class Devices:
         # ENVIRON's table, name -> value, in the order set; it starts empty: a program
         # never sees the host's environment (which may hold secrets and differs by host)
         self.table: dict[str, str] = {}
-        self.locks: dict[int, tuple[object, list]] = {}  # file number -> (the open file, its locked ranges)
 
     # -- ports (GWEVAL.ASM FNINP, FNOUT, FNWAIT)
     @staticmethod
@@ -169,35 +169,38 @@ class Devices:
         """CALL/CALLS routine[(variables)]: would jump to machine code in memory."""
         raise not_emulated("CALL of a machine-code routine")
 
-    # -- file locks (DOS's, as SHARE keeps them)
-    def _ranges(self, n: int, start, end) -> tuple[list, tuple[int, int]]:
-        """The locked ranges of open file n and the records a LOCK or UNLOCK names: a
-        sequential file is locked whole, a random file from start to end (start alone: that
-        record; neither: the whole file)."""
+    # -- file locks (DOS's, as SHARE keeps them: machine/file_locks.py)
+    def _ranges(self, n: int, start, end) -> tuple[object, tuple[int, int]]:
+        """The sharing of open file n (file_locks.Sharing, whose ``ranges`` its locks are)
+        and the bytes a LOCK or UNLOCK names: a sequential file is locked whole, a random
+        file by records from start to end (start alone: that record; neither: the whole
+        file), each record its length of bytes."""
         f = self.files.get(n)
-        held = self.locks.get(n)
-        if held is None or held[0] is not f:  # a file opened since: its locks went with the old one
-            held = self.locks[n] = (f, [])
+        if f.sharing is type(f).sharing:  # a device or a file no OPEN made: a sharing of its own
+            f.sharing = file_locks.Sharing(None, None, list)
         if f.mode != "R" or start is None:
-            return held[1], WHOLE_FILE
-        first = cint(start)
-        last = first if end is None else cint(end)
-        if not (1 <= first <= LAST_RECORD and 1 <= last <= LAST_RECORD):
-            raise error_for(BAD_RECORD_NUMBER)
-        return held[1], (first, last)
+            first, last = WHOLE_FILE
+        else:
+            first = cint(start)
+            last = first if end is None else cint(end)
+            if not (1 <= first <= LAST_RECORD and 1 <= last <= LAST_RECORD):
+                raise error_for(BAD_RECORD_NUMBER)
+        size = f.length_of_record if f.mode == "R" else 1
+        return f.sharing, ((first - 1) * size, last * size)
 
     def lock(self, n: int, start=None, end=None) -> None:
-        """LOCK [#]n[, start[ TO end]]: a range that meets one locked already is Permission
-        Denied (the recordings: ``LOCK 1: LOCK 1``)."""
-        ranges, wanted = self._ranges(n, start, end)
-        if any(wanted[0] <= last and first <= wanted[1] for first, last in ranges):
+        """LOCK [#]n[, start[ TO end]]: a range that meets one locked already, by this file
+        or another opening of it, is Permission Denied (the recordings: ``LOCK 1: LOCK 1``,
+        and a second OPEN of a file locked by the first, PC-BASIC's LockFiles test)."""
+        sharing, wanted = self._ranges(n, start, end)
+        if any(file_locks.overlap(wanted, held) for other in [sharing, *sharing.others()] for held in other.ranges):
             raise error_for(PERMISSION_DENIED)
-        ranges.append(wanted)
+        sharing.ranges.append(wanted)
 
     def unlock(self, n: int, start=None, end=None) -> None:
         """UNLOCK [#]n[, start[ TO end]]: only a range locked exactly so is unlocked, else
         Permission Denied."""
-        ranges, wanted = self._ranges(n, start, end)
-        if wanted not in ranges:
+        sharing, wanted = self._ranges(n, start, end)
+        if wanted not in sharing.ranges:
             raise error_for(PERMISSION_DENIED)
-        ranges.remove(wanted)
+        sharing.ranges.remove(wanted)

@@ -20,27 +20,40 @@ from yaseer.basic.errors import PATH_FILE_ACCESS_ERROR, PERMISSION_DENIED, error
 
 
 class Sharing:
-    """One open file's clauses, and the other open files of the same file (``others``: a
+    """One open file's clauses, the byte ranges its LOCK statements hold (``ranges``: (first
+    byte, byte after the last)), and the other open files of the same file (``others``: a
     callable giving their :class:`Sharing`)."""
 
-    __slots__ = ("access", "lock", "others")
+    __slots__ = ("access", "lock", "others", "ranges")
 
     def __init__(self, access: str | None, lock: str | None, others):
         self.access = "RW" if lock is not None and access is None else access
         self.lock = lock
         self.others = others
+        self.ranges: list[tuple[int, int]] = []
 
-    def use(self, right: str) -> None:
+    def use(self, right: str, span: tuple[int, int] | None = None) -> None:
         """A read ("R": GET, INPUT #, LINE INPUT #, INPUT$) or a write ("W": PUT, PRINT #,
         WRITE #) of this file: ``Path/File access error`` where its own ACCESS leaves the
         right out or another opening of the file LOCKs it (a file opened without clauses
-        shares with no file that has them: nothing to check)."""
-        if self.access is None and self.lock is None:
-            return
-        if self.access is not None and right not in self.access:
-            raise error_for(PATH_FILE_ACCESS_ERROR)
-        if any(other.lock not in (None, "SHARED") and right in other.lock for other in self.others()):
-            raise error_for(PATH_FILE_ACCESS_ERROR)
+        shares with no file that has them: nothing to check); then, of the bytes ``span``
+        (first, after the last; None or empty: none), ``Permission Denied`` where another
+        opening's LOCK holds one (DOS's SHARE refuses a handle the region another handle
+        locked: a real GW-BASIC 3.23's GET and PUT in PC-BASIC's LockFiles and
+        LockFilesOutput tests; a GET of bytes beyond the file's end reads none of them)."""
+        if self.access is not None or self.lock is not None:
+            if self.access is not None and right not in self.access:
+                raise error_for(PATH_FILE_ACCESS_ERROR)
+            if any(other.lock not in (None, "SHARED") and right in other.lock for other in self.others()):
+                raise error_for(PATH_FILE_ACCESS_ERROR)
+        if span is not None and span[0] < span[1] and any(
+                overlap(span, held) for other in self.others() for held in other.ranges):
+            raise error_for(PERMISSION_DENIED)
+
+
+def overlap(one: tuple[int, int], other: tuple[int, int]) -> bool:
+    """Do the byte ranges ``one`` and ``other`` (first, after the last) share a byte?"""
+    return one[0] < other[1] and other[0] < one[1]
 
 
 def check_opening(access: str | None, lock: str | None, others: list[Sharing]) -> None:

@@ -179,8 +179,9 @@ class RandomFile:
         """GET: read a record into the buffer; the new values of the variables (read from
         ``scalars``: a :class:`FieldedVariables`) still fielded."""
         n = self._record(record)
-        self.sharing.use("R")
-        self.handle.seek((n - 1) * self.length_of_record)
+        start = (n - 1) * self.length_of_record
+        self.sharing.use("R", (start, min(start + self.length_of_record, self.length())))
+        self.handle.seek(start)
         data = self.handle.read(self.length_of_record)
         self.past_end = len(data) < self.length_of_record
         self.input_ended = False
@@ -192,13 +193,14 @@ class RandomFile:
     def put(self, record=None) -> None:
         """PUT: write the buffer as a record (a gap before it filled with zero bytes)."""
         n = self._record(record)
-        self.sharing.use("W")
         start = (n - 1) * self.length_of_record
+        self.sharing.use("W", (start, start + self.length_of_record))
         end = self.handle.seek(0, 2)
         if end < start:
             self.handle.write(bytes(start - end))
         self.handle.seek(start)
         self.handle.write(self.buffer)
+        self.handle.flush()  # DSKRND hands the record to DOS: another opening of the file sees it
         self.last = n
         self.past_end = self.input_ended = False
         self.position = 0

@@ -1215,8 +1215,10 @@ def _run_before_leftover(tokens: list, start: int, err: BasicError, dialect: Dia
     meets what follows; the device words act, then GWMAIN.ASM GONZER finds the leftover:
     ``CHDIR "" LPRINT`` is Bad file name, as a real GW-BASIC 3.23 recorded it, PC-BASIC's
     DISK2 test).  None for any other statement, for SOUND (it checks its end first,
-    gw_words.ENDS_FIRST) and where the part before the stop does not read whole or ends
-    where an argument should follow (``CHDIR MKDIR``: the expression's Syntax error)."""
+    gw_words.ENDS_FIRST), where the part before the stop does not read whole or ends
+    where an argument should follow (``CHDIR MKDIR``: the expression's Syntax error), and
+    where the word reads fewer arguments than it may take (``LOCK #1 LPRINT`` is Syntax
+    error and locks nothing, ``LOCK #1, 1 TO 2 TO 3`` locks first: the LOCK test)."""
     kind, words = tokens[start].type, dialect.device_words
     if not (kind == "KILL" or (kind == "WORDSTMT" and words is not None and tokens[start].value in words.statements
                                 and tokens[start].value not in words.ends_first)):
@@ -1235,7 +1237,12 @@ def _run_before_leftover(tokens: list, start: int, err: BasicError, dialect: Dia
         found = _parse(tokens[start:at])
     except (BasicError, GrammarError):
         return None
-    return ast.CutShort(found[0], err) if len(found) == 1 else None
+    if len(found) != 1:
+        return None
+    node = found[0]
+    if isinstance(node, ast.WordStatement) and len(node.args) < len(words.statements[node.word][0]):
+        return None  # an optional argument's comma could come there: the word's own Syntax error first
+    return ast.CutShort(node, err)
 
 
 def _mid_read_as_far(tokens: list, start: int, err: BasicError):
