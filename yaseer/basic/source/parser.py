@@ -1224,14 +1224,8 @@ def _run_before_leftover(tokens: list, start: int, err: BasicError, dialect: Dia
                                 and tokens[start].value not in words.ends_first)):
         return None
     end = next((k for k in range(start, len(tokens)) if tokens[k].type in _STATEMENT_ENDS), len(tokens))
-    try:
-        _parse(tokens[start:end])
-        return None
-    except GrammarError as exc:
-        at = next((k for k in range(start, end) if tokens[k] is exc.token), end)
-    except BasicError:
-        return None
-    if at in (start, end) or tokens[at - 1].type in ("WORDSTMT", "KILL", "HASH", "COMMA", "TO", "EQ"):
+    at = _grammar_stop(tokens, start, end)
+    if at is None or at in (start, end) or tokens[at - 1].type in ("WORDSTMT", "KILL", "HASH", "COMMA", "TO", "EQ"):
         return None  # (no argument read: the stop is the expression's own Syntax error)
     try:
         found = _parse(tokens[start:at])
@@ -1362,6 +1356,18 @@ _BINARY_OPERATORS = frozenset(("PLUS", "MINUS", "STAR", "SLASH", "BSLASH", "CARE
                                "NE", "AND", "OR", "XOR", "EQV", "IMP", "MOD"))
 
 
+def _grammar_stop(tokens: list, start: int, end: int) -> int | None:
+    """Where in ``tokens[start:end]`` the grammar stops reading (``end``: the text ended
+    early); None when it reads whole or the scanner's error comes first."""
+    try:
+        _parse(tokens[start:end])
+        return None
+    except GrammarError as exc:
+        return next((k for k in range(start, end) if tokens[k] is exc.token), end)
+    except BasicError:
+        return None
+
+
 def _cut_expression(tokens: list, start: int, err: BasicError, dialect: Dialect):
     """A bad statement whose text goes wrong inside a function call's arguments or after an
     operator: the statement with what was read standing in for the rest (a
@@ -1372,12 +1378,8 @@ def _cut_expression(tokens: list, start: int, err: BasicError, dialect: Dialect)
     if not dialect.argument_readings or tokens[start].type == "WRITE":  # (WRITE: _written_before_error)
         return None
     end = next((k for k in range(start, len(tokens)) if tokens[k].type == "_COLON"), len(tokens))
-    try:
-        _parse(tokens[start:end])
-        return None
-    except GrammarError as exc:
-        at = next((k for k in range(start, end) if tokens[k] is exc.token), end)
-    except BasicError:
+    at = _grammar_stop(tokens, start, end)
+    if at is None:
         return None
     opens: list = []
     for k in range(start, at):
