@@ -140,3 +140,29 @@ def test_chain_s_delete_range_ends_on_a_line(tmp_path, option, shown):
     (tmp_path / "B.BAS").write_bytes(b'10 PRINT "B"\r\n')
     source = f'10 CHAIN MERGE "B", 10, {option}\n20 PRINT 2\n30 PRINT 3\n'
     assert yaseer_run(source, tmp_path) == shown
+
+
+@pytest.mark.parametrize("source", [
+    '10 DELETE .-"A"\n', '10 PRINT 1\n20 DELETE .-"A"\n', "10 PRINT 1: DELETE .-A\n", "10 DELETE .*2\n",
+    '10 LIST .-"A"\n', "10 LIST .+1\n", "10 RENUM .,.*2\n", "10 AUTO .-(1)\n", "10 GOSUB .+1\n",
+    '10 ON ERROR GOTO 100\n20 DELETE .-"A"\n30 END\n100 PRINT ERR, ERL: RESUME NEXT\n'])
+def test_the_current_line_period_before_other_text_is_a_syntax_error_as_pcbasic(tmp_path, source):
+    # "." after a line word is the current line (GWMAIN.ASM LINSPC); followed by what no range
+    # or line takes, the statement is Syntax error where it runs (an error ERR 2 a handler
+    # sees), as PC-BASIC 2.0.8; reading it back as an expression once stopped with IndexError
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    assert yaseer_run(source, tmp_path / "a") == pcbasic_run(source, tmp_path / "b")
+
+
+def test_a_slip_of_the_line_reader_is_the_line_s_internal_error_not_a_traceback(tmp_path, monkeypatch):
+    # the reader's last guard (parser.parse_line): whatever escapes reading a line becomes
+    # that line's one BASIC error, shown where the program reaches it
+    from yaseer.basic.source import parser
+
+    def slip(*args):
+        raise IndexError("tuple index out of range")
+
+    monkeypatch.setattr(parser, "_recover", slip)
+    printed = yaseer_run('10 PRINT 1\n20 DELETE .-"SLIP"\n', tmp_path)  # (a line no other test reads: lines are cached)
+    assert printed == " 1 \nInternal error (reading the line: IndexError: tuple index out of range) in 20\n"

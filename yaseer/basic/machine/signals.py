@@ -7,11 +7,9 @@ from __future__ import annotations
 
 from yaseer.basic.machine import runtime
 from yaseer.basic.errors import (
-    BasicError, BREAK, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_CALL, OUT_OF_MEMORY, OVERFLOW, RESUME_WITHOUT_ERROR,
-    SUBSCRIPT_OUT_OF_RANGE,
+    BasicError, BREAK, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_CALL, INTERNAL_ERROR, OUT_OF_MEMORY, OVERFLOW,
+    RESUME_WITHOUT_ERROR, SUBSCRIPT_OUT_OF_RANGE,
 )
-
-INTERNAL_ERROR = 51  # a Python exception no BASIC error stands for
 
 
 class ProgramEnd(BaseException):

@@ -18,7 +18,7 @@ from itertools import chain
 
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.dialects.dialect import CASIO, Dialect
-from yaseer.basic.errors import BasicError, MISSING_OPERAND, NEXT_WITHOUT_FOR, SYNTAX_ERROR
+from yaseer.basic.errors import BasicError, INTERNAL_ERROR, MISSING_OPERAND, NEXT_WITHOUT_FOR, SYNTAX_ERROR
 from yaseer.basic.source.parse_tables import ACTIONS, END, RULES, START
 from yaseer.basic.dialects.reserved import UNSUPPORTED, mark_unsupported, unsupported_message
 from yaseer.basic.source.event_tokens import mark_events
@@ -683,6 +683,8 @@ class _ToAst:
 
     def number(self, c):
         value = c[0].value
+        if value == ast.CURRENT_LINE:  # "." read as a line after a line word, in an expression: 0
+            return ast.Num(0.0, "!")
         if type(value) is tuple:
             return ast.Num(value[0], value[1])
         return ast.Num(value)
@@ -1717,7 +1719,22 @@ def _in_branch(text: str, err: BasicError, dialect: Dialect) -> list | None:
 
 def parse_line(number: int, text: str, dialect: Dialect = CASIO) -> ast.Line:
     """Parse one numbered line; a syntax error is stored in ``Line.error`` or, where the
-    dialect finds errors when execution reaches them, after the statements before it."""
+    dialect finds errors when execution reaches them, after the statements before it.  A
+    slip of the reader itself becomes the line's ``Internal error``, one line where the
+    program stops, never a traceback."""
+    try:
+        return _parsed_line(number, text, dialect)
+    except RecursionError:
+        from yaseer.basic.errors import OUT_OF_MEMORY
+        return ast.Line(number, [], text, error=BasicError("Out of memory", OUT_OF_MEMORY))
+    except BasicError:
+        raise
+    except Exception as slip:  # (a bug of this module: the program still gets one BASIC error)
+        error = BasicError(f"Internal error (reading the line: {type(slip).__name__}: {slip})", INTERNAL_ERROR)
+        return ast.Line(number, [], text, error=error)
+
+
+def _parsed_line(number: int, text: str, dialect: Dialect) -> ast.Line:
     try:
         statements = parse_statements(text, dialect)
     except BasicError as err:
@@ -1725,7 +1742,4 @@ def parse_line(number: int, text: str, dialect: Dialect = CASIO) -> ast.Line:
         if statements is None or statements == [err]:
             return ast.Line(number, [], text, error=err)
         return ast.Line(number, statements, text)
-    except RecursionError:
-        from yaseer.basic.errors import OUT_OF_MEMORY
-        return ast.Line(number, [], text, error=BasicError("Out of memory", OUT_OF_MEMORY))
     return ast.Line(number, statements, text)
