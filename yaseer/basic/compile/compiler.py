@@ -141,6 +141,7 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.program_areas = dialect.program_areas  # GOSUB PROG n, #n, "file:label"
         self.library_forms = dialect.library_forms  # THEN *
         self.locate_arguments = dialect.screen.locate_arguments  # LOCATE's (fewest, most)
+        self.byte_statements = dict(dialect.screen.byte_statements)  # read as GWSTS.ASM SCNINT (GW)
         self.late_errors = dialect.errors_when_reached  # a DEF FN body's errors when it is called
         self.reads_arguments_in_order = dialect.argument_readings  # a call that does not fit (argument_reading)
         self.using_each_value = dialect.using_each_value  # PRINT USING's values field by field
@@ -465,6 +466,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.hand_over(f"_M.set_trace({stmt.on})")
 
     def stmt_Cls(self, stmt, scope):
+        if "CLS" in self.byte_statements:
+            self.byte_statement("CLS", [] if stmt.mode is None else [stmt.mode], None, scope)
+            return
         mode = "None" if stmt.mode is None else self.numeric(stmt.mode, scope)
         self.emit(f"_M.clear_screen({mode})")
 
@@ -474,6 +478,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
         self.emit(f"_M.define_character({self.numeric(stmt.code, scope)}, {self.string(stmt.pattern, scope)})")
 
     def stmt_Locate(self, stmt, scope):
+        if "LOCATE" in self.byte_statements:
+            self.byte_statement("LOCATE", stmt.args, None, scope)
+            return
         fewest, most = self.locate_arguments
         if not fewest <= len(stmt.args) <= most or None in stmt.args[:fewest]:
             raise syntax_error()
@@ -487,6 +494,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             self.emit(f"_M.set_file_width({file}, {width})")
             return
         if stmt.device is not None:
+            if self.kind_of(stmt.device) != "s" and "WIDTH" in self.byte_statements:
+                self.byte_statement("WIDTH", [stmt.device, stmt.columns], None, scope)
+                return
             if self.kind_of(stmt.device) != "s":  # WIDTH columns, rows: the screen's size
                 self.emit(f"_M.set_screen_size({self.integer(stmt.device, scope)}, {self.integer(stmt.columns, scope)})")
                 return
@@ -495,6 +505,9 @@ class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
             return
         if self.kind_of(stmt.columns) == "s":
             raise syntax_error()  # WIDTH "LPT1:" without its width
+        if not stmt.printer and "WIDTH" in self.byte_statements:
+            self.byte_statement("WIDTH", [stmt.columns], None, scope)
+            return
         self.emit(f"_M.set_width({self.integer(stmt.columns, scope)}, {stmt.printer})")
 
     def stmt_Dim(self, stmt, scope):

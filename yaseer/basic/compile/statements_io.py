@@ -11,7 +11,7 @@ from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.expressions import CompileError, syntax_error, type_mismatch
 from yaseer.basic.compile.markers import LOAD_LOCALS, STORE_LOCALS
 from yaseer.basic.errors import (
-    ILLEGAL_FUNCTION_CALL, MISSING_OPERAND, OUT_OF_DATA, PATH_FILE_ACCESS_ERROR, SYNTAX_ERROR, UNDEFINED_LINE,
+    BasicError, ILLEGAL_FUNCTION_CALL, MISSING_OPERAND, OUT_OF_DATA, PATH_FILE_ACCESS_ERROR, SYNTAX_ERROR, UNDEFINED_LINE,
     error_message, undefined_line_message,
 )
 
@@ -442,6 +442,25 @@ class InputOutputCompiler:
         FRCINT first), None where one was left out."""
         return "(" + "".join(("None" if a is None else self.integer(a, scope)) + ", " for a in args) + ")"
 
+    def byte_statement(self, word: str, args: list, error, scope) -> None:
+        """A screen statement whose arguments are read one small number at a time
+        (``Dialect.screen.byte_statements``: GWSTS.ASM SCNINT): its arguments as far as its
+        count (past it, anything but one comma is EOSCHK's Syntax error, raised once they
+        are read), each checked by the machine as GETBYT reads it, in order, then ``error``
+        (what a bad text was: source/byte_lists.py), then the statement's own checks."""
+        reads = self.byte_statements[word]
+        if reads is not None and len(args) > reads:
+            if args[reads:] != [None] or error is not None:
+                error = BasicError("Syntax error", SYNTAX_ERROR)
+            args = args[:reads]
+        values = "(" + "".join(("None" if a is None else self.when_reached(lambda a=a: self.numeric(a, scope))) + ", "
+                               for a in args) + ")"
+        fault = "None" if error is None else f"({error.message!r}, {error.code})"
+        self.emit(f"_M.screen_words.run({word!r}, {values}, {fault})")
+
+    def stmt_ByteList(self, stmt, scope):
+        self.byte_statement(stmt.word, stmt.args, stmt.error, scope)
+
     def stmt_ScreenStatement(self, stmt, scope):
         """COLOR and SCREEN: at most three and four arguments; the machine checks them.
         GWSTS.ASM reads any number of arguments, left-out ones too (GTPRMS), and leaves
@@ -450,6 +469,9 @@ class InputOutputCompiler:
         Missing operand, COLOR alone and more arguments than the statement has Illegal
         function call.  VIEW alone resets the graphics viewport, which text mode has not:
         Illegal function call."""
+        if stmt.word in self.byte_statements:
+            self.byte_statement(stmt.word, stmt.args, None, scope)
+            return
         args = stmt.args
         if stmt.word == "VIEW" or (stmt.word == "COLOR" and not args):
             raise CompileError("Illegal function call", ILLEGAL_FUNCTION_CALL)

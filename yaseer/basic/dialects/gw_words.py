@@ -82,6 +82,9 @@ STATEMENTS = {
     # Illegal function call, MOTOR 0 and MOTOR 255 do nothing; GIOCAS.ASM's stub, Device
     # unavailable, is not what GW-BASIC 3.23 did)
     "MOTOR": ("i", 0, "_M.devices.motor", ""),
+    # a page of the screen mode to another (the recorded PCOPY test: alone or after a comma
+    # Missing operand, one page Syntax error, a page the mode lacks Illegal function call)
+    "PCOPY": ("ii", 2, "_M.screen_words.copy_page", ""),
 }
 # Statements that check the end of the statement before they act (GWSTS.ASM SOUNDS calls
 # EOSCHK before the note: ``SOUND 1,1,1`` is Syntax error, not the frequency's error); the

@@ -45,6 +45,19 @@ control code does its ``controls``.
   for PEEK and POKE (machine/address_space.py): &HB800 on GW-BASIC's colour PC (the CGA's
   text memory; a monochrome adapter's would be &HB000); None: the screen has no memory a
   program reaches (the Casio's PEEK reads its own RAM).
+* ``byte_statements``: the screen statements whose arguments are read one small number at a
+  time, as (word, how many) pairs: GW-BASIC's GWSTS.ASM SCNINT reads each (left out where
+  a comma or the statement's end comes first, else GETBYT: beyond -32768..32767 Overflow,
+  outside 0..255 Illegal function call, and a number followed by anything but ``,``, ``)``
+  or the statement's end Illegal function call); after ``how many`` of them the statement
+  must end (EOSCHK: Syntax error; one comma after the last is read with it).  ``None``:
+  any number of them (GTPRMS, COLOR and SCREEN).  Empty (the Casio): the statements read
+  their arguments as expressions.
+* ``modes``: the screen modes SCREEN n may choose (:class:`ScreenMode`, the first is the
+  text mode the machine starts in); empty: SCREEN is text mode 0 only.
+* ``literal_width``: True when ``WIDTH n`` with n starting with a number reads that number
+  alone (``WIDTH 39+1`` is Illegal function call: a real GW-BASIC 3.23's recorded WIDTH
+  test, as PC-BASIC 2.0.8 reads it).
 """
 
 from __future__ import annotations
@@ -54,7 +67,16 @@ from collections import namedtuple
 ScreenRules = namedtuple("ScreenRules", ("late_wrap", "origin", "row_first", "locate_arguments",
                                          "function_keys", "key_label", "clear_draws", "attributes",
                                          "trace_mark", "trace_halts", "input_reads_screen",
-                                         "printer_apart", "video_segment"), defaults=(None,))
+                                         "printer_apart", "video_segment", "byte_statements", "modes",
+                                         "literal_width"), defaults=(None, (), (), False))
+
+# One mode SCREEN n chooses: its number, the columns it sets (None: the width stays, as
+# the text mode keeps WIDTH 40 after a 40-column mode), its pages at 40 and at 80 columns,
+# the attribute text starts in, and what COLOR accepts there: "text" (foreground 0..31,
+# background and border 0..15), "palette" (CGA's background and palette: any byte), "none"
+# (Illegal function call) or "ega" (foreground 1..15, background 0..``colours``-1, the
+# third number any byte).
+ScreenMode = namedtuple("ScreenMode", ("number", "columns", "pages", "attribute", "color", "colours"))
 
 CASIO_SCREEN = ScreenRules(late_wrap=False, origin=0, row_first=False, locate_arguments=(2, 2),
                            function_keys=(), key_label=0, clear_draws=True, attributes=False,
@@ -66,10 +88,26 @@ CASIO_SCREEN = ScreenRules(late_wrap=False, origin=0, row_first=False, locate_ar
 GW_FUNCTION_KEYS = ("LIST ", "RUN\r", 'LOAD"', 'SAVE"', "CONT\r", ',"LPT1:"\r', "TRON\r", "TROFF\r",
                     "KEY ", "SCREEN 0,0,0\r")
 
+# The modes of a colour PC with a VGA (as PC-BASIC 2.0.8's default machine, which its
+# recorded tests ran against): text mode 0 (8 pages at 40 columns, 4 at 80), CGA's
+# 4-colour mode 1 and 2-colour mode 2, EGA's 16-colour modes 7, 8 and 9 (the recorded COLOR
+# test: COLOR 0 is refused in 2, 7, 8, 9, a background of 255 in 7 to 9, nothing but the
+# byte range in 1).  Only their text is emulated: no drawing.
+GW_MODES = (
+    ScreenMode(0, None, (8, 4), 7, "text", 16),
+    ScreenMode(1, 40, (1, 1), 3, "palette", 4),
+    ScreenMode(2, 80, (1, 1), 1, "none", 2),
+    ScreenMode(7, 40, (8, 8), 15, "ega", 16),
+    ScreenMode(8, 80, (4, 4), 15, "ega", 16),
+    ScreenMode(9, 80, (2, 2), 15, "ega", 64),
+)
+
 GW_SCREEN = ScreenRules(late_wrap=True, origin=1, row_first=True, locate_arguments=(0, 5),
                         function_keys=GW_FUNCTION_KEYS, key_label=6, clear_draws=False, attributes=True,
                         trace_mark="[{line}]", trace_halts=False, input_reads_screen=False,
-                        printer_apart=True, video_segment=0xB800)
+                        printer_apart=True, video_segment=0xB800,
+                        byte_statements=(("CLS", 1), ("LOCATE", 5), ("WIDTH", 2), ("COLOR", None), ("SCREEN", None)),
+                        modes=GW_MODES, literal_width=True)
 
 # What each control code does on GW-BASIC's text screen when PRINTed (the OEM's PRTMAP is
 # not in the published source; PC-BASIC 2.0.8's console does this): TAB to the next

@@ -24,6 +24,7 @@ from yaseer.basic.machine import runtime
 from yaseer.basic.machine.display import DRAWING_ACTIONS, Display, boxed
 from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, INPUT_PAST_END
 from yaseer.basic.machine.screen import OutputStream
+from yaseer.basic.machine.screen_words import ScreenWords
 from yaseer.patterns import Pattern
 
 # Memory the FX-850P's programs read (Becker's library): the code of the key that ended
@@ -234,6 +235,7 @@ class Console:
             return OutputStream(screen, self.dialect.width)
         columns, rows, shown = geometry
         self.display = Display(columns, rows, shown, dict(self.dialect.controls), self.dialect.screen)
+        self.screen_words = ScreenWords(self)
         return DisplayStream(screen, self.display, self.dialect.width)
 
     def shown(self, stream):
@@ -367,13 +369,14 @@ class Console:
 
     def view_print(self, rows) -> None:
         """VIEW PRINT [first TO last]: only those rows scroll (1..24 as PC-BASIC 2.0.8 checks;
-        last before first is Illegal function call); without rows, the whole screen again."""
+        last before first is Illegal function call; a row beyond -32768..32767 Overflow, as
+        the recorded VIEWPRNT test); without rows, the whole screen again."""
         display = self._screen_model()
         if rows is None:
             display.reset_view()
             return
         origin = display.rules.origin
-        first, last = runtime.cint(rows[0]) - origin, runtime.cint(rows[1]) - origin
+        first, last = to_int(rows[0]) - origin, to_int(rows[1]) - origin
         bottom = display.rows - 1 - (1 if display.keys else 0)
         if not (0 <= first <= last <= bottom):
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)

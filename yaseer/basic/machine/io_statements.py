@@ -99,13 +99,15 @@ class InputOutput:
     @staticmethod
     def set_file_width(file, columns) -> None:
         """WIDTH #n, w: the width PRINT # wraps ``file``'s lines at (the open file n: the
-        compiled code finds it before it reads w, as GIO86.ASM FILWID does), 1..255 (0 and
-        more than 255 Illegal function call; 255 never wraps, the disk's own width; GIO86.ASM
-        WIDTHS, FILWID, GETWDT).  (PC-BASIC 2.0.8 refuses 255.)"""
+        compiled code finds it before it reads w, as GIO86.ASM FILWID does), 0..255 (more
+        than 255 Illegal function call; 255 never wraps, the disk's own width; GIO86.ASM
+        WIDTHS, FILWID).  0 acts as 1: GIO86.ASM GETWDT refuses it, but a real GW-BASIC 3.23
+        took it (the recorded WIDTH test: each PRINT # item on a line of its own after it,
+        as PC-BASIC 2.0.8 prints).  (PC-BASIC 2.0.8 refuses 255.)"""
         n = runtime.cint(columns)
-        if not 1 <= n <= 255:
+        if not 0 <= n <= 255:
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-        file.set_width(None if n == 255 else n)
+        file.set_width(None if n == 255 else max(n, 1))
 
     def set_device_width(self, device: str, columns) -> None:
         """WIDTH "dev", n: ``LPT1:`` is WIDTH LPRINT n (GW-BASIC's source, GIOLPT.ASM

@@ -21,6 +21,7 @@ from yaseer.basic.dialects.dialect import CASIO, Dialect
 from yaseer.basic.errors import BasicError, INTERNAL_ERROR, MISSING_OPERAND, NEXT_WITHOUT_FOR, SYNTAX_ERROR
 from yaseer.basic.source.parse_tables import ACTIONS, END, RULES, START
 from yaseer.basic.dialects.reserved import UNSUPPORTED, mark_unsupported, unsupported_message
+from yaseer.basic.source.byte_lists import mark_literal_widths, read_byte_list
 from yaseer.basic.source.event_tokens import mark_events
 from yaseer.basic.source.scanner import UNSCANNED, Token, tokenize, tokenize_statements
 
@@ -844,6 +845,7 @@ def _read_as_statements(tokens: list, dialect: Dialect) -> list:
     """A line's tokens as its statements read them: event words as events (gw), reserved words
     the dialect lacks as unsupported, an ELSE no IF owns as the end of the line."""
     words = dialect.device_words
+    tokens = mark_literal_widths(tokens, dialect)
     marked = mark_events(tokens, words.events, words.statements) if words else tokens
     return _else_alone(mark_unsupported(marked), dialect)
 
@@ -992,6 +994,9 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     defined = _deferred_definition(tokens, bad_start, err, dialect)
     if defined is not None:
         return [defined] + _statements_after_error(tokens, bad_start, dialect)
+    read = read_byte_list(tokens, bad_start, dialect, parse_expression)
+    if read is not None:
+        return [read] + _statements_after_error(tokens, bad_start, dialect)
     checked_first = _checked_first(tokens, bad_start, err)
     if checked_first is not None:
         return [checked_first] + _statements_after_error(tokens, bad_start, dialect)

@@ -614,6 +614,17 @@ class ScreenStatement:
 
 
 @_node
+class ByteList:
+    """A screen statement read one small number at a time (``Dialect.screen.byte_statements``:
+    GW's CLS, LOCATE, WIDTH, COLOR, SCREEN) whose text went wrong: ``args`` the numbers
+    read before it (None where one was left out), ``error`` what the rest of the text is,
+    raised once they are read (source/byte_lists.py)."""
+    word: str
+    args: list
+    error: object = None
+
+
+@_node
 class ViewPrint:
     """VIEW PRINT [first TO last]: the rows that scroll (none given: the whole screen)."""
     first: object = None
