@@ -45,6 +45,10 @@ GROUPS = {
     "files": [
         'IOCTL #2, "X"', 'IOCTL 2, "X"', 'IOCTL #4, "X"', "IOCTL #2, 5", "IOCTL", "IOCTL #2", "IOCTL #2,",
         "PRINT IOCTL$(2)", "PRINT IOCTL$(4)", "PRINT IOCTL$(0)", "PRINT IOCTL$(300)", 'PRINT IOCTL$("A")',
+        # (the recorded IOCTL and IOCTL$ tests: the statement runs before the text after it is
+        # found bad; IOCTL$ reads # and looks for its file before its ")")
+        'IOCTL #2, "X" Z', 'IOCTL "A" LPRINT', "PRINT IOCTL$(#2)", 'PRINT IOCTL$("A"', "PRINT IOCTL$(2",
+        "PRINT IOCTL$(5", "PRINT IOCTL$(2, 1)",
         "LOCK #3", "LOCK #3: LOCK #3", "LOCK #3, 2 TO 4: LOCK #3, 5: UNLOCK #3, 2 TO 4: UNLOCK #3, 5",
         "LOCK #3, 2 TO 4: LOCK #3, 3", "LOCK #3, 2 TO 4: UNLOCK #3, 2", "LOCK #2, 5: UNLOCK #2", "LOCK #4",
         "LOCK #3, 0", "UNLOCK #3", "LOCK", "LOCK #3,", "LOCK #3, 1 TO", "LOCK 3, 1 TO 2 TO 3",

@@ -126,7 +126,7 @@ def test_screen_function_reads_characters_and_colours():
     machine, _ = run('10 COLOR 14, 1: LOCATE 3, 5: PRINT "Q";\n20 A = SCREEN(3, 5): B = SCREEN(3, 5, 1)\n'
                      "30 C = SCREEN(4, 5, 1)\n40 COLOR 7, 0: LOCATE 10, 1: PRINT A; B; C\n")
     assert rows(machine)[9] == " 81  30  7"
-    for bad in ("PRINT SCREEN(26, 1)", "PRINT SCREEN(1, 81)", "PRINT SCREEN(0, 1)", "COLOR 32", "COLOR , 16",
+    for bad in ("PRINT SCREEN(26, 1)", "PRINT SCREEN(1, 81)", "PRINT SCREEN(0, 0)", "COLOR 32", "COLOR , 16",
                 "LOCATE 0, 1", "LOCATE 1, 81", "VIEW PRINT 5 TO 4", "SCREEN 3", "CLS 3", "KEY 11, \"A\""):
         with pytest.raises(BasicError, match="Illegal function call"):
             run(f"10 {bad}\n")

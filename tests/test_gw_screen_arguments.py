@@ -120,3 +120,23 @@ def test_pcopy_copies_between_the_modes_pages():
     the text mode), else Illegal function call; FRCINT's Overflow.  (Recorded PCOPY test.)"""
     assert errors("PCOPY 0,3", "PCOPY", "PCOPY 0", "PCOPY 0,", "PCOPY 0,0,", "PCOPY 0,4", "PCOPY 0,32768",
                   "PCOPY -1,0") == [(22, 20), (2, 30), (22, 40), (2, 50), (5, 60), (6, 70), (5, 80)]
+
+
+def test_screen_function_reads_as_scnint_does():
+    """SCREEN(row, column[, z]) reads its numbers with SCNINT (GWSTS.ASM SCRENF): a number
+    missing where the text ends or a comma stands is Illegal function call (``SCREEN(``,
+    ``SCREEN(1``, ``SCREEN(1)``), so is text after the column other than ``)`` or ``, z)``
+    (``SCREEN(0, 0``: the z is missing); each number GETBYT's (a string Type mismatch, beyond an
+    integer Overflow, -1 Illegal function call); ``#`` where a number starts Syntax error.
+    A row or a column of 0 reads as 1, but not both (the recorded SCREENFN test)."""
+    assert errors('PRINT SCREEN(', 'PRINT SCREEN("A"', "PRINT SCREEN(1", "PRINT SCREEN(1)", "PRINT SCREEN(-1)",
+                  "PRINT SCREEN(1, 32768", "PRINT SCREEN(1, 1, 256", "PRINT SCREEN(0, 0", "PRINT SCREEN(#1)",
+                  "PRINT SCREEN(0, 0)", "PRINT SCREEN(1, 1, 1, 1)") == [
+        (5, 10), (13, 20), (5, 30), (5, 40), (5, 50), (6, 60), (5, 70), (5, 80), (2, 90), (5, 100), (5, 110)]
+    out = io.StringIO()
+    machine = Machine(screen=out, dialect=GW)
+    machine.load('10 LOCATE 1, 1: PRINT "QR": A = SCREEN(0, 1): B = SCREEN(1, 0): C = SCREEN(1, 2)\n'
+                 "20 LOCATE 5, 1: PRINT A; B; C\n")
+    machine.run()
+    machine.screen.catch_up()
+    assert machine.display.lines()[4] == " 81  81  82"

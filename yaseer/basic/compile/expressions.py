@@ -474,7 +474,10 @@ class ExpressionCompiler:
         evaluated and checked in turn, ``end`` (``.close()`` or a cut) raising what comes then
         (machine/argument_reading.py); ``message``, ``code``: the error should the reading
         accept it all."""
-        reads = "".join(f".a({self.expr(arg, scope)[0]})" for arg in node.args)
+        checks = getattr(self.device_words, "argument_checks", {}).get(node.name, ()) if self.device_words else ()
+        codes = [self.expr(arg, scope)[0] for arg in node.args]
+        codes = [f"{checks[k]}({code})" if k < len(checks) else code for k, code in enumerate(codes)]
+        reads = "".join(f".a({code})" for code in codes)
         return f"_rd({node.name!r}, {message!r}, {code}){reads}{end}"
 
     def expr_CutCall(self, node, scope):

@@ -19,7 +19,9 @@ from __future__ import annotations
 FUNCTIONS = {
     "INP": ("FUNC", ("n",), "n", "_M.devices.inp"),  # GWEVAL.ASM FNINP: FRQINT (-32768..65535), the port
     "EXTERR": ("FUNC", ("i",), "n", "_M.devices.extended_error"),
-    "IOCTL$": ("FUNC", ("i",), "s", "_M.devices.control_string"),
+    # IOCTL$([#]n): a file's number, as a call (FUNCN: its "#" read as VARPTR(#n)'s, and a call
+    # the text cuts short read as one: IOCTL$("A" Type mismatch, the recorded IOCTL$ test)
+    "IOCTL$": ("FUNCN", ("i",), "s", "_M.devices.control_string"),
     "ENVIRON$": ("FUNC", ("x",), "s", "_M.devices.environment"),
     # GWMAIN.ASM PEEK: FRQINT (-32768..65535), the byte at DEF SEG's segment (machine/address_space.py)
     "PEEK": ("FUNC", ("n",), "n", "_M.address_space.peek"),
@@ -40,6 +42,11 @@ FILE_FUNCTIONS = {"VARPTR": "_M.address_space.file_pointer", "IOCTL$": "_M.devic
 # ... and what each checks of its file before it asks for the ")" (a call cut there: VARPTR's
 # whole value, GETPTR; IOCTL$ the file open, then the ")", then the device: the recorded FILEXPR test).
 FILE_CHECKS = {"VARPTR": "_M.address_space.file_pointer", "IOCTL$": "_M.devices.control_file"}
+# Functions whose routine checks an argument as it reads it, before it looks for the ``,`` or
+# ``)`` after it: word -> the check of each argument (returning it), for a call the text cuts
+# short (``IOCTL$(1.5``: file 2 not open is Bad file number before the missing ``)``: the
+# recorded IOCTL$ test).
+ARGUMENT_CHECKS = {"IOCTL$": ("_M.devices.open_file_number",)}
 # Statements that may change variables the compiled block holds: its values are stored before
 # and taken back after (a POKE into a FIELD buffer changes the variables fielded over it).
 WRITES_VARIABLES = frozenset({"POKE", "PLAY"})  # (PLAY's X and = read variables: they are stored first)
@@ -129,4 +136,4 @@ class Words:
 
 WORDS = Words(functions=FUNCTIONS, system_values=SYSTEM_VALUES, statements=STATEMENTS, range_words=RANGE_WORDS,
               ends_first=ENDS_FIRST, dollar_apart=DOLLAR_APART, file_functions=FILE_FUNCTIONS, file_checks=FILE_CHECKS,
-              writes_variables=WRITES_VARIABLES, events=EVENTS)
+              writes_variables=WRITES_VARIABLES, events=EVENTS, argument_checks=ARGUMENT_CHECKS)

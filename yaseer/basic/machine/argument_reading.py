@@ -18,7 +18,7 @@ argument is evaluated only when the routine would have read it.
 from __future__ import annotations
 
 from yaseer.basic.arithmetic.values import to_int
-from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, SYNTAX_ERROR, TYPE_MISMATCH
+from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, MISSING_OPERAND, SYNTAX_ERROR, TYPE_MISMATCH
 
 
 def _syntax_error() -> BasicError:
@@ -108,9 +108,25 @@ def _byte_first():
     yield ")"
 
 
+def _screen():
+    """GWSTS.ASM SCRENF: SCNINT the row and the column (``"b"``: a number GETBYT reads, one
+    left out Illegal function call), each ended by ``,`` or ``)`` (``"s"``: any other text, the
+    statement's end too, leaves SCNINT's next argument missing: Illegal function call); after
+    the column a ``)`` ends the call, else the attribute, which ``)`` must end.  (The rows and
+    columns of the screen are checked when the whole call reads: Console.screen_char.)"""
+    _byte((yield "b"))
+    yield "s"
+    _byte((yield "b"))
+    if (yield "s") == ")":
+        return
+    _byte((yield "b"))
+    if (yield "s") != ")":
+        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+
+
 # (the names are Dialect.argument_readings of gw)
 READINGS = {"INSTR": _instr, "STRING$": _string_dollar, "LEFT$": _left_right, "RIGHT$": _left_right,
-            "MID$": _mid, "PLAY": _byte_first}
+            "MID$": _mid, "PLAY": _byte_first, "SCREEN": _screen}
 
 
 def reading_of(name: str, one_argument: bool):
@@ -143,6 +159,11 @@ class Reading:
     def _separator(self, found: str) -> None:
         """The routine's next request met ``found`` (``,`` or ``)``) in the text."""
         wants = self.wants
+        if wants == "b":  # SCNINT met a separator where a number may stand: it is missing
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        if wants == "s":
+            self.wants = self._next(found)
+            return
         if wants == ",?":
             self.wants = self._next(found)
             if found == ",":
@@ -156,7 +177,7 @@ class Reading:
         """The next argument, evaluated (the comma before it first, unless it is the first)."""
         if self.given:
             self._separator(",")
-        if self.wants != "e":
+        if self.wants not in ("e", "b"):
             raise _syntax_error()
         self.given += 1
         self.wants = self._next(value)
@@ -164,9 +185,11 @@ class Reading:
 
     def close(self):
         """The ``)`` after the last argument: the checks after it, else the compiler's error."""
-        if self.wants == "e":  # FN(): no argument where one must be
+        if self.wants in ("e", "b"):  # FN(): no argument where one must be
             raise _syntax_error()
         self._separator(")")
+        if self.wants == "b":  # SCNINT after the ")": the statement goes on without the number
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         raise self.error
 
     def cut(self, after_comma: bool, message: str, code: int):
@@ -175,6 +198,10 @@ class Reading:
         separator (Syntax error)."""
         if after_comma and self.given:
             self._separator(",")
-        if self.wants == "e" and (after_comma or not self.given):
+        wants = self.wants
+        if wants == "s" or (wants == "b" and code == MISSING_OPERAND):
+            # SCNINT: any text ends a number, and the statement's end leaves the next one missing
+            raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+        if wants in ("e", "b") and (after_comma or not self.given):
             raise BasicError(message, code)
         raise _syntax_error()

@@ -308,13 +308,19 @@ class Console:
 
     def screen_char(self, row, column, attribute=None) -> float:
         """SCREEN(row, column[, z]): the code of the character there, or with z not 0 its
-        colour attribute (GWSTS.ASM SCRENF; inside a VIEW PRINT window only, as PC-BASIC)."""
+        colour attribute (GWSTS.ASM SCRENF; inside a VIEW PRINT window only, as PC-BASIC).
+        Each number is a byte first (beyond an integer Overflow, then 0..255).  A row or a
+        column of 0 (one below the origin) reads as the first, but not both: a real GW-BASIC
+        3.23 did so in the recorded SCREENFN test (SCRENF's DEC would refuse 0; PC-BASIC 2.0.8
+        agrees with the recording)."""
         display = self._screen_model()
         origin = display.rules.origin
-        r, c = runtime.cint(row) - origin, runtime.cint(column) - origin
-        z = 0 if attribute is None else runtime.cint(attribute)
+        r, c = runtime.byte_argument(to_int(row)) - origin, runtime.byte_argument(to_int(column)) - origin
+        z = 0 if attribute is None else runtime.byte_argument(to_int(attribute))
+        if origin and (r < 0) != (c < 0):
+            r, c = max(r, 0), max(c, 0)
         inside = display.view_top <= r <= display.view_bottom if display.view_set else 0 <= r < display.rows
-        if not (inside and 0 <= c < display.columns and 0 <= z <= 255):
+        if not (inside and 0 <= c < display.columns):
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         if z:
             return float(display.attr_at(c, r))

@@ -11,9 +11,10 @@ host's is never read), and the file locks are records of this machine's open fil
 from __future__ import annotations
 
 from yaseer.basic.errors import (
-    BAD_RECORD_NUMBER, ILLEGAL_FUNCTION_CALL, OVERFLOW, PERMISSION_DENIED, error_for, not_emulated,
+    BAD_RECORD_NUMBER, ILLEGAL_FUNCTION_CALL, OVERFLOW, PERMISSION_DENIED, TYPE_MISMATCH, error_for, not_emulated,
 )
 from yaseer.basic.machine import file_locks
+from yaseer.basic.arithmetic.values import to_int
 from yaseer.basic.machine.runtime import byte_argument as _byte, cint
 
 # The ports of the PC's DMA controller (8237, 0..&H1F), on every PC: idle, they read 0, as
@@ -124,9 +125,19 @@ class Devices:
         """The check of IOCTL's and IOCTL$'s file: n must be an open file (Bad file number)."""
         self.files.get(n)
 
+    def open_file_number(self, number):
+        """``number`` as IOCTL$ reads its file's number: a number (else Type mismatch), a
+        byte (beyond an integer Overflow, outside 0..255 Illegal function call), an open
+        file (:meth:`control_file`); the number itself is returned."""
+        if isinstance(number, str):
+            raise error_for(TYPE_MISMATCH)
+        self.control_file(_byte(to_int(number)))
+        return number
+
     def control_string(self, n: int) -> str:
-        """IOCTL$(n): as IOCTL (its answer would come from the device's driver)."""
-        self.control(n, "")
+        """IOCTL$([#]n): as IOCTL, n read as :meth:`open_file_number` reads it (its answer
+        would come from the device's driver)."""
+        self.control(self.open_file_number(n), "")
         return ""  # (never reached)
 
     @staticmethod

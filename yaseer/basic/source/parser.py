@@ -1016,6 +1016,9 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     first = _first_value_checked(tokens, bad_start, err)
     if first is not None:
         return [first] + _statements_after_error(tokens, bad_start, dialect)
+    word = _word_read_as_far(tokens, bad_start, err)
+    if word is not None:
+        return [word] + _statements_after_error(tokens, bad_start, dialect)
     touched = _touched_element(tokens, bad_start, err)
     if touched is not None:
         return [touched] + _statements_after_error(tokens, bad_start, dialect)
@@ -1027,6 +1030,29 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     if printed:
         return [ast.CutShort(printed[0], err)] + _statements_after_error(tokens, bad_start, dialect)
     return [err] + _statements_after_error(tokens, bad_start, dialect)
+
+
+def _word_read_as_far(tokens: list, start: int, err: BasicError):
+    """A bad device-word statement (``IOCTL #1, "" X``) whose text up to where it goes wrong
+    reads as the statement: that statement, which reads and checks its arguments and runs,
+    then ``err`` for the rest (NEWSTT finds it: GWMAIN.ASM GONZER; the recorded IOCTL test:
+    ``IOCTL #1, "" X`` is the disk file's Illegal function call, ``IOCTL "A" X`` the file
+    number's Type mismatch).  None where the text goes wrong inside an expression (an
+    operator or ``(`` comes next: the expression's own error) or for any other statement."""
+    if tokens[start].type != "WORDSTMT":
+        return None
+    end = next((k for k in range(start + 1, len(tokens)) if tokens[k].type in _STATEMENT_ENDS), len(tokens))
+    for k in range(end - 1, start, -1):
+        try:
+            found = _parse(tokens[start:k])
+        except (BasicError, GrammarError):
+            continue
+        if tokens[k].type in _BINARY_OPERATORS or tokens[k].type in ("_LPAR", "COMMA", "TO"):
+            return None  # the statement reads on there (an operand, the next argument): its own error
+        if len(found) == 1 and isinstance(found[0], ast.WordStatement):
+            return ast.CutShort(found[0], err)
+        return None
+    return None
 
 
 def _goto_as_then(tokens: list, start: int) -> list | None:
@@ -1394,7 +1420,7 @@ def _cut_expression(tokens: list, start: int, err: BasicError, dialect: Dialect)
             opens.append(k)
         elif tokens[k].type == "_RPAR" and opens:
             opens.pop()
-    calls = [k for k in opens if k > start and (tokens[k - 1].type == "FUNCN" or tokens[k - 1].type == "FUNC" and (
+    calls = [k for k in opens if k > start and (tokens[k - 1].type in ("FUNCN", "SCREEN") or tokens[k - 1].type == "FUNC" and (
         k + 1 < len(tokens) and tokens[k + 1].type == "HASH" or tokens[k - 1].value in dialect.argument_readings))]
     if calls:
         paren = calls[-1]
