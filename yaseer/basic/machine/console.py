@@ -348,8 +348,9 @@ class Console:
     def screen_statement(self, word: str, args: tuple) -> None:
         """COLOR [foreground][, background][, border] (0..31, 0..15, 0..15: the text mode's,
         PC-BASIC 2.0.8; a terminal shows the colours, other output ignores them), and
-        SCREEN mode[, colour][, pages]: text mode 0 only (no graphics adapter: any other mode
-        is Illegal function call, as on a monochrome display)."""
+        SCREEN mode[, colour][, pages]: text mode 0 only.  (A dialect whose screen reads these
+        statements' numbers one at a time, gw, runs them in machine/screen_words.py, which
+        calls this for COLOR in the text mode.)"""
         display = self._screen_model()
         values = [None if a is None else runtime.cint(a) for a in args]
         if word == "SCREEN":  # (a mode left out keeps the mode, as PC-BASIC 2.0.8's SCREEN ,0)
