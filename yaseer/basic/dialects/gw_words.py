@@ -97,6 +97,12 @@ STATEMENTS = {
 # EOSCHK before the note: ``SOUND 1,1,1`` is Syntax error, not the frequency's error); the
 # others act, then NEWSTT finds what follows (``LOCK #1, 1 TO 2 TO 3`` locks first).
 ENDS_FIRST = frozenset({"SOUND"})
+# Statements whose arguments are read and checked, and the statement done, before the text
+# after them is looked at: bad text after a whole argument is found only then (the recorded
+# IOCTL test: ``IOCTL #1, "" X`` is the disk file's Illegal function call); for the others
+# such text is the statement's Syntax error before it acts (the recorded LOCK, OUT, POKE and
+# SOUND tests).
+READS_BEFORE_END = frozenset({"IOCTL"})
 # The word between LOCK's first and last record (the other arguments: commas).
 RANGE_WORDS = {"LOCK": "TO", "UNLOCK": "TO"}
 # Words whose ``$`` form GW-BASIC tokenises as the word and a ``$``, so blanks may stand
@@ -136,4 +142,5 @@ class Words:
 
 WORDS = Words(functions=FUNCTIONS, system_values=SYSTEM_VALUES, statements=STATEMENTS, range_words=RANGE_WORDS,
               ends_first=ENDS_FIRST, dollar_apart=DOLLAR_APART, file_functions=FILE_FUNCTIONS, file_checks=FILE_CHECKS,
-              writes_variables=WRITES_VARIABLES, events=EVENTS, argument_checks=ARGUMENT_CHECKS)
+              writes_variables=WRITES_VARIABLES, events=EVENTS, argument_checks=ARGUMENT_CHECKS,
+              reads_before_end=READS_BEFORE_END)

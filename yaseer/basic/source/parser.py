@@ -1016,7 +1016,7 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     first = _first_value_checked(tokens, bad_start, err)
     if first is not None:
         return [first] + _statements_after_error(tokens, bad_start, dialect)
-    word = _word_read_as_far(tokens, bad_start, err)
+    word = _word_read_as_far(tokens, bad_start, err, dialect)
     if word is not None:
         return [word] + _statements_after_error(tokens, bad_start, dialect)
     touched = _touched_element(tokens, bad_start, err)
@@ -1032,14 +1032,18 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     return [err] + _statements_after_error(tokens, bad_start, dialect)
 
 
-def _word_read_as_far(tokens: list, start: int, err: BasicError):
-    """A bad device-word statement (``IOCTL #1, "" X``) whose text up to where it goes wrong
-    reads as the statement: that statement, which reads and checks its arguments and runs,
-    then ``err`` for the rest (NEWSTT finds it: GWMAIN.ASM GONZER; the recorded IOCTL test:
-    ``IOCTL #1, "" X`` is the disk file's Illegal function call, ``IOCTL "A" X`` the file
-    number's Type mismatch).  None where the text goes wrong inside an expression (an
-    operator or ``(`` comes next: the expression's own error) or for any other statement."""
-    if tokens[start].type != "WORDSTMT":
+def _word_read_as_far(tokens: list, start: int, err: BasicError, dialect: Dialect):
+    """A bad device-word statement that reads its arguments before it looks at what follows
+    them (``Dialect.device_words.reads_before_end``: IOCTL) whose text, up to where it goes
+    wrong after an argument, reads as the statement: that statement, which checks its
+    arguments and runs, then ``err`` for the rest (the recorded IOCTL test: ``IOCTL #1, "" X``
+    is the disk file's Illegal function call, ``IOCTL "A" X`` the file number's Type
+    mismatch).  None where the text goes wrong inside an expression or where the next
+    argument should start (an operator, ``(``, ``,`` or TO comes next, or the text stops
+    after the word, a ``#`` or a separator: the statement's own error), or for any other
+    statement."""
+    words = dialect.device_words
+    if tokens[start].type != "WORDSTMT" or words is None or tokens[start].value not in words.reads_before_end:
         return None
     end = next((k for k in range(start + 1, len(tokens)) if tokens[k].type in _STATEMENT_ENDS), len(tokens))
     for k in range(end - 1, start, -1):
@@ -1047,7 +1051,8 @@ def _word_read_as_far(tokens: list, start: int, err: BasicError):
             found = _parse(tokens[start:k])
         except (BasicError, GrammarError):
             continue
-        if tokens[k].type in _BINARY_OPERATORS or tokens[k].type in ("_LPAR", "COMMA", "TO"):
+        if tokens[k].type in _BINARY_OPERATORS or tokens[k].type in ("_LPAR", "COMMA", "TO") \
+                or tokens[k - 1].type in ("WORDSTMT", "HASH", "EQ", "COMMA", "TO"):
             return None  # the statement reads on there (an operand, the next argument): its own error
         if len(found) == 1 and isinstance(found[0], ast.WordStatement):
             return ast.CutShort(found[0], err)
