@@ -49,6 +49,8 @@ GROUPS = {
         # found bad; IOCTL$ reads # and looks for its file before its ")")
         'IOCTL #2, "X" Z', 'IOCTL "A" LPRINT', "PRINT IOCTL$(#2)", 'PRINT IOCTL$("A"', "PRINT IOCTL$(2",
         "PRINT IOCTL$(5", "PRINT IOCTL$(2, 1)",
+        # (but LOCK finds bad text before it locks: the recorded LOCK test; OUT's the recorded OUT)
+        "LOCK #3 LPRINT", "LOCK #3, LPRINT", "OUT LPRINT",
         "LOCK #3", "LOCK #3: LOCK #3", "LOCK #3, 2 TO 4: LOCK #3, 5: UNLOCK #3, 2 TO 4: UNLOCK #3, 5",
         "LOCK #3, 2 TO 4: LOCK #3, 3", "LOCK #3, 2 TO 4: UNLOCK #3, 2", "LOCK #2, 5: UNLOCK #2", "LOCK #4",
         "LOCK #3, 0", "UNLOCK #3", "LOCK", "LOCK #3,", "LOCK #3, 1 TO", "LOCK 3, 1 TO 2 TO 3",
