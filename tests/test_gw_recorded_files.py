@@ -179,3 +179,66 @@ def test_record_locks_bind_the_other_openings_of_a_file(tmp_path):
               '50 CLOSE: OPEN "S.DAT" FOR OUTPUT AS 1: LOCK #1, 7 TO 9: OPEN "S.DAT" FOR RANDOM AS 2\n'
               '60 GET #2, 1: PUT #2, 9: UNLOCK #1, 1: PUT #2, 9: END\n100 PRINT ERR; ERL: RESUME NEXT\n')
     assert yaseer_run(source, tmp_path) == " 70  30 \n 70  30 \n 70  40 \n 70  40 \n 70  40 \n 70  60 \n"
+
+
+def _tokenised(*lines: tuple[int, bytes]) -> bytes:
+    """A tokenised program file (0xFF, then each line's link, number, tokens and 0, a zero link)."""
+    from yaseer.basic.machine.program_crunch import TEXT_START
+
+    body = bytearray()
+    for number, tokens in lines:
+        line = number.to_bytes(2, "little") + tokens + b"\0"
+        body += (TEXT_START + len(body) + 2 + len(line)).to_bytes(2, "little") + line
+    return b"\xff" + bytes(body) + b"\0\0\x1a"
+
+
+_PRINT, _EQUALS, _ELSE, _THEN, _IF, _COLON = b"\x91", b"\xe7", b"\xa1", b"\xcd", b"\x8b", b":"
+
+
+def test_a_tokenised_file_s_name_that_spells_a_keyword(tmp_path):
+    """keyword_as_varname_in_tokenised_file: a tokenised file may hold a name whose letters
+    spell a reserved word (``PRINT=1``, the name stored as letters): it is a variable when
+    the program runs and when it is listed and saved again (the program's text marks it:
+    scanner.STORED_NAME; CRUNCH stores the letters back).  A real GW-BASIC 3.23 printed 1;
+    so does PC-BASIC 2.0.8, which runs the tokens."""
+    from yaseer.basic.machine.program_crunch import crunch_line
+    from yaseer.basic.machine.program_file import detokenise, line_text
+
+    first, second = b"PRINT" + _EQUALS + b"\x12", _PRINT + b" PRINT"
+    data = _tokenised((10, first), (20, second))
+    for folder in (tmp_path / "yaseer", tmp_path / "pcbasic"):
+        folder.mkdir()
+        (folder / "T.BAS").write_bytes(data)
+    program = '10 CHAIN "T"\n'
+    assert yaseer_run(program, tmp_path / "yaseer") == pcbasic_run(program, tmp_path / "pcbasic") == " 1 \n"
+    text = detokenise(data[1:], exact=True).split("\r\n")
+    assert [crunch_line(line.split(" ", 1)[1]) for line in text[:2]] == [first, second]
+    assert (line_text(first), line_text(second)) == ("PRINT=1", "PRINT PRINT")
+
+
+@pytest.mark.parametrize("tokens, listed", [
+    (_IF + b" X " + _THEN + b" \x0e\x32\x00" + _COLON + _ELSE + b" \x0e\x3c\x00", "IF X THEN 50ELSE 60"),
+    (_COLON + _ELSE, "ELSE"),  # a typed ELSE alone
+    (_ELSE, "LSE"),  # no ':' before it: LIST steps back over nothing and loses the E
+    (b"AB " + _ELSE, "ABELSE"),  # the blank before it is stepped over
+    (b"AB" + _ELSE, "A ELSE"),  # the B is, and a letter before gets its blank
+])
+def test_a_tokenised_file_s_else_as_list_shows_it(tokens, listed):
+    """detokenise_ELSE: GWLIST.ASM LIST steps back one character for ELSE (the ``:`` CRUNCH
+    stores before it), so an ELSE stored without it loses the character before, or its own
+    E, as a real GW-BASIC 3.23 listed them; loaded and crunched again the line keeps its
+    bytes (scanner.STORED_ELSE for the token alone).  The recording decides: PC-BASIC
+    2.0.8 lists ``50 ELSE`` and ``ELSE``."""
+    from yaseer.basic.machine.program_crunch import crunch_line
+    from yaseer.basic.machine.program_file import detokenise, line_text
+
+    assert line_text(tokens) == listed
+    loaded = detokenise(_tokenised((10, tokens))[1:], exact=True)
+    assert crunch_line(loaded[3:].split("\r\n")[0]) == tokens
+
+
+def test_a_tokenised_file_s_lone_else_runs_as_else(tmp_path):
+    """An ELSE token with no ':' before it, loaded from a tokenised file, is the statement
+    ELSE (the rest of its line skipped), as any ELSE no IF owns."""
+    (tmp_path / "T.BAS").write_bytes(_tokenised((10, _ELSE + _PRINT + b" 1"), (20, _PRINT + b" 2")))
+    assert yaseer_run('10 CHAIN "T"\n', tmp_path) == " 2 \n"

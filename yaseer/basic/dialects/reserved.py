@@ -37,16 +37,24 @@ UNSUPPORTED = "UNSUPPORTED"  # token type: a reserved word the dialect does not 
 _NAME_TOKENS = ("NAME", "STRNAME")
 
 
+class StoredName(str):
+    """A name a tokenised program file holds as letters that spell a reserved word
+    (``PRINT=1``: scanner.STORED_NAME): a variable, never an unsupported word."""
+
+    __slots__ = ()
+
+
 def mark_unsupported(tokens: list) -> list:
     """``tokens`` with every name that is a reserved word as an ``UNSUPPORTED`` token.
 
     (The scanner has already read every implemented keyword as a keyword, so a
-    reserved word still read as a name is one the dialect does not have.)
+    reserved word still read as a name is one the dialect does not have; a
+    :class:`StoredName` is a file's variable.)
     """
     if not any(t.type in _NAME_TOKENS and t.value in GW_RESERVED_WORDS for t in tokens):
         return tokens
-    return [t.update(type=UNSUPPORTED) if t.type in _NAME_TOKENS and t.value in GW_RESERVED_WORDS else t
-            for t in tokens]
+    return [t.update(type=UNSUPPORTED) if t.type in _NAME_TOKENS and t.value in GW_RESERVED_WORDS
+            and type(t.value) is not StoredName else t for t in tokens]
 
 
 def unsupported_message(word: str) -> str:

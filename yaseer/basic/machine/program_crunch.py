@@ -38,7 +38,8 @@ from yaseer.basic.machine.program_file import (
     END_OF_FILE, TOKENISED, TOKENS, TWO_BYTE_TOKENS, line_text, protected_file,
 )
 from yaseer.basic.source.scanner import (
-    EXACT_MARKERS, LINE_NUMBER_WORDS, detokenize, exact_constant, gw_number, linget, radix_number,
+    EXACT_MARKERS, LINE_NUMBER_WORDS, STORED_ELSE, STORED_NAME, detokenize, exact_constant, gw_number, linget,
+    radix_number,
 )
 
 # GW-BASIC 3.23's program start (TXTTAB) with its default /F:3 /S:128 file buffers: the
@@ -76,6 +77,17 @@ def crunch_line(text: str) -> bytes:
         elif c == " ":
             out.append(0x20)
             i += 1
+        elif c == STORED_ELSE and not data and upper.startswith("ELSE", i + 1):
+            out += _WORDS["ELSE"]  # the token alone: a file's ELSE without its ":"
+            donum = _LINE_NUMBER
+            i += 5
+        elif c == STORED_NAME and not data:
+            end = i + 1
+            while end < n and upper[end] in _NAME:
+                end += 1
+            out += upper[i + 1:end].encode("ascii")  # a file's name that spells a word
+            donum = _IN_NAME
+            i = end
         elif c in EXACT_MARKERS and not data and exact_constant(upper, i) is not None:
             marker, constant, i = exact_constant(upper, i)  # a file's number constant: its own bytes back
             out += _codes(marker) + constant

@@ -22,7 +22,7 @@ from __future__ import annotations
 from yaseer.basic.arithmetic import mbf_double
 from yaseer.basic.arithmetic.values import DOUBLE_DIGITS, SINGLE_DIGITS, double_of, unsigned_text
 from yaseer.basic.machine.gwfunctions import _from_mbf, mks
-from yaseer.basic.source.scanner import gw_number
+from yaseer.basic.source.scanner import STORED_ELSE, STORED_NAME, gw_number
 
 END_OF_FILE = 0x1A  # Ctrl-Z
 TOKENISED = 0xFF
@@ -163,9 +163,18 @@ def _line_text(body: bytes, i: int, exact: bool = False) -> tuple[str, int]:
             i += 1
             continue
         text = None
-        if byte == 0x3A and i + 1 < n and body[i + 1] == _ELSE:  # ELSE is stored as ":ELSE"
+        if byte == _ELSE or (byte == 0x3A and i + 1 < n and body[i + 1] == _ELSE and exact and not _after_name(out)):
+            if byte == _ELSE:
+                out = _else_written(out, exact)
+            else:  # ELSE is stored as ":ELSE": the ELSE typed alone gives both bytes back
+                out.append("ELSE")
+                i += 1
             i += 1
+            if i < n and (_alnum(chr(body[i])) or body[i] == ord(".")):
+                out.append(" ")  # (as after any keyword: the name after it kept apart)
             continue
+        if exact and _starts_name(byte, out) and _reads_as_word(body, i):
+            out.append(STORED_NAME)  # a name the file holds where LIST shows a keyword (PRINT=1)
         if byte == 0x3A and body[i + 1:i + 3] == bytes((_REM, _QUOTE_REM)):  # ' is ":REM'"
             out.append("'")
             text, i = "rem", i + 3
@@ -185,6 +194,59 @@ def _line_text(body: bytes, i: int, exact: bool = False) -> tuple[str, int]:
         if word[-1:].isalpha() and word != "FN" and i < n and (_alnum(chr(body[i])) or body[i] == ord(".")):
             out.append(" ")  # ... and from the name after it
     return "".join(out), i
+
+
+def _else_written(out: list, exact: bool) -> list:
+    """The text so far with an ELSE token added.  ``exact`` (the program's text): the
+    marker scanner.STORED_ELSE and ELSE, which CRUNCH stores back as the token alone (the
+    ``:`` CRUNCH puts before a typed ELSE is a byte of its own).  Else as GWLIST.ASM LIST
+    shows it (NTQTTK: for ELSE it steps back over the character before, the ``:`` CRUNCH
+    stores there, then adds a blank only after a letter or digit, as for any keyword): a
+    ``:ELSE`` shows as ELSE with nothing between it and what came before (``10ELSE``), an
+    ELSE with no ``:`` loses the character before it (``TEXT ELSE`` stored without the
+    colon lists as ``TEXTELSE``), or, first in its line, its own E (``LSE``), as a real
+    GW-BASIC 3.23 listed them (PC-BASIC's detokenise_ELSE test)."""
+    if exact:  # (after a name's letters, ":" then the marker: ``AELSE`` would be one name)
+        return out + [STORED_ELSE + "ELSE"]
+    shown = "".join(out)
+    if not shown:
+        return ["LSE"]
+    spaced = _alnum(shown[-1]) or shown[-1] == "."
+    return [shown[:-1] + (" " if spaced else "") + "ELSE"]
+
+
+_WORD_TEXTS = frozenset(word for table in (TOKENS, *TWO_BYTE_TOKENS.values())
+                        for word in table.values() if word[:1].isalpha())
+_LONGEST_WORD = max(map(len, _WORD_TEXTS))
+_NAME_BYTES = frozenset(b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789.")
+
+
+def _after_name(out: list) -> bool:
+    """Does the text so far end in a letter, digit or point (a name or number goes on)?"""
+    return bool(out) and (_alnum(out[-1][-1:]) or out[-1][-1:] == ".")
+
+
+def _starts_name(byte: int, out: list) -> bool:
+    """Does the letter ``byte`` start a name (no letter, digit or point before it)?"""
+    return chr(byte).isascii() and chr(byte).isalpha() and not _after_name(out)
+
+
+def _reads_as_word(body: bytes, i: int) -> bool:
+    """Would the name whose letters start at ``body[i]`` be read back as a reserved word,
+    as CRUNCH reads a typed line (program_crunch._reserved_word: the longest word there, not
+    one when a letter or digit follows it but for FN, USR and words ending in ``(``)?  A
+    tokenised file may hold such a name (``PRINT=1`` stored as letters: PC-BASIC's
+    keyword_as_varname_in_tokenised_file test)."""
+    end = i
+    while end < len(body) and body[end] in _NAME_BYTES:
+        end += 1
+    text = body[i:end + 1].decode("latin-1").upper()
+    for length in range(min(_LONGEST_WORD, len(text)), 0, -1):
+        word = text[:length]
+        if word in _WORD_TEXTS:
+            after = text[length:length + 1]
+            return word[-1] == "(" or word in ("FN", "USR") or not (after.isascii() and after.isalnum())
+    return False
 
 
 def _alnum(character: str) -> bool:

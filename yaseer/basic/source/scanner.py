@@ -26,7 +26,7 @@ from yaseer.basic.dialects.dialect import CASIO, Dialect
 from yaseer.basic.errors import (
     DIRECT_STATEMENT_IN_FILE, LINE_BUFFER_OVERFLOW, BasicError, OVERFLOW, SYNTAX_ERROR, UNDEFINED_LINE, error_message,
 )
-from yaseer.basic.dialects.reserved import GW_RESERVED_WORDS, UNSUPPORTED
+from yaseer.basic.dialects.reserved import GW_RESERVED_WORDS, UNSUPPORTED, StoredName
 from yaseer.patterns import Pattern
 
 # Statement and operator keywords every dialect reserves: each is its own terminal type.
@@ -491,6 +491,10 @@ def _scan_typed_number(upper: str, i: int, notes: list | None = None) -> tuple[t
 # into GW-BASIC holds one.
 EXACT_DOUBLE, EXACT_SINGLE = "\x1f", "\x1d"
 EXACT_MARKERS = EXACT_DOUBLE + EXACT_SINGLE
+# a tokenised file's bytes that a typed line would not give (program_file.detokenise): a name
+# whose letters spell a reserved word (STORED_NAME, then the name: ``PRINT=1``), and an
+# ELSE token stored without the ``:`` CRUNCH puts before it (STORED_ELSE, then ELSE)
+STORED_NAME, STORED_ELSE = "\x1e", "\x1b"
 _EXACT = Pattern("\x1f([0-9A-F]{16})|\x1d([0-9A-F]{8})")
 
 
@@ -613,6 +617,18 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None, beg
                 yield "NUMBER", (wide_literal(data.hex()), "#"), start, i
             else:  # a single's 4 bytes are a double's with 4 low bytes of 0: exact in a float
                 yield "NUMBER", (wide_literal("00000000" + data.hex()), "!"), start, i
+        elif ch == STORED_ELSE and typed and upper.startswith("ELSE", i + 1):
+            i += 1  # the ELSE after it is read as any ELSE
+        elif ch == STORED_NAME and typed:
+            j = i + 1
+            while j < n and upper[j] in _NAME_CHARS:
+                j += 1
+            if j == i + 1:
+                raise _syntax_error()
+            kind = "STRNAME" if j < n and upper[j] == "$" else "NAME"
+            j += j < n and upper[j] in "%!#$"
+            yield kind, StoredName(_name(text, i + 1, j, kind, dialect)), start, j
+            i = j
         elif ch.isdigit() or (ch == "." and i + 1 < n and upper[i + 1].isdigit()) or (ch in "&." and typed):
             value, i = _scan_typed_number(upper, i, notes) if typed else _scan_number(upper, i)
             yield "NUMBER", value, start, i
