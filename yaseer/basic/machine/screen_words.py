@@ -18,12 +18,8 @@ screen's (no drawing is emulated).  Pages other than the one shown are checked, 
 from __future__ import annotations
 
 from yaseer.basic.arithmetic.values import to_int
-from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, MISSING_OPERAND
-from yaseer.basic.machine.runtime import byte_argument
-
-
-def _fc() -> BasicError:
-    return BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+from yaseer.basic.errors import BasicError, MISSING_OPERAND
+from yaseer.basic.machine.runtime import byte_argument, illegal_function_call
 
 
 class ByteReader:
@@ -78,7 +74,7 @@ class ScreenWords:
         n = reader.next()
         reader.end()
         if n is not None and n > 2:
-            raise _fc()
+            raise illegal_function_call()
         self.machine.clear_screen(n)
 
     def locate(self, reader: ByteReader) -> None:
@@ -94,17 +90,17 @@ class ScreenWords:
         if display.keys_on and display.keys:
             bottom = min(bottom, display.rows - 2)
         if not top <= row <= bottom:
-            raise _fc()
+            raise illegal_function_call()
         column = reader.next()
         # left out: the cursor's column, a full row's waiting wrap as the last (SCNDRV.ASM SCNPOS)
         column = min(display.x, display.columns - 1) if column is None else column - 1
         if not 0 <= column < display.columns:
-            raise _fc()
+            raise illegal_function_call()
         cursor, start, stop = reader.next(), reader.next(), reader.next()
         reader.end()
         if (cursor is not None and cursor > 1) or (start is None and stop is not None) \
                 or any(v is not None and v > 31 for v in (start, stop)):
-            raise _fc()
+            raise illegal_function_call()
         display.locate(column, row)
         machine.screen.column = column
 
@@ -119,7 +115,7 @@ class ScreenWords:
         if (columns, rows) == (display.columns, display.rows):
             return
         if rows != display.rows or columns not in (40, 80):
-            raise _fc()
+            raise illegal_function_call()
         self.machine.set_width(columns)
 
     def color(self, reader: ByteReader) -> None:
@@ -128,20 +124,20 @@ class ScreenWords:
         more than three Illegal function call, then the mode's ranges (ScreenMode.color)."""
         values = reader.rest()
         if not values:
-            raise _fc()
+            raise illegal_function_call()
         _no_missing_last(values)
         if len(values) > 3:
-            raise _fc()
+            raise illegal_function_call()
         mode = self.mode
         rule = "text" if mode is None else mode.color
         if rule == "none":
-            raise _fc()
+            raise illegal_function_call()
         if rule == "ega":
             fore, back = (values + [None, None])[:2]
             display = self.machine._screen_model()
             fore = display.attr & 0x0F if fore is None else fore
             if not 1 <= fore <= 15 or (back is not None and back >= mode.colours):
-                raise _fc()
+                raise illegal_function_call()
             display.attr = fore
             return
         if rule == "text":
@@ -158,21 +154,21 @@ class ScreenWords:
             raise BasicError("Missing operand", MISSING_OPERAND)
         _no_missing_last(values)
         if len(values) > 4:
-            raise _fc()
+            raise illegal_function_call()
         number, _colour, active, shown = (values + [None] * 4)[:4]
         current = self.mode
         if not self.modes:  # no modes: the text screen alone
             if number not in (None, 0) or any(v not in (None, 0) for v in (active, shown)):
-                raise _fc()
+                raise illegal_function_call()
             return
         mode = current if number is None else self.modes.get(number)
         if mode is None:
-            raise _fc()
+            raise illegal_function_call()
         display = self.machine._screen_model()
         columns = mode.columns or display.columns
         pages = mode.pages[columns == 80]
         if any(page is not None and page >= pages for page in (active, shown)):
-            raise _fc()
+            raise illegal_function_call()
         if mode is current:
             return
         self.mode = mode
@@ -188,7 +184,7 @@ class ScreenWords:
         display = self.machine._screen_model()
         pages = 1 if mode is None else mode.pages[display.columns == 80]
         if not (0 <= source < pages and 0 <= target < pages):
-            raise _fc()
+            raise illegal_function_call()
 
 
 def _no_missing_last(values: list) -> None:

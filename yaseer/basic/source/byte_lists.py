@@ -22,7 +22,7 @@ alone (``Dialect.screen.literal_width``).
 
 from __future__ import annotations
 
-from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, SYNTAX_ERROR
+from yaseer.basic.errors import BasicError, ILLEGAL_FUNCTION_CALL, SYNTAX_ERROR, error_for
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.source.scanner import UNSCANNED, Token
 
@@ -30,10 +30,6 @@ _ENDS = frozenset(("_COLON", "ELSE"))
 # what may follow a whole expression and go on with it: the text is then bad inside it
 _GOES_ON = frozenset(("PLUS", "MINUS", "STAR", "SLASH", "BSLASH", "CARET", "EQ", "LT", "GT", "LE", "GE", "NE",
                       "AND", "OR", "XOR", "EQV", "IMP", "MOD", "_LPAR"))
-
-
-def _fc() -> BasicError:
-    return BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
 
 
 def _pieces(tokens: list) -> list:
@@ -81,7 +77,7 @@ def read_byte_list(tokens: list, start: int, dialect, parse_expression):
         first = parse_expression(piece[:read])
         if piece[read].type in _GOES_ON or (word == "WIDTH" and k == 0 and ast.expr_type(first) == "s"):
             return None  # bad inside the expression (its own error), or WIDTH "device" without its comma
-        return ast.ByteList(word, args + [first], _fc())
+        return ast.ByteList(word, args + [first], error_for(ILLEGAL_FUNCTION_CALL))
     return ast.ByteList(word, args, None)
 
 
@@ -102,7 +98,7 @@ def mark_literal_widths(tokens: list, dialect) -> list:
                 or tokens[k + 1].type in _ENDS or tokens[k + 1].type in ("COMMA", "_RPAR"):
             continue
         out.append(tokens[k])
-        out.append(Token(UNSCANNED, _fc()))
+        out.append(Token(UNSCANNED, error_for(ILLEGAL_FUNCTION_CALL)))
         k += 1
         while k < len(tokens) and tokens[k].type not in _ENDS:
             k += 1
