@@ -35,11 +35,19 @@ def test_ctrl_c_while_starting_is_one_line_and_status_130(tmp_path):
     """
     listing = tmp_path / "loop.bas"
     listing.write_text("10 GOTO 10\n")
+    ending = tmp_path / "end.bas"
+    ending.write_text("10 END\n")
+    # The delays span one whole start as long as it takes on this machine now (a loaded
+    # machine starts several times slower), so that the signals still fall inside it.
+    began = time.monotonic()
+    subprocess.run([sys.executable, "-m", "yaseer", "run", str(ending)], capture_output=True, cwd=tmp_path,
+                   check=True, timeout=120)
+    spread = max(0.3, 1.5 * (time.monotonic() - began))
     quiet = 0
     for attempt in range(36):
         child = subprocess.Popen([sys.executable, "-m", "yaseer", "run", str(listing)], stdout=subprocess.PIPE,
                                  stderr=subprocess.PIPE, text=True, cwd=tmp_path)
-        time.sleep(0.02 + 0.008 * attempt)
+        time.sleep(0.02 + spread * attempt / 35)
         child.send_signal(signal.SIGINT)
         try:
             _, err = child.communicate(timeout=60)
