@@ -75,8 +75,11 @@ ScreenRules = namedtuple("ScreenRules", ("late_wrap", "origin", "row_first", "lo
 # the attribute text starts in, and what COLOR accepts there: "text" (foreground 0..31,
 # background and border 0..15), "palette" (CGA's background and palette: any byte), "none"
 # (Illegal function call) or "ega" (foreground 1..15, background 0..``colours``-1, the
-# third number any byte).
-ScreenMode = namedtuple("ScreenMode", ("number", "columns", "pages", "attribute", "color", "colours"))
+# third number any byte).  A graphics mode also has its pixels: ``width`` x ``height``,
+# ``bits`` of video memory a pixel (2 in CGA's mode 1, 1 in mode 2, 4 in EGA's modes: their
+# GET arrays and BSAVE images pack pixels so); a text mode has 0 of each.
+ScreenMode = namedtuple("ScreenMode", ("number", "columns", "pages", "attribute", "color", "colours",
+                                       "width", "height", "bits"), defaults=(0, 0, 0))
 
 CASIO_SCREEN = ScreenRules(late_wrap=False, origin=0, row_first=False, locate_arguments=(2, 2),
                            function_keys=(), key_label=0, clear_draws=True, attributes=False,
@@ -92,14 +95,14 @@ GW_FUNCTION_KEYS = ("LIST ", "RUN\r", 'LOAD"', 'SAVE"', "CONT\r", ',"LPT1:"\r', 
 # recorded tests ran against): text mode 0 (8 pages at 40 columns, 4 at 80), CGA's
 # 4-colour mode 1 and 2-colour mode 2, EGA's 16-colour modes 7, 8 and 9 (the recorded COLOR
 # test: COLOR 0 is refused in 2, 7, 8, 9, a background of 255 in 7 to 9, nothing but the
-# byte range in 1).  Only their text is emulated: no drawing.
+# byte range in 1).  The graphics modes' pixels live in machine/graphics.py.
 GW_MODES = (
     ScreenMode(0, None, (8, 4), 7, "text", 16),
-    ScreenMode(1, 40, (1, 1), 3, "palette", 4),
-    ScreenMode(2, 80, (1, 1), 1, "none", 2),
-    ScreenMode(7, 40, (8, 8), 15, "ega", 16),
-    ScreenMode(8, 80, (4, 4), 15, "ega", 16),
-    ScreenMode(9, 80, (2, 2), 15, "ega", 64),
+    ScreenMode(1, 40, (1, 1), 3, "palette", 4, 320, 200, 2),
+    ScreenMode(2, 80, (1, 1), 1, "none", 2, 640, 200, 1),
+    ScreenMode(7, 40, (8, 8), 15, "ega", 16, 320, 200, 4),
+    ScreenMode(8, 80, (4, 4), 15, "ega", 16, 640, 200, 4),
+    ScreenMode(9, 80, (2, 2), 15, "ega", 64, 640, 350, 4),
 )
 
 GW_SCREEN = ScreenRules(late_wrap=True, origin=1, row_first=True, locate_arguments=(0, 5),
