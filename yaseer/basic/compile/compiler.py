@@ -35,6 +35,7 @@ from yaseer.basic.compile.expressions import (
     MAKING, BlockScope, CompileError, ExpressionCompiler, FnScope, calls_fn, may_overflow, syntax_error, type_mismatch,
 )
 from yaseer.basic.compile.statements_io import InputOutputCompiler
+from yaseer.basic.compile.graphics_statements import GraphicsCompiler
 from yaseer.basic.compile.device_words import device_statement, event_switch, event_trap
 from yaseer.basic.compile.loops import LoopCompiler, LoopSplit
 from yaseer.basic.compile.markers import (
@@ -112,7 +113,7 @@ def _set_format(node) -> tuple[str, int]:
     raise syntax_error()
 
 
-class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler):
+class AreaCompiler(ExpressionCompiler, InputOutputCompiler, LoopCompiler, GraphicsCompiler):
     """Compiles the lines of one program area (see the module docstring).
 
     The area walk, the blocks and the statements of control flow are here; expressions

@@ -48,6 +48,9 @@ CHAIN_WORDS = ("CHAIN", "COMMON", "MERGE", "DELETE")
 COMMAND_WORDS = ("RUN", "LIST", "LLIST", "LOAD", "SAVE", "NEW", "EDIT", "RENUM", "AUTO", "KEY", "OFF", "SYSTEM")
 # ... and the text screen's (yaseer/basic/machine/display.py) and keyboard's
 SCREEN_WORDS = ("LOCATE", "CSRLIN", "COLOR", "SCREEN", "VIEW", "INKEY$")
+# ... and the graphics statements' own words (machine/graphics.py; LINE, VIEW, GET, PUT
+# are read as graphics statements where their form is: source/graphics_syntax.py)
+GRAPHICS_WORDS = ("PSET", "PRESET", "WINDOW", "PALETTE")
 # ... and the machine-code function USR (DEF USR sets its address)
 MACHINE_WORDS = ("USR",)
 
@@ -481,7 +484,7 @@ CASIO = Dialect(
 GW = Dialect(
     name="gw", keyword_first=False, pi_keyword=False,
     own_words=("DEFINT", "DEFSNG", "DEFDBL", "DEFSTR", "XOR", "EQV", "IMP") + RANDOM_FILE_WORDS + CHAIN_WORDS
-    + COMMAND_WORDS + SCREEN_WORDS + MACHINE_WORDS,
+    + COMMAND_WORDS + SCREEN_WORDS + MACHINE_WORDS + GRAPHICS_WORDS,
     typed_numbers=True, print_digits=7,
     width=80, zone=14, on_division_by_zero="continue", on_overflow="continue", angle="RAD",
     implicit_arrays=(), default_dimension=10, program_areas=False, random=GwRandom,

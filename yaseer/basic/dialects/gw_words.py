@@ -35,6 +35,11 @@ FUNCTIONS = {
     "PEN": ("FUNC", ("i",), "n", "_M.devices.pen"),
     # the music queue's notes waiting (machine/music.py): n a byte; also a statement (below)
     "PLAY": ("FUNC", ("i",), "n", "_M.music.count"),
+    # the graphics screen (machine/graphics_words.py): POINT(n) or POINT(x, y), each number
+    # checked as the function reads it (a string in POINT(x, y) is the text mode's Illegal
+    # function call there: the recorded POINT test); PMAP(value, n)
+    "POINT": ("FUNCN", ("x", "xx"), "n", "_M.graphics.point"),
+    "PMAP": ("FUNCN", ("nn",), "n", "_M.graphics.pmap"),
 }
 # Functions of a file number: ``WORD(#n)`` -> helper (GWEVAL.ASM VARPTR: "#", GTBYTC, GETPTR;
 # IOCTL$ reads an optional "#" before its number, as the recordings show).

@@ -331,13 +331,21 @@ class Console:
         CLS 2 the window, CLS 1 - the graphics window - nothing in text mode, as PC-BASIC
         2.0.8); the next PRINT starts at its first column."""
         whole = None
+        canvas = self.screen_words.canvas if self.display is not None else None
+        n = None
         if mode is not None:
             n = runtime.cint(mode)
             if not 0 <= n <= 2:
                 raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
-            if n == 1:
-                return
             whole = n == 0
+        if canvas is not None:  # a graphics mode: CLS 1 (and CLS with a VIEW) the view's pixels
+            if n == 1 or (n is None and canvas.view_set):
+                canvas.clear()
+                return
+            if n == 0 or (n is None and not self.display.view_set):
+                canvas.clear_all()
+        if n == 1:
+            return
         if self.on_clear_screen is not None:
             self.on_clear_screen()
         if self.display is not None:

@@ -70,6 +70,12 @@ class Canvas:
             pixels[y * width + x1:y * width + x2 + 1] = blank
         self.last_physical = self.middle()
 
+    def clear_all(self) -> None:
+        """CLS 0 (or CLS without a view of either kind): the whole page blank, the graphics
+        cursor back to the view's middle."""
+        self.pixels[:] = bytes(len(self.pixels))
+        self.last_physical = self.middle()
+
     # ----------------------------------------------------------------- pixels
     def _screen_xy(self, x: int, y: int) -> tuple[int, int]:
         """View coordinates to screen pixels."""

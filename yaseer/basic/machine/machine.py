@@ -310,6 +310,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
                                           self if self.dialect.data_segment is not None else None)
         self._events = None  # gw's event traps, made by the first statement that sets one (events)
         self._music = None  # gw's music queue, made by the first PLAY, SOUND or BEEP (music)
+        self._graphics = None  # gw's graphics words, made by the first that runs (graphics)
         self.clock = Clock()  # TIMER, DATE$, TIME$; DATE$ = and TIME$ = move it
         self._output_eof = bool(words and words.output_eof)  # casio: EOF of an output file is 0 (EOF.md item 4)
         self.gosub_levels = words.gosub_levels if words else None  # casio: 96 (GOSUB.md item 2)
@@ -609,6 +610,16 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
 
             self._events = Events(self.dialect.device_words.events, self)
         return self._events
+
+    @property
+    def graphics(self):
+        """gw's graphics statements and functions (machine/graphics_words.py), made when a
+        program first draws or asks POINT or PMAP."""
+        if self._graphics is None:
+            from yaseer.basic.machine.graphics_words import GraphicsWords  # (only programs that draw)
+
+            self._graphics = GraphicsWords(self)
+        return self._graphics
 
     @property
     def music(self):

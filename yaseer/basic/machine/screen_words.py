@@ -63,6 +63,7 @@ class ScreenWords:
         modes = machine.dialect.screen.modes
         self.modes = {mode.number: mode for mode in modes}
         self.mode = modes[0] if modes else None
+        self.canvas = None  # a graphics mode's pixels (machine/graphics.py); None in a text mode
 
     def run(self, word: str, values: tuple, fault) -> None:
         """Statement ``word`` with its arguments ``values`` and the error for its rest."""
@@ -169,22 +170,32 @@ class ScreenWords:
         pages = mode.pages[columns == 80]
         if any(page is not None and page >= pages for page in (active, shown)):
             raise illegal_function_call()
-        if mode is current:
-            return
-        self.mode = mode
-        self.machine.set_width(columns)
-        self.machine.clear_screen(0)
-        display.attr = mode.attribute
+        if mode is not current:
+            self.mode = mode
+            self.canvas = None
+            if mode.width:  # a graphics mode: its pixels, blank (machine/graphics.py)
+                from yaseer.basic.machine.graphics import canvas_for  # (only programs that draw)
+
+                self.canvas = canvas_for(mode, pages)
+            self.machine.set_width(columns)
+            self.machine.clear_screen(0)
+            display.attr = mode.attribute
+        canvas = self.canvas
+        if canvas is not None and (active is not None or shown is not None):
+            active = canvas.active if active is None else active
+            canvas.set_pages(active, canvas.shown if shown is None else shown)
 
     def copy_page(self, source: int, target: int) -> None:
         """PCOPY source, target: both pages of the mode (0..pages-1), else Illegal function
         call (as the recorded PCOPY test); the pages not shown are not kept, so nothing
-        changes on the screen."""
+        changes on the text screen; a graphics mode's pixels are copied."""
         mode = self.mode
         display = self.machine._screen_model()
         pages = 1 if mode is None else mode.pages[display.columns == 80]
         if not (0 <= source < pages and 0 <= target < pages):
             raise illegal_function_call()
+        if self.canvas is not None:
+            self.canvas.copy_page(source, target)
 
 
 def _no_missing_last(values: list) -> None:

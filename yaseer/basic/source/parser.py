@@ -22,6 +22,7 @@ from yaseer.basic.errors import BasicError, INTERNAL_ERROR, MISSING_OPERAND, NEX
 from yaseer.basic.source.parse_tables import ACTIONS, END, RULES, START
 from yaseer.basic.dialects.reserved import UNSUPPORTED, mark_unsupported, unsupported_message
 from yaseer.basic.source.byte_lists import mark_literal_widths, read_byte_list
+from yaseer.basic.source.graphics_syntax import mark_graphics
 from yaseer.basic.source.event_tokens import mark_events
 from yaseer.basic.source.scanner import UNSCANNED, Token, tokenize, tokenize_statements
 
@@ -493,6 +494,9 @@ class _ToAst:
     def screen_stmt(self, c):
         return ast.ScreenStatement("SCREEN", c[1])
 
+    def graphics_stmt(self, c):
+        return c[0].value
+
     def view_alone(self, c):
         return ast.ScreenStatement("VIEW", [])
 
@@ -845,7 +849,7 @@ def _read_as_statements(tokens: list, dialect: Dialect) -> list:
     """A line's tokens as its statements read them: event words as events (gw), reserved words
     the dialect lacks as unsupported, an ELSE no IF owns as the end of the line."""
     words = dialect.device_words
-    tokens = mark_literal_widths(tokens, dialect)
+    tokens = mark_graphics(mark_literal_widths(tokens, dialect), dialect, parse_expression)
     marked = mark_events(tokens, words.events, words.statements) if words else tokens
     return _else_alone(mark_unsupported(marked), dialect)
 

@@ -67,6 +67,7 @@ DIALECT_WORDS = {
     "RUN": "RUN", "LIST": "LIST", "LLIST": "LIST", "LOAD": "LOAD", "SAVE": "SAVE", "NEW": "NEW",
     "EDIT": "EDIT", "RENUM": "RENUM", "AUTO": "AUTO", "KEY": "KEY", "OFF": "OFF", "SYSTEM": "SYSTEM", "ALL": "ALL",
     "CSRLIN": "SYSVAR", "COLOR": "COLOR", "SCREEN": "SCREEN", "VIEW": "VIEW", "USR": "USR",
+    "PSET": "PSET", "PRESET": "PSET", "WINDOW": "WINDOW", "PALETTE": "PALETTE",
 }
 # GW-BASIC reads these keywords even when name characters follow (``FNA``, ``USR0(``, ``TAB(``).
 _GW_PREFIX_KEYWORDS = ("FN", "USR")

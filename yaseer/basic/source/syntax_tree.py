@@ -605,6 +605,18 @@ class Cls:
 
 
 @_node
+class Graphics:
+    """A graphics statement (gw) as GW reads it (source/graphics_syntax.py): ``word`` PSET,
+    PRESET, LINE, VIEW, WINDOW, GET, PUT or PALETTE; ``parts`` its pieces in the order read;
+    ``error`` what its text is where the reading stopped (None: the whole text read);
+    ``after``: the error is text after the whole statement (raised once it has run)."""
+    word: str
+    parts: list
+    error: object = None
+    after: bool = False
+
+
+@_node
 class ScreenStatement:
     """A text-screen statement whose arguments may each be left out (None):
     ``word`` LOCATE (row/column, cursor), COLOR (foreground, background, border),
