@@ -5,6 +5,7 @@ RANDOMIZE, LPOS, PRINT USING, DEFINT/DEFSTR run as statements, CLEAR, blanks ins
 numbers, filling the string space, RENUM, ``.`` as the current line, DEF SEG, PEEK, POKE and VARPTR,
 event traps (ON KEY(n) GOSUB, TIMER ON ...), STICK, STRIG, PEN, MOTOR, SWAP, OPTION BASE, MKI$/CVI and the
 other conversions, USR, the device words, PLAY's music language, PLAY(n), ON PLAY(n) and SOUND,
+the graphics statements (PSET, PRESET, LINE, VIEW, WINDOW, GET, PUT, PALETTE, PCOPY) and POINT, PMAP,
 with arguments in and out of range,
 left out or of the wrong type.  Each program ends normally or with a BASIC error line
 naming its line (never a Python exception), and writes nothing in its directory.
@@ -85,6 +86,14 @@ def statement(data) -> str:
         f'PLAY "{tune}"', f'A$ = "{tune}": PLAY "XA$;"', 'A$ = "XA$;": PLAY A$', f"PLAY {a}", f'PLAY "{tune}", {a}',
         f"PRINT PLAY({a})", "WHILE PLAY(0) > 0: WEND", f"ON PLAY({a}) GOSUB 1000", "PLAY ON", "PLAY STOP",
         f'PLAY "MB{tune}": PRINT PLAY(0)', f"SOUND {a}, {b}: PRINT PLAY(0)", "SOUND 440, 0",
+        # the graphics statements (machine/graphics_words.py) in a graphics mode and out of one
+        "SCREEN 1", "SCREEN 9", f"PSET ({a}, {b}), {c}", f"PRESET STEP ({a}, {b})", f"PSET ({a}, {b}",
+        f"LINE ({a}, {b})-({c}, {a}), {b}, BF", f"LINE -({a}, {b}), , B, {c}", f"LINE ({a}, {b})-STEP({c}, {a}), {b}",
+        f"LINE ({a},{b})-({c},{a}),{b},{c}", f"VIEW ({a}, {b})-({c}, {a}), {b}, {c}", f"VIEW SCREEN ({a}, {b})-({c}, {a})",
+        "VIEW", f"WINDOW ({a}, {b})-({c}, {a})", f"WINDOW SCREEN ({a}, {b})-({c}, 1)", "WINDOW",
+        f"PRINT POINT({a}, {b}); POINT({c}); PMAP({a}, {b})", f"DIM G%(50): GET ({a}, {b})-({c}, {a}), G%",
+        f"PUT ({a}, {b}), G%, {'PSET' if code % 2 else 'XOR'}", f"PUT ({a}, {b}), G%", f"GET ({a}, {b})-(1, 1), G$",
+        f"PALETTE {a}, {b}", "PALETTE", f"DIM P%(16): PALETTE USING P%({a})", f"PCOPY {a}, {b}", f"CLS {a}",
     ]
     return data.draw(st.sampled_from(choices))
 

@@ -3,8 +3,8 @@
 machine's graphics (machine/graphics_words.py).
 
 The compiled code first asks the machine whether the statement may run in the screen mode
-(``_M.graphics.check``: PSET, LINE, VIEW, WINDOW, GET and PUT are Illegal function call in
-the text mode, whatever their text: the recorded PSET and WINDOW tests), then evaluates
+(``_M.graphics.check``: PSET, VIEW, WINDOW, GET and PUT are Illegal function call in the
+text mode, whatever their text: the recorded PSET and WINDOW tests), then evaluates
 the pieces in the order GW reads them (a string where a number must be raises Type
 mismatch there), then hands them and the text's error to ``_M.graphics.run``.
 """
@@ -15,7 +15,9 @@ from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.markers import LOAD_LOCALS, STORE_LOCALS
 
 # the words that check the screen mode before they read anything
-CHECKS_MODE_FIRST = frozenset(("PSET", "PRESET", "LINE", "VIEW", "WINDOW", "GET", "PUT"))
+# (LINE reads its points first: GENGRP.ASM GLINE scans them before ATRSCN asks GETFBC for the
+# graphics colours, so ``LINE`` alone is Syntax error in the text mode)
+CHECKS_MODE_FIRST = frozenset(("PSET", "PRESET", "VIEW", "WINDOW", "GET", "PUT"))
 
 
 class GraphicsCompiler:

@@ -250,8 +250,7 @@ class Canvas:
         x1, y1 = self.clip_end(x1, y1)
         mask = self._straight(x1, y1, x0, y1, attr, pattern, 0x8000)
         mask = self._straight(x1, y0, x0, y0, attr, pattern, mask)
-        top, bottom = (y1, y0) if y0 >= y1 else (y0, y1)
-        top, bottom = bottom, top  # drawn from the larger y, as PC-BASIC 2.0.8 does
+        top, bottom = min(y0, y1), max(y0, y1)  # the sides drawn downward
         mask = self._straight(x1, top, x1, bottom, attr, pattern, mask)
         self._straight(x0, top, x0, bottom, attr, pattern, mask)
 

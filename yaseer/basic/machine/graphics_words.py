@@ -61,6 +61,8 @@ class GraphicsWords:
         """Statement ``word`` with its evaluated pieces; ``fault`` (message, code, after)."""
         if fault is not None and not fault[2:3] == (True,):
             raise BasicError(fault[0], fault[1])
+        if word != "PALETTE":
+            self._canvas()  # (LINE's text is read before the mode is asked for: GLINE, ATRSCN)
         getattr(self, "_" + word.lower())(*parts)
         if fault is not None:
             raise BasicError(fault[0], fault[1])

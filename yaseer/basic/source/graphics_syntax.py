@@ -159,7 +159,9 @@ def _read_line(r: _Reader) -> None:
         r.parts.append(("w", ""))  # no first point: from the last point referenced
     r.expect("MINUS")
     r.point()
-    if r.take("COMMA"):
+    if r.take("COMMA"):  # ATRSCN: a comma, then the attribute unless another comma follows
+        if r.ended():
+            raise _Stop(_missing())
         r.optional()
         if r.take("COMMA"):
             shape = ""
@@ -187,6 +189,8 @@ def _read_view(r: _Reader) -> None:
     for _ in range(2):
         if not r.take("COMMA"):
             break
+        if r.ended():  # a comma at the end: an expression wanted there (EVAL's Missing operand)
+            raise _Stop(_missing())
         r.optional()
     r.end()
 

@@ -1,0 +1,106 @@
+"""GW-BASIC's graphics statements (PSET, PRESET, LINE, VIEW, WINDOW, GET, PUT, PALETTE,
+POINT, PMAP, PCOPY, CLS) in ``--dialect gw``.
+
+References: our own programs in tests/gw_graphics/ run by PC-BASIC 2.0.8 (its VGA machine,
+the one its recorded tests ran on), which prints the pixels read back with POINT and the
+GET arrays; the errors of bad statements are those a real GW-BASIC 3.23 recorded in
+PC-BASIC's test suite (the tests named beside each case), on statements of our own.
+"""
+
+from __future__ import annotations
+
+import io
+from pathlib import Path
+
+import pytest
+
+from yaseer.basic.dialects.dialect import GW
+from yaseer.basic.errors import BasicError
+from yaseer.basic.machine.machine import Machine
+
+HERE = Path(__file__).parent / "gw_graphics"
+PROGRAMS = sorted(p.name for p in HERE.glob("*.bas"))
+
+
+def run(source: str, directory: Path | None = None) -> str:
+    screen = io.StringIO()
+    machine = Machine(screen=screen, dialect=GW, angle="rad", files=directory or Path("."))
+    machine.load(source)
+    try:
+        machine.run()
+    except BasicError as err:
+        machine.end_line()
+        return screen.getvalue() + str(err) + "\n"
+    return screen.getvalue()
+
+
+def pcbasic_vga(source: str, directory: Path) -> str:
+    pcbasic = pytest.importorskip("pcbasic")
+    from test_gw_files import clean_output
+
+    session = pcbasic.Session(output_streams=None, input_streams=None, video="vga",
+                              devices={"C:": str(directory)}, current_device="C:", peek_values={})
+    session.start()
+    session.execute("NEW")
+    out = clean_output(session.execute(source.rstrip("\n") + "\nRUN"))
+    session.close()
+    return out
+
+
+@pytest.mark.parametrize("name", PROGRAMS)
+def test_program_as_pcbasic(name, tmp_path):
+    source = (HERE / name).read_text()
+    ours, theirs = tmp_path / "ours", tmp_path / "theirs"
+    ours.mkdir()
+    theirs.mkdir()
+    assert run(source, ours) == pcbasic_vga(source, theirs)
+
+
+def errors(lines: str) -> list[tuple[int, int]]:
+    """(error code, line) of each line of ``lines`` that fails, as an ON ERROR handler sees them."""
+    source = "1 ON ERROR GOTO 9000\n" + lines + "\n8999 END\n9000 PRINT ERR; ERL: RESUME NEXT\n"
+    out = run(source)
+    return [tuple(int(v) for v in row.split()) for row in out.splitlines() if row.strip()]
+
+
+def test_text_mode_refuses_before_reading():
+    # the recorded PSET and WINDOW tests: in SCREEN 0 every form is Illegal function call
+    assert errors("10 PSET (2,3)\n20 PSET\n30 WINDOW (1,1)-(2,2)\n40 WINDOW \"A\"\n50 LINE (1,1)-(2,2)") == [
+        (5, 10), (5, 20), (5, 30), (5, 40), (5, 50)]
+
+
+def test_pset_errors():
+    # the recorded PSET test's kinds of error, on other numbers
+    assert errors("5 SCREEN 2\n10 PSET\n20 PSET 7\n30 PSET (40000, 1)\n40 PSET (3,3),300\n"
+                  "50 PSET (3,3),-2\n60 PSET (3,3),40000\n70 PSET (2000,-5)\n80 PRESET \"X\"") == [
+        (2, 10), (2, 20), (6, 30), (5, 40), (5, 50), (6, 60), (2, 80)]
+
+
+def test_line_errors():
+    # the recorded LINE and LINE2 tests' kinds of error
+    assert errors("5 SCREEN 1\n10 LINE\n20 LINE (1,1)\n30 LINE (1,1)-(5,5),2,\n40 LINE (1,1)-(5,5),2,X\n"
+                  "50 LINE (1,1)-(5,5),,,40000\n60 LINE (1,1)-(5,5),,,\"A\"\n70 LINE (1,1)-(5,5),\"A\"\n"
+                  "80 LINE (1,1)-(5,5),2,\"A\"\n90 LINE (3,3) -\n100 LINE - STEP (3,3)\n110 LINE (1,1)-(5,5),,B\n"
+                  "120 LINE (1,1)-(5,5),,BF,7") == [
+        (2, 10), (2, 20), (2, 30), (2, 40), (6, 50), (13, 60), (13, 70), (2, 80), (2, 90)]
+
+
+def test_view_errors():
+    # the recorded VIEW test's kinds of error
+    assert errors("5 SCREEN 1\n10 VIEW SCREEN\n20 VIEW (5,5)\n30 VIEW (5,5)-(50,50),\n40 VIEW (5,5)-(50,50),1,2,\n"
+                  "50 VIEW (5,5)-(5,50)\n60 VIEW (5,5)-(50,300)\n70 VIEW (5,5)-(50,40000)\n80 VIEW (\"A\",1)-(2,2)\n"
+                  "90 VIEW (5,5)-(50,50),300\n100 VIEW (5,5)-(50,50),,1\n110 VIEW") == [
+        (2, 10), (2, 20), (22, 30), (2, 40), (5, 50), (5, 60), (6, 70), (13, 80), (5, 90)]
+
+
+def test_window_errors():
+    # the recorded WINDOW test's kinds of error in a graphics mode
+    assert errors("5 SCREEN 7\n10 WINDOW SCREEN\n20 WINDOW 3\n30 WINDOW (1,1)\n40 WINDOW (1,1)-(1,5)\n"
+                  "50 WINDOW (1,\"A\")-(2,2)\n60 WINDOW (-5E4,1)-(5E4,-1)\n70 WINDOW") == [
+        (2, 10), (2, 20), (2, 30), (5, 40), (13, 50)]
+
+
+def test_pmap_and_point_in_text_mode():
+    # the recorded PMAP and POINT tests: 0 in the text mode; POINT(x, y) Illegal function call
+    out = run("10 PRINT PMAP(7, 0); PMAP(9, 3); POINT(0); POINT(3)\n20 PRINT POINT(1, 1)\n")
+    assert out == " 0  0  0  0 \nIllegal function call in 20\n"
