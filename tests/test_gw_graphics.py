@@ -9,29 +9,18 @@ PC-BASIC's test suite (the tests named beside each case), on statements of our o
 
 from __future__ import annotations
 
-import io
 from pathlib import Path
 
 import pytest
-
-from yaseer.basic.dialects.dialect import GW
-from yaseer.basic.errors import BasicError
-from yaseer.basic.machine.machine import Machine
 
 HERE = Path(__file__).parent / "gw_graphics"
 PROGRAMS = sorted(p.name for p in HERE.glob("*.bas"))
 
 
 def run(source: str, directory: Path | None = None) -> str:
-    screen = io.StringIO()
-    machine = Machine(screen=screen, dialect=GW, angle="rad", files=directory or Path("."))
-    machine.load(source)
-    try:
-        machine.run()
-    except BasicError as err:
-        machine.end_line()
-        return screen.getvalue() + str(err) + "\n"
-    return screen.getvalue()
+    from test_gw_files import yaseer_run
+
+    return yaseer_run(source, directory or Path("."))
 
 
 def pcbasic_vga(source: str, directory: Path) -> str:
@@ -104,3 +93,25 @@ def test_pmap_and_point_in_text_mode():
     # the recorded PMAP and POINT tests: 0 in the text mode; POINT(x, y) Illegal function call
     out = run("10 PRINT PMAP(7, 0); PMAP(9, 3); POINT(0); POINT(3)\n20 PRINT POINT(1, 1)\n")
     assert out == " 0  0  0  0 \nIllegal function call in 20\n"
+
+
+def test_point_reads_as_gw():
+    # the recorded POINT and POINT2 tests: after POINT's first number a ")" makes POINT(n);
+    # anything else is POINT(x, y), refused in the text mode before its numbers are checked
+    text = "10 PRINT POINT(2, \"Q\")\n20 PRINT POINT(\"Q\"\n30 PRINT POINT(7\n40 PRINT POINT(7, #1)\n" \
+           "50 PRINT POINT(\"Q\")\n60 PRINT POINT(1, 1, 1)\n70 PRINT POINT(4)\n"
+    assert errors(text) == [(5, 10), (5, 20), (5, 30), (5, 40), (13, 50), (5, 60), (5, 70)]
+    assert errors("5 SCREEN 2\n" + text) == [(13, 10), (13, 20), (2, 30), (2, 40), (13, 50), (2, 60), (5, 70)]
+
+
+def test_pmap_reads_as_gw():
+    # the recorded PMAP test: each number checked as it is read; the value made a single first
+    assert errors("10 X = PMAP(\"Q\"\n20 X = PMAP(3\n30 X = PMAP(\"Q\")\n40 X = PMAP(3, 1, 1)\n"
+                  "50 X = PMAP(1.701411834604692D+38, 9)\n60 X = PMAP(70000, 2)\n70 X = PMAP(70000, 1)\n80 X = PMAP(1, 4)") == [
+        (13, 10), (2, 20), (13, 30), (2, 40), (6, 50), (6, 60), (5, 80)]
+
+
+def test_line_box_letters_may_stand_apart():
+    # the recorded LINE test: ``B F`` is BF (GW skips the blank between the letters)
+    out = run("10 SCREEN 1\n20 LINE (1,1)-(3,3),2,B F\n30 PRINT POINT(2,2)\n")
+    assert out == " 2 \n"

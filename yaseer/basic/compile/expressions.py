@@ -444,7 +444,8 @@ class ExpressionCompiler:
         try:
             form = _call_form(forms, [self.type_of(arg) for arg in args])
         except CompileError as err:
-            if own or not _read_in_order(node.name, forms, self.reads_arguments_in_order):
+            if (own and node.name not in self.reads_arguments_in_order) \
+                    or not _read_in_order(node.name, forms, self.reads_arguments_in_order):
                 raise
             return self.read_in_order(node, scope, err.message, err.code, ".close()"), (
                 "s" if result == "s" else self.numbers.integer)

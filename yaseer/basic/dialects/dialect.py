@@ -502,7 +502,7 @@ GW = Dialect(
     delete_needs_last_line=True, eof_of_file_zero=True, input_answer_first=True, dim_name_alone_scalar=True,
     dim_after_use_duplicate=True, device_files=GW_DEVICES, nameless_file_error=52, def_seg_usr=True,
     device_words=gw_words.WORDS, not_after_operator=True,
-    argument_readings=("INSTR", "STRING$", "LEFT$", "RIGHT$", "MID$", "PLAY", "SCREEN"), dos_program_lines=True, open_clauses=True,
+    argument_readings=("INSTR", "STRING$", "LEFT$", "RIGHT$", "MID$", "PLAY", "SCREEN", "POINT", "PMAP"), dos_program_lines=True, open_clauses=True,
     clear_readings=("whole", "top", "stack"), line_number_digits=True,
     # GW-BASIC 3.23 with /F:3 /S:128, as the recordings of the real machine read it: the program
     # from 4718 (&H30), the first string ending at 65021 (PEEK of VARPTR(A$)), &H2C holding 65534

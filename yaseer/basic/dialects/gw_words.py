@@ -51,7 +51,9 @@ FILE_CHECKS = {"VARPTR": "_M.address_space.file_pointer", "IOCTL$": "_M.devices.
 # ``)`` after it: word -> the check of each argument (returning it), for a call the text cuts
 # short (``IOCTL$(1.5``: file 2 not open is Bad file number before the missing ``)``: the
 # recorded IOCTL$ test).
-ARGUMENT_CHECKS = {"IOCTL$": ("_M.devices.open_file_number",)}
+ARGUMENT_CHECKS = {"IOCTL$": ("_M.devices.open_file_number",),
+                   # POINT's first argument with whether the screen draws (its reading's choice)
+                   "POINT": ("_M.graphics.point_argument",)}
 # Statements that may change variables the compiled block holds: its values are stored before
 # and taken back after (a POKE into a FIELD buffer changes the variables fielded over it).
 WRITES_VARIABLES = frozenset({"POKE", "PLAY"})  # (PLAY's X and = read variables: they are stored first)

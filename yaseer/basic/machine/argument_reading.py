@@ -124,9 +124,44 @@ def _screen():
         raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
 
 
+def _number(value) -> None:
+    """A string where a number must be is Type mismatch."""
+    if isinstance(value, str):
+        raise BasicError("Type mismatch", TYPE_MISMATCH)
+
+
+def _point():
+    """POINT (the recorded POINT and POINT2 tests): the first argument, then a look at what
+    follows (``"p"``: the separator or the cut is sent back); a ``)`` makes it POINT(n);
+    anything else is POINT(x, y): Illegal function call in a text mode, the first argument a
+    number, then ``,``, the second argument a number, ``)``.  The first argument comes as
+    (value, whether the screen draws) from GraphicsWords.point_argument."""
+    value, draws = yield "e"
+    follows = yield "p"
+    if follows == ")":
+        _number(value)
+        return
+    if not draws:
+        raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
+    _number(value)
+    if follows != ",":
+        raise _syntax_error()
+    _number((yield "e"))
+    yield ")"
+
+
+def _pmap():
+    """PMAP (the recorded PMAP test): each argument a number as it is read, ``,`` between
+    them, then ``)``."""
+    _number((yield "e"))
+    yield ","
+    _number((yield "e"))
+    yield ")"
+
+
 # (the names are Dialect.argument_readings of gw)
 READINGS = {"INSTR": _instr, "STRING$": _string_dollar, "LEFT$": _left_right, "RIGHT$": _left_right,
-            "MID$": _mid, "PLAY": _byte_first, "SCREEN": _screen}
+            "MID$": _mid, "PLAY": _byte_first, "SCREEN": _screen, "POINT": _point, "PMAP": _pmap}
 
 
 def reading_of(name: str, one_argument: bool):
@@ -159,6 +194,9 @@ class Reading:
     def _separator(self, found: str) -> None:
         """The routine's next request met ``found`` (``,`` or ``)``) in the text."""
         wants = self.wants
+        if wants == "p":  # the routine looks at what follows and goes on by itself
+            self.wants = self._next(found)
+            return
         if wants == "b":  # SCNINT met a separator where a number may stand: it is missing
             raise BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
         if wants == "s":
@@ -198,6 +236,8 @@ class Reading:
         separator (Syntax error)."""
         if after_comma and self.given:
             self._separator(",")
+        if self.wants == "p":  # the routine looks at the text that is not a separator
+            self.wants = self._next("cut")
         wants = self.wants
         if wants == "s" or (wants == "b" and code == MISSING_OPERAND):
             # SCNINT: any text ends a number, and the statement's end leaves the next one missing

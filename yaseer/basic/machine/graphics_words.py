@@ -15,8 +15,10 @@ its highest, as PC-BASIC 2.0.8 draws).
 
 from __future__ import annotations
 
-from yaseer.basic.arithmetic.values import to_int
-from yaseer.basic.errors import BasicError, TYPE_MISMATCH
+import math
+
+from yaseer.basic.arithmetic.values import to_int, to_single
+from yaseer.basic.errors import BasicError, OVERFLOW, TYPE_MISMATCH
 from yaseer.basic.machine.runtime import illegal_function_call
 
 
@@ -205,9 +207,16 @@ class GraphicsWords:
         x, y = canvas.to_physical(_number(a), _number(b))
         return float(canvas.point(x, y))
 
+    def point_argument(self, value) -> tuple:
+        """POINT's first argument as a bad call's reading takes it (argument_reading.py
+        ``_point``): with whether the screen is in a graphics mode."""
+        return value, self.canvas is not None
+
     def pmap(self, value, n) -> float:
         """PMAP(value, n): 0, 1 a logical x, y in view pixels; 2, 3 a view pixel's logical
         x, y (the value made an integer first); 0 in a text mode."""
+        if math.isinf(to_single(value)):  # the value is made a single first
+            raise BasicError("Overflow", OVERFLOW)
         n = to_int(n)
         if not 0 <= n <= 3:
             raise illegal_function_call()

@@ -167,9 +167,12 @@ def _read_line(r: _Reader) -> None:
             shape = ""
             if r.peek() == "NAME":
                 shape = r.value().upper()
+                r.at += 1
+                if shape == "B" and r.peek() == "NAME" and r.value().upper() == "F":
+                    shape = "BF"  # (SYNCHR skips the blanks: ``B F`` is BF, the recorded LINE test)
+                    r.at += 1
                 if shape not in ("B", "BF"):
                     raise _Stop(_syntax())
-                r.at += 1
             elif not (r.peek() == "COMMA" and shape == ""):
                 raise _Stop(r.fault())
             r.parts.append(("w", shape))
@@ -178,14 +181,22 @@ def _read_line(r: _Reader) -> None:
     r.end()
 
 
-def _read_view(r: _Reader) -> None:
+def _corners(r: _Reader) -> bool:
+    """VIEW's and WINDOW's [SCREEN] (x1, y1)-(x2, y2); False when the statement is the word
+    alone (the view or window reset)."""
     screen = r.take("SCREEN")
     if r.ended() and not screen:
-        return
+        return False
     r.parts.append(("w", "SCREEN" if screen else ""))
     r.point(step_allowed=False)
     r.expect("MINUS")
     r.point(step_allowed=False)
+    return True
+
+
+def _read_view(r: _Reader) -> None:
+    if not _corners(r):
+        return
     for _ in range(2):
         if not r.take("COMMA"):
             break
@@ -196,14 +207,8 @@ def _read_view(r: _Reader) -> None:
 
 
 def _read_window(r: _Reader) -> None:
-    screen = r.take("SCREEN")
-    if r.ended() and not screen:
-        return
-    r.parts.append(("w", "SCREEN" if screen else ""))
-    r.point(step_allowed=False)
-    r.expect("MINUS")
-    r.point(step_allowed=False)
-    r.end()
+    if _corners(r):
+        r.end()
 
 
 def _array(r: _Reader) -> None:

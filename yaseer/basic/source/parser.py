@@ -707,6 +707,8 @@ class _ToAst:
 
     def call(self, c):
         name = c[0].value
+        if len(c) > 2 and name == "POINT":  # POINT(x, #: its reading meets the # where y starts
+            return ast.CutCall(name, (c[1],), True, BasicError("Syntax error", SYNTAX_ERROR))
         if len(c) > 2 and name != "INPUT$":  # (c, #f): only INPUT$ reads a file number there
             raise BasicError("Syntax error", SYNTAX_ERROR)
         return self._call(c)
