@@ -115,3 +115,12 @@ def test_line_box_letters_may_stand_apart():
     # the recorded LINE test: ``B F`` is BF (GW skips the blank between the letters)
     out = run("10 SCREEN 1\n20 LINE (1,1)-(3,3),2,B F\n30 PRINT POINT(2,2)\n")
     assert out == " 2 \n"
+
+
+def test_palette_checks():
+    # the recorded PALETTE and PALETUSI tests' kinds of error (text mode: 16 attributes, 64
+    # colours, a colour's low byte 255 leaving it as it is)
+    assert errors("5 DIM P%(20), S!(20)\n10 PALETTE 1, 100\n20 PALETTE 3, 255\n30 PALETTE 3, 511\n40 PALETTE 16, 1\n"
+                  "50 PALETTE 1, 40000\n60 PALETTE 1 X\n70 PALETTE USING P%\n80 PALETTE USING S!(0)\n"
+                  "90 PALETTE USING P%(10)\n100 PALETTE USING P%(4)\n110 PALETTE") == [
+        (5, 10), (5, 40), (6, 50), (2, 60), (2, 70), (13, 80), (5, 90)]

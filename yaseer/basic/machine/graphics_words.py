@@ -165,27 +165,31 @@ class GraphicsWords:
 
     def _palette(self, first=None, second=None, array=None) -> None:
         """PALETTE [attribute, colour] | PALETTE USING array(start): nothing shows, so only
-        the numbers are checked (the attribute within the mode's, the colour within its
-        colours or -1)."""
+        the numbers are checked: the attribute within the mode's, the colour's low byte
+        within the mode's colours or 255 (-1: leave the attribute as it is).  (The recorded
+        PALETTE test: ``PALETTE 0, 254`` is Illegal function call, 255 and 256 are not.)"""
         mode = self.machine.screen_words.mode
-        attrs = 16 if mode is None or mode.number == 0 else 1 << mode.bits
-        colours = 64 if mode is not None and mode.number == 9 else 16
+        attrs = 16 if mode is None or not mode.bits else 1 << mode.bits
+        colours = 64 if mode is None or mode.number in (0, 9) else 16
         if first is None:
             self.palette.clear()
             return
         if first == "USING":
             from yaseer.basic.machine.sprites import array_values
 
-            for attr, colour in enumerate(array_values(self.machine, second, attrs)):
-                if not -1 <= colour < colours:
-                    raise illegal_function_call()
-                if colour != -1:
-                    self.palette[attr] = colour
-            return
-        attr, colour = to_int(first), to_int(second)
-        if not 0 <= attr < attrs or not -1 <= colour < colours:
-            raise illegal_function_call()
-        self.palette[attr] = colour
+            pairs = list(enumerate(array_values(self.machine, second, attrs)))
+        else:
+            attr = to_int(first)
+            if not 0 <= attr < attrs:
+                raise illegal_function_call()
+            pairs = [(attr, to_int(second))]
+        for attr, colour in pairs:
+            low = colour & 0xFF
+            if low != 0xFF and low >= colours:
+                raise illegal_function_call()
+        for attr, colour in pairs:
+            if colour & 0xFF != 0xFF:
+                self.palette[attr] = colour & 0xFF
 
     # ------------------------------------------------------------ functions
     def point(self, a, b=None) -> float:

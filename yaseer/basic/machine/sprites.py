@@ -22,6 +22,51 @@ from yaseer.basic.machine.runtime import illegal_function_call
 _SIZES = {"%": 2, "!": 4, "#": 8}
 
 
+class _Flat:
+    """An array's elements in the order GW's memory holds them (the first subscript runs
+    fastest), over the nested lists the machine keeps."""
+
+    def __init__(self, values: list):
+        dims = []
+        level = values
+        while isinstance(level, list):
+            dims.append(len(level))
+            level = level[0] if level else None
+        self.nested = values
+        self.dims = dims
+
+    def __len__(self) -> int:
+        count = 1
+        for d in self.dims:
+            count *= d
+        return count
+
+    def flat_index(self, indices: list) -> int:
+        k, scale = 0, 1
+        for i, d in zip(indices, self.dims):
+            k += i * scale
+            scale *= d
+        return k
+
+    def _place(self, k: int):
+        indices = []
+        for d in self.dims:
+            indices.append(k % d)
+            k //= d
+        holder = self.nested
+        for i in indices[:-1]:
+            holder = holder[i]
+        return holder, indices[-1]
+
+    def __getitem__(self, k: int):
+        holder, i = self._place(k)
+        return holder[i]
+
+    def __setitem__(self, k: int, value) -> None:
+        holder, i = self._place(k)
+        holder[i] = value
+
+
 class _ArrayBytes:
     """The bytes of a numeric array from one element on (``(name, subscripts)`` as the
     compiled code passes them: subscripts None for the first element)."""
@@ -35,16 +80,18 @@ class _ArrayBytes:
             if subscripts is None:
                 raise illegal_function_call()
             machine.array_nd(name, len(subscripts))
-        values = arrays[name]
-        if values and isinstance(values[0], list):  # several dimensions: the first index runs fastest
-            raise illegal_function_call()
-        self.values = values
+        self.values = _Flat(arrays[name])
         self.size = _SIZES.get(name[-1], 4)
         self.kind = name[-1]
         base = machine.subscript_base
-        start = 0 if subscripts is None else int(subscripts[0]) - base
-        if not 0 <= start < len(values):
-            raise illegal_function_call()
+        if subscripts is None:
+            start = 0
+        else:
+            indices = [int(i) - base for i in subscripts]
+            if len(indices) != len(self.values.dims) or any(
+                    not 0 <= i < d for i, d in zip(indices, self.values.dims)):
+                raise illegal_function_call()
+            start = self.values.flat_index(indices)
         self.start = start
 
     def capacity(self) -> int:
@@ -89,7 +136,7 @@ def array_values(machine, reference, count: int) -> list:
         raise BasicError("Type mismatch", TYPE_MISMATCH)
     if len(array.values) - array.start < count:
         raise illegal_function_call()
-    return [int(v) for v in array.values[array.start:array.start + count]]
+    return [int(array.values[k]) for k in range(array.start, array.start + count)]
 
 
 def pack(canvas, x0: int, y0: int, width: int, height: int) -> bytes:

@@ -245,6 +245,8 @@ def _read_palette(r: _Reader) -> None:
     if r.take("USING"):
         r.parts.append(("w", "USING"))
         _array(r)
+        if not isinstance(r.parts[-1][1], ast.Elem):  # an element must name where to start
+            raise _Stop(_syntax())
         r.end()
         return
     if r.ended():
