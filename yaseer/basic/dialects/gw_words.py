@@ -56,7 +56,7 @@ ARGUMENT_CHECKS = {"IOCTL$": ("_M.devices.open_file_number",),
                    "POINT": ("_M.graphics.point_argument",)}
 # Statements that may change variables the compiled block holds: its values are stored before
 # and taken back after (a POKE into a FIELD buffer changes the variables fielded over it).
-WRITES_VARIABLES = frozenset({"POKE", "PLAY"})  # (PLAY's X and = read variables: they are stored first)
+WRITES_VARIABLES = frozenset({"POKE", "PLAY", "BLOAD"})  # (PLAY's X and = read variables: they are stored first)
 # Values without arguments: name -> (Python expression, "s" or None for an integer).
 SYSTEM_VALUES = {"ERDEV": ("0", None), "ERDEV$": ('""', "s")}
 
@@ -99,6 +99,10 @@ STATEMENTS = {
     # a page of the screen mode to another (the recorded PCOPY test: alone or after a comma
     # Missing operand, one page Syntax error, a page the mode lacks Illegal function call)
     "PCOPY": ("ii", 2, "_M.screen_words.copy_page", ""),
+    # memory to a file and back (machine/address_space.py; a graphics mode's pixels are
+    # its adapter's memory: machine/video_memory.py)
+    "BSAVE": ("suu", 3, "_M.address_space.binary_save", ""),
+    "BLOAD": ("su", 1, "_M.address_space.binary_load", ""),
 }
 # Statements that check the end of the statement before they act (GWSTS.ASM SOUNDS calls
 # EOSCHK before the note: ``SOUND 1,1,1`` is Syntax error, not the frequency's error); the

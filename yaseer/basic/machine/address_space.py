@@ -79,11 +79,14 @@ class AddressSpace:
     machine's file table (machine/files.py); ``fields_changed(file)``: called after a POKE
     into random file ``file``'s buffer (the machine's FIELD variables take their slices);
     ``variables``: the machine whose variables the data segment holds (its
-    ``data_layout()``, ``array_nd`` and ``subscript_base``; None: no variables there)."""
+    ``data_layout()``, ``array_nd`` and ``subscript_base``; None: no variables there);
+    ``canvas()``: the graphics mode's pixels (machine/graphics.py; None in a text mode), whose
+    memory (machine/video_memory.py) comes before the text screen's."""
 
     def __init__(self, screen_model, charset, video_segment: int | None, files=None, fields_changed=None,
-                 variables=None):
+                 variables=None, canvas=None):
         self.variables = variables
+        self.canvas = canvas  # a callable: the graphics mode's Canvas, None in a text mode
         self.screen_model = screen_model
         self.charset = charset
         self.files = files
@@ -104,6 +107,32 @@ class AddressSpace:
         """POKE offset, byte: offset as PEEK's, then the byte 0..255 (GETBYT)."""
         where = self._address(offset)
         self.write(where, runtime.byte_argument(byte))
+
+    def binary_save(self, name: str, offset: float, length: float) -> None:
+        """BSAVE "file", offset, length: ``length`` bytes from the segment's ``offset`` (both
+        FRQINT's) into the file after a 7-byte header (&HFD, the segment, the offset, the
+        length: words, low byte first) and ended by &H1A (the recorded BSAVE files)."""
+        start, count = runtime.unsigned_word(offset), runtime.unsigned_word(length)
+        base = self.segment * 16
+        data = bytes(self.read((base + start + k) & ADDRESS_MASK) for k in range(count))
+        header = bytes([0xFD]) + b"".join(n.to_bytes(2, "little") for n in (self.segment, start, count))
+        sandbox = self.files.sandbox
+        sandbox.write_bytes(sandbox.dos_name(self.files._local_name(name)), header + data + b"\x1a")
+
+    def binary_load(self, name: str, offset: float | None = None) -> None:
+        """BLOAD "file"[, offset]: a BSAVE file's bytes back where they came from, or from
+        the segment's ``offset``; a file without BSAVE's first byte Bad file mode."""
+        from yaseer.basic.errors import BAD_FILE_MODE
+
+        sandbox = self.files.sandbox
+        data = sandbox.read_bytes(sandbox.dos_name(self.files._local_name(name)))
+        if len(data) < 7 or data[0] != 0xFD:
+            raise error_for(BAD_FILE_MODE)
+        segment, start, count = (int.from_bytes(data[k:k + 2], "little") for k in (1, 3, 5))
+        if offset is not None:
+            segment, start = self.segment, runtime.unsigned_word(offset)
+        for k, byte in enumerate(data[7:7 + count]):
+            self.write((segment * 16 + start + k) & ADDRESS_MASK, byte)
 
     def file_pointer(self, number: float) -> float:
         """VARPTR(#n): the offset of file n's control block in the data segment, n a byte
@@ -146,8 +175,22 @@ class AddressSpace:
         return (self.segment * 16 + runtime.unsigned_word(offset)) & ADDRESS_MASK
 
     # ------------------------------------------------------------ bytes by address
+    def _graphics(self, address: int):
+        """(the Canvas, where) for an address in a graphics mode's memory, else None."""
+        canvas = self.canvas() if self.canvas is not None else None
+        if canvas is None:
+            return None
+        from yaseer.basic.machine import video_memory  # (only programs that draw)
+
+        where = video_memory.locate(canvas, address)
+        return None if where is None else (video_memory, canvas, where)
+
     def read(self, address: int) -> int:
         """The byte at 20-bit ``address``."""
+        graphics = self._graphics(address)
+        if graphics is not None:
+            memory, canvas, where = graphics
+            return memory.read(canvas, where)
         video = self._video_cell(address)
         if video is not None:
             return self._read_video(address, video)
@@ -169,6 +212,11 @@ class AddressSpace:
 
     def write(self, address: int, byte: int) -> None:
         """Put ``byte`` at 20-bit ``address`` (ROM and absent adapters keep theirs)."""
+        graphics = self._graphics(address)
+        if graphics is not None:
+            memory, canvas, where = graphics
+            memory.write(canvas, where, byte)
+            return
         video = self._video_cell(address)
         buffer = None if video is not None else self._field_byte(address)
         if video is not None:

@@ -307,7 +307,8 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         # gw's PEEK and POKE (machine/address_space.py): the screen's memory is the display's
         self.address_space = AddressSpace(self._screen_model, self.dialect.charset, self.dialect.screen.video_segment,
                                           self.files, self._fields_poked,
-                                          self if self.dialect.data_segment is not None else None)
+                                          self if self.dialect.data_segment is not None else None,
+                                          self._canvas if self.display is not None else None)
         self._events = None  # gw's event traps, made by the first statement that sets one (events)
         self._music = None  # gw's music queue, made by the first PLAY, SOUND or BEEP (music)
         self._graphics = None  # gw's graphics words, made by the first that runs (graphics)
@@ -610,6 +611,10 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
 
             self._events = Events(self.dialect.device_words.events, self)
         return self._events
+
+    def _canvas(self):
+        """The graphics mode's pixels (machine/graphics.py), None in a text mode."""
+        return self.screen_words.canvas
 
     @property
     def graphics(self):
