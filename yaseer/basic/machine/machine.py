@@ -308,7 +308,7 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
         self.address_space = AddressSpace(self._screen_model, self.dialect.charset, self.dialect.screen.video_segment,
                                           self.files, self._fields_poked,
                                           self if self.dialect.data_segment is not None else None,
-                                          self._canvas if self.display is not None else None)
+                                          (lambda: self.screen_words.canvas) if self.display is not None else None)
         self._events = None  # gw's event traps, made by the first statement that sets one (events)
         self._music = None  # gw's music queue, made by the first PLAY, SOUND or BEEP (music)
         self._graphics = None  # gw's graphics words, made by the first that runs (graphics)
@@ -612,8 +612,10 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             self._events = Events(self.dialect.device_words.events, self)
         return self._events
 
-    def _canvas(self):
-        """The graphics mode's pixels (machine/graphics.py), None in a text mode."""
+    @property
+    def canvas(self):
+        """The graphics mode's pixels (machine/graphics.py Canvas: the one the graphics
+        statements draw on), None in a text mode."""
         return self.screen_words.canvas
 
     @property

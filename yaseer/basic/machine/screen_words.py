@@ -140,6 +140,8 @@ class ScreenWords:
             if not 1 <= fore <= 15 or (back is not None and back >= mode.colours):
                 raise illegal_function_call()
             display.attr = fore
+            if self.canvas is not None:  # the colour PSET, LINE ... draw in when given none
+                self.canvas.foreground = fore
             return
         if rule == "text":
             self.machine.screen_statement("COLOR", tuple(values))
