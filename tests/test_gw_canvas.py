@@ -94,3 +94,20 @@ def test_pages_copy():
     c.copy_page(0, 1)
     c.set_pages(1, 0)
     assert c.get_pixel(5, 5) == 9
+
+
+def test_draw_pen_apart_from_last_point():
+    # the recorded graphics_position test: POINT(n) reports DRAW's pen while only DRAW moved
+    # it; a statement that references a point drops it (and STEP counts from its own point)
+    from types import SimpleNamespace
+
+    from yaseer.basic.machine.graphics_words import GraphicsWords
+
+    canvas = canvas_for(_mode(9), 2)
+    words = GraphicsWords(SimpleNamespace(screen_words=SimpleNamespace(canvas=canvas)))
+    assert (words.point(0), words.point(1)) == (320.0, 175.0)
+    canvas.draw_point = (300, 175)  # as DRAW "L10" under a WINDOW leaves it
+    assert words.point(0) == 300.0
+    words.run("PSET", ((True, 0, 0), None), None)
+    assert (words.point(0), words.point(1)) == (320.0, 175.0)
+    assert canvas.draw_point is None

@@ -49,6 +49,12 @@ class Canvas:
         self.window = None  # (scale x, scale y, offset x, offset y) of a WINDOW
         self.window_bounds = None  # the WINDOW's corners as given, ordered, and its kind
         self.last_physical = self.middle()
+        # DRAW's pen (view coordinates) while only DRAW has moved it since another statement
+        # referenced a point: DRAW starts from it (else from last_physical) and leaves it where
+        # it ends, moving last_physical too only without a WINDOW; every other statement that
+        # references a point sets it to None; POINT(n) reports it while it is set (the
+        # recorded graphics_position test)
+        self.draw_point = None
 
     # ------------------------------------------------------------------ pages
     def set_pages(self, active: int, shown: int) -> None:
@@ -69,12 +75,14 @@ class Canvas:
         for y in range(y1, y2 + 1):
             pixels[y * width + x1:y * width + x2 + 1] = blank
         self.last_physical = self.middle()
+        self.draw_point = None
 
     def clear_all(self) -> None:
         """CLS 0 (or CLS without a view of either kind): the whole page blank, the graphics
         cursor back to the view's middle."""
         self.pixels[:] = bytes(len(self.pixels))
         self.last_physical = self.middle()
+        self.draw_point = None
 
     # ----------------------------------------------------------------- pixels
     def _screen_xy(self, x: int, y: int) -> tuple[int, int]:
@@ -126,6 +134,7 @@ class Canvas:
     @last.setter
     def last(self, point: tuple[float, float]) -> None:
         self.last_physical = self.to_physical(*point)
+        self.draw_point = None
 
     def view_size(self) -> tuple[int, int]:
         """The view's width and height in pixels."""
@@ -183,6 +192,7 @@ class Canvas:
 
     def _view_changed(self) -> None:
         self.last_physical = self.middle()
+        self.draw_point = None
         if self.window_bounds is not None:
             self.set_window(*self.window_bounds)
 

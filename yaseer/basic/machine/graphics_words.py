@@ -83,6 +83,7 @@ class GraphicsWords:
         step, x, y = point
         physical = canvas.step(x, y) if step else canvas.to_physical(x, y)
         canvas.last_physical = physical
+        canvas.draw_point = None
         return physical
 
     # ------------------------------------------------------------ statements
@@ -202,7 +203,7 @@ class GraphicsWords:
                 raise illegal_function_call()
             if canvas is None:
                 return 0.0
-            px, py = canvas.last_physical
+            px, py = canvas.draw_point or canvas.last_physical
             if n < 2:
                 return float((px, py)[n])
             return float(canvas.to_logical(px, py)[n - 2])
