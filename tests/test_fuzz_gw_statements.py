@@ -6,7 +6,7 @@ numbers, filling the string space, RENUM, ``.`` as the current line, DEF SEG, PE
 event traps (ON KEY(n) GOSUB, TIMER ON ...), STICK, STRIG, PEN, MOTOR, SWAP, OPTION BASE, MKI$/CVI and the
 other conversions, USR, the device words, PLAY's music language, PLAY(n), ON PLAY(n) and SOUND,
 the graphics statements (PSET, PRESET, LINE, VIEW, WINDOW, GET, PUT, PALETTE, PCOPY) and POINT, PMAP,
-with arguments in and out of range,
+CIRCLE, PAINT and DRAW's macro language, with arguments in and out of range,
 left out or of the wrong type.  Each program ends normally or with a BASIC error line
 naming its line (never a Python exception), and writes nothing in its directory.
 
@@ -33,6 +33,11 @@ MUSIC = ["C", "D#", "E-", "F+", "B#", "A.", "G64..", "N40", "N0", "N85", "O3", "
          "O=Q(1);", "T=-X;", "Z", ";", " ", "c+2.", "l64;a;", "=", "+", "65536"]
 
 
+# pieces of DRAW's macro language (machine/draw_macro.py), good and bad
+SKETCH = ["U", "D5", "L-3", "R=X;", "E", "F99999", "G2", "H", "M10,10", "M+5,-5", "M", "M1", "B", "N", "A1",
+          "A4", "TA45", "TA400", "T", "C2", "C", "S8", "S0", "S300", "P1,3", "P1", "XA$;", "X", "Z", ";", " "]
+
+
 def music(data) -> str:
     return "".join(data.draw(st.lists(st.sampled_from(MUSIC), max_size=6)))
 
@@ -45,6 +50,7 @@ def statement(data) -> str:
     a, b, c = argument(data), argument(data), argument(data)
     code = data.draw(st.integers(0, 40))
     tune = music(data)
+    sketch = "".join(data.draw(st.lists(st.sampled_from(SKETCH), max_size=6)))
     choices = [
         f"LOCATE {a}, {b}", f"LOCATE {a}", f"LOCATE , {b}", f"LOCATE {a}, {b}, {c}, {a}, {b}", f"LOCATE {a},{b},{c},{a},{b},{c}",
         f"COLOR {a}, {b}, {c}", f"COLOR {a}", f"COLOR , {b}", "COLOR", f"CLS {a}", "CLS",
@@ -94,6 +100,10 @@ def statement(data) -> str:
         f"PRINT POINT({a}, {b}); POINT({c}); PMAP({a}, {b})", f"DIM G%(50): GET ({a}, {b})-({c}, {a}), G%",
         f"PUT ({a}, {b}), G%, {'PSET' if code % 2 else 'XOR'}", f"PUT ({a}, {b}), G%", f"GET ({a}, {b})-(1, 1), G$",
         f"PALETTE {a}, {b}", "PALETTE", f"DIM P%(16): PALETTE USING P%({a})", f"PCOPY {a}, {b}", f"CLS {a}",
+        # CIRCLE, PAINT and DRAW (machine/figures.py)
+        f"CIRCLE ({a}, {b}), {c}", f"CIRCLE STEP ({a}, {b}), {c}, {a}, {b}, {c}, {a}",
+        f"CIRCLE (90, 90), {a}, , {b}, {c},", f"PAINT ({a}, {b}), {c}, {a}", f'PAINT STEP ({a}, {b}), "{tune}", {c}, "{tune}"',
+        f'PAINT (5, 5), {a}, , {b}', f'DRAW "{sketch}"', f'A$ = "{sketch}": DRAW "XA$;"', f"DRAW {a}",
     ]
     return data.draw(st.sampled_from(choices))
 

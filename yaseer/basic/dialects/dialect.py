@@ -50,7 +50,7 @@ COMMAND_WORDS = ("RUN", "LIST", "LLIST", "LOAD", "SAVE", "NEW", "EDIT", "RENUM",
 SCREEN_WORDS = ("LOCATE", "CSRLIN", "COLOR", "SCREEN", "VIEW", "INKEY$")
 # ... and the graphics statements' own words (machine/graphics.py; LINE, VIEW, GET, PUT
 # are read as graphics statements where their form is: source/graphics_syntax.py)
-GRAPHICS_WORDS = ("PSET", "PRESET", "WINDOW", "PALETTE")
+GRAPHICS_WORDS = ("PSET", "PRESET", "WINDOW", "PALETTE", "CIRCLE", "PAINT", "DRAW")
 # ... and the machine-code function USR (DEF USR sets its address)
 MACHINE_WORDS = ("USR",)
 

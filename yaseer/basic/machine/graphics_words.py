@@ -19,6 +19,7 @@ import math
 
 from yaseer.basic.arithmetic.values import to_int, to_single
 from yaseer.basic.errors import BasicError, OVERFLOW, TYPE_MISMATCH
+from yaseer.basic.machine.figures import FigureWords
 from yaseer.basic.machine.runtime import illegal_function_call
 
 
@@ -37,8 +38,9 @@ def _number(value):
     return value
 
 
-class GraphicsWords:
-    """The graphics statements of one machine (its screen mode's Canvas)."""
+class GraphicsWords(FigureWords):
+    """The graphics statements of one machine (its screen mode's Canvas); CIRCLE, PAINT
+    and DRAW from :class:`FigureWords` (machine/figures.py)."""
 
     def __init__(self, machine):
         self.machine = machine
@@ -62,6 +64,9 @@ class GraphicsWords:
     def run(self, word: str, parts: tuple, fault) -> None:
         """Statement ``word`` with its evaluated pieces; ``fault`` (message, code, after)."""
         if fault is not None and not fault[2:3] == (True,):
+            checks = getattr(self, "_check_" + word.lower(), None)
+            if checks is not None:  # the pieces read are checked before the text's error
+                checks(*parts)
             raise BasicError(fault[0], fault[1])
         if word != "PALETTE":
             self._canvas()  # (LINE's text is read before the mode is asked for: GLINE, ATRSCN)

@@ -80,13 +80,17 @@ class _Reader:
         return text, at
 
 
-class Player:
-    """One PLAY statement's reading of its string, playing into ``music`` (machine/music.py)."""
+class Macro:
+    """One macro string's reading (MACLNG): the commands' numbers and variables, X; a
+    language's class adds :meth:`command` (PLAY's :class:`Player`, DRAW's
+    machine/draw_macro.py)."""
 
-    def __init__(self, music, text: str):
-        self.music = music
-        self.machine = music.machine
+    def __init__(self, machine, text: str):
+        self.machine = machine
         self.reader = _Reader(text)
+
+    def command(self, c: str) -> None:  # pragma: no cover - each language has its own
+        raise NotImplementedError
 
     def run(self) -> None:
         """MACLNG's loop: each command in turn; at a string's end, the string that Xed it."""
@@ -227,6 +231,24 @@ class Player:
             raise error_for(SUBSCRIPT_OUT_OF_RANGE)
         return k
 
+    def execute(self) -> None:
+        """MCLXEQ: X and a string variable: its text is read now, then the rest of this one."""
+        value = self.variable()
+        if not isinstance(value, str):
+            raise error_for(TYPE_MISMATCH)
+        if value:
+            if len(self.reader.stack) > X_DEPTH:
+                raise error_for(OUT_OF_MEMORY)
+            self.reader.stack.append([value, 0])
+
+
+class Player(Macro):
+    """One PLAY statement's reading of its string, playing into ``music`` (machine/music.py)."""
+
+    def __init__(self, music, text: str):
+        super().__init__(music.machine, text)
+        self.music = music
+
     # -- the commands (PLYTAB)
     def command(self, c: str) -> None:
         """One command, its letter read (MCLSCN: not in the table, Illegal function call)."""
@@ -275,16 +297,6 @@ class Player:
             music.background = c == "B"
         else:
             raise _illegal()
-
-    def execute(self) -> None:
-        """MCLXEQ: X and a string variable: its text is read now, then the rest of this one."""
-        value = self.variable()
-        if not isinstance(value, str):
-            raise error_for(TYPE_MISMATCH)
-        if value:
-            if len(self.reader.stack) > X_DEPTH:
-                raise error_for(OUT_OF_MEMORY)
-            self.reader.stack.append([value, 0])
 
     def note_letter(self, c: str) -> None:
         """PLYNOT: a letter, perhaps a sharp or a flat; a note the table lacks is Illegal

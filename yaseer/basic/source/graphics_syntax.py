@@ -28,7 +28,7 @@ from yaseer.basic.source.scanner import UNSCANNED, Token
 
 _ENDS = frozenset(("_COLON", "ELSE"))
 _STARTS = frozenset(("_COLON", "THEN", "ELSE"))
-GRAPHICS_WORDS = frozenset(("PSET", "LINE", "VIEW", "WINDOW", "GET", "PUT", "PALETTE"))
+GRAPHICS_WORDS = frozenset(("PSET", "LINE", "VIEW", "WINDOW", "GET", "PUT", "PALETTE", "CIRCLE", "PAINT", "DRAW"))
 _PUT_ACTIONS = {"PSET": "PSET", "AND": "AND", "OR": "OR", "XOR": "XOR"}
 
 
@@ -257,7 +257,50 @@ def _read_palette(r: _Reader) -> None:
     r.end()
 
 
-_READERS = {"PSET": _read_pset, "LINE": _read_line, "VIEW": _read_view, "WINDOW": _read_window,
+def _after_comma(r: _Reader, kind: str = "n") -> None:
+    """An argument after a comma that may be left out where another comma follows (ADVGRP.ASM
+    ATRSCN, CGTCNT); at the statement's end an expression is wanted (Missing operand)."""
+    if r.ended():
+        raise _Stop(_missing())
+    if r.peek() == "COMMA":
+        r.parts.append((kind, None))
+    else:
+        r.parts.append((kind, r.expression()))
+
+
+def _read_circle(r: _Reader) -> None:
+    """CIRCLE [STEP] (x, y), radius [, [attribute] [, [start] [, [end] [, aspect]]]]."""
+    r.point()
+    r.expect("COMMA")
+    r.number()
+    for _ in range(3):  # attribute, start, end
+        if not r.take("COMMA"):
+            r.end()
+            return
+        _after_comma(r)
+    if r.take("COMMA"):
+        r.number()
+    r.end()
+
+
+def _read_paint(r: _Reader) -> None:
+    """PAINT [STEP] (x, y) [, [paint] [, [border] [, background]]]: paint a number or a
+    tile string, the background a string."""
+    r.point()
+    for kind in ("x", "n", "x"):
+        if not r.take("COMMA"):
+            break
+        _after_comma(r, kind)
+    r.end()
+
+
+def _read_draw(r: _Reader) -> None:
+    """DRAW string (MACLNG's FRMEVL: any expression, a number Type mismatch when run)."""
+    r.parts.append(("x", r.expression()))
+    r.end()
+
+
+_READERS = {"CIRCLE": _read_circle, "PAINT": _read_paint, "DRAW": _read_draw, "PSET": _read_pset, "LINE": _read_line, "VIEW": _read_view, "WINDOW": _read_window,
             "GET": _read_get, "PUT": _read_put, "PALETTE": _read_palette}
 
 

@@ -68,6 +68,7 @@ DIALECT_WORDS = {
     "EDIT": "EDIT", "RENUM": "RENUM", "AUTO": "AUTO", "KEY": "KEY", "OFF": "OFF", "SYSTEM": "SYSTEM", "ALL": "ALL",
     "CSRLIN": "SYSVAR", "COLOR": "COLOR", "SCREEN": "SCREEN", "VIEW": "VIEW", "USR": "USR",
     "PSET": "PSET", "PRESET": "PSET", "WINDOW": "WINDOW", "PALETTE": "PALETTE",
+    "CIRCLE": "CIRCLE", "PAINT": "PAINT", "DRAW": "DRAW",
 }
 # GW-BASIC reads these keywords even when name characters follow (``FNA``, ``USR0(``, ``TAB(``).
 _GW_PREFIX_KEYWORDS = ("FN", "USR")
