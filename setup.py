@@ -1,9 +1,11 @@
-"""Build of the optional C accelerator (everything else is in pyproject.toml).
+"""Build of the optional C accelerators (everything else is in pyproject.toml).
 
 yaseer.basic.arithmetic._mbf_fast computes gw's SIN COS TAN ATN LOG EXP and ``^`` bit for
-bit as yaseer/basic/arithmetic/gw_transcendental.py does, faster.  It is optional: where
-no C compiler (or no Python headers) is found the build warns and goes on, and yaseer
-uses the Python functions (arith_policy.gw_routines).
+bit as yaseer/basic/arithmetic/gw_transcendental.py does, faster;
+yaseer.basic.arithmetic._decimal_fast computes ``--arith decimal``'s + - * / SQR LN LOG EXP
+bit for bit as yaseer/basic/arithmetic/decimal_arith.py does (decimal_fast.py).  They are
+optional: where no C compiler (or no Python headers) is found the build warns and goes on,
+and yaseer uses the Python functions (arith_policy.gw_routines, decimal_fast.accelerated).
 """
 
 from setuptools import Extension, setup
@@ -23,6 +25,8 @@ class BuildExt(build_ext):
 
 setup(
     ext_modules=[Extension("yaseer.basic.arithmetic._mbf_fast", ["yaseer/basic/arithmetic/_mbf_fast.c"],
+                           optional=True),
+                 Extension("yaseer.basic.arithmetic._decimal_fast", ["yaseer/basic/arithmetic/_decimal_fast.c"],
                            optional=True)],
     cmdclass={"build_ext": BuildExt},
 )

@@ -353,6 +353,7 @@ def _expression(rng: random.Random, depth: int) -> str:
 def _results(program: str, caching: bool, monkeypatch) -> list:
     """Y() after ``program``, compiled with the inline paths (``caching``) or the routines alone."""
     monkeypatch.setenv("YASEER_CACHE_DIR", "")  # (the compiled-program cache does not tell the two apart)
+    monkeypatch.setenv("YASEER_PURE_PYTHON", "1")  # the inline caches (the C routines: test_decimal_fast.py)
     original = DecimalNumbers.__init__
 
     def init(self):

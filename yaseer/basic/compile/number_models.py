@@ -596,11 +596,17 @@ class DecimalNumbers(PlainNumbers):
     Each ``+ - * /`` is written inline first: the float result scaled by its operation's
     cached power of ten, kept where it is surely the 12-digit decimal's
     (yaseer/basic/arithmetic/decimal_scales.py, whose docstring proves it), else the
-    routine of decimal_arith through the cache's writer."""
+    routine of decimal_arith through the cache's writer.  ``accelerated`` (number_model: where
+    the C module decimal_fast.py names is built): those operations, SQR, LN, LOG, EXP and a
+    local plus RND call its routines instead, the same tests with the scale of the result's own
+    decade (no cache to miss)."""
 
     square_by_product = True  # X^2 is decimal_arith.power's product X*X, rounded once
     pi = "3.1415926536"  # PI inside the FX-850P: 11 digits (PI.md; shown 3.141592654)
     _OPERATIONS = {"+": "_dadd", "-": "_dsub", "*": "_dmul", "/": "_ddiv13"}
+    # the C routines (decimal_fast.NAMES) of the operations and functions, where built
+    _ACCELERATED = {"+": "_zcadd", "-": "_zcsub", "*": "_zcmul", "/": "_zcdiv",
+                    "_sqrt": "_zcsqrt", "_log": "_zclog", "_log10": "_zclog10", "_exp": "_zcexp"}
 
     def __init__(self):
         self._temps = 0
@@ -608,6 +614,7 @@ class DecimalNumbers(PlainNumbers):
         self.cache_bases: list[str] = []  # the scale caches written (see _scaled)
         self._draws: dict[str, str] = {}  # the code of RND's rounded number -> its cache (see _drawn_sum)
         self.caching = True  # (off: the routines alone)
+        self.accelerated = False  # the C routines instead of the inline caches (decimal_fast.py; number_model)
 
     def literal(self, value, kind: str) -> tuple[str, str]:
         from yaseer.basic.arithmetic.decimal_arith import rounded
@@ -658,6 +665,8 @@ class DecimalNumbers(PlainNumbers):
         ``_x<n>``, ``_y<n>`` keeps one that is not a local or a literal for the writer)."""
         from yaseer.basic.arithmetic.decimal_scales import BAND, BOTTOM, MAGIC, TOP
 
+        if self.accelerated:  # the C routine: the same tests with the scale of the result's decade
+            return f"{self._ACCELERATED[op]}({left}, {right})"
         self._temps += 1
         n = self._temps
         cache = f"_D{self.site_salt}{n}"
@@ -692,6 +701,8 @@ class DecimalNumbers(PlainNumbers):
         rounding) < 10**12 + 10**9 + 1``, inside the guard's ``10**13`` (decimal_scales.GUARD)."""
         from yaseer.basic.arithmetic.decimal_scales import BAND, BOTTOM, MAGIC, TOP
 
+        if self.accelerated:  # (the local is read before the number is drawn: arguments in order)
+            return f"_zcrnd({local}, _rndr())"
         self._temps += 1
         cache = f"_D{self.site_salt}{self._temps}"
         self.cache_bases.append(cache)
@@ -729,6 +740,8 @@ class DecimalNumbers(PlainNumbers):
         from yaseer.basic.arithmetic.decimal_calls import LARGEST_SCALE
         from yaseer.basic.arithmetic.decimal_scales import BAND, BOTTOM, MAGIC, TOP
 
+        if self.caching and self.accelerated and helper in self._ACCELERATED and len(codes) == 1:
+            return f"{self._ACCELERATED[helper]}({codes[0]})", "n"
         form = self._FLOAT_CALLS.get(helper)
         if not self.caching or (form is None and helper != "_rndf") or len(codes) != (helper != "_rndf"):
             return super().call(name, helper, codes, kinds, result)
@@ -880,4 +893,10 @@ def number_model(dialect, def_types=None) -> PlainNumbers:
     types ``def_types`` a program's DEF statements set, for direct statements)."""
     if dialect.typed_numbers:
         return TypedNumbers(def_types)
-    return DecimalNumbers() if dialect.arithmetic == "decimal" else PlainNumbers()
+    if dialect.arithmetic == "decimal":
+        from yaseer.basic.arithmetic.decimal_fast import accelerated
+
+        model = DecimalNumbers()
+        model.accelerated = accelerated()
+        return model
+    return PlainNumbers()

@@ -81,6 +81,10 @@ def key(area, program: dict[int, str], entry_lines=(), dialect=None, base_one: b
     except OSError:
         return None
     digest.update(repr((area, sorted(entry_lines), dialect) + ((True,) if base_one else ())).encode())
+    if getattr(dialect, "arithmetic", None) == "decimal":  # its code calls the C routines where built
+        from yaseer.basic.arithmetic.decimal_fast import accelerated
+
+        digest.update(b"decimal in C" if accelerated() else b"decimal inline")
     for number, text in sorted(program.items()):
         digest.update(f"{number}\0{text}\0".encode("utf-8", "surrogatepass"))
     return digest.hexdigest()

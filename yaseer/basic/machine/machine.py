@@ -542,6 +542,10 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
             ns["_rndr"] = self._first_raw_draw
         if self.dialect.words:  # the casio functions' argument ranges, in either arithmetic
             ns.update(casio_math.ranged(ns))
+        if self.dialect.arithmetic == "decimal":  # bound to the namespace's routines, ranges checked
+            from yaseer.basic.arithmetic import decimal_fast
+
+            ns.update(decimal_fast.helpers(ns))
         self.namespaces[area] = ns
         return ns
 
