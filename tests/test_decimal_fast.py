@@ -264,6 +264,9 @@ def test_the_compiled_code_calls_the_routines():
     assert model.accelerated
     assert model.arithmetic("*", "n_A", "n", "0.1", "n")[0] == "_zcmul(n_A, 0.1)"
     assert model.call("SQR", "_sqrt", ["n_A"], ["n"], "n")[0] == "_zcsqrt(n_A)"
+    assert model.arithmetic("+", "n_K", "n", "1.0", "n")[0] == "_zcadd(n_K, 1.0)"  # (a call costs less than a test)
+    chain = model.arithmetic("*", model.arithmetic("/", "n_K", "n", "2.0", "n")[0], "n", "3.0", "n")[0]
+    assert chain.startswith("(((n_K / 2.0) * 3.0) if ")  # (one test saves two calls)
     assert not model.cache_bases
 
 

@@ -638,7 +638,12 @@ class DecimalNumbers(PlainNumbers):
             exact = _exact_form(tree)
             if exact is not None:
                 scaled = self._scaled(op, left_scaled, right_scaled)
-                code = f"({exact[0]} if {exact[1]} else {scaled})"
+                # a C routine's call costs less than the test of a local (a range and a remainder):
+                # the exact form where it saves at least two calls a tested local
+                if self.accelerated and _operations(tree) < max(2, 2 * len(_locals_of(tree))):
+                    code = scaled
+                else:
+                    code = f"({exact[0]} if {exact[1]} else {scaled})"
                 self._exact[code] = (tree, scaled)
                 return code, "n"
         return self._scaled(op, left, right), "n"
@@ -866,6 +871,11 @@ def _dyadic(tree, bound: float) -> tuple[int, float] | None:
     else:
         return None
     return (d, size) if d <= 3 and size < _EIGHTHS_LIMIT else None
+
+
+def _operations(tree) -> int:
+    """The number of operations of an expression ``tree``."""
+    return 0 if tree[0] in ("var", "num") else 1 + _operations(tree[1]) + _operations(tree[2])
 
 
 def _locals_of(tree) -> set:
