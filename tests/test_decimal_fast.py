@@ -9,8 +9,8 @@ seeded sweep: random ones over the whole range, ties (a 13th digit 5 exactly: pr
 neighbours), cancellation, huge and tiny exponents with their overflow and underflow.  Every
 result must also be decimal_arith's routine's (the code the inline caches compute), bit for
 bit, and most must come from the C tests themselves (a fallback counted), so a path never
-taken fails.  The machine's compiled code calls the routines (Ahl's chains and generated
-statements against the decimal module and the routines)."""
+taken fails.  The machine's compiled code calls the routines (Ahl's chains against the decimal
+module here; generated statements against the routines alone in test_decimal_scales.py)."""
 
 from __future__ import annotations
 
@@ -298,38 +298,3 @@ def test_ahls_chains_through_the_machine(monkeypatch):
     monkeypatch.setenv("YASEER_CACHE_DIR", "")
     _, machine = run(AHL_CHAINS)
     assert [repr(v) for row in machine.arrays["Y"] for v in row] == chain_reference()
-
-
-@pytest.mark.parametrize("seed", range(4))
-def test_compiled_statements_equal_the_routines(monkeypatch, seed):
-    """Generated statements (test_decimal_scales' expressions) compiled with the C routines give
-    the values of the routines alone."""
-    from test_decimal_scales import _expression, run
-    from yaseer.basic.compile.number_models import DecimalNumbers
-
-    monkeypatch.setenv("YASEER_CACHE_DIR", "")
-    rng = random.Random(seed)
-    values = [1, 3, -5, 999, 31623, 123456789, 999999999, 1000000000, 2.5, -0.5, 0.1, 0.125, 1234.5678, 1e-5,
-              3e11, -123456789012, 0.333333333333, 9.99999999999e20, 1e-45]
-    expressions = [_expression(rng, 3) for _ in range(30)]
-    body = ": ".join(f"Y({i}, J)={e}" for i, e in enumerate(expressions))
-    program = "10 DIM Y(40, 30)\n20 FOR J=1 TO 20: READ A, B, C, K\n30 " + body + "\n40 NEXT J\n"
-    program += "".join(f"{100 + i} DATA {', '.join(repr(float(rng.choice(values))) for _ in range(4))}\n"
-                       for i in range(20))
-
-    def results(caching: bool):
-        original = DecimalNumbers.__init__
-
-        def init(self):
-            original(self)
-            self.caching = caching
-        monkeypatch.setattr(DecimalNumbers, "__init__", init)
-        try:
-            out, machine = run(program)
-        except BasicError as error:
-            return str(error)
-        finally:
-            monkeypatch.setattr(DecimalNumbers, "__init__", original)
-        return [repr(v) for row in machine.arrays["Y"] for v in row]
-
-    assert results(True) == results(False)

@@ -350,10 +350,11 @@ def _expression(rng: random.Random, depth: int) -> str:
     return f"({left}{op}{right})"
 
 
-def _results(program: str, caching: bool, monkeypatch) -> list:
-    """Y() after ``program``, compiled with the inline paths (``caching``) or the routines alone."""
+def _results(program: str, caching: bool, monkeypatch, inline: bool = True) -> list:
+    """Y() after ``program``, compiled with the inline paths (``caching``) or the routines alone;
+    ``inline``: the inline caches, else the C routines where built (test_decimal_fast.py)."""
     monkeypatch.setenv("YASEER_CACHE_DIR", "")  # (the compiled-program cache does not tell the two apart)
-    monkeypatch.setenv("YASEER_PURE_PYTHON", "1")  # the inline caches (the C routines: test_decimal_fast.py)
+    monkeypatch.setenv("YASEER_PURE_PYTHON", "1" if inline else "")
     original = DecimalNumbers.__init__
 
     def init(self):
@@ -367,12 +368,14 @@ def _results(program: str, caching: bool, monkeypatch) -> list:
     return [repr(v) for row in machine.arrays["Y"] for v in row]
 
 
+@pytest.mark.parametrize("inline", [True, False])
 @pytest.mark.parametrize("seed", range(12))
-def test_compiled_statements_equal_the_routines(monkeypatch, seed):
+def test_compiled_statements_equal_the_routines(monkeypatch, seed, inline):
     """Whole statements (their exact float forms where their variables are whole and small, the
     scale caches elsewhere) give the values decimal_arith's routines give, bit for bit, over
     values that pass and fail the tests: whole numbers at and beyond the bounds, halves,
-    tenths, negatives, large and small numbers."""
+    tenths, negatives, large and small numbers; with the inline caches and with the C routines
+    (``inline`` False, where built: arithmetic/_decimal_fast.c)."""
     rng = random.Random(seed)
     values = [1, 2, 3, 7, -5, 999, 1000, 12345, 31622, 31623, 99999, 123456789, 599999999, 600000000,
               899999999, 900000000, 999999999, 1000000000, 2.5, -0.5, 0.1, 0.125, 1234.5678, 1e-5, 3e11,
@@ -387,5 +390,5 @@ def test_compiled_statements_equal_the_routines(monkeypatch, seed):
             * rng.choice((1, 1, -1)) for _ in range(4 * rows)]
     lines += [f"{1000 + i} DATA {','.join(repr(float(v)) for v in data[i:i + 8])}" for i in range(0, len(data), 8)]
     program = "\n".join(lines) + "\n"
-    fast, routines = _results(program, True, monkeypatch), _results(program, False, monkeypatch)
+    fast, routines = _results(program, True, monkeypatch, inline), _results(program, False, monkeypatch)
     assert fast == routines
