@@ -124,3 +124,11 @@ def test_palette_checks():
                   "50 PALETTE 1, 40000\n60 PALETTE 1 X\n70 PALETTE USING P%\n80 PALETTE USING S!(0)\n"
                   "90 PALETTE USING P%(10)\n100 PALETTE USING P%(4)\n110 PALETTE") == [
         (5, 10), (5, 40), (6, 50), (2, 60), (2, 70), (13, 80), (5, 90)]
+
+
+def test_view_without_colours_leaves_the_pixels():
+    # the GW-BASIC user's guide: VIEW fills and frames the view only with the colours given
+    # (PC-BASIC 2.0.8 fills it with 0 and frames it in 0 all the same)
+    out = run("10 SCREEN 1: LINE (0,0)-(50,50),2,BF\n20 VIEW (10,10)-(40,40)\n30 VIEW\n"
+              "40 PRINT POINT(20,20); POINT(9,9)\n50 VIEW (10,10)-(40,40),1,3: VIEW\n60 PRINT POINT(20,20); POINT(9,9)\n")
+    assert out == " 2  2 \n 1  3 \n"
