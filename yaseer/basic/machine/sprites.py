@@ -228,10 +228,10 @@ def put_sprite(machine, canvas, point, reference, action: str) -> None:
     row_bytes = (width + 7) // 8 * 4 if bits == 4 else (width * bits + 7) // 8
     data = array.read(4 + row_bytes * height)
     x0, y0 = point
+    if not (canvas.inside_view(x0, y0) and canvas.inside_view(x0 + width - 1, y0 + height - 1)):
+        raise illegal_function_call()  # (an empty array's corners too: PC-BASIC 2.0.8)
     if width == 0 or height == 0:
         return
-    if not (canvas.inside_view(x0, y0) and canvas.inside_view(x0 + width - 1, y0 + height - 1)):
-        raise illegal_function_call()
     if len(data) < 4 + row_bytes * height:
         raise illegal_function_call()
     _, _, rows = unpack(canvas, data)
