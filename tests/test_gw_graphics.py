@@ -132,3 +132,9 @@ def test_view_without_colours_leaves_the_pixels():
     out = run("10 SCREEN 1: LINE (0,0)-(50,50),2,BF\n20 VIEW (10,10)-(40,40)\n30 VIEW\n"
               "40 PRINT POINT(20,20); POINT(9,9)\n50 VIEW (10,10)-(40,40),1,3: VIEW\n60 PRINT POINT(20,20); POINT(9,9)\n")
     assert out == " 2  2 \n 1  3 \n"
+
+
+def test_put_checks_the_view_before_the_array():
+    # PC-BASIC 2.0.8: an array GET never filled still puts its corners in the view
+    assert errors("10 SCREEN 1: DIM G%(10)\n20 PUT (400, 10), G%\n30 PUT (10, 10), G%\n40 GET (0,0)-(9,9), G%\n"
+                  "50 DIM H%(1): GET (0,0)-(9,9), H%\n60 GET (0,0)-(400,9), G%") == [(5, 20), (5, 40), (5, 50), (5, 60)]
