@@ -30,6 +30,11 @@ def pause() -> None:
         _paused = True
 
 
+def paused() -> bool:
+    """True between :func:`pause` and :func:`resume`."""
+    return _paused
+
+
 def resume() -> None:
     """After :func:`pause`: freeze the objects made so far and switch automatic collection on again."""
     global _paused

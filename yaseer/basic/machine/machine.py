@@ -884,16 +884,23 @@ class Machine(Variables, ControlStack, ErrorTrapping, Breaks, InputOutput, Conso
 
     def run(self, line: int | None = None) -> str:
         """RUN (from ``line``): returns "end" or "stop"; raises BasicError on an error."""
-        if self.compiled.get(0) is not None and self.compiled[0].dynamic_loops:
-            self._invalidate(0)  # the variant CONT made after a Ctrl-C: back to native loops
-        self._run_types(line)
-        for area in self.programs:
-            self._compiled(area)
+        self.compile_areas(line)
         self.reset()
         block = 0
         if line is not None:
             block = self._line_block(line)
         return self._execute(0, block)
+
+    def compile_areas(self, line: int | None = None) -> None:
+        """Compile (or read from the cache) every area RUN [``line``] runs, as :meth:`run` does first;
+        a second call finds them compiled.  A ``yaseer run`` process calls it before the program
+        starts, while its collector is still paused (yaseer.collection_pause): parsing and
+        compiling make many objects but no cyclic garbage worth a collection."""
+        if self.compiled.get(0) is not None and self.compiled[0].dynamic_loops:
+            self._invalidate(0)  # the variant CONT made after a Ctrl-C: back to native loops
+        self._run_types(line)
+        for area in self.programs:
+            self._compiled(area)
 
     def _run_types(self, line: int | None) -> None:
         """Before RUN [line] resets the machine: RUN clears the DEF type table (BIMISC.ASM
