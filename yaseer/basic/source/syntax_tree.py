@@ -52,16 +52,16 @@ class Node:
 _DEFAULTS: dict[str, dict] = {}
 
 
-def _node(cls):
-    """Class decorator: the annotated names become the node's fields, in order."""
-    annotations = cls.__dict__.get("__annotations__", {})
-    fields = tuple(annotations)
-    defaults = {name: cls.__dict__[name] for name in fields if name in cls.__dict__}
-    _DEFAULTS[cls.__name__] = {k: ([] if v is _LIST else v) for k, v in defaults.items()}
-    namespace = {k: v for k, v in cls.__dict__.items() if k not in fields and k not in ("__dict__", "__weakref__")}
+def _node(name: str, bases: tuple, namespace: dict) -> type:
+    """The metaclass of every node class (``class Num(metaclass=_node)``): the annotated names
+    become the node's fields, in order, and the class is made once, a :class:`Node` with those
+    slots (a class decorator would make each class twice: ~85 classes, a cold start's time)."""
+    fields = tuple(namespace.get("__annotations__", {}))
+    defaults = {field: namespace.pop(field) for field in fields if field in namespace}
+    _DEFAULTS[name] = {k: ([] if v is _LIST else v) for k, v in defaults.items()}
     namespace["__slots__"] = fields
     namespace["_fields"] = fields
-    return type(cls.__name__, (Node,), namespace)
+    return type(name, (Node,), namespace)
 
 
 _LIST = object()  # default: a fresh empty list
@@ -69,74 +69,63 @@ _LIST = object()  # default: a fresh empty list
 # ---------------------------------------------------------------- expressions
 
 
-@_node
-class Num:
+class Num(metaclass=_node):
     value: float
     kind: str = ""  # GW-BASIC literal type "%", "!" or "#"; "" in the untyped (casio) model
 
 
-@_node
-class Str:
+class Str(metaclass=_node):
     value: str
 
 
-@_node
-class Var:
+class Var(metaclass=_node):
     """A scalar variable; ``name`` is upper case and keeps its ``$``."""
     name: str
 
 
-@_node
-class Elem:
+class Elem(metaclass=_node):
     """An array element ``name(indices...)``."""
     name: str
     indices: tuple
 
 
-@_node
-class Unary:
+class Unary(metaclass=_node):
     op: str  # "-", "+", "NOT"
     operand: object
 
 
-@_node
-class Binary:
+class Binary(metaclass=_node):
     op: str  # "+", "-", "*", "/", "\\", "^", "MOD", "=", "<>", "<", ">", "<=", ">=", "AND", "OR"
     left: object
     right: object
     bare_not: bool = False  # the right side a NOT without parentheses (13*NOT 7: Dialect.not_after_operator)
 
 
-@_node
-class Call:
+class Call(metaclass=_node):
     """A built-in function; ``args`` may be empty (``RND``)."""
     name: str
     args: tuple
 
 
-@_node
-class FnCall:
+class FnCall(metaclass=_node):
     """A user function ``FN name(args)``."""
     name: str
     args: tuple
 
 
-@_node
-class SetClock:
+class SetClock(metaclass=_node):
     """``DATE$ = value`` or ``TIME$ = value``: the machine's clock set (machine/clock.py)."""
     name: str  # "DATE$" or "TIME$"
     value: object
 
 
-@_node
-class FilePointer:
+class FilePointer(metaclass=_node):
     """``VARPTR(#n)``, ``IOCTL$(#n)``: a function of a file number."""
     name: str
     number: object
 
 
-@_node
-class CutFileCall:
+class CutFileCall(metaclass=_node):
     """``VARPTR(#n`` with no ``)``: the file number read and its file checked as the function
     checks it, then ``error`` where the ``)`` should be."""
     name: str
@@ -144,8 +133,7 @@ class CutFileCall:
     error: object
 
 
-@_node
-class SysVar:
+class SysVar(metaclass=_node):
     name: str  # "ERR", "ERL"
 
 
@@ -191,14 +179,12 @@ def expr_type(node, named=None) -> str:
 # ---------------------------------------------------------------- statements
 
 
-@_node
-class Let:
+class Let(metaclass=_node):
     target: object
     value: object
 
 
-@_node
-class Print:
+class Print(metaclass=_node):
     printer: bool  # LPRINT
     items: list  # expressions, "," ";" separators, Tab, Spc
     using: object = None  # format expression for PRINT USING
@@ -206,75 +192,62 @@ class Print:
     lead: list = _LIST  # PRINT items USING ...: the items printed before the USING
 
 
-@_node
-class Tab:
+class Tab(metaclass=_node):
     column: object
 
 
-@_node
-class Spc:
+class Spc(metaclass=_node):
     count: object
 
 
-@_node
-class For:
+class For(metaclass=_node):
     var: object
     start: object
     stop: object
     step: object = None
 
 
-@_node
-class Next:
+class Next(metaclass=_node):
     var: object = None  # None: the innermost loop
 
 
-@_node
-class Goto:
+class Goto(metaclass=_node):
     target: int
 
 
-@_node
-class Gosub:
+class Gosub(metaclass=_node):
     target: int
 
 
-@_node
-class GosubProg:
+class GosubProg(metaclass=_node):
     area: int
 
 
-@_node
-class GotoArea:
+class GotoArea(metaclass=_node):
     """GOTO #n: run program area n; the program ends when it does."""
     area: int
 
 
-@_node
-class GosubArea:
+class GosubArea(metaclass=_node):
     """GOSUB #n: run program area n and come back (as GOSUB PROG n)."""
     area: int
 
 
-@_node
-class GotoFile:
+class GotoFile(metaclass=_node):
     """GOTO "file:label" (a string expression): run that program; the program ends when it does."""
     name: object
 
 
-@_node
-class GosubFile:
+class GosubFile(metaclass=_node):
     """GOSUB "file:label": run that program until its RETURN and come back."""
     name: object
 
 
-@_node
-class Return:
+class Return(metaclass=_node):
     pass
 
 
-@_node
-class OnJump:
+class OnJump(metaclass=_node):
     """ON x GOTO/GOSUB: ``targets`` the line numbers (None where a place is empty);
     ``rest_error`` what the statement's text after them is when the selector picks none of
     them (GW reads them all then: GWMAIN.ASM NTONGS), None where the statement ends there."""
@@ -284,56 +257,46 @@ class OnJump:
     rest_error: object = None
 
 
-@_node
-class OnError:
+class OnError(metaclass=_node):
     target: int  # 0 switches trapping off
 
 
-@_node
-class End:
+class End(metaclass=_node):
     pass
 
 
-@_node
-class Stop:
+class Stop(metaclass=_node):
     pass
 
 
-@_node
-class Rem:
+class Rem(metaclass=_node):
     text: str = ""
     skipped: list = _LIST  # an ELSE no IF owns: the statements after it, never run (blocks.scanned_statements)
 
 
-@_node
-class Dim:
+class Dim(metaclass=_node):
     arrays: list  # [(name, (size exprs...))]
 
 
-@_node
-class Clear:
+class Clear(metaclass=_node):
     args: list = _LIST  # CLEAR [n][,[m][,k]]: memory sizes by place (None: a place left empty), evaluated and checked only
 
 
-@_node
-class While:
+class While(metaclass=_node):
     condition: object  # an expression, or the BasicError a condition that does not read is
     rest_error: object = None  # a BasicError: what follows the condition does not read
 
 
-@_node
-class Wend:
+class Wend(metaclass=_node):
     error: object = None  # a BasicError: what follows WEND (raised when it is reached)
 
 
-@_node
-class Swap:
+class Swap(metaclass=_node):
     first: object
     second: object
 
 
-@_node
-class MidAssign:
+class MidAssign(metaclass=_node):
     """MID$(target, start[, count]) = value; ``error``: a statement that reads only up to
     its start or count (``value`` None), checked as far as it reads, then this error."""
     target: object
@@ -343,33 +306,28 @@ class MidAssign:
     error: object = None
 
 
-@_node
-class Erase:
+class Erase(metaclass=_node):
     names: list
 
 
-@_node
-class OptionBase:
+class OptionBase(metaclass=_node):
     base: int
 
 
-@_node
-class LineInput:
+class LineInput(metaclass=_node):
     prompt: str | None
     target: object
     channel: object = None  # LINE INPUT #n
     keeps_row: bool = False  # LINE INPUT; : the cursor stays after the answer
 
 
-@_node
-class Write:
+class Write(metaclass=_node):
     items: list
     channel: object = None  # WRITE #n
     cut: str | None = None  # a WRITE that fails part way: what follows its items (their comma or nothing), no line end
 
 
-@_node
-class Open:
+class Open(metaclass=_node):
     """OPEN: mode ("I"/"O"/"A"/"R", or INPUT/OUTPUT/APPEND/RANDOM) expression, file number,
     name, and the record length (None: not given); GW-BASIC 3.23's ``access`` ("R", "W",
     "RW") and ``lock`` ("SHARED", "R", "W", "RW"), None where the clause is left out."""
@@ -381,15 +339,13 @@ class Open:
     lock: str | None = None
 
 
-@_node
-class Field:
+class Field(metaclass=_node):
     """FIELD #n, width AS variable, ...: ``fields`` of (width expression, variable)."""
     number: object
     fields: list
 
 
-@_node
-class FileFirst:
+class FileFirst(metaclass=_node):
     """A file statement (PRINT #, WRITE #, INPUT #, LINE INPUT #, FIELD, GET, PUT, WIDTH #)
     whose text after the file number does not read: GW-BASIC finds the file first (open,
     in one of ``modes``; ``opened``: found as GET and PUT find it), then meets ``error``."""
@@ -400,16 +356,14 @@ class FileFirst:
     count: object = None  # INPUT$(count, #f: its count, read first as a byte
 
 
-@_node
-class GetPut:
+class GetPut(metaclass=_node):
     """GET #n[, record] (``put`` False) or PUT #n[, record]."""
     put: bool
     number: object
     record: object = None
 
 
-@_node
-class Chain:
+class Chain(metaclass=_node):
     """CHAIN [MERGE] file [, line] [, ALL] [, DELETE first-last]; MERGE file (``run`` False:
     merge, then stop)."""
     merge: bool
@@ -426,8 +380,7 @@ class Chain:
 CURRENT_LINE = (".",)
 
 
-@_node
-class Command:
+class Command(metaclass=_node):
     """A command run by a program: ``name`` RUN LIST LLIST LOAD SAVE NEW SYSTEM DELETE EDIT
     KEY; ``argument`` its file name expression, line, line range or :data:`CURRENT_LINE`
     (the Casio's ``LIST .``, ``EDIT .``); ``option`` the
@@ -441,66 +394,55 @@ class Command:
     file: object = None
 
 
-@_node
-class Common:
+class Common(metaclass=_node):
     """COMMON: its list as typed, which a CHAIN reads (common_lists.py); nothing when it runs."""
     text: str
 
 
-@_node
-class LSet:
+class LSet(metaclass=_node):
     """LSET variable = value (``right`` False) or RSET."""
     right: bool
     target: object
     value: object
 
 
-@_node
-class Close:
+class Close(metaclass=_node):
     numbers: list  # empty: every open file
 
 
-@_node
-class Kill:
+class Kill(metaclass=_node):
     name: object
 
 
-@_node
-class Rename:
+class Rename(metaclass=_node):
     """NAME old AS new; ``new`` None: ``old`` checked (a string, an existing file), then ``error``."""
     old: object
     new: object
     error: object = None
 
 
-@_node
-class Files:
+class Files(metaclass=_node):
     pattern: object = None
 
 
-@_node
-class ReturnTo:
+class ReturnTo(metaclass=_node):
     """RETURN n: leave the subroutine and go on at line n."""
     target: int
 
 
-@_node
-class Data:
+class Data(metaclass=_node):
     text: str
 
 
-@_node
-class Read:
+class Read(metaclass=_node):
     targets: list
 
 
-@_node
-class Restore:
+class Restore(metaclass=_node):
     target: object = None  # a line number, None (the first DATA), or an expression: RESTORE (10*10)
 
 
-@_node
-class Input:
+class Input(metaclass=_node):
     prompt: str | None
     question_mark: bool
     targets: list
@@ -511,16 +453,14 @@ class Input:
     names_cut: bool = False  # no names, or a list ending in a comma: asked and read, then refused
 
 
-@_node
-class Touch:
+class Touch(metaclass=_node):
     """A statement that fails after it has read its target: ``DIMA$(20)`` (no ``=``) reads
     the element, which can be Subscript out of range, before its Syntax error ``error``."""
     target: object
     error: object
 
 
-@_node
-class CutShort:
+class CutShort(metaclass=_node):
     """A statement whose good start runs before the rest of its text fails: ``statement``
     (the items a PRINT or WRITE printed, an assignment made), then ``error``, all one
     statement (a RESUME NEXT goes on after the whole of it)."""
@@ -528,8 +468,7 @@ class CutShort:
     error: object
 
 
-@_node
-class CutCall:
+class CutCall(metaclass=_node):
     """A function call the text cuts short (``INSTR(-1``): the arguments read whole, then
     ``error`` where the next argument should start (``after_comma``) or where a ``,`` or
     ``)`` should follow the last one (Syntax error)."""
@@ -539,53 +478,45 @@ class CutCall:
     error: object
 
 
-@_node
-class CutExpression:
+class CutExpression(metaclass=_node):
     """An expression the text cuts short after an operator (``FNA(X) + PRINT``): ``read``,
     the part before the operator, is evaluated, then ``error``."""
     read: object
     error: object
 
 
-@_node
-class DefFn:
+class DefFn(metaclass=_node):
     name: str
     params: list
     body: object
 
 
-@_node
-class Resume:
+class Resume(metaclass=_node):
     mode: str  # "retry", "next", "line", "bad" (the text after RESUME does not read: ``error``)
     target: int | None = None
     error: object = None  # "bad": the error it is inside a handler (GWMAIN.ASM RESUME tests ONEFLG first)
 
 
-@_node
-class Error:
+class Error(metaclass=_node):
     """ERROR n: raise error code n."""
     code: object
 
 
-@_node
-class Randomize:
+class Randomize(metaclass=_node):
     seed: object = None
 
 
-@_node
-class DefMachine:
+class DefMachine(metaclass=_node):
     """DEF SEG [= value] (``word`` "SEG") or DEF USR[n] = value (``word`` "USR")."""
     word: str
     value: object = None
 
 
-@_node
-class Angle:
+class Angle(metaclass=_node):
     mode: str  # "DEG" or "RAD"
 
 
-@_node
-class WordStatement:
+class WordStatement(metaclass=_node):
     """A statement of the dialect's own words (dialects/casio.py): ANGLE 1, POKE a, d; or of
     gw's device words (dialects/gw_words.py)."""
     word: str
@@ -593,19 +524,16 @@ class WordStatement:
     marks: str = ""  # its punctuation in order: "=" "#" "," and "T" for TO (``LOCK #1, 2 TO 6``: "#,T")
 
 
-@_node
-class Trace:
+class Trace(metaclass=_node):
     on: bool  # TRON (True) or TROFF
 
 
-@_node
-class Cls:
+class Cls(metaclass=_node):
     """CLS [n]: clear the screen (n: 0 all of it, 2 the text window, 1 the graphics one)."""
     mode: object = None
 
 
-@_node
-class Graphics:
+class Graphics(metaclass=_node):
     """A graphics statement (gw) as GW reads it (source/graphics_syntax.py): ``word`` PSET,
     PRESET, LINE, VIEW, WINDOW, GET, PUT or PALETTE; ``parts`` its pieces in the order read;
     ``error`` what its text is where the reading stopped (None: the whole text read);
@@ -616,8 +544,7 @@ class Graphics:
     after: bool = False
 
 
-@_node
-class ScreenStatement:
+class ScreenStatement(metaclass=_node):
     """A text-screen statement whose arguments may each be left out (None):
     ``word`` LOCATE (row/column, cursor), COLOR (foreground, background, border),
     SCREEN (mode, colour switch, pages) or VIEW alone (the graphics viewport reset)."""
@@ -625,8 +552,7 @@ class ScreenStatement:
     args: list
 
 
-@_node
-class ByteList:
+class ByteList(metaclass=_node):
     """A screen statement read one small number at a time (``Dialect.screen.byte_statements``:
     GW's CLS, LOCATE, WIDTH, COLOR, SCREEN) whose text went wrong: ``args`` the numbers
     read before it (None where one was left out), ``error`` what the rest of the text is,
@@ -636,15 +562,13 @@ class ByteList:
     error: object = None
 
 
-@_node
-class ViewPrint:
+class ViewPrint(metaclass=_node):
     """VIEW PRINT [first TO last]: the rows that scroll (none given: the whole screen)."""
     first: object = None
     last: object = None
 
 
-@_node
-class Key:
+class Key(metaclass=_node):
     """KEY ON / OFF / LIST (``action``), KEY n, text (``"DEFINE"``: ``number``, ``text``), KEY (n)
     ON / OFF / STOP (``"TRAP"``), or ``"NUMBER"``: the key's number checked, then ``text``, an error."""
     action: str
@@ -652,8 +576,7 @@ class Key:
     text: object = None
 
 
-@_node
-class EventTrap:
+class EventTrap(metaclass=_node):
     """ON word(index) GOSUB line (gw's event traps: dialects/gw_words.py EVENTS); ``index``
     None where no parentheses follow the word, ``line`` 0 to stop trapping."""
     word: str
@@ -661,42 +584,36 @@ class EventTrap:
     line: int
 
 
-@_node
-class EventSwitch:
+class EventSwitch(metaclass=_node):
     """word(index) ON | OFF | STOP (``state``): an event's trapping switched."""
     word: str
     index: object
     state: str
 
 
-@_node
-class Bank:
+class Bank(metaclass=_node):
     """A DATA BANK statement (``WRITE#`` ... ``LOAD#``) and its expressions."""
     word: str
     args: list
 
 
-@_node
-class DefChr:
+class DefChr(metaclass=_node):
     """``DEFCHR$(code) = pattern``: the dots of a user-defined character (casio)."""
     code: object
     pattern: object
 
 
-@_node
-class EndMark:
+class EndMark(metaclass=_node):
     """``THEN *`` / ``ELSE *``: Becker's library writes it where a program stops (casio only)."""
 
 
-@_node
-class Locate:
+class Locate(metaclass=_node):
     """LOCATE: the cursor to a place of the display; ``args`` as written, None where
     one is left out (the Casio's ``x, y``; GW's ``row, column, cursor, start, stop``)."""
     args: list
 
 
-@_node
-class Width:
+class Width(metaclass=_node):
     """``WIDTH n``: the screen's width in columns (PRINT wraps there); ``WIDTH LPRINT n``
     (``printer``): the printer's (LPRINT wraps there); ``WIDTH "LPT1:", n``: the width
     of the device ``device`` names (a string expression); ``WIDTH #n, w``: the width of
@@ -707,22 +624,19 @@ class Width:
     file: object = None
 
 
-@_node
-class DefType:
+class DefType(metaclass=_node):
     kind: str  # "INT", "SNG", "DBL" or "STR" (DEFINT ...)
     ranges: list  # "AZ": first and last letter of each range
 
 
-@_node
-class If:
+class If(metaclass=_node):
     condition: object
     then: object  # int line number or list of statements
     otherwise: object = None  # int, list or None
     unreachable: list = _LIST  # statements after "THEN n:" (never run; scanned for NEXT/DATA)
 
 
-@_node
-class Line:
+class Line(metaclass=_node):
     """One program line: its number, its statements, and its source text."""
     number: int
     statements: list = _LIST
