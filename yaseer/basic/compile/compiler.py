@@ -27,8 +27,6 @@ while a program runs; the plain variant carries no cost for tracing.
 
 from __future__ import annotations
 
-import re
-
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.compile.blocks import data_statements, flatten, nodes, plan, splits, types_fixed, walk_statements
 from yaseer.basic.compile.expressions import (
@@ -1152,7 +1150,17 @@ def _watched_names(flat, full_name, common_variables):
 
 # An array made where it is first read (expressions.BlockScope.array): code that runs only
 # once its names are made reads the local itself.
-_LAZY_ARRAY = re.compile(r"\(((?:a|b|ai|ad)_\w+) or \(\1 := _arr\('[^']+', \d+\)\)\)")
+_LAZY_ARRAY = r"\(((?:a|b|ai|ad)_\w+) or \(\1 := _arr\('[^']+', \d+\)\)\)"
+
+
+def _arrays_made(text: str) -> str:
+    """``text`` with each array made where it is first read replaced by its local; re is imported
+    only for a line that makes one (a cold start of a listing without one does not load it)."""
+    if " := _arr(" not in text:
+        return text
+    import re
+
+    return re.sub(_LAZY_ARRAY, r"\1", text)
 
 
 def _passes(code: list, split: set, checked: bool = True) -> list:
@@ -1192,7 +1200,7 @@ def _passes(code: list, split: set, checked: bool = True) -> list:
                     continue
                 text = "pass"
             if type(text) is str:  # (a marker keeps its type)
-                text = _LAZY_ARRAY.sub(r"\1", text)
+                text = _arrays_made(text)
         out.append((indent, text))
     return out
 

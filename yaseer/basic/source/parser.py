@@ -11,8 +11,6 @@ the line is reached, as the period interpreters did).
 
 from __future__ import annotations
 
-import re
-
 from itertools import chain
 
 
@@ -1713,6 +1711,8 @@ def _bad_else_branches(text: str, err: BasicError, dialect: Dialect) -> list | N
     """``IF c THEN s ELSE bad`` (IFs nested in the THEN branch may have ELSEs too): the line
     before its first ELSE parsed, each ELSE branch given to the IF it belongs to, the innermost
     first (a branch that does not parse is ``err``); None when the line is no such IF."""
+    import re  # only for a line that does not parse: a cold start of a good listing does not load it
+
     places = [m.start() for m in re.finditer("ELSE", _blank_strings(text))]
     if not places:
         return None
@@ -1739,6 +1739,8 @@ def _bad_else_branches(text: str, err: BasicError, dialect: Dialect) -> list | N
 
 def _blank_strings(text: str) -> str:
     """``text`` with every string literal blanked (same length), so a search finds only words."""
+    import re
+
     return re.sub(r'"[^"]*"?', lambda m: " " * len(m.group()), text)
 
 
