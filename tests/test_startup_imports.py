@@ -327,3 +327,64 @@ def test_a_program_run_inside_another_python_never_pauses_the_collector():
     frozen = gc.get_freeze_count()
     assert yaseer.run("10 PRINT 1").text == " 1 \n"
     assert gc.isenabled() and gc.get_freeze_count() == frozen
+
+
+COMPILE_PROBE = (
+    f"import gc, sys; sys.path.insert(0, {PACKAGE_PARENT!r})\n"
+    "import yaseer.entry\n"
+    "import yaseer.basic.compile.compiler as compiler\n"
+    "from yaseer.cli import main\n"
+    "seen = []\n"
+    "compile_area = compiler.compile_area\n"
+    "def watched(*args, **kwargs):\n"
+    "    seen.append(gc.isenabled())\n"
+    "    return compile_area(*args, **kwargs)\n"
+    "compiler.compile_area = watched\n"
+    "status = main()\n"
+    "print(seen, gc.isenabled(), status)\n")
+
+
+def test_a_cold_run_parses_and_compiles_with_the_collector_paused(tmp_path):
+    """The first run of a listing parses and compiles it before the program starts
+    (Machine.compile_areas), while the start's pause lasts: the objects that makes are no
+    garbage either; the collector is on again when the program runs and at the end."""
+    listing = tmp_path / "print.bas"
+    listing.write_text("10 PRINT 1\n")
+    env = dict(os.environ, YASEER_CACHE_DIR=str(tmp_path / "cache"))
+    done = subprocess.run([sys.executable, "-c", COMPILE_PROBE, "run", str(listing)], capture_output=True,
+                          text=True, env=env, check=True)
+    assert done.stdout.splitlines() == [" 1 ", "[False] True 0"]
+    assert collector_states("run", str(listing)) == "[False, (True, True)] True 0"  # the program still runs with it on
+
+
+def test_a_program_run_inside_another_python_compiles_with_its_collector_as_it_was():
+    import gc
+
+    assert gc.isenabled()
+    assert yaseer.run('10 PRINT "A"').text == "A\n"
+    assert gc.isenabled()
+
+
+def test_each_syntax_tree_class_is_made_once():
+    """Importing the syntax tree makes one class per node (its metaclass builds it with its
+    slots), not a class and then a second one with slots (a cold start's parse imports it)."""
+    probe = (f"import gc, sys; sys.path.insert(0, {PACKAGE_PARENT!r}); gc.disable()\n"
+             "import yaseer.basic.source.syntax_tree as ast\n"
+             "made = [o for o in gc.get_objects() if isinstance(o, type) and o.__module__ == ast.__name__]\n"
+             "named = [v for v in vars(ast).values() if isinstance(v, type) and v.__module__ == ast.__name__]\n"
+             "print(len(made), len(named), all(type(c) is type for c in named))")
+    done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
+    made, named, plain = done.stdout.split()
+    assert made == named and int(named) > 80 and plain == "True"
+
+
+def test_a_node_keeps_its_fields_defaults_and_slots():
+    from yaseer.basic.source import syntax_tree as ast
+
+    assert ast.Num._fields == ("value", "kind") and ast.Num.__slots__ == ("value", "kind")
+    assert ast.Num(1.0) == ast.Num(1.0, "") and ast.Num(1.0).kind == ""
+    assert ast.Num.__qualname__ == "Num" and ast.Num.__module__ == ast.__name__ and issubclass(ast.Num, ast.Node)
+    with pytest.raises(AttributeError):
+        ast.Num(1.0).other = 2
+    with pytest.raises(TypeError):
+        ast.Num()

@@ -7,7 +7,9 @@ them: in a ``yaseer run`` of ``10 END`` those passes cost about a tenth of the w
 process's instructions (valgrind: 14.7M of 157M) and find nothing to free.
 
 So the program's first code (:mod:`yaseer.entry`) calls :func:`pause`, and :func:`resume`
-switches the collector back on just before the BASIC program runs (:func:`yaseer.api.execute`)
+switches the collector back on just before the BASIC program runs (:func:`yaseer.api.execute`,
+after the listing is parsed and compiled or read from the cache: a cold start's parse and
+compile make tens of thousands of objects too, and no cyclic garbage worth a collection)
 or, for every other command, once the command line is read (:mod:`yaseer.cli`).  It first
 freezes what the start made (``gc.freeze``: objects kept for the whole run, moved where no
 later collection looks at them), so the collections during the run, and the one at exit,
