@@ -91,8 +91,11 @@ def generate(grammar: str) -> str:
         f'"""The LALR(1) tables of grammar.lark, computed by lark {lark.__version__}: written by',
         "tools/make_parse_tables.py, never edited by hand (a test regenerates and compares).",
         "",
-        "RULES[k] is (name, size, callback, keep, single) (see the tool); ACTIONS[state] maps a",
-        "terminal or rule name to a shift or goto (the next state, >= 0) or a reduction (-1 - rule).",
+        "RULES[k] is (name, size, callback, keep, single) (see the tool); ACTIONS[state] is a pair",
+        "(symbols, codes): the terminals and rule names the state takes, sorted, and for each a shift",
+        "or goto (the next state, >= 0) or a reduction (-1 - rule).  Pairs of constant tuples, not",
+        "dicts: importing the module builds nothing (the parser makes a state's dict when it first",
+        "reaches the state), and equal tuples are one constant.",
         '"""',
         "",
         "START = 0",
@@ -105,9 +108,9 @@ def generate(grammar: str) -> str:
         "ACTIONS = (",
     ]
     for state in sorted(number, key=number.get):
-        actions = {str(name): (number[arg] if action is Shift else -1 - index[id(arg)])
-                   for name, (action, arg) in sorted(table.states[state].items())}
-        lines.append(f"    {actions!r},")
+        actions = [(str(name), number[arg] if action is Shift else -1 - index[id(arg)])
+                   for name, (action, arg) in sorted(table.states[state].items())]
+        lines.append(f"    ({tuple(name for name, _ in actions)!r}, {tuple(code for _, code in actions)!r}),")
     lines += [")", ""]
     return "\n".join(lines)
 

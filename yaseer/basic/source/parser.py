@@ -771,17 +771,29 @@ _REDUCTIONS = _reductions()
 _END_OF_LINE = Token("$END", "")
 
 
+_ROWS: list = [None] * len(ACTIONS)
+"""Each state's actions (symbol -> code), made from its table row when the parser first reaches it."""
+
+
+def _row(state: int) -> dict:
+    """State ``state``'s actions, made from ACTIONS[state] (a cold start's parse reaches few of the states)."""
+    symbols, codes = ACTIONS[state]
+    row = _ROWS[state] = dict(zip(symbols, codes))
+    return row
+
+
 def _parse(tokens: list) -> list:
     """The statements of a token list (LALR(1): shift, or reduce and go to), or GrammarError."""
-    actions, reductions = ACTIONS, _REDUCTIONS
+    rows, reductions = _ROWS, _REDUCTIONS
     states: list = [START]
     values: list = []
     for token in chain(tokens, (_END_OF_LINE,)):
         kind = token.type
         while True:
-            code = actions[states[-1]].get(kind)
+            row = rows[states[-1]] or _row(states[-1])
+            code = row.get(kind)
             if code is None:
-                raise GrammarError(token, frozenset(s for s in actions[states[-1]] if s.isupper()))
+                raise GrammarError(token, frozenset(s for s in row if s.isupper()))
             if code >= 0:
                 states.append(code)
                 values.append(token)
@@ -793,7 +805,7 @@ def _parse(tokens: list) -> list:
             else:
                 children = []
             values.append(reduce(children))
-            state = actions[states[-1]][name]
+            state = (rows[states[-1]] or _row(states[-1]))[name]
             states.append(state)
             if state == END:
                 return values[-1]
