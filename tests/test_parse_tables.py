@@ -140,7 +140,8 @@ def test_the_planted_names_are_those_lark_used(tmp_path, monkeypatch):
 def test_importing_the_tables_builds_no_state_and_a_parse_makes_only_the_states_it_reaches():
     """The tables are constant tuples (no dict is built when the module is imported, a cold
     start's cost); the parser makes a state's actions the first time it reaches the state, the
-    same actions as the tables list."""
+    same actions as the tables list, and a rule's reduction the first time it reduces by it
+    (every rule has one)."""
     probe = (f"import sys; sys.path.insert(0, {PACKAGE_PARENT!r})\n"
              "from yaseer.basic.source import parse_tables\n"
              "print(all(type(row) is tuple and len(row) == 2 for row in parse_tables.ACTIONS))\n"
@@ -148,7 +149,10 @@ def test_importing_the_tables_builds_no_state_and_a_parse_makes_only_the_states_
              "print(parser.parse_line(10, 'PRINT 1').statements)\n"
              "made = [state for state, row in enumerate(parser._ROWS) if row is not None]\n"
              "print(0 < len(made) < len(parse_tables.ACTIONS) // 10,\n"
-             "      all(parser._ROWS[s] == dict(zip(*parse_tables.ACTIONS[s])) for s in made))\n")
+             "      all(parser._ROWS[s] == dict(zip(*parse_tables.ACTIONS[s])) for s in made))\n"
+             "reduced = [rule for rule, entry in enumerate(parser._REDUCTIONS) if entry is not None]\n"
+             "print(0 < len(reduced) < len(parse_tables.RULES) // 10,\n"
+             "      all(callable(parser._reduction_of(rule)[2]) for rule in range(len(parse_tables.RULES))))\n")
     done = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=True)
-    tuples, statements, made = done.stdout.splitlines()
-    assert tuples == "True" and "Print(" in statements and made == "True True"
+    tuples, statements, made, reduced = done.stdout.splitlines()
+    assert tuples == "True" and "Print(" in statements and made == "True True" and reduced == "True True"

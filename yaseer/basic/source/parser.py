@@ -758,16 +758,19 @@ def _missing(rule: str):
     return missing
 
 
-def _reductions() -> tuple:
-    """``(name, size, reduce)`` per grammar rule, their methods bound to one _ToAst
-    (a ``?rule`` needs one only where it can keep more than one child)."""
-    builder = _ToAst()
-    return tuple((name, size, _reduction(size, callback and getattr(builder, callback, None) or
-                                         (callback and _missing(callback)), keep, single))
-                 for name, size, callback, keep, single in RULES)
+_BUILDER = _ToAst()
+_REDUCTIONS: list = [None] * len(RULES)
+"""``(name, size, reduce)`` of each grammar rule, made when the parser first reduces by it."""
 
 
-_REDUCTIONS = _reductions()
+def _reduction_of(rule: int) -> tuple:
+    """Rule ``rule``'s ``(name, size, reduce)``, its method bound to the one _ToAst (a ``?rule``
+    needs one only where it can keep more than one child); made when first needed, as a cold
+    start's parse reduces by few of the rules."""
+    name, size, callback, keep, single = RULES[rule]
+    method = callback and getattr(_BUILDER, callback, None) or (callback and _missing(callback))
+    entry = _REDUCTIONS[rule] = (name, size, _reduction(size, method, keep, single))
+    return entry
 _END_OF_LINE = Token("$END", "")
 
 
@@ -798,7 +801,7 @@ def _parse(tokens: list) -> list:
                 states.append(code)
                 values.append(token)
                 break
-            name, size, reduce = reductions[-1 - code]
+            name, size, reduce = reductions[-1 - code] or _reduction_of(-1 - code)
             if size:
                 children = values[-size:]
                 del states[-size:], values[-size:]
