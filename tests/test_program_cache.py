@@ -335,3 +335,83 @@ def test_the_key_is_the_same_in_every_process(dialect):
     keys = {subprocess.run([sys.executable, "-c", probe, dialect], capture_output=True, text=True, check=True).stdout
             for _ in range(2)}
     assert len(keys) == 1 and keys != {"None\n"}
+
+
+def installed_sources(tmp_path: Path, monkeypatch) -> tuple[Path, Path]:
+    """A copy of yaseer/basic laid out as pip installs it (site/yaseer/basic beside
+    site/yaseer-VERSION.dist-info/RECORD, written after the files, listing each file's SHA-256 and
+    size as pip does), which the cache keys on from now; (the sources, the RECORD file)."""
+    import base64
+    import hashlib
+
+    from yaseer.version import __version__
+
+    site = tmp_path / "site"
+    sources = site / "yaseer" / "basic"
+    rows = []
+    for path in sorted(Path(program_cache._SOURCES).rglob("*")):
+        if path.suffix in (".py", ".lark") and "__pycache__" not in path.parts:
+            copy = sources / path.relative_to(program_cache._SOURCES)
+            copy.parent.mkdir(parents=True, exist_ok=True)
+            data = path.read_bytes()
+            copy.write_bytes(data)
+            digest = base64.urlsafe_b64encode(hashlib.sha256(data).digest()).rstrip(b"=").decode()
+            rows.append(f"{copy.relative_to(site).as_posix()},sha256={digest},{len(data)}")
+    record = site / f"yaseer-{__version__}.dist-info" / "RECORD"
+    record.parent.mkdir()
+    record.write_text("\n".join(["yaseer/__init__.py,sha256=x,1", *rows, f"{record.relative_to(site).as_posix()},,"]) + "\n")
+    newest = max(p.stat().st_mtime_ns for p in sources.rglob("*") if p.is_file())
+    os.utime(record, ns=(newest + 10**9, newest + 10**9))  # written after the files, as pip writes it
+    monkeypatch.setattr(program_cache, "_SOURCES", str(sources))
+    monkeypatch.setattr(program_cache, "_fingerprint", None)
+    return sources, record
+
+
+def test_an_installed_copy_takes_the_hashes_pip_recorded_instead_of_reading_the_text(cache, monkeypatch, tmp_path):
+    """The first start after a regular install keys the cache on the SHA-256 hashes pip listed for the
+    sources in RECORD (no source text read); a reinstall listing other hashes gives another key."""
+    program = {10: "PRINT 1"}
+    sources, record = installed_sources(tmp_path, monkeypatch)
+
+    def hashing(names):
+        raise AssertionError("the sources' text was read")
+
+    monkeypatch.setattr(program_cache, "_text_fingerprint", hashing)
+    installed = program_cache.key(0, program)
+    listed = record.read_text()
+    compiler_row = next(row for row in listed.splitlines() if row.startswith("yaseer/basic/compile/compiler.py,"))
+    name, hashed, size = compiler_row.split(",")
+    written = record.stat().st_mtime_ns
+    record.write_text(listed.replace(compiler_row, f"{name},sha256=other{hashed[len('sha256=') + 5:]},{size}"))
+    os.utime(record, ns=(written, written))
+    monkeypatch.setattr(program_cache, "_fingerprint", None)
+    for remembered in cache.glob("toolchain-*.key"):  # the same sizes and times: make it look again
+        remembered.unlink()
+    assert program_cache.key(0, program) not in (installed, None)
+
+
+@pytest.mark.parametrize("change", ["edited after", "size", "unlisted", "no record"])
+def test_an_installed_copy_whose_record_cannot_stand_for_its_text_is_hashed(cache, monkeypatch, tmp_path, change):
+    """A source modified after RECORD was written, listed with another size or not listed, or no
+    RECORD at all (an editable install, a checkout): the text is read and hashed, as before."""
+    program = {10: "PRINT 1"}
+    sources, record = installed_sources(tmp_path, monkeypatch)
+    grammar = sources / "source" / "grammar.lark"
+    listed = record.read_text()
+    row = next(row for row in listed.splitlines() if row.startswith("yaseer/basic/source/grammar.lark,"))
+    written = record.stat().st_mtime_ns
+    if change == "edited after":
+        os.utime(grammar, ns=(written + 1, written + 1))
+    elif change == "size":
+        record.write_text(listed.replace(row, row.rsplit(",", 1)[0] + ",1"))
+    elif change == "unlisted":
+        record.write_text(listed.replace(row + "\n", ""))
+    else:
+        record.unlink()
+    if record.exists():
+        os.utime(record, ns=(written, written))
+    hashed = []
+    text_fingerprint = program_cache._text_fingerprint
+    monkeypatch.setattr(program_cache, "_text_fingerprint", lambda names: hashed.append(names) or text_fingerprint(names))
+    assert program_cache.key(0, program) is not None and len(hashed) == 1
+    assert "source/grammar.lark" in hashed[0]

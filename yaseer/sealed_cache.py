@@ -201,6 +201,35 @@ def text_fingerprint(directory: str, names, digest) -> bytes:
     return digest.digest()
 
 
+def installed_fingerprint(record: str, prefix: str, sources: list, digest) -> bytes | None:
+    """``digest`` (a BLAKE2 hash begun with what else the key depends on) updated with the name and
+    the hash of each of ``sources`` ((name, os.stat_result) pairs) as ``pip`` listed them in the
+    installed distribution's ``RECORD`` file ``record`` (each path there is ``prefix`` + name, with
+    the file's SHA-256 and size): its digest, or None when the list cannot stand for their text:
+    no such file, a source it does not list or lists with another size, or a source modified
+    after the list was written (pip writes it last).  Reading it costs a first run after an
+    install a fraction of hashing the sources' text (1.4 MB: about 25M instructions) and gives
+    a hash as sure (a reinstall of other text lists other hashes)."""
+    try:
+        with open(record, "rb") as listing:
+            written = os.fstat(listing.fileno()).st_mtime_ns
+            text = listing.read().decode("utf-8", "surrogateescape")
+    except OSError:
+        return None
+    listed = {}
+    for line in text.splitlines():
+        path, _, rest = line.partition(",")
+        if path.startswith(prefix):
+            listed[path[len(prefix):]] = rest
+    for name, status in sources:
+        hash_and_size = listed.get(name, "")
+        hashed, _, size = hash_and_size.partition(",")
+        if not hashed.startswith("sha256=") or size != str(status.st_size) or status.st_mtime_ns > written:
+            return None
+        digest.update(f"{name}\0{hashed}\0".encode("utf-8", "surrogateescape"))
+    return digest.digest()
+
+
 def source_fingerprint(sources: list, start, hash_text) -> bytes:
     """The hash of the text of ``sources`` ((name, os.stat_result) pairs, as :func:`source_files`
     gives), as ``hash_text(names)`` computes it, remembered in the cache for their names, sizes and

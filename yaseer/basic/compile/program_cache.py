@@ -8,7 +8,10 @@ that turns text into compiled code (every ``.py`` and ``.lark`` of ``yaseer/basi
 so editing the grammar or the compiler invalidates every entry.  That text's hash is
 remembered in the cache for the files' sizes and modification times
 (:func:`yaseer.sealed_cache.source_fingerprint`): a start only asks the sources' sizes and
-times (about 0.05 ms) and reads one file.  Nothing is written inside the installed package.
+times (about 0.05 ms) and reads one file.  In a regular install the first start after it takes
+the files' SHA-256 hashes from pip's ``RECORD`` instead of reading their text, while no file
+is newer than that list (:func:`yaseer.sealed_cache.installed_fingerprint`).  Nothing is
+written inside the installed package.
 
 Value: the :class:`~yaseer.basic.compile.compiled.CompiledArea` fields and the code object
 of each generated function, stored with :mod:`marshal` in a sealed entry
@@ -54,9 +57,18 @@ def toolchain_fingerprint() -> bytes:
     (remembered in the cache for the files' sizes and modification times)."""
     global _fingerprint
     if _fingerprint is None:
-        _fingerprint = sealed_cache.source_fingerprint(_source_files(), _toolchain_digest,
-                                                       lambda names: _text_fingerprint(names))
+        sources = _source_files()
+        _fingerprint = sealed_cache.source_fingerprint(
+            sources, _toolchain_digest, lambda names: _installed_fingerprint(sources) or _text_fingerprint(names))
     return _fingerprint
+
+
+def _installed_fingerprint(sources) -> bytes | None:
+    """The hash of the sources' hashes as pip's RECORD lists them, where yaseer is installed
+    (not an editable install or a checkout: then None, and the text is hashed)."""
+    site = os.path.dirname(os.path.dirname(_SOURCES))
+    record = os.path.join(site, f"yaseer-{__version__}.dist-info", "RECORD")
+    return sealed_cache.installed_fingerprint(record, "yaseer/basic/", sources, _toolchain_digest())
 
 
 def _toolchain_digest():
