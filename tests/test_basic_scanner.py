@@ -232,3 +232,38 @@ def test_a_typed_numbers_parts_are_the_groups_of_the_expression(text):
 
     match = re.fullmatch(r"(\d+\.?\d*|\.\d+)(?:([ED])([+-]?\d*)|([%!#]?))", text)
     assert _typed_number_parts(text) == (match and match.groups())
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.text(alphabet="0123456789.E+-D !#%&A\u0663\u00b2", min_size=1, max_size=12), st.integers(0, 11))
+def test_a_number_read_without_the_pattern_is_what_the_pattern_reads(text, start):
+    """The casio scanner reads digits alone by hand (a cold start then imports no re): whatever
+    the text, its value and end, or its error, are the pattern's (\\d as re reads it: any
+    Unicode decimal digit)."""
+    import re
+
+    from yaseer.basic.source import scanner
+
+    start = min(start, len(text) - 1)
+
+    def by_pattern():
+        match = re.compile(r"(\d+\.?\d*|\.\d+)(E[+-]?\d+)?").match(text, start)
+        if match is None:
+            return "Syntax error"
+        value = float(match.group(0))
+        return "Overflow" if value == float("inf") else (value, match.end())
+
+    try:
+        read = scanner._scan_number(text, start)
+    except BasicError as error:
+        read = str(error)
+    assert read == by_pattern()
+
+
+def test_a_long_run_of_digits_is_overflow_read_either_way():
+    from yaseer.basic.source import scanner
+
+    for text in ("9" * 400, "9" * 400 + ".5"):
+        with pytest.raises(BasicError, match="Overflow"):
+            scanner._scan_number(text, 0)
+    assert scanner._scan_number("12 ", 0) == (12.0, 2) and scanner._scan_number("X12E1", 1) == (120.0, 5)

@@ -388,3 +388,25 @@ def test_a_node_keeps_its_fields_defaults_and_slots():
         ast.Num(1.0).other = 2
     with pytest.raises(TypeError):
         ast.Num()
+
+
+NEVER_COLD = ("lark", "numpy", "re", "enum", "pathlib", "decimal", "csv", "hashlib", "random", "dataclasses",
+              "inspect", "typing", "argparse")
+"""Imported by no cold ``yaseer run`` of a casio listing of plain statements and whole numbers (the
+first run of a new listing parses and compiles it): the scanner reads digits without a regular
+expression (re imports enum), the compiler and the parser compile theirs where a line needs one."""
+
+
+@pytest.mark.parametrize("text", ["10 PRINT 1\n", "10 A=12: B=A*3\n20 IF B>30 THEN PRINT B ELSE PRINT -B\n30 END\n"])
+def test_a_cold_run_imports_no_regular_expressions(tmp_path, text):
+    listing = tmp_path / "plain.bas"
+    listing.write_text(text)
+    env = dict(os.environ, YASEER_CACHE_DIR=str(tmp_path / "cache"))
+    probe = (f"import sys; sys.path.insert(0, {PACKAGE_PARENT!r})\n"
+             "from yaseer.cli import main\n"
+             "status = main(['run', sys.argv[1]])\n"
+             f"print(sorted(m for m in {NEVER_COLD!r} if m in sys.modules), status)")
+    done = subprocess.run([sys.executable, "-S", "-c", probe, str(listing)], capture_output=True, text=True,
+                          env=env, check=True)
+    assert done.stdout.splitlines()[-1] == "[] 0", done.stderr
+    assert list((tmp_path / "cache").glob("*.bin"))  # a cold run: compiled and kept

@@ -316,6 +316,14 @@ def _scan_hex(upper: str, i: int) -> tuple[float, int]:
 
 
 def _scan_number(upper: str, i: int) -> tuple[float, int]:
+    end, n = i, len(upper)
+    while end < n and upper[end].isdecimal():  # what the pattern's \d takes
+        end += 1
+    if end > i and (end == n or upper[end] not in ".E"):  # digits alone, as the pattern reads them:
+        value = float(upper[i:end])  # a cold start's scan then needs no regular expression (re, enum)
+        if value == float("inf"):
+            raise BasicError("Overflow", OVERFLOW)
+        return value, end
     match = _NUMBER.match(upper, i)
     if match is None:
         raise _syntax_error()
