@@ -52,10 +52,15 @@ class Node:
 _DEFAULTS: dict[str, dict] = {}
 
 
-def _node(name: str, bases: tuple, namespace: dict) -> type:
+def _node(name, bases: tuple = (), namespace: dict | None = None) -> type:
     """The metaclass of every node class (``class Num(metaclass=_node)``): the annotated names
     become the node's fields, in order, and the class is made once, a :class:`Node` with those
-    slots (a class decorator would make each class twice: ~85 classes, a cold start's time)."""
+    slots.  (Still taken as a class decorator, ``@_node``, which makes each class twice: ~85
+    classes, a cold start's time; tests/test_startup_imports.py refuses it.)"""
+    if namespace is None:  # @_node class X: ... (the class made once already)
+        made = name
+        name = made.__name__
+        namespace = {k: v for k, v in made.__dict__.items() if k not in ("__dict__", "__weakref__")}
     fields = tuple(namespace.get("__annotations__", {}))
     defaults = {field: namespace.pop(field) for field in fields if field in namespace}
     _DEFAULTS[name] = {k: ([] if v is _LIST else v) for k, v in defaults.items()}
