@@ -411,3 +411,21 @@ def test_a_cold_run_imports_no_regular_expressions(tmp_path, text):
                           env=env, check=True)
     assert done.stdout.splitlines()[-1] == "[] 0", done.stderr
     assert list((tmp_path / "cache").glob("*.bin"))  # a cold run: compiled and kept
+
+
+def test_a_cold_run_whose_compile_fails_switches_the_collector_back_on(tmp_path):
+    listing = tmp_path / "print.bas"
+    listing.write_text("10 PRINT 1\n")
+    probe = (f"import gc, sys; sys.path.insert(0, {PACKAGE_PARENT!r})\n"
+             "import yaseer.entry\n"
+             "import yaseer.basic.compile.compiler as compiler\n"
+             "from yaseer.basic.errors import BasicError\n"
+             "from yaseer.cli import main\n"
+             "def failing(*args, **kwargs):\n"
+             "    raise BasicError('Out of memory', 7)\n"
+             "compiler.compile_area = failing\n"
+             "status = main()\n"
+             "print(gc.isenabled(), status)\n")
+    env = dict(os.environ, YASEER_CACHE_DIR=str(tmp_path / "cache"))
+    done = subprocess.run([sys.executable, "-c", probe, "run", str(listing)], capture_output=True, text=True, env=env)
+    assert done.stdout.splitlines()[-1] == "True 1" and "Out of memory" in done.stderr and "Traceback" not in done.stderr

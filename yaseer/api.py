@@ -302,9 +302,11 @@ def execute(result: Result, areas: dict, methods: dict, input_stream, angle: str
         for number, text in areas.items():
             machine.set_area(number, text)
         machine.type_line(typed)
-        if collection_pause.paused():  # a `yaseer run` process: compiled with the collector still off
-            machine.compile_areas()
-        collection_pause.resume()  # a `yaseer run` process: the start is over (a no-op in any other caller)
+        try:
+            if collection_pause.paused():  # a `yaseer run` process: compiled with the collector still off
+                machine.compile_areas()
+        finally:  # (on a compile's error too)
+            collection_pause.resume()  # a `yaseer run` process: the start is over (a no-op in any other caller)
         result.status = machine.run()
         if result.status == "stop":
             result.line = machine.line
