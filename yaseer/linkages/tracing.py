@@ -207,6 +207,8 @@ _TYPED = (  # what a recorded expression computes, whatever the values: its type
      r"|(t\d+)\.(?:real|imag)",
      lambda kinds: _FLOAT if all(kind in (_FLOAT, _COMPLEX) for kind in kinds) else None),
     (r"(?:complex|_rect|_exp)\(.*|\(_quadrant\(.*", lambda kinds: _COMPLEX),
+    # a power with a whole exponent: a float's is a float, a complex number's a complex number
+    (r"(t\d+) \*\* \d+", lambda kinds: kinds[0] if kinds[0] in (_FLOAT, _COMPLEX) else None),
     (r"({0}) [-+*/%] ({0})|-({0})|\(({0}) if .* else ({0})\)".format(r"t\d+|_k\d+|-?[\d.]+(?:e[-+]?\d+)?j?|\([-\d.+e]+j\)"),
      lambda kinds: (None if None in kinds or not kinds else _COMPLEX if _COMPLEX in kinds else _FLOAT)),
 )
@@ -478,8 +480,8 @@ def _binary(symbol: str, operation):
                 return self
             if symbol == "*" and type(other) is float and other == -1.0 and type(self.value) is float:
                 return -self  # x * -1.0 is -x for a float (not for a complex: its zero parts' signs)
-            if symbol == "**" and type(other) in (int, float) and other == 2:
-                return self.recorder.emit(value, f"{self.name} * {self.name}")
+            # x ** 2 stays a power: libm's pow, which the plain code calls, is not always the
+            # correctly rounded x * x (0x1.f450b0d1e5574p-2 squared: pow gives ...296cp-3, the product ...296bp-3)
             operand = self.recorder.operand(other)
             source = None
             if symbol in _COMPARISONS and self.leaf and (type(other) in (int, float) or getattr(other, "leaf", False)):
