@@ -18,6 +18,7 @@ from yaseer.basic.machine.machine import Machine
 
 sys.path.insert(0, str(Path(__file__).resolve().parent / "benchmarks"))
 from percall import INPUTS, closed_form_fourbar, machine_for, mix_listing  # noqa: E402
+from test_binding_recorded import recorded_and_plain  # noqa: E402  (recordings fresh, then the plain code)
 
 # Program 2's outputs (contract): angles and rates, the three points, the solved load, the reactions
 OUTPUTS = ([("T", 13), ("W", 6), ("A", 6), ("T", 14), ("W", 7), ("A", 7)]
@@ -122,24 +123,15 @@ def arrays_bits(machine: Machine) -> dict:
 @pytest.mark.parametrize("mix", ["one path", "Q(2) cycling 1..4", "32 input patterns"])
 def test_the_benchmark_mixes_give_the_plain_codes_bits(mix):
     # the listings the benchmark times, every array and scalar after the run, against the plain code
-    outcomes = []
-    for recorded in (True, False):
-        binding._recordings.clear()
-        binding._calls.clear()
-        saved = binding.MAX_RECORDINGS
-        binding.MAX_RECORDINGS = saved if recorded else 0
-        try:
-            machine = machine_for(2)
-            machine.load(mix_listing(mix, 70, True))
-            machine.run()
-        finally:
-            binding.MAX_RECORDINGS = saved
-        if recorded:
-            assert len(binding._recordings[(2, None)]) >= 1  # recorded paths ran
-        outcomes.append((arrays_bits(machine), {name: float(value).hex() for name, value in machine.scalars.items()
-                                                if not isinstance(value, str)}))
-    assert bool(binding._recordings.get((2, None))) is False  # the second run was the plain code
-    assert outcomes[0] == outcomes[1]
+    def scenario():
+        machine = machine_for(2)
+        machine.load(mix_listing(mix, 70, True))
+        machine.run()
+        return arrays_bits(machine), {name: float(value).hex() for name, value in machine.scalars.items()
+                                      if not isinstance(value, str)}
+
+    recorded, plain = recorded_and_plain(scenario)
+    assert recorded == plain
 
 
 @pytest.mark.parametrize("base", [float.fromhex("0x1.f450b0d1e5574p-2"), complex(float.fromhex("0x1.f450b0d1e5574p-2"), -0.0),
