@@ -138,3 +138,10 @@ def test_put_checks_the_view_before_the_array():
     # PC-BASIC 2.0.8: an array GET never filled still puts its corners in the view
     assert errors("10 SCREEN 1: DIM G%(10)\n20 PUT (400, 10), G%\n30 PUT (10, 10), G%\n40 GET (0,0)-(9,9), G%\n"
                   "50 DIM H%(1): GET (0,0)-(9,9), H%\n60 GET (0,0)-(400,9), G%") == [(5, 20), (5, 40), (5, 50), (5, 60)]
+
+
+def test_cga_bank_padding_is_no_text():
+    # the recorded BSAVBLOK test: in SCREEN 1 the bytes after each bank's 100 rows read 0,
+    # not the text screen's cells (PC-BASIC 2.0.8 agrees)
+    out = run('10 SCREEN 1: PRINT "AB": DEF SEG = &HB800\n20 PRINT PEEK(&H1F40); PEEK(&H1F41); PEEK(&H3F40)\n')
+    assert out == "AB\n 0  0  0 \n"

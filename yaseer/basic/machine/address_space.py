@@ -176,21 +176,23 @@ class AddressSpace:
 
     # ------------------------------------------------------------ bytes by address
     def _graphics(self, address: int):
-        """(the Canvas, where) for an address in a graphics mode's memory, else None."""
+        """(video_memory, the Canvas, where) for an address in a graphics mode's memory (where
+        None for a byte no pixel shows), else None."""
         canvas = self.canvas() if self.canvas is not None else None
         if canvas is None:
             return None
         from yaseer.basic.machine import video_memory  # (only programs that draw)
 
-        where = video_memory.locate(canvas, address)
-        return None if where is None else (video_memory, canvas, where)
+        if not video_memory.covers(canvas, address):
+            return None
+        return video_memory, canvas, video_memory.locate(canvas, address)
 
     def read(self, address: int) -> int:
         """The byte at 20-bit ``address``."""
         graphics = self._graphics(address)
         if graphics is not None:
             memory, canvas, where = graphics
-            return memory.read(canvas, where)
+            return self.ram.get(address, 0) if where is None else memory.read(canvas, where)
         video = self._video_cell(address)
         if video is not None:
             return self._read_video(address, video)
@@ -215,7 +217,10 @@ class AddressSpace:
         graphics = self._graphics(address)
         if graphics is not None:
             memory, canvas, where = graphics
-            memory.write(canvas, where, byte)
+            if where is None:  # a bank's bytes past its rows: memory no pixel shows
+                self.ram[address] = byte
+            else:
+                memory.write(canvas, where, byte)
             return
         video = self._video_cell(address)
         buffer = None if video is not None else self._field_byte(address)

@@ -27,6 +27,14 @@ def _ega_page(canvas) -> int:
     return 0x4000 if canvas.height == 200 else 0x8000
 
 
+def covers(canvas, address: int) -> bool:
+    """Whether 20-bit ``address`` is in the mode's memory (its pixels' bytes and the unused
+    bytes after each CGA bank's rows, which hold what was written there)."""
+    if canvas.bits == 4:
+        return 0 <= address - EGA_BASE < _ega_page(canvas) * len(canvas.pages)
+    return 0 <= address - CGA_BASE < 2 * CGA_BANK
+
+
 def locate(canvas, address: int):
     """(page, first pixel's x, y, pixels in the byte) for 20-bit ``address`` in the mode's
     memory; None outside it (or in a bank's bytes past its rows)."""
