@@ -566,3 +566,11 @@ def test_renum_reads_a_missing_increment_as_zero(tmp_path):
     source = '10 RENUM 100,,\n20 PRINT "no"\n'
     assert yaseer_run(source, tmp_path) == pcbasic_run(source, tmp_path) == "Illegal function call in 10\n"
 
+
+
+@pytest.mark.parametrize("text", ["A%(1, 0) = 4", "READ A%(1, 0)", 'B$(2, 1) = "X"', "A%(1, 0, 2) = 1"])
+def test_an_element_of_more_subscripts_than_its_array_is_out_of_range(tmp_path, text):
+    """The recorded PALETUSI test: READ A%(I, 0) into a one-dimensional A% is Subscript out
+    of range (9), as reading such an element is (PC-BASIC 2.0.8 agrees)."""
+    source = f"10 DIM A%(16), B$(5): A%(1) = 3\n20 {text}\n30 DATA 5\n"
+    assert yaseer_run(source, tmp_path) == "Subscript out of range in 20\n"

@@ -75,7 +75,9 @@ def to_basic_error(exc: BaseException) -> BasicError:
         return BasicError("Illegal function call", ILLEGAL_FUNCTION_CALL)
     if isinstance(exc, IndexError):
         return BasicError("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
-    if isinstance(exc, TypeError) and "subscript" in str(exc):
+    # (an element of more subscripts than its array has: read, "not subscriptable"; assigned,
+    # "does not support item assignment")
+    if isinstance(exc, TypeError) and ("subscript" in str(exc) or "item assignment" in str(exc)):
         return BasicError("Subscript out of range", SUBSCRIPT_OUT_OF_RANGE)
     return BasicError(f"Internal error ({type(exc).__name__}: {exc})", INTERNAL_ERROR)
 
