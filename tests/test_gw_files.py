@@ -25,12 +25,13 @@ CASES = Path(__file__).parent / "gw"
 PROGRAMS = ["files.bas", "files_write.bas", "files_input.bas", "files_columns.bas"]
 
 
-def pcbasic_run(source: str, directory: Path) -> str:
+def pcbasic_run(source: str, directory: Path, **options) -> str:
     import pcbasic
 
-    # (peek_values: PC-BASIC's table of preset PEEK bytes, none; without one its PEEK fails)
+    # (peek_values: PC-BASIC's table of preset PEEK bytes, none; without one its PEEK fails;
+    # ``options``: more of the Session's, video="vga" for the graphics modes of its recordings)
     session = pcbasic.Session(output_streams=None, input_streams=None,
-                              devices={"C:": str(directory)}, current_device="C:", peek_values={})
+                              devices={"C:": str(directory)}, current_device="C:", peek_values={}, **options)
     session.start()
     session.execute("NEW")
     out = clean_output(session.execute(source.rstrip("\n") + "\nRUN"))

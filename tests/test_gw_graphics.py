@@ -24,16 +24,10 @@ def run(source: str, directory: Path | None = None) -> str:
 
 
 def pcbasic_vga(source: str, directory: Path) -> str:
-    pcbasic = pytest.importorskip("pcbasic")
-    from test_gw_files import clean_output
+    pytest.importorskip("pcbasic")
+    from test_gw_files import pcbasic_run
 
-    session = pcbasic.Session(output_streams=None, input_streams=None, video="vga",
-                              devices={"C:": str(directory)}, current_device="C:", peek_values={})
-    session.start()
-    session.execute("NEW")
-    out = clean_output(session.execute(source.rstrip("\n") + "\nRUN"))
-    session.close()
-    return out
+    return pcbasic_run(source, directory, video="vga")
 
 
 @pytest.mark.parametrize("name", PROGRAMS)
