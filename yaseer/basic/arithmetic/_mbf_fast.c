@@ -9,7 +9,7 @@
    - $FMULS (product): single_arith.product transcribed (the same double operations:
      Veltkamp's split, then the 28-bit truncation rounded half to even, 1001 a half);
    - $FADDS (add): single_arith.working_sum and _rounded on the 32-bit register
-     (mantissa and guard byte), the reference the Python fast paths reproduce;
+     (mantissa and guard byte, its sticky bit), the Python fast paths' long way;
    - $FDIVS (divide): the nearest single (single_arith.nearest);
    - $POLY: Horner's rule of those steps (gw_transcendental.poly_steps);
    - the angle reduction of $SIN/$COS in 56-bit MBF double precision on integers
@@ -161,35 +161,30 @@ static double product(double p)
     return p < 0 ? -r : r;
 }
 
-/* single_arith._rounded: a working number (mantissa * 2**(exponent - 160)) normalised
-   (not 0x7FFFFFFF, as GW's loop leaves it) and rounded half to even on the guard byte */
-static double rounded(int exponent, uint64_t mantissa, int negative)
+/* single_arith._rounded: $ROUNS of a normalised working number (exponent byte, 32-bit
+   register): the guard byte's top three bits round the 24 half to even (its low five are
+   dropped); 0 below the range, an infinity beyond it */
+static double rounded(int exponent, uint64_t register_, int negative)
 {
-    if (mantissa == 0 || exponent <= 0)
+    if (register_ == 0 || exponent <= 0)
         return 0.0;
-    if (mantissa < 0x7FFFFFFFu) {
-        int shift = 32 - bit_length(mantissa);
-        mantissa <<= shift;
-        exponent -= shift;
-    }
-    uint64_t low = mantissa & 0xFF;
-    mantissa >>= 8;
-    if (low > 0x80 || (low == 0x80 && (mantissa & 1))) {
+    uint64_t mantissa = register_ >> 8, guard = register_ & 0xE0;
+    if (guard > 0x80 || (guard == 0x80 && (mantissa & 1))) {
         mantissa += 1;
         if (mantissa == 0x1000000) {
             mantissa = 0x800000;
             exponent += 1;
         }
     }
-    if (exponent <= 0)
-        return 0.0;
     if (exponent > 255)
         return negative ? -INFINITY : INFINITY;
     double value = (double)mantissa * pow2(exponent - 152);
     return negative ? -value : value;
 }
 
-/* single_arith.add: $FADDS, by the working registers (single_arith.working_sum) */
+/* single_arith.add: $FADDS by its register steps (single_arith.working_sum): the smaller
+   operand shifted right into the 32-bit register a byte, then a bit, at a time with the
+   sticky bit 0x20; added, or subtracted and normalised as $NORMS does */
 static double add(double a, double b)
 {
     if (a == 0.0)
@@ -203,44 +198,54 @@ static double add(double a, double b)
         small = b;
         large = a;
     }
-    /* single_arith.working_parts: the 32-bit working mantissas (a single's 24 bits) */
-    int small_exponent = exponent_of(small), exponent = exponent_of(large);
-    uint64_t small_mantissa = mantissa_of(small) >> 21;
+    /* single_arith.working_parts: exponent bytes and 32-bit working mantissas */
+    int exponent = exponent_of(large) + 128;
+    int shift = exponent - (exponent_of(small) + 128);
     uint64_t mantissa = mantissa_of(large) >> 21;
-    int small_negative = small < 0, negative = large < 0;
-    int shift = exponent - small_exponent;
-    int nothing_lost;
-    if (shift >= 64) {
-        nothing_lost = small_mantissa == 0;
-        small_mantissa = 0;
-    } else {
-        nothing_lost = (small_mantissa & ((UINT64_C(1) << shift) - 1)) == 0;
-        small_mantissa >>= shift;
+    int negative = large < 0;
+    if (shift >= 25)
+        return rounded(exponent, mantissa, negative);
+    uint64_t r = mantissa_of(small) >> 21;
+    if (shift >= 8) {
+        int cut = shift & 0x18;
+        r = (r >> cut) | ((r & ((UINT64_C(1) << (cut + 5)) - 1)) ? 0x20 : 0);
+        shift &= 7;
     }
-    exponent += 128;
-    if (small_negative != negative) {
-        if (small_mantissa < 0x80 || (small_mantissa == 0x80 && nothing_lost))
-            return rounded(exponent, mantissa, negative);
-        mantissa -= small_mantissa;
-        if ((mantissa & 0x1C0) == 0x80 && (mantissa & 0x1DF) != 0x80)
-            mantissa &= ~(uint64_t)0x80;  /* GW's subtraction rounds this guard byte down */
-        double difference = rounded(exponent, mantissa, negative);
-        /* A difference below the range is 0 with the larger operand's sign, as the Python
-           function's float steps give it (single_arith.register_difference), except where
-           those hand it to the working registers (the smaller cut to half a unit). */
-        if (difference == 0.0 && negative && !(small_mantissa == 0x80 && !nothing_lost))
-            return -0.0;
-        return difference;
-    } else {
-        mantissa += small_mantissa;
-        if (mantissa >= (UINT64_C(1) << 32)) {
+    for (; shift; shift--) {
+        r >>= 1;
+        if (r & 0x10)
+            r |= 0x20;
+    }
+    if ((small < 0) == negative) {
+        r += mantissa;
+        if (r >= (UINT64_C(1) << 32)) {
+            r >>= 1;
             exponent += 1;
-            mantissa >>= 1;
         }
-        if (!nothing_lost)
-            mantissa |= 1;
+        return rounded(exponent, r, negative);
     }
-    return rounded(exponent, mantissa, negative);
+    if (r >= mantissa) {
+        if (r == mantissa)
+            return 0.0;
+        r -= mantissa;  /* (equal exponents: the smaller mantissa was the larger) */
+        negative = !negative;
+    } else {
+        r = mantissa - r;
+    }
+    while (r < 0x1000000) {
+        if (exponent <= 8)
+            return 0.0;
+        r <<= 8;
+        exponent -= 8;
+    }
+    if (r < (UINT64_C(1) << 31)) {
+        int s = 32 - bit_length(r);
+        if (exponent <= s)
+            return 0.0;
+        r <<= s;
+        exponent -= s;
+    }
+    return rounded(exponent, r, negative);
 }
 
 static double subtract(double a, double b)

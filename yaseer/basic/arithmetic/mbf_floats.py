@@ -12,21 +12,16 @@ roundings).  Here each step is a few exact float64 operations and a cheap roundi
   usual case: each coefficient is larger than the product added to it), with the
   coefficient's constants computed once (:func:`plan`): its unit ``u`` and "magic"
   numbers ``1.5 * 2**52 * q`` whose sum with a value rounds it half to even to a
-  multiple of ``q``.  Of one sign: the exact sum rounded at ``u`` (no carry: the
-  guard byte and the sticky bit round as the exact sum does), or at ``2u`` after a
-  carry, outside the 1/512 band where the carry's lost bit makes GW round otherwise
-  (an exact tie lost no bit).  Of two signs: single_arith.register_difference's
-  steps written out (no call) where the difference keeps the coefficient's binade: the
-  product cut toward 0 at the register's last place u/256 (``small - small % last``,
-  both exact), the exact difference rounded half to even at u, and GW's rounding down
-  of a guard byte ``10?xxxxx`` over an even mantissa; a difference that leaves the
-  binade (a normalising shift) is register_difference's.
+  multiple of ``q``.  The exact sum rounded so is GW's result where single_arith.add's
+  fast paths show it is: of one sign, without a carry (rounded at ``u``), or after one
+  (at ``2u``) unless it rounds up by more than 3/8 of ``2u``; of two signs, a difference
+  that keeps the coefficient's binade unless it rounds up by more than ``u/4``.
 * A product larger than the coefficient (the usual case in LOG's polynomials) takes the
-  same steps in the product's register: its leading power of two found by the ufp of
+  same steps in the product's binade: its leading power of two found by the ufp of
   Rump, Ogita and Oishi, the magic numbers of its unit and twice it.
 * Every other case (a product as large as the coefficient or 2**29 times larger, a sum
-  that carries into the half-way band) is single_arith.add itself: the results are the
-  same by construction.
+  near those bounds, a difference that leaves the binade) is single_arith.add itself: the
+  results are the same by construction.
 
 The caller keeps the argument where no step can leave MBF's range (``x`` at least
 :data:`LEAST_ARGUMENT`, at most 1, coefficients below 100 in size).
@@ -36,7 +31,7 @@ from __future__ import annotations
 
 from math import frexp, ldexp
 
-from yaseer.basic.arithmetic.single_arith import add, product, product_near_half, register_difference
+from yaseer.basic.arithmetic.single_arith import add, product, product_near_half
 
 LEAST_ARGUMENT = 2.0 ** -60  # below it the caller takes the integer steps (products leave the range)
 _SPLIT = 536870913.0  # 2**29 + 1: Veltkamp's split to 24 bits (the nearest single)
@@ -49,19 +44,19 @@ _PRODUCT_LOW, _PRODUCT_HIGH = -0.375 * 2.0 ** -23, 0.5 * 2.0 ** -23
 # times a leading power of two T: the magic numbers of its unit u = T * 2**-23 and of 2u, and the carry's band
 _HALF_MAGIC = _MAGIC * 2.0 ** -23
 _MAGIC_2U = _MAGIC * 2.0 ** -22
-_BAND_2U = 0.498046875 * 2.0 ** -22
+_CARRIED = 0.75 * 2.0 ** -23  # a sum after a carry rounded up by more than 3/8 of 2u: single_arith.add
+_QUARTER = 0.25 * 2.0 ** -23  # a difference rounded up by more than u/4: single_arith.add
 
 
 def _coefficient_plan(c: float) -> tuple:
     """The constants of one ``$FADDS`` with the coefficient ``c`` (nonzero), see the module
     docstring: (c, |c|, c < 0, c > 0, its leading power of two U, 2U, 4U, its unit u, the
-    magic numbers of u and 2u, the carry's band 0.498046875 * 2u, and for a difference
-    the register's last place w = u/256, half a unit, a quarter and 3/8 of it)."""
+    magic numbers of u and 2u, and the bounds 3/4 u and 1/4 u of a rounding up)."""
     size = abs(c)
     top = ldexp(1.0, frexp(size)[1] - 1)
     unit = top * 2.0 ** -23
     return (c, size, c < 0, c > 0, top, 2.0 * top, 4.0 * top, unit, _MAGIC * unit, _MAGIC * 2.0 * unit,
-            0.498046875 * 2.0 * unit, unit / 256.0, unit / 2.0, unit / 4.0, unit * 0.375)
+            0.75 * unit, 0.25 * unit)
 
 
 def plan(coefficients) -> tuple:
@@ -88,8 +83,7 @@ def poly(x: float, planned: tuple, odd: bool = False) -> float | None:
     outer = x
     if odd:
         x = fmuls(x * x)
-    for (c, large, negative, positive, top, top2, top4, unit, magic_unit, magic_2unit, band, last, half, quarter,
-         three_eighths) in steps:
+    for c, large, negative, positive, top, top2, top4, unit, magic_unit, magic_2unit, carried, quarter in steps:
         p = total * x
         # $FMULS (fmuls, written out)
         split = p * _SPLIT
@@ -104,7 +98,7 @@ def poly(x: float, planned: tuple, odd: bool = False) -> float | None:
         else:
             small = cut
             same = positive
-        if small >= large:  # the product is the larger (or as large): its register, the same steps
+        if small >= large:  # the product is the larger (or as large): its binade, the same tests
             if small == large or large * 536870912.0 < small:  # (equal: 0 or exact; far apart: add's own)
                 total = add(cut, c)
                 if not total:
@@ -120,14 +114,14 @@ def poly(x: float, planned: tuple, odd: bool = False) -> float | None:
                 else:
                     magic = ptop * _MAGIC_2U
                     r = (s + magic) - magic
-                    if s >= 4.0 * ptop or not (-_BAND_2U * ptop < s - r < _BAND_2U * ptop
-                                                or s - r == ptop * 1.1920928955078125e-07
-                                                or r - s == ptop * 1.1920928955078125e-07):
+                    if s >= 4.0 * ptop or r - s > ptop * _CARRIED:
                         total = add(cut, c)
                         continue
             else:
-                r = register_difference(small, large, ptop)
-                if not r:
+                s = small - large
+                magic = ptop * _HALF_MAGIC
+                r = (s + magic) - magic
+                if s < ptop or r - s > ptop * _QUARTER:
                     total = add(cut, c)
                     if not total:
                         return None
@@ -138,23 +132,17 @@ def poly(x: float, planned: tuple, odd: bool = False) -> float | None:
             s = large + small
             if s < top2:  # no carry: the exact sum rounded half to even
                 r = (s + magic_unit) - magic_unit
-            else:  # a carry: the nearest at 2u, unless the lost bit made it half-way for GW
-                r = (s + magic_2unit) - magic_2unit  # (an exact tie lost no bit: half to even)
-                if s >= top4 or not (-band < s - r < band or s - r == unit or r - s == unit):
+            else:  # a carry: the nearest at 2u, unless it rounds up by 3/8 to 1/2 of 2u
+                r = (s + magic_2unit) - magic_2unit
+                if s >= top4 or r - s > carried:
                     total = add(cut, c)
                     continue
-        else:  # a difference: single_arith.register_difference written out where no normalising shift comes
-            kept = small - small % last  # the product cut toward 0 at the register's last place
-            s = large - kept
-            if kept > half and s >= top:
-                r = (s + magic_unit) - magic_unit
-                if quarter < r - s < half and r - s != three_eighths and (r + magic_2unit) - magic_2unit != r:
-                    r -= unit  # GW's subtraction rounds this guard byte (0x81..0xBF but 0xA0) down
-            else:
-                r = register_difference(large, small, top)
-                if not r:  # (None: the long way; 0 cannot be: the coefficient is the larger)
-                    total = add(cut, c)
-                    continue
+        else:  # a difference in the coefficient's binade, not rounded up by more than u/4
+            s = large - small
+            r = (s + magic_unit) - magic_unit
+            if s < top or r - s > quarter:
+                total = add(cut, c)
+                continue
         total = -r if negative else r
     if not odd:
         return total

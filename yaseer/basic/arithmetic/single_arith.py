@@ -88,53 +88,35 @@ def working_parts(x, width: int = 32) -> tuple[int, int]:
     return e + 128, int(ldexp(m, width))
 
 
-def _rounded(exponent: int, mantissa: int, negative: bool) -> float:
-    """A working number normalised and rounded to 24 bits (guard byte half to even).
-
-    Normalising shifts left while the mantissa is below 2**31 - 1 (so 0x7FFFFFFF,
-    which rounds up to 2**31, is left as it is, as in GW-BASIC's loop)."""
-    if mantissa == 0 or exponent <= 0:
-        return 0.0
-    if mantissa < _HALF_TOP - 1:
-        shift = 32 - mantissa.bit_length()
-        mantissa <<= shift
-        exponent -= shift
-    low = mantissa & 0xFF
-    mantissa >>= 8
-    if low > 0x80 or (low == 0x80 and mantissa & 1):
-        mantissa += 1
-        if mantissa == 0x1000000:
-            mantissa = 0x800000
-            exponent += 1
-    if exponent <= 0:
-        return 0.0
-    if exponent > 255:
-        return -inf if negative else inf
-    value = ldexp(mantissa, exponent - 152)
-    return -value if negative else value
-
-
 def add(a, b) -> float:
     """``a + b`` of two singles (or integers), rounded as GW-BASIC's ``$FADDS``.
 
-    Fast paths, where the exponents differ by at most 29 (the sum is exact in a
-    Python float): a sum that needs at most 24 bits is GW's result (no bit was
-    shifted out, so nothing rounds; tested by Veltkamp's split, which gives the
-    sum cut to 24 bits), except a power of two less half its unit (the smaller
-    operand is exactly 0x80 in the guard byte, nothing lost: ``$FADDS`` returns the
-    larger unchanged, as PC-BASIC does: 1 - 2**-24 is 1); otherwise GW's result is the exact sum rounded half to
-    even for a subtraction whose exponents differ by at most 3 (no bit of the
-    smaller operand is shifted out, the guard byte's low 5 bits are 0) and for an
-    addition, unless the carry shifted out a 1 below a guard byte of exactly 0x80
-    (the sum is then 0.5 + 1/512 of a unit above the 24 bits: IEEE rounds up, GW
-    half to even).  The nearest single is the split's cut where the sum is not
-    halfway (:func:`_units_below`).  A subtraction whose difference keeps the larger
-    operand's binade (no normalising shift) is the exact difference rounded to the
-    nearest where that lies from 1/4 of a unit below it to 127/256 above: the register
-    holds the difference plus what the cut of the smaller operand lost (less than
-    1/256 of a unit), so its guard byte is below 0x80 where the nearest is below, and
-    at least 0xC0 where it is above (GW's rounding down of a guard byte ``10?xxxxx``
-    does not come in).  A halfway sum and every other goes the long way."""
+    The long way is :func:`working_sum` and :func:`_rounded`, the routine's register steps
+    on integers.  The fast paths, where the exponents differ by at most 29 (the sum is
+    exact in a Python float), return the nearest single of the exact sum (Veltkamp's
+    split ``cut``) where that is provably ``$FADDS``'s result; ``t`` below is how far the
+    exact sum lies beyond ``cut`` (:func:`_units_below`: positive where ``cut`` is nearer
+    zero), in units of the result's last place ``u``:
+
+    * a sum that needs at most 24 bits (``cut`` is the sum): no bit is rounded away;
+    * two magnitudes of one sign: the guard byte and its sticky bit round as the exact sum
+      does, except after a carry out of the larger operand's binade, whose shift drops the
+      sticky bit: a guard byte that was ``0100...`` with bits below reads as a tie, so GW
+      rounds half to even where the nearest rounds up from ``t`` in (-1/2, -3/8).  Without
+      a carry (the larger operand at least the sum's leading power of two) every ``t`` but
+      a tie is the nearest's; with one, ``-3/8 <= t < 1/2``;
+    * two signs, exponents at most 3 apart: no bit of the smaller operand leaves the
+      register or reaches the sticky bit, so the difference is exact before rounding;
+    * two signs, the difference in the larger operand's binade (no normalising shift): the
+      register holds the smaller operand cut to a multiple of 64 of its 256ths, plus 32
+      (the sticky bit) and up to 31 below it (bits the sticky bit shifted down), where it
+      lost bits; the difference's guard byte, its low 5 bits dropped, then rounds as the
+      exact difference does unless it reads as a tie that the exact one is above, that is
+      ``t`` in (-1/2, -1/4).  So ``-1/4 <= t < 1/2``.
+
+    Everything else (a normalising shift after a difference, which brings the dropped
+    bits into the guard byte; exponents 25 or more apart, where ``$FADDS`` returns the
+    larger operand as it is; the range's ends) goes the long way."""
     if not a:
         return b + 0.0
     if not b:
@@ -147,93 +129,105 @@ def add(a, b) -> float:
     if (total >= _SAFE_LOW or total <= -_SAFE_LOW) and (x * 536870912.0 >= y if x <= y else y * 536870912.0 >= x):
         split = total * 536870913.0
         cut = split - (split - total)
-        if cut == total and (x != y * 16777216.0 and y != x * 16777216.0 or (a > 0) == (b > 0)):
-            if -LIMIT < total < LIMIT:
-                return total
-            return -inf if total < 0 else inf
-        q = total * 4503599627370497.0  # (see _units_below, written out here: the common path)
-        top = q - 0.9999999999999999 * q
-        below = (total - cut) / top * 8388608.0
         if -LIMIT < cut < LIMIT:
+            if cut == total:
+                return total
+            q = total * 4503599627370497.0  # (see _units_below, written out here: the common path)
+            top = q - 0.9999999999999999 * q
+            below = (total - cut) / top * 8388608.0
             if (a > 0) == (b > 0):
-                if -0.498046875 < below < 0.498046875:
+                if -0.375 <= below < 0.5 or -0.5 < below < 0.5 and (x if x > y else y) >= (top if top > 0 else -top):
                     return cut
             elif -0.5 < below < 0.5 and (x * 8.0 >= y if x <= y else y * 8.0 >= x):
                 return cut
-            elif -0.25 <= below < 0.49609375 and (y if x <= y else x) < (top + top if top > 0 else -top - top):
-                return cut  # a difference in the larger operand's binade, not near half a unit: see below
+            elif -0.25 <= below < 0.5 and (x if x > y else y) < (top + top if top > 0 else -top - top):
+                return cut
     small, large = (a, b) if x <= y else (b, a)
-    if (a > 0) != (b > 0) and TINY <= (y if x <= y else x) < LIMIT and x != y:  # a difference: on floats
-        q = (y if x <= y else x) * 4503599627370497.0
-        r = register_difference(y if x <= y else x, x if x <= y else y, q - 0.9999999999999999 * q)
-        if r is not None:
-            return -r if large < 0 else r
     small_exponent, small_mantissa = working_parts(small)
     exponent, mantissa = working_parts(large)
     return _rounded(*working_sum(small_exponent, small_mantissa, small < 0, exponent, mantissa, large < 0))
 
 
-_MAGIC = 1.5 * 2.0 ** 52  # (v + _MAGIC * q) - _MAGIC * q: v rounded half to even to a multiple of q, a power of 2
+def rounded_parts(exponent: int, register: int) -> tuple[int, int]:
+    """``$ROUNS`` on a normalised working number: its 24-bit mantissa and exponent byte after
+    the guard byte's top three bits round it half to even (the low five are dropped)."""
+    mantissa = register >> 8
+    guard = register & 0xE0
+    if guard > 0x80 or (guard == 0x80 and mantissa & 1):
+        mantissa += 1
+        if mantissa == 0x1000000:
+            return 0x800000, exponent + 1
+    return mantissa, exponent
 
 
-def register_difference(large: float, small: float, top: float) -> float | None:
-    """The magnitude of ``$FADDS``'s result for two operands of opposite signs, on floats:
-    ``large`` > ``small`` > 0 their magnitudes (singles, ``large`` in MBF's range), ``top``
-    the leading power of two of ``large``.  :func:`working_sum`'s steps: the smaller cut
-    toward 0 at the 32-bit register's last place ``w`` (a 256th of ``large``'s unit ``u``;
-    the bits shifted out are lost); below half a unit ``large`` itself; else the exact
-    difference, with GW's rounding down of a guard byte ``10?xxxxx`` with low bits over an
-    even mantissa, rounded half to even at its own binade (normalising the register shifts
-    it left and loses nothing).  "Magic" sums round to a multiple of a power of two.  None
-    where the smaller is cut to exactly half a unit after losing bits (the long way)."""
-    unit = top * 1.1920928955078125e-07  # 2**-23
-    w = unit * 0.00390625
-    magic = _MAGIC * w
-    kept = (small + magic) - magic
-    if kept > small:
-        kept -= w
-    half = 128.0 * w
-    if kept <= half:
-        if kept < half or kept == small:
-            return large
-        return None
-    s = large - kept
-    magic = _MAGIC * unit
-    r = (s + magic) - magic
-    if r - s > 64.0 * w:  # rounded up, the guard byte from 0x80 to 0xC0
-        lower = r - unit
-        if r - s < half and r - s != 96.0 * w and (lower + 2.0 * magic) - 2.0 * magic == lower:
-            s -= half  # GW's subtraction rounds this guard byte down
-            r = lower
-    if s < top:  # normalised: rounded at its own binade
-        q = s * 4503599627370497.0
-        magic = (q - 0.9999999999999999 * q) * (_MAGIC * 1.1920928955078125e-07)
-        r = (s + magic) - magic
-    return r if r >= TINY else 0.0
+def _rounded(exponent: int, register: int, negative: bool) -> float:
+    """A normalised working number (:func:`working_sum`'s) rounded by ``$ROUNS``
+    (:func:`rounded_parts`): 0 below the range (a register of 0, an exponent byte of 0 or
+    less), an infinity beyond it."""
+    if not register or exponent <= 0:
+        return 0.0
+    mantissa, exponent = rounded_parts(exponent, register)
+    if exponent > 255:
+        return -inf if negative else inf
+    value = ldexp(mantissa, exponent - 152)
+    return -value if negative else value
 
 
 def working_sum(small_exponent: int, small_mantissa: int, small_negative: bool,
-         exponent: int, mantissa: int, negative: bool, top: int = _TOP) -> tuple[int, int, bool]:
-    """The working sum of two working numbers, the second the larger in magnitude
-    (not yet normalised or rounded): the steps of ``$FADDS`` listed in the module
-    docstring.  ``top``: 2**32 for singles, 2**64 for the doubles' working numbers."""
+                exponent: int, mantissa: int, negative: bool) -> tuple[int, int, bool]:
+    """``$FADDS``'s register steps on two working numbers (:func:`working_parts`: exponent
+    byte and 32-bit mantissa, the low byte 0), the second the larger in magnitude (or of
+    the larger exponent): the (exponent byte, 32-bit register, sign) that ``$ROUNS``
+    (:func:`_rounded`) rounds, normalised; a register of 0 for 0.
+
+    The smaller operand is shifted right into the 32-bit register (its low byte the guard
+    byte) by the exponents' difference: none of it if that is 25 or more (the larger
+    operand is the result, as it is); else a byte at a time while 8 or more bits remain
+    (the bits that fall out, and the new guard byte's low five, set its sticky bit 0x20),
+    then a bit at a time (after each shift, a 1 in bit 0x10 sets 0x20).  Of one sign the
+    registers add; a carry out of 32 bits shifts the sum right once (the sticky bit moves
+    to 0x10, which rounding ignores) and adds one to the exponent (beyond 255: an
+    overflow, left to :func:`_rounded`).  Of two signs the smaller register is subtracted
+    and the difference normalised as ``$NORMS`` does: a byte at a time while the top byte
+    is 0 (0 where the exponent byte is 8 or less), then a bit at a time (0 where the
+    exponent byte reaches 0); the bits below the guard byte's top three shift up with it."""
     shift = exponent - small_exponent
-    nothing_lost = small_mantissa & ((1 << shift) - 1) == 0
-    small_mantissa >>= shift
-    if small_negative != negative:
-        if small_mantissa < 0x80 or (small_mantissa == 0x80 and nothing_lost):
-            return exponent, mantissa, negative
-        mantissa -= small_mantissa
-        if mantissa & 0x1C0 == 0x80 and mantissa & 0x1DF != 0x80:
-            mantissa &= ~0x80  # GW's subtraction rounds this guard byte down
-    else:
-        mantissa += small_mantissa
-        if mantissa >= top:
+    if shift >= 25:
+        return exponent, mantissa, negative
+    register = small_mantissa
+    if shift >= 8:
+        cut = shift & 0x18
+        register = (register >> cut) | (0x20 if register & ((1 << (cut + 5)) - 1) else 0)
+        shift &= 7
+    while shift:
+        register >>= 1
+        if register & 0x10:
+            register |= 0x20
+        shift -= 1
+    if small_negative == negative:
+        register += mantissa
+        if register >= _TOP:
+            register >>= 1
             exponent += 1
-            mantissa >>= 1
-        if not nothing_lost:
-            mantissa |= 1
-    return exponent, mantissa, negative
+        return exponent, register, negative
+    register = mantissa - register
+    if register <= 0:
+        if not register:
+            return exponent, 0, negative
+        register = -register  # (equal exponents: the smaller mantissa was the larger)
+        negative = not negative
+    while register < 0x1000000:
+        if exponent <= 8:
+            return exponent, 0, negative
+        register <<= 8
+        exponent -= 8
+    if register < _HALF_TOP:
+        shift = 32 - register.bit_length()
+        if exponent <= shift:
+            return exponent, 0, negative
+        register <<= shift
+        exponent -= shift
+    return exponent, register, negative
 
 
 def subtract(a, b) -> float:
