@@ -24,6 +24,16 @@ from math import copysign, frexp, inf, ldexp
 OVERFLOW = "overflow"  # what fadds returns where $FADDS jumps to $OVFLS
 
 
+def is_single(x: float) -> bool:
+    """Is ``x`` 0 or a single of MBF's range (24 bits, 2**-128 up to below 2**127)?"""
+    if x == 0:
+        return True
+    if not 2.0 ** -128 <= abs(x) < 2.0 ** 127:
+        return False
+    m, e = frexp(abs(x))
+    return ldexp(m, 24).is_integer()
+
+
 def to_mbf(x: float) -> bytes:
     """A float holding a single (24 bits, in MBF's range) as its 4 MBF bytes."""
     if x == 0:

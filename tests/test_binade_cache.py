@@ -4,16 +4,17 @@ miss it, change binade, sit on a binade's edges or near half a unit.
 
 Each operation is compiled by the gw number model into a Python function and called in one
 namespace for a whole sequence of operands, so the caches carry from call to call as in a
-loop; the reference is single_arith (``add``, ``subtract``, ``multiply``, ``divide``: GW's
-``$FADDS``, ``$FMULS``, ``$FDIVS``, compared with PC-BASIC elsewhere), with an overflow
+loop; the reference for ``+ -`` is tests/fadds_reference.py (``$FADDS``'s registers), for
+``* /`` single_arith (``multiply``, ``divide``: ``$FMULS``, ``$FDIVS``, compared with PC-BASIC elsewhere), with an overflow
 giving the signed largest single as GW's continuing policy does.
 """
 
 from __future__ import annotations
 
 import random
-from math import inf, ldexp
+from math import inf, ldexp, nextafter
 
+import fadds_reference
 import pytest
 
 from yaseer.basic.arithmetic import arith_policy, binade_cache, single_arith, values
@@ -47,8 +48,13 @@ def _compiled(source: str, operands: str = "n_A, n_B"):
 
 
 def _reference(op: str, a: float, b: float) -> float:
-    r = {"+": single_arith.add, "-": single_arith.subtract, "/": single_arith.divide,
-         "*": single_arith.multiply}[op](a, b)
+    """single_arith's routine; for a sum of two singles in MBF's range the tests' own
+    transcription of $FADDS's registers."""
+    routines = {"+": single_arith.add, "-": single_arith.subtract, "/": single_arith.divide,
+                "*": single_arith.multiply}
+    if op in "+-" and fadds_reference.is_single(a) and fadds_reference.is_single(b):
+        routines = {"+": fadds_reference.add, "-": fadds_reference.subtract}
+    r = routines[op](a, b)
     return r if r - r == 0 else (-LARGEST if r < 0 else LARGEST)
 
 
@@ -143,13 +149,19 @@ def test_a_cache_is_only_for_its_binade():
     """The groups' bounds: a sum's leave out the binade's largest single; a literal's sign
     and size bound a sum's; nothing near the top of the range or below its bottom."""
     high, low, magic, band_low, band_high = binade_cache.sum_group(1.5, None)
-    assert (low, high) == (1.0, 2.0 - 2.0 ** -23)
-    assert band_high == -band_low == 0.498046875 * 2.0 ** -23
+    unit = 2.0 ** -23
+    assert (low, high) == (1.0, 2.0 - unit)
+    # $FADDS: after a carry, a sum rounded up by 3/8 to 1/2 of a unit is GW's tie (half to even)
+    assert band_low == nextafter(-0.375 * unit, -inf) and band_high == 0.5 * unit
     assert (1.75 + magic) - magic == 1.75 and (1.0 + 2.0 ** -25 + magic) - magic == 1.0
     high, low, *_ = binade_cache.sum_group(-1.5, None)
     assert low <= -1.0 < high and not low <= -(2.0 - 2.0 ** -23) and low <= -(2.0 - 2.0 ** -22)
-    assert binade_cache.sum_group(1.5, 0.1)[4] == band_high
-    assert binade_cache.sum_group(1.5, -0.1)[4] == 5e-324  # the other operand is positive: exact sums only
+    # a literal of the sum's sign: the other operand in the sum's binade from 1 + .1 up, no carry
+    high, low, magic, band_low, band_high = binade_cache.sum_group(1.5, 0.1)
+    assert (low, high) == (1.1, 2.0 - unit) and (band_low, band_high) == (-unit, unit)
+    # of the other sign: the other operand .1 larger, in the binade below 2 - .1, no normalising shift
+    high, low, magic, band_low, band_high = binade_cache.sum_group(1.5, -0.1)
+    assert (low, high) == (1.0, 1.9) and band_low == nextafter(-0.25 * unit, -inf) and band_high == 0.5 * unit
     assert binade_cache.sum_group(1.5, 3.0)[4] == 5e-324  # it could be either
     assert binade_cache.sum_group(2.0 ** 126 * 1.5, None) is not None
     assert binade_cache.sum_group(2.0 ** 127, None) is None

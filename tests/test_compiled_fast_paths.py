@@ -350,28 +350,30 @@ def test_a_single_loop_past_two_to_the_24_rounds_each_step(loop, body):
 
 @pytest.mark.parametrize("body", ["K=K+1: IF K=6 THEN END", "S=S+I: K=K+1: IF K=6 THEN END",
                                   "K=K+1: IF K=6 THEN END ELSE I=I+0"])
-def test_a_single_loop_down_from_two_to_the_24_stays_there(body):
-    """``FOR I=16777216 TO 16777210 STEP -1`` never ends in GW: ``$FADDS`` gives 2**24 back
-    for 2**24 - 1 (the 1 shifted out of the register; single_arith.add, PC-BASIC 2.0.8
-    agrees), so each pass sees 16777216, whether the native loop counts its passes,
-    iterates the values or steps a variable the body changes, as the general code does."""
-    from yaseer.basic.arithmetic.single_arith import add
+def test_a_single_loop_down_from_two_to_the_25_stays_there(body):
+    """``FOR I=33554432 TO 33554426 STEP -1`` never ends in GW: ``$FADDS`` gives 2**25 back
+    for 2**25 - 1 (exponents 25 apart: the larger operand as it is; the tests' transcription
+    of its registers, tests/fadds_reference.py), so each pass sees 33554432, whether the
+    native loop counts its passes, iterates the values or steps a variable the body
+    changes, as the general code does.  (2**24 - 1 is 16777215: exponents 24 apart keep
+    the 1 in the guard byte, where PC-BASIC 2.0.8 loses it.)"""
+    from fadds_reference import add
 
-    assert add(16777216.0, -1.0) == 16777216.0
-    fast = gw_machine(f"10 FOR I=16777216 TO 16777210 STEP -1: {body}\n20 NEXT\n")
-    general = gw_machine(f"10 FOR I=16777216 TO 16777210 STEP -1: {body}\n20 NEXT\n" + DEFEAT)
+    assert add(33554432.0, -1.0) == 33554432.0 and add(16777216.0, -1.0) == 16777215.0
+    fast = gw_machine(f"10 FOR I=33554432 TO 33554426 STEP -1: {body}\n20 NEXT\n")
+    general = gw_machine(f"10 FOR I=33554432 TO 33554426 STEP -1: {body}\n20 NEXT\n" + DEFEAT)
     assert fast.scalars == general.scalars
-    assert fast.scalars["I!"] == 16777216.0 and fast.scalars["K!"] == 6.0
+    assert fast.scalars["I!"] == 33554432.0 and fast.scalars["K!"] == 6.0
     if "S=S+I" in body:
-        assert fast.scalars["S!"] == add(add(add(add(add(16777216.0, 16777216.0), 16777216.0), 16777216.0),
-                                             16777216.0), 16777216.0)
-    assert "while" in source_of(f"10 FOR I=16777216 TO 16777210 STEP -1: {body}\n20 NEXT\n", dialect="gw")
+        assert fast.scalars["S!"] == add(add(add(add(add(33554432.0, 33554432.0), 33554432.0), 33554432.0),
+                                             33554432.0), 33554432.0)
+    assert "while" in source_of(f"10 FOR I=33554432 TO 33554426 STEP -1: {body}\n20 NEXT\n", dialect="gw")
     # the helpers of the loops whose body cannot end them (iterating values, counting passes)
     helpers = runtime.single_loop_helpers()
-    values = helpers["_frange"](16777216.0, 16777210.0, -1.0)
-    assert [next(values) for _ in range(8)] == [16777216.0] * 8
-    passes = helpers["_fcount"](16777216.0, 16777210.0, -1.0)
-    assert [n for n, _ in zip(passes, range(8))] == list(range(8)) and passes.value == 16777216.0
+    values = helpers["_frange"](33554432.0, 33554426.0, -1.0)
+    assert [next(values) for _ in range(8)] == [33554432.0] * 8
+    passes = helpers["_fcount"](33554432.0, 33554426.0, -1.0)
+    assert [n for n, _ in zip(passes, range(8))] == list(range(8)) and passes.value == 33554432.0
 
 
 def test_gw_transcendental_functions_are_their_steps_without_a_rounding_test():

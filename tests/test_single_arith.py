@@ -1,9 +1,12 @@
 """GW-BASIC's single-precision arithmetic (yaseer/basic/arithmetic/single_arith.py) against
 independent references:
 
-* ``+ - *``: PC-BASIC 2.0.8's own MBF classes (its ``Single`` reproduces GW's
-  ``$FADDS``/``$FMULS``), bit for bit, on random operands and on constructed near-tie
-  cases;
+* ``+ -``: tests/fadds_reference.py, a transcription of ``$FADDS``'s 8086 registers
+  (MATH1.ASM), bit for bit, on random operands and on constructed near-tie cases;
+  PC-BASIC 2.0.8's ``Single`` differs from the source in about 0.4% of sums (it keeps no
+  sticky bit as ``$FADDS`` does), so it is no reference for them;
+* ``*``: PC-BASIC 2.0.8's own MBF classes (its ``Single`` reproduces GW's ``$FMULS``), bit
+  for bit;
 * PRINT's digits: PC-BASIC's where they are those of the source's ``$FOFMT`` steps, else
   those steps redone on fractions (tests/single_digits_support.py);
 * ``/`` and SQR: the exact rational quotient and integer square root rounded to
@@ -22,6 +25,7 @@ import struct
 from decimal import Decimal
 from fractions import Fraction
 
+import fadds_reference
 import pytest
 
 from yaseer.basic.arithmetic import single_arith as sa
@@ -95,20 +99,27 @@ def nearest_single(value: Fraction) -> float:
 
 
 @pytest.mark.parametrize("seed", [1, 2])
-def test_add_subtract_multiply_are_pcbasics_bit_for_bit(seed):
-    differs_from_ieee = 0
+def test_add_subtract_are_the_sources_and_multiply_pcbasics_bit_for_bit(seed):
+    """``+ -`` against the transcription of ``$FADDS`` (PC-BASIC 2.0.8's sums differ from it
+    in some of these: counted, not asserted), ``*`` against PC-BASIC's ``$FMULS``."""
+    differs_from_ieee = pc_differs = 0
     for a, b in pairs(seed):
         A, B = pc_single(a), pc_single(b)
-        for ours, theirs, exact in (
-            (sa.add(a, b), pc_result(lambda: A.clone().iadd(B)), a + b),
-            (sa.subtract(a, b), pc_result(lambda: A.clone().isub(B)), a - b),
-            (sa.multiply(a, b), pc_result(lambda: A.clone().imul(B)), a * b),
+        for ours, source, theirs, exact in (
+            (sa.add(a, b), fadds_reference.add(a, b), pc_result(lambda: A.clone().iadd(B)), a + b),
+            (sa.subtract(a, b), fadds_reference.subtract(a, b), pc_result(lambda: A.clone().isub(B)), a - b),
+            (sa.multiply(a, b), None, pc_result(lambda: A.clone().imul(B)), a * b),
         ):
             ours = math.inf if abs(ours) == math.inf else ours
             theirs = math.inf if abs(theirs) >= 1.7e38 else theirs
-            assert ours == theirs, (a, b, ours, theirs)
+            if source is None:
+                assert ours == theirs, (a, b, ours, theirs)
+            else:
+                assert ours == source, (a, b, ours, source)
+                pc_differs += ours != theirs and abs(ours) != math.inf
             differs_from_ieee += ours != struct.unpack("f", struct.pack("f", exact))[0] if abs(exact) < 3e38 else 0
     assert differs_from_ieee > 100  # the cases do reach GW's own rounding
+    assert pc_differs > 0  # (and PC-BASIC's sums are not the source's everywhere)
 
 
 def test_products_near_half_a_unit_are_pcbasics():
@@ -130,9 +141,10 @@ def test_products_near_half_a_unit_are_pcbasics():
         assert sa.product_near_half(p, cut) == pc_result(lambda: pc_single(a).imul(pc_single(b))) == sa.product(p)
 
 
-def test_sums_near_a_tie_after_the_carry_are_pcbasics():
-    """The one case where an addition's guard byte is exactly half and the carry shifted
-    out a 1 (IEEE rounds up, GW half to even): constructed, not left to chance."""
+def test_sums_near_a_tie_after_the_carry_are_the_sources():
+    """An addition whose carry shifts the sum right drops the sticky bit: a guard byte of
+    ``0100 0000`` with bits below it becomes exactly half (IEEE rounds up, GW half to even).
+    Constructed, not left to chance, against the transcription of ``$FADDS``."""
     rng = random.Random(9)
     reached = 0
     for _ in range(20000):
@@ -140,9 +152,9 @@ def test_sums_near_a_tie_after_the_carry_are_pcbasics():
         small = math.ldexp(rng.randrange(1 << 23, 1 << 24) | 1, -rng.choice([7, 8, 9, 10, 12]))
         if rng.random() < 0.5:
             large, small = -large, -small
-        theirs = pc_single(large).clone().iadd(pc_single(small)).to_value()
-        assert sa.add(large, small) == theirs
-        reached += theirs != struct.unpack("f", struct.pack("f", large + small))[0]
+        source = fadds_reference.add(large, small)
+        assert sa.add(large, small) == source
+        reached += source != struct.unpack("f", struct.pack("f", large + small))[0]
     assert reached > 0
 
 
@@ -154,14 +166,13 @@ def _long_way(a: float, b: float) -> float:
     return sa._rounded(*sa.working_sum(small_exponent, small_mantissa, small < 0, exponent, mantissa, large < 0))
 
 
-def test_differences_on_floats_are_the_register_steps():
-    """single_arith.register_difference (add's float steps for operands of opposite signs)
-    against the integer register steps and PC-BASIC's $FADDS: the smaller operand every
-    number of binades below (its bits shifted out of the 32-bit register), guard bytes of
-    every kind (GW's rounding down of 10?xxxxx over an even mantissa), differences that
-    cancel into lower binades, and the range's low end."""
+def test_differences_are_the_register_steps():
+    """add (its float fast paths and its long way on integers) against the transcription of
+    ``$FADDS`` for operands of opposite signs: the smaller operand every number of binades
+    below (its bits shifted out of the 32-bit register through the sticky bit), guard bytes
+    of every kind, differences that cancel into lower binades, and the range's low end."""
     rng = random.Random(31)
-    on_floats = guard_rule = 0
+    guard_rule = 0
     for k in range(12000):
         exponent = rng.randrange(-126, 100) if k % 7 else rng.randrange(-128, -110)
         large = math.ldexp(rng.randrange(1 << 23, 1 << 24) if k % 5 else (1 << 23) + rng.randrange(4), exponent)
@@ -173,23 +184,17 @@ def test_differences_on_floats_are_the_register_steps():
         a, b = (large, -small) if rng.random() < 0.5 else (-large, small)
         if rng.random() < 0.5:
             a, b = b, a
-        q = large * 4503599627370497.0
-        fast = sa.register_difference(large, small, q - 0.9999999999999999 * q)
-        expected = _long_way(a, b)
-        on_floats += fast is not None
-        if fast is not None:
-            assert (-fast if (a if abs(a) > abs(b) else b) < 0 else fast) == expected, (a, b)
+        expected = fadds_reference.add(a, b)
+        assert _long_way(a, b) == expected, (a, b)
         assert sa.add(a, b) == expected, (a, b)
-        if k % 4 == 0:
-            assert expected == pc_result(lambda: pc_single(a).iadd(pc_single(b))), (a, b)
         guard_rule += expected != nearest_single(Fraction(a) + Fraction(b))
-    assert on_floats > 10000 and guard_rule > 300  # (GW other than the nearest single)
+    assert guard_rule > 300  # (GW other than the nearest single)
 
 
 def test_differences_near_half_a_unit_are_the_register_steps():
     """add's float rule for a difference that keeps the larger operand's binade (the
-    nearest single, from 1/4 of a unit below it to 127/256 above) against the integer
-    register steps: the smaller operand 4 to 31 binades below (bits shifted out), its
+    nearest single, from 1/4 of a unit below it to 1/2 above) against the transcription
+    of ``$FADDS`` and add's own integer register steps: the smaller operand 4 to 31 binades below (bits shifted out), its
     low byte set to the patterns around a guard byte of 0x80, 0xA0 and 0xC0, and larger
     operands next to a power of two (differences that leave its binade go the long way)."""
     rng = random.Random(41)
@@ -202,8 +207,8 @@ def test_differences_near_half_a_unit_are_the_register_steps():
         a, b = (large, -small) if rng.random() < 0.5 else (-small, large)
         if rng.random() < 0.5:
             a, b = -a, -b
-        expected = _long_way(a, b)
-        assert sa.add(a, b) == expected, (a, b)
+        expected = fadds_reference.add(a, b)
+        assert sa.add(a, b) == expected == _long_way(a, b), (a, b)
         reached += expected != nearest_single(Fraction(a) + Fraction(b))
     assert reached > 1000  # (GW's rounding, not the nearest, is what these reach)
 
@@ -423,8 +428,8 @@ def test_the_compiled_code_gives_what_the_helpers_give():
 
 def test_compiled_sums_near_a_tie_after_the_carry_are_the_helpers():
     """Sums of singles whose exponents are close, as the compiled code tests them inline,
-    against ``add``: among them sums 1/512 of a unit from halfway, where GW's carry rounds
-    otherwise than the nearest (test_sums_near_a_tie_after_the_carry_are_pcbasics)."""
+    against the transcription of ``$FADDS``: among them sums 1/512 of a unit from halfway,
+    where GW's carry rounds otherwise than the nearest (test_sums_near_a_tie_after_the_carry_are_the_sources)."""
     rng = random.Random(10)
     lines, near_tie = [], 0
     for k in range(2000):
@@ -445,7 +450,8 @@ def test_compiled_sums_near_a_tie_after_the_carry_are_the_helpers():
     for k in range(len(lines)):
         machine = machines[lines[k]]
         a, b = machine.scalars[f"A{k}!"], machine.scalars[f"B{k}!"]
-        assert (machine.scalars[f"S{k}!"], machine.scalars[f"D{k}!"]) == (sa.add(a, b), sa.subtract(a, b)), (a, b)
+        assert (machine.scalars[f"S{k}!"], machine.scalars[f"D{k}!"]) == (
+            fadds_reference.add(a, b), fadds_reference.subtract(a, b)), (a, b)
     assert near_tie > 100
 
 
@@ -491,12 +497,16 @@ def test_a_widened_single_prints_pcbasics_sixteen_digits():
 
 
 @pytest.mark.parametrize("power", [1.0, -1.0, 2.0 ** 58, -4.0, 2.0 ** -100, 16777216.0, -16777216.0])
-def test_a_power_of_two_less_half_its_unit_is_the_power(power):
-    """``$FADDS``: a smaller operand of exactly half the larger's unit (guard byte 0x80, no
-    bit lost) leaves the larger as it is, although the exact difference would fit in 24 bits
-    below a power of two: 1 - 2**-24 is 1 (PC-BASIC's $FADDS the same)."""
+def test_a_power_of_two_less_half_its_unit(power):
+    """``$FADDS`` with exponents 24 apart shifts the smaller operand into the guard byte
+    (0x80, nothing lost) and normalises the difference: 1 - 2**-24 is .99999994, exact
+    (PC-BASIC 2.0.8 gives 1).  With exponents 25 or more apart the larger operand is the
+    result as it is: 1 - 1.5 * 2**-25 is 1, where the nearest single is .99999994."""
     half_unit = -power * 2.0 ** -24
-    assert sa.add(power, half_unit) == power == sa.add(half_unit, power)
-    assert sa.subtract(power, -half_unit) == power
-    assert pc_result(lambda: pc_single(power).iadd(pc_single(half_unit))) == power
+    assert sa.add(power, half_unit) == power + half_unit == sa.add(half_unit, power)
+    assert sa.subtract(power, -half_unit) == power + half_unit == fadds_reference.add(power, half_unit)
+    assert pc_result(lambda: pc_single(power).iadd(pc_single(half_unit))) == power  # (PC-BASIC: not the source)
     assert sa.add(power, 2 * half_unit) == power + 2 * half_unit  # a whole unit is subtracted
+    below = 0.75 * half_unit  # exponents 25 apart
+    assert sa.add(power, below) == power == fadds_reference.add(power, below) == sa.subtract(power, -below)
+    assert nearest_single(Fraction(power) + Fraction(below)) == power + half_unit

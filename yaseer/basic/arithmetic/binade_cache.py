@@ -26,7 +26,6 @@ from yaseer.basic.arithmetic.single_arith import TINY
 
 _MAGIC = 1.5 * 2.0 ** 52
 _UNIT = 2.0 ** -23  # a single's unit over the leading power of two of its binade
-_SUM_BAND = 0.498046875  # (single_arith.add: a carry's lost bit matters within 1/512 of half a unit)
 _EXACT_ONLY = 5e-324  # the least double: -it < d < it only for d = 0
 
 
@@ -52,22 +51,50 @@ def sum_group(s: float, constant: float | None) -> tuple | None:
 
     Its bounds hold the magnitudes from ``T`` to ``2T - u`` (leaving out the binade's
     largest single: ``$FADDS`` gives the power of two above it where the operands are
-    that power and half its unit of the other sign, single_arith.add), ``T`` up to
-    2**126 (no rounding leaves MBF's range).  In it an exact sum (a multiple of ``u``)
-    is GW's, and so is the nearest single of a sum of two magnitudes of one sign outside
-    1/512 of a unit of half-way (the band).  The compiled code tests the signs, unless
+    that power and less than half its unit of the other sign, exponents 25 or more apart,
+    single_arith.add), ``T`` up to 2**126 (no rounding leaves MBF's range).  In it an
+    exact sum (a multiple of ``u``) is GW's, and so is the nearest single of a sum of two
+    magnitudes of one sign outside the band: rounded up by 3/8 to 1/2 of a unit (where a
+    carry's shift drops the sticky bit, single_arith.add).  The compiled code tests the
+    signs (and takes any rounding where an operand lies in the bounds: no carry), unless
     one operand is a literal whose contribution (``constant``: its value, negated when
-    subtracted) is given: then, for magnitudes below ``|constant|`` or of the other sign
-    (where the other operand's sign is not known), the band holds only exact sums."""
+    subtracted) is given: then the other operand's sign and size follow from the sum's:
+
+    * the constant of the sum's sign, at most ``T`` in size: the other operand lies in the
+      sum's binade for sums from ``T + |constant|`` up (the bounds start there), so no
+      carry came and any rounding is GW's (a band every nearest single is inside);
+    * of the other sign, at most ``T``: the other operand is ``|constant|`` larger than the
+      sum, in its binade for sums below ``2T - |constant|`` (the bounds end there), a
+      difference with no normalising shift, GW's unless rounded up by more than ``u/4``;
+    * else (the other operand's sign or binade unknown) a band that holds exact sums only."""
     top = _binade(s, 2.0 ** 126)
     if top is None:
         return None
     unit = top * _UNIT
-    low, high = _signed_bounds(s, top, 2.0 * top - unit)
-    band = _SUM_BAND * unit
-    if constant and ((constant > 0) != (s > 0) or abs(constant) > top):
-        band = _EXACT_ONLY  # the operands' signs unknown: a band that only 0 is inside
-    return high, low, _MAGIC * unit, -band, band
+    low, high = top, 2.0 * top - unit
+    if constant is None:
+        n, k = nextafter(-0.375 * unit, -inf), 0.5 * unit
+    else:
+        size = constant if constant > 0 else -constant
+        if size > top:
+            n, k = -_EXACT_ONLY, _EXACT_ONLY
+        elif (constant > 0) == (s > 0):
+            low = top + size
+            if low - top < size:  # (the double sum rounded down: the next double up)
+                low = nextafter(low, inf)
+            n, k = -unit, unit
+        else:
+            end = 2.0 * top - size
+            if 2.0 * top - end < size:  # (the double difference rounded up: the next double down)
+                end = nextafter(end, -inf)
+            high = min(high, end)
+            n, k = nextafter(-0.25 * unit, -inf), 0.5 * unit
+        if not low < high:
+            return None
+    if s < 0:
+        n, k = -k, -n
+    low, high = _signed_bounds(s, low, high)
+    return high, low, _MAGIC * unit, n, k
 
 
 def product_group(p: float) -> tuple | None:

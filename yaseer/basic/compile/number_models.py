@@ -17,7 +17,6 @@ expression; :func:`number_model` picks the model from ``Dialect.typed_numbers``.
 
 from __future__ import annotations
 
-from math import frexp
 
 from yaseer.basic.arithmetic.single_arith import LIMIT, SMALL_CONSTANT, TINY
 from yaseer.patterns import Pattern
@@ -308,16 +307,17 @@ class TypedNumbers(PlainNumbers):
         # near halfway is the nearest single; with a small constant (see _small_literal) an
         # inexact sum is inside the range, and the constant's sign is known here
         same_sign = f"{_one_sign(a, b, op == '+')} and {_SUM_BAND}"
-        general = lambda value: _tested(value, f"{helper}({a}, {b})", same_sign, in_range=not small,
-                                        also=_not_half_unit_apart(a, b, op == "+"))
+        general = lambda value: _tested(value, f"{helper}({a}, {b})", same_sign, in_range=not small)
         # in a cached binade (binade_cache.sum_group): an exact sum is GW's; an inexact one where
-        # the magnitudes add (a literal's sign the cache's bounds imply) outside the band
+        # the magnitudes add (a literal's sign the cache's bounds imply) outside the band, or
+        # whatever its rounding where an operand lies in the sum's binade (no carry)
         constant = _constant_added(a, b, op == "+")
         if constant is not None:  # (an exact sum is inside the band)
             test = "{c}n < _sv - (_sh := (_sv + {c}m) - {c}m) < {c}k"
         else:
+            other = b if op == "+" else f"-{b}"
             test = (f"((_sh := (_sv + {{c}}m) - {{c}}m) == _sv or {a} * {b} {'>' if op == '+' else '<'} 0 "
-                    "and {c}n < _sv - _sh < {c}k)")
+                    f"and ({{c}}n < _sv - _sh < {{c}}k or {{c}}l <= {a} < {{c}}h or {{c}}l <= {other} < {{c}}h))")
         return self._cached("s", f"{first} {op} {second}", test, general, constant)
 
     def _cached(self, kind: str, value: str, test: str, general, constant=False,
@@ -483,8 +483,9 @@ _BELOW = "(_sv - _sh) / ((_sq := _sv * 4503599627370497.0) - 0.9999999999999999 
 # units above the cut, where its 28-bit product rounds otherwise: single_arith.product)
 _NEAREST_BAND = f"{-0.5 * 2.0 ** -23!r} < {_BELOW} < {0.5 * 2.0 ** -23!r}"
 _PRODUCT_BAND = f"{-0.375 * 2.0 ** -23!r} <= {_BELOW} < {0.5 * 2.0 ** -23!r}"
-# (a sum: not within 1/512 of a unit of halfway, where a carry can make GW round otherwise)
-_SUM_BAND = f"{-0.498046875 * 2.0 ** -23!r} < {_BELOW} < {0.498046875 * 2.0 ** -23!r}"
+# (a sum of one sign: not rounded up by 3/8 to 1/2 of a unit, where the shift after a carry
+# drops $FADDS's sticky bit and GW rounds half to even: single_arith.add)
+_SUM_BAND = f"{-0.375 * 2.0 ** -23!r} <= {_BELOW} < {0.5 * 2.0 ** -23!r}"
 
 
 def _cut_or(value: str, helper: str, no_overflow: bool = False) -> str:
@@ -514,37 +515,19 @@ def _constant_added(a: str, b: str, plus: bool) -> float | None:
     return float(a) if _small_literal(a) else None
 
 
-def _not_half_unit_apart(a: str, b: str, plus: bool) -> str | None:
-    """The test that ``a + b`` (``plus``) or ``a - b`` is not a power of two and half its unit
-    of the other sign: ``$FADDS`` gives the power unchanged (the smaller operand is exactly
-    0x80 in the guard byte, no bit lost: single_arith.add), where the exact difference fits
-    in 24 bits.  None where it cannot be: a literal that is not a power of two; with one that
-    is, the other operand's two values that would be, known here."""
-    sign = -1.0 if plus else 1.0  # the sign the operands have to each other in that case
-    for this, other in ((b, a), (a, b)):
-        if _small_literal(this):
-            value = float(this)
-            if not value or frexp(abs(value))[0] != 0.5:
-                return None
-            return f"{other} != {sign * value * 16777216.0!r} and {other} != {sign * value * 2.0 ** -24!r}"
-    return f"{a} != {b} * {sign * 16777216.0!r} and {b} != {a} * {sign * 16777216.0!r}"
-
-
 def _tested(value: str, helper: str, band: str | None = None, in_range: bool = True,
-            banded: str | None = None, also: str | None = None) -> str:
+            banded: str | None = None) -> str:
     """The code of a single result: ``value`` (a double) where it is GW's result, else ``helper``
     (code reading ``_sv``, the double, or the scratch locals of the operands).
 
     First: does ``_sv`` need at most 24 bits (Veltkamp's split, ``v * (2**29 + 1)``, gives
     ``v`` cut to 24 bits; three float operations) and lie in MBF's range (``in_range``)?
-    ``also``: a further test of an exact result.  Then, with a ``band``: that cut ``_sh``, in the range (unless ``in_range`` is off: where
+    Then, with a ``band``: that cut ``_sh``, in the range (unless ``in_range`` is off: where
     the range cannot be left), where ``_sv`` lies inside the band around it (``banded``: the
     code for a cut in the range outside the band; else ``helper``).  Scratch locals
     ``_sv _sc _sh _sq`` are each read before anything else can assign them."""
     computed = "_sv" if value == "_sv" else f"(_sv := {value})"
     exact = f"{computed} == (_sh := (_sc := _sv * 536870913.0) - (_sc - _sv))"
-    if also is not None:
-        exact += f" and {also}"
     if in_range:
         exact += f" and {_IN_RANGE}"
     if band is not None and banded is not None:
