@@ -315,9 +315,12 @@ class TypedNumbers(PlainNumbers):
         if constant is not None:  # (an exact sum is inside the band)
             test = "{c}n < _sv - (_sh := (_sv + {c}m) - {c}m) < {c}k"
         else:
+            # (0, an exact sum's distance, is inside every band: the band first, then the signs
+            # or an exact sum; outside it the signs and an operand in the bounds)
             other = b if op == "+" else f"-{b}"
-            test = (f"((_sh := (_sv + {{c}}m) - {{c}}m) == _sv or {a} * {b} {'>' if op == '+' else '<'} 0 "
-                    f"and ({{c}}n < _sv - _sh < {{c}}k or {{c}}l <= {a} < {{c}}h or {{c}}l <= {other} < {{c}}h))")
+            one_sign = f"{a} * {b} {'>' if op == '+' else '<'} 0"
+            test = (f"({{c}}n < _sv - (_sh := (_sv + {{c}}m) - {{c}}m) < {{c}}k and ({one_sign} or _sh == _sv) "
+                    f"or {one_sign} and ({{c}}l <= {a} < {{c}}h or {{c}}l <= {other} < {{c}}h))")
         return self._cached("s", f"{first} {op} {second}", test, general, constant)
 
     def _cached(self, kind: str, value: str, test: str, general, constant=False,
