@@ -30,11 +30,14 @@ class _Continuing:
         return -LARGEST if negative else LARGEST
 
 
-def _compiled(source: str, operands: str = "n_A, n_B"):
+def _compiled(source: str, operands: str = "n_A, n_B", inline: bool = True, caching: bool = True):
     """``source`` (an expression over n_A and n_B) as a function, in a namespace with the
-    compiled code's helpers and the caches' first values."""
+    compiled code's helpers and the caches' first values (``inline``, ``caching``: the
+    number model's switches: tests inline, binade caches)."""
     numbers = TypedNumbers()
     numbers.site_salt = "x"
+    numbers.tests_inline = inline
+    numbers.caching = caching
     left, op, right = source.split(" ")
     code = numbers._single(op, left, right)
     namespace = {"__builtins__": {"type": type, "abs": abs, "float": float}}

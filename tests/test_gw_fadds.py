@@ -24,8 +24,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from yaseer.basic.arithmetic import arith_policy, binade_cache, single_arith, values
-from yaseer.basic.compile.number_models import TypedNumbers
+from test_binade_cache import _compiled
+
+from yaseer.basic.arithmetic import single_arith
 from yaseer.basic.machine import runtime
 from yaseer.basic.machine.machine import Machine
 
@@ -125,31 +126,7 @@ def pairs(draw):
     return (a, b) if draw(st.booleans()) else (b, a)
 
 
-class _Continuing:
-    """GW's overflow policy without a screen: the signed largest single."""
-
-    def result(self, code, negative=False, kind="!"):
-        return -LARGEST if negative else LARGEST
-
-
-def _compiled(op: str, inline: bool, caching: bool):
-    """``n_A op n_B`` compiled by the gw number model into a function (caches carried)."""
-    numbers = TypedNumbers()
-    numbers.site_salt = "f"
-    numbers.tests_inline = inline
-    numbers.caching = caching
-    code = numbers._single(op, "n_A", "n_B")
-    namespace = {"__builtins__": {"type": type, "abs": abs, "float": float}}
-    namespace.update(values.RUNTIME)
-    namespace.update(arith_policy.helpers(_Continuing(), None, None, None))
-    namespace.update(binade_cache.writers(namespace))
-    for base in numbers.cache_bases:
-        namespace[base + "h"] = -inf
-    exec(f"def f(n_A, n_B):\n    return {code}\n", namespace)
-    return namespace["f"]
-
-
-COMPILED = {(op, inline, caching): _compiled(op, inline, caching)
+COMPILED = {(op, inline, caching): _compiled(f"n_A {op} n_B", inline=inline, caching=caching)[0]
             for op in "+-" for inline, caching in ((True, True), (True, False), (False, False))}
 
 

@@ -6,16 +6,17 @@ Format, MBF); yaseer holds it in a Python float, exactly.  GW-BASIC's routines
 guard byte, and do not always give the nearest single.  The functions here give
 GW-BASIC's result:
 
-* ``+ -`` (:func:`add`, :func:`subtract`, ``$FADDS``) and ``*`` (:func:`product`,
-  ``$FMULS``) step for step as PC-BASIC 2.0.8 reproduces them, which the
-  differential tests compare against bit for bit.  Addition: the smaller
-  operand's mantissa is shifted right to the larger's exponent (bits shifted out
-  are lost; an addition that lost bits sets a sticky bit); a subtraction whose
-  shifted operand is below half a guard unit gives the larger operand unchanged,
-  and one whose guard byte is ``10x?????`` with some of the low five bits set
-  rounds down.  Multiplication: the product is truncated to 28 bits; the 4 bits
-  below the mantissa round half to even, ``1001`` counting as a half (``$ROUNS``
-  keeps the guard byte's top 3 bits: 0x80..0x9F is a tie).
+* ``+ -`` (:func:`add`, :func:`subtract`): MATH1.ASM's ``$FADDS`` register by register
+  (:func:`working_sum`, :func:`_rounded`): the smaller operand's mantissa shifted right
+  into a 32-bit register whose low byte is the guard byte, whole bytes first, the bits
+  shifted out kept as a sticky bit; then normalised (``$NORMS``) and rounded from the
+  guard byte's top three bits (``$ROUNS``), with float fast paths where the nearest
+  single is provably that result.  (PC-BASIC 2.0.8 keeps no sticky bit: about 0.4% of
+  its sums differ; the source, and the recorded sums of PC-BASIC's test suite, decide.)
+* ``*`` (:func:`product`, ``$FMULS``) step for step as PC-BASIC 2.0.8 reproduces it,
+  which the differential tests compare against bit for bit: the product is truncated
+  to 28 bits; the 4 bits below the mantissa round half to even, ``1001`` counting as a
+  half (``$ROUNS`` keeps the guard byte's top 3 bits: 0x80..0x9F is a tie).
 * ``/`` (:func:`divide`, ``$FDIVS``): the nearest single, ties to even: the
   routine rounds with a sticky bit from the remainder.  (PC-BASIC's division
   shifts the divisor right and loses its low bits: about 1% of its quotients are
