@@ -25,8 +25,8 @@ class BuildExt(build_ext):
 
 setup(
     ext_modules=[Extension("yaseer.basic.arithmetic._mbf_fast", ["yaseer/basic/arithmetic/_mbf_fast.c"],
-                           optional=True),
+                           depends=["yaseer/basic/arithmetic/_bound_routine.h"], optional=True),
                  Extension("yaseer.basic.arithmetic._decimal_fast", ["yaseer/basic/arithmetic/_decimal_fast.c"],
-                           optional=True)],
+                           depends=["yaseer/basic/arithmetic/_bound_routine.h"], optional=True)],
     cmdclass={"build_ext": BuildExt},
 )

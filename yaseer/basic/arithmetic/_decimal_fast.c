@@ -32,6 +32,7 @@
 #include <float.h>
 #include <math.h>
 #include <string.h>
+#include "_bound_routine.h"
 
 #if !defined(FLT_EVAL_METHOD) || FLT_EVAL_METHOD != 0
 #error "_decimal_fast needs double operations evaluated in double (FLT_EVAL_METHOD 0)"
@@ -221,20 +222,7 @@ static PyMethodDef routines[] = {
 static PyObject *bound(PyObject *module, PyObject *args)
 {
     (void)module;
-    const char *name;
-    PyObject *python;
-    if (!PyArg_ParseTuple(args, "sO:bound", &name, &python))
-        return NULL;
-    if (!PyCallable_Check(python)) {
-        PyErr_SetString(PyExc_TypeError, "bound: the Python function must be callable");
-        return NULL;
-    }
-    for (PyMethodDef *def = routines; def->ml_name; def++) {
-        if (!strcmp(def->ml_name, name))
-            return PyCFunction_NewEx(def, python, NULL);
-    }
-    PyErr_Format(PyExc_KeyError, "no accelerated routine %s", name);
-    return NULL;
+    return bound_routine(routines, args);
 }
 
 /* the decade's scale itself, for the tests */

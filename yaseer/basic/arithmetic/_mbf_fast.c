@@ -32,6 +32,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <string.h>
+#include "_bound_routine.h"
 
 /* Doubles must round as Python's floats do, each operation once to 53 bits: refuse to be
    built where the compiler evaluates in a wider format (x87), so that the Python
@@ -656,20 +657,7 @@ static PyMethodDef routines[] = {
 static PyObject *bound(PyObject *module, PyObject *args)
 {
     (void)module;
-    const char *name;
-    PyObject *python;
-    if (!PyArg_ParseTuple(args, "sO:bound", &name, &python))
-        return NULL;
-    if (!PyCallable_Check(python)) {
-        PyErr_SetString(PyExc_TypeError, "bound: the Python function must be callable");
-        return NULL;
-    }
-    for (PyMethodDef *def = routines; def->ml_name; def++) {
-        if (!strcmp(def->ml_name, name))
-            return PyCFunction_NewEx(def, python, NULL);
-    }
-    PyErr_Format(PyExc_KeyError, "no accelerated routine %s", name);
-    return NULL;
+    return bound_routine(routines, args);
 }
 
 /* The single steps themselves, for the tests (tests/test_mbf_fast.py compares them with
