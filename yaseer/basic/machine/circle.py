@@ -20,6 +20,7 @@ import struct
 
 from yaseer.basic.arithmetic.values import nearest_integer
 from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, error_for
+from yaseer.basic.machine.runtime import signed_word
 
 TWO_PI_FRACTION = 1 / (2 * math.pi)  # CGTCNT multiplies the angle by 1/(2pi) (a single)
 NO_END = 0xFFFF  # the end count left out: "infinity" (compared unsigned)
@@ -44,9 +45,7 @@ def scale(value: int, fraction: int) -> int:
     low = fraction & 0xFF
     if not low:
         return value if fraction & 0xFF00 else 0
-    product = (value & 0xFFFF) * low + 128
-    result = (product >> 8) & 0xFFFF
-    return result - 0x10000 if result & 0x8000 else result
+    return signed_word(((value & 0xFFFF) * low + 128) >> 8)
 
 
 def angle_count(angle: float, per_octant: int) -> tuple[int, bool]:

@@ -22,24 +22,15 @@ from __future__ import annotations
 
 import math
 
-from yaseer.basic.errors import ILLEGAL_FUNCTION_CALL, error_for
+from yaseer.basic.arithmetic.values import nearest_integer
 from yaseer.basic.machine.mml import Macro
+from yaseer.basic.machine.runtime import illegal_function_call, signed_word
 
 PAINT_LARGEST = 9999  # P's attributes: 10000 is Illegal function call (the recorded DRAW2 test)
 TURN_LARGEST = 360  # TA's degrees either way (DRAW2: TA400 Illegal function call)
 # the eight moves: letter -> (x, y) of one step
 STEPS = {"U": (0, -1), "D": (0, 1), "L": (-1, 0), "R": (1, 0),
          "E": (1, -1), "F": (1, 1), "G": (-1, 1), "H": (-1, -1)}
-
-
-def _illegal():
-    return error_for(ILLEGAL_FUNCTION_CALL)
-
-
-def _signed(n: int) -> int:
-    """A 16-bit value as a signed integer."""
-    n &= 0xFFFF
-    return n - 0x10000 if n & 0x8000 else n
 
 
 class DrawState:
@@ -86,7 +77,7 @@ class Drawer(Macro):
         given, n = self.argument()
         if not given:
             if needed:
-                raise _illegal()
+                raise illegal_function_call()
             return None
         return n
 
@@ -95,7 +86,7 @@ class Drawer(Macro):
         state = self.state
         if c in STEPS:
             n = self.number(needed=False)
-            n = 1 if n is None else _signed(n)
+            n = 1 if n is None else signed_word(n)
             sx, sy = STEPS[c]
             self.move_by(sx * n, sy * n)
         elif c == "M":
@@ -109,36 +100,36 @@ class Drawer(Macro):
         elif c == "A":
             n = self.number() & 0xFF
             if n >= 4:
-                raise _illegal()
+                raise illegal_function_call()
             state.angle, state.degrees = n, None
         elif c == "T":
             if self.reader.fetch_needed() != "A":
-                raise _illegal()
-            n = _signed(self.number())
+                raise illegal_function_call()
+            n = signed_word(self.number())
             if not -TURN_LARGEST <= n <= TURN_LARGEST:
-                raise _illegal()
+                raise illegal_function_call()
             state.degrees = n
         elif c == "C":
             state.attr = min(self.number() & 0xFF, self.canvas.colours - 1)
         elif c == "S":
             n = self.number()
             if n > 0xFF:
-                raise _illegal()
+                raise illegal_function_call()
             state.scale = n
         elif c == "P":
             self.fill()
         else:
-            raise _illegal()
+            raise illegal_function_call()
 
     def move(self) -> None:
         """DMOVE: ``M`` then x ``,`` y; a sign before x makes the move relative."""
         reader = self.reader
         c = reader.fetch_needed()
         relative = c in "+-"
-        x = _signed(self.value(c))
+        x = signed_word(self.value(c))
         if reader.fetch_needed() != ",":
-            raise _illegal()
-        y = _signed(self.value(reader.fetch_needed()))
+            raise illegal_function_call()
+        y = signed_word(self.value(reader.fetch_needed()))
         if relative:
             self.move_by(x, y)
         else:
@@ -149,7 +140,7 @@ class Drawer(Macro):
         scale = self.state.scale
         if not scale:
             return n
-        return int(_signed(n * scale) / 4)
+        return int(signed_word(n * scale) / 4)
 
     def move_by(self, dx: int, dy: int) -> None:
         """DOMOVR: a move of (dx, dy) steps, scaled and turned.  The pixel aspect is the
@@ -158,14 +149,14 @@ class Drawer(Macro):
         DRAW_angle drawing matches this to its lines' own pixels)."""
         dx, dy = self.scaled(dx), self.scaled(dy)
         state = self.state
-        fraction = max(1, _round_away(self.canvas.aspect * 256))
+        fraction = max(1, nearest_integer(self.canvas.aspect * 256))
         if state.degrees is not None:
             phi = math.radians(state.degrees)
             c, s = math.cos(phi), math.sin(phi)
-            dx, dy = _round_away(c * dx + s * dy * 256 / fraction), _round_away(c * dy - s * dx * fraction / 256)
+            dx, dy = nearest_integer(c * dx + s * dy * 256 / fraction), nearest_integer(c * dy - s * dx * fraction / 256)
         else:
             if state.angle & 1:  # a right angle: x and y swap, each through the aspect
-                inverse = _round_away(65536 / fraction)
+                inverse = nearest_integer(65536 / fraction)
                 dx, dy = dy * (inverse >> 8) + _scaled(dy, inverse & 0xFF), -_scaled(dx, fraction & 0xFF)
             if state.angle & 2:
                 dx, dy = -dx, -dy
@@ -188,10 +179,10 @@ class Drawer(Macro):
         """P paint, border: a solid fill from the current point."""
         paint = self.number()
         if self.reader.fetch_needed() != ",":
-            raise _illegal()
+            raise illegal_function_call()
         border = self.number()
         if paint > PAINT_LARGEST or border > PAINT_LARGEST:
-            raise _illegal()
+            raise illegal_function_call()
         top = self.canvas.colours - 1
         x, y = self.pen
         self.paint(x, y, min(paint, top), min(border, top))
@@ -202,11 +193,6 @@ def _scaled(value: int, fraction: int) -> int:
     if value < 0:
         return -_scaled(-value, fraction)
     return (value * fraction + 128) >> 8
-
-
-def _round_away(value: float) -> int:
-    """``value`` rounded half away from zero (SCALE's rounding of a magnitude)."""
-    return int(value + 0.5) if value >= 0 else -int(-value + 0.5)
 
 
 def draw(machine, canvas, state: DrawState, text: str, paint=None) -> None:

@@ -116,6 +116,12 @@ def unsigned_word(x: float) -> int:
     return n & 0xFFFF
 
 
+def signed_word(n: int) -> int:
+    """The low 16 bits of ``n`` read as a signed number -32768..32767 (a 16-bit register)."""
+    n &= 0xFFFF
+    return n - 0x10000 if n & 0x8000 else n
+
+
 def power(a: float, b: float) -> float:
     """a ^ b; 0 ^ negative is Division by zero, negative ^ fraction Illegal function call."""
     try:
