@@ -200,6 +200,12 @@ PURE_PYTHON = "YASEER_PURE_PYTHON"
 """The environment variable that, set to anything but ``""`` or ``0``, keeps the Python functions."""
 
 
+def pure_python() -> bool:
+    """Is :data:`PURE_PYTHON` set (to anything but ``""`` or ``0``), so that the optional C
+    accelerators are left unused?"""
+    return os.environ.get(PURE_PYTHON, "") not in ("", "0")
+
+
 def gw_routines() -> dict:
     """GW-BASIC's single-precision routines by name (:data:`GW_ROUTINES`; ``exp`` and
     ``power`` take the overflow handler gw_transcendental's take): the C accelerator's
@@ -211,7 +217,7 @@ def gw_routines() -> dict:
     from yaseer.basic.arithmetic import gw_transcendental
 
     python = {name: getattr(gw_transcendental, name) for name in GW_ROUTINES}
-    if os.environ.get(PURE_PYTHON, "") not in ("", "0"):
+    if pure_python():
         return python
     try:
         from yaseer.basic.arithmetic import _mbf_fast

@@ -14,16 +14,14 @@ the choice is part of a compiled program's cache key (program_cache.key).
 
 from __future__ import annotations
 
-import os
-
-from yaseer.basic.arithmetic.arith_policy import PURE_PYTHON
+from yaseer.basic.arithmetic.arith_policy import pure_python
 
 _loaded: list = []  # [module or None], once looked up
 
 
 def module():
-    """The C module, or None (not built, or :data:`PURE_PYTHON` set)."""
-    if os.environ.get(PURE_PYTHON, "") not in ("", "0"):
+    """The C module, or None (not built, or arith_policy.PURE_PYTHON set)."""
+    if pure_python():
         return None
     if not _loaded:
         try:
