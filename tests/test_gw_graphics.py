@@ -139,3 +139,17 @@ def test_cga_bank_padding_is_no_text():
     # not the text screen's cells (PC-BASIC 2.0.8 agrees)
     out = run('10 SCREEN 1: PRINT "AB": DEF SEG = &HB800\n20 PRINT PEEK(&H1F40); PEEK(&H1F41); PEEK(&H3F40)\n')
     assert out == "AB\n 0  0  0 \n"
+
+
+
+@pytest.mark.parametrize("dimensions, name, element", [("A%(10)", "A%", "A%(I)"), ("B%(3, 3)", "B%", "B%(I, 1)")])
+def test_get_and_put_under_option_base_1(dimensions, name, element, tmp_path):
+    """Under OPTION BASE 1 an array's elements start at subscript 1: GET fills them from
+    there (the header in the first bytes), as PC-BASIC 2.0.8; PUT draws the pixels back
+    (the PSETs' colours: PC-BASIC 2.0.8 puts back 3 0 0 here, reading elsewhere)."""
+    source = ("10 OPTION BASE 1: SCREEN 1: PSET (0, 0), 3: PSET (2, 0), 2: PSET (1, 1), 1\n"
+              f"20 DIM {dimensions}: GET (0, 0)-(3, 1), {name}\n"
+              f"30 FOR I = 1 TO 3: PRINT {element};: NEXT: PRINT\n")
+    assert run(source, tmp_path) == pcbasic_vga(source, tmp_path)
+    put = source + f"40 PUT (10, 10), {name}: PRINT POINT(10, 10); POINT(12, 10); POINT(11, 11)\n"
+    assert run(put, tmp_path).splitlines()[1] == " 3  2  1 "

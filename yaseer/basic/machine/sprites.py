@@ -24,16 +24,18 @@ _SIZES = {"%": 2, "!": 4, "#": 8}
 
 class _Flat:
     """An array's elements in the order GW's memory holds them (the first subscript runs
-    fastest), over the nested lists the machine keeps."""
+    fastest), over the nested lists the machine keeps; under OPTION BASE 1 (``base``) each
+    list's unused entry 0 is not one of them (as data_segment lays arrays out)."""
 
-    def __init__(self, values: list):
+    def __init__(self, values: list, base: int):
         dims = []
         level = values
         while isinstance(level, list):
-            dims.append(len(level))
-            level = level[0] if level else None
+            dims.append(len(level) - base)
+            level = level[base] if len(level) > base else None
         self.nested = values
         self.dims = dims
+        self.base = base
 
     def __len__(self) -> int:
         count = 1
@@ -51,7 +53,7 @@ class _Flat:
     def _place(self, k: int):
         indices = []
         for d in self.dims:
-            indices.append(k % d)
+            indices.append(k % d + self.base)
             k //= d
         holder = self.nested
         for i in indices[:-1]:
@@ -80,10 +82,10 @@ class _ArrayBytes:
             if subscripts is None:
                 raise illegal_function_call()
             machine.array_nd(name, len(subscripts))
-        self.values = _Flat(arrays[name])
+        base = machine.subscript_base
+        self.values = _Flat(arrays[name], base)
         self.size = _SIZES.get(name[-1], 4)
         self.kind = name[-1]
-        base = machine.subscript_base
         if subscripts is None:
             start = 0
         else:
