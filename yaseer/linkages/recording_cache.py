@@ -4,9 +4,10 @@ its library programs' paths (:mod:`yaseer.linkages.tracing`) anew.
 A recorded path is a compiled function that holds for the inputs its guards accept and raises
 :class:`~yaseer.linkages.tracing.Retrace` for any other: whichever path a call tries, it gets
 the numbers the plain code computes or a Retrace, never other numbers.  A kept path is the code
-object of that function (its guards included) and its names, each one a function of
-:data:`tracing.BOUND`, a function the caller provides, or a number:
-plain values :mod:`marshal` writes (nothing is pickled).
+object of that function (its guards included), its names, each one a function of
+:data:`tracing.BOUND`, a function the caller provides, or a number, and its Python text (which
+:mod:`yaseer.linkages.straight_line` translates): plain values :mod:`marshal` writes (nothing is
+pickled).
 
 Keys.  Every entry's key hashes the *toolchain*: the cache's format, yaseer's version, the Python,
 and the text of every source of ``yaseer/linkages`` and of the caller's further sources (the
@@ -34,7 +35,7 @@ from yaseer.linkages import tracing
 from yaseer.linkages.recordings import KEY_BUILTINS, compile_key
 from yaseer.version import __version__
 
-FORMAT = 2  # bump when the stored layout changes
+FORMAT = 3  # bump when the stored layout changes
 MAGIC = b"yaseer-recorded\n"
 KEPT = 256  # paths an index lists per program and method (the oldest are dropped)
 _LINKAGES = os.path.dirname(os.path.realpath(__file__))
@@ -170,14 +171,18 @@ class Shelf:
 
     def _load(self, entry: str):
         stored = sealed_cache.read_marshalled(f"{entry}.rec", entry, MAGIC)
-        if stored is None or len(stored) != 2 or type(stored[0]) is not CodeType:
+        if stored is None or len(stored) != 3 or type(stored[0]) is not CodeType or type(stored[2]) is not str:
             return None
-        code, plain = stored
+        code, plain, text = stored
         try:
             names = restored(plain, self.provided)
         except (ValueError, TypeError):
             return None
-        return None if names is None else FunctionType(code, names)
+        if names is None:
+            return None
+        run = FunctionType(code, names)
+        run.text = text  # (straight_line translates it)
+        return run
 
     def keep(self, run, tests: tuple, machine) -> None:
         """Keep the path ``run`` just recorded for the call on ``machine`` (its outputs not yet
@@ -189,7 +194,7 @@ class Shelf:
         code = run.__code__
         entry = _key(self._toolchain, self.program, self.method, tests, values,
                      code.co_code, repr(code.co_consts), code.co_names)
-        if not sealed_cache.write_marshalled(f"{entry}.rec", entry, MAGIC, code, plain):
+        if not sealed_cache.write_marshalled(f"{entry}.rec", entry, MAGIC, code, plain, getattr(run, "text", "")):
             return
         records = [record for record in self._read_index() if record[2] != entry] + [(tests, values, entry)]
         self._index = records[-KEPT:]

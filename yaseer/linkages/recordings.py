@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import re
 
+from yaseer.linkages.straight_line import accelerated
 from yaseer.linkages.tracing import Retrace
 
 TYPE_CHECKING = False
@@ -62,20 +63,22 @@ class Recordings:
 
     def add(self, run, tests: tuple[str, ...], machine) -> None:
         """Add the compiled path ``run`` whose input guards test ``tests``; the
-        call on ``machine`` that was recorded takes it.
+        call on ``machine`` that was recorded takes it.  Its calls run its program of double
+        operations once it has been taken a few times (:func:`straight_line.accelerated`).
 
         The key holds only the tests on which the paths differ (a test every path
         passes alike chooses nothing and would cost every call its reading)."""
-        self._paths.append(run)
+        added = accelerated(run, getattr(run, "text", ""))
+        self._paths.append(added)
         self._tests += [test for test in tests if test not in self._tests]
         every = self._compile(self._tests)
-        self._outcomes = [self._outcome(every, machine if path is run else None, k)
+        self._outcomes = [self._outcome(every, machine if path is added else None, k)
                           for k, path in enumerate(self._paths)]
         self._choose()
 
     def withdraw(self, run) -> None:
         """Take back the path ``run`` (one added for a call whose inputs it did not hold for)."""
-        index = self._paths.index(run)
+        index = next(k for k, path in enumerate(self._paths) if path is run or getattr(path, "fallback", None) is run)
         del self._paths[index], self._outcomes[index]
         self._choose()
 

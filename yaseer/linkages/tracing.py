@@ -155,7 +155,7 @@ class Recorder:
         where computing them could raise nothing (:func:`_without_dead_lines`), a value
         used once is computed where it is used (:func:`_fused`), and the values share a
         few variables (:func:`_registers`: a frame of hundreds of locals costs every
-        call its clearing)."""
+        call its clearing).  The function's ``text`` is its Python text."""
         lines = _batched_finite_guards(_batched_reads(_float_parts(_once(self.lines) + epilogue, self.names),
                                                       _SUBTRACTED if plain_numbers else _CONVERTED))
         if plain_numbers:  # a scalar read as an element is (float() is a call)
@@ -168,7 +168,9 @@ class Recorder:
                 + f"  except {refused}:\n    raise _Retrace from None\n")
         names = namespace(self.names)
         exec(compile(text, f"<traced {label}>", "exec"), names)
-        return names["run"]
+        run = names["run"]
+        run.text = text  # what straight_line translates (and the on-disk cache keeps)
+        return run
 
 
 # what a machine without a dialect (a stand-in with arrays and scalars alone) holds: plain numbers
