@@ -473,6 +473,27 @@ def test_a_complex_constant_keeps_the_signs_of_its_zeros():
             [math.copysign(1.0, part) for part in (product.value.real, product.value.imag)], constant
 
 
+@pytest.mark.parametrize("operation", ["x + 0.0", "0.0 + x", "x + 0", "x - -0.0", "x * 1.0", "1.0 * x", "x / 1.0",
+                                       "x - 0.0", "z * 1.0", "1.0 * z", "z + 0.0", "z - 0.0", "z / 1.0"])
+def test_an_operation_left_out_as_an_identity_is_one_for_every_later_value(operation):
+    # recorded on x = 1.5 (z = x + 2j), the record is run on -0.0 and on infinities: it must give
+    # what Python gives for each (x + 0.0 is +0.0 for x = -0.0; z * 1.0 is NaN for an infinite part)
+    recorder = Recorder()
+    x = recorder.read(1.5, "float(_M[0])")
+    z = x + 2j
+    result = eval(operation, {"x": x, "z": z})
+    run = recorder.compile([f"_done({recorder.operand(result)})"], "test")
+    for value in (-0.0, 0.0, math.inf, -math.inf, 2.5):
+        done = []
+        run.__globals__["_done"] = done.append
+        run([value])
+        expected = eval(operation, {"x": value, "z": value + 2j})
+        assert repr(done[0]) == repr(expected), (operation, value)
+        parts = (expected.real, expected.imag) if isinstance(expected, complex) else (expected,)
+        got = (done[0].real, done[0].imag) if isinstance(done[0], complex) else (done[0],)
+        assert [math.copysign(1.0, part) for part in got] == [math.copysign(1.0, part) for part in parts]
+
+
 def test_the_key_function_gives_the_values_of_its_tests_as_written():
     # compile_key reads each element once and writes a test of a float as the comparison it
     # is; the values must be those of the tests' own texts, element by element, on any input

@@ -465,10 +465,19 @@ def _value(x):
     return x.value if isinstance(x, Traced) else x
 
 
-# Operations whose result is the traced operand itself (equal as a number; only
-# the sign of a zero may differ): x * 1, x / 1, x + 0, x - 0 (and 1 * x, 0 + x).
-_IDENTITIES = {("*", 1.0), ("/", 1.0), ("+", 0.0), ("-", 0.0)}
-_LEFT_IDENTITIES = {("*", 1.0), ("+", 0.0)}
+# Operations whose result is the traced float itself, bit for bit, whatever it holds at a later
+# call: x * 1, x / 1, x - 0 (a positive zero) and 1 * x.  Not x + 0 nor 0 + x (-0.0 + 0.0 is
+# +0.0), nor x - (-0.0), nor any of a complex number (its zero parts' signs change, and an
+# infinite part times the 0.0 of 1's imaginary part is NaN).
+_IDENTITIES = {("*", 1.0), ("/", 1.0), ("-", 0.0)}
+_LEFT_IDENTITIES = {("*", 1.0)}
+
+
+def _identity(value, symbol: str, other, identities) -> bool:
+    """Whether ``value <symbol> other`` (or ``other <symbol> value``) is ``value`` itself for
+    every float ``value`` (see :data:`_IDENTITIES`)."""
+    return (type(value) is float and type(other) in (int, float) and (symbol, other) in identities
+            and math.copysign(1.0, other) > 0)
 
 
 _COMPARISONS = {"<", "<=", ">", ">=", "==", "!="}
@@ -478,7 +487,7 @@ def _binary(symbol: str, operation):
     def forward(self, other):
         if isinstance(other, (Traced, *_LITERALS)):
             value = operation(self.value, _value(other))
-            if type(other) in (int, float) and (symbol, other) in _IDENTITIES:
+            if _identity(self.value, symbol, other, _IDENTITIES):
                 return self
             if symbol == "*" and type(other) is float and other == -1.0 and type(self.value) is float:
                 return -self  # x * -1.0 is -x for a float (not for a complex: its zero parts' signs)
@@ -494,7 +503,7 @@ def _binary(symbol: str, operation):
     def backward(self, other):
         if isinstance(other, _LITERALS):
             value = operation(other, self.value)
-            if type(other) in (int, float) and (symbol, other) in _LEFT_IDENTITIES:
+            if _identity(self.value, symbol, other, _LEFT_IDENTITIES):
                 return self
             if symbol == "*" and type(other) is float and other == -1.0 and type(self.value) is float:
                 return -self
