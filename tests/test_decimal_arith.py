@@ -226,6 +226,15 @@ def test_the_casio_range_ends_below_1e100_and_starts_at_1e_99():
         run("10 X = 9.99999999999E+99 * 10\n")
 
 
+def test_a_result_is_rounded_to_twelve_digits_before_the_range_takes_it():
+    # the exact product 9.99999999999E-100 has 12 digits and lies below 1E-99: 0, as the quotient of
+    # the same 12-digit value is; 1.00000000000181E-99 rounds to 1E-99 and stays
+    assert run("10 PRINT 3E-50 * 3.33333333333E-50; 1E-99 / 1.00000000001; -3E-50 * 3.33333333333E-50\n") == \
+        " 0  0  0 \n"
+    assert run("10 PRINT 3.16227766017E-50 ^ 2; 3.16227766016E-50 ^ 2\n") == " 1E-99  0 \n"
+    assert D.multiply(3e-50, 3.33333333333e-50) == 0.0 and D.multiply(5e-50, 2e-50) == 1e-99
+
+
 def test_pi_inside_has_eleven_digits():
     """PI.md: 3.1415926536 inside, 3.141592654 on the display."""
     assert run("10 PRINT PI; PI - 3.1415926536; PI * 1E10 - 31415926536\n") == " 3.141592654  0  0 \n"

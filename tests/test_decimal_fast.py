@@ -26,8 +26,10 @@ from yaseer.basic.errors import BasicError
 
 fast = pytest.importorskip("yaseer.basic.arithmetic._decimal_fast")
 
-REFERENCE = Context(prec=12, rounding=ROUND_HALF_UP, Emax=99, Emin=-99, traps=[DecimalOverflow])
-EVEN = Context(prec=12, rounding=ROUND_HALF_EVEN, Emax=99, Emin=-99, traps=[DecimalOverflow])
+# 12 digits wherever the result lies, then the range (reference() makes one below 1E-99 0): Emin far
+# below -99, or the decimal module rounds a result under 1E-99 to fewer digits first
+REFERENCE = Context(prec=12, rounding=ROUND_HALF_UP, Emax=99, Emin=-999, traps=[DecimalOverflow])
+EVEN = Context(prec=12, rounding=ROUND_HALF_EVEN, Emax=99, Emin=-999, traps=[DecimalOverflow])
 OPERATIONS = {"add": "add", "subtract": "subtract", "multiply": "multiply", "divide": "divide"}
 
 

@@ -29,7 +29,12 @@ from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, ILLEGAL_FUNCTION_C
 
 DIGITS = 12  # inside; the display shows 10 (formatting.number_to_text)
 SMALLEST = Decimal("1E-99")  # below it in size a result is 0 (the specifications' range)
-CONTEXT = Context(prec=DIGITS, rounding=ROUND_HALF_UP, Emax=99, Emin=-99,
+# Emin far below the range: a result is rounded to 12 digits first, wherever it lies, and then
+# a result below 1E-99 is 0 (_checked), as a 12-digit mantissa with an exponent from -99 has it.
+# With Emin=-99 the decimal module would round a result under 1E-99 to fewer digits (a
+# subnormal, at a fixed 1E-110): 3E-50 * 3.33333333333E-50, 9.99999999999E-100 in 12 digits,
+# became 1E-99 where a quotient of the same 12-digit value became 0.
+CONTEXT = Context(prec=DIGITS, rounding=ROUND_HALF_UP, Emax=99, Emin=-999,
                   traps=[DecimalOverflow])
 _WIDE = Context(prec=25, rounding=ROUND_HALF_UP)  # trig is computed with 12 guard digits
 _PI = Decimal("3.14159265358979323846264338327950288")
