@@ -342,3 +342,23 @@ def test_a_listing_taking_a_path_often_runs_its_program_and_prints_what_python_p
         else:
             assert not any(hasattr(path, "state") for path in paths)
     assert printed[True] == printed[False] and printed[True].strip()
+
+
+def test_ctrl_c_during_the_translation_is_raised_and_the_path_is_translated_later():
+    run = FUNCTIONS["v0 + v1"]
+    parts = translate(run.text, run.__globals__, fast.OPERATIONS)
+    attempts = []
+
+    def translation():
+        attempts.append(1)
+        if len(attempts) == 1:
+            raise KeyboardInterrupt
+        return parts
+
+    path = fast.Path(run, translation, 0)
+    with pytest.raises(KeyboardInterrupt):
+        path(Stand({"X": [0.5, 0.25], "Y": [0.0, 0.0]}, {}))
+    assert path.state == "warming" and path.error is None
+    stand = Stand({"X": [0.5, 0.25], "Y": [0.0, 0.0]}, {})
+    path(stand)
+    assert path.state == "running" and path.counts == (1, 0) and stand.arrays["Y"] == [0.75, -0.75]

@@ -501,7 +501,10 @@ path_call(PathObject *self, PyObject *args, PyObject *kwargs)
             self->warm--;
             return PyObject_CallOneArg(self->fallback, m);
         }
-        self->state = load(self) == 0 ? RUNNING : PLAIN;
+        int loaded = load(self);
+        if (loaded == -2)
+            return NULL;  /* a KeyboardInterrupt during the translation: raised; translated at a later call */
+        self->state = loaded == 0 ? RUNNING : PLAIN;
         Py_CLEAR(self->translate);
     }
     if (self->state != RUNNING || self->busy)
@@ -694,7 +697,8 @@ names_tuple(PyObject *value, PyObject **out)
 }
 
 /* The program the translation gives, checked as a whole: 0 loaded, -1 none (no program, or a
-   damaged one: the fallback runs every call; any error is cleared). */
+   damaged one: the fallback runs every call; the error is cleared), -2 the translation was
+   interrupted (KeyboardInterrupt and the like stay raised). */
 static int
 load(PathObject *self)
 {
@@ -704,6 +708,12 @@ load(PathObject *self)
     static const char *keys[] = {"code", "extra", "registers", "arrays", "scalars", "quadrants", "plain_numbers"};
     PyObject *values[7];
     int k;
+    PyMem_Free(self->code);  /* (a translation interrupted before may have filled some) */
+    PyMem_Free(self->extra);
+    PyMem_Free(self->registers);
+    PyMem_Free(self->quadrants);
+    self->code = self->extra = NULL;
+    self->registers = self->quadrants = NULL;
     if (parts == NULL || parts == Py_None || !PyDict_Check(parts))
         goto fail;
     for (k = 0; k < 7; k++) {
@@ -733,6 +743,8 @@ load(PathObject *self)
     return 0;
 fail:
     Py_XDECREF(parts);
+    if (PyErr_Occurred() && !PyErr_ExceptionMatches(PyExc_Exception))
+        return -2;  /* KeyboardInterrupt, SystemExit: not the translation's failure, the caller's to raise */
     if (PyErr_Occurred()) {
         /* kept for the tests (Path.error); a run goes on with the fallback */
         PyObject *type, *value, *traceback;
