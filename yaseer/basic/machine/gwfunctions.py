@@ -181,10 +181,36 @@ def _signed_zero(x: float, size: int) -> bytes:
     return bytes(size - 2) + b"\x80\x00"
 
 
+class HeldBytes(float):
+    """A zero single or double whose other bytes are not a zero's: an exponent byte of 0 with
+    mantissa bytes set, as CVS/CVD of any string or GET into a ``!`` or ``#`` array makes one.
+    GW-BASIC keeps a variable's bytes as they came (CVS moves them into the accumulator,
+    MATH1.ASM ``$FCVS``... an assignment copies them; GENGRP.ASM's GET writes the pixels'
+    bytes into the array), and its arithmetic reads an exponent byte of 0 as 0 (``$FADDS``,
+    ``$FOUT``...): the value is 0 (the sign bit's zero as :func:`_from_mbf` gives it) and MKS$,
+    MKD$, PUT and PEEK give the bytes back (``raw``)."""
+
+    __slots__ = ("raw",)
+
+    def __new__(cls, value: float, raw: bytes):
+        held = super().__new__(cls, value)
+        held.raw = raw
+        return held
+
+
+def _zero_of(data: bytes) -> float:
+    """The zero of bytes ``data`` whose exponent byte is 0 (the sign bit kept: CVS of MKS$(-Z!)):
+    a plain zero where they are a zero's bytes, else a :class:`HeldBytes` keeping them."""
+    zero = -0.0 if data[-2] & 0x80 else 0.0
+    if data == _signed_zero(zero, len(data)):
+        return zero
+    return HeldBytes(zero, bytes(data))
+
+
 def _from_mbf(data: bytes) -> float:
     exponent = data[-1]
-    if exponent == 0:  # zero, whatever the mantissa; the sign bit kept (CVS of MKS$(-Z!))
-        return -0.0 if data[-2] & 0x80 else 0.0
+    if exponent == 0:  # zero, whatever the mantissa (its bytes kept)
+        return _zero_of(data)
     bits = 8 * (len(data) - 1)
     mantissa = int.from_bytes(data[:-1], "little")
     negative = mantissa >> (bits - 1)
@@ -194,11 +220,15 @@ def _from_mbf(data: bytes) -> float:
 
 
 def mks(x: float) -> str:
+    if type(x) is HeldBytes and len(x.raw) == 4:
+        return _bytes_to_str(x.raw)
     return _bytes_to_str(_to_mbf(x, 24))
 
 
 def mkd(x: float) -> str:
     """MKD$: the 8 bytes of a double (a Wide's own 56 bits; -0.0's sign: :func:`_signed_zero`)."""
+    if type(x) is HeldBytes and len(x.raw) == 8:
+        return _bytes_to_str(x.raw)
     if x == 0:
         return _bytes_to_str(_signed_zero(x, 8))
     return _bytes_to_str(mbf_double.to_bytes(values.double_parts(x)))
@@ -211,8 +241,8 @@ def cvs(s: str) -> float:
 def cvd(s: str) -> float:
     """CVD: the double of 8 bytes, all 56 bits of it (a Wide where a float cannot hold them)."""
     data = _str_to_bytes(s, 8)
-    if not data[7]:  # zero, its sign kept (as _from_mbf)
-        return -0.0 if data[6] & 0x80 else 0.0
+    if not data[7]:  # zero, its sign and bytes kept (as _from_mbf)
+        return _zero_of(data)
     return values.double_of(mbf_double.from_bytes(data))
 
 
