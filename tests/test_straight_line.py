@@ -29,7 +29,8 @@ fast = pytest.importorskip("yaseer.linkages._straight_fast", reason="the C accel
 from yaseer.linkages.path_translation import translate  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent / "benchmarks"))
-from percall import CRANK, INPUTS, mix_listing  # noqa: E402
+from percall import CRANK, INPUTS, machine_for, mix_listing  # noqa: E402
+from test_binding_mixes import no_kept_paths  # noqa: E402,F401  (each test records its paths afresh)
 
 if straight_line._module() is None:
     pytest.skip("the accelerator is not used on this Python", allow_module_level=True)
@@ -100,15 +101,10 @@ def same_or_refused(run, program, arrays, scalars) -> bool:
 # -- the library programs' paths ------------------------------------------------------------------
 
 def machine(number: int, z: float, q: float) -> Machine:
-    m = Machine(screen=io.StringIO())
-    binding.install(m)
-    for name, elements in INPUTS[number].items():
-        for index, value in elements.items():
-            m.array(name)[index] = float(value)
+    m = machine_for(number)
     if number != 5:
         m.array("Z")[number] = float(z)
         m.array("Q")[number] = float(q)
-        m.set_scalar("G", 9.81)
     return m
 
 
@@ -127,16 +123,6 @@ def recorded_path(number: int, z: float, q: float):
 
 SPECIAL = [0.0, -0.0, 1e-310, -1e-310, 1e300, -1e300, math.inf, -math.inf, math.nan, 90.0, 180.0, 270.0,
            360.0, -90.0, 1.0, -1.0, 5e-324, 2.0 ** 1023]
-
-
-@pytest.fixture(autouse=True)
-def no_kept_paths(monkeypatch):
-    monkeypatch.setenv("YASEER_CACHE_DIR", "")
-    binding._recordings.clear()
-    binding._calls.clear()
-    yield
-    binding._recordings.clear()
-    binding._calls.clear()
 
 
 @pytest.mark.parametrize("number,z,q", [(1, 2.0, 1), (1, 0.0, 3), (2, 2.0, 1), (2, 2.0, 2), (2, 2.0, 3), (2, 2.0, 4),

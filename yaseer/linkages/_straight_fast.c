@@ -622,55 +622,53 @@ check_program(PathObject *self)
     return 0;
 }
 
+/* One part's item as an int below a bound (fill's ``ints``) or a double (``ints`` NULL): 0, or -1
+   with an error set. */
 static int
-fill_ints(PyObject *sequence, int **out, Py_ssize_t *count, long below)
+item_of(PyObject *item, long below, int *ints, double *doubles)
 {
-    Py_ssize_t k, n;
-    PyObject *fast = PySequence_Fast(sequence, "a recorded path's program part must be a sequence");
-    if (fast == NULL)
-        return -1;
-    n = PySequence_Fast_GET_SIZE(fast);
-    *out = PyMem_Malloc((n ? n : 1) * sizeof(int));
-    if (*out == NULL) {
-        Py_DECREF(fast);
-        PyErr_NoMemory();
-        return -1;
-    }
-    for (k = 0; k < n; k++) {
-        int value = small_int(PySequence_Fast_GET_ITEM(fast, k), below);
-        if (value < 0) {
-            Py_DECREF(fast);
+    if (ints != NULL) {
+        int value = small_int(item, below);
+        if (value < 0)
             return -1;
-        }
-        (*out)[k] = value;
+        *ints = value;
+        return 0;
     }
-    *count = n;
-    Py_DECREF(fast);
+    if (!PyFloat_CheckExact(item)) {
+        PyErr_SetString(PyExc_TypeError, "a recorded path's numbers must be floats");
+        return -1;
+    }
+    *doubles = PyFloat_AS_DOUBLE(item);
     return 0;
 }
 
+/* A part of a program, a sequence, as a new array of ints (``ints``, each below ``below``) or of
+   doubles (``doubles``): 0, or -1 with an error set. */
 static int
-fill_doubles(PyObject *sequence, double **out, Py_ssize_t *count)
+fill(PyObject *sequence, int **ints, double **doubles, Py_ssize_t *count, long below)
 {
     Py_ssize_t k, n;
+    void *out;
     PyObject *fast = PySequence_Fast(sequence, "a recorded path's program part must be a sequence");
     if (fast == NULL)
         return -1;
     n = PySequence_Fast_GET_SIZE(fast);
-    *out = PyMem_Calloc(n ? n : 1, sizeof(double));
-    if (*out == NULL) {
+    out = PyMem_Calloc(n ? n : 1, ints != NULL ? sizeof(int) : sizeof(double));
+    if (out == NULL) {
         Py_DECREF(fast);
         PyErr_NoMemory();
         return -1;
     }
+    if (ints != NULL)
+        *ints = out;
+    else
+        *doubles = out;
     for (k = 0; k < n; k++) {
-        PyObject *item = PySequence_Fast_GET_ITEM(fast, k);
-        if (!PyFloat_CheckExact(item)) {
+        if (item_of(PySequence_Fast_GET_ITEM(fast, k), below, ints != NULL ? (int *)out + k : NULL,
+                    ints != NULL ? NULL : (double *)out + k) < 0) {
             Py_DECREF(fast);
-            PyErr_SetString(PyExc_TypeError, "a recorded path's numbers must be floats");
             return -1;
         }
-        (*out)[k] = PyFloat_AS_DOUBLE(item);
     }
     *count = n;
     Py_DECREF(fast);
@@ -725,11 +723,11 @@ load(PathObject *self)
     if (plain_numbers < 0)
         goto fail;
     self->plain_numbers = plain_numbers;
-    if (fill_ints(values[0], &self->code, &code_ints, 1L << 30) < 0
-        || fill_ints(values[1], &self->extra, &self->extra_length, 1L << 30) < 0
-        || fill_doubles(values[2], &self->registers, &self->register_count) < 0
+    if (fill(values[0], &self->code, NULL, &code_ints, 1L << 30) < 0
+        || fill(values[1], &self->extra, NULL, &self->extra_length, 1L << 30) < 0
+        || fill(values[2], NULL, &self->registers, &self->register_count, 0) < 0
         || names_tuple(values[3], &self->arrays) < 0 || names_tuple(values[4], &self->scalars) < 0
-        || fill_doubles(values[5], &self->quadrants, &self->quadrant_count) < 0)
+        || fill(values[5], NULL, &self->quadrants, &self->quadrant_count, 0) < 0)
         goto fail;
     if (code_ints % WIDTH || self->quadrant_count % 3 || PyTuple_GET_SIZE(self->arrays) > 64) {
         PyErr_SetString(PyExc_ValueError, "a recorded path's program has a part of the wrong size");
