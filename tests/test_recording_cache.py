@@ -248,3 +248,47 @@ def test_a_run_without_a_cache_keeps_nothing(tmp_path, monkeypatch):
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
     assert run_example(2) == (ROOT / "tests" / "golden" / "example2.txt").read_text()
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_translated_program_is_kept_and_a_later_run_runs_it_from_the_first_call(cache, compiled, monkeypatch):
+    """A path taken more than straight_line.WARM times is translated once (the program of double
+    operations of linkages/_straight_fast.c) and the program kept: a new process's first call of the
+    path runs it, translating nothing, and prints what the run without any cache printed; a damaged
+    kept program is not used (its seal), and the path is translated again."""
+    from yaseer.linkages import path_translation, straight_line
+
+    if straight_line._module() is None:
+        pytest.skip("the C accelerator is not built here: no program to keep")
+    calls = 2 * straight_line.WARM
+    listing = (
+        "10 L(10)=1: L(11)=1.2: L(12)=.3: L(13)=1: L(14)=.8: T(11)=20: W(5)=4: A(5)=-1: D(2)=.1: E(2)=.2\n"
+        f"20 FOR K=1 TO {calls}: T(12)=K*7.3: GOSUB PROG 2: S=S+T(13)+W(7)+A(6): NEXT K\n30 PRINT S\n")
+    monkeypatch.setenv("YASEER_CACHE_DIR", "")
+    new_process()
+    expected = yaseer.run(listing).text
+    translated: list = []
+    translate = path_translation.translate
+
+    def counting(*args):
+        translated.append(1)
+        return translate(*args)
+
+    monkeypatch.setattr(path_translation, "translate", counting)
+    monkeypatch.setenv("YASEER_CACHE_DIR", str(cache))
+    new_process()
+    assert yaseer.run(listing).text == expected
+    assert translated == [1]  # the one path, translated once
+    new_process()
+    translated.clear()
+    assert yaseer.run(listing).text == expected and not translated
+    path = binding._recordings[(2, None)]._paths[0]
+    assert path.state == "running" and path.counts[0] == calls - 1  # every call but the recorded one
+    programs = [kept for kept in cache.glob("*.rec")
+                if sealed_cache.read_marshalled(kept.name, kept.stem, recording_cache.MAGIC) is not None
+                and type(sealed_cache.read_marshalled(kept.name, kept.stem, recording_cache.MAGIC)[0]) is dict]
+    assert len(programs) == 1
+    damaged = bytearray(programs[0].read_bytes())
+    damaged[-5] ^= 0x40
+    programs[0].write_bytes(bytes(damaged))
+    new_process()
+    assert yaseer.run(listing).text == expected and translated == [1]

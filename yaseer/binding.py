@@ -303,7 +303,7 @@ def _call_program(machine, number: int, method: str | None) -> _Frame | None:
 
         shelf = _shelf(number, method)
         if shelf is not None:
-            recordings = _recordings.setdefault(key, Recordings(shelf.compile_key))
+            recordings = _recordings.setdefault(key, Recordings(shelf.compile_key, shelf))
             if shelf.take(recordings, machine):
                 return None
         if calls > 1 or shelf is not None:
@@ -318,7 +318,7 @@ def _call_program(machine, number: int, method: str | None) -> _Frame | None:
             else:
                 plain = frame.plain()
                 run, tests = frame.recorded()
-                _recordings.setdefault(key, Recordings()).add(run, tests, machine)
+                _recordings.setdefault(key, Recordings(programs=shelf)).add(run, tests, machine)
                 if shelf is not None:
                     shelf.keep(run, tests, machine)
                 return plain

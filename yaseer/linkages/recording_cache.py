@@ -19,7 +19,11 @@ their values at the call recorded, :meth:`tracing.Recorder.keys`) and its code. 
 and values, newest last, at most :data:`KEPT`.  A call that no path of this process holds for
 evaluates each kept path's tests on its inputs; a path whose values match is loaded and tried.
 
-Both kinds of file are sealed entries of the private cache directory
+A path's translated program (:mod:`yaseer.linkages.straight_line`), once it was taken often
+enough to be translated, is kept too, keyed on the toolchain, the path's text, the numbers it binds
+and the accelerator's instruction numbers: a later run runs it from the path's first call.
+
+Every kind of file is a sealed entry of the private cache directory
 (:mod:`yaseer.sealed_cache`): the hash is checked before :mod:`marshal` reads a byte, so a
 damaged or foreign file is never loaded and the path is recorded again (and kept anew).
 """
@@ -183,6 +187,27 @@ class Shelf:
         run = FunctionType(code, names)
         run.text = text  # (straight_line translates it)
         return run
+
+    def _program_key(self, text: str, names: dict, operations: dict) -> str:
+        """The entry of the program of a path's ``text`` with the numbers ``names`` binds (its
+        constants are in the program's registers) and the accelerator's ``operations``."""
+        numbers = tuple(sorted((name, repr(value)) for name, value in names.items() if type(value) in _NUMBERS))
+        return _key(self._toolchain, "program", text, numbers, tuple(sorted(operations.items())))
+
+    def kept_program(self, text: str, names: dict, operations: dict) -> dict | None:
+        """The kept program (:mod:`yaseer.linkages.path_translation`) of a path's ``text``, or None
+        (the accelerator checks a program whole before it runs one)."""
+        if sealed_cache.private_dir() is None:
+            return None
+        entry = self._program_key(text, names, operations)
+        stored = sealed_cache.read_marshalled(f"{entry}.rec", entry, MAGIC)
+        return stored[0] if stored is not None and len(stored) == 1 and type(stored[0]) is dict else None
+
+    def keep_program(self, text: str, names: dict, operations: dict, program: dict) -> None:
+        """Keep a path's translated ``program`` (failures are ignored: it is only not kept)."""
+        if sealed_cache.private_dir() is not None:
+            entry = self._program_key(text, names, operations)
+            sealed_cache.write_marshalled(f"{entry}.rec", entry, MAGIC, program)
 
     def keep(self, run, tests: tuple, machine) -> None:
         """Keep the path ``run`` just recorded for the call on ``machine`` (its outputs not yet

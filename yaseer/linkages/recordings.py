@@ -46,10 +46,12 @@ def _no_key(machine) -> tuple:
 
 class Recordings:
     """The compiled paths of one program (``len``: how many) and the key that picks one;
-    ``compiler``: what compiles a key function (default :func:`compile_key`)."""
+    ``compiler``: what compiles a key function (default :func:`compile_key`); ``programs``: where
+    the paths' translated programs are kept (:func:`straight_line.accelerated`; None: nowhere)."""
 
-    def __init__(self, compiler: Callable | None = None) -> None:
+    def __init__(self, compiler: Callable | None = None, programs=None) -> None:
         self._compile = compiler or compile_key
+        self._programs = programs
         self._paths: list = []
         self._tests: list[str] = []  # every input guard's test, of every path
         self._outcomes: list[tuple] = []  # per path: the tests' values for the call recorded
@@ -68,7 +70,7 @@ class Recordings:
 
         The key holds only the tests on which the paths differ (a test every path
         passes alike chooses nothing and would cost every call its reading)."""
-        added = accelerated(run, getattr(run, "text", ""))
+        added = accelerated(run, getattr(run, "text", ""), self._programs)
         self._paths.append(added)
         self._tests += [test for test in tests if test not in self._tests]
         every = self._compile(self._tests)

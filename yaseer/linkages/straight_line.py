@@ -27,7 +27,8 @@ import sys
 
 # Calls of a path run by its Python function before it is translated.  A translation costs about
 # 10 ms, the time of 400-500 calls of a path of Program 2's: a run taking a path a few dozen times
-# (each of the paper's examples) never pays it, one taking it hundreds of times pays it once.
+# (each of the paper's examples) never pays it; one taking it more pays it once, and with the
+# on-disk cache once for good (the program is kept: a later run runs it from the first call).
 WARM = 64
 PURE_PYTHON = "YASEER_PURE_PYTHON"  # set (not "" or "0"): the C accelerators are left unused
 
@@ -45,19 +46,30 @@ def _module():
     return _straight_fast
 
 
-def accelerated(run, text: str):
+def accelerated(run, text: str, programs=None):
     """``run`` (a path's Python function, of the Python text ``text``) as it runs from now on: the
     accelerator's Path, which calls ``run`` for :data:`WARM` calls, then translates ``text`` once
     and runs its program wherever the accelerator accepts the inputs (``run`` for all others, and
-    for every call when the text cannot be translated); ``run`` itself where there is no accelerator."""
+    for every call when the text cannot be translated); ``run`` itself where there is no accelerator.
+
+    ``programs``: where translated programs are kept between runs (``kept_program(text, names,
+    operations)`` gives a kept one or None, ``keep_program(text, names, operations, program)``
+    keeps one: :class:`yaseer.linkages.recording_cache.Shelf`); a path whose program is kept runs
+    it from its first call, and a translation is kept there."""
     module = _module()
     if module is None or not text:
         return run
-    names = run.__globals__
+    names, operations = run.__globals__, module.OPERATIONS
+    kept = programs.kept_program(text, names, operations) if programs is not None else None
+    if kept is not None:
+        return module.Path(run, lambda: kept, 0)
 
     def translation():
         from yaseer.linkages.path_translation import translate  # (a run that translates imports ast)
 
-        return translate(text, names, module.OPERATIONS)
+        program = translate(text, names, operations)
+        if program is not None and programs is not None:
+            programs.keep_program(text, names, operations, program)
+        return program
 
     return module.Path(run, translation, WARM)
