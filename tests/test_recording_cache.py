@@ -254,7 +254,7 @@ def test_a_translated_program_is_kept_and_a_later_run_runs_it_from_the_first_cal
     """A path taken more than straight_line.WARM times is translated once (the program of double
     operations of linkages/_straight_fast.c) and the program kept: a new process's first call of the
     path runs it, translating nothing, and prints what the run without any cache printed; a damaged
-    kept program is not used (its seal), and the path is translated again."""
+    entry is not used (its seal): the path is recorded and translated again."""
     from yaseer.linkages import path_translation, straight_line
 
     if straight_line._module() is None:
@@ -283,12 +283,27 @@ def test_a_translated_program_is_kept_and_a_later_run_runs_it_from_the_first_cal
     assert yaseer.run(listing).text == expected and not translated
     path = binding._recordings[(2, None)]._paths[0]
     assert path.state == "running" and path.counts[0] == calls - 1  # every call but the recorded one
-    programs = [kept for kept in cache.glob("*.rec")
-                if sealed_cache.read_marshalled(kept.name, kept.stem, recording_cache.MAGIC) is not None
-                and type(sealed_cache.read_marshalled(kept.name, kept.stem, recording_cache.MAGIC)[0]) is dict]
-    assert len(programs) == 1
+    def stored(kept):
+        return sealed_cache.read_marshalled(kept.name, kept.stem, recording_cache.MAGIC) or ()
+
+    programs = [kept for kept in cache.glob("*.rec") if len(stored(kept)) == 4 and type(stored(kept)[3]) is dict]
+    assert len(programs) == 1  # kept in the path's own entry
     damaged = bytearray(programs[0].read_bytes())
     damaged[-5] ^= 0x40
     programs[0].write_bytes(bytes(damaged))
     new_process()
     assert yaseer.run(listing).text == expected and translated == [1]
+
+
+def test_a_kept_path_whose_arrays_the_first_call_makes_is_taken_from_the_second_call(cache, compiled):
+    """The listing sets no Z(2): its first call's plain code makes the array Z, which the kept
+    path's tests read; a warm run runs that first call plainly, takes the kept path at the second,
+    and records nothing (before, it recorded the path again at its first call, every run)."""
+    listing = ("10 L(10)=1: L(11)=1.2: L(12)=.3: L(13)=1: L(14)=.8: T(11)=20: W(5)=4: A(5)=-1\n"
+               "20 FOR K=1 TO 5: T(12)=K*7.3: GOSUB PROG 2: PRINT T(13); W(7): NEXT K\n")
+    new_process()
+    cold = yaseer.run(listing).text
+    assert compiled  # recorded (and its key compiled)
+    compiled.clear()
+    new_process()
+    assert yaseer.run(listing).text == cold and not compiled

@@ -306,7 +306,9 @@ def _call_program(machine, number: int, method: str | None) -> _Frame | None:
             recordings = _recordings.setdefault(key, Recordings(shelf.compile_key, shelf))
             if shelf.take(recordings, machine):
                 return None
-        if calls > 1 or shelf is not None:
+        # a kept path whose tests read an array not made yet may hold from the next call on (the
+        # plain code's first call makes it): that call is not recorded, the next tries again
+        if calls > 1 or (shelf is not None and not shelf.unread):
             from yaseer.linkages.tracing import NotTraceable, Recorder
 
             frame = _RecordingFrame(machine, number, Recorder())

@@ -20,8 +20,9 @@ and values, newest last, at most :data:`KEPT`.  A call that no path of this proc
 evaluates each kept path's tests on its inputs; a path whose values match is loaded and tried.
 
 A path's translated program (:mod:`yaseer.linkages.straight_line`), once it was taken often
-enough to be translated, is kept too, keyed on the toolchain, the path's text, the numbers it binds
-and the accelerator's instruction numbers: a later run runs it from the path's first call.
+enough to be translated, is kept in the path's entry too, with the accelerator's instruction
+numbers it was made with: a later run loading the path runs it from the path's first call (and
+reads no other file for it).
 
 Every kind of file is a sealed entry of the private cache directory
 (:mod:`yaseer.sealed_cache`): the hash is checked before :mod:`marshal` reads a byte, so a
@@ -119,6 +120,7 @@ class Shelf:
         self._index_key = _key(self._toolchain, "index", program, method)
         self._index: list | None = None  # (tests, values, entry key), newest last
         self._keys: dict[tuple, object] = {}  # tests -> the compiled function computing their values
+        self.unread = False  # the last take could not read a kept path's tests (an array not made yet)
 
     def _read_index(self) -> list:
         stored = sealed_cache.read_marshalled(f"{self._index_key}.rec", self._index_key, MAGIC)
@@ -156,13 +158,17 @@ class Shelf:
 
     def take(self, recordings, machine) -> bool:
         """Run a kept path that holds for ``machine``'s inputs (it commits the outputs) and add it to
-        ``recordings``; False when none does (nothing changed)."""
+        ``recordings``; False when none does (nothing changed; :attr:`unread`: a kept path's tests
+        read an array the machine does not have yet, which the plain code's call may make)."""
         if sealed_cache.private_dir() is None:
             return False
         if self._index is None:
             self._index = self._read_index()
+        self.unread = False
         for tests, values, entry in reversed(self._index):
-            if self._values(tests, machine) != values:
+            now = self._values(tests, machine)
+            self.unread = self.unread or now is None
+            if now != values:
                 continue
             run = self._load(entry)
             if run is None:
@@ -175,9 +181,10 @@ class Shelf:
 
     def _load(self, entry: str):
         stored = sealed_cache.read_marshalled(f"{entry}.rec", entry, MAGIC)
-        if stored is None or len(stored) != 3 or type(stored[0]) is not CodeType or type(stored[2]) is not str:
+        if (stored is None or len(stored) not in (3, 4) or type(stored[0]) is not CodeType
+                or type(stored[2]) is not str):
             return None
-        code, plain, text = stored
+        code, plain, text = stored[:3]
         try:
             names = restored(plain, self.provided)
         except (ValueError, TypeError):
@@ -186,28 +193,31 @@ class Shelf:
             return None
         run = FunctionType(code, names)
         run.text = text  # (straight_line translates it)
+        run.kept = (entry, plain)  # where keep_program adds its program
+        if len(stored) == 4 and type(stored[3]) is dict:
+            run.program = stored[3]
         return run
 
-    def _program_key(self, text: str, names: dict, operations: dict) -> str:
-        """The entry of the program of a path's ``text`` with the numbers ``names`` binds (its
-        constants are in the program's registers) and the accelerator's ``operations``."""
-        numbers = tuple(sorted((name, repr(value)) for name, value in names.items() if type(value) in _NUMBERS))
-        return _key(self._toolchain, "program", text, numbers, tuple(sorted(operations.items())))
-
-    def kept_program(self, text: str, names: dict, operations: dict) -> dict | None:
-        """The kept program (:mod:`yaseer.linkages.path_translation`) of a path's ``text``, or None
-        (the accelerator checks a program whole before it runs one)."""
-        if sealed_cache.private_dir() is None:
+    @staticmethod
+    def kept_program(run, operations: dict) -> dict | None:
+        """The program (:mod:`yaseer.linkages.path_translation`) kept with the path ``run``, made
+        with the accelerator's instruction numbers ``operations``, or None (the accelerator
+        checks a program whole before it runs one)."""
+        program = getattr(run, "program", None)
+        if program is None or program.get("operations") != tuple(sorted(operations.items())):
             return None
-        entry = self._program_key(text, names, operations)
-        stored = sealed_cache.read_marshalled(f"{entry}.rec", entry, MAGIC)
-        return stored[0] if stored is not None and len(stored) == 1 and type(stored[0]) is dict else None
+        return program
 
-    def keep_program(self, text: str, names: dict, operations: dict, program: dict) -> None:
-        """Keep a path's translated ``program`` (failures are ignored: it is only not kept)."""
-        if sealed_cache.private_dir() is not None:
-            entry = self._program_key(text, names, operations)
-            sealed_cache.write_marshalled(f"{entry}.rec", entry, MAGIC, program)
+    @staticmethod
+    def keep_program(run, operations: dict, program: dict) -> None:
+        """Keep the translated ``program`` with the path ``run`` (its entry written again with it;
+        a path not kept, or a failure: it is only not kept)."""
+        kept = getattr(run, "kept", None)
+        if kept is None or sealed_cache.private_dir() is None:
+            return
+        entry, plain = kept
+        program = dict(program, operations=tuple(sorted(operations.items())))
+        sealed_cache.write_marshalled(f"{entry}.rec", entry, MAGIC, run.__code__, plain, run.text, program)
 
     def keep(self, run, tests: tuple, machine) -> None:
         """Keep the path ``run`` just recorded for the call on ``machine`` (its outputs not yet
@@ -221,6 +231,7 @@ class Shelf:
                      code.co_code, repr(code.co_consts), code.co_names)
         if not sealed_cache.write_marshalled(f"{entry}.rec", entry, MAGIC, code, plain, getattr(run, "text", "")):
             return
+        run.kept = (entry, plain)
         records = [record for record in self._read_index() if record[2] != entry] + [(tests, values, entry)]
         self._index = records[-KEPT:]
         sealed_cache.write_marshalled(f"{self._index_key}.rec", self._index_key, MAGIC, self._index)

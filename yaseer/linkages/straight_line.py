@@ -52,15 +52,15 @@ def accelerated(run, text: str, programs=None):
     and runs its program wherever the accelerator accepts the inputs (``run`` for all others, and
     for every call when the text cannot be translated); ``run`` itself where there is no accelerator.
 
-    ``programs``: where translated programs are kept between runs (``kept_program(text, names,
-    operations)`` gives a kept one or None, ``keep_program(text, names, operations, program)``
-    keeps one: :class:`yaseer.linkages.recording_cache.Shelf`); a path whose program is kept runs
-    it from its first call, and a translation is kept there."""
+    ``programs``: where translated programs are kept between runs (``kept_program(run,
+    operations)`` gives the one kept with ``run`` or None, ``keep_program(run, operations,
+    program)`` keeps one: :class:`yaseer.linkages.recording_cache.Shelf`); a path whose program is
+    kept runs it from its first call, and a translation is kept there."""
     module = _module()
     if module is None or not text:
         return run
     names, operations = run.__globals__, module.OPERATIONS
-    kept = programs.kept_program(text, names, operations) if programs is not None else None
+    kept = programs.kept_program(run, operations) if programs is not None else None
     if kept is not None:
         return module.Path(run, lambda: kept, 0)
 
@@ -69,7 +69,7 @@ def accelerated(run, text: str, programs=None):
 
         program = translate(text, names, operations)
         if program is not None and programs is not None:
-            programs.keep_program(text, names, operations, program)
+            programs.keep_program(run, operations, program)
         return program
 
     return module.Path(run, translation, WARM)
