@@ -22,20 +22,20 @@ the complex number (x, 0.0) first); on other versions nothing is translated.
 
 from __future__ import annotations
 
-import os
 import sys
+
+from yaseer.accelerators import pure_python
 
 # Calls of a path run by its Python function before it is translated.  A translation costs about
 # 10 ms, the time of 400-500 calls of a path of Program 2's: a run taking a path a few dozen times
 # (each of the paper's examples) never pays it; one taking it more pays it once, and with the
 # on-disk cache once for good (the program is kept: a later run runs it from the first call).
 WARM = 64
-PURE_PYTHON = "YASEER_PURE_PYTHON"  # set (not "" or "0"): the C accelerators are left unused
 
 
 def _module():
     """The C accelerator, or None (not built, another Python's arithmetic, or YASEER_PURE_PYTHON set)."""
-    if os.environ.get(PURE_PYTHON, "") not in ("", "0"):
+    if pure_python():
         return None
     if sys.implementation.name != "cpython" or not (3, 11) <= sys.version_info[:2] <= (3, 13):
         return None

@@ -21,8 +21,7 @@ where it is built (the same values, bit for bit), else gw_transcendental's.
 
 from __future__ import annotations
 
-import os
-
+from yaseer.accelerators import PURE_PYTHON, pure_python  # noqa: F401  (the switch of every accelerator)
 from yaseer.basic.errors import BasicError, DIVISION_BY_ZERO, OVERFLOW
 from yaseer.basic.arithmetic import values
 from yaseer.basic.arithmetic.values import DOUBLE_LARGEST, SINGLE_LARGEST
@@ -196,14 +195,6 @@ def transcendental_functions(policy: ArithmeticPolicy) -> dict:
 GW_ROUTINES = ("sin", "cos", "tan", "atn", "log", "exp", "power")
 """gw_transcendental's functions that the C accelerator (``_mbf_fast``) computes too."""
 
-PURE_PYTHON = "YASEER_PURE_PYTHON"
-"""The environment variable that, set to anything but ``""`` or ``0``, keeps the Python functions."""
-
-
-def pure_python() -> bool:
-    """Is :data:`PURE_PYTHON` set (to anything but ``""`` or ``0``), so that the optional C
-    accelerators are left unused?"""
-    return os.environ.get(PURE_PYTHON, "") not in ("", "0")
 
 
 def gw_routines() -> dict:
