@@ -120,6 +120,8 @@ python_mod(double x, double y)
     return mod;
 }
 
+static volatile double square_exponent = 2.0;
+
 /* x ** 2 of float_pow, where it gives a normal finite number without raising: 0 (refused) else 1 */
 static int
 python_square(double x, double *result)
@@ -132,7 +134,9 @@ python_square(double x, double *result)
         return 1;
     }
     errno = 0;
-    r = pow(fabs(x), 2.0);
+    /* the exponent is read at run time: a compiler turns pow(x, 2.0) into x * x, which is correctly
+       rounded where the C library's pow (Python's x ** 2) may be a unit in the last place off */
+    r = pow(fabs(x), square_exponent);
     if (errno != 0 || !isfinite(r) || fabs(r) < DBL_MIN)
         return 0;
     *result = r;
