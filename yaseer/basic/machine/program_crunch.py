@@ -85,7 +85,7 @@ def crunch_line(text: str) -> bytes:
             end = i + 1
             while end < n and upper[end] in _NAME:
                 end += 1
-            out += upper[i + 1:end].encode("ascii")  # a file's name that spells a word
+            out += text[i + 1:end].encode("ascii")  # a file's name that spells a word, its letters as the file had them
             donum = _IN_NAME
             i = end
         elif c in EXACT_MARKERS and not data and exact_constant(upper, i) is not None:

@@ -173,7 +173,7 @@ def _line_text(body: bytes, i: int, exact: bool = False) -> tuple[str, int]:
             if i < n and (_alnum(chr(body[i])) or body[i] == ord(".")):
                 out.append(" ")  # (as after any keyword: the name after it kept apart)
             continue
-        if exact and _starts_name(byte, out) and _reads_as_word(body, i):
+        if exact and _starts_name(byte, out) and (_reads_as_word(body, i) or _lower_case(body, i)):
             out.append(STORED_NAME)  # a name the file holds where LIST shows a keyword (PRINT=1)
         if byte == 0x3A and body[i + 1:i + 3] == bytes((_REM, _QUOTE_REM)):  # ' is ":REM'"
             out.append("'")
@@ -229,6 +229,18 @@ def _after_name(out: list) -> bool:
 def _starts_name(byte: int, out: list) -> bool:
     """Does the letter ``byte`` start a name (no letter, digit or point before it)?"""
     return chr(byte).isascii() and chr(byte).isalpha() and not _after_name(out)
+
+
+def _lower_case(body: bytes, i: int) -> bool:
+    """Does the name whose letters start at ``body[i]`` hold a small letter?  CRUNCH makes
+    every letter outside strings a capital, so only a file written elsewhere holds one; the
+    words a statement reads as letters (LINE's ``BF``, OPEN's ``OUTPUT`` and ``AS``, OPTION's
+    ``BASE``, DEF's ``SEG``) are compared with capitals (SYNCHR), so such a name is never one
+    of them: a Syntax error in the recording unsorted/LOWRCASE."""
+    end = i
+    while end < len(body) and body[end] in _NAME_BYTES:
+        end += 1
+    return any(0x61 <= byte <= 0x7A for byte in body[i:end])
 
 
 def _reads_as_word(body: bytes, i: int) -> bool:

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 from yaseer.basic.errors import BasicError, MISSING_OPERAND, SYNTAX_ERROR
 from yaseer.basic.source import syntax_tree as ast
+from yaseer.basic.dialects.reserved import StoredName
 from yaseer.basic.source.scanner import UNSCANNED, Token
 
 _ENDS = frozenset(("_COLON", "ELSE"))
@@ -152,6 +153,13 @@ def _read_pset(r: _Reader) -> None:
     r.end()
 
 
+def _word(name: str) -> str:
+    """A name read as a word of the statement (LINE's B and BF): in capitals, but for a name
+    a tokenised file holds in small letters (scanner.STORED_NAME), which keeps them: SYNCHR
+    compares with capitals, so ``bf`` there is a Syntax error (recording unsorted/LOWRCASE)."""
+    return name if name != name.upper() and type(name) is StoredName else name.upper()
+
+
 def _read_line(r: _Reader) -> None:
     if r.peek() != "MINUS":
         r.point()
@@ -166,9 +174,9 @@ def _read_line(r: _Reader) -> None:
         if r.take("COMMA"):
             shape = ""
             if r.peek() == "NAME":
-                shape = r.value().upper()
+                shape = _word(r.value())
                 r.at += 1
-                if shape == "B" and r.peek() == "NAME" and r.value().upper() == "F":
+                if shape == "B" and r.peek() == "NAME" and _word(r.value()) == "F":
                     shape = "BF"  # (SYNCHR skips the blanks: ``B F`` is BF, the recorded LINE test)
                     r.at += 1
                 if shape not in ("B", "BF"):

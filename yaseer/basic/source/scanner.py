@@ -637,7 +637,9 @@ def _lexemes(text: str, dialect: Dialect = CASIO, notes: list | None = None, beg
                 raise _syntax_error()
             kind = "STRNAME" if j < n and upper[j] == "$" else "NAME"
             j += j < n and upper[j] in "%!#$"
-            yield kind, StoredName(_name(text, i + 1, j, kind, dialect)), start, j
+            written = text[i + 1:j]  # small letters kept: no word a statement reads matches them (SYNCHR)
+            name = written if written != written.upper() else _name(text, i + 1, j, kind, dialect)
+            yield kind, StoredName(name), start, j
             i = j
         elif ch.isdigit() or (ch == "." and i + 1 < n and upper[i + 1].isdigit()) or (ch in "&." and typed):
             value, i = _scan_typed_number(upper, i, notes) if typed else _scan_number(upper, i)
