@@ -242,3 +242,23 @@ def test_a_tokenised_file_s_lone_else_runs_as_else(tmp_path):
     ELSE (the rest of its line skipped), as any ELSE no IF owns."""
     (tmp_path / "T.BAS").write_bytes(_tokenised((10, _ELSE + _PRINT + b" 1"), (20, _PRINT + b" 2")))
     assert yaseer_run('10 CHAIN "T"\n', tmp_path) == " 2 \n"
+
+
+def test_a_tokenised_file_s_words_in_small_letters_are_syntax_errors(tmp_path):
+    """LOWRCASE: CRUNCH makes every letter outside strings a capital, but a tokenised file
+    written elsewhere may hold small ones; the words a statement reads as letters are
+    compared with capitals (SYNCHR), so LINE's ``bf``, OPTION ``base``, DEF ``seg`` and
+    OPEN's ``output`` are Syntax errors (2) where the capitals run, as a real GW-BASIC 3.23
+    recorded them (each error line of the recording; PC-BASIC not consulted)."""
+    number = lambda n: b"\x0e" + n.to_bytes(2, "little")  # a line number constant
+    on_error, screen, line, option, def_ = b"\x95 \xa7 \x89 ", b"\xc8 ", b"\xb0 ", b"\xb8 ", b"\x97 "
+    open_, for_, end = b"\xba ", b" \x82 ", b"\x81"
+    print_, err, erl, resume_next = b"\x91 ", b"\xd5", b"\xd4", b"\xa8 \x83"
+    box = b"(\x11,\x11)\xea(\x12,\x12),,"
+    data = _tokenised((10, on_error + number(100)), (20, screen + b"\x12"),
+                      (30, line + box + b"bf"), (40, line + box + b"BF"),
+                      (50, option + b"base \x12"), (60, def_ + b"seg"),
+                      (70, open_ + b'"X"' + for_ + b"output AS \x12"), (80, end),
+                      (100, print_ + err + b";" + erl + b":" + resume_next))
+    (tmp_path / "T.BAS").write_bytes(data)
+    assert yaseer_run('10 CHAIN "T"\n', tmp_path) == " 2  30 \n 2  50 \n 2  60 \n 2  70 \n"
