@@ -137,11 +137,13 @@ FIELDS = (
     "data_segment",  # DataSegmentRules | None: None
     "point_after_name_is_text",  # bool: False
     "bare_line_must_exist",  # bool: False
+    "line_dot_words",  # tuple[str, ...]: ()
+    "edit_tail_error",  # int | None: None
 )
 DEFAULTS = (RepeatableRandom, False, False, False, "binary", None, None, None, (), LATIN1, "\n", False, False, (),
             True, True, False, False, None, False, None, False, CASIO_SCREEN, 255, None, False, False, (), False, False,
             None, False, False, True, False, None, False, (), False, False, False, False, False, False, (), 64, False, None, False, (),
-            False, False, (), False, None, False, False)
+            False, False, (), False, None, False, False, (), None)
 
 # Where BASIC's data segment puts the program and the strings (offsets in the segment, bytes;
 # machine/data_segment.py): ``text_start`` the program's first line (TXTTAB), ``string_top``
@@ -421,6 +423,16 @@ class Dialect(namedtuple("Dialect", FIELDS, defaults=DEFAULTS)):
         says array variables cannot be used: the paper's listings decide); False (GW: FOR
         sets SUBFLG so PTRGET reads ``A`` alone and SYNCHR "=" meets the ``(``, GWMAIN.ASM
         FOR): such a FOR is a Syntax error, before its variable's type is looked at.
+        ``line_dot_words``: the words after which a lone ``.`` is no line number (GWMAIN.ASM
+        CRUNCH stores a ``.`` after a line-number word as a plain character, never a line
+        constant): after GOTO, GOSUB, THEN, ELSE (GOTO2 wants a line constant, else
+        Syntax error) and RESUME (LINGET reads no digits and the statement has not ended:
+        Syntax error) it is a Syntax error; RUN's is no line constant, so RUN reads it as a
+        file name expression (DSKCOM.ASM LRUN, GIO86.ASM NAMSCN: the number 0, Type
+        mismatch).  ``()`` (casio): ``.`` there is the number it reads as.
+        ``edit_tail_error``: the error code of an EDIT whose line number (or ``.``) is
+        followed by more of the statement (SCNEDT.ASM EDIT: LINSPC, then EFCERR when the
+        statement has not ended: 5, Illegal function call); None: the statement's Syntax error.
         ``untrapped_errors_noted``: True when an error no handler takes still sets ERR and
         ERL (65535 for a direct line) and leaves a handler that was running (GWMAIN.ASM ERROR
         stores ERRLIN and ERRFLG before NTMDCN looks for a trap; NOTRAP resets ONEFLG), so
@@ -509,6 +521,8 @@ GW = Dialect(
     data_segment=DataSegmentRules(text_start=4718, string_top=65021, memory_top=65534),
     point_after_name_is_text=True,
     bare_line_must_exist=True,
+    line_dot_words=("GOTO", "GOSUB", "THEN", "ELSE", "RESUME", "RUN"),
+    edit_tail_error=5,  # Illegal function call
 )
 
 DIALECTS = {d.name: d for d in (CASIO, GW)}

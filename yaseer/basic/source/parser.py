@@ -16,7 +16,7 @@ from itertools import chain
 
 from yaseer.basic.source import syntax_tree as ast
 from yaseer.basic.dialects.dialect import CASIO, Dialect
-from yaseer.basic.errors import BasicError, INTERNAL_ERROR, MISSING_OPERAND, NEXT_WITHOUT_FOR, SYNTAX_ERROR
+from yaseer.basic.errors import MESSAGES, BasicError, INTERNAL_ERROR, MISSING_OPERAND, NEXT_WITHOUT_FOR, SYNTAX_ERROR
 from yaseer.basic.source.parse_tables import ACTIONS, END, RULES, START
 from yaseer.basic.dialects.reserved import UNSUPPORTED, mark_unsupported, unsupported_message
 from yaseer.basic.source.byte_lists import mark_literal_widths, read_byte_list
@@ -38,6 +38,12 @@ def _line_number(token: Token) -> int:
     if value != int(value) or value < 0:
         raise BasicError("Syntax error", SYNTAX_ERROR)
     return int(value)
+
+
+# A "." the scanner marked after a line word, read back as an expression: the number 0, but no
+# line constant (GWMAIN.ASM CRUNCH stores it as a plain character), so RUN . is RUN's file name
+# expression (DSKCOM.ASM LRUN), not RUN 0
+_DOT_ZERO = ast.Num(0.0, "!")
 
 
 def _line_spec(token: Token):
@@ -403,7 +409,7 @@ class _ToAst:
         return word
 
     def run_stmt(self, c):
-        if len(c) == 2 and isinstance(c[1], ast.Num):  # RUN n: a line number
+        if len(c) == 2 and isinstance(c[1], ast.Num) and c[1] is not _DOT_ZERO:  # RUN n: a line number
             if c[1].value != int(c[1].value) or c[1].value < 0:
                 raise BasicError("Syntax error", SYNTAX_ERROR)
             return ast.Command("RUN", int(c[1].value))
@@ -687,7 +693,7 @@ class _ToAst:
     def number(self, c):
         value = c[0].value
         if value == ast.CURRENT_LINE:  # "." read as a line after a line word, in an expression: 0
-            return ast.Num(0.0, "!")
+            return _DOT_ZERO
         if type(value) is tuple:
             return ast.Num(value[0], value[1])
         return ast.Num(value)
@@ -1019,6 +1025,9 @@ def _bad_and_after(tokens: list, bad_start: int, err: BasicError, dialect: Diale
     checked_first = _checked_first(tokens, bad_start, err)
     if checked_first is not None:
         return [checked_first] + _statements_after_error(tokens, bad_start, dialect)
+    edit_tail = _edit_tail_error(tokens, bad_start, dialect)
+    if edit_tail is not None:
+        return [edit_tail] + _statements_after_error(tokens, bad_start, dialect)
     found = (_mid_read_as_far(tokens, bad_start, err) or _input_file_first(tokens, bad_start, err)
              or _chain_file_first(tokens, bad_start, err) or _run_before_leftover(tokens, bad_start, err, dialect))
     if found is not None:
@@ -1148,6 +1157,21 @@ def _deferred_definition(tokens: list, start: int, err: BasicError, dialect: Dia
         if cut is not None and isinstance(cut[0], ast.Let):
             found[0].body = cut[0].value
     return found[0]
+
+
+def _edit_tail_error(tokens: list, start: int, dialect: Dialect):
+    """An EDIT whose line number (or ``.``) reads but is followed by more of the statement:
+    ``dialect.edit_tail_error`` (SCNEDT.ASM EDIT reads the line with LINSPC, then refuses a
+    statement that goes on with EFCERR).  None for any other bad statement."""
+    code = dialect.edit_tail_error
+    if code is None or tokens[start].type != "EDIT" or start + 2 >= len(tokens):
+        return None
+    line = tokens[start + 1]
+    if line.type != "PERIOD" and not (line.type == "NUMBER" and (line.value == ast.CURRENT_LINE or _is_line_number(line))):
+        return None
+    if tokens[start + 2].type == "_COLON":
+        return None
+    return BasicError(MESSAGES[code], code)
 
 
 def _checked_first(tokens: list, start: int, err: BasicError):

@@ -810,7 +810,8 @@ def tokenize(text: str, dialect: Dialect = CASIO) -> list:
             from yaseer.basic.source.syntax_tree import CURRENT_LINE
 
             value = CURRENT_LINE
-        line_spec = kind in dialect.current_line_commands or (line_spec and kind in _LINE_SPEC_TOKENS)
+        line_spec = (kind in dialect.current_line_commands or kind in dialect.line_dot_words
+                     or (line_spec and kind in _LINE_SPEC_TOKENS))
         tokens.append(Token(kind, value))
     if dialect.bracket_subscripts:
         _subscript_brackets(tokens)
