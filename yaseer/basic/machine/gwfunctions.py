@@ -188,7 +188,8 @@ class HeldBytes(float):
     MATH1.ASM ``$FCVS``... an assignment copies them; GENGRP.ASM's GET writes the pixels'
     bytes into the array), and its arithmetic reads an exponent byte of 0 as 0 (``$FADDS``,
     ``$FOUT``...): the value is 0 (the sign bit's zero as :func:`_from_mbf` gives it) and MKS$,
-    MKD$, PUT and PEEK give the bytes back (``raw``)."""
+    MKD$, PUT and PEEK give the bytes back (``raw``; a single's four made a double's eight by MATH2.ASM
+    ``$CDS``, which zeroes the four bytes below), and negation flips the sign bit alone."""
 
     __slots__ = ("raw",)
 
@@ -196,6 +197,12 @@ class HeldBytes(float):
         held = super().__new__(cls, value)
         held.raw = raw
         return held
+
+    def __neg__(self) -> "HeldBytes":
+        """The sign bit flipped, the other bytes kept (MATH1.ASM ``$NEG`` XORs the sign byte)."""
+        raw = bytearray(self.raw)
+        raw[-2] ^= 0x80
+        return HeldBytes(-float(self), bytes(raw))
 
 
 def _zero_of(data: bytes) -> float:
@@ -227,8 +234,8 @@ def mks(x: float) -> str:
 
 def mkd(x: float) -> str:
     """MKD$: the 8 bytes of a double (a Wide's own 56 bits; -0.0's sign: :func:`_signed_zero`)."""
-    if type(x) is HeldBytes and len(x.raw) == 8:
-        return _bytes_to_str(x.raw)
+    if type(x) is HeldBytes:  # a single's bytes made a double's: four zero bytes below (MATH2.ASM $CDS)
+        return _bytes_to_str(x.raw if len(x.raw) == 8 else bytes(4) + x.raw)
     if x == 0:
         return _bytes_to_str(_signed_zero(x, 8))
     return _bytes_to_str(mbf_double.to_bytes(values.double_parts(x)))
