@@ -62,6 +62,7 @@ enum {
 };
 
 #define WIDTH 4  /* ints an instruction: operation, d, a, b */
+#define ARRAYS 64  /* arrays a program may name (a run holds them in a fixed table) */
 
 typedef struct {
     PyObject_HEAD
@@ -161,7 +162,7 @@ python_ulp(double x)
 static int
 run(PathObject *self, PyObject *m)
 {
-    PyObject *lists[64];
+    PyObject *lists[ARRAYS];
     PyObject *arrays_dict = NULL, *scalars_dict = NULL;
     Py_ssize_t narrays = PyTuple_GET_SIZE(self->arrays), k, held = 0;
     double *r = self->registers;
@@ -733,7 +734,7 @@ load(PathObject *self)
         || names_tuple(values[3], &self->arrays) < 0 || names_tuple(values[4], &self->scalars) < 0
         || fill(values[5], NULL, &self->quadrants, &self->quadrant_count, 0) < 0)
         goto fail;
-    if (code_ints % WIDTH || self->quadrant_count % 3 || PyTuple_GET_SIZE(self->arrays) > 64) {
+    if (code_ints % WIDTH || self->quadrant_count % 3 || PyTuple_GET_SIZE(self->arrays) > ARRAYS) {
         PyErr_SetString(PyExc_ValueError, "a recorded path's program has a part of the wrong size");
         goto fail;
     }
@@ -860,7 +861,7 @@ PyInit__straight_fast(void)
         return NULL;
     Py_INCREF(&PathType);
     if (PyModule_AddObject(m, "Path", (PyObject *)&PathType) < 0
-        || PyModule_AddIntConstant(m, "WIDTH", WIDTH) < 0 || PyModule_AddIntConstant(m, "ARRAYS", 64) < 0) {
+        || PyModule_AddIntConstant(m, "WIDTH", WIDTH) < 0 || PyModule_AddIntConstant(m, "ARRAYS", ARRAYS) < 0) {
         Py_DECREF(m);
         return NULL;
     }

@@ -523,7 +523,7 @@ def translate(text: str, names: dict, operations: dict) -> dict | None:
             translator.statement(statement)
     except (Untranslatable, KeyError, RecursionError):
         return None
-    if not program.writing or len(program.arrays) > 64:
+    if not program.writing:  # (a program naming more arrays than the accelerator holds it refuses itself)
         return None
     quadrants = [part for angle, unit in sorted(numerics.QUADRANTS.items()) for part in (float(angle), unit.real, unit.imag)]
     return dict(code=program.code, extra=program.extra, registers=program.registers, arrays=tuple(program.arrays),

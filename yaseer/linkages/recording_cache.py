@@ -73,6 +73,11 @@ def _key(*parts) -> str:
     return sealed_cache.blake2b(repr(parts).encode()).hexdigest()
 
 
+def _numbering(operations: dict) -> tuple:
+    """The accelerator's instruction numbers as a kept program records them (and is matched on)."""
+    return tuple(sorted(operations.items()))
+
+
 def portable(names: dict, provided: dict) -> tuple | None:
     """``names`` (a record's globals) as plain values: (name, kind, value) triples, kind
     ``bound`` (a function of :data:`tracing.BOUND` or ``provided``, by its name) or ``number``;
@@ -204,7 +209,7 @@ class Shelf:
         with the accelerator's instruction numbers ``operations``, or None (the accelerator
         checks a program whole before it runs one)."""
         program = getattr(run, "program", None)
-        if program is None or program.get("operations") != tuple(sorted(operations.items())):
+        if program is None or program.get("operations") != _numbering(operations):
             return None
         return program
 
@@ -216,7 +221,7 @@ class Shelf:
         if kept is None or sealed_cache.private_dir() is None:
             return
         entry, plain = kept
-        program = dict(program, operations=tuple(sorted(operations.items())))
+        program = dict(program, operations=_numbering(operations))
         sealed_cache.write_marshalled(f"{entry}.rec", entry, MAGIC, run.__code__, plain, run.text, program)
 
     def keep(self, run, tests: tuple, machine) -> None:
